@@ -1,0 +1,44 @@
+#pragma once
+// A wheel or rail profile in the canonical frame (method.md §1):
+//   y lateral, positive towards the FIELD side; z vertical, positive UP; SI (metres) inside.
+//   Wheels: y = 0 at the taping line, the flange at negative y, z = −(increase of rolling radius),
+//           so the flange tip is the lowest point.
+//   Rails:  the origin of the file is kept; the gauge corner is at negative y, the head top is
+//           the highest point.
+#include <string>
+#include <vector>
+
+namespace mh {
+
+enum class ProfileKind { Unknown, Wheel, Rail };
+
+const char* to_string(ProfileKind k);
+
+struct Profile {
+  ProfileKind kind = ProfileKind::Unknown;
+  std::vector<double> y;   ///< [m] lateral, towards the field side, strictly increasing after cleaning
+  std::vector<double> z;   ///< [m] vertical, up
+  std::string source;      ///< file path or "standard:S1002" etc.
+  std::string format;      ///< "simpack", "miniprof", "table", "vampire", "standard"
+  std::string checksum;    ///< SHA-256 of the source file's bytes (hex), empty for generated profiles
+  std::vector<std::string> warnings;  ///< what cleaning did (e.g. "removed 3 duplicated points")
+
+  std::size_t size() const { return y.size(); }
+};
+
+/// Rail inclination (cant) applied by the tool. `AsIs`: the profile is already canted or vertical
+/// and is used as read. Never applied twice: the case file must say which (profiles.md).
+enum class Inclination { AsIs, None, In40, In20 };
+
+/// Parse "as-is", "none", "1:40", "1:20". Throws std::invalid_argument on anything else.
+Inclination parse_inclination(const std::string& s);
+const char* to_string(Inclination i);
+/// Cant angle [rad]: atan(1/40), atan(1/20), or 0.
+double inclination_angle(Inclination i);
+
+/// Rotate a rail profile about its origin by `angle` [rad] towards the track centre (the gauge
+/// side, negative y): counter-clockwise in the (y field, z up) plane, so that the crown's tangent
+/// gets the slope +tan(angle) (profiles.md "Inclination"). Re-sorts points by y.
+void rotate_towards_track_centre(Profile& p, double angle);
+
+}  // namespace mh
