@@ -56,3 +56,39 @@ void rotate_towards_track_centre(Profile& p, double angle) {
 }
 
 }  // namespace mh
+
+namespace mh {
+
+RailLandmarks rail_landmarks(const Profile& rail, double below) {
+  RailLandmarks L;
+  if (rail.size() == 0) return L;
+  std::size_t itop = 0;
+  for (std::size_t i = 1; i < rail.size(); ++i)
+    if (rail.z[i] > rail.z[itop]) itop = i;
+  L.y_top = rail.y[itop];
+  L.z_top = rail.z[itop];
+  const double zg = L.z_top - below;
+  for (std::size_t i = itop; i > 0; --i) {
+    if (rail.z[i - 1] <= zg && rail.z[i] > zg) {
+      const double t = (zg - rail.z[i - 1]) / (rail.z[i] - rail.z[i - 1]);
+      L.y_gauge = rail.y[i - 1] + t * (rail.y[i] - rail.y[i - 1]);
+      L.z_gauge = zg;
+      L.has_gauge = true;
+      break;
+    }
+  }
+  return L;
+}
+
+WheelLandmarks wheel_landmarks(const Profile& wheel) {
+  WheelLandmarks L;
+  if (wheel.size() == 0) return L;
+  std::size_t imin = 0;
+  for (std::size_t i = 1; i < wheel.size(); ++i)
+    if (wheel.z[i] < wheel.z[imin]) imin = i;
+  L.y_tip = wheel.y[imin];
+  L.z_tip = wheel.z[imin];
+  return L;
+}
+
+}  // namespace mh

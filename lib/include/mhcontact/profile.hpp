@@ -42,3 +42,22 @@ double inclination_angle(Inclination i);
 void rotate_towards_track_centre(Profile& p, double angle);
 
 }  // namespace mh
+
+namespace mh {
+
+/// Landmarks used for positioning (method.md §7) and `profile info`.
+struct RailLandmarks {
+  double y_top = 0, z_top = 0;      ///< [m] highest point of the head
+  double y_gauge = 0, z_gauge = 0;  ///< [m] gauge point: gauge side (negative y), `below` under the top
+  bool has_gauge = false;
+};
+/// Gauge point `below` [m] under the highest point (standard 14 mm), searched from the top
+/// towards the gauge side (negative y); the first crossing, linearly interpolated.
+RailLandmarks rail_landmarks(const Profile& rail, double below = 0.014);
+
+struct WheelLandmarks {
+  double y_tip = 0, z_tip = 0;  ///< [m] flange tip: the lowest point (canonical frame, z up)
+};
+WheelLandmarks wheel_landmarks(const Profile& wheel);
+
+}  // namespace mh

@@ -1,0 +1,40 @@
+#pragma once
+// Reading and writing profile files (profiles.md "File formats seen in the field").
+// Every reader ends in the canonical frame of profile.hpp (y to the field side, z up, SI),
+// applies the format's own transformations first, then the user's mirror/scale options, then
+// checks for the obvious mistakes (metres read as mm, flange on the wrong side, rail upside
+// down, loops or backward steps where contact can happen) and throws InputError naming the
+// file, the value, the rule and the fix.
+#include <string>
+
+#include "mhcontact/profile.hpp"
+
+namespace mh {
+
+enum class ProfileFormat { Auto, Simpack, MiniProf, Table, Vampire };
+
+/// "auto", "simpack", "miniprof", "table", "vampire"; throws std::invalid_argument otherwise.
+ProfileFormat parse_profile_format(const std::string& s);
+const char* to_string(ProfileFormat f);
+
+struct ProfileReadOptions {
+  ProfileFormat format = ProfileFormat::Auto;  ///< Auto: by extension, else by content
+  ProfileKind kind = ProfileKind::Unknown;     ///< expected kind; Unknown: from the file (header, extension)
+  bool mirror_y = false;   ///< mirror y after the format's own transformations (default: no)
+  bool mirror_z = false;   ///< mirror z after the format's own transformations (default: no)
+  double scale = 1.0;      ///< multiply file lengths by this before interpreting them as mm (default 1)
+  bool check = true;       ///< run the plausibility checks (default: yes)
+  /// VAMPIRE files hold both sides; which one to read: "right" (default) or "left".
+  std::string vampire_side = "right";
+};
+
+/// Read a profile file. Throws InputError (file, line, value, rule, fix) on anything malformed.
+Profile read_profile(const std::string& path, const ProfileReadOptions& opt = {});
+
+/// Write a profile; the format follows the extension: ".csv" canonical table (header "y_mm,z_mm",
+/// y to the field side, z up, mm), ".prr"/".prw" SIMPACK (type from the extension, z down as
+/// SIMPACK expects, no transformations). Atomic (OutputFile). Throws InputError on an unknown
+/// extension or an unwritable path.
+void write_profile(const Profile& p, const std::string& path);
+
+}  // namespace mh
