@@ -130,8 +130,13 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w) {
   z_.resize(m); dz_.resize(m); k_.resize(m); side_.resize(m);
   const auto& Y = p.y;
   const auto& Z = p.z;
-  auto lower = [&](double v) { return static_cast<std::size_t>(std::lower_bound(Y.begin(), Y.end(), v) - Y.begin()); };
-  auto upper = [&](double v) { return static_cast<std::size_t>(std::upper_bound(Y.begin(), Y.end(), v) - Y.begin()); };
+  // Windows are measured along the profile (chord length), not in y, so that steep flanks get as
+  // short a window as the tread.
+  std::vector<double> S(n, 0.0);
+  for (std::size_t i = 1; i < n; ++i) S[i] = S[i - 1] + std::hypot(Y[i] - Y[i - 1], Z[i] - Z[i - 1]);
+  auto lower = [&](double v) { return static_cast<std::size_t>(std::lower_bound(S.begin(), S.end(), v) - S.begin()); };
+  auto upper = [&](double v) { return static_cast<std::size_t>(std::upper_bound(S.begin(), S.end(), v) - S.begin()); };
+  auto upper_y = [&](double v) { return static_cast<std::size_t>(std::upper_bound(Y.begin(), Y.end(), v) - Y.begin()); };
   // Widen [i0, i1) symmetrically (within the data) until it holds min_points.
   auto widen = [&](std::size_t& i0, std::size_t& i1, int dir) {
     const std::size_t need = static_cast<std::size_t>(opt.min_points);
@@ -146,21 +151,22 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w) {
   for (std::size_t j = 0; j < m; ++j) {
     const double yc = y0_ + h_ * static_cast<double>(j);
     // Linear interpolation of the raw points as the local origin height.
-    std::size_t k = std::min(std::max<std::size_t>(upper(yc), 1), n - 1);
+    std::size_t k = std::min(std::max<std::size_t>(upper_y(yc), 1), n - 1);
     const double t = (yc - Y[k - 1]) / (Y[k] - Y[k - 1]);
     const double zc = Z[k - 1] + t * (Z[k] - Z[k - 1]);
+    const double sc = S[k - 1] + t * (S[k] - S[k - 1]);
 
-    std::size_t c0 = lower(yc - w), c1 = upper(yc + w);
+    std::size_t c0 = lower(sc - w), c1 = upper(sc + w);
     widen(c0, c1, 0);
     LocalFit best = fit_window(Y, Z, c0, c1, yc, zc);
     rms.push_back(best.rms);
     int side = 0;
     // One-sided windows reach one data point past yc, so that a window on the wrong side of a
     // junction always holds a point of the other arc (and shows it in its residual).
-    const std::size_t ihi = std::min(upper(yc), n - 1);
+    const std::size_t ihi = std::min(upper(sc), n - 1);
     const std::size_t ilo = ihi > 0 ? ihi - 1 : 0;
-    std::size_t l0 = lower(yc - 2 * w), l1 = ihi + 1;
-    std::size_t r0 = ilo, r1 = upper(yc + 2 * w);
+    std::size_t l0 = lower(sc - 2 * w), l1 = ihi + 1;
+    std::size_t r0 = ilo, r1 = upper(sc + 2 * w);
     widen(l0, l1, -1);
     widen(r0, r1, +1);
     const LocalFit left = fit_window(Y, Z, l0, l1, yc, zc);

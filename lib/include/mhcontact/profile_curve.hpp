@@ -2,7 +2,8 @@
 // Smooth representation of a profile z(y): height, slope and curvature everywhere, from a moving
 // local circle fit (a local regression, "LOESS with circles").
 //
-// At every node of a fine uniform grid the points of the profile within a window are fitted by a
+// At every node of a fine uniform grid the points of the profile within a window (measured along
+// the profile, so steep flanks get windows as short as the tread's) are fitted by a
 // circle-or-line in a frame rotated to the local chord direction,
 //     v = alpha (u² + v²) + beta u + delta            (linear least squares in alpha, beta, delta)
 // which is exact on exact circles and straight lines at any slope, and averages measurement noise
@@ -10,7 +11,7 @@
 // cubic Hermite in (z, dz/dy) and kappa is linear.
 //
 // Breakpoint rule (curvature jumps such as the arcs of S1002 or 60E1): three windows are fitted at
-// each node — centred [y−w, y+w] and one-sided [y−2w, y], [y, y+2w] (each one-sided window reaching
+// each node — centred [s−w, s+w] and one-sided [s−2w, s], [s, s+2w] (s: length along the profile) (each one-sided window reaching
 // one data point past y). The centred fit is used
 // unless its RMS residual exceeds `one_sided_factor` times the better one-sided residual (and
 // `residual_floor`); then the better one-sided fit is used. A window straddling a jump in curvature
