@@ -9,6 +9,8 @@
 
 #include "mhcontact/profile.hpp"
 
+namespace CLI { class App; }
+
 namespace mh {
 
 enum class ProfileFormat { Auto, Simpack, MiniProf, Table, Vampire };
@@ -36,5 +38,23 @@ Profile read_profile(const std::string& path, const ProfileReadOptions& opt = {}
 /// SIMPACK expects, no transformations). Atomic (OutputFile). Throws InputError on an unknown
 /// extension or an unwritable path.
 void write_profile(const Profile& p, const std::string& path);
+
+/// Thresholds of the plausibility checks (read_profile), in mm. Defaults as documented.
+struct ProfileCheckLimits {
+  static constexpr double kMinWidth_mm = 5.0;      ///< total width below this: metres read as mm?
+  static constexpr double kMaxWidth_mm = 500.0;    ///< total width above this: µm or 0.1 mm units?
+  static constexpr std::size_t kMinPoints = 10;    ///< fewer points cannot describe a profile
+  static constexpr double kRailContactDepth_mm = 25.0;  ///< rail region that can touch: z > top − 25 mm
+  static constexpr double kTapingLineFromFlangeBack_mm = 70.0;  ///< EN 13715: taping line 70 mm from the flange back
+  static constexpr double kFlangeHeight_mm = 10.0; ///< a flange: lowest point this far below the field-side end
+};
+
+/// The extension's format ("prr" -> Simpack, ...), Auto if unknown.
+ProfileFormat format_from_extension(const std::string& path);
+
+/// Add the reading options shared by every profile command to `app`:
+/// --format auto|simpack|miniprof|table|vampire, --kind wheel|rail, --mirror-y, --mirror-z,
+/// --scale S, --vampire-side left|right, --no-check.
+void add_profile_read_options(CLI::App& app, ProfileReadOptions& opt);
 
 }  // namespace mh
