@@ -640,7 +640,7 @@ Profile read_profile(const std::string& path, const ProfileReadOptions& opt) {
   p.warnings = r.warnings;
   p.y.resize(r.size());
   p.z.resize(r.size());
-  for (std::size_t k = 0; k < r.size(); ++k) p.y[k] = r.y[k] * 1e-3 + 0.0, p.z[k] = r.z[k] * 1e-3 + 0.0;  // +0.0: no -0
+  for (std::size_t k = 0; k < r.size(); ++k) p.y[k] = r.y[k] / 1000 + 0.0, p.z[k] = r.z[k] / 1000 + 0.0;  // +0.0: no -0; "/ 1000" so that "* 1000" gives the file digits back
   return p;
 }
 
