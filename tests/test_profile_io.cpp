@@ -408,3 +408,30 @@ TEST_CASE("profile info and convert through run_cli", "[profile_io][cli]") {
   REQUIRE(mh::run_cli({"profile", "convert", w, "-o", csv}, o4, e4) == 0);
   CHECK(max_diff_mm(mh::read_profile(csv), mh::read_profile(w)) < 1e-9);
 }
+
+TEST_CASE("SIMPACK spline keys applied in the documented order", "[profile_io]") {
+  // File in metres (units.len.f = 1), angles in degrees (units.ang.f = 180/pi). Points
+  // y_i = 0.002 i - 0.02, z_i = 0.05 - 0.001 i (i = 0..20). Order (profiles.md): shift
+  // (+0.01, -0.002) -> rotate 90 deg counter-clockwise in the file's (y, z) plane:
+  // (y, z) -> (-z, y) -> bounds z in [-0.005, 0.025] keeps i = 3..17 -> mirror y -> mirror z ->
+  // reverse -> mm -> canonical (y, -z). By hand: y = 48 - i mm, z = 2 i - 10 mm, i.e. 15 points
+  // y = 31..45 mm with z = 86 - 2 y.
+  std::ostringstream pts;
+  pts.precision(17);
+  for (int i = 0; i <= 20; ++i) pts << 0.002 * i - 0.02 << " " << 0.05 - 0.001 * i << " 1.0\n";
+  std::ostringstream keys;
+  keys.precision(17);
+  keys << "  shift.y = 0.01\n  shift.z = -0.002\n  rotate = 90\n  units.ang.f = " << 180 / M_PI
+       << "\n  bound.y.min = 1\n  bound.y.max = 0\n  bound.z.min = -0.005\n  bound.z.max = 0.025\n"
+       << "  mirror.y = 1\n  mirror.z = 1\n  inversion = 1\n  units.len.f = 1 ! metres\n";
+  const std::string text = "header.begin\n  type = 0\nheader.end\nspline.begin\n" + keys.str() +
+                           "  point.begin\n" + pts.str() + "  point.end\nspline.end\n";
+  const mh::Profile p = mh::read_profile(write_file("keys.prr", text));
+  REQUIRE(p.size() == 15);
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    CHECK(p.y[k] * 1e3 == Approx(31.0 + k).margin(1e-9));
+    CHECK(p.z[k] * 1e3 == Approx(24.0 - 2.0 * k).margin(1e-9));
+  }
+  REQUIRE(!p.warnings.empty());
+  CHECK(p.warnings[0] == "SIMPACK bounds removed 6 points");
+}
