@@ -14,6 +14,10 @@ for l in "format: simpack" "kind: wheel" "points: 399" "y_range_mm: -69.612628 6
 done
 grep -q "^sha256: $(sha256sum "$D/MBench_S1002_v3.prw" | cut -c1-64)\$" "$T/out" || fail "sha256"
 
+# README example: the shipped copies in profiles/ read the same
+"$MH" profile info "$SRC/profiles/MBench_S1002_v3.prw" | grep -qx "flange_tip_mm: y -54.892493 z -27.999518" || fail "profiles/ wheel"
+"$MH" profile info "$SRC/profiles/MBench_UIC60_v3.prr" | grep -qx "head_top_mm: y -0.18441236 z -6.0323487e-05" || fail "profiles/ rail"
+
 # README example: mhcontact profile info MBench_UIC60_v3.prr --json
 "$MH" profile info "$D/MBench_UIC60_v3.prr" --json >"$T/j" 2>&1 || fail "info rail json exit $?"
 /usr/bin/python3 - "$T/j" <<'PY' || fail "json content: $(cat "$T/j")"
