@@ -1,7 +1,53 @@
-// Placeholder until `geometry` and `run` land.
+// `mhcontact geometry` and `mhcontact run`.
 #include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include "mhcontact/case_file.hpp"
 #include "mhcontact/cli.hpp"
+#include "mhcontact/errors.hpp"
+#include "mhcontact/run.hpp"
+
 namespace mh {
-void add_geometry_command(CLI::App&, CliContext&) {}
-void add_run_command(CLI::App&, CliContext&) {}
+
+void add_geometry_command(CLI::App& app, CliContext& ctx) {
+  struct Opts { std::string case_file, out_dir; bool quiet = false; };
+  auto o = std::make_shared<Opts>();
+  CLI::App* cmd = app.add_subcommand(
+      "geometry", "Contact geometry of the case's profile pair: CAF, radii and potential ellipses "
+                  "(writes DIR/caf.csv and DIR/geometry.json)");
+  cmd->add_option("case", o->case_file, "Case file (JSON)")->required();
+  cmd->add_option("-o,--output", o->out_dir, "Output directory (created if missing)")->required();
+  cmd->add_flag("-q,--quiet", o->quiet, "No summary on standard error");
+  cmd->callback([o, &ctx] {
+    const CaseFile cf = load_case_file(o->case_file, false);
+    ctx.exit_code = geometry_job(cf, o->out_dir, ctx.out, ctx.err, o->quiet);
+  });
+}
+
+void add_run_command(CLI::App& app, CliContext& ctx) {
+  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; bool quiet = false; };
+  auto o = std::make_shared<Opts>();
+  CLI::App* cmd = app.add_subcommand(
+      "run", "Solve every case of the case file's sweep (writes DIR/cases.csv, DIR/ellipses.csv, "
+             "DIR/results.json). Exit 0 if every case is ok, 1 if some are not.");
+  cmd->add_option("case", o->case_file, "Case file (JSON)")->required();
+  cmd->add_option("-o,--output", o->out_dir, "Output directory (created if missing); '-' writes results.json to standard output")->required();
+  cmd->add_option("--format", o->format, "Which outputs: csv, json or both")
+      ->check(CLI::IsMember({"csv", "json", "both"}))->capture_default_str();
+  cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores; output is identical whatever the count)")
+      ->check(CLI::Range(0u, 1024u))->capture_default_str();
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress or summary on standard error");
+  cmd->callback([o, &ctx] {
+    const CaseFile cf = load_case_file(o->case_file, true);
+    RunOptions ro;
+    ro.out_dir = o->out_dir;
+    ro.csv = o->format != "json";
+    ro.json = o->format != "csv";
+    ro.threads = o->threads;
+    ro.quiet = o->quiet;
+    ro.progress = (&ctx.err == &std::cerr) && ::isatty(2);
+    ctx.exit_code = run_job(cf, ro, ctx.out, ctx.err);
+  });
+}
+
 }  // namespace mh

@@ -42,17 +42,27 @@ double inclination_angle(Inclination i) {
 }
 
 void rotate_towards_track_centre(Profile& p, double angle) {
-  if (angle == 0.0) return;
+  if (angle == 0.0 || p.size() == 0) return;
   const double c = std::cos(angle), s = std::sin(angle);
-  std::vector<std::pair<double, double>> pts(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i)
-    pts[i] = {c * p.y[i] - s * p.z[i], s * p.y[i] + c * p.z[i]};
-  std::stable_sort(pts.begin(), pts.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    p.y[i] = pts[i].first;
-    p.z[i] = pts[i].second;
+  std::vector<double> y(p.size()), z(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    y[i] = c * p.y[i] - s * p.z[i];
+    z[i] = s * p.y[i] + c * p.z[i];
   }
+  // A steep flank can become vertical or overhanging: keep, from the highest point outwards,
+  // the points whose y keeps moving away from it; the rest (far below the head) is clipped.
+  std::size_t top = 0;
+  for (std::size_t i = 1; i < z.size(); ++i)
+    if (z[i] > z[top]) top = i;
+  std::size_t a = top, b = top;
+  while (a > 0 && y[a - 1] < y[a]) --a;
+  while (b + 1 < y.size() && y[b + 1] > y[b]) ++b;
+  const std::size_t clipped = a + (y.size() - 1 - b);
+  p.y.assign(y.begin() + static_cast<std::ptrdiff_t>(a), y.begin() + static_cast<std::ptrdiff_t>(b + 1));
+  p.z.assign(z.begin() + static_cast<std::ptrdiff_t>(a), z.begin() + static_cast<std::ptrdiff_t>(b + 1));
+  if (clipped)
+    p.warnings.push_back("inclination: clipped " + std::to_string(clipped) +
+                         " flank points that became vertical or overhanging");
 }
 
 }  // namespace mh

@@ -38,7 +38,8 @@ double inclination_angle(Inclination i);
 
 /// Rotate a rail profile about its origin by `angle` [rad] towards the track centre (the gauge
 /// side, negative y): counter-clockwise in the (y field, z up) plane, so that the crown's tangent
-/// gets the slope +tan(angle) (profiles.md "Inclination"). Re-sorts points by y.
+/// gets the slope +tan(angle) (profiles.md "Inclination"). Expects y increasing; flank points
+/// that become vertical or overhanging are clipped (with a warning), so y stays increasing.
 void rotate_towards_track_centre(Profile& p, double angle);
 
 }  // namespace mh

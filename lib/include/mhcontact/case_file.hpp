@@ -1,0 +1,69 @@
+#pragma once
+// The case file (JSON): profiles, track, geometry grid, material, model and the sweep of cases.
+// Every error names the file, the JSON path, the value and the rule; unknown keys are errors.
+// Field reference: README "Case file".
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "mhcontact/geometry.hpp"
+#include "mhcontact/hertz.hpp"
+#include "mhcontact/profile.hpp"
+#include "mhcontact/profile_io.hpp"
+#include "mhcontact/solver.hpp"
+
+namespace mh {
+
+/// Where a profile comes from: a file (with reading options) or a standard definition.
+struct ProfileSource {
+  std::string file;          ///< resolved path (relative paths are relative to the case file)
+  std::string standard;      ///< e.g. "S1002", "60E1", "54E1" (then `file` is empty)
+  double step = 0.1e-3;      ///< [m] node spacing of a generated standard profile (default 0.1 mm)
+  ProfileReadOptions read;
+  std::string json_path;     ///< e.g. "/wheel/profile", for messages
+};
+
+enum class Model { Elastic, Plastic };
+const char* to_string(Model m);
+
+struct CasePoint {
+  double tY = 0;     ///< [m]
+  double Q = 0;      ///< [N]
+  double tY_mm = 0;  ///< the value as given (written back verbatim in the tables)
+  double Q_kN = 0;   ///< the value as given
+};
+
+/// Largest number of cases a run accepts (refused up front with the count).
+constexpr std::uint64_t kMaxCases = 1000000000ULL;
+
+struct CaseFile {
+  std::string path;
+  ProfileSource wheel, rail;
+  Inclination inclination = Inclination::AsIs;
+  TrackSetup track;
+  GeometryOptions geometry;
+  Material material;
+  Model model = Model::Elastic;
+  SolverOptions solver;
+  /// Either a cartesian sweep (t_Y outer, Q inner: case i has tY[i / nQ], Q[i % nQ]) ...
+  std::vector<double> sweep_tY_mm, sweep_Q_kN;  ///< as given, in mm and kN
+  /// ... or an explicit list.
+  std::vector<CasePoint> cases;
+  bool has_cases = false;  ///< a sweep or a case list was given
+
+  std::uint64_t case_count() const;
+  CasePoint case_at(std::uint64_t i) const;
+  /// The inputs as resolved (defaults filled in, units at the edges), for results.json.
+  nlohmann::json resolved_json() const;
+};
+
+/// Parse and validate. `need_cases`: `run` needs a sweep; `geometry` does not.
+CaseFile load_case_file(const std::string& path, bool need_cases);
+
+/// Read or generate a profile of the given kind; rails get the case's inclination applied here,
+/// once. Throws InputError.
+Profile load_profile(const ProfileSource& src, ProfileKind kind, Inclination incl = Inclination::AsIs);
+
+}  // namespace mh

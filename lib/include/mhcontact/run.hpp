@@ -1,0 +1,40 @@
+#pragma once
+// The jobs behind `mhcontact geometry` and `mhcontact run`: build the geometry of the case's
+// profile pair once, solve every case, stream the tables to their files (never held in memory,
+// never half written: OutputFile), byte-identical whatever the thread count.
+#include <iosfwd>
+#include <string>
+
+#include "mhcontact/case_file.hpp"
+#include "mhcontact/geometry.hpp"
+
+namespace mh {
+
+struct RunOptions {
+  std::string out_dir;          ///< output directory; "-" writes results.json to `out` only
+  bool csv = true;              ///< write cases.csv and ellipses.csv (default yes)
+  bool json = true;             ///< write results.json (default yes)
+  unsigned threads = 0;         ///< worker threads; 0 = all cores (default)
+  bool quiet = false;           ///< no summary or progress on `err`
+  bool progress = false;        ///< progress display on `err` (the CLI sets it when err is a terminal)
+  std::size_t chunk = 8192;     ///< cases solved per parallel batch (default 8192)
+};
+
+/// Everything a geometry build produced, with the profiles it was built from.
+struct PairGeometry {
+  Profile wheel, rail;
+  ContactGeometry geo;
+};
+PairGeometry build_pair_geometry(const CaseFile& cf);
+
+/// `mhcontact geometry`: writes DIR/caf.csv and DIR/geometry.json. Returns the exit code.
+int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& out, std::ostream& err, bool quiet);
+
+/// `mhcontact run`: returns 0 when every case is ok, 1 when some are not (kExitCasesFailed).
+int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::ostream& err);
+
+/// The column names of the tables (README "Output tables").
+std::string cases_csv_header();
+std::string ellipses_csv_header(bool plastic);
+
+}  // namespace mh

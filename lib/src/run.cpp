@@ -1,0 +1,358 @@
+#include "mhcontact/run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <thread>
+#include <vector>
+
+#include "mhcontact/errors.hpp"
+#include "mhcontact/numfmt.hpp"
+#include "mhcontact/output_file.hpp"
+#include "mhcontact/solver.hpp"
+#include "mhcontact/units.hpp"
+
+namespace mh {
+
+namespace {
+
+constexpr const char* kSchema = "mhcontact.results/1";
+constexpr const char* kGeometrySchema = "mhcontact.geometry/1";
+
+// Numbers: shortest round-trip; radii of straight profiles are "inf" in CSV, null in JSON.
+inline void num(std::string& s, double v) { append_number(s, v); }
+inline void jnum(std::string& s, double v) {
+  if (std::isfinite(v)) append_number(s, v); else s += "null";
+}
+inline double radius_mm(double k) { return k == 0 ? INFINITY : 1e3 / k; }
+
+// RFC 4180 quoting for text cells.
+void csv_text(std::string& s, const std::string& t) {
+  if (t.find_first_of(",\"\n") == std::string::npos) { s += t; return; }
+  s += '"';
+  for (char c : t) { if (c == '"') s += '"'; s += c; }
+  s += '"';
+}
+
+std::string join(const std::vector<std::string>& v, const char* sep) {
+  std::string s;
+  for (const auto& x : v) { if (!s.empty()) s += sep; s += x; }
+  return s;
+}
+
+// Per-ellipse values in output units, in column order (shared by CSV and JSON).
+struct Col { const char* name; double (*get)(const LoadedEllipse&); };
+const Col kEllipseCols[] = {
+    {"y_rail_mm", [](const LoadedEllipse& e) { return e.g.y_r * 1e3; }},
+    {"y_wheel_mm", [](const LoadedEllipse& e) { return e.g.y_w * 1e3; }},
+    {"gamma_deg", [](const LoadedEllipse& e) { return e.g.gamma / units::deg; }},
+    {"R_rxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_rxx); }},
+    {"R_wxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_wxx); }},
+    {"R_wyy_mm", [](const LoadedEllipse& e) { return e.g.R_wyy() * 1e3; }},
+    {"A_1pm", [](const LoadedEllipse& e) { return e.A; }},
+    {"B_1pm", [](const LoadedEllipse& e) { return e.B; }},
+    {"lambda", [](const LoadedEllipse& e) { return e.c.lambda; }},
+    {"m", [](const LoadedEllipse& e) { return e.c.m; }},
+    {"n", [](const LoadedEllipse& e) { return e.c.n; }},
+    {"gap_mm", [](const LoadedEllipse& e) { return e.g.gap * 1e3; }},
+    {"h0_mm", [](const LoadedEllipse& e) { return e.s.h0 * 1e3; }},
+    {"N_kN", [](const LoadedEllipse& e) { return e.s.N / units::kN; }},
+    {"a_mm", [](const LoadedEllipse& e) { return e.s.a * 1e3; }},
+    {"b_mm", [](const LoadedEllipse& e) { return e.s.b * 1e3; }},
+    {"p0_MPa", [](const LoadedEllipse& e) { return e.s.p0 / units::MPa; }},
+    {"pmean_MPa", [](const LoadedEllipse& e) { return e.s.p_mean / units::MPa; }},
+    {"approach_mm", [](const LoadedEllipse& e) { return e.s.approach * 1e3; }},
+};
+const Col kPlasticCols[] = {
+    {"h_y_mm", nullptr},  // filled from the law, see below
+    {"p_max_MPa", [](const LoadedEllipse& e) { return e.s.p_max / units::MPa; }},
+    {"plateau_a_mm", [](const LoadedEllipse& e) { return e.s.plateau_a * 1e3; }},
+    {"plateau_b_mm", [](const LoadedEllipse& e) { return e.s.plateau_b * 1e3; }},
+    {"a_el_mm", [](const LoadedEllipse& e) { return e.s.a_el * 1e3; }},
+    {"b_el_mm", [](const LoadedEllipse& e) { return e.s.b_el * 1e3; }},
+    {"area_ratio", [](const LoadedEllipse& e) { return e.s.area_ratio; }},
+};
+
+struct Formatted {
+  std::string cases, ellipses, json;
+};
+
+void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, const Material& mat,
+                 bool plastic, bool want_csv, bool want_json, Formatted& f) {
+  const std::string warn = join(r.warnings, ";");
+  // h_y of each loaded ellipse (plastic): from its law's closed form, method.md §5.
+  auto h_y_mm = [&](const LoadedEllipse& e) {
+    const double n3 = e.c.n * e.c.n * e.c.n;
+    const double k_e = (2.0 / 3.0) * (1.0 + e.c.lambda) / n3 * mat.E_star() / std::sqrt(e.B);
+    const double q = 2.0 * units::pi * e.c.m * mat.p_lim / (3.0 * k_e * e.c.n * e.B);
+    return q * q * 1e3;
+  };
+  if (want_csv) {
+    std::string& s = f.cases;
+    s.clear();
+    append_number(s, static_cast<long long>(idx));
+    s += ','; num(s, cp.tY_mm);
+    s += ','; num(s, cp.Q_kN);
+    s += ','; s += to_string(r.status);
+    s += ','; num(s, r.dz * 1e3);
+    s += ','; append_number(s, static_cast<long long>(r.iterations));
+    s += ','; num(s, r.residual);
+    s += ','; append_number(s, static_cast<long long>(r.loaded.size()));
+    s += ','; num(s, r.Fz / units::kN);
+    s += ','; num(s, r.Fy / units::kN);
+    s += ','; csv_text(s, warn);
+    s += ','; csv_text(s, r.message);
+    s += '\n';
+    std::string& e = f.ellipses;
+    e.clear();
+    for (const LoadedEllipse& L : r.loaded) {
+      append_number(e, static_cast<long long>(idx));
+      e += ','; num(e, cp.tY_mm);
+      e += ','; num(e, cp.Q_kN);
+      e += ','; append_number(e, static_cast<long long>(L.ellipse));
+      for (const Col& c : kEllipseCols) { e += ','; num(e, c.get(L)); }
+      if (plastic) {
+        e += ','; e += L.s.plastic ? "1" : "0";
+        e += ','; num(e, h_y_mm(L));
+        for (std::size_t k = 1; k < std::size(kPlasticCols); ++k) { e += ','; num(e, kPlasticCols[k].get(L)); }
+      }
+      e += '\n';
+    }
+  }
+  if (want_json) {
+    std::string& s = f.json;
+    s.clear();
+    s += "    {\"case\": "; append_number(s, static_cast<long long>(idx));
+    s += ", \"tY_mm\": "; jnum(s, cp.tY_mm);
+    s += ", \"Q_kN\": "; jnum(s, cp.Q_kN);
+    s += ", \"status\": \""; s += to_string(r.status);
+    s += "\", \"dz_mm\": "; jnum(s, r.dz * 1e3);
+    s += ", \"iterations\": "; append_number(s, static_cast<long long>(r.iterations));
+    s += ", \"residual\": "; jnum(s, r.residual);
+    s += ", \"n_contacts\": "; append_number(s, static_cast<long long>(r.loaded.size()));
+    s += ", \"Fz_kN\": "; jnum(s, r.Fz / units::kN);
+    s += ", \"Fy_kN\": "; jnum(s, r.Fy / units::kN);
+    s += ", \"warnings\": "; s += nlohmann::json(r.warnings).dump();
+    s += ", \"message\": "; s += nlohmann::json(r.message).dump();
+    s += ", \"ellipses\": [";
+    bool first = true;
+    for (const LoadedEllipse& L : r.loaded) {
+      s += first ? "\n      {" : ",\n      {";
+      first = false;
+      s += "\"ellipse\": "; append_number(s, static_cast<long long>(L.ellipse));
+      for (const Col& c : kEllipseCols) { s += ", \""; s += c.name; s += "\": "; jnum(s, c.get(L)); }
+      if (plastic) {
+        s += ", \"plastic\": "; s += L.s.plastic ? "true" : "false";
+        s += ", \"h_y_mm\": "; jnum(s, h_y_mm(L));
+        for (std::size_t k = 1; k < std::size(kPlasticCols); ++k) {
+          s += ", \""; s += kPlasticCols[k].name; s += "\": "; jnum(s, kPlasticCols[k].get(L));
+        }
+      }
+      s += "}";
+    }
+    s += first ? "]}" : "\n    ]}";
+  }
+}
+
+nlohmann::json profile_json(const Profile& p, double window) {
+  return {{"source", p.source}, {"format", p.format}, {"kind", to_string(p.kind)},
+          {"sha256", p.checksum}, {"points", p.size()}, {"y_min_mm", p.y.front() * 1e3},
+          {"y_max_mm", p.y.back() * 1e3}, {"fit_window_mm", window * 1e3}, {"warnings", p.warnings}};
+}
+
+nlohmann::json ellipses_json(const ContactGeometry& G) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const PotentialEllipse& P : G.ellipses)
+    a.push_back({{"ellipse", P.index}, {"tY_min_mm", P.tY_min * 1e3}, {"tY_max_mm", P.tY_max * 1e3},
+                 {"y_rail_min_mm", P.y_r_min * 1e3}, {"y_rail_max_mm", P.y_r_max * 1e3},
+                 {"y_wheel_min_mm", P.y_w_min * 1e3}, {"y_wheel_max_mm", P.y_w_max * 1e3}});
+  return a;
+}
+
+nlohmann::json inputs_json(const CaseFile& cf, const PairGeometry& pg) {
+  nlohmann::json j = cf.resolved_json();
+  j["wheel"]["read"] = profile_json(pg.wheel, pg.geo.wheel_window);
+  j["rail"]["read"] = profile_json(pg.rail, pg.geo.rail_window);
+  return j;
+}
+
+void warn_profiles(const PairGeometry& pg, std::ostream& err) {
+  for (const Profile* p : {&pg.wheel, &pg.rail})
+    for (const auto& w : p->warnings) err << "mhcontact: warning: " << p->source << ": " << w << "\n";
+}
+
+}  // namespace
+
+std::string cases_csv_header() {
+  return "case,tY_mm,Q_kN,status,dz_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,warnings,message\n";
+}
+
+std::string ellipses_csv_header(bool plastic) {
+  std::string s = "case,tY_mm,Q_kN,ellipse";
+  for (const Col& c : kEllipseCols) { s += ','; s += c.name; }
+  if (plastic) {
+    s += ",plastic";
+    for (const Col& c : kPlasticCols) { s += ','; s += c.name; }
+  }
+  return s + "\n";
+}
+
+PairGeometry build_pair_geometry(const CaseFile& cf) {
+  PairGeometry pg;
+  pg.wheel = load_profile(cf.wheel, ProfileKind::Wheel);
+  pg.rail = load_profile(cf.rail, ProfileKind::Rail, cf.inclination);
+  pg.geo = build_geometry(pg.wheel, pg.rail, cf.track, cf.geometry);
+  return pg;
+}
+
+int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& out, std::ostream& err, bool quiet) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const PairGeometry pg = build_pair_geometry(cf);
+  const ContactGeometry& G = pg.geo;
+  if (!quiet) warn_profiles(pg, err);
+  ensure_directory(out_dir);
+  {
+    OutputFile f(out_dir + "/caf.csv");
+    std::string s = "tY_mm,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,r_roll_mm,strip,ellipse\n";
+    for (std::size_t k = 0; k < G.tY.size(); ++k) {
+      const CandidateGeom& c = G.main_at(k);
+      num(s, G.tY[k] * 1e3);
+      s += ','; num(s, c.y_r * 1e3);
+      s += ','; num(s, c.y_w * 1e3);
+      s += ','; num(s, c.gamma / units::deg);
+      s += ','; num(s, radius_mm(c.k_rxx));
+      s += ','; num(s, radius_mm(c.k_wxx));
+      s += ','; num(s, c.R_wyy() * 1e3);
+      s += ','; num(s, c.r_roll * 1e3);
+      s += ','; append_number(s, static_cast<long long>(G.main_strip[k]));
+      s += ','; append_number(s, static_cast<long long>(G.main_ellipse[k] + 1));
+      s += '\n';
+    }
+    f.stream() << s;
+    f.commit();
+  }
+  {
+    nlohmann::json j;
+    j["schema"] = kGeometrySchema;
+    j["program"] = {{"name", "mhcontact"}, {"version", MHCONTACT_VERSION}};
+    j["inputs"] = inputs_json(cf, pg);
+    j["y_offset_mm"] = G.y_offset * 1e3;
+    j["rail_gauge_point_y_mm"] = G.rail_gauge_y * 1e3;
+    j["strips"] = G.strip_y.size();
+    j["grid_points"] = G.tY.size();
+    j["potential_ellipses"] = ellipses_json(G);
+    OutputFile f(out_dir + "/geometry.json");
+    f.stream() << j.dump(2) << "\n";
+    f.commit();
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!quiet)
+    err << "mhcontact geometry: " << G.n_ellipses() << " potential ellipses over t_Y " << format_number(G.tY.front() * 1e3)
+        << " .. " << format_number(G.tY.back() * 1e3) << " mm (" << G.tY.size() << " grid points, "
+        << G.strip_y.size() << " strips) in " << format_number(std::round(secs * 1e3) / 1e3) << " s; wrote "
+        << out_dir << "/caf.csv, " << out_dir << "/geometry.json\n";
+  (void)out;
+  return kExitOk;
+}
+
+int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::ostream& err) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const PairGeometry pg = build_pair_geometry(cf);
+  const ContactGeometry& G = pg.geo;
+  if (!opt.quiet) warn_profiles(pg, err);
+  const bool plastic = cf.model == Model::Plastic;
+  const bool to_stdout = opt.out_dir == "-";
+  const bool want_csv = opt.csv && !to_stdout;
+  const bool want_json = opt.json || to_stdout;
+
+  std::unique_ptr<OutputFile> fc, fe, fj;
+  if (!to_stdout) {
+    ensure_directory(opt.out_dir);
+    if (want_csv) {
+      fc = std::make_unique<OutputFile>(opt.out_dir + "/cases.csv");
+      fe = std::make_unique<OutputFile>(opt.out_dir + "/ellipses.csv");
+      fc->stream() << cases_csv_header();
+      fe->stream() << ellipses_csv_header(plastic);
+    }
+    if (want_json) fj = std::make_unique<OutputFile>(opt.out_dir + "/results.json");
+  }
+  std::ostream* js = to_stdout ? &out : (fj ? &fj->stream() : nullptr);
+  if (js) {
+    nlohmann::json head;
+    head["schema"] = kSchema;
+    head["program"] = {{"name", "mhcontact"}, {"version", MHCONTACT_VERSION}};
+    head["inputs"] = inputs_json(cf, pg);
+    head["potential_ellipses"] = ellipses_json(G);
+    std::string h = head.dump(2);
+    h.pop_back();  // reopen the object: cases follow
+    while (!h.empty() && (h.back() == '\n' || h.back() == ' ')) h.pop_back();
+    *js << h << ",\n  \"cases\": [\n";
+  }
+
+  const std::uint64_t n = cf.case_count();
+  unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t chunk = std::max<std::size_t>(opt.chunk, 1);
+  std::vector<Formatted> fmt(std::min<std::uint64_t>(chunk, n));
+  std::map<std::string, std::uint64_t> by_status;
+  std::uint64_t failed = 0;
+  std::vector<CaseStatus> status(fmt.size());
+  int last_pct = -1;
+  for (std::uint64_t c0 = 0; c0 < n; c0 += chunk) {
+    const std::size_t m = static_cast<std::size_t>(std::min<std::uint64_t>(chunk, n - c0));
+    auto work = [&](unsigned t, unsigned nt) {
+      for (std::size_t i = t; i < m; i += nt) {
+        const CasePoint cp = cf.case_at(c0 + i);
+        const CaseResult r = solve_case(G, cf.material, cp.tY, cp.Q, cf.solver);
+        status[i] = r.status;
+        format_case(c0 + i, cp, r, cf.material, plastic, want_csv, want_json, fmt[i]);
+      }
+    };
+    const unsigned nt = static_cast<unsigned>(std::min<std::size_t>(threads, m));
+    if (nt <= 1) {
+      work(0, 1);
+    } else {
+      std::vector<std::thread> pool;
+      for (unsigned t = 1; t < nt; ++t) pool.emplace_back(work, t, nt);
+      work(0, nt);
+      for (auto& th : pool) th.join();
+    }
+    for (std::size_t i = 0; i < m; ++i) {
+      ++by_status[to_string(status[i])];
+      if (status[i] != CaseStatus::Ok) ++failed;
+      if (want_csv) {
+        fc->stream() << fmt[i].cases;
+        fe->stream() << fmt[i].ellipses;
+      }
+      if (js) *js << fmt[i].json << (c0 + i + 1 < n ? ",\n" : "\n");
+    }
+    if (opt.progress && !opt.quiet) {
+      const int pct = static_cast<int>(100.0 * static_cast<double>(c0 + m) / static_cast<double>(n));
+      if (pct != last_pct) {
+        err << "\rmhcontact run: " << (c0 + m) << "/" << n << " cases (" << pct << " %)" << std::flush;
+        last_pct = pct;
+      }
+    }
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (js) {
+    nlohmann::json summary = {{"cases", n}, {"failed", failed}, {"by_status", by_status}};
+    *js << "  ],\n  \"summary\": " << summary.dump() << "\n}\n";
+  }
+  if (fc) { fc->commit(); fe->commit(); }
+  if (fj) fj->commit();
+  if (to_stdout) out.flush();
+  if (!opt.quiet) {
+    if (opt.progress) err << "\n";
+    err << "mhcontact run: " << n << " cases";
+    for (const auto& [k, v] : by_status) err << ", " << k << " " << v;
+    err << "; " << G.n_ellipses() << " potential ellipses; " << format_number(std::round(secs * 1e3) / 1e3) << " s";
+    if (!to_stdout) err << "; outputs in " << opt.out_dir;
+    err << "\n";
+  }
+  return failed ? kExitCasesFailed : kExitOk;
+}
+
+}  // namespace mh
