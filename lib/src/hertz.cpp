@@ -1,9 +1,14 @@
+// Hertz coefficients m, n, ρ of λ = A/B (method.md §2): the exact path from GSL's complete
+// elliptic integrals in Carlson form, and the fast tabulated path.
 #include "mhcontact/hertz.hpp"
 
 #include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
 #include <gsl/gsl_sf_ellint.h>
 
 #include <array>
+#include <cfloat>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -12,82 +17,111 @@
 #include "mhcontact/units.hpp"
 
 namespace mh {
+
+bool Material::is_valid(std::string* why) const {
+  auto fail = [&](const std::string& s) {
+    if (why) *why = s;
+    return false;
+  };
+  if (!(E > 0) || !std::isfinite(E))
+    return fail("Material.E = " + format_number(E) + " Pa: Young's modulus must be > 0 and finite");
+  if (!(nu > 0 && nu < 0.5))
+    return fail("Material.nu = " + format_number(nu) + ": Poisson's ratio must be in (0, 0.5)");
+  if (!(p_lim > 0))
+    return fail("Material.p_lim = " + format_number(p_lim) +
+                " Pa: the limit pressure must be > 0 (INFINITY for an elastic contact)");
+  return true;
+}
+
 namespace {
 
 using units::pi;
 
-struct KE { double K, E; };
+/// Options of the exact solve for g (documented defaults; style.md habit 7).
+struct ExactSolveOptions {
+  int max_iterations = 200;              ///< Brent iterations in ln g (it converges in ~10–40)
+  double rel_tolerance = 4 * DBL_EPSILON;  ///< on ln g, relative
+  double abs_tolerance = 1e-300;         ///< on ln g, absolute (ln g → 0 as λ → 1)
+};
 
-KE ellint(double g) {
-  // Complete elliptic integrals of modulus k = sqrt(1 − g²) (GSL takes the modulus).
-  const double k = std::sqrt(std::max(0.0, 1.0 - g * g));
-  gsl_sf_result rk, re;
-  const int s1 = gsl_sf_ellint_Kcomp_e(k, GSL_PREC_DOUBLE, &rk);
-  const int s2 = gsl_sf_ellint_Ecomp_e(k, GSL_PREC_DOUBLE, &re);
-  if (s1 != GSL_SUCCESS || s2 != GSL_SUCCESS)
-    throw std::runtime_error(std::string("GSL elliptic integral failed: ") + gsl_strerror(s1 ? s1 : s2));
-  return {rk.val, re.val};
+void check_gsl(int status, const char* what) {
+  if (status != GSL_SUCCESS)
+    throw std::runtime_error(std::string("GSL ") + what + " failed: " + gsl_strerror(status));
 }
 
-// B/A as a function of g (A ≤ B): (E/g² − K)/(K − E). Decreasing from ∞ (g → 0) to 1 (g → 1).
+/// Carlson integrals R_F(0, y, 1) = K and R_D(0, y, 1) for y = g² = 1 − e² (complementary
+/// parameter): K = R_F, K − E = (e²/3) R_D (DLMF 19.25.1). No modulus round trip.
+struct Carlson {
+  double RF, RD;
+};
+Carlson carlson(double y) {
+  gsl_sf_result rf, rd;
+  check_gsl(gsl_sf_ellint_RF_e(0.0, y, 1.0, GSL_PREC_DOUBLE, &rf), "ellint_RF");
+  check_gsl(gsl_sf_ellint_RD_e(0.0, y, 1.0, GSL_PREC_DOUBLE, &rd), "ellint_RD");
+  return {rf.val, rd.val};
+}
+
+/// B/A as a function of g (A ≤ B): (E/g² − K)/(K − E) = (3 R_F/R_D − 1)/g² (the factor e² of
+/// E − g²K = e² (R_F − R_D/3) and of K − E cancels analytically). Decreasing from ∞ (g → 0) to 1.
 double ratio_of_g(double g) {
-  const KE ke = ellint(g);
-  return (ke.E / (g * g) - ke.K) / (ke.K - ke.E);
+  const Carlson c = carlson(g * g);
+  return (3.0 * c.RF / c.RD - 1.0) / (g * g);
 }
 
+struct RootParams {
+  double log_target;  // ln(B/A) = −ln λ ≥ 0
+};
+double root_fn(double t, void* p) {  // t = ln g
+  const double g = std::exp(t);
+  return std::log(ratio_of_g(g)) - static_cast<RootParams*>(p)->log_target;
+}
+
+/// m, n, ρ for λ ≤ 1 (a is the major axis, m ≥ n).
 HertzCoefficients coefficients_le1(double lambda) {
-  // λ = A/B ≤ 1: solve ratio_of_g(g) = 1/λ by bisection in ln g.
+  const ExactSolveOptions opt;
   HertzCoefficients c;
   c.lambda = lambda;
-  if (lambda == 1.0) return c;
-  const double target = 1.0 / lambda;
-  double lo = std::log(1e-12), hi = 0.0;  // ln g
-  for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    const double g = std::exp(mid);
-    if (g >= 1.0) { hi = mid; continue; }
-    if (ratio_of_g(g) > target) lo = mid; else hi = mid;
+  if (lambda == 1.0) return c;  // circle: exactly 1, 1, 1
+  RootParams par{-std::log(lambda)};
+  gsl_function F{&root_fn, &par};
+  // Bracket: f(0) = −ln(1/λ) < 0; f decreases with t; step the lower end down until f > 0
+  // (B/A ≈ 1/(g² (ln(4/g) − 1)) for small g, so g ≈ √λ is within a few decades).
+  double hi = 0.0;
+  if (!(root_fn(hi, &par) < 0)) return c;  // λ within rounding of 1
+  double lo = 0.5 * std::log(lambda);
+  for (int k = 0; root_fn(lo, &par) <= 0; ++k) {
+    if (k > 60) throw std::runtime_error("hertz_coefficients_exact: no bracket for lambda = " + format_number(lambda));
+    hi = lo;
+    lo -= 2.0;
   }
-  const double g = std::exp(0.5 * (lo + hi));
-  if (g >= 1.0) return c;
-  const KE ke = ellint(g);
-  c.m = std::cbrt(2.0 * ke.E / (pi * g * g));
-  c.n = c.m * g;
-  c.rho = 2.0 * ke.K / (pi * c.m);
+  std::unique_ptr<gsl_root_fsolver, void (*)(gsl_root_fsolver*)> s(
+      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
+  if (!s) throw std::runtime_error("GSL root solver allocation failed");
+  check_gsl(gsl_root_fsolver_set(s.get(), &F, lo, hi), "root_fsolver_set");
+  double t = 0.5 * (lo + hi);
+  int status = GSL_CONTINUE;
+  for (int it = 0; it < opt.max_iterations && status == GSL_CONTINUE; ++it) {
+    check_gsl(gsl_root_fsolver_iterate(s.get()), "root_fsolver_iterate");
+    t = gsl_root_fsolver_root(s.get());
+    const double a = gsl_root_fsolver_x_lower(s.get()), b = gsl_root_fsolver_x_upper(s.get());
+    status = gsl_root_test_interval(a, b, opt.abs_tolerance, opt.rel_tolerance);
+    if (status != GSL_SUCCESS && status != GSL_CONTINUE) check_gsl(status, "root_test_interval");
+  }
+  if (status != GSL_SUCCESS)
+    throw std::runtime_error("hertz_coefficients_exact: no convergence for lambda = " + format_number(lambda));
+  const double g = std::exp(t);
+  if (!(g < 1.0)) return c;
+  const double y = g * g;
+  const Carlson k = carlson(y);
+  const double E = k.RF - (1.0 - y) / 3.0 * k.RD;  // E(e) = R_F − (e²/3) R_D
+  c.m = std::cbrt(2.0 * E / (pi * y));            // m³ = 2E/(π g²)
+  c.n = c.m * g;                                   // g = b/a = n/m
+  c.rho = 2.0 * k.RF / (pi * c.m);                 // ρ = 2K/(π m), m the major coefficient
   return c;
 }
 
-// Fast-path table: ln m, ln n, ln ρ against x = ln λ.
-constexpr double kXmin = -11.512925464970229;  // ln 1e-5
-constexpr double kXmax = 11.512925464970229;   // ln 1e5
-constexpr double kStep = 0.005;
-
-struct Table {
-  std::vector<std::array<double, 3>> v;
-  Table() {
-    gsl_set_error_handler_off();
-    const int n = static_cast<int>(std::ceil((kXmax - kXmin) / kStep)) + 1;
-    v.resize(static_cast<std::size_t>(n) + 2);  // one guard node at each end
-    for (int i = -1; i <= n; ++i) {
-      const HertzCoefficients c = hertz_coefficients_exact(std::exp(kXmin + kStep * i));
-      v[static_cast<std::size_t>(i + 1)] = {std::log(c.m), std::log(c.n), std::log(c.rho)};
-    }
-  }
-};
-
-const Table& table() {
-  static const Table t;
-  return t;
-}
-
-}  // namespace
-
-HertzCoefficients hertz_coefficients_exact(double lambda) {
-  if (!(lambda > 0) || !std::isfinite(lambda))
-    throw std::invalid_argument("lambda = A/B must be positive and finite, got " + format_number(lambda));
-  gsl_set_error_handler_off();
-  if (lambda <= 1.0) return coefficients_le1(lambda);
-  const HertzCoefficients s = coefficients_le1(1.0 / lambda);
+HertzCoefficients swapped(const HertzCoefficients& s, double lambda) {
+  // λ > 1: m(λ) = n(1/λ), n(λ) = m(1/λ), ρ(λ) = ρ(1/λ) (method.md §2).
   HertzCoefficients c;
   c.lambda = lambda;
   c.m = s.n;
@@ -96,86 +130,99 @@ HertzCoefficients hertz_coefficients_exact(double lambda) {
   return c;
 }
 
-HertzCoefficients hertz_coefficients(double lambda) {
-  if (!(lambda > 0) || !std::isfinite(lambda))
-    throw std::invalid_argument("lambda = A/B must be positive and finite, got " + format_number(lambda));
-  const double x = std::log(lambda);
-  if (x <= kXmin || x >= kXmax) return hertz_coefficients_exact(lambda);
-  const Table& T = table();
-  const double s = (x - kXmin) / kStep;
-  const std::size_t i = static_cast<std::size_t>(s);  // nodes i-1, i, i+1, i+2 → v[i .. i+3]
-  const double t = s - static_cast<double>(i);
-  // Cubic Lagrange weights on nodes −1, 0, 1, 2.
-  const double w0 = -t * (t - 1) * (t - 2) / 6, w1 = (t + 1) * (t - 1) * (t - 2) / 2,
-               w2 = -(t + 1) * t * (t - 2) / 2, w3 = (t + 1) * t * (t - 1) / 6;
-  HertzCoefficients c;
-  c.lambda = lambda;
+void check_lambda(double lambda, double lo, double hi) {
+  if (!std::isfinite(lambda) || !(lambda >= lo && lambda <= hi))
+    throw std::invalid_argument("lambda = A/B = " + format_number(lambda) + " is outside the supported range [" +
+                                format_number(lo) + ", " + format_number(hi) +
+                                "] of the Hertz coefficients (extreme ellipticity: not a Hertzian ellipse)");
+}
+
+// ---- Fast path ------------------------------------------------------------------------------
+// Natural cubic splines of ln m, ln n, ln ρ against x = ln λ on a uniform grid over
+// [ln 1e-5, 0.5]. Used on [ln 1e-4, 0] only: the extra decade below and the half unit above
+// λ = 1 keep the natural end conditions (wrong second derivatives) away from the used range,
+// where their influence has decayed by 0.27 per node (the grid crosses λ = 1 smoothly: the
+// coefficients are analytic there, the table values for x > 0 come from the swap).
+constexpr double kTableXmin = -11.512925464970229;  // ln 1e-5
+constexpr double kTableXmax = 0.5;
+constexpr int kTableIntervals = 480;                // step ≈ 0.025 in ln λ
+constexpr double kTableStep = (kTableXmax - kTableXmin) / kTableIntervals;
+
+struct SplineTable {
+  // Per node: value and second derivative of ln m, ln n, ln ρ.
+  std::vector<std::array<double, 3>> y, y2;
+  SplineTable() {
+    gsl_set_error_handler_off();
+    const int n = kTableIntervals + 1;
+    y.resize(n);
+    y2.assign(n, {0.0, 0.0, 0.0});
+    for (int i = 0; i < n; ++i) {
+      const double x = (i == n - 1) ? kTableXmax : kTableXmin + kTableStep * i;
+      const double lambda = std::exp(x);
+      const HertzCoefficients c = lambda <= 1.0 ? coefficients_le1(lambda)
+                                                : swapped(coefficients_le1(1.0 / lambda), lambda);
+      y[i] = {std::log(c.m), std::log(c.n), std::log(c.rho)};
+    }
+    // Natural spline on a uniform grid: y2[i-1] + 4 y2[i] + y2[i+1] = 6 (y[i+1] − 2y[i] + y[i-1])/h²,
+    // y2[0] = y2[n-1] = 0. Thomas algorithm.
+    const double h2 = kTableStep * kTableStep;
+    for (int q = 0; q < 3; ++q) {
+      std::vector<double> cp(n, 0.0), dp(n, 0.0);
+      for (int i = 1; i < n - 1; ++i) {
+        const double rhs = 6.0 * (y[i + 1][q] - 2.0 * y[i][q] + y[i - 1][q]) / h2;
+        const double denom = 4.0 - cp[i - 1];
+        cp[i] = 1.0 / denom;
+        dp[i] = (rhs - dp[i - 1]) / denom;
+      }
+      for (int i = n - 2; i >= 1; --i) y2[i][q] = dp[i] - cp[i] * y2[i + 1][q];
+    }
+  }
+};
+
+const SplineTable& table() {
+  static const SplineTable t;  // built once, thread-safe (C++11 static initialisation)
+  return t;
+}
+
+/// Fast m, n, ρ for x = ln λ in [ln 1e-4, 0].
+HertzCoefficients fast_le1(double lambda, double x) {
+  const SplineTable& T = table();
+  const double s = (x - kTableXmin) / kTableStep;
+  std::size_t i = static_cast<std::size_t>(s);
+  if (i >= static_cast<std::size_t>(kTableIntervals)) i = kTableIntervals - 1;
+  const double t = s - static_cast<double>(i), u = 1.0 - t;
+  const double h2_6 = kTableStep * kTableStep / 6.0;
+  const double cu = (u * u * u - u) * h2_6, ct = (t * t * t - t) * h2_6;
   double r[3];
   for (int q = 0; q < 3; ++q)
-    r[q] = w0 * T.v[i][q] + w1 * T.v[i + 1][q] + w2 * T.v[i + 2][q] + w3 * T.v[i + 3][q];
+    r[q] = u * T.y[i][q] + t * T.y[i + 1][q] + cu * T.y2[i][q] + ct * T.y2[i + 1][q];
+  HertzCoefficients c;
+  c.lambda = lambda;
   c.m = std::exp(r[0]);
   c.n = std::exp(r[1]);
   c.rho = std::exp(r[2]);
   return c;
 }
 
+}  // namespace
+
+HertzCoefficients hertz_coefficients_exact(double lambda) {
+  check_lambda(lambda, kLambdaMinExact, kLambdaMaxExact);
+  gsl_set_error_handler_off();
+  if (lambda <= 1.0) return coefficients_le1(lambda);
+  return swapped(coefficients_le1(1.0 / lambda), lambda);
+}
+
+HertzCoefficients hertz_coefficients(double lambda) {
+  check_lambda(lambda, kLambdaMinExact, kLambdaMaxExact);
+  if (lambda < kLambdaMinFast || lambda > kLambdaMaxFast) return hertz_coefficients_exact(lambda);
+  if (lambda == 1.0) return HertzCoefficients{};
+  if (lambda < 1.0) return fast_le1(lambda, std::log(lambda));
+  return swapped(fast_le1(1.0 / lambda, -std::log(lambda)), lambda);
+}
+
 double hertz_C(double N, double A, double B, double E_star) {
   return std::cbrt(1.5 * N / E_star / (A + B));  // (eqs. 2–3)
-}
-
-EllipseLaw make_ellipse_law(double A, double B, const Material& mat, bool exact) {
-  if (!(B > 0)) throw std::invalid_argument("B = " + format_number(B) + " 1/m: the curvature sum across the contact must be > 0 for a Hertzian ellipse (conformal contact)");
-  if (!(A >= 0) || !std::isfinite(A)) throw std::invalid_argument("A = " + format_number(A) + " 1/m must be >= 0");
-  if (!(mat.E > 0)) throw std::invalid_argument("E must be > 0");
-  if (!(mat.nu > 0 && mat.nu < 0.5)) throw std::invalid_argument("nu must be in (0, 0.5)");
-  if (!(mat.p_lim > 0)) throw std::invalid_argument("p_lim must be > 0");
-  EllipseLaw L;
-  L.A = A;
-  L.B = B;
-  // A = 0 (an infinite rolling radius) is a line contact: keep λ tiny but positive.
-  const double lambda = std::max(A / B, 1e-12);
-  L.c = exact ? hertz_coefficients_exact(lambda) : hertz_coefficients(lambda);
-  L.E_star = mat.E_star();
-  const double n3 = L.c.n * L.c.n * L.c.n;
-  L.k_e = (2.0 / 3.0) * (1.0 + lambda) / n3 * L.E_star / std::sqrt(B);  // (eq. 8)
-  L.p_lim = mat.p_lim;
-  if (std::isfinite(mat.p_lim)) {
-    // method.md §5: p0 = 3 k_e n B √h0 / (2π m) reaches p_lim at h_y.
-    const double r = 2.0 * pi * L.c.m * mat.p_lim / (3.0 * L.k_e * L.c.n * B);
-    L.h_y = r * r;
-    L.k_p = pi * mat.p_lim * L.c.m / (L.c.n * B);
-    L.N_y = (2.0 / 3.0) * L.k_p * L.h_y;
-  }
-  return L;
-}
-
-EllipseState ellipse_state(const EllipseLaw& L, double h0) {
-  EllipseState s;
-  if (!(h0 > 0)) return s;
-  s.h0 = h0;
-  s.N = L.force(h0);
-  // The patch keeps the elastic geometry at h0 (eq. 6 and 7; method.md §5).
-  s.b = std::sqrt(h0 / L.B);
-  s.a = (L.c.m / L.c.n) * s.b;
-  const double area = pi * s.a * s.b;
-  const double N_el = L.k_e * h0 * std::sqrt(h0);  // Hertz load of this patch
-  s.p0 = 1.5 * N_el / area;                         // p0 = 3N/(2πab)
-  s.p_mean = s.N / area;
-  const double C = s.b / L.c.n;
-  s.approach = L.c.rho * C * C * (L.A + L.B);
-  s.plastic = h0 > L.h_y;
-  s.p_max = std::min(s.p0, L.p_lim);
-  if (s.plastic) {
-    const double sr = L.p_lim / s.p0;
-    const double q = std::sqrt(std::max(0.0, 1.0 - sr * sr));
-    s.plateau_a = s.a * q;
-    s.plateau_b = s.b * q;
-  }
-  const double Cel = hertz_C(s.N, L.A, L.B, L.E_star);
-  s.a_el = L.c.m * Cel;
-  s.b_el = L.c.n * Cel;
-  s.area_ratio = (s.a * s.b) / (s.a_el * s.b_el);
-  return s;
 }
 
 }  // namespace mh
