@@ -45,22 +45,26 @@ void add_diff_command(CLI::App& app, CliContext& ctx) {
       "Compare a result table (cases.csv, ellipses.csv, caf.csv, pressure.csv, ...) against a "
       "reference: rows matched by key, numbers within tolerance, text exactly. Exit 0 within "
       "tolerance, 1 if they differ, 2 if an input is unreadable or malformed.");
-  cmd->add_option("REF", args->ref, "Reference CSV table")->required();
-  cmd->add_option("OUT", args->out, "CSV table to check against REF")->required();
+  cmd->add_option("REF", args->ref, "Reference CSV table")->required()->type_name("FILE");
+  cmd->add_option("OUT", args->out, "CSV table to check against REF")->required()->type_name("FILE");
   cmd->add_option("--rtol", args->rtol,
                   "Relative tolerance: a number passes if |out - ref| <= atol + rtol*|ref| "
-                  "(default " + format_number(defaults.rtol) + ")");
+                  "(default " + format_number(defaults.rtol) + ")")
+      ->type_name("R");
   cmd->add_option("--atol", args->atol,
                   "Absolute tolerance in each column's own unit (default " +
-                      format_number(defaults.atol) + ")");
+                      format_number(defaults.atol) + ")")
+      ->type_name("A");
   cmd->add_option("--column-tol", args->column_tol,
                   "COL=TOL: absolute tolerance for column COL in its unit, replacing atol/rtol "
                   "(repeatable), e.g. --column-tol Fz_kN=1e-6")
+      ->type_name("COL=TOL")
       ->allow_extra_args(false);
   cmd->add_option("--key", args->key,
                   "Key column (repeatable or comma separated); default: those of pair, case, "
                   "ellipse present in both tables, else the row number")
       ->delimiter(',')
+      ->type_name("COL")
       ->allow_extra_args(false);
   cmd->add_flag("--json", args->json, "Print a machine-readable JSON report instead of text");
   cmd->add_flag("--quiet", args->quiet, "Print only the final line (diff: OK / diff: N cells ...)");

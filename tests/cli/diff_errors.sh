@@ -27,4 +27,7 @@ expect 2 "--column-tol: value case: is a key column" cases_ref.csv cases_ref.csv
 expect 2 "--rtol: value \"abc\": not a number" cases_ref.csv cases_ref.csv --rtol abc
 expect 2 "--atol: value -0.1" cases_ref.csv cases_ref.csv --atol -0.1
 expect 2 "cases_ref.csv: value pair: key column is not in the header" cases_ref.csv cases_ref.csv --key pair
+expect 2 ".: is a directory, not a CSV file" . cases_ref.csv
+expect 2 "pressure_ref.csv:3: value case=c1, ellipse=1: duplicate key" pressure_ref.csv pressure_out.csv
+expect 2 "--key case,ellipse,x_mm,y_mm for pressure.csv" pressure_ref.csv pressure_out.csv
 exit $fails

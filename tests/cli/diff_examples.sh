@@ -47,6 +47,11 @@ expect 1 "key: tY_mm|rows missing in OUT (1): tY_mm=5|rows extra in OUT (1): tY_
   caf_ref.csv caf_out.csv --key tY_mm
 expect 0 "diff: OK" caf_ref.csv caf_ref.csv --key tY_mm,ellipse
 
+# pressure.csv: one row per grid point, key case,ellipse,x_mm,y_mm; p_MPa off by 1e-5 MPa (8.7e-9 relative), tolerance 1e-4 MPa.
+expect 1 "worst abs deviation 1e-05 at case=c1, ellipse=1, x_mm=1, y_mm=0|diff: 1 cells out of tolerance, 0 missing rows, 0 extra rows" \
+  pressure_ref.csv pressure_out.csv --key case,ellipse,x_mm,y_mm
+expect 0 "diff: OK" pressure_ref.csv pressure_out.csv --key case,ellipse,x_mm,y_mm --column-tol p_MPa=1e-4
+
 # Machine-readable report.
 expect 1 "\"schema\": \"mhcontact.diff\"|\"ok\": false|\"missing_rows\": [|\"case=c4\"" \
   cases_ref.csv cases_changed.csv --json
