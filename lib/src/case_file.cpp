@@ -70,6 +70,7 @@ std::string resolve_path(const std::string& case_path, const std::string& p) {
 ProfileSource parse_profile_source(const Ctx& c, const json& v, const std::string& path, const std::string& case_path) {
   ProfileSource s;
   s.json_path = path;
+  s.case_file = case_path;
   if (v.is_string()) {
     s.file = resolve_path(case_path, v.get<std::string>());
     return s;
@@ -102,6 +103,18 @@ ProfileSource parse_profile_source(const Ctx& c, const json& v, const std::strin
   }
   if (v.contains("kind")) c.fail(path + "/kind", &v.at("kind"), "the kind follows from the section (wheel or rail)");
   return s;
+}
+
+// Number of values an axis will have (0 when malformed: parse_axis then reports the error).
+double axis_count(const json& v) {
+  if (v.is_array()) return static_cast<double>(v.size());
+  if (v.is_number()) return 1;
+  if (v.is_object() && v.contains("from") && v.contains("to") && v.contains("step") && v["from"].is_number() &&
+      v["to"].is_number() && v["step"].is_number()) {
+    const double from = v["from"].get<double>(), to = v["to"].get<double>(), step = v["step"].get<double>();
+    if (step > 0 && to >= from && std::isfinite((to - from) / step)) return std::floor((to - from) / step + 1e-9) + 1;
+  }
+  return 0;
 }
 
 // A sweep axis: a list of numbers or {"from", "to", "step"}.
@@ -301,11 +314,13 @@ CaseFile load_case_file(const std::string& path, bool need_cases) {
     c.only_keys(s, "/sweep", {"tY_mm", "Q_kN"});
     if (!s.contains("tY_mm")) c.fail("/sweep/tY_mm", nullptr, "required");
     if (!s.contains("Q_kN")) c.fail("/sweep/Q_kN", nullptr, "required");
+    // Count before materialising anything: a sweep of 10^12 cases is refused up front.
+    const double n = axis_count(s.at("tY_mm")) * axis_count(s.at("Q_kN"));
+    if (n > static_cast<double>(kMaxCases))
+      c.fail("/sweep", nullptr, "gives " + format_number(n) + " cases, more than the limit of " + std::to_string(kMaxCases),
+             "split the study (shards) or coarsen the steps");
     cf.sweep_tY_mm = parse_axis(c, s.at("tY_mm"), "/sweep/tY_mm", false);
     cf.sweep_Q_kN = parse_axis(c, s.at("Q_kN"), "/sweep/Q_kN", true);
-    const double n = static_cast<double>(cf.sweep_tY_mm.size()) * static_cast<double>(cf.sweep_Q_kN.size());
-    if (n > static_cast<double>(kMaxCases))
-      c.fail("/sweep", nullptr, "gives " + format_number(n) + " cases, more than the limit of " + std::to_string(kMaxCases));
     cf.has_cases = true;
   } else if (j.contains("cases")) {
     const json& a = j.at("cases");
@@ -359,7 +374,13 @@ Profile load_profile(const ProfileSource& src, ProfileKind kind, Inclination inc
   }
   ProfileReadOptions o = src.read;
   o.kind = kind;
-  p = read_profile(src.file, o);
+  try {
+    p = read_profile(src.file, o);
+  } catch (const InputError& e) {
+    // Say which entry of the case file named the profile, then the profile's own location.
+    if (src.case_file.empty()) throw;
+    throw InputError(src.case_file + ": " + src.json_path + ": " + e.where(), e.value(), e.rule(), e.hint());
+  }
   if (kind == ProfileKind::Rail) rotate_towards_track_centre(p, inclination_angle(incl));
   return p;
 }

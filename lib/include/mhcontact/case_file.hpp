@@ -23,6 +23,7 @@ struct ProfileSource {
   double step = 0.1e-3;      ///< [m] node spacing of a generated standard profile (default 0.1 mm)
   ProfileReadOptions read;
   std::string json_path;     ///< e.g. "/wheel/profile", for messages
+  std::string case_file;     ///< the case file that named it, for messages
 };
 
 enum class Model { Elastic, Plastic };
