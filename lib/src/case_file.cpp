@@ -364,10 +364,10 @@ Profile load_profile(const ProfileSource& src, ProfileKind kind, Inclination inc
     try {
       k = standard_profile_kind(src.standard);
     } catch (const InputError& e) {
-      throw InputError(src.json_path + "/standard", "\"" + src.standard + "\"", e.rule(), e.hint());
+      throw InputError(src.case_file + ": " + src.json_path + "/standard", "\"" + src.standard + "\"", e.rule(), e.hint());
     }
     if (k != kind)
-      throw InputError(src.json_path + "/standard", "\"" + src.standard + "\"",
+      throw InputError(src.case_file + ": " + src.json_path + "/standard", "\"" + src.standard + "\"",
                        std::string("is a ") + to_string(k) + " profile, but a " + to_string(kind) + " is needed here");
     // The generator applies the inclination itself (it knows where a 1:20 flank turns vertical).
     return make_standard_profile(src.standard, kind == ProfileKind::Rail ? incl : Inclination::None, src.step);
