@@ -25,7 +25,7 @@ void add_geometry_command(CLI::App& app, CliContext& ctx) {
 }
 
 void add_run_command(CLI::App& app, CliContext& ctx) {
-  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; bool quiet = false; };
+  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Solve every case of the case file's sweep (writes DIR/cases.csv, DIR/ellipses.csv, "
@@ -36,6 +36,8 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
       ->check(CLI::IsMember({"csv", "json", "both"}))->capture_default_str();
   cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores; output is identical whatever the count)")
       ->check(CLI::Range(0u, 1024u))->capture_default_str();
+  cmd->add_option("--pressure-grid", o->pressure_grid,
+                  "Also write DIR/pressure.csv: the pressure of every loaded ellipse on an N x N grid over its patch");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or summary on standard error");
   cmd->callback([o, &ctx] {
     const CaseFile cf = load_case_file(o->case_file, true);
@@ -45,6 +47,7 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
     ro.json = o->format != "csv";
     ro.threads = o->threads;
     ro.quiet = o->quiet;
+    ro.pressure_grid = o->pressure_grid;
     ro.progress = (&ctx.err == &std::cerr) && ::isatty(2);
     ctx.exit_code = run_job(cf, ro, ctx.out, ctx.err);
   });

@@ -77,8 +77,39 @@ const Col kPlasticCols[] = {
 };
 
 struct Formatted {
-  std::string cases, ellipses, json;
+  std::string cases, ellipses, json, pressure;
 };
+
+// Pressure of each loaded ellipse on an N × N grid over its patch (method.md §5): the capped
+// Hertz pressure min(p0 √(1 − x²/a² − y²/b²), p_lim) and, in plastic mode, the elastic Hertz
+// pressure at the same load on the elastic patch (a_el, b_el).
+void format_pressure(std::uint64_t idx, const CaseResult& r, const Material& mat, bool plastic, int N,
+                     std::string& s) {
+  s.clear();
+  for (const LoadedEllipse& L : r.loaded) {
+    const double a = L.s.a, b = L.s.b;
+    const double p0_el = 1.5 * L.s.N / (units::pi * L.s.a_el * L.s.b_el);
+    for (int i = 0; i < N; ++i) {
+      const double x = -a + 2 * a * i / (N - 1);
+      for (int j = 0; j < N; ++j) {
+        const double y = -b + 2 * b * j / (N - 1);
+        const double q = 1 - (x * x) / (a * a) - (y * y) / (b * b);
+        double p = q > 0 ? L.s.p0 * std::sqrt(q) : 0.0;
+        if (plastic) p = std::min(p, mat.p_lim);
+        append_number(s, static_cast<long long>(idx));
+        s += ','; append_number(s, static_cast<long long>(L.ellipse));
+        s += ','; num(s, x * 1e3);
+        s += ','; num(s, y * 1e3);
+        s += ','; num(s, p / units::MPa);
+        if (plastic) {
+          const double qe = 1 - (x * x) / (L.s.a_el * L.s.a_el) - (y * y) / (L.s.b_el * L.s.b_el);
+          s += ','; num(s, (qe > 0 ? p0_el * std::sqrt(qe) : 0.0) / units::MPa);
+        }
+        s += '\n';
+      }
+    }
+  }
+}
 
 void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, const Material& mat,
                  bool plastic, bool want_csv, bool want_json, Formatted& f) {
@@ -190,6 +221,10 @@ std::string cases_csv_header() {
   return "case,tY_mm,Q_kN,status,dz_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,warnings,message\n";
 }
 
+std::string pressure_csv_header(bool plastic) {
+  return plastic ? "case,ellipse,x_mm,y_mm,p_MPa,p_elastic_MPa\n" : "case,ellipse,x_mm,y_mm,p_MPa\n";
+}
+
 std::string ellipses_csv_header(bool plastic) {
   std::string s = "case,tY_mm,Q_kN,ellipse";
   for (const Col& c : kEllipseCols) { s += ','; s += c.name; }
@@ -268,9 +303,18 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   const bool want_csv = opt.csv && !to_stdout;
   const bool want_json = opt.json || to_stdout;
 
-  std::unique_ptr<OutputFile> fc, fe, fj;
+  std::unique_ptr<OutputFile> fc, fe, fj, fp;
+  const int np = opt.pressure_grid;
+  if (np != 0 && (np < 2 || np > 1000))
+    throw InputError("--pressure-grid", std::to_string(np), "must be between 2 and 1000 points per axis");
+  if (np && to_stdout)
+    throw InputError("--pressure-grid", std::to_string(np), "needs an output directory (not -o -)");
   if (!to_stdout) {
     ensure_directory(opt.out_dir);
+    if (np) {
+      fp = std::make_unique<OutputFile>(opt.out_dir + "/pressure.csv");
+      fp->stream() << pressure_csv_header(plastic);
+    }
     if (want_csv) {
       fc = std::make_unique<OutputFile>(opt.out_dir + "/cases.csv");
       fe = std::make_unique<OutputFile>(opt.out_dir + "/ellipses.csv");
@@ -308,6 +352,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
         const CaseResult r = solve_case(G, cf.material, cp.tY, cp.Q, cf.solver);
         status[i] = r.status;
         format_case(c0 + i, cp, r, cf.material, plastic, want_csv, want_json, fmt[i]);
+        if (np) format_pressure(c0 + i, r, cf.material, plastic, np, fmt[i].pressure);
       }
     };
     const unsigned nt = static_cast<unsigned>(std::min<std::size_t>(threads, m));
@@ -327,6 +372,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
         fe->stream() << fmt[i].ellipses;
       }
       if (js) *js << fmt[i].json << (c0 + i + 1 < n ? ",\n" : "\n");
+      if (fp) fp->stream() << fmt[i].pressure;
     }
     if (opt.progress && !opt.quiet) {
       const int pct = static_cast<int>(100.0 * static_cast<double>(c0 + m) / static_cast<double>(n));
@@ -343,6 +389,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   }
   if (fc) { fc->commit(); fe->commit(); }
   if (fj) fj->commit();
+  if (fp) fp->commit();
   if (to_stdout) out.flush();
   if (!opt.quiet) {
     if (opt.progress) err << "\n";

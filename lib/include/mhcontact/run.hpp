@@ -18,6 +18,9 @@ struct RunOptions {
   bool quiet = false;           ///< no summary or progress on `err`
   bool progress = false;        ///< progress display on `err` (the CLI sets it when err is a terminal)
   std::size_t chunk = 8192;     ///< cases solved per parallel batch (default 8192)
+  /// N > 0: also write DIR/pressure.csv, the pressure of every loaded ellipse on an N × N grid
+  /// over its patch (x along the rolling direction, y lateral in the contact plane). Default 0.
+  int pressure_grid = 0;
 };
 
 /// Everything a geometry build produced, with the profiles it was built from.
@@ -36,5 +39,6 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
 /// The column names of the tables (README "Output tables").
 std::string cases_csv_header();
 std::string ellipses_csv_header(bool plastic);
+std::string pressure_csv_header(bool plastic);
 
 }  // namespace mh
