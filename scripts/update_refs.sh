@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Regenerate tests/ref/ from the shipped cases. Review the change (git diff) before committing:
+# the references are what CI holds every later build to.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin=${1:-build/mhcontact}
+for c in manchester manchester-plastic; do
+  "$bin" run "cases/$c.json" -o "tests/ref/$c" --format csv -q || test $? -eq 1
+done
+echo "updated tests/ref/: review with git diff"
