@@ -113,7 +113,7 @@ TEST_CASE("geometry writes caf.csv and geometry.json", "[run]") {
   REQUIRE(cli({"geometry", kSrc + "/cases/manchester.json", "-o", d / "g"}, nullptr, &err) == 0);
   REQUIRE_THAT(err, Catch::Contains("4 potential ellipses"));
   const std::string caf = slurp(d / "g/caf.csv");
-  REQUIRE(caf.rfind("tY_mm,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,r_roll_mm,strip,ellipse\n", 0) == 0);
+  REQUIRE(caf.rfind("tY_mm,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,r_roll_mm,wheel_dz_mm,strip,ellipse\n", 0) == 0);
   const auto j = nlohmann::json::parse(slurp(d / "g/geometry.json"));
   REQUIRE(j.at("potential_ellipses").size() == 4);
   REQUIRE(j.at("potential_ellipses")[1].at("tY_min_mm").get<double>() == Approx(0.22).margin(0.02));

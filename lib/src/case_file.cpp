@@ -347,8 +347,8 @@ CaseFile load_case_file(const std::string& path, bool need_cases) {
       cf.geometry.tY_max = std::max(cf.geometry.tY_max, *std::max_element(cf.sweep_tY_mm.begin(), cf.sweep_tY_mm.end()) * units::mm);
     }
     // Snap outwards onto the grid step so the sweep's ends are inside.
-    cf.geometry.tY_min = std::floor(cf.geometry.tY_min / cf.geometry.tY_step - 1e-9) * cf.geometry.tY_step;
-    cf.geometry.tY_max = std::ceil(cf.geometry.tY_max / cf.geometry.tY_step + 1e-9) * cf.geometry.tY_step;
+    cf.geometry.tY_min = std::floor(cf.geometry.tY_min / cf.geometry.tY_step + 1e-6) * cf.geometry.tY_step;
+    cf.geometry.tY_max = std::ceil(cf.geometry.tY_max / cf.geometry.tY_step - 1e-6) * cf.geometry.tY_step;
     if (cf.geometry.tY_max - cf.geometry.tY_min > 0.2)
       c.fail("/sweep/tY_mm", nullptr, "the t_Y values span more than 200 mm");
   }

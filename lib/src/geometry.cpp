@@ -110,7 +110,12 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
 
   const std::size_t nt = static_cast<std::size_t>(std::floor((opt.tY_max - opt.tY_min) / opt.tY_step + 1e-9)) + 1;
   G.tY.resize(nt);
-  for (std::size_t k = 0; k < nt; ++k) G.tY[k] = opt.tY_min + opt.tY_step * static_cast<double>(k);
+  // Grid values: when t_Y_min is a whole number of steps, each value is computed as an integer
+  // times the step in mm, so that the tables print 5 and not 5.000000000000001.
+  const double step_mm = opt.tY_step * 1e3, k0 = std::round(opt.tY_min / opt.tY_step);
+  const bool aligned = std::fabs(opt.tY_min / opt.tY_step - k0) < 1e-6;
+  for (std::size_t k = 0; k < nt; ++k)
+    G.tY[k] = aligned ? (k0 + static_cast<double>(k)) * step_mm / 1e3 : opt.tY_min + opt.tY_step * static_cast<double>(k);
 
   // Main strip and CAF per grid point.
   struct Main { double y_r, gmin; std::size_t strip; };

@@ -251,7 +251,7 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
   ensure_directory(out_dir);
   {
     OutputFile f(out_dir + "/caf.csv");
-    std::string s = "tY_mm,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,r_roll_mm,strip,ellipse\n";
+    std::string s = "tY_mm,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,r_roll_mm,wheel_dz_mm,strip,ellipse\n";
     for (std::size_t k = 0; k < G.tY.size(); ++k) {
       const CandidateGeom& c = G.main_at(k);
       num(s, G.tY[k] * 1e3);
@@ -262,9 +262,25 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
       s += ','; num(s, radius_mm(c.k_wxx));
       s += ','; num(s, c.R_wyy() * 1e3);
       s += ','; num(s, c.r_roll * 1e3);
+      s += ','; num(s, -G.z_contact[k] * 1e3);
       s += ','; append_number(s, static_cast<long long>(G.main_strip[k]));
       s += ','; append_number(s, static_cast<long long>(G.main_ellipse[k] + 1));
       s += '\n';
+    }
+    f.stream() << s;
+    f.commit();
+  }
+  {
+    // The profiles as used (rail with its inclination), canonical frame, for plots.
+    OutputFile f(out_dir + "/profiles.csv");
+    std::string s = "kind,y_mm,z_mm\n";
+    for (const Profile* p : {&pg.wheel, &pg.rail}) {
+      for (std::size_t i = 0; i < p->size(); ++i) {
+        s += to_string(p->kind);
+        s += ','; num(s, p->y[i] * 1e3);
+        s += ','; num(s, p->z[i] * 1e3);
+        s += '\n';
+      }
     }
     f.stream() << s;
     f.commit();
@@ -288,7 +304,7 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
     err << "mhcontact geometry: " << G.n_ellipses() << " potential ellipses over t_Y " << format_number(G.tY.front() * 1e3)
         << " .. " << format_number(G.tY.back() * 1e3) << " mm (" << G.tY.size() << " grid points, "
         << G.strip_y.size() << " strips) in " << format_number(std::round(secs * 1e3) / 1e3) << " s; wrote "
-        << out_dir << "/caf.csv, " << out_dir << "/geometry.json\n";
+        << out_dir << "/caf.csv, geometry.json, profiles.csv\n";
   (void)out;
   return kExitOk;
 }
