@@ -30,7 +30,8 @@ check "60E1 1:40 crown top stays at the origin" grep -qx "0,0" 60E1_1-40.csv
 
 "$BIN" profile generate 60E1 --inclination 1:20 --step 0.05 -o 60E1_1-20.prr >out.txt 2>err.txt
 check "60E1 1:20 .prr exit 0" test $? -eq 0
-check "60E1 1:20 warns about the vertical gauge flank" grep -q "gauge-side flank left out: it is vertical at 1:20" err.txt
+check "60E1 1:20 message" grep -qx "wrote 60E1_1-20.prr (60E1 rail, inclination 1:20, 1836 points)" out.txt
+check "60E1 1:20 warns about the vertical gauge flank" grep -qx "warning: 60E1: gauge-side flank left out: it is vertical at 1:20; the profile ends at the R13/flank tangency point" err.txt
 "$BIN" profile info 60E1_1-20.prr >info.txt 2>&1
 check "60E1 1:20 .prr reads back as a rail" grep -qx "kind: rail" info.txt
 
@@ -61,7 +62,7 @@ must_fail() {  # must_fail CODE MESSAGE ARGS...
   grep -qF -- "$msg" err.txt || { echo "FAIL: $* -> message lacks '$msg':"; cat err.txt; fail=1; }
   if [ -e bad.csv ] || [ -e bad.prw ] || [ -e bad.txt ]; then echo "FAIL: $* wrote a file"; fail=1; fi
 }
-must_fail 2 "valid names: S1002, 60E1, 54E1" profile generate UIC60 -o bad.csv
+must_fail 2 'mhcontact: error: standard profile: value "UIC60": unknown standard profile name (valid names: S1002, 60E1, 54E1)' profile generate UIC60 -o bad.csv
 must_fail 2 "a wheel profile has no inclination" profile generate S1002 --inclination 1:40 -o bad.csv
 must_fail 2 "a rail cannot be written as a SIMPACK wheel (.prw)" profile generate 60E1 -o bad.prw
 must_fail 2 "step must lie in 0.001 … 5 mm" profile generate 60E1 --step 10 -o bad.csv
