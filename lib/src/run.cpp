@@ -210,6 +210,22 @@ nlohmann::json inputs_json(const CaseFile& cf, const PairGeometry& pg) {
   return j;
 }
 
+// The profiles as used (rail with its inclination), canonical frame, mm: for plots.
+void write_profiles_csv(const PairGeometry& pg, const std::string& path) {
+  OutputFile f(path);
+  std::string s = "kind,y_mm,z_mm\n";
+  for (const Profile* p : {&pg.wheel, &pg.rail}) {
+    for (std::size_t i = 0; i < p->size(); ++i) {
+      s += to_string(p->kind);
+      s += ','; num(s, p->y[i] * 1e3);
+      s += ','; num(s, p->z[i] * 1e3);
+      s += '\n';
+    }
+  }
+  f.stream() << s;
+  f.commit();
+}
+
 void warn_profiles(const PairGeometry& pg, std::ostream& err) {
   for (const Profile* p : {&pg.wheel, &pg.rail})
     for (const auto& w : p->warnings) err << "mhcontact: warning: " << p->source << ": " << w << "\n";
@@ -270,21 +286,7 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
     f.stream() << s;
     f.commit();
   }
-  {
-    // The profiles as used (rail with its inclination), canonical frame, for plots.
-    OutputFile f(out_dir + "/profiles.csv");
-    std::string s = "kind,y_mm,z_mm\n";
-    for (const Profile* p : {&pg.wheel, &pg.rail}) {
-      for (std::size_t i = 0; i < p->size(); ++i) {
-        s += to_string(p->kind);
-        s += ','; num(s, p->y[i] * 1e3);
-        s += ','; num(s, p->z[i] * 1e3);
-        s += '\n';
-      }
-    }
-    f.stream() << s;
-    f.commit();
-  }
+  write_profiles_csv(pg, out_dir + "/profiles.csv");
   {
     nlohmann::json j;
     j["schema"] = kGeometrySchema;
@@ -403,7 +405,11 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     nlohmann::json summary = {{"cases", n}, {"failed", failed}, {"by_status", by_status}};
     *js << "  ],\n  \"summary\": " << summary.dump() << "\n}\n";
   }
-  if (fc) { fc->commit(); fe->commit(); }
+  if (fc) {
+    fc->commit();
+    fe->commit();
+    write_profiles_csv(pg, opt.out_dir + "/profiles.csv");
+  }
   if (fj) fj->commit();
   if (fp) fp->commit();
   if (to_stdout) out.flush();
