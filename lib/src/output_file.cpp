@@ -1,6 +1,7 @@
 #include "mhcontact/output_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -64,6 +65,10 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
   int fd = ::mkstemp(buf.data());
   if (fd < 0)
     throw InputError(path_, "", std::string("output file cannot be written: ") + std::strerror(errno));
+  // mkstemp creates 0600; an output file gets the usual 0666 less the umask.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
   ::close(fd);
   tmp_.assign(buf.data());
   slot_ = register_pending(tmp_);
