@@ -65,7 +65,7 @@ namespace {
 // reduction used to derive the closed form).
 struct Quad {
   double a, b, p0, plim, y;
-  gsl_integration_workspace* w;
+  gsl_integration_workspace* wi;  // for the inner integral
 };
 double p_capped(double x, void* v) {
   const Quad* q = static_cast<Quad*>(v);
@@ -89,7 +89,7 @@ double line_load(double y, void* v) {  // ∫ p dx at fixed y, x from −X to X
   const double X = q->a * std::sqrt(u);
   const double s = q->plim / q->p0;
   const double k = u - s * s;  // kink at x = a √(u − s²) where p0√(...) = p_lim
-  static thread_local gsl_integration_workspace* wi = gsl_integration_workspace_alloc(1000);
+  gsl_integration_workspace* wi = q->wi;
   if (k > 0) {
     const double xk = q->a * std::sqrt(k);
     return 2 * (integrate(&F, 0, xk, wi) + integrate(&F, xk, X, wi));
@@ -104,16 +104,18 @@ TEST_CASE("plastic law: closed-form N against quadrature of the capped pressure"
   // to 1. Tolerance 1e-8 relative.
   gsl_set_error_handler_off();
   gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
+  gsl_integration_workspace* wi = gsl_integration_workspace_alloc(1000);
   const double a = 7e-3, b = 5e-3, p0 = 1.2e9;
   for (double s : {0.01, 0.03, 0.1, 0.2, 0.35, 0.5, 0.65, 0.8, 0.9, 0.97, 0.999, 1.0}) {
     CAPTURE(s);
-    Quad q{a, b, p0, s * p0, 0, w};
+    Quad q{a, b, p0, s * p0, 0, wi};
     gsl_function F{&line_load, &q};
     const double yk = b * std::sqrt(1 - s * s);  // the plateau edge on the y axis
     const double Nq = 2 * (integrate(&F, 0, yk, w) + integrate(&F, yk, b, w));
     CHECK(rel(capped_hertz_load(a, b, p0, s * p0), Nq) <= 1e-8);
   }
   gsl_integration_workspace_free(w);
+  gsl_integration_workspace_free(wi);
   // s ≥ 1 is the Hertz load (2/3) π a b p0, exactly.
   CHECK(capped_hertz_load(a, b, p0, 2 * p0) == (2.0 / 3.0) * kPi * a * b * p0);
   CHECK(capped_hertz_load(a, b, p0, INFINITY) == (2.0 / 3.0) * kPi * a * b * p0);
