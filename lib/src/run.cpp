@@ -28,6 +28,8 @@ inline void jnum(std::string& s, double v) {
   if (std::isfinite(v)) append_number(s, v); else s += "null";
 }
 inline double radius_mm(double k) { return k == 0 ? INFINITY : 1e3 / k; }
+// Grid t_Y values in mm, rounded to 1e-9 mm so that 6.6e-3 m prints 6.6 and not 6.6000000000000005.
+inline double grid_mm(double m) { return std::round(m * 1e12) / 1e9; }
 
 // RFC 4180 quoting for text cells.
 void csv_text(std::string& s, const std::string& t) {
@@ -197,7 +199,7 @@ nlohmann::json profile_json(const Profile& p, double window) {
 nlohmann::json ellipses_json(const ContactGeometry& G) {
   nlohmann::json a = nlohmann::json::array();
   for (const PotentialEllipse& P : G.ellipses)
-    a.push_back({{"ellipse", P.index}, {"tY_min_mm", P.tY_min * 1e3}, {"tY_max_mm", P.tY_max * 1e3},
+    a.push_back({{"ellipse", P.index}, {"tY_min_mm", grid_mm(P.tY_min)}, {"tY_max_mm", grid_mm(P.tY_max)},
                  {"y_rail_min_mm", P.y_r_min * 1e3}, {"y_rail_max_mm", P.y_r_max * 1e3},
                  {"y_wheel_min_mm", P.y_w_min * 1e3}, {"y_wheel_max_mm", P.y_w_max * 1e3}});
   return a;
@@ -270,7 +272,7 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
     std::string s = "tY_mm,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,r_roll_mm,wheel_dz_mm,strip,ellipse\n";
     for (std::size_t k = 0; k < G.tY.size(); ++k) {
       const CandidateGeom& c = G.main_at(k);
-      num(s, G.tY[k] * 1e3);
+      num(s, grid_mm(G.tY[k]));
       s += ','; num(s, c.y_r * 1e3);
       s += ','; num(s, c.y_w * 1e3);
       s += ','; num(s, c.gamma / units::deg);
@@ -367,7 +369,15 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     auto work = [&](unsigned t, unsigned nt) {
       for (std::size_t i = t; i < m; i += nt) {
         const CasePoint cp = cf.case_at(c0 + i);
-        const CaseResult r = solve_case(G, cf.material, cp.tY, cp.Q, cf.solver);
+        CaseResult r;
+        try {
+          r = solve_case(G, cf.material, cp.tY, cp.Q, cf.solver);
+        } catch (const std::exception& ex) {
+          // Never let one case end the sweep (or a worker thread): report it in its row.
+          r = CaseResult{};
+          r.status = CaseStatus::NotConverged;
+          r.message = std::string("internal error: ") + ex.what();
+        }
         status[i] = r.status;
         format_case(c0 + i, cp, r, cf.material, plastic, want_csv, want_json, fmt[i]);
         if (np) format_pressure(c0 + i, r, cf.material, plastic, np, fmt[i].pressure);

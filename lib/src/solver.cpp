@@ -65,8 +65,14 @@ CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, 
     c.B = 0.5 * (c.g.k_wxx + c.g.k_rxx);             // (eq. 1)
     c.cg = std::cos(c.g.gamma);
     c.sg = std::sin(c.g.gamma);
-    c.hertzian = c.B > 0 && c.A > 0 && std::isfinite(c.A);
-    if (c.hertzian) c.law = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients);
+    c.hertzian = c.B > 0 && c.A > 0 && std::isfinite(c.A) && std::isfinite(c.B);
+    if (c.hertzian) {
+      try {
+        c.law = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients);
+      } catch (const std::exception&) {
+        c.hertzian = false;  // e.g. λ beyond the Hertz range: nearly conformal, no ellipse
+      }
+    }
     cs.push_back(c);
   }
   // Σ N_i cos γ_i and its derivative in δz (eqs. 10–11).
