@@ -179,7 +179,7 @@ TEST_CASE("non-Hertzian candidates (B <= 0) are excluded and flagged when they w
   // Regression: a nearly conformal candidate (B > 0 but λ = A/B beyond the Hertz range) threw
   // from make_ellipse_law inside a worker thread and aborted the whole run. Now it is excluded
   // like B <= 0, and flagged.
-  const CaseResult tiny = solve_case(two_candidates(-1 / 0.013 + 1e-9, 1e-6), mat, 0.5e-3, 100e3);
+  const CaseResult tiny = solve_case(two_candidates(-1 / 0.013 + 1e-11, 1e-6), mat, 0.5e-3, 100e3);
   REQUIRE(tiny.status == CaseStatus::Ok);
   REQUIRE(tiny.warnings == std::vector<std::string>{"non_hertzian_excluded:ellipse=2"});
   // Hertzian second candidate (convex wheel): loaded, equilibrium with two ellipses.
