@@ -12,13 +12,13 @@ qstep=$(awk -v n="$nq" 'BEGIN{printf "%.10g", 140/(n-1)}')
 sed -e "s|\"sweep\": .*|\"sweep\": {\"tY_mm\": {\"from\": -6, \"to\": 10, \"step\": $step}, \"Q_kN\": {\"from\": 10, \"to\": 150, \"step\": $qstep}}|" \
     -e "s|\"\\.\\./profiles/|\"$PWD/profiles/|g" cases/manchester.json > "$tmp/big.json"
 ncases=$((ny * nq))
-run() {  # $1 = threads; prints wall seconds and peak RSS
-  local best=""
+run() {  # $1 = threads; prints the median wall seconds and the median peak RSS [KB] of 3 runs
+  : > "$tmp/times"
   for r in 1 2 3; do
     /usr/bin/time -f "%e %M" -o "$tmp/time" ./build/mhcontact run "$tmp/big.json" -o "$tmp/out" --format csv --threads "$1" -q || true
-    best="$best $(cat "$tmp/time" | tr '\n' ' ')"
+    cat "$tmp/time" >> "$tmp/times"
   done
-  echo "$best" | awk '{n=0; for(i=1;i<=NF;i+=2){t[n]=$i; m[n]=$(i+1); n++} asort(t); asort(m); printf "%s %s", t[int((n+1)/2)], m[int((n+1)/2)]}'
+  echo "$(cut -d' ' -f1 "$tmp/times" | sort -g | sed -n 2p) $(cut -d' ' -f2 "$tmp/times" | sort -g | sed -n 2p)"
 }
 read -r t1 m1 < <(run 1)
 read -r tn mn < <(run 0)
