@@ -90,3 +90,28 @@ TEST_CASE("noise on a crown does not flip the curvature sign", "[curve]") {
   REQUIRE(c.window_used() == Approx(3e-3));  // noise detected: the measured-profile window
   for (double y = -28e-3; y < 28e-3; y += 0.05e-3) REQUIRE(c.kappa(y) < 0);
 }
+
+#include "mhcontact/profile_io.hpp"
+
+TEST_CASE("measured rails: no spurious curvature sign change on the crown", "[curve]") {
+  // Criterion (issue 2): on the crown, within ±10 mm of the head top, every 0.01 mm node is
+  // convex (kappa < 0) and its radius lies between 100 and 1000 mm (nominal crown radius 300 mm).
+  // Files: the measured heavy-haul rail site_b_hr.prr, the EN 15302 reference rail A (table),
+  // and the Manchester UIC60 in both its SIMPACK and MiniProf versions.
+  const std::string dir = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/";
+  for (const char* f : {"site_b_hr.prr", "EN15302_rail_A.dat", "MBench_UIC60_v3.prr", "MBench_UIC60_v3.ban"}) {
+    CAPTURE(f);
+    mh::ProfileReadOptions o;
+    o.kind = mh::ProfileKind::Rail;
+    const Profile p = mh::read_profile(dir + f, o);
+    const ProfileCurve c(p);
+    const mh::RailLandmarks L = mh::rail_landmarks(p);
+    for (int i = -1000; i <= 1000; ++i) {
+      const double y = L.y_top + i * 0.01e-3;
+      const double k = c.kappa(y);
+      REQUIRE(k < 0);
+      REQUIRE(-1.0 / k > 0.100);
+      REQUIRE(-1.0 / k < 1.000);
+    }
+  }
+}
