@@ -35,6 +35,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   add_profile_generate_command(*profile, ctx);
   add_geometry_command(app, ctx);
   add_run_command(app, ctx);
+  add_merge_command(app, ctx);
   add_hertz_command(app, ctx);
   add_diff_command(app, ctx);
 

@@ -25,7 +25,7 @@ void add_geometry_command(CLI::App& app, CliContext& ctx) {
 }
 
 void add_run_command(CLI::App& app, CliContext& ctx) {
-  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false; };
+  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false; std::string shard; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Solve every case of the case file's sweep (writes DIR/cases.csv, DIR/ellipses.csv, "
@@ -38,10 +38,12 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
       ->check(CLI::Range(0u, 1024u))->capture_default_str();
   cmd->add_option("--pressure-grid", o->pressure_grid,
                   "Also write DIR/pressure.csv: the pressure of every loaded ellipse on an N x N grid over its patch");
+  cmd->add_option("--shard", o->shard, "K/N: run only the K-th of N deterministic slices of the case list (join them with `mhcontact merge`)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or summary on standard error");
   cmd->callback([o, &ctx] {
-    const CaseFile cf = load_case_file(o->case_file, true);
     RunOptions ro;
+    if (!o->shard.empty()) parse_shard(o->shard, &ro.shard_index, &ro.shard_count);
+    const CaseFile cf = load_case_file(o->case_file, true);
     ro.out_dir = o->out_dir;
     ro.csv = o->format != "json";
     ro.json = o->format != "csv";
@@ -51,6 +53,22 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
     ro.progress = (&ctx.err == &std::cerr) && ::isatty(2);
     ctx.exit_code = run_job(cf, ro, ctx.out, ctx.err);
   });
+}
+
+}  // namespace mh
+
+namespace mh {
+
+void add_merge_command(CLI::App& app, CliContext& ctx) {
+  struct Opts { std::vector<std::string> dirs; std::string out_dir; bool quiet = false; };
+  auto o = std::make_shared<Opts>();
+  CLI::App* cmd = app.add_subcommand(
+      "merge", "Join the output directories of all shards of one `run --shard K/N` into the tables a single run "
+               "would have written. Exit 0 if every case is ok, 1 if some are not.");
+  cmd->add_option("dirs", o->dirs, "Shard output directories (any order)")->required();
+  cmd->add_option("-o,--output", o->out_dir, "Output directory")->required();
+  cmd->add_flag("-q,--quiet", o->quiet, "No summary on standard error");
+  cmd->callback([o, &ctx] { ctx.exit_code = merge_job(o->dirs, o->out_dir, ctx.err, o->quiet); });
 }
 
 }  // namespace mh

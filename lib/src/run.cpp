@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <memory>
 #include <ostream>
 #include <thread>
@@ -356,16 +358,21 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     *js << h << ",\n  \"cases\": [\n";
   }
 
-  const std::uint64_t n = cf.case_count();
+  const std::uint64_t n_all = cf.case_count();
+  if (opt.shard_count < 1 || opt.shard_index < 1 || opt.shard_index > opt.shard_count)
+    throw InputError("--shard", std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count), "must be K/N with 1 <= K <= N");
+  const std::uint64_t first = n_all * (opt.shard_index - 1) / opt.shard_count;
+  const std::uint64_t end = n_all * opt.shard_index / opt.shard_count;
+  const std::uint64_t n = end - first;
   unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
   const std::size_t chunk = std::max<std::size_t>(opt.chunk, 1);
-  std::vector<Formatted> fmt(std::min<std::uint64_t>(chunk, n));
+  std::vector<Formatted> fmt(std::max<std::uint64_t>(1, std::min<std::uint64_t>(chunk, n)));
   std::map<std::string, std::uint64_t> by_status;
   std::uint64_t failed = 0;
   std::vector<CaseStatus> status(fmt.size());
   int last_pct = -1;
-  for (std::uint64_t c0 = 0; c0 < n; c0 += chunk) {
-    const std::size_t m = static_cast<std::size_t>(std::min<std::uint64_t>(chunk, n - c0));
+  for (std::uint64_t c0 = first; c0 < end; c0 += chunk) {
+    const std::size_t m = static_cast<std::size_t>(std::min<std::uint64_t>(chunk, end - c0));
     auto work = [&](unsigned t, unsigned nt) {
       for (std::size_t i = t; i < m; i += nt) {
         const CasePoint cp = cf.case_at(c0 + i);
@@ -399,13 +406,13 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
         fc->stream() << fmt[i].cases;
         fe->stream() << fmt[i].ellipses;
       }
-      if (js) *js << fmt[i].json << (c0 + i + 1 < n ? ",\n" : "\n");
+      if (js) *js << fmt[i].json << (c0 + i + 1 < end ? ",\n" : "\n");
       if (fp) fp->stream() << fmt[i].pressure;
     }
     if (opt.progress && !opt.quiet) {
-      const int pct = static_cast<int>(100.0 * static_cast<double>(c0 + m) / static_cast<double>(n));
+      const int pct = static_cast<int>(100.0 * static_cast<double>(c0 + m - first) / static_cast<double>(n));
       if (pct != last_pct) {
-        err << "\rmhcontact run: " << (c0 + m) << "/" << n << " cases (" << pct << " %)" << std::flush;
+        err << "\rmhcontact run: " << (c0 + m - first) << "/" << n << " cases (" << pct << " %)" << std::flush;
         last_pct = pct;
       }
     }
@@ -420,16 +427,152 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     fe->commit();
     write_profiles_csv(pg, opt.out_dir + "/profiles.csv");
   }
+  if (opt.shard_count > 1 && !to_stdout) {
+    nlohmann::json sh = {{"schema", "mhcontact.shard/1"}, {"index", opt.shard_index}, {"count", opt.shard_count},
+                         {"first_case", first}, {"end_case", end}, {"case_count", n_all}, {"failed", failed},
+                         {"by_status", by_status}, {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0},
+                         {"inputs", inputs_json(cf, pg)}};
+    OutputFile f(opt.out_dir + "/shard.json");
+    f.stream() << sh.dump(2) << "\n";
+    f.commit();
+  }
   if (fj) fj->commit();
   if (fp) fp->commit();
   if (to_stdout) out.flush();
   if (!opt.quiet) {
     if (opt.progress) err << "\n";
     err << "mhcontact run: " << n << " cases";
+    if (opt.shard_count > 1) err << " (shard " << opt.shard_index << "/" << opt.shard_count << ": cases " << first << " .. " << end - 1 << ")";
     for (const auto& [k, v] : by_status) err << ", " << k << " " << v;
     err << "; " << G.n_ellipses() << " potential ellipses; " << format_number(std::round(secs * 1e3) / 1e3) << " s";
     if (!to_stdout) err << "; outputs in " << opt.out_dir;
     err << "\n";
+  }
+  return failed ? kExitCasesFailed : kExitOk;
+}
+
+void parse_shard(const std::string& text, unsigned* index, unsigned* count) {
+  const auto slash = text.find('/');
+  auto bad = [&]() { return InputError("--shard", text, "must be K/N with 1 <= K <= N <= 100000, e.g. 3/8"); };
+  if (slash == std::string::npos) throw bad();
+  try {
+    std::size_t p1 = 0, p2 = 0;
+    const long k = std::stol(text.substr(0, slash), &p1), n = std::stol(text.substr(slash + 1), &p2);
+    if (p1 != slash || p2 != text.size() - slash - 1 || k < 1 || n < 1 || k > n || n > 100000) throw bad();
+    *index = static_cast<unsigned>(k);
+    *count = static_cast<unsigned>(n);
+  } catch (const std::logic_error&) {
+    throw bad();
+  }
+}
+
+namespace {
+
+std::string read_all(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "cannot read (is this the output directory of a `run --shard`?)");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Copy a CSV file to `out`, skipping its header unless `with_header`; the header must equal `header`.
+void append_csv(const std::string& path, std::ostream& out, std::string* header, bool with_header) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "missing in a shard directory");
+  std::string line;
+  std::getline(in, line);
+  if (header->empty()) *header = line;
+  else if (line != *header) throw InputError(path, "", "its header differs from the first shard's");
+  if (with_header) out << line << '\n';
+  char buf[1 << 16];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) out.write(buf, in.gcount());
+}
+
+}  // namespace
+
+int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, std::ostream& err, bool quiet) {
+  if (dirs.empty()) throw InputError("merge", "", "give the shard directories");
+  struct Shard { std::string dir; nlohmann::json meta; };
+  std::vector<Shard> shards;
+  for (const auto& d : dirs) {
+    const std::string p = d + "/shard.json";
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(read_all(p));
+    } catch (const nlohmann::json::exception& e) {
+      throw InputError(p, "", std::string("not a shard description: ") + e.what());
+    }
+    if (j.value("schema", "") != "mhcontact.shard/1") throw InputError(p, "", "not a shard description (schema mhcontact.shard/1)");
+    shards.push_back({d, j});
+  }
+  std::sort(shards.begin(), shards.end(), [](const Shard& a, const Shard& b) { return a.meta["index"] < b.meta["index"]; });
+  const auto N = shards[0].meta["count"].get<unsigned>();
+  if (shards.size() != N)
+    throw InputError("merge", std::to_string(shards.size()) + " directories", "the run was split into " + std::to_string(N) + " shards: give all of them, once each");
+  std::uint64_t expect = 0;
+  for (unsigned k = 0; k < N; ++k) {
+    const nlohmann::json& m = shards[k].meta;
+    const std::string where = shards[k].dir + "/shard.json";
+    if (m["index"].get<unsigned>() != k + 1) throw InputError(where, m["index"].dump(), "shard " + std::to_string(k + 1) + " is missing or given twice");
+    if (m["count"] != shards[0].meta["count"] || m["case_count"] != shards[0].meta["case_count"])
+      throw InputError(where, "", "shards of different runs (case or shard counts differ)");
+    if (m["inputs"] != shards[0].meta["inputs"]) throw InputError(where, "", "shards of different runs (inputs differ: case file, profiles or options)");
+    if (m["csv"] != shards[0].meta["csv"] || m["json"] != shards[0].meta["json"] || m["pressure"] != shards[0].meta["pressure"])
+      throw InputError(where, "", "shards written with different output options");
+    if (m["first_case"].get<std::uint64_t>() != expect) throw InputError(where, m["first_case"].dump(), "the shards' case ranges do not tile the case list");
+    expect = m["end_case"].get<std::uint64_t>();
+  }
+  if (expect != shards[0].meta["case_count"].get<std::uint64_t>()) throw InputError("merge", "", "the shards do not cover every case");
+  ensure_directory(out_dir);
+  std::uint64_t failed = 0;
+  std::map<std::string, std::uint64_t> by_status;
+  for (const auto& s : shards) {
+    failed += s.meta["failed"].get<std::uint64_t>();
+    for (auto it = s.meta["by_status"].begin(); it != s.meta["by_status"].end(); ++it) by_status[it.key()] += it.value().get<std::uint64_t>();
+  }
+  const bool csv = shards[0].meta["csv"], json = shards[0].meta["json"], pressure = shards[0].meta["pressure"];
+  std::vector<std::string> tables;
+  if (csv) tables = {"cases.csv", "ellipses.csv"};
+  if (pressure) tables.push_back("pressure.csv");
+  for (const auto& t : tables) {
+    OutputFile f(out_dir + "/" + t);
+    std::string header;
+    for (unsigned k = 0; k < N; ++k) append_csv(shards[k].dir + "/" + t, f.stream(), &header, k == 0);
+    f.commit();
+  }
+  if (csv) {
+    OutputFile f(out_dir + "/profiles.csv");
+    f.stream() << read_all(shards[0].dir + "/profiles.csv");
+    f.commit();
+  }
+  if (json) {
+    // Each shard's results.json: the same head, its cases, its summary. Keep the first head,
+    // concatenate the case lines, write the summary of all cases.
+    OutputFile f(out_dir + "/results.json");
+    const std::string open = "  \"cases\": [\n", close = "  ],\n  \"summary\": ";
+    bool any = false;
+    for (unsigned k = 0; k < N; ++k) {
+      const std::string path = shards[k].dir + "/results.json";
+      const std::string t = read_all(path);
+      const auto a = t.find(open), b = t.rfind(close);
+      if (a == std::string::npos || b == std::string::npos || b < a + open.size()) throw InputError(path, "", "not a results.json of mhcontact run");
+      if (k == 0) f.stream() << t.substr(0, a + open.size());
+      std::string body = t.substr(a + open.size(), b - a - open.size());
+      if (body.empty()) continue;  // a shard without cases (more shards than cases)
+      body.pop_back();             // the newline after the shard's last case
+      f.stream() << (any ? ",\n" : "") << body;
+      any = true;
+    }
+    if (any) f.stream() << "\n";
+    const nlohmann::json summary = {{"cases", shards[0].meta["case_count"]}, {"failed", failed}, {"by_status", by_status}};
+    f.stream() << close << summary.dump() << "\n}\n";
+    f.commit();
+  }
+  if (!quiet) {
+    err << "mhcontact merge: " << N << " shards, " << shards[0].meta["case_count"].get<std::uint64_t>() << " cases";
+    for (const auto& [k, v] : by_status) err << ", " << k << " " << v;
+    err << "; outputs in " << out_dir << "\n";
   }
   return failed ? kExitCasesFailed : kExitOk;
 }

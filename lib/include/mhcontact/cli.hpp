@@ -25,5 +25,6 @@ void add_hertz_command(CLI::App& app, CliContext& ctx);              // hertz
 void add_diff_command(CLI::App& app, CliContext& ctx);               // diff
 void add_geometry_command(CLI::App& app, CliContext& ctx);           // geometry
 void add_run_command(CLI::App& app, CliContext& ctx);                // run
+void add_merge_command(CLI::App& app, CliContext& ctx);              // merge
 
 }  // namespace mh

@@ -4,6 +4,7 @@
 // never half written: OutputFile), byte-identical whatever the thread count.
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "mhcontact/case_file.hpp"
 #include "mhcontact/geometry.hpp"
@@ -21,7 +22,21 @@ struct RunOptions {
   /// N > 0: also write DIR/pressure.csv, the pressure of every loaded ellipse on an N × N grid
   /// over its patch (x along the rolling direction, y lateral in the contact plane). Default 0.
   int pressure_grid = 0;
+  /// Shards: run only the K-th (1-based) of N contiguous, deterministic slices of the case list:
+  /// cases [floor((K−1)·n/N), floor(K·n/N)), keeping their global case numbers, and write
+  /// DIR/shard.json describing the slice. `mhcontact merge` joins the shard directories into
+  /// exactly the tables one run would have written. Default 1/1 (no sharding, no shard.json).
+  unsigned shard_index = 1, shard_count = 1;
 };
+
+/// Parse "K/N" (1 ≤ K ≤ N ≤ 100000). Throws InputError naming `--shard`.
+void parse_shard(const std::string& text, unsigned* index, unsigned* count);
+
+/// `mhcontact merge DIR... -o OUT`: join the outputs of all N shards of one run (in any order
+/// on the command line) into OUT. Checks that every shard 1..N is there once, that all come from
+/// the same inputs and that their slices tile the case list. Returns 0 if every case is ok, 1 if
+/// some are not (as the unsharded run would), throws InputError otherwise.
+int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, std::ostream& err, bool quiet);
 
 /// Everything a geometry build produced, with the profiles it was built from.
 struct PairGeometry {

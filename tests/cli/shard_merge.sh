@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# --shard K/N and merge: N shards run as separate processes, merged, give byte for byte the
+# tables of the unsharded run (also with more shards than cases, a failing case, and pressure
+# grids). Missing, doubled or foreign shards are refused with exit 2.
+set -euo pipefail
+bin=$1; src=$2
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+check_equal() {  # $1 = reference dir, $2 = merged dir
+  for f in cases.csv ellipses.csv results.json profiles.csv; do cmp "$1/$f" "$2/$f"; done
+}
+"$bin" run "$src/cases/manchester.json" -o "$tmp/full" -q
+for k in 1 2 3; do "$bin" run "$src/cases/manchester.json" -o "$tmp/s$k" --shard $k/3 -q & done
+wait
+test -s "$tmp/s2/shard.json"
+"$bin" merge "$tmp/s3" "$tmp/s1" "$tmp/s2" -o "$tmp/merged" -q
+check_equal "$tmp/full" "$tmp/merged"
+
+# More shards than cases, a failing case (exit 1 kept by merge), pressure grids.
+sed -e 's|"sweep": .*|"cases": [{"tY_mm": 0, "Q_kN": 50}, {"tY_mm": 40, "Q_kN": 50}, {"tY_mm": 5, "Q_kN": 80}]|' \
+    -e "s|\"model\": \"plastic\",|\"model\": \"plastic\", \"geometry\": {\"tY_min_mm\": -10, \"tY_max_mm\": 12},|" \
+    -e "s|\"\\.\\./profiles/|\"$src/profiles/|g" "$src/cases/manchester-plastic.json" > "$tmp/few.json"
+set +e
+"$bin" run "$tmp/few.json" -o "$tmp/ffull" --pressure-grid 5 -q; test $? -eq 1 || exit 1
+for k in 1 2 3 4 5; do "$bin" run "$tmp/few.json" -o "$tmp/f$k" --shard $k/5 --pressure-grid 5 -q; done
+"$bin" merge "$tmp"/f1 "$tmp"/f2 "$tmp"/f3 "$tmp"/f4 "$tmp"/f5 -o "$tmp/fmerged" -q; test $? -eq 1 || exit 1
+set -e
+check_equal "$tmp/ffull" "$tmp/fmerged"
+cmp "$tmp/ffull/pressure.csv" "$tmp/fmerged/pressure.csv"
+
+# Refused: a missing shard, a shard twice, shards of another run, a bad --shard.
+expect2() { set +e; "$@" 2>"$tmp/err"; rc=$?; set -e; test $rc -eq 2 || { echo "expected exit 2: $*" >&2; exit 1; }; }
+expect2 "$bin" merge "$tmp/s1" "$tmp/s2" -o "$tmp/m2"
+grep -q "give all of them" "$tmp/err"
+expect2 "$bin" merge "$tmp/s1" "$tmp/s2" "$tmp/s2" -o "$tmp/m3"
+grep -q "missing or given twice" "$tmp/err"
+"$bin" run "$src/cases/s1002-60e1.json" -o "$tmp/o2" --shard 2/3 -q
+expect2 "$bin" merge "$tmp/s1" "$tmp/o2" "$tmp/s3" -o "$tmp/m4"
+grep -q "different runs" "$tmp/err"
+expect2 "$bin" run "$src/cases/manchester.json" -o "$tmp/x" --shard 4/3
+grep -q "K/N" "$tmp/err"
+test ! -e "$tmp/m2/cases.csv"
+echo "shard_merge: OK"
