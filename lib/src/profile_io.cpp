@@ -62,7 +62,7 @@ std::string trim(const std::string& s) {
   return s.substr(a, b - a);
 }
 
-std::string mm(double v) { return format_number(v) + " mm"; }
+std::string mm(double v) { return format_number(std::round(v * 1e6) / 1e6) + " mm"; }  // to 1 nm
 
 /// Split on whitespace and commas.
 std::vector<std::string> tokens(const std::string& line) {
@@ -555,6 +555,43 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
     i1 = static_cast<std::size_t>(std::max_element(r.y.begin() + static_cast<long>(i0), r.y.end()) - r.y.begin());
     what0 = "flange back";
     what1 = "field-side end (rim face)";
+  }
+  // Measurement jitter: inside the region, a point that does not advance in y, and lies at most
+  // kJitter_mm behind the last kept point, is dropped (with a warning); a larger backward step
+  // is a loop or zig-zag and an error below.
+  {
+    std::vector<std::size_t> keep;
+    keep.reserve(r.size());
+    std::size_t dropped = 0;
+    double worst = 0;
+    for (std::size_t k = 0; k < r.size(); ++k) {
+      if (k > i0 && k <= i1 && !keep.empty() && keep.back() >= i0) {
+        const double back = r.y[keep.back()] - r.y[k];
+        if (back >= 0 && back <= L::kJitter_mm) {
+          ++dropped;
+          worst = std::max(worst, back);
+          continue;
+        }
+      }
+      keep.push_back(k);
+    }
+    if (dropped) {
+      std::size_t n0 = 0, n1 = 0;
+      for (std::size_t j = 0; j < keep.size(); ++j) {
+        if (keep[j] == i0) n0 = j;
+        if (keep[j] <= i1) n1 = j;
+      }
+      RawProfile c;
+      c.kind = r.kind;
+      c.format = r.format;
+      c.warnings = r.warnings;
+      for (std::size_t k : keep) c.add(r.y[k], r.z[k], r.line[k]);
+      r = std::move(c);
+      i0 = n0;
+      i1 = n1;
+      r.warnings.push_back("dropped " + std::to_string(dropped) + " points that stepped back in y by at most " +
+                           mm(worst) + " (measurement jitter, at most " + mm(L::kJitter_mm) + ") where contact can happen");
+    }
   }
   for (std::size_t k = i0 + 1; k <= i1; ++k)
     if (!(r.y[k] > r.y[k - 1]))

@@ -45,6 +45,9 @@ struct ProfileCheckLimits {
   static constexpr double kMaxWidth_mm = 500.0;    ///< total width above this: µm or 0.1 mm units?
   static constexpr std::size_t kMinPoints = 10;    ///< fewer points cannot describe a profile
   static constexpr double kRailContactDepth_mm = 25.0;  ///< rail region that can touch: z > top − 25 mm
+  /// Inside that region a point that steps back in y by at most this much is measurement jitter
+  /// (MiniProf resolution is 0.01 mm) and is dropped with a warning; a larger step is an error.
+  static constexpr double kJitter_mm = 0.05;
   static constexpr double kTapingLineFromFlangeBack_mm = 70.0;  ///< EN 13715: taping line 70 mm from the flange back
   static constexpr double kFlangeHeight_mm = 10.0; ///< a flange: lowest point this far below the field-side end
 };

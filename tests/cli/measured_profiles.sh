@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Every measured profile of tests/data/profiles that the reader accepts, paired with a standard
+# counterpart (wheels on 60E1 1:40, rails under S1002), solved over a sweep: exit 0 or 1 (some
+# cases may be no_contact etc.), never 2 or 3, never a crash; every row has a status.
+# avg_HR.BAN is read after dropping one point of 0.01 mm jitter; avg_low2.ban keeps a 0.06 mm
+# backward step on its gauge face and must stay rejected with exit 2 (tests/test_profile_io.cpp).
+set -euo pipefail
+bin=$1; src=$2
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+d="$src/tests/data/profiles"
+sweep='"sweep": {"tY_mm": {"from": -8, "to": 10, "step": 0.5}, "Q_kN": [20, 100]}'
+run_pair() {  # $1 wheel json, $2 rail json, $3 label
+  echo "{\"wheel\": {\"profile\": $1}, \"rail\": {\"profile\": $2, \"inclination\": \"as-is\"}, $sweep}" > "$tmp/$3.json"
+  set +e
+  "$bin" run "$tmp/$3.json" -o "$tmp/$3" -q 2>"$tmp/$3.err"
+  rc=$?
+  set -e
+  echo "$3: exit $rc, $(awk -F, 'NR>1{s[$4]++} END{for(k in s) printf "%s %d ", k, s[k]}' "$tmp/$3/cases.csv" 2>/dev/null)"
+  [ $rc -eq 0 ] || [ $rc -eq 1 ] || { cat "$tmp/$3.err" >&2; exit 1; }
+  test "$(wc -l < "$tmp/$3/cases.csv")" -eq 75
+}
+std_rail='{"standard": "60E1"}'
+for w in worn_high_mileage.prw avg_wheel.whl EN15302_wheel_A.dat; do
+  echo "{\"wheel\": {\"profile\": \"$d/$w\"}, \"rail\": {\"profile\": $std_rail, \"inclination\": \"1:40\"}, $sweep}" > "$tmp/$w.json"
+  set +e; "$bin" run "$tmp/$w.json" -o "$tmp/$w" -q 2>"$tmp/$w.err"; rc=$?; set -e
+  echo "$w on 60E1 1:40: exit $rc, $(awk -F, 'NR>1{s[$4]++} END{for(k in s) printf "%s %d ", k, s[k]}' "$tmp/$w/cases.csv")"
+  [ $rc -eq 0 ] || [ $rc -eq 1 ] || { cat "$tmp/$w.err" >&2; exit 1; }
+done
+for r in site_b_hr.prr EN15302_rail_A.dat MBench_UIC60_v3.ban avg_HR.BAN; do
+  run_pair '{"standard": "S1002"}' "\"$d/$r\"" "$r"
+done
+for r in avg_low2.ban; do
+  echo "{\"wheel\": {\"profile\": {\"standard\": \"S1002\"}}, \"rail\": {\"profile\": \"$d/$r\", \"inclination\": \"as-is\"}, $sweep}" > "$tmp/$r.json"
+  set +e; "$bin" run "$tmp/$r.json" -o "$tmp/$r" -q 2>"$tmp/$r.err"; rc=$?; set -e
+  test $rc -eq 2; grep -q "y must increase strictly" "$tmp/$r.err"
+  echo "$r: rejected: $(cat "$tmp/$r.err")"
+done
+echo "measured_profiles: OK"
