@@ -235,6 +235,87 @@ void warn_profiles(const PairGeometry& pg, std::ostream& err) {
     for (const auto& w : p->warnings) err << "mhcontact: warning: " << p->source << ": " << w << "\n";
 }
 
+// Where the formatted rows go; `prefix` is put in front of every CSV line (the batch's "pair,").
+struct Sinks {
+  std::ostream* cases = nullptr;
+  std::ostream* ellipses = nullptr;
+  std::ostream* pressure = nullptr;
+  std::ostream* json = nullptr;
+  std::string prefix;
+};
+
+void put_prefixed(std::ostream& o, const std::string& prefix, const std::string& lines) {
+  if (prefix.empty()) { o << lines; return; }
+  std::size_t a = 0;
+  while (a < lines.size()) {
+    const std::size_t b = lines.find('\n', a);
+    o << prefix;
+    o.write(lines.data() + a, static_cast<std::streamsize>((b == std::string::npos ? lines.size() : b + 1) - a));
+    a = b == std::string::npos ? lines.size() : b + 1;
+  }
+}
+
+// Solve cases [first, end) of `cf` on `G` in parallel chunks and write them in order.
+void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t first, std::uint64_t end,
+                 const RunOptions& opt, const Sinks& out, std::map<std::string, std::uint64_t>* by_status,
+                 std::uint64_t* failed, std::ostream& err) {
+  const bool plastic = cf.model == Model::Plastic;
+  const bool want_csv = out.cases != nullptr, want_json = out.json != nullptr;
+  const int np = out.pressure ? opt.pressure_grid : 0;
+  const std::uint64_t n = end - first;
+  const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t chunk = std::max<std::size_t>(opt.chunk, 1);
+  std::vector<Formatted> fmt(std::max<std::uint64_t>(1, std::min<std::uint64_t>(chunk, n)));
+  std::vector<CaseStatus> status(fmt.size());
+  int last_pct = -1;
+  for (std::uint64_t c0 = first; c0 < end; c0 += chunk) {
+    const std::size_t m = static_cast<std::size_t>(std::min<std::uint64_t>(chunk, end - c0));
+    auto work = [&](unsigned t, unsigned nt) {
+      for (std::size_t i = t; i < m; i += nt) {
+        const CasePoint cp = cf.case_at(c0 + i);
+        CaseResult r;
+        try {
+          r = solve_case(G, cf.material, cp.tY, cp.Q, cf.solver);
+        } catch (const std::exception& ex) {
+          // Never let one case end the sweep (or a worker thread): report it in its row.
+          r = CaseResult{};
+          r.status = CaseStatus::NotConverged;
+          r.message = std::string("internal error: ") + ex.what();
+        }
+        status[i] = r.status;
+        format_case(c0 + i, cp, r, cf.material, plastic, want_csv, want_json, fmt[i]);
+        if (np) format_pressure(c0 + i, r, cf.material, plastic, np, fmt[i].pressure);
+      }
+    };
+    const unsigned nt = static_cast<unsigned>(std::min<std::size_t>(threads, m));
+    if (nt <= 1) {
+      work(0, 1);
+    } else {
+      std::vector<std::thread> pool;
+      for (unsigned t = 1; t < nt; ++t) pool.emplace_back(work, t, nt);
+      work(0, nt);
+      for (auto& th : pool) th.join();
+    }
+    for (std::size_t i = 0; i < m; ++i) {
+      ++(*by_status)[to_string(status[i])];
+      if (status[i] != CaseStatus::Ok) ++*failed;
+      if (want_csv) {
+        put_prefixed(*out.cases, out.prefix, fmt[i].cases);
+        put_prefixed(*out.ellipses, out.prefix, fmt[i].ellipses);
+      }
+      if (want_json) *out.json << fmt[i].json << (c0 + i + 1 < end ? ",\n" : "\n");
+      if (np) put_prefixed(*out.pressure, out.prefix, fmt[i].pressure);
+    }
+    if (opt.progress && !opt.quiet) {
+      const int pct = static_cast<int>(100.0 * static_cast<double>(c0 + m - first) / static_cast<double>(n));
+      if (pct != last_pct) {
+        err << "\rmhcontact run: " << (c0 + m - first) << "/" << n << " cases (" << pct << " %)" << std::flush;
+        last_pct = pct;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::string cases_csv_header() {
@@ -364,59 +445,10 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   const std::uint64_t first = n_all * (opt.shard_index - 1) / opt.shard_count;
   const std::uint64_t end = n_all * opt.shard_index / opt.shard_count;
   const std::uint64_t n = end - first;
-  unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t chunk = std::max<std::size_t>(opt.chunk, 1);
-  std::vector<Formatted> fmt(std::max<std::uint64_t>(1, std::min<std::uint64_t>(chunk, n)));
   std::map<std::string, std::uint64_t> by_status;
   std::uint64_t failed = 0;
-  std::vector<CaseStatus> status(fmt.size());
-  int last_pct = -1;
-  for (std::uint64_t c0 = first; c0 < end; c0 += chunk) {
-    const std::size_t m = static_cast<std::size_t>(std::min<std::uint64_t>(chunk, end - c0));
-    auto work = [&](unsigned t, unsigned nt) {
-      for (std::size_t i = t; i < m; i += nt) {
-        const CasePoint cp = cf.case_at(c0 + i);
-        CaseResult r;
-        try {
-          r = solve_case(G, cf.material, cp.tY, cp.Q, cf.solver);
-        } catch (const std::exception& ex) {
-          // Never let one case end the sweep (or a worker thread): report it in its row.
-          r = CaseResult{};
-          r.status = CaseStatus::NotConverged;
-          r.message = std::string("internal error: ") + ex.what();
-        }
-        status[i] = r.status;
-        format_case(c0 + i, cp, r, cf.material, plastic, want_csv, want_json, fmt[i]);
-        if (np) format_pressure(c0 + i, r, cf.material, plastic, np, fmt[i].pressure);
-      }
-    };
-    const unsigned nt = static_cast<unsigned>(std::min<std::size_t>(threads, m));
-    if (nt <= 1) {
-      work(0, 1);
-    } else {
-      std::vector<std::thread> pool;
-      for (unsigned t = 1; t < nt; ++t) pool.emplace_back(work, t, nt);
-      work(0, nt);
-      for (auto& th : pool) th.join();
-    }
-    for (std::size_t i = 0; i < m; ++i) {
-      ++by_status[to_string(status[i])];
-      if (status[i] != CaseStatus::Ok) ++failed;
-      if (want_csv) {
-        fc->stream() << fmt[i].cases;
-        fe->stream() << fmt[i].ellipses;
-      }
-      if (js) *js << fmt[i].json << (c0 + i + 1 < end ? ",\n" : "\n");
-      if (fp) fp->stream() << fmt[i].pressure;
-    }
-    if (opt.progress && !opt.quiet) {
-      const int pct = static_cast<int>(100.0 * static_cast<double>(c0 + m - first) / static_cast<double>(n));
-      if (pct != last_pct) {
-        err << "\rmhcontact run: " << (c0 + m - first) << "/" << n << " cases (" << pct << " %)" << std::flush;
-        last_pct = pct;
-      }
-    }
-  }
+  Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fp ? &fp->stream() : nullptr, js, ""};
+  solve_cases(cf, G, first, end, opt, sinks, &by_status, &failed, err);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (js) {
     nlohmann::json summary = {{"cases", n}, {"failed", failed}, {"by_status", by_status}};
