@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${1:-build/mhcontact}
-for c in manchester manchester-plastic s1002-60e1; do
+for c in manchester manchester-plastic s1002-60e1 fleet; do
   "$bin" run "cases/$c.json" -o "tests/ref/$c" --format csv -q || test $? -eq 1
 done
 echo "updated tests/ref/: review with git diff"

@@ -171,15 +171,14 @@ CasePoint CaseFile::case_at(std::uint64_t i) const {
   return {t * units::mm, q * units::kN, t, q};
 }
 
-CaseFile load_case_file(const std::string& path, bool need_cases) {
+nlohmann::json read_json_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "cannot open the case file");
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string text = ss.str();
-  json j;
   try {
-    j = json::parse(text);
+    return json::parse(text);
   } catch (const json::parse_error& e) {
     std::size_t line = 1, col = 1;
     for (std::size_t i = 0; i < e.byte && i < text.size(); ++i) {
@@ -190,6 +189,13 @@ CaseFile load_case_file(const std::string& path, bool need_cases) {
     throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(col), "",
                      "JSON syntax error: " + (p != std::string::npos ? msg.substr(p) : msg));
   }
+}
+
+CaseFile load_case_file(const std::string& path, bool need_cases) {
+  return parse_case_json(read_json_file(path), path, need_cases);
+}
+
+CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool need_cases) {
   Ctx c{path};
   CaseFile cf;
   cf.path = path;

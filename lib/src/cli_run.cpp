@@ -5,6 +5,7 @@
 #include "mhcontact/case_file.hpp"
 #include "mhcontact/cli.hpp"
 #include "mhcontact/errors.hpp"
+#include "mhcontact/manifest.hpp"
 #include "mhcontact/run.hpp"
 
 namespace mh {
@@ -28,7 +29,7 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
   struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false; std::string shard; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
-      "run", "Solve every case of the case file's sweep (writes DIR/cases.csv, DIR/ellipses.csv, "
+      "run", "Solve every case of the case file's sweep (or of a batch manifest over many profile pairs) (writes DIR/cases.csv, DIR/ellipses.csv, "
              "DIR/results.json). Exit 0 if every case is ok, 1 if some are not.");
   cmd->add_option("case", o->case_file, "Case file (JSON)")->required();
   cmd->add_option("-o,--output", o->out_dir, "Output directory (created if missing); '-' writes results.json to standard output")->required();
@@ -43,7 +44,7 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
   cmd->callback([o, &ctx] {
     RunOptions ro;
     if (!o->shard.empty()) parse_shard(o->shard, &ro.shard_index, &ro.shard_count);
-    const CaseFile cf = load_case_file(o->case_file, true);
+    const nlohmann::json j = read_json_file(o->case_file);
     ro.out_dir = o->out_dir;
     ro.csv = o->format != "json";
     ro.json = o->format != "csv";
@@ -51,7 +52,11 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
     ro.quiet = o->quiet;
     ro.pressure_grid = o->pressure_grid;
     ro.progress = (&ctx.err == &std::cerr) && ::isatty(2);
-    ctx.exit_code = run_job(cf, ro, ctx.out, ctx.err);
+    if (is_manifest(j)) {
+      ctx.exit_code = batch_job(parse_manifest(j, o->case_file), ro, ctx.out, ctx.err);
+    } else {
+      ctx.exit_code = run_job(parse_case_json(j, o->case_file, true), ro, ctx.out, ctx.err);
+    }
   });
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mhcontact/errors.hpp"
+#include "mhcontact/manifest.hpp"
 #include "mhcontact/numfmt.hpp"
 #include "mhcontact/output_file.hpp"
 #include "mhcontact/solver.hpp"
@@ -461,8 +462,9 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   }
   if (opt.shard_count > 1 && !to_stdout) {
     nlohmann::json sh = {{"schema", "mhcontact.shard/1"}, {"index", opt.shard_index}, {"count", opt.shard_count},
-                         {"first_case", first}, {"end_case", end}, {"case_count", n_all}, {"failed", failed},
-                         {"by_status", by_status}, {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0},
+                         {"unit", "case"}, {"first", first}, {"end", end}, {"total", n_all},
+                         {"summary", {{"cases", n_all}, {"failed", failed}, {"by_status", by_status}}},
+                         {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0},
                          {"inputs", inputs_json(cf, pg)}};
     OutputFile f(opt.out_dir + "/shard.json");
     f.stream() << sh.dump(2) << "\n";
@@ -481,6 +483,133 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     err << "\n";
   }
   return failed ? kExitCasesFailed : kExitOk;
+}
+
+int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::ostream& err) {
+  (void)out;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (opt.out_dir == "-") throw InputError("-o", "-", "a batch writes several tables: give an output directory");
+  if (opt.pressure_grid != 0 && (opt.pressure_grid < 2 || opt.pressure_grid > 1000))
+    throw InputError("--pressure-grid", std::to_string(opt.pressure_grid), "must be between 2 and 1000 points per axis");
+  const std::uint64_t n_pairs = m.pairs.size();
+  const std::uint64_t first = n_pairs * (opt.shard_index - 1) / opt.shard_count;
+  const std::uint64_t end = n_pairs * opt.shard_index / opt.shard_count;
+  const CaseFile shared = pair_case(m, 0);  // validated already: the sweep and the model
+  const bool plastic = shared.model == Model::Plastic;
+  const int np = opt.pressure_grid;
+  ensure_directory(opt.out_dir);
+  std::unique_ptr<OutputFile> fc, fe, fp, fpp, fj;
+  if (opt.csv) {
+    fc = std::make_unique<OutputFile>(opt.out_dir + "/cases.csv");
+    fe = std::make_unique<OutputFile>(opt.out_dir + "/ellipses.csv");
+    fpp = std::make_unique<OutputFile>(opt.out_dir + "/pairs.csv");
+    fc->stream() << "pair," << cases_csv_header();
+    fe->stream() << "pair," << ellipses_csv_header(plastic);
+    fpp->stream() << "pair,name,wheel,rail,status,n_ellipses,wheel_sha256,rail_sha256,message\n";
+  }
+  if (np) {
+    fp = std::make_unique<OutputFile>(opt.out_dir + "/pressure.csv");
+    fp->stream() << "pair," << pressure_csv_header(plastic);
+  }
+  if (opt.json) {
+    fj = std::make_unique<OutputFile>(opt.out_dir + "/results.json");
+    nlohmann::json head;
+    head["schema"] = "mhcontact.batch/1";
+    head["program"] = {{"name", "mhcontact"}, {"version", MHCONTACT_VERSION}};
+    head["manifest"] = m.path;
+    head["pair_count"] = n_pairs;
+    std::string h = head.dump(2);
+    h.pop_back();
+    while (!h.empty() && (h.back() == '\n' || h.back() == ' ')) h.pop_back();
+    fj->stream() << h << ",\n  \"pairs\": [\n";
+  }
+  std::map<std::string, std::uint64_t> by_status;
+  std::uint64_t failed = 0, invalid = 0, cases_total = 0;
+  RunOptions quiet_opt = opt;
+  quiet_opt.progress = false;
+  for (std::uint64_t k = first; k < end; ++k) {
+    const ManifestPair& P = m.pairs[k];
+    const std::string prefix = std::to_string(k) + ",";
+    std::string status = "ok", message;
+    std::unique_ptr<PairGeometry> pg;
+    CaseFile cf;
+    try {
+      cf = pair_case(m, k);
+      pg = std::make_unique<PairGeometry>(build_pair_geometry(cf));
+    } catch (const InputError& e) {
+      status = "invalid_pair";
+      message = e.what();
+    }
+    const std::uint64_t n = shared.case_count();
+    cases_total += n;
+    if (fpp) {
+      std::string row = prefix;
+      csv_text(row, P.name);
+      row += ',';
+      csv_text(row, pg ? pg->wheel.source : P.wheel.dump());
+      row += ',';
+      csv_text(row, pg ? pg->rail.source : P.rail.dump());
+      row += ',' + status + ',' + (pg ? std::to_string(pg->geo.n_ellipses()) : std::string()) + ',';
+      row += (pg ? pg->wheel.checksum : std::string()) + ',' + (pg ? pg->rail.checksum : std::string()) + ',';
+      csv_text(row, message);
+      fpp->stream() << row << '\n';
+    }
+    std::ostringstream pair_json;
+    if (fj) {
+      nlohmann::json pj = {{"pair", k}, {"name", P.name}, {"status", status}, {"message", message}};
+      if (pg) {
+        pj["inputs"] = inputs_json(cf, *pg);
+        pj["potential_ellipses"] = ellipses_json(pg->geo);
+      }
+      std::string h = pj.dump();
+      h.pop_back();
+      fj->stream() << "    " << h << ", \"cases\": [\n";
+    }
+    if (pg) {
+      if (!opt.quiet) warn_profiles(*pg, err);
+      Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fp ? &fp->stream() : nullptr,
+                  fj ? &fj->stream() : nullptr, prefix};
+      solve_cases(cf, pg->geo, 0, n, quiet_opt, sinks, &by_status, &failed, err);
+    } else {
+      ++invalid;
+      by_status["invalid_pair"] += n;
+      for (std::uint64_t i = 0; i < n; ++i) {
+        CaseResult r;
+        r.status = CaseStatus::InvalidPair;
+        r.message = message;
+        r.dz = r.residual = r.Fz = r.Fy = NAN;
+        Formatted f;
+        format_case(i, shared.case_at(i), r, shared.material, plastic, fc != nullptr, fj != nullptr, f);
+        if (fc) put_prefixed(fc->stream(), prefix, f.cases);
+        if (fj) fj->stream() << f.json << (i + 1 < n ? ",\n" : "\n");
+      }
+    }
+    if (fj) fj->stream() << "    ]}" << (k + 1 < end ? ",\n" : "\n");
+    if (opt.progress && !opt.quiet) err << "\rmhcontact run: pair " << (k + 1 - first) << "/" << (end - first) << std::flush;
+  }
+  const nlohmann::json summary = {{"pairs", end - first}, {"invalid_pairs", invalid}, {"cases", cases_total},
+                                  {"failed", failed}, {"by_status", by_status}};
+  if (fj) fj->stream() << "  ],\n  \"summary\": " << summary.dump() << "\n}\n";
+  if (fc) { fc->commit(); fe->commit(); fpp->commit(); }
+  if (fp) fp->commit();
+  if (fj) fj->commit();
+  if (opt.shard_count > 1) {
+    nlohmann::json sh = {{"schema", "mhcontact.shard/1"}, {"index", opt.shard_index}, {"count", opt.shard_count},
+                         {"unit", "pair"}, {"first", first}, {"end", end}, {"total", n_pairs}, {"summary", summary},
+                         {"csv", opt.csv}, {"json", opt.json}, {"pressure", np > 0},
+                         {"inputs", {{"manifest", m.path}, {"common", m.common}, {"pairs", n_pairs}}}};
+    OutputFile f(opt.out_dir + "/shard.json");
+    f.stream() << sh.dump(2) << "\n";
+    f.commit();
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!opt.quiet) {
+    if (opt.progress) err << "\n";
+    err << "mhcontact run: " << (end - first) << " pairs (" << invalid << " invalid), " << cases_total << " cases";
+    for (const auto& [s, v] : by_status) err << ", " << s << " " << v;
+    err << "; " << format_number(std::round(secs * 1e3) / 1e3) << " s; outputs in " << opt.out_dir << "\n";
+  }
+  return (failed || invalid) ? kExitCasesFailed : kExitOk;
 }
 
 void parse_shard(const std::string& text, unsigned* index, unsigned* count) {
@@ -547,25 +676,39 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     const nlohmann::json& m = shards[k].meta;
     const std::string where = shards[k].dir + "/shard.json";
     if (m["index"].get<unsigned>() != k + 1) throw InputError(where, m["index"].dump(), "shard " + std::to_string(k + 1) + " is missing or given twice");
-    if (m["count"] != shards[0].meta["count"] || m["case_count"] != shards[0].meta["case_count"])
+    if (m["count"] != shards[0].meta["count"] || m["total"] != shards[0].meta["total"] || m["unit"] != shards[0].meta["unit"])
       throw InputError(where, "", "shards of different runs (case or shard counts differ)");
     if (m["inputs"] != shards[0].meta["inputs"]) throw InputError(where, "", "shards of different runs (inputs differ: case file, profiles or options)");
     if (m["csv"] != shards[0].meta["csv"] || m["json"] != shards[0].meta["json"] || m["pressure"] != shards[0].meta["pressure"])
       throw InputError(where, "", "shards written with different output options");
-    if (m["first_case"].get<std::uint64_t>() != expect) throw InputError(where, m["first_case"].dump(), "the shards' case ranges do not tile the case list");
-    expect = m["end_case"].get<std::uint64_t>();
+    if (m["first"].get<std::uint64_t>() != expect) throw InputError(where, m["first"].dump(), "the shards' ranges do not tile the case (or pair) list");
+    expect = m["end"].get<std::uint64_t>();
   }
-  if (expect != shards[0].meta["case_count"].get<std::uint64_t>()) throw InputError("merge", "", "the shards do not cover every case");
+  if (expect != shards[0].meta["total"].get<std::uint64_t>()) throw InputError("merge", "", "the shards do not cover every case (or pair)");
+  const bool batch = shards[0].meta["unit"] == "pair";
   ensure_directory(out_dir);
-  std::uint64_t failed = 0;
+  // Summary of all shards: counts added up, by_status merged; `cases` and `pairs` are totals
+  // of the whole run for unsharded-equal output (run: cases = total).
+  nlohmann::json summary = nlohmann::json::object();
   std::map<std::string, std::uint64_t> by_status;
-  for (const auto& s : shards) {
-    failed += s.meta["failed"].get<std::uint64_t>();
-    for (auto it = s.meta["by_status"].begin(); it != s.meta["by_status"].end(); ++it) by_status[it.key()] += it.value().get<std::uint64_t>();
+  for (const auto& sh : shards) {
+    const nlohmann::json& su = sh.meta["summary"];
+    for (auto it = su.begin(); it != su.end(); ++it) {
+      if (it.key() == "by_status") {
+        for (auto b = it.value().begin(); b != it.value().end(); ++b) by_status[b.key()] += b.value().get<std::uint64_t>();
+      } else if (!batch && it.key() == "cases") {
+        summary["cases"] = it.value();
+      } else {
+        summary[it.key()] = summary.value(it.key(), std::uint64_t{0}) + it.value().get<std::uint64_t>();
+      }
+    }
   }
+  summary["by_status"] = by_status;
+  const std::uint64_t failed = summary.value("failed", std::uint64_t{0}) + summary.value("invalid_pairs", std::uint64_t{0});
   const bool csv = shards[0].meta["csv"], json = shards[0].meta["json"], pressure = shards[0].meta["pressure"];
   std::vector<std::string> tables;
   if (csv) tables = {"cases.csv", "ellipses.csv"};
+  if (csv && batch) tables.push_back("pairs.csv");
   if (pressure) tables.push_back("pressure.csv");
   for (const auto& t : tables) {
     OutputFile f(out_dir + "/" + t);
@@ -573,7 +716,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     for (unsigned k = 0; k < N; ++k) append_csv(shards[k].dir + "/" + t, f.stream(), &header, k == 0);
     f.commit();
   }
-  if (csv) {
+  if (csv && !batch) {
     OutputFile f(out_dir + "/profiles.csv");
     f.stream() << read_all(shards[0].dir + "/profiles.csv");
     f.commit();
@@ -582,7 +725,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     // Each shard's results.json: the same head, its cases, its summary. Keep the first head,
     // concatenate the case lines, write the summary of all cases.
     OutputFile f(out_dir + "/results.json");
-    const std::string open = "  \"cases\": [\n", close = "  ],\n  \"summary\": ";
+    const std::string open = batch ? "  \"pairs\": [\n" : "  \"cases\": [\n", close = "  ],\n  \"summary\": ";
     bool any = false;
     for (unsigned k = 0; k < N; ++k) {
       const std::string path = shards[k].dir + "/results.json";
@@ -597,12 +740,11 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
       any = true;
     }
     if (any) f.stream() << "\n";
-    const nlohmann::json summary = {{"cases", shards[0].meta["case_count"]}, {"failed", failed}, {"by_status", by_status}};
     f.stream() << close << summary.dump() << "\n}\n";
     f.commit();
   }
   if (!quiet) {
-    err << "mhcontact merge: " << N << " shards, " << shards[0].meta["case_count"].get<std::uint64_t>() << " cases";
+    err << "mhcontact merge: " << N << " shards, " << shards[0].meta["total"].get<std::uint64_t>() << (batch ? " pairs" : " cases");
     for (const auto& [k, v] : by_status) err << ", " << k << " " << v;
     err << "; outputs in " << out_dir << "\n";
   }

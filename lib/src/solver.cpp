@@ -14,6 +14,7 @@ const char* to_string(CaseStatus s) {
     case CaseStatus::NoContact: return "no_contact";
     case CaseStatus::OutOfRange: return "out_of_range";
     case CaseStatus::NotConverged: return "not_converged";
+    case CaseStatus::InvalidPair: return "invalid_pair";
   }
   return "?";
 }

@@ -62,6 +62,10 @@ struct CaseFile {
 
 /// Parse and validate. `need_cases`: `run` needs a sweep; `geometry` does not.
 CaseFile load_case_file(const std::string& path, bool need_cases);
+/// The same from parsed JSON; `path` names the file in messages and anchors relative paths.
+CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool need_cases);
+/// Read a JSON file; a syntax error names file:line:column. Throws InputError.
+nlohmann::json read_json_file(const std::string& path);
 
 /// Read or generate a profile of the given kind; rails get the case's inclination applied here,
 /// once. Throws InputError.

@@ -29,6 +29,14 @@ struct RunOptions {
   unsigned shard_index = 1, shard_count = 1;
 };
 
+struct Manifest;
+/// `mhcontact run MANIFEST.json`: every case of the shared sweep on every profile pair, geometry
+/// built once per pair; tables with a leading `pair` column, plus DIR/pairs.csv. A pair that cannot
+/// be read or placed gets status `invalid_pair` in pairs.csv and in each of its case rows, and the
+/// batch goes on. With --shard K/N the slices are over pairs. Returns 0 if every case of every
+/// pair is ok, 1 otherwise.
+int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::ostream& err);
+
 /// Parse "K/N" (1 ≤ K ≤ N ≤ 100000). Throws InputError naming `--shard`.
 void parse_shard(const std::string& text, unsigned* index, unsigned* count);
 

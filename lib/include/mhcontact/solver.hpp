@@ -13,7 +13,9 @@
 
 namespace mh {
 
-enum class CaseStatus { Ok, NoContact, OutOfRange, NotConverged };
+/// InvalidPair is never returned by the solver: a batch uses it for the cases of a profile pair
+/// that could not be read or placed.
+enum class CaseStatus { Ok, NoContact, OutOfRange, NotConverged, InvalidPair };
 const char* to_string(CaseStatus s);
 
 struct SolverOptions {
