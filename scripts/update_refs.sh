@@ -6,5 +6,6 @@ cd "$(dirname "$0")/.."
 bin=${1:-build/mhcontact}
 for c in manchester manchester-plastic s1002-60e1 fleet; do
   "$bin" run "cases/$c.json" -o "tests/ref/$c" --format csv -q || test $? -eq 1
+  rm -f "tests/ref/$c/profiles.csv"   # a copy of the inputs, not a result
 done
 echo "updated tests/ref/: review with git diff"
