@@ -32,6 +32,14 @@ cmp 60E1_1-40.csv profiles/60E1_1-40.csv
 ./build/mhcontact run cases/manchester.json -o out/manchester --format csv -q
 ./build/mhcontact diff tests/ref/manchester/cases.csv out/manchester/cases.csv --rtol 1e-7 --atol 1e-9
 ./build/mhcontact diff tests/ref/manchester/ellipses.csv out/manchester/ellipses.csv --column-tol p0_MPa=0.5
+# Fleets and shards
+./build/mhcontact run cases/fleet.json -o out/fleet
+bash scripts/run_sharded.sh cases/manchester.json out/study 8 2
+cmp out/study/cases.csv out/manchester/cases.csv
+if command -v parallel >/dev/null && parallel --version 2>/dev/null | grep -q "GNU parallel"; then
+  parallel ./build/mhcontact run cases/manchester.json -o out/par/shard{} --shard {}/8 -q ::: 1 2 3 4 5 6 7 8
+  ./build/mhcontact merge out/par/shard* -o out/par
+fi
 # Plots
 "$py" scripts/plot_geometry.py out/geo --tY 5
 "$py" scripts/plot_pressure.py out/mp --case 23
