@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # README quick start, command 2 (and what CI runs): install what is missing, build and run the
-# whole test suite.
+# whole test suite twice: in the Release build (build/), then under AddressSanitizer and
+# UndefinedBehaviorSanitizer (build-sanitize/, any report fails the test that triggered it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
-cd build
-ctest --output-on-failure -j "$(nproc)"
+(cd build && ctest --output-on-failure -j "$(nproc)")
+MHCONTACT_BUILD_DIR=build-sanitize bash scripts/build.sh -DMHCONTACT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+(cd build-sanitize && ctest --output-on-failure -j "$(nproc)")

@@ -116,3 +116,30 @@ TEST_CASE("measured rails: no spurious curvature sign change on the crown", "[cu
     }
   }
 }
+
+#include "mhcontact/standard_profiles.hpp"
+
+TEST_CASE("breakpoint rule on the S1002 flange: each side keeps its own radius", "[curve]") {
+  // The S1002 flange (EN 13715, profiles.md) is arc D (R 13, concave) – straight E – arc F (R 20)
+  // – arc G (R 12) with curvature jumps at S = −38.4267, −39.7645, −49.6625. The radius used next
+  // to a jump must be the radius of the section the point lies on (profile_curve.hpp rule), not a
+  // blend. Reference: the definition's analytic radius (standard_profile_radius). Tolerance 1 %
+  // on the curvature from 0.1 mm (in y) from the junction on; straight E: |kappa| < 0.5 1/m.
+  const Profile w = mh::make_standard_profile("S1002");  // canonical: y = S, z = −F(S)
+  const ProfileCurve c(w);
+  for (double yj : mh::standard_profile_breakpoints("S1002")) {
+    if (yj > -0.0380 || yj < -0.0500) continue;  // the flange junctions D/E, E/F, F/G
+    for (double d : {0.1e-3, 0.3e-3}) {
+      for (int side : {-1, +1}) {
+        const double y = yj + side * d;
+        const double R = mh::standard_profile_radius("S1002", y, side);  // [m], paper sign
+        const double k_expected = std::isfinite(R) ? 1.0 / R : 0.0;      // wheel: 1/R_wxx = +kappa
+        CAPTURE(yj, d, side, R);
+        if (k_expected == 0.0)
+          REQUIRE(std::fabs(c.kappa(y)) < 0.5);
+        else
+          REQUIRE(c.kappa(y) == Approx(k_expected).epsilon(0.01));
+      }
+    }
+  }
+}

@@ -1,0 +1,4 @@
+// libFuzzer target: see harness.hpp. Build with scripts/fuzz.sh.
+#include "harness.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return mh::fuzz::casefile_one(data, size); }
