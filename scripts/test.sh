@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # README quick start, command 2 (and what CI runs): install what is missing, build and run the
 # whole test suite twice: in the Release build (build/), then under AddressSanitizer and
-# UndefinedBehaviorSanitizer (build-sanitize/, any report fails the test that triggered it).
+# UndefinedBehaviorSanitizer (build-sanitize/, any report fails the test that triggered it);
+# then every libFuzzer target for a few seconds (build-fuzz/, clang 14).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
@@ -9,3 +10,5 @@ bash scripts/build.sh
 MHCONTACT_BUILD_DIR=build-sanitize bash scripts/build.sh -DMHCONTACT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 (cd build-sanitize && ctest --output-on-failure -j "$(nproc)")
+# A short fuzz run of every target (10 s each; the long runs are `bash scripts/fuzz.sh 600`).
+bash scripts/fuzz.sh 10
