@@ -126,6 +126,7 @@ TEST_CASE("bad case files: exit 2, JSON path, value and rule; nothing written", 
   const std::vector<Bad> bad = {
       {"{" + pair + ", " + sweep, "JSON syntax error"},
       {"[1, 2]", "must be an object"},
+      {"{\"sweep\": 5E555}", "invalid JSON: number overflow"},  // fuzz finding (json_number_overflow.json)
       {"{" + pair + ", " + sweep + ", \"materail\": {}}", "/materail: unknown key"},
       {"{" + pair + "}", "/sweep: required"},
       {"{\"wheel\": {\"profile\": \"" + kSrc + "/profiles/MBench_S1002_v3.prw\"}, \"rail\": {\"profile\": \"" + kSrc +

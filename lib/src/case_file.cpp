@@ -188,6 +188,11 @@ nlohmann::json read_json_file(const std::string& path) {
     const auto p = msg.find("syntax error");
     throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(col), "",
                      "JSON syntax error: " + (p != std::string::npos ? msg.substr(p) : msg));
+  } catch (const json::exception& e) {
+    // Fuzz finding: a number too large for a double ("5E555") is not a parse_error.
+    std::string msg = e.what();
+    const auto p = msg.find("] ");
+    throw InputError(path, "", "invalid JSON: " + (p != std::string::npos ? msg.substr(p + 2) : msg));
   }
 }
 

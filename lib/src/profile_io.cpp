@@ -306,6 +306,8 @@ RawProfile read_miniprof(const std::string& path, const std::vector<std::string>
   if (xypoints >= 0 && static_cast<long>(r.size()) > xypoints)
     r.warnings.push_back("XYPoints=" + std::to_string(xypoints) + " but " + std::to_string(r.size()) +
                          " data rows read (all used)");
+  if (r.size() == 0)  // fuzz finding: the orientation below needs at least one point
+    throw InputError(path, "", "MiniProf file without data rows after its header");
   if (wheel) {
     r.kind = ProfileKind::Wheel;
     for (auto& z : r.z) z = -z;

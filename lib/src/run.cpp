@@ -116,16 +116,10 @@ void format_pressure(std::uint64_t idx, const CaseResult& r, const Material& mat
   }
 }
 
-void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, const Material& mat,
+void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                  bool plastic, bool want_csv, bool want_json, Formatted& f) {
   const std::string warn = join(r.warnings, ";");
-  // h_y of each loaded ellipse (plastic): from its law's closed form, method.md §5.
-  auto h_y_mm = [&](const LoadedEllipse& e) {
-    const double n3 = e.c.n * e.c.n * e.c.n;
-    const double k_e = (2.0 / 3.0) * (1.0 + e.c.lambda) / n3 * mat.E_star() / std::sqrt(e.B);
-    const double q = 2.0 * units::pi * e.c.m * mat.p_lim / (3.0 * k_e * e.c.n * e.B);
-    return q * q * 1e3;
-  };
+  auto h_y_mm = [](const LoadedEllipse& e) { return e.h_y * 1e3; };  // from the ellipse law (method.md §5)
   if (want_csv) {
     std::string& s = f.cases;
     s.clear();
@@ -284,7 +278,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
           r.message = std::string("internal error: ") + ex.what();
         }
         status[i] = r.status;
-        format_case(c0 + i, cp, r, cf.material, plastic, want_csv, want_json, fmt[i]);
+        format_case(c0 + i, cp, r, plastic, want_csv, want_json, fmt[i]);
         if (np) format_pressure(c0 + i, r, cf.material, plastic, np, fmt[i].pressure);
       }
     };
@@ -579,7 +573,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
         r.message = message;
         r.dz = r.residual = r.Fz = r.Fy = NAN;
         Formatted f;
-        format_case(i, shared.case_at(i), r, shared.material, plastic, fc != nullptr, fj != nullptr, f);
+        format_case(i, shared.case_at(i), r, plastic, fc != nullptr, fj != nullptr, f);
         if (fc) put_prefixed(fc->stream(), prefix, f.cases);
         if (fj) fj->stream() << f.json << (i + 1 < n ? ",\n" : "\n");
       }

@@ -136,6 +136,7 @@ CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, 
     L.A = c.A;
     L.B = c.B;
     L.c = c.law.c;
+    L.h_y = c.law.h_y;
     L.s = ellipse_state(c.law, h);
     r.Fz += L.s.N * c.cg;
     r.Fy += L.s.N * c.sg;

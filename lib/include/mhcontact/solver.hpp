@@ -31,6 +31,7 @@ struct LoadedEllipse {
   CandidateGeom g;          ///< its strip (interpolated at the case's t_Y)
   double A = 0, B = 0;      ///< [1/m] (eq. 1)
   HertzCoefficients c;
+  double h_y = INFINITY;    ///< [m] yield penetration of its law (method.md §5); INFINITY when elastic
   EllipseState s;           ///< h0, N, a, b, p0, ... (hertz.hpp)
 };
 
