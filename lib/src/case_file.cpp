@@ -117,9 +117,9 @@ double axis_count(const json& v) {
   return 0;
 }
 
-// A sweep axis: a list of numbers or {"from", "to", "step"}.
-std::vector<double> parse_axis(const Ctx& c, const json& v, const std::string& path, bool positive_values) {
-  std::vector<double> out;
+// A sweep axis: a list of numbers or {"from", "to", "step"} (a range is not materialised).
+SweepAxis parse_axis(const Ctx& c, const json& v, const std::string& path, bool positive_values) {
+  SweepAxis out;
   if (v.is_array()) {
     if (v.empty()) c.fail(path, &v, "an empty list gives no cases");
     for (std::size_t i = 0; i < v.size(); ++i) {
@@ -127,14 +127,18 @@ std::vector<double> parse_axis(const Ctx& c, const json& v, const std::string& p
       if (!v[i].is_number() || !std::isfinite(v[i].get<double>())) c.fail(p, &v[i], "must be a finite number");
       const double d = v[i].get<double>();
       if (positive_values && !(d > 0)) c.fail(p, &v[i], "must be > 0");
-      out.push_back(d);
+      out.list.push_back(d);
     }
+    out.n = out.list.size();
     return out;
   }
   if (v.is_number()) {
     const double d = v.get<double>();
+    if (!std::isfinite(d)) c.fail(path, &v, "must be a finite number");
     if (positive_values && !(d > 0)) c.fail(path, &v, "must be > 0");
-    return {d};
+    out.list = {d};
+    out.n = 1;
+    return out;
   }
   if (!v.is_object()) c.fail(path, &v, "a sweep axis is a list of numbers or {\"from\", \"to\", \"step\"}");
   c.only_keys(v, path, {"from", "to", "step"});
@@ -145,19 +149,23 @@ std::vector<double> parse_axis(const Ctx& c, const json& v, const std::string& p
   if (!(step > 0)) c.fail(path + "/step", &v.at("step"), "must be > 0");
   if (to < from) c.fail(path + "/to", &v.at("to"), "must be >= from (" + format_number(from) + ")");
   const double count = std::floor((to - from) / step + 1e-9) + 1;
-  if (count > static_cast<double>(kMaxCases))
+  if (!(count <= static_cast<double>(kMaxCases)))
     c.fail(path, &v, "gives " + format_number(count) + " values, more than the limit of " + std::to_string(kMaxCases) + " cases");
-  const auto n = static_cast<std::uint64_t>(count);
-  out.reserve(n);
-  for (std::uint64_t i = 0; i < n; ++i) {
-    const double d = from + step * static_cast<double>(i);  // by multiplication: no accumulated drift
-    if (positive_values && !(d > 0)) c.fail(path + "/from", &v.at("from"), "every value must be > 0");
-    out.push_back(d);
-  }
+  if (positive_values && !(from > 0)) c.fail(path + "/from", &v.at("from"), "every value must be > 0");
+  out.from = from;
+  out.step = step;  // values from + i·step, by multiplication: no accumulated drift
+  out.n = static_cast<std::uint64_t>(count);
   return out;
 }
 
 }  // namespace
+
+double SweepAxis::min() const {
+  return list.empty() ? from : *std::min_element(list.begin(), list.end());
+}
+double SweepAxis::max() const {
+  return list.empty() ? at(n - 1) : *std::max_element(list.begin(), list.end());
+}
 
 std::uint64_t CaseFile::case_count() const {
   if (!cases.empty()) return cases.size();
@@ -167,7 +175,7 @@ std::uint64_t CaseFile::case_count() const {
 CasePoint CaseFile::case_at(std::uint64_t i) const {
   if (!cases.empty()) return cases[i];
   const std::uint64_t nq = sweep_Q_kN.size();
-  const double t = sweep_tY_mm[i / nq], q = sweep_Q_kN[i % nq];
+  const double t = sweep_tY_mm.at(i / nq), q = sweep_Q_kN.at(i % nq);
   return {t * units::mm, q * units::kN, t, q};
 }
 
@@ -353,9 +361,9 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
       cf.geometry.tY_min = std::min(cf.geometry.tY_min, t);
       cf.geometry.tY_max = std::max(cf.geometry.tY_max, t);
     }
-    if (!cf.sweep_tY_mm.empty()) {
-      cf.geometry.tY_min = std::min(cf.geometry.tY_min, *std::min_element(cf.sweep_tY_mm.begin(), cf.sweep_tY_mm.end()) * units::mm);
-      cf.geometry.tY_max = std::max(cf.geometry.tY_max, *std::max_element(cf.sweep_tY_mm.begin(), cf.sweep_tY_mm.end()) * units::mm);
+    if (cf.sweep_tY_mm.size() > 0) {
+      cf.geometry.tY_min = std::min(cf.geometry.tY_min, cf.sweep_tY_mm.min() * units::mm);
+      cf.geometry.tY_max = std::max(cf.geometry.tY_max, cf.sweep_tY_mm.max() * units::mm);
     }
     // Snap outwards onto the grid step so the sweep's ends are inside.
     cf.geometry.tY_min = std::floor(cf.geometry.tY_min / cf.geometry.tY_step + 1e-6) * cf.geometry.tY_step;

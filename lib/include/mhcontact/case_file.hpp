@@ -36,6 +36,18 @@ struct CasePoint {
   double Q_kN = 0;   ///< the value as given
 };
 
+/// One axis of a sweep, as given: an explicit list, or a range whose values from + i·step are
+/// computed when asked (never stored: memory does not grow with the sweep).
+struct SweepAxis {
+  std::vector<double> list;   ///< explicit values, or empty for a range
+  double from = 0, step = 0;  ///< range
+  std::uint64_t n = 0;        ///< number of values
+  std::uint64_t size() const { return n; }
+  double at(std::uint64_t i) const { return list.empty() ? from + step * static_cast<double>(i) : list[i]; }
+  double min() const;
+  double max() const;
+};
+
 /// Largest number of cases a run accepts (refused up front with the count).
 constexpr std::uint64_t kMaxCases = 1000000000ULL;
 
@@ -49,7 +61,7 @@ struct CaseFile {
   Model model = Model::Elastic;
   SolverOptions solver;
   /// Either a cartesian sweep (t_Y outer, Q inner: case i has tY[i / nQ], Q[i % nQ]) ...
-  std::vector<double> sweep_tY_mm, sweep_Q_kN;  ///< as given, in mm and kN
+  SweepAxis sweep_tY_mm, sweep_Q_kN;  ///< as given, in mm and kN
   /// ... or an explicit list.
   std::vector<CasePoint> cases;
   bool has_cases = false;  ///< a sweep or a case list was given
