@@ -7,10 +7,10 @@
 #include <thread>
 #include <vector>
 
-#include "mhcontact/case_file.hpp"
-#include "mhcontact/geometry.hpp"
-#include "mhcontact/run.hpp"
-#include "mhcontact/solver.hpp"
+#include "input/case_file.hpp"
+#include "geometry/contact_geometry.hpp"
+#include "jobs/run.hpp"
+#include "contact/multi_hertz.hpp"
 
 using namespace mh;
 using clk = std::chrono::steady_clock;

@@ -3,7 +3,7 @@
 # counterpart (wheels on 60E1 1:40, rails under S1002), solved over a sweep: exit 0 or 1 (some
 # cases may be no_contact etc.), never 2 or 3, never a crash; every row has a status.
 # avg_HR.BAN is read after dropping one point of 0.01 mm jitter; avg_low2.ban keeps a 0.06 mm
-# backward step on its gauge face and must stay rejected with exit 2 (tests/test_profile_io.cpp).
+# backward step on its gauge face and must stay rejected with exit 2 (tests/unit/profile/test_profile_io.cpp).
 set -euo pipefail
 bin=$1; src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT

@@ -1,7 +1,7 @@
 #pragma once
 // Fuzz harnesses, shared by the libFuzzer targets (tests/fuzz/fuzz_*.cpp, built with
 // -DMHCONTACT_FUZZ=ON and clang) and by the Catch2 test that replays the seed corpus and every
-// kept regression input in the normal test suite (tests/test_fuzz_regressions.cpp).
+// kept regression input in the normal test suite (tests/unit/input/test_fuzz_regressions.cpp).
 //
 // The contract under test: any input either parses or throws mh::InputError. Anything else (a
 // crash, a sanitizer report, another exception type, a hang) is a finding.
@@ -12,14 +12,14 @@
 #include <fstream>
 #include <string>
 
-#include "mhcontact/case_file.hpp"
-#include "mhcontact/csv_table.hpp"
-#include "mhcontact/errors.hpp"
-#include "mhcontact/geometry.hpp"
-#include "mhcontact/manifest.hpp"
-#include "mhcontact/profile_curve.hpp"
-#include "mhcontact/profile_io.hpp"
-#include "mhcontact/solver.hpp"
+#include "input/case_file.hpp"
+#include "output/csv_table.hpp"
+#include "core/errors.hpp"
+#include "geometry/contact_geometry.hpp"
+#include "input/manifest.hpp"
+#include "profile/curve.hpp"
+#include "profile/read.hpp"
+#include "contact/multi_hertz.hpp"
 
 namespace mh::fuzz {
 

@@ -1,0 +1,114 @@
+// `mhcontact profile convert` and `mhcontact profile info` (README "Profiles").
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <memory>
+#include <ostream>
+
+#include "cli.hpp"
+#include "core/errors.hpp"
+#include "core/numfmt.hpp"
+#include "output/profile_file.hpp"
+#include "profile/read.hpp"
+
+namespace mh {
+
+void add_profile_read_options(CLI::App& app, ProfileReadOptions& opt) {
+  app.add_option_function<std::string>(
+         "--format", [&opt](const std::string& s) { opt.format = parse_profile_format(s); },
+         "input format (default auto: by extension, else by content)")
+      ->check(CLI::IsMember({"auto", "simpack", "miniprof", "table", "vampire"}));
+  app.add_option_function<std::string>(
+         "--kind",
+         [&opt](const std::string& s) { opt.kind = s == "wheel" ? ProfileKind::Wheel : ProfileKind::Rail; },
+         "wheel or rail (default: from the file header/extension, else the shape)")
+      ->check(CLI::IsMember({"wheel", "rail"}));
+  app.add_flag("--mirror-y", opt.mirror_y, "mirror y after the format's own transformations");
+  app.add_flag("--mirror-z", opt.mirror_z, "mirror z after the format's own transformations");
+  app.add_option("--scale", opt.scale, "multiply file lengths by S to get mm (default 1)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--vampire-side", opt.vampire_side, "VAMPIRE files: which side to read (default right)")
+      ->check(CLI::IsMember({"left", "right"}));
+  app.add_flag("--no-check", [&opt](std::int64_t) { opt.check = false; },
+               "skip the shape plausibility checks (flange side, upside down, kind)");
+}
+
+namespace {
+
+std::string mm(double v_m) { return format_number(v_m * 1e3); }
+
+void print_info(const Profile& p, bool json, std::ostream& out) {
+  double ymin = p.y.front(), ymax = p.y.back();
+  nlohmann::ordered_json j;
+  j["file"] = p.source;
+  j["format"] = p.format;
+  j["kind"] = to_string(p.kind);
+  j["points"] = p.size();
+  j["y_min_mm"] = ymin * 1e3;
+  j["y_max_mm"] = ymax * 1e3;
+  std::string text = "file: " + p.source + "\nformat: " + p.format + "\nkind: " + to_string(p.kind) +
+                     "\npoints: " + std::to_string(p.size()) + "\ny_range_mm: " + mm(ymin) + " " + mm(ymax) + "\n";
+  if (p.kind == ProfileKind::Rail) {
+    const RailLandmarks L = rail_landmarks(p);
+    j["head_top_y_mm"] = L.y_top * 1e3;
+    j["head_top_z_mm"] = L.z_top * 1e3;
+    text += "head_top_mm: y " + mm(L.y_top) + " z " + mm(L.z_top) + "\n";
+    if (L.has_gauge) {
+      j["gauge_point_y_mm"] = L.y_gauge * 1e3;
+      j["gauge_point_z_mm"] = L.z_gauge * 1e3;
+      text += "gauge_point_mm (14 mm below the top): y " + mm(L.y_gauge) + " z " + mm(L.z_gauge) + "\n";
+    } else {
+      j["gauge_point_y_mm"] = nullptr;
+      j["gauge_point_z_mm"] = nullptr;
+      text += "gauge_point_mm: none (profile does not reach 14 mm below the top on the gauge side)\n";
+    }
+  } else if (p.kind == ProfileKind::Wheel) {
+    const WheelLandmarks L = wheel_landmarks(p);
+    j["flange_tip_y_mm"] = L.y_tip * 1e3;
+    j["flange_tip_z_mm"] = L.z_tip * 1e3;
+    text += "flange_tip_mm: y " + mm(L.y_tip) + " z " + mm(L.z_tip) + "\n";
+  }
+  j["sha256"] = p.checksum;
+  j["warnings"] = p.warnings;
+  text += "sha256: " + p.checksum + "\n";
+  for (const auto& w : p.warnings) text += "warning: " + w + "\n";
+  if (json) out << j.dump(2) << "\n";
+  else out << text;
+}
+
+}  // namespace
+
+void add_profile_io_commands(CLI::App& profile, CliContext& ctx) {
+  {
+    auto opt = std::make_shared<ProfileReadOptions>();
+    auto in = std::make_shared<std::string>();
+    auto outp = std::make_shared<std::string>();
+    CLI::App* c = profile.add_subcommand("convert", "read a profile file and write it as .csv or .prr/.prw");
+    c->add_option("IN", *in, "input profile file")->required();
+    c->add_option("-o,--output", *outp, "output file: .csv (y_mm,z_mm; z up) or .prr/.prw (SIMPACK)")->required();
+    add_profile_read_options(*c, *opt);
+    c->callback([opt, in, outp, &ctx]() {
+      const Profile p = read_profile(*in, *opt);
+      write_profile(p, *outp);
+      for (const auto& w : p.warnings) ctx.err << "warning: " << *in << ": " << w << "\n";
+      ctx.out << "wrote " << *outp << " (" << to_string(p.kind) << ", " << p.size() << " points)\n";
+      ctx.exit_code = kExitOk;
+    });
+  }
+  {
+    auto opt = std::make_shared<ProfileReadOptions>();
+    auto in = std::make_shared<std::string>();
+    auto json = std::make_shared<bool>(false);
+    CLI::App* c = profile.add_subcommand("info", "print format, kind, point count, y range, landmarks, warnings");
+    c->add_option("IN", *in, "input profile file")->required();
+    c->add_flag("--json", *json, "print JSON instead of text");
+    add_profile_read_options(*c, *opt);
+    c->callback([opt, in, json, &ctx]() {
+      const Profile p = read_profile(*in, *opt);
+      print_info(p, *json, ctx.out);
+      ctx.exit_code = kExitOk;
+    });
+  }
+}
+
+}  // namespace mh

@@ -1,0 +1,81 @@
+// `mhcontact geometry` and `mhcontact run`.
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include "input/case_file.hpp"
+#include "cli.hpp"
+#include "core/errors.hpp"
+#include "input/manifest.hpp"
+#include "jobs/batch.hpp"
+#include "jobs/run.hpp"
+#include "jobs/shards.hpp"
+
+namespace mh {
+
+void add_geometry_command(CLI::App& app, CliContext& ctx) {
+  struct Opts { std::string case_file, out_dir; bool quiet = false; };
+  auto o = std::make_shared<Opts>();
+  CLI::App* cmd = app.add_subcommand(
+      "geometry", "Contact geometry of the case's profile pair: CAF, radii and potential ellipses "
+                  "(writes DIR/caf.csv and DIR/geometry.json)");
+  cmd->add_option("case", o->case_file, "Case file (JSON)")->required();
+  cmd->add_option("-o,--output", o->out_dir, "Output directory (created if missing)")->required();
+  cmd->add_flag("-q,--quiet", o->quiet, "No summary on standard error");
+  cmd->callback([o, &ctx] {
+    const CaseFile cf = load_case_file(o->case_file, false);
+    ctx.exit_code = geometry_job(cf, o->out_dir, ctx.out, ctx.err, o->quiet);
+  });
+}
+
+void add_run_command(CLI::App& app, CliContext& ctx) {
+  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false; std::string shard; };
+  auto o = std::make_shared<Opts>();
+  CLI::App* cmd = app.add_subcommand(
+      "run", "Solve every case of the case file's sweep (or of a batch manifest over many profile pairs) (writes DIR/cases.csv, DIR/ellipses.csv, "
+             "DIR/results.json). Exit 0 if every case is ok, 1 if some are not.");
+  cmd->add_option("case", o->case_file, "Case file (JSON)")->required();
+  cmd->add_option("-o,--output", o->out_dir, "Output directory (created if missing); '-' writes results.json to standard output")->required();
+  cmd->add_option("--format", o->format, "Which outputs: csv, json or both")
+      ->check(CLI::IsMember({"csv", "json", "both"}))->capture_default_str();
+  cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores; output is identical whatever the count)")
+      ->check(CLI::Range(0u, 1024u))->capture_default_str();
+  cmd->add_option("--pressure-grid", o->pressure_grid,
+                  "Also write DIR/pressure.csv: the pressure of every loaded ellipse on an N x N grid over its patch");
+  cmd->add_option("--shard", o->shard, "K/N: run only the K-th of N deterministic slices of the case list (join them with `mhcontact merge`)");
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress or summary on standard error");
+  cmd->callback([o, &ctx] {
+    RunOptions ro;
+    if (!o->shard.empty()) parse_shard(o->shard, &ro.shard_index, &ro.shard_count);
+    const nlohmann::json j = read_json_file(o->case_file);
+    ro.out_dir = o->out_dir;
+    ro.csv = o->format != "json";
+    ro.json = o->format != "csv";
+    ro.threads = o->threads;
+    ro.quiet = o->quiet;
+    ro.pressure_grid = o->pressure_grid;
+    ro.progress = (&ctx.err == &std::cerr) && ::isatty(2);
+    if (is_manifest(j)) {
+      ctx.exit_code = batch_job(parse_manifest(j, o->case_file), ro, ctx.out, ctx.err);
+    } else {
+      ctx.exit_code = run_job(parse_case_json(j, o->case_file, true), ro, ctx.out, ctx.err);
+    }
+  });
+}
+
+}  // namespace mh
+
+namespace mh {
+
+void add_merge_command(CLI::App& app, CliContext& ctx) {
+  struct Opts { std::vector<std::string> dirs; std::string out_dir; bool quiet = false; };
+  auto o = std::make_shared<Opts>();
+  CLI::App* cmd = app.add_subcommand(
+      "merge", "Join the output directories of all shards of one `run --shard K/N` into the tables a single run "
+               "would have written. Exit 0 if every case is ok, 1 if some are not.");
+  cmd->add_option("dirs", o->dirs, "Shard output directories (any order)")->required();
+  cmd->add_option("-o,--output", o->out_dir, "Output directory")->required();
+  cmd->add_flag("-q,--quiet", o->quiet, "No summary on standard error");
+  cmd->callback([o, &ctx] { ctx.exit_code = merge_job(o->dirs, o->out_dir, ctx.err, o->quiet); });
+}
+
+}  // namespace mh

@@ -1,0 +1,147 @@
+#include "contact/multi_hertz.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/numfmt.hpp"
+
+namespace mh {
+
+const char* to_string(CaseStatus s) {
+  switch (s) {
+    case CaseStatus::Ok: return "ok";
+    case CaseStatus::NoContact: return "no_contact";
+    case CaseStatus::OutOfRange: return "out_of_range";
+    case CaseStatus::NotConverged: return "not_converged";
+  }
+  return "?";
+}
+
+bool SolverOptions::valid(std::string* why) const {
+  if (!(rtol > 0 && rtol < 1e-3)) { if (why) *why = "rtol must be in (0, 1e-3)"; return false; }
+  if (max_iterations < 1 || max_iterations > 10000) { if (why) *why = "max_iterations must be in [1, 10000]"; return false; }
+  return true;
+}
+
+namespace {
+
+struct Cand {
+  int ellipse;
+  CandidateGeom g;
+  double A, B, cg, sg;  // cos γ, sin γ
+  bool hertzian;
+  EllipseLaw law;
+};
+
+}  // namespace
+
+CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, double Q,
+                      const SolverOptions& opt) {
+  CaseResult r;
+  if (!(Q > 0) || !std::isfinite(Q)) {
+    r.status = CaseStatus::NoContact;
+    r.message = "Q must be > 0";
+    return r;
+  }
+  if (!G.covers(tY)) {
+    r.status = CaseStatus::OutOfRange;
+    r.message = "t_Y = " + format_number(tY * 1e3) + " mm outside the geometry table [" +
+                format_number(G.tY.front() * 1e3) + ", " + format_number(G.tY.back() * 1e3) + "] mm";
+    return r;
+  }
+  const std::size_t ne = G.n_ellipses();
+  thread_local std::vector<CandidateGeom> geo;
+  thread_local std::vector<Cand> cs;
+  geo.resize(ne);
+  cs.clear();
+  int main = 0;
+  G.candidates_at(tY, geo.data(), &main);
+  for (std::size_t e = 0; e < ne; ++e) {
+    Cand c;
+    c.ellipse = static_cast<int>(e) + 1;
+    c.g = geo[e];
+    c.A = 1.0 / (2.0 * c.g.R_wyy());                 // (eq. 1)
+    c.B = 0.5 * (c.g.k_wxx + c.g.k_rxx);             // (eq. 1)
+    c.cg = std::cos(c.g.gamma);
+    c.sg = std::sin(c.g.gamma);
+    c.hertzian = c.B > 0 && c.A > 0 && std::isfinite(c.A) && std::isfinite(c.B);
+    if (c.hertzian) {
+      try {
+        c.law = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients);
+      } catch (const std::exception&) {
+        c.hertzian = false;  // e.g. λ beyond the Hertz range: nearly conformal, no ellipse
+      }
+    }
+    cs.push_back(c);
+  }
+  // Σ N_i cos γ_i and its derivative in δz (eqs. 10–11).
+  auto total = [&](double dz, double* dF) {
+    double F = 0, D = 0;
+    for (const Cand& c : cs) {
+      if (!c.hertzian) continue;
+      const double h = (dz - c.g.gap) * c.cg;
+      if (h <= 0) continue;
+      double dN;
+      F += c.law.force(h, &dN) * c.cg;
+      D += dN * c.cg * c.cg;
+    }
+    if (dF) *dF = D;
+    return F;
+  };
+  // Start: the Hertzian candidate with the smallest gap (the main strip, if Hertzian) carrying Q
+  // alone, in closed form; it bounds δz from above since the others only add force.
+  const Cand* first = nullptr;
+  for (const Cand& c : cs)
+    if (c.hertzian && (!first || c.g.gap < first->g.gap)) first = &c;
+  if (!first) {
+    r.status = CaseStatus::NoContact;
+    r.message = "no Hertzian candidate: every potential ellipse has B <= 0 (conformal) at this t_Y";
+    return r;
+  }
+  double lo = first->g.gap;  // F(lo) = 0 < Q (only candidates with smaller gap could load: none)
+  double hi = first->g.gap + first->law.h0_for_force(Q / first->cg) / first->cg;
+  double dz = hi, dF = 0;
+  double F = total(dz, &dF);
+  int it = 0;
+  const double tol = opt.rtol * Q;
+  while (std::fabs(F - Q) > tol && it < opt.max_iterations) {
+    ++it;
+    if (F > Q) hi = dz; else lo = dz;
+    double next = dF > 0 ? dz - (F - Q) / dF : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // safeguard: stay in the bracket
+    if (next == dz) break;
+    dz = next;
+    F = total(dz, &dF);
+  }
+  r.iterations = it;
+  r.dz = dz;
+  r.residual = (F - Q) / Q;
+  if (std::fabs(F - Q) > tol && std::fabs(r.residual) > 4 * std::numeric_limits<double>::epsilon()) {
+    r.status = CaseStatus::NotConverged;
+    r.message = "equilibrium not reached in " + std::to_string(it) + " iterations (relative residual " +
+                format_number(r.residual) + ")";
+  }
+  for (const Cand& c : cs) {
+    const double h = (dz - c.g.gap) * c.cg;
+    if (h <= 0) continue;
+    if (!c.hertzian) {
+      r.warnings.push_back("non_hertzian_excluded:ellipse=" + std::to_string(c.ellipse));
+      continue;
+    }
+    LoadedEllipse L;
+    L.ellipse = c.ellipse;
+    L.g = c.g;
+    L.A = c.A;
+    L.B = c.B;
+    L.c = c.law.c;
+    L.h_y = c.law.h_y;
+    L.s = ellipse_state(c.law, h);
+    r.Fz += L.s.N * c.cg;
+    r.Fy += L.s.N * c.sg;
+    r.loaded.push_back(L);
+  }
+  return r;
+}
+
+}  // namespace mh

@@ -1,0 +1,207 @@
+#include "geometry/contact_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/errors.hpp"
+#include "core/numfmt.hpp"
+
+namespace mh {
+
+double CandidateGeom::R_wyy() const { return r_roll / std::cos(gamma); }
+
+bool GeometryOptions::valid(std::string* why) const {
+  auto fail = [&](const std::string& s) { if (why) *why = s; return false; };
+  if (!(tY_step > 0)) return fail("tY_step_mm must be > 0");
+  if (!(tY_max >= tY_min)) return fail("tY_max_mm must be >= tY_min_mm");
+  if ((tY_max - tY_min) / tY_step > 2e6) return fail("the t_Y grid would have more than 2,000,000 points");
+  if (!(strip_width > 0) || strip_width > 5e-3) return fail("strip_width_mm must be in (0, 5]");
+  if (!(jump_threshold > 0)) return fail("jump_threshold_deg must be > 0");
+  if (!(jump_distance >= 0)) return fail("jump_distance_mm must be >= 0");
+  return true;
+}
+
+namespace {
+
+// Minimise the gap g(y) = z_w(y − s) − z_r(y) on [a, b] around a discrete minimum: the roots
+// of g'(y) = z_w'(y − s) − z_r'(y) with g' going from negative to positive are local minima; each
+// is refined by bisection and the lowest gap wins. Without such a root the lower end is taken.
+double refine_minimum(const ProfileCurve& W, const ProfileCurve& R, double s, double a, double b) {
+  auto d = [&](double y) {
+    double dw, dr;
+    W.z(y - s, &dw);
+    R.z(y, &dr);
+    return dw - dr;
+  };
+  auto g = [&](double y) { return W.z(y - s) - R.z(y); };
+  constexpr int kSub = 24;  // sub-intervals scanned for sign changes of g'
+  double best_y = g(a) <= g(b) ? a : b, best_g = std::min(g(a), g(b));
+  double y0 = a, d0 = d(a);
+  for (int i = 1; i <= kSub; ++i) {
+    const double y1 = a + (b - a) * i / kSub, d1 = d(y1);
+    if (d0 < 0 && d1 >= 0) {
+      double lo = y0, hi = y1;
+      for (int it = 0; it < 60 && hi - lo > 1e-13; ++it) {
+        const double m = 0.5 * (lo + hi);
+        if (d(m) < 0) lo = m; else hi = m;
+      }
+      const double ym = 0.5 * (lo + hi), gm = g(ym);
+      if (gm < best_g) { best_g = gm; best_y = ym; }
+    }
+    y0 = y1;
+    d0 = d1;
+  }
+  return best_y;
+}
+
+}  // namespace
+
+void ContactGeometry::candidates_at(double t, CandidateGeom* out, int* main) const {
+  const std::size_t n = tY.size(), ne = ellipses.size();
+  const double step = n > 1 ? (tY.back() - tY.front()) / static_cast<double>(n - 1) : 1.0;
+  double s = n > 1 ? (t - tY.front()) / step : 0.0;
+  s = std::clamp(s, 0.0, static_cast<double>(n - 1));
+  std::size_t k = std::min(static_cast<std::size_t>(s), n > 1 ? n - 2 : 0);
+  const double f = n > 1 ? s - static_cast<double>(k) : 0.0;
+  const std::size_t k1 = n > 1 ? k + 1 : k;
+  for (std::size_t e = 0; e < ne; ++e) {
+    const CandidateGeom& a = table[k * ne + e];
+    const CandidateGeom& b = table[k1 * ne + e];
+    CandidateGeom& c = out[e];
+    c.gap = a.gap + f * (b.gap - a.gap);
+    c.y_r = a.y_r + f * (b.y_r - a.y_r);
+    c.y_w = a.y_w + f * (b.y_w - a.y_w);
+    c.gamma = a.gamma + f * (b.gamma - a.gamma);
+    c.k_rxx = a.k_rxx + f * (b.k_rxx - a.k_rxx);
+    c.k_wxx = a.k_wxx + f * (b.k_wxx - a.k_wxx);
+    c.r_roll = a.r_roll + f * (b.r_roll - a.r_roll);
+  }
+  if (main) *main = main_ellipse[f < 0.5 ? k : k1];
+}
+
+ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const TrackSetup& track,
+                               const GeometryOptions& opt) {
+  std::string why;
+  if (!opt.valid(&why)) throw InputError("geometry options", "", why);
+  ContactGeometry G;
+  const ProfileCurve W(wheel, opt.curve);
+  const ProfileCurve R(rail, opt.curve);
+  G.wheel_window = W.window_used();
+  G.rail_window = R.window_used();
+
+  // Positioning at t_Y = 0 (method.md §7): the gauge point of the rail is gauge/2 from the track
+  // centre, the wheel's flange back flange_back_distance/2, its taping line (y = 0) a further
+  // −flange_back_position towards the field side.
+  const RailLandmarks L = rail_landmarks(rail, track.gauge_height);
+  if (!L.has_gauge)
+    throw InputError(rail.source, "", "no gauge point found " + format_number(track.gauge_height * 1e3) +
+                                          " mm below the top of the rail on its gauge side (negative y)",
+                     "the rail profile must reach that low on the gauge side; check mirror_y");
+  G.rail_gauge_y = L.y_gauge;
+  G.y_offset = (L.y_gauge - track.gauge / 2) + (track.flange_back_distance / 2 - track.flange_back_position);
+
+  // Strips over the rail.
+  const double w = opt.strip_width;
+  for (double y = R.y_min() + w / 2; y <= R.y_max() - w / 2 + 1e-15; y += w) G.strip_y.push_back(y);
+  const std::size_t ns = G.strip_y.size();
+  std::vector<double> zr(ns);
+  for (std::size_t j = 0; j < ns; ++j) zr[j] = R.z(G.strip_y[j]);
+
+  const std::size_t nt = static_cast<std::size_t>(std::floor((opt.tY_max - opt.tY_min) / opt.tY_step + 1e-9)) + 1;
+  G.tY.resize(nt);
+  // Grid values: when t_Y_min is a whole number of steps, each value is computed as an integer
+  // times the step in mm, so that the tables print 5 and not 5.000000000000001.
+  const double step_mm = opt.tY_step * 1e3, k0 = std::round(opt.tY_min / opt.tY_step);
+  const bool aligned = std::fabs(opt.tY_min / opt.tY_step - k0) < 1e-6;
+  for (std::size_t k = 0; k < nt; ++k)
+    G.tY[k] = aligned ? (k0 + static_cast<double>(k)) * step_mm / 1e3 : opt.tY_min + opt.tY_step * static_cast<double>(k);
+
+  // Main strip and CAF per grid point.
+  struct Main { double y_r, gmin; std::size_t strip; };
+  std::vector<Main> mains(nt);
+  G.main_strip.resize(nt);
+  G.z_contact.resize(nt);
+  for (std::size_t k = 0; k < nt; ++k) {
+    const double s = G.y_offset + G.tY[k];
+    double best = std::numeric_limits<double>::infinity();
+    std::size_t jb = ns;
+    for (std::size_t j = 0; j < ns; ++j) {
+      const double yw = G.strip_y[j] - s;
+      if (!W.contains(yw)) continue;
+      const double g = W.z(yw) - zr[j];
+      if (g < best) { best = g; jb = j; }
+    }
+    if (jb == ns)
+      throw InputError(wheel.source + " on " + rail.source, "t_Y = " + format_number(G.tY[k] * 1e3) + " mm",
+                       "the wheel and rail profiles do not overlap laterally",
+                       "check the track data, mirror options and the t_Y range");
+    const double a = G.strip_y[jb > 2 ? jb - 3 : 0], b = G.strip_y[std::min(jb + 3, ns - 1)];
+    const double yc = refine_minimum(W, R, s, std::max(a, W.y_min() + s), std::min(b, W.y_max() + s));
+    mains[k] = {yc, W.z(yc - s) - R.z(yc), jb};
+    G.main_strip[k] = jb;
+    G.z_contact[k] = mains[k].gmin;
+  }
+
+  // Jumps of the CAF cut the t_Y axis into potential ellipses (method.md §3.5).
+  auto gamma_at = [&](double y) { double d; R.z(y, &d); return std::atan(d); };
+  std::vector<double> gam(nt);
+  for (std::size_t k = 0; k < nt; ++k) gam[k] = gamma_at(mains[k].y_r);
+  G.main_ellipse.resize(nt);
+  int e = 0;
+  std::size_t first = 0;
+  auto close = [&](std::size_t last) {
+    PotentialEllipse P;
+    P.index = e + 1;
+    P.k_first = first;
+    P.k_last = last;
+    P.tY_min = G.tY[first];
+    P.tY_max = G.tY[last];
+    P.y_r_min = P.y_r_max = mains[first].y_r;
+    P.y_w_min = P.y_w_max = mains[first].y_r - G.y_offset - G.tY[first];
+    for (std::size_t k = first; k <= last; ++k) {
+      const double yr = mains[k].y_r, yw = yr - G.y_offset - G.tY[k];
+      P.y_r_min = std::min(P.y_r_min, yr); P.y_r_max = std::max(P.y_r_max, yr);
+      P.y_w_min = std::min(P.y_w_min, yw); P.y_w_max = std::max(P.y_w_max, yw);
+    }
+    G.ellipses.push_back(P);
+  };
+  for (std::size_t k = 0; k < nt; ++k) {
+    if (k > 0 && std::fabs(gam[k] - gam[k - 1]) > opt.jump_threshold &&
+        std::fabs(mains[k].y_r - mains[k - 1].y_r) > opt.jump_distance) {
+      close(k - 1);
+      ++e;
+      first = k;
+    }
+    G.main_ellipse[k] = e;
+  }
+  close(nt - 1);
+
+  // Candidate table: for every grid point and ellipse, the ellipse's own main strip when it is
+  // the main one, else the main strip of the ellipse's t_Y nearest to this t_Y (method.md §3.6).
+  const double r0 = track.nominal_radius;
+  const double zw0 = W.z(0.0);
+  const std::size_t ne = G.ellipses.size();
+  G.table.resize(nt * ne);
+  for (std::size_t k = 0; k < nt; ++k) {
+    const double s = G.y_offset + G.tY[k];
+    for (std::size_t ie = 0; ie < ne; ++ie) {
+      const PotentialEllipse& P = G.ellipses[ie];
+      const std::size_t kn = std::clamp(k, P.k_first, P.k_last);
+      CandidateGeom& c = G.table[k * ne + ie];
+      c.y_r = mains[kn].y_r;
+      c.y_w = c.y_r - s;
+      double dzr;
+      const double z_r = R.z(c.y_r, &dzr);
+      c.gamma = std::atan(dzr);
+      c.k_rxx = -R.kappa(c.y_r);
+      c.k_wxx = W.kappa(c.y_w);
+      const double z_w = W.z(c.y_w);
+      c.gap = (kn == k) ? 0.0 : std::max(0.0, (z_w - z_r) - mains[k].gmin);
+      c.r_roll = r0 - (z_w - zw0);
+    }
+  }
+  return G;
+}
+
+}  // namespace mh

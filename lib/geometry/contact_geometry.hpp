@@ -1,0 +1,100 @@
+#pragma once
+// Contact geometry of one wheel–rail profile pair (paper section 2.3, method.md §3 and §7):
+// strips, the contact angle function (CAF) γ(t_Y), its jumps, the potential ellipses, and for
+// every t_Y of a fine grid the candidate of every potential ellipse. Built once per profile pair;
+// every case of a sweep only interpolates these tables (it never rescans the profiles).
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "profile/profile.hpp"
+#include "profile/curve.hpp"
+
+namespace mh {
+
+/// Track and wheelset data that place the wheel against the rail at t_Y = 0 (method.md §7).
+/// Defaults: standard gauge values.
+struct TrackSetup {
+  double gauge = 1.435;                   ///< [m] track gauge (default 1435 mm)
+  double gauge_height = 0.014;            ///< [m] measured this far below the top of rail (default 14 mm)
+  double flange_back_distance = 1.360;    ///< [m] wheelset flange-back distance (default 1360 mm)
+  double flange_back_position = -0.070;   ///< [m] y of the flange back on the wheel profile (default −70 mm)
+  double nominal_radius = 0.460;          ///< [m] wheel radius at the taping line y = 0 (default 460 mm)
+};
+
+struct GeometryOptions {
+  double tY_min = -10e-3;      ///< [m] first t_Y of the grid (default −10 mm)
+  double tY_max = 12e-3;       ///< [m] last t_Y of the grid (default +12 mm: covers flange contact)
+  double tY_step = 0.01e-3;    ///< [m] grid step (default 0.01 mm)
+  double strip_width = 0.1e-3; ///< [m] width of the rail strips (default 0.1 mm)
+  /// A change of γ larger than this between two neighbouring t_Y of the grid is a jump of the CAF
+  /// and starts a new potential ellipse (method.md §3.5). Default 0.5°: continuous motion of the
+  /// contact moves γ by less than 0.3° per 0.01 mm step even in near-conformal flange-root
+  /// contact (eq. 9 with R_wxx + R_rxx = −2 mm), while the jumps of a real pair are degrees.
+  double jump_threshold = 0.5 * 3.14159265358979323846 / 180.0;  ///< [rad]
+  /// ... and the main strip must move on the rail by more than this between the two t_Y (a jump
+  /// of the contact point, not the contact sliding over a slightly wavy or nearly conformal
+  /// surface, whose γ can wobble by a degree while the point moves a fraction of a millimetre).
+  /// Default 1 mm: the jumps of the Manchester pair move the contact 4 to 10 mm.
+  double jump_distance = 1.0e-3;  ///< [m]
+  CurveOptions curve;          ///< smoothing of both profiles (profile_curve.hpp)
+  bool valid(std::string* why) const;
+};
+
+/// One candidate contact (a potential ellipse's strip) at one t_Y. SI, paper signs.
+struct CandidateGeom {
+  double gap = 0;     ///< [m] z_w − z_r at the strip minus the minimum over all strips (0 at the main strip)
+  double y_r = 0;     ///< [m] rail lateral coordinate of the strip
+  double y_w = 0;     ///< [m] wheel lateral coordinate facing it (y_r − y_offset − t_Y)
+  double gamma = 0;   ///< [rad] contact angle: rail slope angle at the strip
+  double k_rxx = 0;   ///< [1/m] 1/R_rxx (positive: convex rail)
+  double k_wxx = 0;   ///< [1/m] 1/R_wxx (negative: concave wheel, e.g. the flange root)
+  double r_roll = 0;  ///< [m] wheel rolling radius at y_w
+  double R_wyy() const;  ///< [m] r_roll / cos γ (method.md §2, Meusnier)
+};
+
+struct PotentialEllipse {
+  int index = 0;               ///< 1-based, in increasing t_Y
+  std::size_t k_first = 0, k_last = 0;  ///< grid indices of its t_Y interval
+  double tY_min = 0, tY_max = 0;        ///< [m]
+  double y_r_min = 0, y_r_max = 0;      ///< [m] where its main strips lie on the rail
+  double y_w_min = 0, y_w_max = 0;      ///< [m] and on the wheel
+};
+
+class ContactGeometry {
+ public:
+  std::vector<double> tY;                ///< [m] grid
+  std::vector<int> main_ellipse;         ///< per grid point: 0-based index of the ellipse of the main strip
+  std::vector<PotentialEllipse> ellipses;
+  std::vector<CandidateGeom> table;      ///< [k * n_ellipses() + e]
+  std::vector<double> strip_y;           ///< [m] centres of the rail strips
+  std::vector<std::size_t> main_strip;   ///< per grid point: index of the strip with the smallest gap
+  std::vector<double> z_contact;         ///< [m] per grid point: wheel height offset at geometric contact
+  double y_offset = 0;                   ///< [m] rail y of the wheel's origin (taping line) at t_Y = 0
+  double rail_gauge_y = 0;               ///< [m] gauge point of the rail (rail frame)
+  double wheel_window = 0, rail_window = 0;  ///< [m] curvature fit windows used (profile_curve.hpp)
+
+  std::size_t n_ellipses() const { return ellipses.size(); }
+  const CandidateGeom& at(std::size_t k, std::size_t e) const { return table[k * ellipses.size() + e]; }
+  const CandidateGeom& main_at(std::size_t k) const { return at(k, static_cast<std::size_t>(main_ellipse[k])); }
+  bool covers(double t) const { return t >= tY.front() - 1e-12 && t <= tY.back() + 1e-12; }
+
+  /// Candidates of all potential ellipses at an arbitrary t_Y inside the grid, linearly
+  /// interpolated between the two neighbouring grid points; `main` receives the ellipse of the
+  /// nearest grid point's main strip. Precondition: covers(t).
+  void candidates_at(double t, CandidateGeom* out, int* main) const;
+};
+
+/// Build the geometry of a wheel on a rail. The rail must already carry its inclination
+/// (the case loader applies it once). Throws InputError when the pair cannot be placed
+/// (no gauge point on the rail, profiles that never overlap) or the options are invalid.
+ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const TrackSetup& track,
+                               const GeometryOptions& opt);
+
+/// A profile pair as used (rail with its inclination) and its contact geometry.
+struct PairGeometry {
+  Profile wheel, rail;
+  ContactGeometry geo;
+};
+
+}  // namespace mh

@@ -1,0 +1,86 @@
+#pragma once
+// The case file (JSON): profiles, track, geometry grid, material, model and the sweep of cases.
+// Every error names the file, the JSON path, the value and the rule; unknown keys are errors.
+// Field reference: README "Case file".
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "geometry/contact_geometry.hpp"
+#include "contact/ellipse_law.hpp"
+#include "profile/profile.hpp"
+#include "profile/read.hpp"
+#include "contact/multi_hertz.hpp"
+
+namespace mh {
+
+/// Where a profile comes from: a file (with reading options) or a standard definition.
+struct ProfileSource {
+  std::string file;          ///< resolved path (relative paths are relative to the case file)
+  std::string standard;      ///< e.g. "S1002", "60E1", "54E1" (then `file` is empty)
+  double step = 0.1e-3;      ///< [m] node spacing of a generated standard profile (default 0.1 mm)
+  ProfileReadOptions read;
+  std::string json_path;     ///< e.g. "/wheel/profile", for messages
+  std::string case_file;     ///< the case file that named it, for messages
+};
+
+enum class Model { Elastic, Plastic };
+const char* to_string(Model m);
+
+struct CasePoint {
+  double tY = 0;     ///< [m]
+  double Q = 0;      ///< [N]
+  double tY_mm = 0;  ///< the value as given (written back verbatim in the tables)
+  double Q_kN = 0;   ///< the value as given
+};
+
+/// One axis of a sweep, as given: an explicit list, or a range whose values from + i·step are
+/// computed when asked (never stored: memory does not grow with the sweep).
+struct SweepAxis {
+  std::vector<double> list;   ///< explicit values, or empty for a range
+  double from = 0, step = 0;  ///< range
+  std::uint64_t n = 0;        ///< number of values
+  std::uint64_t size() const { return n; }
+  double at(std::uint64_t i) const { return list.empty() ? from + step * static_cast<double>(i) : list[i]; }
+  double min() const;
+  double max() const;
+};
+
+/// Largest number of cases a run accepts (refused up front with the count).
+constexpr std::uint64_t kMaxCases = 1000000000ULL;
+
+struct CaseFile {
+  std::string path;
+  ProfileSource wheel, rail;
+  Inclination inclination = Inclination::AsIs;
+  TrackSetup track;
+  GeometryOptions geometry;
+  Material material;
+  Model model = Model::Elastic;
+  SolverOptions solver;
+  /// Either a cartesian sweep (t_Y outer, Q inner: case i has tY[i / nQ], Q[i % nQ]) ...
+  SweepAxis sweep_tY_mm, sweep_Q_kN;  ///< as given, in mm and kN
+  /// ... or an explicit list.
+  std::vector<CasePoint> cases;
+  bool has_cases = false;  ///< a sweep or a case list was given
+
+  std::uint64_t case_count() const;
+  CasePoint case_at(std::uint64_t i) const;
+  /// The inputs as resolved (defaults filled in, units at the edges), for results.json.
+  nlohmann::json resolved_json() const;
+};
+
+/// Parse and validate. `need_cases`: `run` needs a sweep; `geometry` does not.
+CaseFile load_case_file(const std::string& path, bool need_cases);
+/// The same from parsed JSON; `path` names the file in messages and anchors relative paths.
+CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool need_cases);
+/// Read a JSON file; a syntax error names file:line:column. Throws InputError.
+nlohmann::json read_json_file(const std::string& path);
+
+/// Read or generate a profile of the given kind; rails get the case's inclination applied here,
+/// once. Throws InputError.
+Profile load_profile(const ProfileSource& src, ProfileKind kind, Inclination incl = Inclination::AsIs);
+
+}  // namespace mh

@@ -1,0 +1,159 @@
+#include "jobs/batch.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <ostream>
+
+#include "core/errors.hpp"
+#include "core/numfmt.hpp"
+#include "jobs/run.hpp"
+#include "output/case_tables.hpp"
+#include "output/cells.hpp"
+#include "output/json_stream.hpp"
+#include "output/output_file.hpp"
+#include "output/pair_tables.hpp"
+
+namespace mh {
+
+using cells::csv_text;
+
+int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::ostream& err) {
+  (void)out;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (opt.out_dir == "-") throw InputError("-o", "-", "a batch writes several tables: give an output directory");
+  if (opt.pressure_grid != 0 && (opt.pressure_grid < 2 || opt.pressure_grid > 1000))
+    throw InputError("--pressure-grid", std::to_string(opt.pressure_grid), "must be between 2 and 1000 points per axis");
+  const std::uint64_t n_pairs = m.pairs.size();
+  const std::uint64_t first = n_pairs * (opt.shard_index - 1) / opt.shard_count;
+  const std::uint64_t end = n_pairs * opt.shard_index / opt.shard_count;
+  const CaseFile shared = pair_case(m, 0);  // validated already: the sweep and the model
+  const bool plastic = shared.model == Model::Plastic;
+  const int np = opt.pressure_grid;
+  ensure_directory(opt.out_dir);
+  std::unique_ptr<OutputFile> fc, fe, fp, fpp, fj;
+  std::unique_ptr<JsonObjectStream> jw;
+  if (opt.csv) {
+    fc = std::make_unique<OutputFile>(opt.out_dir + "/cases.csv");
+    fe = std::make_unique<OutputFile>(opt.out_dir + "/ellipses.csv");
+    fpp = std::make_unique<OutputFile>(opt.out_dir + "/pairs.csv");
+    fc->stream() << "pair," << cases_csv_header();
+    fe->stream() << "pair," << ellipses_csv_header(plastic);
+    fpp->stream() << "pair,name,wheel,rail,status,n_ellipses,wheel_sha256,rail_sha256,message\n";
+  }
+  if (np) {
+    fp = std::make_unique<OutputFile>(opt.out_dir + "/pressure.csv");
+    fp->stream() << "pair," << pressure_csv_header(plastic);
+  }
+  if (opt.json) {
+    fj = std::make_unique<OutputFile>(opt.out_dir + "/results.json");
+    jw = std::make_unique<JsonObjectStream>(fj->stream());
+    jw->member("schema", kBatchSchema);
+    jw->member("program", program_json());
+    jw->member("manifest", m.path);
+    jw->member("pair_count", n_pairs);
+    jw->begin_array("pairs");
+  }
+  SweepCounts counts;
+  auto& by_status = counts.by_status;
+  std::uint64_t invalid = 0, cases_total = 0;
+  RunOptions quiet_opt = opt;
+  quiet_opt.progress = false;
+  for (std::uint64_t k = first; k < end; ++k) {
+    const ManifestPair& P = m.pairs[k];
+    const std::string prefix = std::to_string(k) + ",";
+    std::string status = "ok", message;
+    std::unique_ptr<PairGeometry> pg;
+    CaseFile cf;
+    try {
+      cf = pair_case(m, k);
+      pg = std::make_unique<PairGeometry>(build_pair_geometry(cf));
+    } catch (const InputError& e) {
+      status = kInvalidPair;
+      message = e.what();
+    }
+    const std::uint64_t n = shared.case_count();
+    cases_total += n;
+    if (fpp) {
+      std::string row = prefix;
+      csv_text(row, P.name);
+      row += ',';
+      csv_text(row, pg ? pg->wheel.source : P.wheel.dump());
+      row += ',';
+      csv_text(row, pg ? pg->rail.source : P.rail.dump());
+      row += ',' + status + ',' + (pg ? std::to_string(pg->geo.n_ellipses()) : std::string()) + ',';
+      row += (pg ? pg->wheel.checksum : std::string()) + ',' + (pg ? pg->rail.checksum : std::string()) + ',';
+      csv_text(row, message);
+      fpp->stream() << row << '\n';
+    }
+    // The pair's record in results.json: an object of its own, with its cases streamed.
+    std::unique_ptr<JsonObjectStream> pw;
+    if (jw) {
+      jw->element_open();
+      pw = std::make_unique<JsonObjectStream>(fj->stream(), 6);
+      pw->member("pair", k);
+      pw->member("name", P.name);
+      pw->member("status", status);
+      pw->member("message", message);
+      if (pg) {
+        pw->member("inputs", inputs_json(cf, *pg));
+        pw->member("potential_ellipses", ellipses_json(pg->geo));
+      }
+      pw->begin_array("cases");
+    }
+    if (pg) {
+      if (!opt.quiet) warn_profiles(*pg, err);
+      Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fp ? &fp->stream() : nullptr,
+                  pw.get(), prefix};
+      solve_cases(cf, pg->geo, 0, n, quiet_opt, sinks, &counts, err);
+    } else {
+      ++invalid;
+      by_status[kInvalidPair] += n;
+      for (std::uint64_t i = 0; i < n; ++i) {
+        CaseResult r;
+        r.message = message;
+        r.dz = r.residual = r.Fz = r.Fy = NAN;
+        Formatted f;
+        format_case(i, shared.case_at(i), r, plastic, fc != nullptr, pw != nullptr, f, kInvalidPair);
+        if (fc) put_prefixed(fc->stream(), prefix, f.cases);
+        if (pw) pw->element(f.json);
+      }
+    }
+    if (pw) {
+      pw->end_array();
+      pw->end();
+    }
+    if (opt.progress && !opt.quiet) err << "\rmhcontact run: pair " << (k + 1 - first) << "/" << (end - first) << std::flush;
+  }
+  const std::uint64_t failed = counts.failed;  // cases of valid pairs that are not ok
+  const nlohmann::json summary = {{"pairs", end - first}, {"invalid_pairs", invalid}, {"cases", cases_total},
+                                  {"failed", failed}, {"by_status", by_status}};
+  if (jw) {
+    jw->end_array();
+    jw->member("summary", summary);
+    jw->end();
+  }
+  if (fc) { fc->commit(); fe->commit(); fpp->commit(); }
+  if (fp) fp->commit();
+  if (fj) fj->commit();
+  if (opt.shard_count > 1) {
+    nlohmann::json sh = {{"schema", "mhcontact.shard/1"}, {"index", opt.shard_index}, {"count", opt.shard_count},
+                         {"unit", "pair"}, {"first", first}, {"end", end}, {"total", n_pairs}, {"summary", summary},
+                         {"csv", opt.csv}, {"json", opt.json}, {"pressure", np > 0},
+                         {"inputs", {{"manifest", m.path}, {"common", m.common}, {"pairs", n_pairs}}}};
+    OutputFile f(opt.out_dir + "/shard.json");
+    f.stream() << sh.dump(2) << "\n";
+    f.commit();
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!opt.quiet) {
+    if (opt.progress) err << "\n";
+    err << "mhcontact run: " << (end - first) << " pairs (" << invalid << " invalid), " << cases_total << " cases";
+    for (const auto& [s, v] : by_status) err << ", " << s << " " << v;
+    err << "; " << format_number(std::round(secs * 1e3) / 1e3) << " s; outputs in " << opt.out_dir << "\n";
+  }
+  return (failed || invalid) ? kExitCasesFailed : kExitOk;
+}
+
+
+}  // namespace mh

@@ -1,0 +1,160 @@
+#include "jobs/run.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <ostream>
+
+#include "core/errors.hpp"
+#include "core/numfmt.hpp"
+#include "output/case_tables.hpp"
+#include "output/json_stream.hpp"
+#include "output/output_file.hpp"
+#include "output/pair_tables.hpp"
+#include "profile/standard_profiles.hpp"
+
+#ifndef MHCONTACT_GIT_COMMIT
+#define MHCONTACT_GIT_COMMIT "unknown"
+#endif
+
+namespace mh {
+
+nlohmann::json program_json() {
+  return {{"name", "mhcontact"}, {"version", MHCONTACT_VERSION}, {"commit", MHCONTACT_GIT_COMMIT}};
+}
+
+void warn_profiles(const PairGeometry& pg, std::ostream& err) {
+  for (const Profile* p : {&pg.wheel, &pg.rail})
+    for (const auto& w : p->warnings) err << "mhcontact: warning: " << p->source << ": " << w << "\n";
+}
+
+PairGeometry build_pair_geometry(const CaseFile& cf) {
+  PairGeometry pg;
+  pg.wheel = load_profile(cf.wheel, ProfileKind::Wheel);
+  pg.rail = load_profile(cf.rail, ProfileKind::Rail, cf.inclination);
+  pg.geo = build_geometry(pg.wheel, pg.rail, cf.track, cf.geometry);
+  return pg;
+}
+
+int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& out, std::ostream& err, bool quiet) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const PairGeometry pg = build_pair_geometry(cf);
+  const ContactGeometry& G = pg.geo;
+  if (!quiet) warn_profiles(pg, err);
+  ensure_directory(out_dir);
+  write_caf_csv(G, out_dir + "/caf.csv");
+  write_profiles_csv(pg, out_dir + "/profiles.csv");
+  {
+    nlohmann::json j;
+    j["schema"] = kGeometrySchema;
+    j["program"] = program_json();
+    j["inputs"] = inputs_json(cf, pg);
+    j["y_offset_mm"] = G.y_offset * 1e3;
+    j["rail_gauge_point_y_mm"] = G.rail_gauge_y * 1e3;
+    j["strips"] = G.strip_y.size();
+    j["grid_points"] = G.tY.size();
+    j["potential_ellipses"] = ellipses_json(G);
+    OutputFile f(out_dir + "/geometry.json");
+    f.stream() << j.dump(2) << "\n";
+    f.commit();
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!quiet)
+    err << "mhcontact geometry: " << G.n_ellipses() << " potential ellipses over t_Y " << format_number(G.tY.front() * 1e3)
+        << " .. " << format_number(G.tY.back() * 1e3) << " mm (" << G.tY.size() << " grid points, "
+        << G.strip_y.size() << " strips) in " << format_number(std::round(secs * 1e3) / 1e3) << " s; wrote "
+        << out_dir << "/caf.csv, geometry.json, profiles.csv\n";
+  (void)out;
+  return kExitOk;
+}
+
+int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::ostream& err) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const PairGeometry pg = build_pair_geometry(cf);
+  const ContactGeometry& G = pg.geo;
+  if (!opt.quiet) warn_profiles(pg, err);
+  const bool plastic = cf.model == Model::Plastic;
+  const bool to_stdout = opt.out_dir == "-";
+  const bool want_csv = opt.csv && !to_stdout;
+  const bool want_json = opt.json || to_stdout;
+
+  std::unique_ptr<OutputFile> fc, fe, fj, fp;
+  const int np = opt.pressure_grid;
+  if (np != 0 && (np < 2 || np > 1000))
+    throw InputError("--pressure-grid", std::to_string(np), "must be between 2 and 1000 points per axis");
+  if (np && to_stdout)
+    throw InputError("--pressure-grid", std::to_string(np), "needs an output directory (not -o -)");
+  if (!to_stdout) {
+    ensure_directory(opt.out_dir);
+    if (np) {
+      fp = std::make_unique<OutputFile>(opt.out_dir + "/pressure.csv");
+      fp->stream() << pressure_csv_header(plastic);
+    }
+    if (want_csv) {
+      fc = std::make_unique<OutputFile>(opt.out_dir + "/cases.csv");
+      fe = std::make_unique<OutputFile>(opt.out_dir + "/ellipses.csv");
+      fc->stream() << cases_csv_header();
+      fe->stream() << ellipses_csv_header(plastic);
+    }
+    if (want_json) fj = std::make_unique<OutputFile>(opt.out_dir + "/results.json");
+  }
+  std::ostream* js = to_stdout ? &out : (fj ? &fj->stream() : nullptr);
+  std::unique_ptr<JsonObjectStream> jw;
+  if (js) {
+    jw = std::make_unique<JsonObjectStream>(*js);
+    jw->member("schema", kResultsSchema);
+    jw->member("program", program_json());
+    jw->member("inputs", inputs_json(cf, pg));
+    jw->member("potential_ellipses", ellipses_json(G));
+    jw->begin_array("cases");
+  }
+
+  const std::uint64_t n_all = cf.case_count();
+  if (opt.shard_count < 1 || opt.shard_index < 1 || opt.shard_index > opt.shard_count)
+    throw InputError("--shard", std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count), "must be K/N with 1 <= K <= N");
+  const std::uint64_t first = n_all * (opt.shard_index - 1) / opt.shard_count;
+  const std::uint64_t end = n_all * opt.shard_index / opt.shard_count;
+  const std::uint64_t n = end - first;
+  SweepCounts counts;
+  Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fp ? &fp->stream() : nullptr, jw.get(), ""};
+  solve_cases(cf, G, first, end, opt, sinks, &counts, err);
+  const auto& by_status = counts.by_status;
+  const std::uint64_t failed = counts.failed;
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (jw) {
+    jw->end_array();
+    jw->member("summary", nlohmann::json{{"cases", n}, {"failed", failed}, {"by_status", by_status}});
+    jw->end();
+  }
+  if (fc) {
+    fc->commit();
+    fe->commit();
+    write_profiles_csv(pg, opt.out_dir + "/profiles.csv");
+  }
+  if (opt.shard_count > 1 && !to_stdout) {
+    nlohmann::json sh = {{"schema", "mhcontact.shard/1"}, {"index", opt.shard_index}, {"count", opt.shard_count},
+                         {"unit", "case"}, {"first", first}, {"end", end}, {"total", n_all},
+                         {"summary", {{"cases", n_all}, {"failed", failed}, {"by_status", by_status}}},
+                         {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0},
+                         {"inputs", inputs_json(cf, pg)}};
+    OutputFile f(opt.out_dir + "/shard.json");
+    f.stream() << sh.dump(2) << "\n";
+    f.commit();
+  }
+  if (fj) fj->commit();
+  if (fp) fp->commit();
+  if (to_stdout) out.flush();
+  if (!opt.quiet) {
+    if (opt.progress) err << "\n";
+    err << "mhcontact run: " << n << " cases";
+    if (opt.shard_count > 1) err << " (shard " << opt.shard_index << "/" << opt.shard_count << ": cases " << first << " .. " << end - 1 << ")";
+    for (const auto& [k, v] : by_status) err << ", " << k << " " << v;
+    err << "; " << G.n_ellipses() << " potential ellipses; " << format_number(std::round(secs * 1e3) / 1e3) << " s";
+    if (!to_stdout) err << "; outputs in " << opt.out_dir;
+    err << "\n";
+  }
+  return failed ? kExitCasesFailed : kExitOk;
+}
+
+
+}  // namespace mh

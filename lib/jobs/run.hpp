@@ -1,0 +1,33 @@
+#pragma once
+// The jobs behind `mhcontact geometry` and `mhcontact run CASE.json`: build the geometry of the
+// case's profile pair once, solve every case (jobs/sweep.hpp), stream the tables to their files
+// (never held in memory, never half written: OutputFile), byte-identical whatever the thread count.
+#include <iosfwd>
+#include <string>
+
+#include "geometry/contact_geometry.hpp"
+#include "input/case_file.hpp"
+#include "jobs/sweep.hpp"
+
+namespace mh {
+
+/// Read the case's profiles (rail with its inclination) and build their contact geometry.
+PairGeometry build_pair_geometry(const CaseFile& cf);
+
+/// Print each profile's reading warnings on `err`.
+void warn_profiles(const PairGeometry& pg, std::ostream& err);
+
+/// `mhcontact geometry`: writes DIR/caf.csv, DIR/geometry.json and DIR/profiles.csv. Returns the exit code.
+int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& out, std::ostream& err, bool quiet);
+
+/// `mhcontact run`: returns 0 when every case is ok, 1 when some are not (kExitCasesFailed).
+int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::ostream& err);
+
+/// The schema names written into results.json and geometry.json.
+constexpr const char* kResultsSchema = "mhcontact.results/1";
+constexpr const char* kGeometrySchema = "mhcontact.geometry/1";
+constexpr const char* kBatchSchema = "mhcontact.batch/1";
+/// {"name": "mhcontact", "version": ..., "commit": ...}
+nlohmann::json program_json();
+
+}  // namespace mh

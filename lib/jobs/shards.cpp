@@ -1,0 +1,177 @@
+#include "jobs/shards.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "core/errors.hpp"
+#include "output/json_stream.hpp"
+#include "output/output_file.hpp"
+
+namespace mh {
+
+void parse_shard(const std::string& text, unsigned* index, unsigned* count) {
+  const auto slash = text.find('/');
+  auto bad = [&]() { return InputError("--shard", text, "must be K/N with 1 <= K <= N <= 100000, e.g. 3/8"); };
+  if (slash == std::string::npos) throw bad();
+  try {
+    std::size_t p1 = 0, p2 = 0;
+    const long k = std::stol(text.substr(0, slash), &p1), n = std::stol(text.substr(slash + 1), &p2);
+    if (p1 != slash || p2 != text.size() - slash - 1 || k < 1 || n < 1 || k > n || n > 100000) throw bad();
+    *index = static_cast<unsigned>(k);
+    *count = static_cast<unsigned>(n);
+  } catch (const std::logic_error&) {
+    throw bad();
+  }
+}
+
+namespace {
+
+std::string read_all(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "cannot read (is this the output directory of a `run --shard`?)");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Copy a CSV file to `out`, skipping its header unless `with_header`; the header must equal `header`.
+void append_csv(const std::string& path, std::ostream& out, std::string* header, bool with_header) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "missing in a shard directory");
+  std::string line;
+  std::getline(in, line);
+  if (header->empty()) *header = line;
+  else if (line != *header) throw InputError(path, "", "its header differs from the first shard's");
+  if (with_header) out << line << '\n';
+  char buf[1 << 16];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) out.write(buf, in.gcount());
+}
+
+}  // namespace
+
+int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, std::ostream& err, bool quiet) {
+  if (dirs.empty()) throw InputError("merge", "", "give the shard directories");
+  struct Shard { std::string dir; nlohmann::json meta; };
+  std::vector<Shard> shards;
+  for (const auto& d : dirs) {
+    const std::string p = d + "/shard.json";
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(read_all(p));
+    } catch (const nlohmann::json::exception& e) {
+      throw InputError(p, "", std::string("not a shard description: ") + e.what());
+    }
+    if (j.value("schema", "") != "mhcontact.shard/1") throw InputError(p, "", "not a shard description (schema mhcontact.shard/1)");
+    shards.push_back({d, j});
+  }
+  std::sort(shards.begin(), shards.end(), [](const Shard& a, const Shard& b) { return a.meta["index"] < b.meta["index"]; });
+  const auto N = shards[0].meta["count"].get<unsigned>();
+  if (shards.size() != N)
+    throw InputError("merge", std::to_string(shards.size()) + " directories", "the run was split into " + std::to_string(N) + " shards: give all of them, once each");
+  std::uint64_t expect = 0;
+  for (unsigned k = 0; k < N; ++k) {
+    const nlohmann::json& m = shards[k].meta;
+    const std::string where = shards[k].dir + "/shard.json";
+    if (m["index"].get<unsigned>() != k + 1) throw InputError(where, m["index"].dump(), "shard " + std::to_string(k + 1) + " is missing or given twice");
+    if (m["count"] != shards[0].meta["count"] || m["total"] != shards[0].meta["total"] || m["unit"] != shards[0].meta["unit"])
+      throw InputError(where, "", "shards of different runs (case or shard counts differ)");
+    if (m["inputs"] != shards[0].meta["inputs"]) throw InputError(where, "", "shards of different runs (inputs differ: case file, profiles or options)");
+    if (m["csv"] != shards[0].meta["csv"] || m["json"] != shards[0].meta["json"] || m["pressure"] != shards[0].meta["pressure"])
+      throw InputError(where, "", "shards written with different output options");
+    if (m["first"].get<std::uint64_t>() != expect) throw InputError(where, m["first"].dump(), "the shards' ranges do not tile the case (or pair) list");
+    expect = m["end"].get<std::uint64_t>();
+  }
+  if (expect != shards[0].meta["total"].get<std::uint64_t>()) throw InputError("merge", "", "the shards do not cover every case (or pair)");
+  const bool batch = shards[0].meta["unit"] == "pair";
+  ensure_directory(out_dir);
+  // Summary of all shards: counts added up, by_status merged; `cases` and `pairs` are totals
+  // of the whole run for unsharded-equal output (run: cases = total).
+  nlohmann::json summary = nlohmann::json::object();
+  std::map<std::string, std::uint64_t> by_status;
+  for (const auto& sh : shards) {
+    const nlohmann::json& su = sh.meta["summary"];
+    for (auto it = su.begin(); it != su.end(); ++it) {
+      if (it.key() == "by_status") {
+        for (auto b = it.value().begin(); b != it.value().end(); ++b) by_status[b.key()] += b.value().get<std::uint64_t>();
+      } else if (!batch && it.key() == "cases") {
+        summary["cases"] = it.value();
+      } else {
+        summary[it.key()] = summary.value(it.key(), std::uint64_t{0}) + it.value().get<std::uint64_t>();
+      }
+    }
+  }
+  summary["by_status"] = by_status;
+  const std::uint64_t failed = summary.value("failed", std::uint64_t{0}) + summary.value("invalid_pairs", std::uint64_t{0});
+  const bool csv = shards[0].meta["csv"], json = shards[0].meta["json"], pressure = shards[0].meta["pressure"];
+  std::vector<std::string> tables;
+  if (csv) tables = {"cases.csv", "ellipses.csv"};
+  if (csv && batch) tables.push_back("pairs.csv");
+  if (pressure) tables.push_back("pressure.csv");
+  for (const auto& t : tables) {
+    OutputFile f(out_dir + "/" + t);
+    std::string header;
+    for (unsigned k = 0; k < N; ++k) append_csv(shards[k].dir + "/" + t, f.stream(), &header, k == 0);
+    f.commit();
+  }
+  if (csv && !batch) {
+    OutputFile f(out_dir + "/profiles.csv");
+    f.stream() << read_all(shards[0].dir + "/profiles.csv");
+    f.commit();
+  }
+  if (json) {
+    // Each shard's results.json holds the same head, its own cases (or pairs) and its summary:
+    // parse each, keep the first head, stream the records of all in order, write the summary of
+    // the whole run. Memory: one shard's results.json at a time.
+    const std::string key = batch ? "pairs" : "cases";
+    OutputFile f(out_dir + "/results.json");
+    std::unique_ptr<JsonObjectStream> w;
+    for (unsigned k = 0; k < N; ++k) {
+      const std::string path = shards[k].dir + "/results.json";
+      nlohmann::ordered_json t;  // keeps the members in the order they were written
+      try {
+        t = nlohmann::ordered_json::parse(read_all(path));
+      } catch (const nlohmann::json::exception& e) {
+        throw InputError(path, "", std::string("not a results.json of mhcontact run: ") + e.what());
+      }
+      if (!t.is_object() || !t.contains(key) || !t[key].is_array()) throw InputError(path, "", "not a results.json of mhcontact run");
+      if (k == 0) {
+        w = std::make_unique<JsonObjectStream>(f.stream());
+        for (auto it = t.begin(); it != t.end(); ++it)
+          if (it.key() != key && it.key() != "summary") w->member(it.key(), it.value());
+        w->begin_array(key);
+      }
+      for (const auto& rec : t[key]) {
+        if (!batch) { w->element_json(rec); continue; }
+        // A pair's record is an object with its own streamed case array (as batch_job writes it).
+        w->element_open();
+        JsonObjectStream pw(f.stream(), 6);
+        for (auto it = rec.begin(); it != rec.end(); ++it)
+          if (it.key() != "cases") pw.member(it.key(), it.value());
+        pw.begin_array("cases");
+        for (const auto& c : rec.value("cases", nlohmann::ordered_json::array())) pw.element_json(c);
+        pw.end_array();
+        pw.end();
+      }
+    }
+    w->end_array();
+    w->member("summary", summary);
+    w->end();
+    f.commit();
+  }
+  if (!quiet) {
+    err << "mhcontact merge: " << N << " shards, " << shards[0].meta["total"].get<std::uint64_t>() << (batch ? " pairs" : " cases");
+    for (const auto& [k, v] : by_status) err << ", " << k << " " << v;
+    err << "; outputs in " << out_dir << "\n";
+  }
+  return failed ? kExitCasesFailed : kExitOk;
+}
+
+}  // namespace mh
+

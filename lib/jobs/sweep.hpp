@@ -1,0 +1,57 @@
+#pragma once
+// The sweep runner: solves a range of the cases of a case file on one profile pair's geometry in
+// parallel chunks, formats each case's rows in its worker, and writes them to the sinks in case
+// order, so the output is byte-identical whatever the thread count.
+#include <cstdint>
+#include <map>
+#include <ostream>
+#include <string>
+
+#include "geometry/contact_geometry.hpp"
+#include "input/case_file.hpp"
+#include "output/json_stream.hpp"
+
+namespace mh {
+
+/// Options of `run` shared by single runs and batches.
+struct RunOptions {
+  std::string out_dir;          ///< output directory; "-" writes results.json to `out` only
+  bool csv = true;              ///< write cases.csv and ellipses.csv (default yes)
+  bool json = true;             ///< write results.json (default yes)
+  unsigned threads = 0;         ///< worker threads; 0 = all cores (default)
+  bool quiet = false;           ///< no summary or progress on `err`
+  bool progress = false;        ///< progress display on `err` (the CLI sets it when err is a terminal)
+  std::size_t chunk = 8192;     ///< cases solved per parallel batch (default 8192)
+  /// N > 0: also write DIR/pressure.csv, the pressure of every loaded ellipse on an N × N grid
+  /// over its patch (x along the rolling direction, y lateral in the contact plane). Default 0.
+  int pressure_grid = 0;
+  /// Shards: run only the K-th (1-based) of N contiguous, deterministic slices of the case list:
+  /// cases [floor((K−1)·n/N), floor(K·n/N)), keeping their global case numbers, and write
+  /// DIR/shard.json describing the slice. `mhcontact merge` joins the shard directories into
+  /// exactly the tables one run would have written. Default 1/1 (no sharding, no shard.json).
+  unsigned shard_index = 1, shard_count = 1;
+};
+
+/// Where the formatted rows go; `prefix` is put in front of every CSV line (the batch's "pair,").
+struct Sinks {
+  std::ostream* cases = nullptr;
+  std::ostream* ellipses = nullptr;
+  std::ostream* pressure = nullptr;
+  JsonObjectStream* json = nullptr;  ///< with its case array open
+  std::string prefix;
+};
+
+/// Counts of a sweep by status.
+struct SweepCounts {
+  std::map<std::string, std::uint64_t> by_status;
+  std::uint64_t failed = 0;  ///< cases not `ok`
+};
+
+/// Solve cases [first, end) of `cf` on `G` in parallel chunks and write them in order.
+void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t first, std::uint64_t end,
+                 const RunOptions& opt, const Sinks& out, SweepCounts* counts, std::ostream& err);
+
+/// Write `lines` (one or more '\n'-terminated lines) to `o`, each preceded by `prefix`.
+void put_prefixed(std::ostream& o, const std::string& prefix, const std::string& lines);
+
+}  // namespace mh

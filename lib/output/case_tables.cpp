@@ -1,0 +1,178 @@
+// The per-case tables of `run` (cases.csv, ellipses.csv, pressure.csv) and the case records of
+// results.json: column names and the formatting of one case's rows. The schema is documented in
+// the README ("Output tables").
+#include "output/case_tables.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
+#include <nlohmann/json.hpp>
+
+#include "core/units.hpp"
+#include "output/cells.hpp"
+
+namespace mh {
+
+using namespace cells;
+
+namespace {
+
+// Per-ellipse values in output units, in column order (shared by CSV and JSON).
+struct Col { const char* name; double (*get)(const LoadedEllipse&); };
+const Col kEllipseCols[] = {
+    {"y_rail_mm", [](const LoadedEllipse& e) { return e.g.y_r * 1e3; }},
+    {"y_wheel_mm", [](const LoadedEllipse& e) { return e.g.y_w * 1e3; }},
+    {"gamma_deg", [](const LoadedEllipse& e) { return e.g.gamma / units::deg; }},
+    {"R_rxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_rxx); }},
+    {"R_wxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_wxx); }},
+    {"R_wyy_mm", [](const LoadedEllipse& e) { return e.g.R_wyy() * 1e3; }},
+    {"A_1pm", [](const LoadedEllipse& e) { return e.A; }},
+    {"B_1pm", [](const LoadedEllipse& e) { return e.B; }},
+    {"lambda", [](const LoadedEllipse& e) { return e.c.lambda; }},
+    {"m", [](const LoadedEllipse& e) { return e.c.m; }},
+    {"n", [](const LoadedEllipse& e) { return e.c.n; }},
+    {"gap_mm", [](const LoadedEllipse& e) { return e.g.gap * 1e3; }},
+    {"h0_mm", [](const LoadedEllipse& e) { return e.s.h0 * 1e3; }},
+    {"N_kN", [](const LoadedEllipse& e) { return e.s.N / units::kN; }},
+    {"a_mm", [](const LoadedEllipse& e) { return e.s.a * 1e3; }},
+    {"b_mm", [](const LoadedEllipse& e) { return e.s.b * 1e3; }},
+    {"p0_MPa", [](const LoadedEllipse& e) { return e.s.p0 / units::MPa; }},
+    {"pmean_MPa", [](const LoadedEllipse& e) { return e.s.p_mean / units::MPa; }},
+    {"approach_mm", [](const LoadedEllipse& e) { return e.s.approach * 1e3; }},
+};
+const Col kPlasticCols[] = {
+    {"h_y_mm", nullptr},  // filled from the law, see below
+    {"p_max_MPa", [](const LoadedEllipse& e) { return e.s.p_max / units::MPa; }},
+    {"plateau_a_mm", [](const LoadedEllipse& e) { return e.s.plateau_a * 1e3; }},
+    {"plateau_b_mm", [](const LoadedEllipse& e) { return e.s.plateau_b * 1e3; }},
+    {"a_el_mm", [](const LoadedEllipse& e) { return e.s.a_el * 1e3; }},
+    {"b_el_mm", [](const LoadedEllipse& e) { return e.s.b_el * 1e3; }},
+    {"area_ratio", [](const LoadedEllipse& e) { return e.s.area_ratio; }},
+};
+
+
+}  // namespace
+
+
+// Pressure of each loaded ellipse on an N × N grid over its patch (method.md §5): the capped
+// Hertz pressure min(p0 √(1 − x²/a² − y²/b²), p_lim) and, in plastic mode, the elastic Hertz
+// pressure at the same load on the elastic patch (a_el, b_el).
+void format_pressure(std::uint64_t idx, const CaseResult& r, const Material& mat, bool plastic, int N,
+                     std::string& s) {
+  s.clear();
+  for (const LoadedEllipse& L : r.loaded) {
+    const double a = L.s.a, b = L.s.b;
+    const double p0_el = 1.5 * L.s.N / (units::pi * L.s.a_el * L.s.b_el);
+    for (int i = 0; i < N; ++i) {
+      const double x = -a + 2 * a * i / (N - 1);
+      for (int j = 0; j < N; ++j) {
+        const double y = -b + 2 * b * j / (N - 1);
+        const double q = 1 - (x * x) / (a * a) - (y * y) / (b * b);
+        double p = q > 0 ? L.s.p0 * std::sqrt(q) : 0.0;
+        if (plastic) p = std::min(p, mat.p_lim);
+        append_number(s, static_cast<long long>(idx));
+        s += ','; append_number(s, static_cast<long long>(L.ellipse));
+        s += ','; num(s, x * 1e3);
+        s += ','; num(s, y * 1e3);
+        s += ','; num(s, p / units::MPa);
+        if (plastic) {
+          const double qe = 1 - (x * x) / (L.s.a_el * L.s.a_el) - (y * y) / (L.s.b_el * L.s.b_el);
+          s += ','; num(s, (qe > 0 ? p0_el * std::sqrt(qe) : 0.0) / units::MPa);
+        }
+        s += '\n';
+      }
+    }
+  }
+}
+
+void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
+                 bool plastic, bool want_csv, bool want_json, Formatted& f, const char* status_text) {
+  const char* status = status_text ? status_text : to_string(r.status);
+  const std::string warn = join(r.warnings, ";");
+  auto h_y_mm = [](const LoadedEllipse& e) { return e.h_y * 1e3; };  // from the ellipse law (method.md §5)
+  if (want_csv) {
+    std::string& s = f.cases;
+    s.clear();
+    append_number(s, static_cast<long long>(idx));
+    s += ','; num(s, cp.tY_mm);
+    s += ','; num(s, cp.Q_kN);
+    s += ','; s += status;
+    s += ','; num(s, r.dz * 1e3);
+    s += ','; append_number(s, static_cast<long long>(r.iterations));
+    s += ','; num(s, r.residual);
+    s += ','; append_number(s, static_cast<long long>(r.loaded.size()));
+    s += ','; num(s, r.Fz / units::kN);
+    s += ','; num(s, r.Fy / units::kN);
+    s += ','; csv_text(s, warn);
+    s += ','; csv_text(s, r.message);
+    s += '\n';
+    std::string& e = f.ellipses;
+    e.clear();
+    for (const LoadedEllipse& L : r.loaded) {
+      append_number(e, static_cast<long long>(idx));
+      e += ','; num(e, cp.tY_mm);
+      e += ','; num(e, cp.Q_kN);
+      e += ','; append_number(e, static_cast<long long>(L.ellipse));
+      for (const Col& c : kEllipseCols) { e += ','; num(e, c.get(L)); }
+      if (plastic) {
+        e += ','; e += L.s.plastic ? "1" : "0";
+        e += ','; num(e, h_y_mm(L));
+        for (std::size_t k = 1; k < std::size(kPlasticCols); ++k) { e += ','; num(e, kPlasticCols[k].get(L)); }
+      }
+      e += '\n';
+    }
+  }
+  if (want_json) {
+    // The record, built as JSON (ordered keys, as in the CSV) and dumped compact on one line.
+    auto jv = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr); };
+    nlohmann::ordered_json j;
+    j["case"] = idx;
+    j["tY_mm"] = jv(cp.tY_mm);
+    j["Q_kN"] = jv(cp.Q_kN);
+    j["status"] = status;
+    j["dz_mm"] = jv(r.dz / units::mm);
+    j["iterations"] = r.iterations;
+    j["residual"] = jv(r.residual);
+    j["n_contacts"] = r.loaded.size();
+    j["Fz_kN"] = jv(r.Fz / units::kN);
+    j["Fy_kN"] = jv(r.Fy / units::kN);
+    j["warnings"] = r.warnings;
+    j["message"] = r.message;
+    nlohmann::ordered_json el = nlohmann::ordered_json::array();
+    for (const LoadedEllipse& L : r.loaded) {
+      nlohmann::ordered_json e;
+      e["ellipse"] = L.ellipse;
+      for (const Col& c : kEllipseCols) e[c.name] = jv(c.get(L));
+      if (plastic) {
+        e["plastic"] = L.s.plastic;
+        e["h_y_mm"] = jv(h_y_mm(L));
+        for (std::size_t k = 1; k < std::size(kPlasticCols); ++k) e[kPlasticCols[k].name] = jv(kPlasticCols[k].get(L));
+      }
+      el.push_back(std::move(e));
+    }
+    j["ellipses"] = std::move(el);
+    f.json = j.dump();
+  }
+}
+
+std::string cases_csv_header() {
+  return "case,tY_mm,Q_kN,status,dz_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,warnings,message\n";
+}
+
+std::string pressure_csv_header(bool plastic) {
+  return plastic ? "case,ellipse,x_mm,y_mm,p_MPa,p_elastic_MPa\n" : "case,ellipse,x_mm,y_mm,p_MPa\n";
+}
+
+std::string ellipses_csv_header(bool plastic) {
+  std::string s = "case,tY_mm,Q_kN,ellipse";
+  for (const Col& c : kEllipseCols) { s += ','; s += c.name; }
+  if (plastic) {
+    s += ",plastic";
+    for (const Col& c : kPlasticCols) { s += ','; s += c.name; }
+  }
+  return s + "\n";
+}
+
+
+}  // namespace mh

@@ -1,0 +1,35 @@
+#pragma once
+// The per-case tables of `run`: cases.csv (one row per case), ellipses.csv (one row per loaded
+// ellipse), pressure.csv (pressure grids) and the case records of results.json. One function
+// formats one case into strings, so that cases can be formatted in parallel and written in order.
+#include <cstdint>
+#include <string>
+
+#include "contact/multi_hertz.hpp"
+#include "input/case_file.hpp"
+
+namespace mh {
+
+/// One case's rows, formatted.
+struct Formatted {
+  std::string cases, ellipses, json, pressure;
+};
+
+/// Format case `idx` (its sweep point `cp`, its result `r`) into f.cases/f.ellipses (CSV rows)
+/// and/or f.json (its record in results.json's "cases" array: one line of JSON). `status_text`
+/// overrides the solver's status (a batch's `invalid_pair`); default: to_string(r.status).
+void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
+                 bool plastic, bool want_csv, bool want_json, Formatted& f,
+                 const char* status_text = nullptr);
+
+/// The pressure of each loaded ellipse of `r` on an N × N grid over its patch (method.md §5),
+/// into `s` (pressure.csv rows).
+void format_pressure(std::uint64_t idx, const CaseResult& r, const Material& mat, bool plastic, int N,
+                     std::string& s);
+
+/// The column names of the tables (README "Output tables").
+std::string cases_csv_header();
+std::string ellipses_csv_header(bool plastic);
+std::string pressure_csv_header(bool plastic);
+
+}  // namespace mh

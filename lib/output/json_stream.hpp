@@ -1,0 +1,44 @@
+#pragma once
+// A JSON document written as it is produced: an object whose members are nlohmann values, and
+// whose last member is an array of records streamed one by one (the cases of a sweep of millions
+// need not be held in memory). Every value is written by nlohmann::json, never spliced as text.
+#include <ostream>
+#include <string>
+#include <type_traits>
+
+#include <nlohmann/json.hpp>
+
+namespace mh {
+
+class JsonObjectStream {
+ public:
+  /// Starts the object on `o`; `indent` is the indentation of its members (default 2 spaces: a
+  /// document; larger: an object nested as an element of another stream's array, see element_open()).
+  explicit JsonObjectStream(std::ostream& o, int indent = 2);
+  /// A member `"key": value`, the value pretty-printed at the member's level.
+  template <class T>
+  void member(const std::string& key, const T& value) {
+    if constexpr (std::is_same_v<T, nlohmann::ordered_json>) member_dumped(key, value.dump(2));
+    else member_dumped(key, nlohmann::json(value).dump(2));
+  }
+  /// A member whose value is an array of records written with element() / element_json().
+  void begin_array(const std::string& key);
+  /// One record of the open array, already formatted as a JSON value (e.g. by format_case()).
+  void element(const std::string& formatted_value);
+  void element_json(const nlohmann::json& value);
+  void element_json(const nlohmann::ordered_json& value);
+  /// Starts an element of the open array that another JsonObjectStream (indent + 4) writes.
+  void element_open();
+  void end_array();
+  /// Closes the object (a document: and a final newline).
+  void end();
+
+ private:
+  std::ostream& o_;
+  std::string pad_, close_pad_;
+  bool first_member_ = true, first_element_ = true, in_array_ = false;
+  void separator();
+  void member_dumped(const std::string& key, const std::string& pretty);
+};
+
+}  // namespace mh

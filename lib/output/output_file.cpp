@@ -1,0 +1,106 @@
+#include "output/output_file.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+#include <vector>
+
+#include "core/errors.hpp"
+
+namespace mh {
+namespace {
+
+// Registry of temporaries, readable from a signal handler: fixed-size array of C strings.
+constexpr int kMaxPending = 64;
+char g_pending[kMaxPending][4096];
+std::atomic<bool> g_used[kMaxPending];
+std::mutex g_mutex;
+
+int register_pending(const std::string& tmp) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  for (int i = 0; i < kMaxPending; ++i) {
+    if (!g_used[i].load()) {
+      std::snprintf(g_pending[i], sizeof g_pending[i], "%s", tmp.c_str());
+      g_used[i].store(true);
+      return i;
+    }
+  }
+  return -1;
+}
+
+void unregister_pending(int slot) {
+  if (slot < 0) return;
+  std::lock_guard<std::mutex> lock(g_mutex);
+  g_used[slot].store(false);
+}
+
+
+}  // namespace
+
+void remove_pending_output_temporaries() noexcept {
+  for (int i = 0; i < kMaxPending; ++i)
+    if (g_used[i].load()) ::unlink(g_pending[i]);
+}
+
+void ensure_directory(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw InputError(dir, "", "output directory cannot be created: " +
+                                  (ec ? ec.message() : std::string("not a directory")));
+}
+
+OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
+  std::string templ = path_ + ".tmp.XXXXXX";
+  std::vector<char> buf(templ.begin(), templ.end());
+  buf.push_back('\0');
+  int fd = ::mkstemp(buf.data());
+  if (fd < 0)
+    throw InputError(path_, "", std::string("output file cannot be written: ") + std::strerror(errno));
+  // mkstemp creates 0600; an output file gets the usual 0666 less the umask.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
+  ::close(fd);
+  tmp_.assign(buf.data());
+  slot_ = register_pending(tmp_);
+  out_.open(tmp_, std::ios::binary | std::ios::trunc);
+  if (!out_) {
+    ::unlink(tmp_.c_str());
+    unregister_pending(slot_);
+    throw InputError(path_, "", "output file cannot be written");
+  }
+}
+
+OutputFile::~OutputFile() {
+  if (!committed_) {
+    out_.close();
+    ::unlink(tmp_.c_str());
+  }
+  unregister_pending(slot_);
+}
+
+void OutputFile::commit() {
+  out_.flush();
+  if (!out_) throw InputError(path_, "", "writing the output file failed (disk full?)");
+  out_.close();
+  int fd = ::open(tmp_.c_str(), O_RDONLY);
+  if (fd >= 0) {
+    ::fsync(fd);
+    ::close(fd);
+  }
+  if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
+    throw InputError(path_, "", std::string("cannot rename the finished output into place: ") +
+                                    std::strerror(errno));
+  committed_ = true;
+}
+
+}  // namespace mh

@@ -1,0 +1,228 @@
+#include "profile/curve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace mh {
+namespace {
+
+struct LocalFit {
+  bool ok = false;
+  double z = 0, slope = 0, kappa = 0, rms = std::numeric_limits<double>::infinity();
+};
+
+// Fit points [i0, i1) around (yc, zc) in a frame rotated to the window's chord direction.
+LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, std::size_t i0,
+                    std::size_t i1, double yc, double zc) {
+  LocalFit f;
+  const std::size_t n = i1 - i0;
+  if (n < 3) return f;
+  // Direction of the window: least-squares line through the points (total least squares would
+  // also do; the fit below is exact whatever the rotation, this only conditions it).
+  double my = 0, mz = 0;
+  for (std::size_t i = i0; i < i1; ++i) { my += y[i]; mz += z[i]; }
+  my /= static_cast<double>(n); mz /= static_cast<double>(n);
+  double syy = 0, syz = 0, szz = 0;
+  for (std::size_t i = i0; i < i1; ++i) {
+    const double dy = y[i] - my, dz = z[i] - mz;
+    syy += dy * dy; syz += dy * dz; szz += dz * dz;
+  }
+  const double theta = 0.5 * std::atan2(2 * syz, syy - szz);  // principal direction
+  const double c = std::cos(theta), s = std::sin(theta);
+  // Normal equations for v = alpha q + beta u + delta, q = u² + v².
+  double M[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, r[3] = {0, 0, 0};
+  for (std::size_t i = i0; i < i1; ++i) {
+    const double dy = y[i] - yc, dz = z[i] - zc;
+    const double u = c * dy + s * dz, v = -s * dy + c * dz;
+    const double x[3] = {u * u + v * v, u, 1.0};
+    for (int a = 0; a < 3; ++a) {
+      r[a] += x[a] * v;
+      for (int b = 0; b < 3; ++b) M[a][b] += x[a] * x[b];
+    }
+  }
+  // Solve by Gaussian elimination with partial pivoting (3×3).
+  int p[3] = {0, 1, 2};
+  double A[3][4];
+  for (int a = 0; a < 3; ++a) {
+    for (int b = 0; b < 3; ++b) A[a][b] = M[a][b];
+    A[a][3] = r[a];
+  }
+  for (int col = 0; col < 3; ++col) {
+    int piv = col;
+    for (int row = col + 1; row < 3; ++row)
+      if (std::fabs(A[row][col]) > std::fabs(A[piv][col])) piv = row;
+    if (piv != col) for (int b = 0; b < 4; ++b) std::swap(A[col][b], A[piv][b]);
+    if (std::fabs(A[col][col]) < 1e-300) {
+      // Degenerate (all points on a line through the centre of the window with no spread in
+      // q): fall back to a straight line.
+      if (col == 0) { A[0][0] = 1; A[0][1] = A[0][2] = A[0][3] = 0; continue; }
+      return f;
+    }
+    for (int row = col + 1; row < 3; ++row) {
+      const double fct = A[row][col] / A[col][col];
+      for (int b = col; b < 4; ++b) A[row][b] -= fct * A[col][b];
+    }
+  }
+  (void)p;
+  double sol[3];
+  for (int a = 2; a >= 0; --a) {
+    double acc = A[a][3];
+    for (int b = a + 1; b < 3; ++b) acc -= A[a][b] * sol[b];
+    sol[a] = acc / A[a][a];
+  }
+  const double alpha = sol[0], beta = sol[1], delta = sol[2];
+  // Residual (in v, i.e. normal to the chord).
+  double ss = 0;
+  for (std::size_t i = i0; i < i1; ++i) {
+    const double dy = y[i] - yc, dz = z[i] - zc;
+    const double u = c * dy + s * dz, v = -s * dy + c * dz;
+    const double e = v - (alpha * (u * u + v * v) + beta * u + delta);
+    ss += e * e;
+  }
+  f.rms = std::sqrt(ss / static_cast<double>(n));
+  // Curve point at u = 0: alpha v² − v + delta = 0, the small root (stable form).
+  const double disc = 1.0 - 4.0 * alpha * delta;
+  if (disc <= 0) return f;
+  const double v0 = 2.0 * delta / (1.0 + std::sqrt(disc));
+  // Slope in the local frame, F(u,v) = alpha(u²+v²) + beta u − v + delta: dv/du = −F_u/F_v.
+  const double dvdu = beta / (1.0 - 2.0 * alpha * v0);
+  const double phi = theta + std::atan(dvdu);
+  // Circle curvature, signed: centre at (−beta/2alpha, 1/2alpha) in the local frame.
+  f.kappa = 2.0 * alpha / std::sqrt(beta * beta + 1.0 - 4.0 * alpha * delta);
+  // Back to the global frame; move the point from y(u=0) to yc along the tangent (second order
+  // in v0·sin(theta), which is far below the fit's accuracy).
+  const double yp = yc - s * v0, zp = zc + c * v0;
+  const double slope_p = std::tan(phi);
+  const double zpp = f.kappa * std::pow(1 + slope_p * slope_p, 1.5);  // z'' at the point
+  f.z = zp + slope_p * (yc - yp) + 0.5 * zpp * (yc - yp) * (yc - yp);
+  f.slope = slope_p + zpp * (yc - yp);
+  f.ok = std::isfinite(f.z) && std::isfinite(f.slope) && std::isfinite(f.kappa);
+  return f;
+}
+
+}  // namespace
+
+ProfileCurve::ProfileCurve(const Profile& p, const CurveOptions& opt) {
+  build(p, opt, opt.window_half_width);
+  if (opt.measured_window_half_width > opt.window_half_width && median_rms_ > opt.noise_threshold)
+    build(p, opt, opt.measured_window_half_width);
+}
+
+void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w) {
+  window_ = w;
+  std::vector<double> rms;
+  const std::size_t n = p.size();
+  const std::string where = p.source.empty() ? std::string("profile") : p.source;
+  if (n < static_cast<std::size_t>(std::max(opt.min_points, 3)))
+    throw InputError(where, std::to_string(n) + " points",
+                     "a profile needs at least " + std::to_string(opt.min_points) + " points");
+  for (std::size_t i = 1; i < n; ++i)
+    if (!(p.y[i] > p.y[i - 1]))
+      throw InputError(where, "y = " + std::to_string(p.y[i] * 1e3) + " mm",
+                       "profile points must have strictly increasing y");
+  h_ = opt.grid_step;
+  y0_ = p.y.front();
+  const std::size_t m = static_cast<std::size_t>(std::floor((p.y.back() - y0_) / h_ + 1e-9)) + 1;
+  z_.resize(m); dz_.resize(m); k_.resize(m); side_.resize(m);
+  const auto& Y = p.y;
+  const auto& Z = p.z;
+  // Windows are measured along the profile (chord length), not in y, so that steep flanks get as
+  // short a window as the tread.
+  std::vector<double> S(n, 0.0);
+  for (std::size_t i = 1; i < n; ++i) S[i] = S[i - 1] + std::hypot(Y[i] - Y[i - 1], Z[i] - Z[i - 1]);
+  auto lower = [&](double v) { return static_cast<std::size_t>(std::lower_bound(S.begin(), S.end(), v) - S.begin()); };
+  auto upper = [&](double v) { return static_cast<std::size_t>(std::upper_bound(S.begin(), S.end(), v) - S.begin()); };
+  auto upper_y = [&](double v) { return static_cast<std::size_t>(std::upper_bound(Y.begin(), Y.end(), v) - Y.begin()); };
+  // Widen [i0, i1) symmetrically (within the data) until it holds min_points.
+  auto widen = [&](std::size_t& i0, std::size_t& i1, int dir) {
+    const std::size_t need = static_cast<std::size_t>(opt.min_points);
+    while (i1 - i0 < need && (i0 > 0 || i1 < n)) {
+      if (dir <= 0 && i0 > 0) --i0;
+      if (i1 - i0 >= need) break;
+      if (dir >= 0 && i1 < n) ++i1;
+      if (dir < 0 && i0 == 0 && i1 < n) ++i1;
+      if (dir > 0 && i1 == n && i0 > 0) --i0;
+    }
+  };
+  for (std::size_t j = 0; j < m; ++j) {
+    const double yc = y0_ + h_ * static_cast<double>(j);
+    // Linear interpolation of the raw points as the local origin height.
+    std::size_t k = std::min(std::max<std::size_t>(upper_y(yc), 1), n - 1);
+    const double t = (yc - Y[k - 1]) / (Y[k] - Y[k - 1]);
+    const double zc = Z[k - 1] + t * (Z[k] - Z[k - 1]);
+    const double sc = S[k - 1] + t * (S[k] - S[k - 1]);
+
+    std::size_t c0 = lower(sc - w), c1 = upper(sc + w);
+    widen(c0, c1, 0);
+    LocalFit best = fit_window(Y, Z, c0, c1, yc, zc);
+    rms.push_back(best.rms);
+    int side = 0;
+    // One-sided windows reach one data point past yc, so that a window on the wrong side of a
+    // junction always holds a point of the other arc (and shows it in its residual).
+    const std::size_t ihi = std::min(upper(sc), n - 1);
+    const std::size_t ilo = ihi > 0 ? ihi - 1 : 0;
+    std::size_t l0 = lower(sc - 2 * w), l1 = ihi + 1;
+    std::size_t r0 = ilo, r1 = upper(sc + 2 * w);
+    widen(l0, l1, -1);
+    widen(r0, r1, +1);
+    const LocalFit left = fit_window(Y, Z, l0, l1, yc, zc);
+    const LocalFit right = fit_window(Y, Z, r0, r1, yc, zc);
+    const LocalFit& one = (left.rms <= right.rms) ? left : right;
+    if (!best.ok || (one.ok && best.rms > opt.residual_floor && best.rms > opt.one_sided_factor * one.rms)) {
+      best = one;
+      side = (&one == &left) ? -1 : +1;
+    }
+    if (!best.ok)
+      throw InputError(where, "y = " + std::to_string(yc * 1e3) + " mm",
+                       "no smooth local fit possible (degenerate points)");
+    z_[j] = best.z;
+    dz_[j] = best.slope;
+    k_[j] = best.kappa;
+    side_[j] = static_cast<signed char>(side);
+  }
+  std::nth_element(rms.begin(), rms.begin() + static_cast<std::ptrdiff_t>(rms.size() / 2), rms.end());
+  median_rms_ = rms[rms.size() / 2];
+}
+
+double ProfileCurve::z(double y, double* dz) const {
+  const std::size_t m = z_.size();
+  double s = (y - y0_) / h_;
+  if (s <= 0) { if (dz) *dz = dz_[0]; return z_[0] + dz_[0] * (y - y0_); }
+  if (s >= static_cast<double>(m - 1)) {
+    if (dz) *dz = dz_[m - 1];
+    return z_[m - 1] + dz_[m - 1] * (y - y_max());
+  }
+  const std::size_t i = static_cast<std::size_t>(s);
+  const double t = s - static_cast<double>(i);
+  const double z0 = z_[i], z1 = z_[i + 1], d0 = dz_[i] * h_, d1 = dz_[i + 1] * h_;
+  // Cubic Hermite.
+  const double t2 = t * t, t3 = t2 * t;
+  const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
+  if (dz) {
+    const double g00 = 6 * t2 - 6 * t, g10 = 3 * t2 - 4 * t + 1, g01 = -6 * t2 + 6 * t, g11 = 3 * t2 - 2 * t;
+    *dz = (g00 * z0 + g10 * d0 + g01 * z1 + g11 * d1) / h_;
+  }
+  return h00 * z0 + h10 * d0 + h01 * z1 + h11 * d1;
+}
+
+double ProfileCurve::kappa(double y) const {
+  const std::size_t m = k_.size();
+  double s = (y - y0_) / h_;
+  if (s <= 0) return k_[0];
+  if (s >= static_cast<double>(m - 1)) return k_[m - 1];
+  const std::size_t i = static_cast<std::size_t>(s);
+  const double t = s - static_cast<double>(i);
+  return k_[i] + t * (k_[i + 1] - k_[i]);
+}
+
+int ProfileCurve::window_side(double y) const {
+  double s = std::round((y - y0_) / h_);
+  s = std::clamp(s, 0.0, static_cast<double>(side_.size() - 1));
+  return side_[static_cast<std::size_t>(s)];
+}
+
+}  // namespace mh

@@ -1,0 +1,79 @@
+#pragma once
+// Smooth representation of a profile z(y): height, slope and curvature everywhere, from a moving
+// local circle fit (a local regression, "LOESS with circles").
+//
+// At every node of a fine uniform grid the points of the profile within a window (measured along
+// the profile, so steep flanks get windows as short as the tread's) are fitted by a
+// circle-or-line in a frame rotated to the local chord direction,
+//     v = alpha (u² + v²) + beta u + delta            (linear least squares in alpha, beta, delta)
+// which is exact on exact circles and straight lines at any slope, and averages measurement noise
+// over the window. The fit gives z, dz/dy and the curvature kappa at the node; between nodes z is
+// cubic Hermite in (z, dz/dy) and kappa is linear.
+//
+// Breakpoint rule (curvature jumps such as the arcs of S1002 or 60E1): three windows are fitted at
+// each node — centred [s−w, s+w] and one-sided [s−2w, s], [s, s+2w] (s: length along the profile) (each one-sided window reaching
+// one data point past y). The centred fit is used
+// unless its RMS residual exceeds `one_sided_factor` times the better one-sided residual (and
+// `residual_floor`); then the better one-sided fit is used. A window straddling a jump in curvature
+// cannot be fitted by one circle, so near a jump each side takes the radius of its own arc instead
+// of a blend of both (this is the documented rule for radii at breakpoints; tested on S1002 and
+// 60E1).
+//
+// Signs: kappa = z''/(1+z'²)^(3/2) in the canonical frame (z up), positive where the profile bends
+// upwards. Radii with the paper's sign (positive when the centre of curvature is inside the
+// material, method.md §1): rail 1/R_rxx = −kappa (material below), wheel 1/R_wxx = +kappa
+// (material above).
+#include <vector>
+
+#include "profile/profile.hpp"
+
+namespace mh {
+
+struct CurveOptions {
+  double window_half_width = 1.0e-3;  ///< [m] w: half-width of the centred fit window (default 1 mm)
+  double grid_step = 0.01e-3;         ///< [m] resampling step of the smooth representation (default 0.01 mm)
+  double one_sided_factor = 3.0;      ///< switch to a one-sided window when the centred residual exceeds this × the better one (default 3)
+  double residual_floor = 1e-9;       ///< [m] residuals below this count as exact: no switch (default 1 nm)
+  int min_points = 5;                 ///< a window is widened until it holds at least this many points (default 5)
+  /// Measured profiles: when the median RMS residual of the centred fits exceeds `noise_threshold`
+  /// (the profile is not an exact construction but carries measurement noise), the whole profile
+  /// is refitted with the wider window `measured_window_half_width`, which keeps the curvature
+  /// sign stable on a rail crown (R 300 mm) under ±2 µm noise. Set it ≤ window_half_width to
+  /// disable.
+  double noise_threshold = 0.2e-6;            ///< [m] (default 0.2 µm)
+  double measured_window_half_width = 3.0e-3; ///< [m] (default 3 mm)
+};
+
+class ProfileCurve {
+ public:
+  ProfileCurve() = default;
+  /// Throws InputError if the profile has fewer than `min_points` points or y is not increasing.
+  ProfileCurve(const Profile& p, const CurveOptions& opt = {});
+
+  double y_min() const { return y0_; }
+  double y_max() const { return y0_ + h_ * static_cast<double>(z_.size() - 1); }
+  bool contains(double y) const { return y >= y_min() && y <= y_max(); }
+
+  /// Smoothed height z(y) [m] and slope dz/dy at y (clamped to the range).
+  double z(double y, double* dz = nullptr) const;
+  /// Signed curvature kappa(y) [1/m] (see above).
+  double kappa(double y) const;
+  /// Which fit was used at the node nearest y: 0 centred, −1 left-sided, +1 right-sided.
+  int window_side(double y) const;
+  /// Half-width of the fit window actually used [m], and the median RMS residual of its centred fits.
+  double window_used() const { return window_; }
+  double median_residual() const { return median_rms_; }
+
+  const std::vector<double>& node_kappa() const { return k_; }
+  double node_y(std::size_t i) const { return y0_ + h_ * static_cast<double>(i); }
+  std::size_t nodes() const { return z_.size(); }
+
+ private:
+  double y0_ = 0, h_ = 1;
+  std::vector<double> z_, dz_, k_;
+  std::vector<signed char> side_;
+  double window_ = 0, median_rms_ = 0;
+  void build(const Profile& p, const CurveOptions& opt, double w);
+};
+
+}  // namespace mh

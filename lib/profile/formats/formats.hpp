@@ -1,0 +1,52 @@
+#pragma once
+// Shared by the profile readers (one file per format in this folder): the points of a file as
+// read (RawProfile, millimetres, file order, with their line numbers), tokenising and number
+// parsing with located errors. Internal to lib/profile.
+#include <string>
+#include <vector>
+
+#include "profile/profile.hpp"
+#include "profile/read.hpp"
+
+namespace mh::formats {
+
+std::string lower(std::string s);
+/// Lower-case extension of a path without the dot ("" if none).
+std::string extension(const std::string& path);
+std::string trim(const std::string& s);
+/// "12.345 mm" (rounded to 1 nm), for messages.
+std::string mm(double v);
+/// Split on whitespace and commas.
+std::vector<std::string> tokens(const std::string& line);
+bool looks_numeric(const std::string& t);
+/// A number that must be the whole token and finite; InputError at `where` otherwise.
+double parse_number(const std::string& tok, const std::string& where);
+
+/// Points as read, in file order, mm, with their file line (for messages).
+struct RawProfile {
+  std::vector<double> y, z;
+  std::vector<std::size_t> line;
+  ProfileKind kind = ProfileKind::Unknown;
+  std::string format;
+  std::vector<std::string> warnings;
+  void add(double yy, double zz, std::size_t ln) { y.push_back(yy); z.push_back(zz); line.push_back(ln); }
+  std::size_t size() const { return y.size(); }
+};
+
+/// The file's lines (CR LF or LF) and its bytes (for the checksum).
+std::vector<std::string> read_lines(const std::string& path, std::string& bytes);
+ProfileKind kind_from_extension(const std::string& ext);
+
+// The readers (one file each). They apply the format's own conventions and end in the
+// canonical frame of profile.hpp, in mm.
+RawProfile read_simpack(const std::string& path, const std::vector<std::string>& lines);
+RawProfile read_miniprof(const std::string& path, const std::vector<std::string>& lines, bool wheel);
+RawProfile read_table(const std::string& path, const std::vector<std::string>& lines, bool gensys);
+RawProfile read_vampire(const std::string& path, const std::vector<std::string>& lines, const std::string& side);
+/// The format of a file whose extension says nothing, from its content.
+ProfileFormat sniff(const std::vector<std::string>& lines);
+
+/// Shape checks and clean-up in the canonical frame (shape.cpp).
+void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOptions& opt);
+
+}  // namespace mh::formats

@@ -1,0 +1,48 @@
+#include "profile/formats/formats.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/errors.hpp"
+#include "core/numfmt.hpp"
+
+namespace mh::formats {
+
+// ---------------------------------------------------------------------------------------------
+// VAMPIRE .whe/.rai: line 1 WHEELPROFILE/RAILPROFILE, line 2 title, line 3 datum, line 4
+// flange-back distance or gauge, then rows "yl zl yr zr"; z up. Each side is taken in its own
+// frame with y positive towards its field side (assumption, see README); no real file was
+// available to confirm the lateral sign.
+RawProfile read_vampire(const std::string& path, const std::vector<std::string>& lines, const std::string& side) {
+  RawProfile r;
+  r.format = "vampire";
+  if (side != "right" && side != "left")
+    throw InputError(path, side, "vampire side must be 'right' or 'left'");
+  if (lines.size() < 5) throw InputError(path, "", "VAMPIRE file shorter than its 4 header lines");
+  const std::string key = trim(lines[0]);
+  if (key.rfind("WHEELPROFILE", 0) == 0) r.kind = ProfileKind::Wheel;
+  else if (key.rfind("RAILPROFILE", 0) == 0) r.kind = ProfileKind::Rail;
+  else throw InputError(at_line(path, 1), "'" + key + "'", "line 1 must be WHEELPROFILE or RAILPROFILE");
+  const auto t4 = tokens(lines[3]);
+  if (t4.empty()) throw InputError(at_line(path, 4), "", "line 4 must hold the flange-back distance or gauge");
+  parse_number(t4[0], at_line(path, 4));
+  for (std::size_t i = 4; i < lines.size(); ++i) {
+    const std::string where = at_line(path, i + 1);
+    const std::string l = trim(lines[i]);
+    if (l.empty()) continue;
+    const auto t = tokens(l);
+    if (t.size() != 4) throw InputError(where, "'" + l + "'", "a VAMPIRE row must be 'yl zl yr zr'");
+    double v[4];
+    for (int k = 0; k < 4; ++k) v[k] = parse_number(t[k], where);
+    if (side == "right") r.add(v[2], v[3], i + 1);
+    else r.add(v[0], v[1], i + 1);
+  }
+  return r;
+}
+
+}  // namespace mh::formats

@@ -1,0 +1,239 @@
+// The plastic law of one ellipse (plastic.hpp, ellipse_law.hpp; method.md §5). Each block
+// names its source and its tolerance.
+#include <catch2/catch.hpp>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact/ellipse_law.hpp"
+
+using namespace mh;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+double rel(double x, double ref) { return std::fabs(x / ref - 1.0); }
+}  // namespace
+
+TEST_CASE("plastic law of a sphere is Thornton's (1997) truncated-Hertz law", "[plastic]") {
+  // Thornton, C., "Coefficient of restitution for collinear collisions of elastic-perfectly
+  // plastic spheres", J. Appl. Mech. 64 (1997) 383–386. Contact of radius R (composite), modulus
+  // E*_J = E/(2(1−ν²)), interference δ; the Hertz pressure is truncated at p_y, contact radius
+  // a = √(Rδ) throughout. Derivation (written here independently of the library):
+  //   elastic:  F = (4/3) E*_J √R δ^(3/2),  p0 = 2E*_J a/(πR),  so p0 = p_y at δ_y = R (π p_y/(2E*_J))²;
+  //   beyond:   F = ∫ min(p0√(1−r²/a²), p_y) dA = π a² p_y (1 − s²/3), s = p_y/p0, where
+  //             π a² p_y s²/3 = π³ R² p_y³/(12 E*_J²) does not depend on δ, hence Thornton's
+  //             F = F_y + π R p_y (δ − δ_y), F_y = F(δ_y).
+  // Our h0 = δ/2 for a sphere (method.md §2), so force(δ/2) must equal F(δ). Tolerance 1e-12
+  // relative (1e-11 for dF/dδ). Also the contact radius of the patch is √(Rδ).
+  for (double nu : {0.25, 0.3}) {
+    Material mat;
+    mat.E = 210e9;
+    mat.nu = nu;
+    mat.p_lim = 900e6;
+    const double EJ = mat.E / (2 * (1 - nu * nu));
+    for (double R : {0.005, 0.05, 0.46}) {
+      CAPTURE(nu, R);
+      const EllipseLaw L = make_ellipse_law(1 / (2 * R), 1 / (2 * R), mat, true);
+      const double delta_y = R * std::pow(kPi * mat.p_lim / (2 * EJ), 2);
+      const double F_y = (4.0 / 3.0) * EJ * std::sqrt(R) * std::pow(delta_y, 1.5);
+      CHECK(rel(L.h_y, delta_y / 2) <= 1e-12);
+      CHECK(rel(L.N_y, F_y) <= 1e-12);
+      for (double f : {0.2, 0.7, 1.0, 1.5, 2.0, 5.0, 20.0, 100.0}) {
+        CAPTURE(f);
+        const double delta = f * delta_y;
+        const double F = delta <= delta_y ? (4.0 / 3.0) * EJ * std::sqrt(R) * std::pow(delta, 1.5)
+                                          : F_y + kPi * R * mat.p_lim * (delta - delta_y);
+        const double dF = delta <= delta_y ? 2 * EJ * std::sqrt(R * delta) : kPi * R * mat.p_lim;
+        double dN_dh0 = 0;
+        CHECK(rel(L.force(delta / 2, &dN_dh0), F) <= 1e-12);
+        CHECK(rel(dN_dh0 / 2, dF) <= 1e-11);  // dN/dδ = (dN/dh0)/2
+        const EllipseState s = ellipse_state(L, delta / 2);
+        CHECK(rel(s.a, std::sqrt(R * delta)) <= 1e-12);
+        CHECK(rel(s.approach, delta) <= 1e-12);
+        CHECK(s.plastic == (f > 1));
+      }
+    }
+  }
+}
+
+namespace {
+// ∫∫ over the ellipse x²/a² + y²/b² ≤ 1 of min(p0 √(1 − x²/a² − y²/b²), p_lim), as an iterated
+// integral in x then y with GSL QAGS, split at the kinks of the cap (independent of the radial
+// reduction used to derive the closed form).
+struct Quad {
+  double a, b, p0, plim, y;
+  gsl_integration_workspace* wi;  // for the inner integral
+};
+double p_capped(double x, void* v) {
+  const Quad* q = static_cast<Quad*>(v);
+  const double r = 1 - x * x / (q->a * q->a) - q->y * q->y / (q->b * q->b);
+  return std::min(q->p0 * std::sqrt(std::max(0.0, r)), q->plim);
+}
+double integrate(gsl_function* F, double lo, double hi, gsl_integration_workspace* w) {
+  if (!(hi > lo)) return 0;
+  double r = 0, e = 0;
+  const int st = gsl_integration_qags(F, lo, hi, 0, 1e-12, 1000, w, &r, &e);
+  if (st != GSL_SUCCESS && st != GSL_EROUND) FAIL("GSL qags: " << gsl_strerror(st));
+  return r;
+}
+double line_load(double y, void* v) {  // ∫ p dx at fixed y, x from −X to X
+  Quad* q = static_cast<Quad*>(v);
+  const double u = 1 - y * y / (q->b * q->b);
+  if (!(u > 0)) return 0;
+  Quad inner = *q;
+  inner.y = y;
+  gsl_function F{&p_capped, &inner};
+  const double X = q->a * std::sqrt(u);
+  const double s = q->plim / q->p0;
+  const double k = u - s * s;  // kink at x = a √(u − s²) where p0√(...) = p_lim
+  gsl_integration_workspace* wi = q->wi;
+  if (k > 0) {
+    const double xk = q->a * std::sqrt(k);
+    return 2 * (integrate(&F, 0, xk, wi) + integrate(&F, xk, X, wi));
+  }
+  return 2 * integrate(&F, 0, X, wi);
+}
+}  // namespace
+
+TEST_CASE("plastic law: closed-form N against quadrature of the capped pressure", "[plastic]") {
+  // method.md §5: N = π a b p_lim (1 − s²/3), s = p_lim/p0 (capped_hertz_load), against direct
+  // 2-D quadrature of min(p0√(1 − x²/a² − y²/b²), p_lim) over the ellipse (a ≠ b), s from 0.01
+  // to 1. Tolerance 1e-8 relative.
+  gsl_set_error_handler_off();
+  gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
+  gsl_integration_workspace* wi = gsl_integration_workspace_alloc(1000);
+  const double a = 7e-3, b = 5e-3, p0 = 1.2e9;
+  for (double s : {0.01, 0.03, 0.1, 0.2, 0.35, 0.5, 0.65, 0.8, 0.9, 0.97, 0.999, 1.0}) {
+    CAPTURE(s);
+    Quad q{a, b, p0, s * p0, 0, wi};
+    gsl_function F{&line_load, &q};
+    const double yk = b * std::sqrt(1 - s * s);  // the plateau edge on the y axis
+    const double Nq = 2 * (integrate(&F, 0, yk, w) + integrate(&F, yk, b, w));
+    CHECK(rel(capped_hertz_load(a, b, p0, s * p0), Nq) <= 1e-8);
+  }
+  gsl_integration_workspace_free(w);
+  gsl_integration_workspace_free(wi);
+  // s ≥ 1 is the Hertz load (2/3) π a b p0, exactly.
+  CHECK(capped_hertz_load(a, b, p0, 2 * p0) == (2.0 / 3.0) * kPi * a * b * p0);
+  CHECK(capped_hertz_load(a, b, p0, INFINITY) == (2.0 / 3.0) * kPi * a * b * p0);
+}
+
+TEST_CASE("plastic law: the stiffness law equals the capped load of its patch", "[plastic]") {
+  // method.md §5: force(h0) = capped_hertz_load(a, b, p0, p_lim) on the patch b = √(h0/B),
+  // a = (m/n) b, p0 its Hertz peak; p_mean ≤ p_max = p_lim. Tolerance 1e-12 relative.
+  Material mat;
+  mat.E = 210e9;
+  mat.nu = 0.3;
+  mat.p_lim = 1100e6;
+  for (double l : {1e-3, 0.1, 0.652, 1.0, 7.0, 300.0}) {
+    const EllipseLaw L = make_ellipse_law(l * 2.0, 2.0, mat);
+    for (double f : {0.5, 1.0, 1.01, 3.0, 50.0}) {
+      CAPTURE(l, f);
+      const EllipseState s = ellipse_state(L, f * L.h_y);
+      CHECK(rel(s.N, capped_hertz_load(s.a, s.b, s.p0, mat.p_lim)) <= 1e-12);
+      CHECK(s.p_max <= mat.p_lim);
+      CHECK(s.p_mean <= s.p_max * (1 + 1e-15));
+      if (s.plastic) {
+        const double q = std::sqrt(1 - std::pow(mat.p_lim / s.p0, 2));
+        CHECK(rel(s.plateau_a, s.a * q) <= 1e-12);
+        CHECK(rel(s.plateau_b, s.b * q) <= 1e-12);
+      } else {
+        CHECK(s.plateau_a == 0);
+      }
+    }
+  }
+}
+
+TEST_CASE("plastic law: N and dN/dh0 continuous at h_y", "[plastic]") {
+  // method.md §5: the law is C¹ at the yield point. Tolerance 1e-10 relative between h_y(1 ∓ 1e-13).
+  Material mat;
+  mat.E = 210e9;
+  mat.nu = 0.28;
+  mat.p_lim = 1000e6;
+  for (double l : {1e-4, 0.05, 0.3, 1.0, 4.0, 30.0, 1e4}) {
+    CAPTURE(l);
+    const double B = 1 / 0.3, A = l * B;
+    for (bool exact : {true, false}) {
+      const EllipseLaw L = make_ellipse_law(A, B, mat, exact);
+      double d1 = 0, d2 = 0;
+      const double below = L.force(L.h_y * (1 - 1e-13), &d1), above = L.force(L.h_y * (1 + 1e-13), &d2);
+      CHECK(rel(below, above) <= 1e-10);
+      CHECK(rel(d1, d2) <= 1e-10);
+      CHECK(rel(L.force(L.h_y), L.N_y) <= 1e-12);
+      CHECK(rel(L.N_y, (2.0 / 3.0) * L.k_p * L.h_y) <= 1e-15);
+      // The Hertz peak of the patch reaches p_lim exactly at h_y.
+      CHECK(rel(ellipse_state(L, L.h_y).p0, mat.p_lim) <= 1e-12);
+    }
+  }
+}
+
+TEST_CASE("plastic law: p_lim → ∞ is the elastic law; the inverse h0_for_force", "[plastic]") {
+  // Tolerances: 1e-12 relative.
+  Material mat;
+  mat.E = 210e9;
+  mat.nu = 0.28;
+  for (double l : {1e-3, 0.3, 1.0, 4.0, 900.0}) {
+    CAPTURE(l);
+    const double B = 1 / 0.3, A = l * B;
+    Material big = mat, el = mat, pl = mat;
+    big.p_lim = 1e30;
+    el.p_lim = INFINITY;
+    pl.p_lim = 700e6;
+    const EllipseLaw Lb = make_ellipse_law(A, B, big), Le = make_ellipse_law(A, B, el),
+                     Lp = make_ellipse_law(A, B, pl);
+    CHECK(std::isinf(Le.h_y));
+    CHECK(Le.k_p == 0);
+    CHECK_FALSE(Le.is_plastic_law());
+    for (double h : {1e-7, 1e-6, 1e-5, 1e-4, 1e-3}) {
+      CAPTURE(h);
+      double db = 0, de = 0;
+      CHECK(rel(Lb.force(h, &db), Le.force(h, &de)) <= 1e-12);
+      CHECK(rel(db, de) <= 1e-12);
+      const EllipseState sb = ellipse_state(Lb, h), se = ellipse_state(Le, h);
+      CHECK(rel(sb.a, se.a) <= 1e-12);
+      CHECK(rel(sb.p0, se.p0) <= 1e-12);
+      CHECK_FALSE(sb.plastic);
+      CHECK(rel(Le.h0_for_force(Le.force(h)), h) <= 1e-12);
+      CHECK(rel(Lp.h0_for_force(Lp.force(h)), h) <= 1e-12);
+      CHECK(rel(Lp.force(Lp.h0_for_force(1e3 * h * 1e6)), 1e3 * h * 1e6) <= 1e-12);
+    }
+  }
+}
+
+TEST_CASE("plastic law: worked example of method.md §5", "[plastic]") {
+  // Source: method.md §5 (E 210 GPa, ν 0.3, R_wyy 460 mm, R_rxx 300 mm, flat wheel profile,
+  // N = 100 kN). Tolerances: the printed digits (± half a unit in the last one).
+  Material mat;
+  mat.E = 210e9;
+  mat.nu = 0.3;
+  const double A = 1 / (2 * 0.460), B = 0.5 * (1 / 0.300);
+  for (bool exact : {false, true}) {
+    CAPTURE(exact);
+    const EllipseState e = ellipse_state_for_force(make_ellipse_law(A, B, mat, exact), 100e3);
+    CHECK(e.a * 1e3 == Approx(7.162).margin(5e-4));
+    CHECK(e.b * 1e3 == Approx(5.387).margin(5e-4));
+    CHECK(e.p0 / 1e6 == Approx(1238).margin(0.5));
+    Material pm = mat;
+    pm.p_lim = 800e6;
+    const EllipseLaw pl = make_ellipse_law(A, B, pm, exact);
+    CHECK(pl.h_y * 1e3 == Approx(0.02021).margin(5e-6));
+    CHECK(pl.N_y / 1e3 == Approx(27.0).margin(0.05));
+    const EllipseState p = ellipse_state_for_force(pl, 100e3);
+    CHECK(p.plastic);
+    CHECK(p.a * 1e3 == Approx(7.748).margin(5e-4));
+    CHECK(p.b * 1e3 == Approx(5.829).margin(5e-4));
+    CHECK(p.area_ratio == Approx(1.171).margin(5e-4));
+    CHECK(p.p_max == 800e6);
+    CHECK(rel(p.a_el, e.a) <= 1e-12);
+    CHECK(rel(p.b_el, e.b) <= 1e-12);
+    // Area ratio at fixed load t = (2 + σ³)/(3σ), σ = p_lim/p0_elastic (method.md §5), 1e-12;
+    // a and b scale by √t.
+    const double sigma = 800e6 / e.p0;
+    CHECK(rel(p.area_ratio, plastic_area_ratio(sigma)) <= 1e-12);
+    CHECK(rel(plastic_area_ratio(sigma), (2 + sigma * sigma * sigma) / (3 * sigma)) <= 1e-15);
+    CHECK(rel(p.a, e.a * std::sqrt(p.area_ratio)) <= 1e-12);
+  }
+}
