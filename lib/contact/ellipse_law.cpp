@@ -20,7 +20,7 @@ EllipseLaw make_ellipse_law(double A, double B, const Material& mat, bool exact)
                                 " 1/m: the rolling-direction curvature sum A = 1/(2 R_wyy) must be > 0 and finite "
                                 "(A = 0 is a line contact, A < 0 a concave wheel in the rolling direction)");
   std::string why;
-  if (!mat.is_valid(&why)) throw std::invalid_argument(why);
+  if (!mat.valid(&why)) throw std::invalid_argument(why);
   const double lambda = A / B;
   EllipseLaw L;
   L.A = A;

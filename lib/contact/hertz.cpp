@@ -18,7 +18,7 @@
 
 namespace mh {
 
-bool Material::is_valid(std::string* why) const {
+bool Material::valid(std::string* why) const {
   auto fail = [&](const std::string& s) {
     if (why) *why = s;
     return false;
@@ -27,6 +27,10 @@ bool Material::is_valid(std::string* why) const {
     return fail("Material.E = " + format_number(E) + " Pa: Young's modulus must be > 0 and finite");
   if (!(nu > 0 && nu < 0.5))
     return fail("Material.nu = " + format_number(nu) + ": Poisson's ratio must be in (0, 0.5)");
+  if (!std::isnan(E_rail) && (!(E_rail > 0) || !std::isfinite(E_rail)))
+    return fail("Material.E_rail = " + format_number(E_rail) + " Pa: Young's modulus must be > 0 and finite");
+  if (!std::isnan(nu_rail) && !(nu_rail > 0 && nu_rail < 0.5))
+    return fail("Material.nu_rail = " + format_number(nu_rail) + ": Poisson's ratio must be in (0, 0.5)");
   if (!(p_lim > 0))
     return fail("Material.p_lim = " + format_number(p_lim) +
                 " Pa: the limit pressure must be > 0 (INFINITY for an elastic contact)");

@@ -10,15 +10,26 @@ namespace mh {
 
 /// Identical elastic materials for wheel and rail, plus the limit pressure of the plastic law.
 struct Material {
-  double E = 210e9;          ///< [Pa] Young's modulus of both bodies (default 210 GPa, steel)
-  double nu = 0.28;          ///< [-] Poisson's ratio of both bodies, in (0, 0.5) (default 0.28)
+  double E = 210e9;          ///< [Pa] Young's modulus of the wheel, and of the rail unless E_rail is set (default 210 GPa, steel)
+  double nu = 0.28;          ///< [-] Poisson's ratio of the wheel, and of the rail unless nu_rail is set, in (0, 0.5) (default 0.28)
+  double E_rail = NAN;       ///< [Pa] the rail's Young's modulus when it differs (NaN: same as E)
+  double nu_rail = NAN;      ///< [-] the rail's Poisson's ratio when it differs (NaN: same as nu)
   double p_lim = INFINITY;   ///< [Pa] limit pressure of the plastic law (method.md §5); INFINITY = elastic
-  /// [Pa] E/(1−ν²), the plane-strain modulus of ONE body (the paper's E/(1−ν²) of eqs. 2–3, 8).
-  /// Johnson's composite modulus of the pair is half of it: E*_J = E/(2(1−ν²)).
-  double E_star() const { return E / (1 - nu * nu); }
+  double Er() const { return std::isnan(E_rail) ? E : E_rail; }
+  double nur() const { return std::isnan(nu_rail) ? nu : nu_rail; }
+  /// [Pa] the paper's E/(1−ν²) of eqs. 2–3, 8 for identical bodies; for two materials the value
+  /// that gives the same pair compliance: 2 / ((1−ν_w²)/E_w + (1−ν_r²)/E_r). Johnson's composite
+  /// modulus of the pair is half of it: E*_J = 1 / ((1−ν_w²)/E_w + (1−ν_r²)/E_r).
+  double E_star() const {
+    if (std::isnan(E_rail) && std::isnan(nu_rail)) return E / (1 - nu * nu);  // identical bodies
+    return 2.0 / ((1 - nu * nu) / E + (1 - nur() * nur()) / Er());
+  }
+  /// [1/Pa] combined compliance of the half-space solvers (docs/method.md §8):
+  /// (1−ν_w²)/(π E_w) + (1−ν_r²)/(π E_r) = 2 / (π E_star).
+  double compliance() const { return 2.0 / (3.14159265358979323846 * E_star()); }
   /// Ceres-style check: true when valid; otherwise false and *why names the field, the value and
-  /// the rule (E > 0 and finite, 0 < ν < 0.5, p_lim > 0 or INFINITY).
-  bool is_valid(std::string* why = nullptr) const;
+  /// the rule (E > 0 and finite, 0 < ν < 0.5, p_lim > 0 or INFINITY; the same for the rail's).
+  bool valid(std::string* why = nullptr) const;
 };
 
 /// Hertz coefficients of λ = A/B (method.md §2): semi-axes a = m C (along x), b = n C (along y),

@@ -3,20 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "core/numfmt.hpp"
+#include "core/units.hpp"
 
 namespace mh {
-
-const char* to_string(CaseStatus s) {
-  switch (s) {
-    case CaseStatus::Ok: return "ok";
-    case CaseStatus::NoContact: return "no_contact";
-    case CaseStatus::OutOfRange: return "out_of_range";
-    case CaseStatus::NotConverged: return "not_converged";
-  }
-  return "?";
-}
 
 bool SolverOptions::valid(std::string* why) const {
   if (!(rtol > 0 && rtol < 1e-3)) { if (why) *why = "rtol must be in (0, 1e-3)"; return false; }
@@ -139,8 +131,13 @@ CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, 
     L.s = ellipse_state(c.law, h);
     r.Fz += L.s.N * c.cg;
     r.Fy += L.s.N * c.sg;
+    // Case summary shared with the grid methods (case_result.hpp).
+    r.pmax = std::max(r.pmax, L.s.p_max);
+    r.area += units::pi * L.s.a * L.s.b;
+    r.approach = std::max(r.approach, L.s.approach / c.cg + c.g.gap);
     r.loaded.push_back(L);
   }
+  r.n_contacts = static_cast<int>(r.loaded.size());
   return r;
 }
 

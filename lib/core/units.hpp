@@ -13,4 +13,9 @@ constexpr double MPa = 1e6;   ///< pascals per megapascal
 constexpr double GPa = 1e9;   ///< pascals per gigapascal
 constexpr double deg = pi / 180.0;  ///< radians per degree
 
+// Output conversions as multiplications (x * per_mm, not x / mm: the two differ in the last bit
+// and the tables are compared byte for byte).
+constexpr double per_mm = 1e3;        ///< millimetres per metre
+constexpr double per_mm2 = 1e6;       ///< square millimetres per square metre
+
 }  // namespace mh::units

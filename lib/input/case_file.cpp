@@ -212,7 +212,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   Ctx c{path};
   CaseFile cf;
   cf.path = path;
-  c.only_keys(j, "", {"wheel", "rail", "track", "geometry", "material", "model", "sweep", "cases", "solver", "comment"});
+  c.only_keys(j, "", {"wheel", "rail", "track", "geometry", "material", "model", "method", "sweep", "cases", "solver", "comment"});
 
   // wheel
   if (!j.contains("wheel")) c.fail("/wheel", nullptr, "required");
@@ -289,18 +289,47 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     else if (m == "plastic") cf.model = Model::Plastic;
     else c.fail("/model", &j.at("model"), "must be \"elastic\" or \"plastic\"");
   }
+  if (j.contains("method")) {
+    const std::string m = c.string(j, "", "method");
+    try {
+      cf.method = parse_method(m);
+    } catch (const std::invalid_argument&) {
+      c.fail("/method", &j.at("method"), "must be \"multi-hertzian\", \"half-space\", \"strips\" or \"auto\"");
+    }
+  }
   if (j.contains("material")) {
     const json& m = j.at("material");
-    c.only_keys(m, "/material", {"E_GPa", "nu", "p_lim_MPa"});
-    if (m.contains("E_GPa")) {
-      const double E = c.positive(m, "/material", "E_GPa");
-      if (E > 2000) c.fail("/material/E_GPa", &m.at("E_GPa"), "must be at most 2000 GPa (is it in MPa?)");
-      cf.material.E = E * units::GPa;
-    }
-    if (m.contains("nu")) {
-      const double nu = c.number(m, "/material", "nu");
-      if (!(nu > 0 && nu < 0.5)) c.fail("/material/nu", &m.at("nu"), "must be in (0, 0.5)");
-      cf.material.nu = nu;
+    c.only_keys(m, "/material", {"E_GPa", "nu", "p_lim_MPa", "wheel", "rail"});
+    // Either one E and nu for both bodies, or "wheel": {...} and "rail": {...} (each defaulting
+    // to the common values).
+    auto elastic = [&](const json& o, const std::string& path, double* E_out, double* nu_out) {
+      if (o.contains("E_GPa")) {
+        const double E = c.positive(o, path, "E_GPa");
+        if (E > 2000) c.fail(path + "/E_GPa", &o.at("E_GPa"), "must be at most 2000 GPa (is it in MPa?)");
+        *E_out = E * units::GPa;
+      }
+      if (o.contains("nu")) {
+        const double nu = c.number(o, path, "nu");
+        if (!(nu > 0 && nu < 0.5)) c.fail(path + "/nu", &o.at("nu"), "must be in (0, 0.5)");
+        *nu_out = nu;
+      }
+    };
+    elastic(m, "/material", &cf.material.E, &cf.material.nu);
+    if (m.contains("wheel") || m.contains("rail")) {
+      if (m.contains("E_GPa") || m.contains("nu"))
+        c.fail("/material", &m, "give E_GPa and nu either for both bodies or per body (\"wheel\", \"rail\"), not both");
+      double Er = cf.material.E, nur = cf.material.nu;
+      for (const char* body : {"wheel", "rail"}) {
+        if (!m.contains(body)) continue;
+        const json& b = m.at(body);
+        const std::string path = std::string("/material/") + body;
+        if (!b.is_object()) c.fail(path, &b, "must be an object {\"E_GPa\": ..., \"nu\": ...}");
+        c.only_keys(b, path, {"E_GPa", "nu"});
+        if (std::string(body) == "wheel") elastic(b, path, &cf.material.E, &cf.material.nu);
+        else elastic(b, path, &Er, &nur);
+      }
+      cf.material.E_rail = Er;
+      cf.material.nu_rail = nur;
     }
     if (m.contains("p_lim_MPa")) {
       if (cf.model != Model::Plastic)
@@ -431,9 +460,13 @@ nlohmann::json CaseFile::resolved_json() const {
                    {"fit_window_mm", geometry.curve.window_half_width * 1e3},
                    {"measured_fit_window_mm", geometry.curve.measured_window_half_width * 1e3}};
   json mat = {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}};
+  if (!std::isnan(material.E_rail))
+    mat = {{"wheel", {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}}},
+           {"rail", {{"E_GPa", material.E_rail / units::GPa}, {"nu", material.nu_rail}}}};
   if (model == Model::Plastic) mat["p_lim_MPa"] = material.p_lim / units::MPa;
   j["material"] = mat;
   j["model"] = to_string(model);
+  j["method"] = to_string(method);
   j["solver"] = {{"rtol", solver.rtol}, {"max_iterations", solver.max_iterations},
                  {"exact_coefficients", solver.exact_coefficients}};
   j["case_order"] = cases.empty() ? "sweep: tY_mm outer, Q_kN inner" : "as listed";

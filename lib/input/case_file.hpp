@@ -59,6 +59,7 @@ struct CaseFile {
   GeometryOptions geometry;
   Material material;
   Model model = Model::Elastic;
+  Method method = Method::MultiHertzian;  ///< "method" (default multi-hertzian)
   SolverOptions solver;
   /// Either a cartesian sweep (t_Y outer, Q inner: case i has tY[i / nQ], Q[i % nQ]) ...
   SweepAxis sweep_tY_mm, sweep_Q_kN;  ///< as given, in mm and kN

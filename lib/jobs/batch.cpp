@@ -112,7 +112,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
       for (std::uint64_t i = 0; i < n; ++i) {
         CaseResult r;
         r.message = message;
-        r.dz = r.residual = r.Fz = r.Fy = NAN;
+        r.dz = r.approach = r.residual = r.Fz = r.Fy = r.pmax = r.area = NAN;
         Formatted f;
         format_case(i, shared.case_at(i), r, plastic, fc != nullptr, pw != nullptr, f, kInvalidPair);
         if (fc) put_prefixed(fc->stream(), prefix, f.cases);

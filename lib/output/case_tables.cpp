@@ -98,12 +98,16 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; num(s, cp.tY_mm);
     s += ','; num(s, cp.Q_kN);
     s += ','; s += status;
-    s += ','; num(s, r.dz * 1e3);
+    s += ','; s += to_string(r.method);
+    s += ','; num(s, r.dz * units::per_mm);
+    s += ','; num(s, r.approach * units::per_mm);
     s += ','; append_number(s, static_cast<long long>(r.iterations));
     s += ','; num(s, r.residual);
     s += ','; append_number(s, static_cast<long long>(r.loaded.size()));
     s += ','; num(s, r.Fz / units::kN);
     s += ','; num(s, r.Fy / units::kN);
+    s += ','; num(s, r.pmax / units::MPa);
+    s += ','; num(s, r.area * units::per_mm2);
     s += ','; csv_text(s, warn);
     s += ','; csv_text(s, r.message);
     s += '\n';
@@ -131,12 +135,16 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     j["tY_mm"] = jv(cp.tY_mm);
     j["Q_kN"] = jv(cp.Q_kN);
     j["status"] = status;
-    j["dz_mm"] = jv(r.dz / units::mm);
+    j["method"] = to_string(r.method);
+    j["dz_virtual_mm"] = jv(r.dz * units::per_mm);
+    j["approach_mm"] = jv(r.approach * units::per_mm);
     j["iterations"] = r.iterations;
     j["residual"] = jv(r.residual);
     j["n_contacts"] = r.loaded.size();
     j["Fz_kN"] = jv(r.Fz / units::kN);
     j["Fy_kN"] = jv(r.Fy / units::kN);
+    j["pmax_MPa"] = jv(r.pmax / units::MPa);
+    j["area_mm2"] = jv(r.area * units::per_mm2);
     j["warnings"] = r.warnings;
     j["message"] = r.message;
     nlohmann::ordered_json el = nlohmann::ordered_json::array();
@@ -157,7 +165,8 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
 }
 
 std::string cases_csv_header() {
-  return "case,tY_mm,Q_kN,status,dz_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,warnings,message\n";
+  return "case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,"
+         "pmax_MPa,area_mm2,warnings,message\n";
 }
 
 std::string pressure_csv_header(bool plastic) {

@@ -15,9 +15,9 @@ inline void num(std::string& s, double v) { append_number(s, v); }
 inline void jnum(std::string& s, double v) {
   if (std::isfinite(v)) append_number(s, v); else s += "null";
 }
-inline double radius_mm(double k) { return k == 0 ? INFINITY : 1 / (k * units::mm); }
+inline double radius_mm(double k) { return k == 0 ? INFINITY : units::per_mm / k; }
 // Grid t_Y values in mm, rounded to 1e-9 mm so that 6.6e-3 m prints 6.6 and not 6.6000000000000005.
-inline double grid_mm(double m) { return std::round(m / units::mm * 1e9) / 1e9; }
+inline double grid_mm(double m) { return std::round(m * 1e12) / 1e9; }
 
 // RFC 4180 quoting for text cells.
 inline void csv_text(std::string& s, const std::string& t) {

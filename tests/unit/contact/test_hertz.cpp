@@ -287,8 +287,8 @@ TEST_CASE("non-Hertzian and invalid inputs are refused with the rule", "[hertz]"
   CHECK_THROWS_AS(hertz_coefficients(-1.0), std::invalid_argument);
   CHECK_THROWS_AS(hertz_coefficients_exact(std::nan("")), std::invalid_argument);
   std::string why;
-  CHECK(mat.is_valid(&why));
-  CHECK_FALSE(bad.is_valid(&why));
+  CHECK(mat.valid(&why));
+  CHECK_FALSE(bad.valid(&why));
   CHECK(why.find("p_lim") != std::string::npos);
 }
 

@@ -1,0 +1,82 @@
+#pragma once
+// The result of one case, shared by every method (multi-Hertzian, half-space, strips): a status,
+// the case summary every method fills (forces, approach, maximum pressure, area, number of
+// contacts), and the method's own detail: loaded ellipses (multi-Hertzian) or contact patches
+// (grid methods). The output schema (lib/output/case_tables) is written from this struct alone.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "contact/ellipse_law.hpp"
+#include "geometry/contact_geometry.hpp"
+
+namespace mh {
+
+/// The outcome of one case's solve (a batch's `invalid_pair` is not a solver outcome: jobs/batch.hpp).
+enum class CaseStatus { Ok, NoContact, OutOfRange, NotConverged };
+const char* to_string(CaseStatus s);
+
+/// The solution method of a case (case file "method"). Auto chooses per case (docs/method.md).
+enum class Method { MultiHertzian, HalfSpace, Strips, Auto };
+const char* to_string(Method m);
+/// "multi-hertzian", "half-space", "strips", "auto"; throws std::invalid_argument otherwise.
+Method parse_method(const std::string& s);
+
+/// One loaded ellipse of a multi-Hertzian solution.
+struct LoadedEllipse {
+  int ellipse = 0;          ///< 1-based index of the potential ellipse
+  CandidateGeom g;          ///< its strip (interpolated at the case's t_Y)
+  double A = 0, B = 0;      ///< [1/m] (eq. 1)
+  HertzCoefficients c;
+  double h_y = INFINITY;    ///< [m] yield penetration of its law (docs/method.md §5); INFINITY when elastic
+  EllipseState s;           ///< h0, N, a, b, p0, ... (ellipse_law.hpp)
+};
+
+/// One contact patch of a grid method (half-space, strips): its own tangent plane (docs/method.md §8).
+struct PatchResult {
+  int patch = 0;            ///< 1-based, in increasing rail y
+  double y_r = 0;           ///< [m] contact reference point on the rail (the patch plane's origin)
+  double z_r = 0;           ///< [m] its height on the rail profile
+  double y_w = 0;           ///< [m] the facing wheel-profile lateral coordinate
+  double gamma = 0;         ///< [rad] contact angle of the patch plane
+  double N = 0;             ///< [N] normal force Σ p dx ds
+  double pmax = 0;          ///< [Pa] largest element pressure
+  double area = 0;          ///< [m²] elements in contact × dx ds
+  double length_x = 0;      ///< [m] extent of the contact along x (element centres, + one element)
+  double width_s = 0;       ///< [m] extent along s in the patch plane (+ one element)
+  double approach = 0;      ///< [m] normal approach of the patch, δz cos γ minus the plane's offset
+  double x_centroid = 0;    ///< [m] pressure centroid relative to the reference point, along x
+  double s_centroid = 0;    ///< [m] ... and along s (rail y ≈ y_r + s cos γ)
+  double plastic_area = 0;  ///< [m²] elements at the pressure cap (plastic model)
+  double capped_load = 0;   ///< [N] load carried by those elements
+  int n_elements = 0;       ///< elements in contact
+  int iterations = 0;       ///< solver iterations summed over the outer loop
+  // Pressure on the patch grid (for --pressure-grid): nx × ns values, x fastest, element centres
+  // at x0 + i dx, s0 + j ds (plane coordinates relative to the reference point).
+  int nx = 0, ns = 0;
+  double dx = 0, ds = 0, x0 = 0, s0 = 0;
+  std::vector<double> p;    ///< [Pa]
+};
+
+struct CaseResult {
+  CaseStatus status = CaseStatus::Ok;
+  Method method = Method::MultiHertzian;  ///< the method that solved it (never Auto)
+  std::string message;               ///< why, when not ok
+  std::vector<std::string> warnings; ///< e.g. a non-Hertzian candidate that would have touched
+  /// [m] multi-Hertzian only: the vertical VIRTUAL penetration δz of eq. 11 (h0 = δ/2 for a
+  /// sphere), from the geometric contact position. NaN for the grid methods.
+  double dz = 0;
+  /// [m] the rigid vertical approach of the wheel from first contact (CONTACT's z_ws difference);
+  /// multi-Hertzian: max over loaded ellipses of δ_i / cos γ_i + gap_i with δ_i the true Hertz approach.
+  double approach = 0;
+  int iterations = 0;
+  double residual = 0;    ///< (Σ N_i cos γ_i − Q) / Q at the end
+  double Fz = 0, Fy = 0;  ///< [N] Σ N_i cos γ_i and Σ N_i sin γ_i (lateral, towards the field side)
+  double pmax = 0;        ///< [Pa] the largest contact pressure of the case (capped in plastic mode)
+  double area = 0;        ///< [m²] total contact area
+  int n_contacts = 0;     ///< loaded ellipses or patches
+  std::vector<LoadedEllipse> loaded;  ///< multi-Hertzian: in increasing ellipse index
+  std::vector<PatchResult> patches;   ///< grid methods: in increasing rail y
+};
+
+}  // namespace mh
