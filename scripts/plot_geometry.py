@@ -75,7 +75,7 @@ def main(argv=None):
     ax.plot(wy, wz, "-", color="0.45", lw=1.2, label="wheel")
     for i, e in enumerate(ells):
         # The ellipse's strip: its own main strip if t_Y is inside its interval, else the main strip
-        # of its t_Y nearest to t_Y (method.md §3.6).
+        # of its t_Y nearest to t_Y (docs/method.md §3, step 6).
         kk = min(range(len(tY)), key=lambda j: abs(tY[j] - min(max(tY[k], e["tY_min_mm"]), e["tY_max_mm"])))
         yr = float(caf[kk]["y_rail_mm"])
         # rail height at yr by linear interpolation

@@ -8,7 +8,7 @@ read). Three panels: the rail section with the contact patches of case K (the pl
 and, in plastic mode, the elastic patch at the same load), and the pressure along the patch
 axes x (rolling) and y (lateral) of every loaded ellipse: the capped pressure
 min(p0 sqrt(1 - x^2/a^2 - y^2/b^2), p_lim) against the elastic Hertz pressure at the same load
-(method.md §5). Needs matplotlib (Debian: python3-matplotlib); runs headless.
+(docs/method.md §5). Needs matplotlib (Debian: python3-matplotlib); runs headless.
 """
 import argparse
 import csv

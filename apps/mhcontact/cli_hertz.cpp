@@ -1,4 +1,4 @@
-// `mhcontact hertz`: one Hertzian ellipse (method.md §2), optionally with the plastic law (§5).
+// `mhcontact hertz`: one Hertzian ellipse (docs/method.md §2), optionally with the plastic law (§5).
 // Input in engineering units (1/mm, mm, kN, GPa, MPa), output text or JSON with units in the keys.
 #include <CLI/CLI.hpp>
 
@@ -148,11 +148,11 @@ void add_hertz_command(CLI::App& app, CliContext& ctx) {
   auto opt = std::make_shared<HertzCliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "hertz",
-      "One Hertzian ellipse (paper eqs. 1-8, method.md section 2): lambda, m, n, semi-axes, peak and "
+      "One Hertzian ellipse (paper eqs. 1-8, docs/method.md section 2): lambda, m, n, semi-axes, peak and "
       "mean pressure, virtual penetration h0 and true approach; with --p-lim the plastic law "
-      "(method.md section 5). Give --A and --B, or the radii.");
+      "(docs/method.md section 5). Give --A and --B, or the radii.");
   cmd->footer(
-      "Example (method.md section 5): mhcontact hertz --R-wyy 460 --R-rxx 300 --N 100 --E 210 --nu 0.3 --p-lim 800\n"
+      "Example (docs/method.md section 5): mhcontact hertz --R-wyy 460 --R-rxx 300 --N 100 --E 210 --nu 0.3 --p-lim 800\n"
       "Radii are positive when the centre of curvature is inside the material (concave: negative); "
       "an omitted --R-wxx or --R-rxx is a straight profile. A = 1/(2 R_wyy), B = (1/R_wxx + 1/R_rxx)/2.\n"
       "Exit codes: 0 ok; 2 invalid value (the message names the option); 1xx command-line syntax.");

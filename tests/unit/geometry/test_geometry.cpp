@@ -54,7 +54,7 @@ TEST_CASE("Manchester pair: the paper's 4 potential ellipses", "[geometry]") {
 TEST_CASE("eq. (9) on a pair of circular profiles", "[geometry]") {
   // Source: paper eq. (9), R_wxx + R_rxx = −1/(cos γ dγ/dt_Y), exact where radii are constant.
   // Wheel circ_r50.prw (convex, R_wxx = +50 mm), rail circ_r100.prr (R_rxx = +100 mm), both exact
-  // to 5e−7 mm (shared/profiles README). Tolerance 0.2 % (the derivative is a finite difference
+  // to 5e−7 mm (tests/data/profiles/README.md). Tolerance 0.2 % (the derivative is a finite difference
   // over ±0.5 mm of the CAF).
   const Profile W = read("circ_r50.prw", ProfileKind::Wheel, false);
   const Profile R = read("circ_r100.prr", ProfileKind::Rail, false);

@@ -1,5 +1,5 @@
 // Profile readers, writers and checks on the real files of tests/data/profiles (copies of
-// /work/shared/profiles, provenance in tests/data/profiles/README.md) and on malformed inputs.
+// CONTACT and A_WRCC files, provenance in tests/data/profiles/README.md) and on malformed inputs.
 // Tolerances are in mm (profile files are in mm; Profile holds metres).
 #include <catch2/catch.hpp>
 
