@@ -55,8 +55,10 @@ bool wrapped_offset(int i, int n, int m, int* offset) {
 }  // namespace
 
 double love_rectangle(double x, double y, double a, double b) {
-  return love_corner(a + x, b + y) + love_corner(a - x, b + y) + love_corner(a + x, b - y) +
-         love_corner(a - x, b - y);
+  // Summed in pairs so that the result is bitwise even in x and in y (floating-point addition is
+  // commutative): the influence matrix is then exactly symmetric.
+  return (love_corner(a + x, b + y) + love_corner(a - x, b + y)) +
+         (love_corner(a + x, b - y) + love_corner(a - x, b - y));
 }
 
 std::mutex& fftw_planner_mutex() {
