@@ -1,0 +1,235 @@
+// Tests of the half-space influence coefficients and their DC-FFT convolution
+// (lib/contact/influence.hpp).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "contact/influence.hpp"
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+/// 16-point Gauss–Legendre nodes and weights on [−1, 1] (Abramowitz & Stegun, Table 25.4),
+/// computed here by Newton on P_16 so the test does not depend on a typed table.
+struct Gauss {
+  static constexpr int n = 16;
+  double x[n], w[n];
+  Gauss() {
+    for (int i = 0; i < n; ++i) {
+      double z = std::cos(pi * (i + 0.75) / (n + 0.5));  // A&S 22.16 asymptotic start
+      double dp = 0;
+      for (int k = 0; k < 100; ++k) {
+        double p0 = 1, p1 = z;  // Bonnet recursion (A&S 22.7.10)
+        for (int j = 2; j <= n; ++j) {
+          const double p2 = ((2 * j - 1) * z * p1 - (j - 1) * p0) / j;
+          p0 = p1;
+          p1 = p2;
+        }
+        dp = n * (z * p1 - p0) / (z * z - 1);
+        const double dz = p1 / dp;
+        z -= dz;
+        if (std::fabs(dz) < 1e-16) break;
+      }
+      x[i] = z;
+      w[i] = 2 / ((1 - z * z) * dp * dp);  // A&S 25.4.29
+    }
+  }
+};
+const Gauss gauss;
+
+using F2 = std::function<double(double, double)>;
+
+double gauss2(const F2& f, double u0, double u1, double v0, double v1) {
+  double s = 0;
+  for (int i = 0; i < Gauss::n; ++i)
+    for (int j = 0; j < Gauss::n; ++j) {
+      const double u = 0.5 * (u0 + u1) + 0.5 * (u1 - u0) * gauss.x[i];
+      const double v = 0.5 * (v0 + v1) + 0.5 * (v1 - v0) * gauss.x[j];
+      s += gauss.w[i] * gauss.w[j] * f(u, v);
+    }
+  return s * 0.25 * (u1 - u0) * (v1 - v0);
+}
+
+/// Adaptive tensor Gauss on a rectangle not containing the singular point in its interior.
+double adaptive(const F2& f, double u0, double u1, double v0, double v1, double whole, int depth) {
+  const double um = 0.5 * (u0 + u1), vm = 0.5 * (v0 + v1);
+  const double coarse = gauss2(f, u0, u1, v0, v1);
+  const double fine = gauss2(f, u0, um, v0, vm) + gauss2(f, um, u1, v0, vm) +
+                      gauss2(f, u0, um, vm, v1) + gauss2(f, um, u1, vm, v1);
+  if (std::fabs(fine - coarse) <= 1e-14 * std::fabs(whole) || depth >= 14) return fine;
+  return adaptive(f, u0, um, v0, vm, whole, depth + 1) + adaptive(f, um, u1, v0, vm, whole, depth + 1) +
+         adaptive(f, u0, um, vm, v1, whole, depth + 1) + adaptive(f, um, u1, vm, v1, whole, depth + 1);
+}
+
+/// ∫∫ over [0,U]×[0,V] (U, V > 0) of 1/√(ξ²+η²): the singular point at the corner. Duffy
+/// transformation (M. G. Duffy, SIAM J. Numer. Anal. 19 (1982) 1260–1262) of the two triangles
+/// split by the diagonal: ξ = U s, η = V s t (Jacobian U V s) cancels the 1/r singularity; then
+/// 2-D Gauss in (s, t).
+double corner_integral(double U, double V) {
+  const F2 lower = [&](double s, double t) {
+    const double xi = U * s, eta = V * s * t;
+    return U * V * s / std::sqrt(xi * xi + eta * eta);
+  };
+  const F2 upper = [&](double s, double t) {
+    const double xi = U * s * t, eta = V * s;
+    return U * V * s / std::sqrt(xi * xi + eta * eta);
+  };
+  // The transformed integrands are smooth but peaked near t = 0 (width ~U/V or V/U) for
+  // elongated pieces: adaptive Gauss on the unit square.
+  const double whole = std::sqrt(U * V);
+  return adaptive(lower, 0, 1, 0, 1, whole, 0) + adaptive(upper, 0, 1, 0, 1, whole, 0);
+}
+
+/// Independent quadrature of love_rectangle(x, y, a, b): the rectangle in coordinates relative to
+/// the point, split along the lines through the point; pieces with the point at a corner by
+/// Duffy, the others (point outside, at positive distance) by adaptive Gauss.
+double love_quadrature(double x, double y, double a, double b) {
+  std::vector<double> us = {-a - x}, vs = {-b - y};
+  if (-a - x < 0 && a - x > 0) us.push_back(0.0);
+  if (-b - y < 0 && b - y > 0) vs.push_back(0.0);
+  us.push_back(a - x);
+  vs.push_back(b - y);
+  const F2 kernel = [](double u, double v) { return 1.0 / std::sqrt(u * u + v * v); };
+  const double scale = 4 * a * b / std::sqrt(x * x + y * y + a * a + b * b);
+  double sum = 0;
+  for (std::size_t i = 0; i + 1 < us.size(); ++i)
+    for (std::size_t j = 0; j + 1 < vs.size(); ++j) {
+      const double u0 = us[i], u1 = us[i + 1], v0 = vs[j], v1 = vs[j + 1];
+      const bool corner_u = u0 == 0 || u1 == 0, corner_v = v0 == 0 || v1 == 0;
+      if (corner_u && corner_v)
+        sum += corner_integral(u1 - u0, v1 - v0);
+      else
+        sum += adaptive(kernel, u0, u1, v0, v1, scale, 0);
+    }
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("love_rectangle: closed form at the centre of a square, 8 a asinh(1)", "[influence]") {
+  // Johnson (1985) §3.9 eq. (3.96) at x = y = 0, a = b: 4·(a asinh 1 + a asinh 1).
+  for (double a : {1e-4, 1.0, 3.5}) {
+    INFO("a = " << a);
+    CHECK(mh::love_rectangle(0, 0, a, a) == Approx(8 * a * std::asinh(1.0)).epsilon(1e-15));
+  }
+}
+
+TEST_CASE("love_rectangle: symmetric in x, in y, and under (x,a)<->(y,b)", "[influence]") {
+  const double a = 0.7, b = 0.3;
+  for (double x : {0.0, 0.2, 0.7, 1.9})
+    for (double y : {0.0, 0.1, 0.3, 2.5}) {
+      INFO("x = " << x << ", y = " << y);
+      const double f = mh::love_rectangle(x, y, a, b);
+      // Reflections: bitwise (the four terms are summed in mirror-symmetric pairs).
+      CHECK(mh::love_rectangle(-x, y, a, b) == f);
+      CHECK(mh::love_rectangle(x, -y, a, b) == f);
+      CHECK(mh::love_rectangle(-x, -y, a, b) == f);
+      // Exchange of the axes regroups the sum: equal to rounding (a few ulps).
+      CHECK(mh::love_rectangle(y, x, b, a) == Approx(f).epsilon(1e-14));
+    }
+}
+
+TEST_CASE("love_rectangle agrees with an independent 2-D quadrature (inside, edges, corner, outside)",
+          "[influence]") {
+  const double a = 0.5e-3, b = 0.2e-3;  // a 1 mm × 0.4 mm element
+  struct Point {
+    double x, y;
+    const char* where;
+  };
+  const Point points[] = {
+      {0.0, 0.0, "centre"},          {0.3e-3, 0.1e-3, "inside"},   {-0.45e-3, 0.19e-3, "near corner"},
+      {0.5e-3, 0.0, "edge x = a"},   {0.1e-3, -0.2e-3, "edge y = -b"}, {0.5e-3, 0.2e-3, "corner"},
+      {0.51e-3, 0.05e-3, "just outside"}, {1.3e-3, 0.7e-3, "outside"}, {-4e-3, 2.5e-3, "far outside"},
+  };
+  for (const Point& q : points) {
+    const double closed = mh::love_rectangle(q.x, q.y, a, b);
+    const double quad = love_quadrature(q.x, q.y, a, b);
+    INFO(q.where << ": closed " << closed << " m, quadrature " << quad << " m, rel "
+                 << (closed - quad) / quad);
+    CHECK(closed == Approx(quad).epsilon(1e-12));  // measured ≤ 1.5e-14
+  }
+}
+
+TEST_CASE("love_rectangle: far field tends to area / r", "[influence]") {
+  // Boussinesq: a force p·4ab at distance r gives H p 4ab / r (Johnson §3.2); the relative
+  // correction is O((a/r)²) (second moment of the rectangle), so at r = 1e3 a it is ≲ 1e-6.
+  const double a = 1.0, b = 0.4;
+  for (double r : {1e3, 3e3}) {
+    for (double angle : {0.0, 0.4, 1.2}) {
+      const double x = r * std::cos(angle), y = r * std::sin(angle);
+      INFO("r = " << r << ", angle " << angle);
+      CHECK(mh::love_rectangle(x, y, a, b) == Approx(4 * a * b / r).epsilon(2.0 * (a * a) / (r * r)));
+    }
+  }
+}
+
+TEST_CASE("combined_compliance: (1-nu^2)/(pi E) summed over both bodies", "[influence]") {
+  const double H = mh::combined_compliance(210e9, 0.28, 210e9, 0.28);
+  CHECK(H == Approx(2 * (1 - 0.28 * 0.28) / (pi * 210e9)).epsilon(1e-15));
+  CHECK(mh::combined_compliance(200e9, 0.3, 70e9, 0.33) ==
+        Approx((1 - 0.09) / (pi * 200e9) + (1 - 0.33 * 0.33) / (pi * 70e9)).epsilon(1e-15));
+}
+
+TEST_CASE("InfluenceGrid::apply equals the direct O(n^2) sum", "[influence]") {
+  const double H = mh::combined_compliance(210e9, 0.28, 210e9, 0.28);
+  struct Size {
+    int nx, ny;
+  };
+  for (Size s : {Size{7, 5}, Size{1, 1}, Size{1, 9}, Size{13, 2}}) {
+    const int nx = s.nx, ny = s.ny;
+    const double dx = 0.25e-3, dy = 0.4e-3;
+    mh::InfluenceGrid C(nx, ny, dx, dy, H);
+    CHECK(C.padded_nx() >= 2 * nx - 1);
+    CHECK(C.padded_ny() >= 2 * ny - 1);
+    CHECK(C.self_coefficient() == H * mh::love_rectangle(0, 0, dx / 2, dy / 2));
+
+    // Deterministic pseudo-random pressures (LCG, Knuth MMIX constants), 0…1 GPa.
+    std::vector<double> p(nx * ny), u(nx * ny), direct(nx * ny, 0.0);
+    std::uint64_t state = 12345;
+    for (double& v : p) {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      v = 1e9 * static_cast<double>(state >> 11) / 9007199254740992.0;
+    }
+    for (int i = 0; i < nx * ny; ++i)
+      for (int j = 0; j < nx * ny; ++j)
+        direct[i] += H * mh::love_rectangle((i % nx - j % nx) * dx, (i / nx - j / nx) * dy, dx / 2, dy / 2) * p[j];
+    C.apply(p.data(), u.data());
+    double max_rel = 0, max_u = 0;
+    for (int i = 0; i < nx * ny; ++i) max_u = std::max(max_u, std::fabs(direct[i]));
+    for (int i = 0; i < nx * ny; ++i) max_rel = std::max(max_rel, std::fabs(u[i] - direct[i]) / max_u);
+    INFO(nx << " x " << ny << ": max |u_fft - u_direct| / max|u| = " << max_rel);
+    CHECK(max_rel <= 1e-12);
+
+    // In place (p and u aliased) gives the same bytes.
+    std::vector<double> q = p;
+    C.apply(q.data(), q.data());
+    CHECK(q == u);
+  }
+}
+
+TEST_CASE("InfluenceGrid: moved-to object works, repeated apply is bitwise identical", "[influence]") {
+  const double H = mh::combined_compliance(210e9, 0.28, 210e9, 0.28);
+  mh::InfluenceGrid a(6, 4, 1e-3, 1e-3, H);
+  std::vector<double> p(24, 0.0), u1(24), u2(24);
+  p[7] = 1e9;
+  a.apply(p.data(), u1.data());
+  mh::InfluenceGrid b(std::move(a));
+  b.apply(p.data(), u2.data());
+  CHECK(u1 == u2);
+  CHECK(u1[7] == Approx(1e9 * b.self_coefficient()).epsilon(1e-13));
+  mh::InfluenceGrid c(2, 2, 1e-3, 1e-3, H);
+  c = std::move(b);
+  CHECK(c.nx() == 6);
+  c.apply(p.data(), u2.data());
+  CHECK(u1 == u2);
+}
+
+TEST_CASE("InfluenceGrid rejects invalid grids", "[influence]") {
+  CHECK_THROWS_AS(mh::InfluenceGrid(0, 3, 1e-3, 1e-3, 1e-12), std::invalid_argument);
+  CHECK_THROWS_AS(mh::InfluenceGrid(3, 3, -1e-3, 1e-3, 1e-12), std::invalid_argument);
+  CHECK_THROWS_AS(mh::InfluenceGrid(3, 3, 1e-3, 1e-3, NAN), std::invalid_argument);
+}
