@@ -58,17 +58,36 @@ void hertz_shape_major_x(double A, double B, double* ka, double* kb) {
     ellip_KE(1.0 - k * k, &K, &E);
     return (E / (k * k) - K) / (K - E);
   };
-  // f decreases from +inf (k -> 0) to 1 (k = 1): bisect in log k.
-  double lo = 0.5, hi = 1.0;
-  while (f(lo) < ratio && lo > 1e-300) {
-    hi = lo;
-    lo *= 0.5;
+  // f decreases from +inf (k -> 0) to 1 (k = 1). Root of
+  // phi(u) = ln f(e^u) - ln(B/A) in u = ln k by the Illinois variant of
+  // regula falsi (smooth in u; ~10 evaluations instead of ~50 for bisection).
+  double lo = 0.5;
+  while (f(lo) < ratio && lo > 1e-300) lo *= 0.5;
+  const double lr = std::log(ratio);
+  double ua = std::log(lo), fa = std::log(f(lo)) - lr;  // fa >= 0
+  double ub = 0.0, fb = -lr;                             // k = 1: f = 1 (limit), fb < 0
+  int side = 0;
+  // Stop when the bracket in ln k is this narrow (double precision).
+  constexpr double kUtol = 1e-15;
+  for (int it = 0; it < 200 && ub - ua > kUtol; ++it) {
+    const double uc = (ua * fb - ub * fa) / (fb - fa);
+    if (!(uc > ua && uc < ub)) break;
+    const double fc = std::log(f(std::exp(uc))) - lr;
+    if (fc == 0.0) { ua = ub = uc; break; }
+    if (fc < 0.0) {
+      ub = uc; fb = fc;
+      if (side == -1) fa *= 0.5;
+      side = -1;
+    } else {
+      ua = uc; fa = fc;
+      if (side == 1) fb *= 0.5;
+      side = 1;
+    }
   }
-  for (int it = 0; it < 200; ++it) {
-    const double mid = std::sqrt(lo * hi);
-    if (f(mid) > ratio) lo = mid; else hi = mid;
-    if (hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) break;
-  }
+  // the end of the bracket with the smaller residual
+  const double k_root = std::exp(std::fabs(fa) < std::fabs(fb) ? ua : ub);
+  lo = k_root;
+  double hi = k_root;
   const double k = std::sqrt(lo * hi);
   const double m = 1.0 - k * k;
   double K, E;
@@ -92,12 +111,15 @@ int sgn(double v) { return (v > 0.0) - (v < 0.0); }
 /// F(X) = int_{eta1}^{eta2} d eta / sqrt(X^2 + eta^2) = asinh(eta2/|X|) - asinh(eta1/|X|),
 /// written with logs so that |X| cancels when eta1, eta2 have the same sign.
 double lateral_kernel(double X, double e1, double e2) {
-  auto L = [X](double e) { return std::log(std::fabs(e) + std::hypot(e, X)); };
+  // asinh(e/|X|) = sgn(e) [ln(|e| + sqrt(e^2 + X^2)) - ln|X|]; one log per call.
+  const double X2 = X * X;
+  const double n1 = std::fabs(e1) + std::sqrt(e1 * e1 + X2);
+  const double n2 = std::fabs(e2) + std::sqrt(e2 * e2 + X2);
   const int s1 = sgn(e1), s2 = sgn(e2);
-  double r = s2 * L(e2) - s1 * L(e1);
-  const int net = s2 - s1;
-  if (net != 0) r -= net * std::log(std::fabs(X));
-  return r;
+  if (s1 == s2) return s2 == 0 ? 0.0 : s2 * std::log(n2 / n1);
+  if (s1 == 0) return std::log(n2 / std::fabs(X));     // e1 = 0 < e2
+  if (s2 == 0) return std::log(n1 / std::fabs(X));     // e1 < 0 = e2
+  return std::log(n1 * n2 / X2);                       // e1 < 0 < e2
 }
 
 /// P(X, eta) = int_0^X asinh(eta/|u|) du
@@ -161,14 +183,17 @@ double influence(double X0, double a, double e1, double e2, double rcap,
     const double R = P_rect(X2, e2) - P_rect(X1, e2) - P_rect(X2, e1) + P_rect(X1, e1);
     total += f0 * R;
   }
+  // X0 = 0: F depends on |X| = a |sin theta| and f is even, so the
+  // integrand is even in theta: integrate [0, pi/2] and double.
+  const bool even = X0 == 0.0;
   double br[5];
   int nb = 0;
-  br[nb++] = -0.5 * kPi;
+  br[nb++] = even ? 0.0 : -0.5 * kPi;
   br[nb++] = 0.5 * kPi;
-  if (inside) br[nb++] = std::asin(t0);
+  if (inside && !even) br[nb++] = std::asin(t0);
   if (rcap < 1.0) {
     const double th = std::asin(std::sqrt(1.0 - rcap * rcap));
-    br[nb++] = -th;
+    if (!even) br[nb++] = -th;
     br[nb++] = th;
   }
   std::sort(br, br + nb);
@@ -183,7 +208,7 @@ double influence(double X0, double a, double e1, double e2, double rcap,
       const double X = a * t - X0;
       acc += gw[n] * (fcap(t) - f0) * lateral_kernel(X, e1, e2) * a * std::cos(th);
     }
-    total += acc * half;
+    total += acc * half * (even ? 2.0 : 1.0);
   }
   return total;
 }
@@ -223,6 +248,7 @@ struct Solver {
   StripOptions opt;
   int n;
   std::vector<double> gx, gw;     // Gauss nodes per sub-interval
+  std::vector<double> t_even, c_even;  // tabulated nodes/weights for X0 = 0, uncapped
   std::vector<double> Bloc;       // [1/m] local lateral curvature (g''/2), <= 0: none
   std::vector<double> ka, kb;     // ANALYN Hertz shape per strip (valid where Bloc > 0)
   double gmin = 0.0;
@@ -231,6 +257,13 @@ struct Solver {
   Solver(const StripGeometry& g, double Hc, const StripOptions& o)
       : geo(g), H(Hc), opt(o), n(static_cast<int>(g.s.size())) {
     gauss_legendre(opt.gauss_points / 2, &gx, &gw);
+    // Table for the even, uncapped case (X0 = 0): theta in [0, pi/2],
+    // integrand a cos(theta) (cos(theta) - 1) F(a sin(theta)), doubled.
+    for (std::size_t k = 0; k < gx.size(); ++k) {
+      const double th = 0.25 * kPi * (1.0 + gx[k]);
+      t_even.push_back(std::sin(th));
+      c_even.push_back(2.0 * 0.25 * kPi * gw[k] * std::cos(th) * (std::cos(th) - 1.0));
+    }
     Bloc.assign(n, 0.0);
     ka.assign(n, 0.0);
     kb.assign(n, 0.0);
@@ -350,6 +383,14 @@ struct Solver {
   }
 
   double K_elastic(int i, int j, double aj) const {
+    const double e1 = geo.s[j] - 0.5 * geo.ds - geo.s[i], e2 = geo.s[j] + 0.5 * geo.ds - geo.s[i];
+    if (geo.xc[i] == geo.xc[j] && aj > 0.0) {
+      // Fast path of influence() for X0 = 0, uncapped: same nodes, tabulated.
+      const double R = 2.0 * (P_rect(aj, e2) - P_rect(aj, e1));  // P is odd in X
+      double acc = 0.0;
+      for (std::size_t k = 0; k < t_even.size(); ++k) acc += c_even[k] * lateral_kernel(aj * t_even[k], e1, e2);
+      return H * (R + aj * acc);
+    }
     return H * influence(geo.xc[i] - geo.xc[j], aj, geo.s[j] - 0.5 * geo.ds - geo.s[i],
                          geo.s[j] + 0.5 * geo.ds - geo.s[i], 1.0, gx, gw);
   }

@@ -433,12 +433,15 @@ TEST_CASE("timing: ~50-strip patch", "[strips][timing]") {
   const HertzRef h = hertz_ref(1.0 / (2.0 * R), 0.5 / (2.0 * R), N, kEstar);
   const double ds = 2.0 * h.b / 50;
   const auto geo = ellipse_geometry(1.0 / (2.0 * R), 0.5 / (2.0 * R), ds, 2 * (int)(1.6 * h.b / ds) + 1);
-  const int reps = 20;
-  const auto t0 = std::chrono::steady_clock::now();
+  const int reps = 30;
+  double ms = 1e300;  // best of reps: the machine is shared
   mh::StripResult r;
-  for (int k = 0; k < reps; ++k) r = mh::solve_strips_load(geo, kH, N, INFINITY);
-  const auto t1 = std::chrono::steady_clock::now();
-  const double ms = std::chrono::duration<double, std::milli>(t1 - t0).count() / reps;
+  for (int k = 0; k < reps; ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    r = mh::solve_strips_load(geo, kH, N, INFINITY);
+    const auto t1 = std::chrono::steady_clock::now();
+    ms = std::min(ms, std::chrono::duration<double, std::milli>(t1 - t0).count());
+  }
   std::printf("  timing: %zu loaded strips, %d delta iterations, %.3f ms per load-controlled solve\n",
               r.strips.size(), r.iterations, ms);
   CHECK(r.status == mh::StripStatus::Ok);
