@@ -10,6 +10,12 @@
 // Boussinesq influence matrix (Johnson, Contact Mechanics §3.2), an active set
 // for q >= 0, an optional plastic cap p_lim, and load control on the approach.
 //
+// Interpretation used for the extent estimates: within a lateral band the
+// approach is measured from the band's deepest gap g0 (delta_b = delta - g0,
+// gaps g - g0). For a band touching g = 0 this is the specification verbatim;
+// for a shallower band it keeps both estimates exact for an elliptic patch.
+// The collocation right-hand side is always the absolute delta - h(c_i, s_i).
+//
 // Units: SI throughout (m, Pa, N). Never throws on numerical trouble; the
 // result carries a status.
 #pragma once
@@ -34,19 +40,22 @@ struct StripOptions {
   /// Gauss–Legendre points along x per strip for the influence matrix K_ij.
   /// The x-range of a strip is split at the collocation abscissa (where the
   /// kernel is singular/peaked), each side gets gauss_points/2 points in the
-  /// variable theta (x = c + a sin theta). 16 (8 per side) keeps the
-  /// influence coefficients within ~1e-4 relative of a brute-force 2-D
-  /// quadrature for strips up to ~50 widths long (see test [strips] "self
-  /// term"), at ~1 ms per 50-strip patch. Must be even and >= 2.
+  /// variable theta (x = c + a sin theta), after subtracting the closed-form
+  /// integral of the constant part. 16 (8 per side) keeps the influence
+  /// coefficients within 1.4e-4 relative of a brute-force 2-D quadrature
+  /// (self term, neighbours, strips 4 to 40 widths long; test "strip influence
+  /// matches brute-force"), which is far below the discretisation error of
+  /// the strips themselves; a 49-strip load-controlled solve then takes
+  /// ~1.5 ms (4 approach iterations, -O2). Must be even and >= 2.
   int gauss_points = 16;
   double load_rtol = 1e-8;   ///< load control: stop when |N - N_target| <= load_rtol * N_target
   int max_iterations = 60;   ///< maximum approach (delta) iterations in load control
   int max_active_set = 50;   ///< maximum active-set passes (q >= 0) and plastic-set passes each
   /// A strip whose amplitude exceeds every neighbour's (within its band) by
-  /// more than this factor is flagged as an outlier (not capped). 3: an
-  /// elliptic patch has neighbour ratios close to 1 except at the very tip,
-  /// where the ratio of adjacent sqrt(1-y^2/b^2) samples stays well below 3
-  /// for >= 10 strips across.
+  /// more than this factor is flagged as an outlier (not capped). 3: in an
+  /// elliptic patch adjacent amplitudes ~ sqrt(1 - y^2/b^2) differ by far less
+  /// than 3x unless a strip centre lies (within round-off) on the tip y = b,
+  /// where the extent is ~0 while delta - g > 0 — the failure mode to flag.
   double outlier_factor = 3.0;
   /// Elastic coupling between strips. false keeps only the diagonal of K
   /// (each strip sees only its own pressure) — for diagnostics and tests.
