@@ -655,8 +655,19 @@ StripResult solve_strips_load(const StripGeometry& geo, double H, double Nt, dou
     }
     const double psi = std::cbrt(N * N) - psi_t;
     if (std::fabs(N - Nt) <= opt.load_rtol * Nt) return r;
-    best = r;
+    if (it == 1 || std::fabs(N - Nt) < std::fabs(best.N - Nt)) best = r;  // closest so far
     if (N < Nt) lo = std::max(lo, d); else hi = std::min(hi, d);
+    // Bracket collapsed to adjacent doubles: N(delta) jumps across the target
+    // (e.g. the plastic set changes its capping order there).
+    if (std::isfinite(hi) && hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) {
+      best.status = StripStatus::NotConverged;
+      std::ostringstream os;
+      os << "N(delta) jumps across the target at delta = " << hi << " m (closest N = " << best.N
+         << " N); returned the closest iterate";
+      best.message = os.str();
+      best.iterations = it;
+      return best;
+    }
     double next = std::numeric_limits<double>::quiet_NaN();
     if (psi != psi_prev) next = d - psi * (d - d_prev) / (psi - psi_prev);
     if (!(next > lo && next < hi)) {
@@ -667,7 +678,8 @@ StripResult solve_strips_load(const StripGeometry& geo, double H, double Nt, dou
     d = next;
   }
   best.status = StripStatus::NotConverged;
-  best.message = "load not reached within max_iterations";
+  best.message = "load not reached within max_iterations; returned the closest iterate";
+  best.iterations = opt.max_iterations;
   return best;
 }
 
