@@ -85,8 +85,10 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   std::string why;
   if (!opt.valid(&why)) throw InputError("geometry options", "", why);
   ContactGeometry G;
-  const ProfileCurve W(wheel, opt.curve);
-  const ProfileCurve R(rail, opt.curve);
+  G.wheel_curve = std::make_shared<const ProfileCurve>(wheel, opt.curve);
+  G.rail_curve = std::make_shared<const ProfileCurve>(rail, opt.curve);
+  const ProfileCurve& W = *G.wheel_curve;
+  const ProfileCurve& R = *G.rail_curve;
   G.wheel_window = W.window_used();
   G.rail_window = R.window_used();
 
@@ -181,6 +183,8 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   // the main one, else the main strip of the ellipse's t_Y nearest to this t_Y (method.md §3.6).
   const double r0 = track.nominal_radius;
   const double zw0 = W.z(0.0);
+  G.nominal_radius = r0;
+  G.wheel_z0 = zw0;
   const std::size_t ne = G.ellipses.size();
   G.table.resize(nt * ne);
   for (std::size_t k = 0; k < nt; ++k) {

@@ -4,6 +4,7 @@
 // every t_Y of a fine grid the candidate of every potential ellipse. Built once per profile pair;
 // every case of a sweep only interpolates these tables (it never rescans the profiles).
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,11 @@ class ContactGeometry {
   double y_offset = 0;                   ///< [m] rail y of the wheel's origin (taping line) at t_Y = 0
   double rail_gauge_y = 0;               ///< [m] gauge point of the rail (rail frame)
   double wheel_window = 0, rail_window = 0;  ///< [m] curvature fit windows used (profile_curve.hpp)
+  /// The smooth profiles the tables were built from, kept for the 3-D gap of the grid methods
+  /// (geometry/gap.hpp): wheel in its own frame, rail with its inclination.
+  std::shared_ptr<const ProfileCurve> wheel_curve, rail_curve;
+  double nominal_radius = 0;             ///< [m] wheel radius at the taping line (y_w = 0)
+  double wheel_z0 = 0;                   ///< [m] smoothed wheel height at y_w = 0 (r(y_w) = R0 − (z_w(y_w) − z0))
 
   std::size_t n_ellipses() const { return ellipses.size(); }
   const CandidateGeom& at(std::size_t k, std::size_t e) const { return table[k * ellipses.size() + e]; }

@@ -13,6 +13,7 @@
 #include "profile/profile.hpp"
 #include "profile/read.hpp"
 #include "contact/multi_hertz.hpp"
+#include "contact/solve.hpp"
 
 namespace mh {
 
@@ -60,7 +61,10 @@ struct CaseFile {
   Material material;
   Model model = Model::Elastic;
   Method method = Method::MultiHertzian;  ///< "method" (default multi-hertzian)
-  SolverOptions solver;
+  SolverOptions solver;                   ///< "solver": the multi-Hertzian iteration
+  HalfSpaceOptions half_space;            ///< "half_space": grid and tolerances of the half-space method
+  /// The options of the case's method, for solve_method().
+  MethodOptions method_options() const { return {method, solver, half_space}; }
   /// Either a cartesian sweep (t_Y outer, Q inner: case i has tY[i / nQ], Q[i % nQ]) ...
   SweepAxis sweep_tY_mm, sweep_Q_kN;  ///< as given, in mm and kN
   /// ... or an explicit list.

@@ -29,21 +29,22 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   const std::uint64_t end = n_pairs * opt.shard_index / opt.shard_count;
   const CaseFile shared = pair_case(m, 0);  // validated already: the sweep and the model
   const bool plastic = shared.model == Model::Plastic;
+  const Method M = shared.method;
   const int np = opt.pressure_grid;
   ensure_directory(opt.out_dir);
   std::unique_ptr<OutputFile> fc, fe, fp, fpp, fj;
   std::unique_ptr<JsonObjectStream> jw;
   if (opt.csv) {
     fc = std::make_unique<OutputFile>(opt.out_dir + "/cases.csv");
-    fe = std::make_unique<OutputFile>(opt.out_dir + "/ellipses.csv");
+    fe = std::make_unique<OutputFile>(opt.out_dir + "/" + contact_table_name(M));
     fpp = std::make_unique<OutputFile>(opt.out_dir + "/pairs.csv");
     fc->stream() << "pair," << cases_csv_header();
-    fe->stream() << "pair," << ellipses_csv_header(plastic);
+    fe->stream() << "pair," << contact_table_header(M, plastic);
     fpp->stream() << "pair,name,wheel,rail,status,n_ellipses,wheel_sha256,rail_sha256,message\n";
   }
   if (np) {
     fp = std::make_unique<OutputFile>(opt.out_dir + "/pressure.csv");
-    fp->stream() << "pair," << pressure_csv_header(plastic);
+    fp->stream() << "pair," << pressure_table_header(M, plastic);
   }
   if (opt.json) {
     fj = std::make_unique<OutputFile>(opt.out_dir + "/results.json");

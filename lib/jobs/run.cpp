@@ -74,6 +74,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   const ContactGeometry& G = pg.geo;
   if (!opt.quiet) warn_profiles(pg, err);
   const bool plastic = cf.model == Model::Plastic;
+  const Method M = cf.method;
   const bool to_stdout = opt.out_dir == "-";
   const bool want_csv = opt.csv && !to_stdout;
   const bool want_json = opt.json || to_stdout;
@@ -88,13 +89,13 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     ensure_directory(opt.out_dir);
     if (np) {
       fp = std::make_unique<OutputFile>(opt.out_dir + "/pressure.csv");
-      fp->stream() << pressure_csv_header(plastic);
+      fp->stream() << pressure_table_header(M, plastic);
     }
     if (want_csv) {
       fc = std::make_unique<OutputFile>(opt.out_dir + "/cases.csv");
-      fe = std::make_unique<OutputFile>(opt.out_dir + "/ellipses.csv");
+      fe = std::make_unique<OutputFile>(opt.out_dir + "/" + contact_table_name(M));
       fc->stream() << cases_csv_header();
-      fe->stream() << ellipses_csv_header(plastic);
+      fe->stream() << contact_table_header(M, plastic);
     }
     if (want_json) fj = std::make_unique<OutputFile>(opt.out_dir + "/results.json");
   }

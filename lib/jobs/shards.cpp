@@ -111,7 +111,11 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
   const std::uint64_t failed = summary.value("failed", std::uint64_t{0}) + summary.value("invalid_pairs", std::uint64_t{0});
   const bool csv = shards[0].meta["csv"], json = shards[0].meta["json"], pressure = shards[0].meta["pressure"];
   std::vector<std::string> tables;
-  if (csv) tables = {"cases.csv", "ellipses.csv"};
+  if (csv) {
+    // The per-contact table: ellipses.csv (multi-Hertzian) or patches.csv (grid methods).
+    const bool patches = std::ifstream(shards[0].dir + "/patches.csv").good();
+    tables = {"cases.csv", patches ? "patches.csv" : "ellipses.csv"};
+  }
   if (csv && batch) tables.push_back("pairs.csv");
   if (pressure) tables.push_back("pressure.csv");
   for (const auto& t : tables) {

@@ -4,7 +4,7 @@
 #include <thread>
 #include <vector>
 
-#include "contact/multi_hertz.hpp"
+#include "contact/solve.hpp"
 #include "output/case_tables.hpp"
 
 namespace mh {
@@ -26,6 +26,9 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   const bool plastic = cf.model == Model::Plastic;
   const bool want_csv = out.cases != nullptr, want_json = out.json != nullptr;
   const int np = out.pressure ? opt.pressure_grid : 0;
+  MethodOptions mo = cf.method_options();
+  mo.half_space.keep_pressure = np > 0;
+  const bool grid_method = mo.method != Method::MultiHertzian;
   const std::uint64_t n = end - first;
   const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
   const std::size_t chunk = std::max<std::size_t>(opt.chunk, 1);
@@ -39,7 +42,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
         const CasePoint cp = cf.case_at(c0 + i);
         CaseResult r;
         try {
-          r = solve_case(G, cf.material, cp.tY, cp.Q, cf.solver);
+          r = solve_method(G, cf.material, cp.tY, cp.Q, mo);
         } catch (const std::exception& ex) {
           // Never let one case end the sweep (or a worker thread): report it in its row.
           r = CaseResult{};
@@ -48,7 +51,12 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
         }
         status[i] = r.status;
         format_case(c0 + i, cp, r, plastic, want_csv, want_json, fmt[i]);
-        if (np) format_pressure(c0 + i, r, cf.material, plastic, np, fmt[i].pressure);
+        if (grid_method) {
+          if (want_csv) format_patches(c0 + i, cp, r, plastic, fmt[i].ellipses);
+          if (np) format_patch_pressure(c0 + i, r, fmt[i].pressure);
+        } else if (np) {
+          format_pressure(c0 + i, r, cf.material, plastic, np, fmt[i].pressure);
+        }
       }
     };
     const unsigned nt = static_cast<unsigned>(std::min<std::size_t>(threads, m));

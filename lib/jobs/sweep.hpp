@@ -35,7 +35,7 @@ struct RunOptions {
 /// Where the formatted rows go; `prefix` is put in front of every CSV line (the batch's "pair,").
 struct Sinks {
   std::ostream* cases = nullptr;
-  std::ostream* ellipses = nullptr;
+  std::ostream* ellipses = nullptr;  ///< ellipses.csv (multi-Hertzian) or patches.csv (grid methods)
   std::ostream* pressure = nullptr;
   JsonObjectStream* json = nullptr;  ///< with its case array open
   std::string prefix;

@@ -103,7 +103,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; num(s, r.approach * units::per_mm);
     s += ','; append_number(s, static_cast<long long>(r.iterations));
     s += ','; num(s, r.residual);
-    s += ','; append_number(s, static_cast<long long>(r.loaded.size()));
+    s += ','; append_number(s, static_cast<long long>(r.n_contacts));
     s += ','; num(s, r.Fz / units::kN);
     s += ','; num(s, r.Fy / units::kN);
     s += ','; num(s, r.pmax / units::MPa);
@@ -140,7 +140,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     j["approach_mm"] = jv(r.approach * units::per_mm);
     j["iterations"] = r.iterations;
     j["residual"] = jv(r.residual);
-    j["n_contacts"] = r.loaded.size();
+    j["n_contacts"] = r.n_contacts;
     j["Fz_kN"] = jv(r.Fz / units::kN);
     j["Fy_kN"] = jv(r.Fy / units::kN);
     j["pmax_MPa"] = jv(r.pmax / units::MPa);
@@ -163,6 +163,72 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     f.json = j.dump();
   }
 }
+
+void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, bool plastic, std::string& s) {
+  s.clear();
+  for (const PatchResult& P : r.patches) {
+    append_number(s, static_cast<long long>(idx));
+    s += ','; num(s, cp.tY_mm);
+    s += ','; num(s, cp.Q_kN);
+    s += ','; append_number(s, static_cast<long long>(P.patch));
+    s += ','; num(s, P.y_r * units::per_mm);
+    s += ','; num(s, P.z_r * units::per_mm);
+    s += ','; num(s, P.y_w * units::per_mm);
+    s += ','; num(s, P.gamma / units::deg);
+    s += ','; num(s, P.N / units::kN);
+    s += ','; num(s, P.pmax / units::MPa);
+    s += ','; num(s, P.area * units::per_mm2);
+    s += ','; num(s, P.length_x * units::per_mm);
+    s += ','; num(s, P.width_s * units::per_mm);
+    s += ','; num(s, P.approach * units::per_mm);
+    s += ','; num(s, P.x_centroid * units::per_mm);
+    s += ','; num(s, P.s_centroid * units::per_mm);
+    s += ','; append_number(s, static_cast<long long>(P.n_elements));
+    s += ','; append_number(s, static_cast<long long>(P.iterations));
+    if (plastic) {
+      s += ','; num(s, P.plastic_area * units::per_mm2);
+      s += ','; num(s, P.capped_load / units::kN);
+    }
+    s += '\n';
+  }
+}
+
+void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& s) {
+  s.clear();
+  for (const PatchResult& P : r.patches) {
+    const double c = std::cos(P.gamma);
+    for (int j = 0; j < P.ns; ++j)
+      for (int i = 0; i < P.nx; ++i) {
+        const double p = P.p[static_cast<std::size_t>(i + P.nx * j)];
+        if (!(p > 0)) continue;
+        const double x = P.x0 + i * P.dx, sp = P.s0 + j * P.ds;
+        append_number(s, static_cast<long long>(idx));
+        s += ','; append_number(s, static_cast<long long>(P.patch));
+        s += ','; num(s, x * units::per_mm);
+        s += ','; num(s, sp * units::per_mm);
+        s += ','; num(s, (P.y_r + sp * c) * units::per_mm);
+        s += ','; num(s, p / units::MPa);
+        s += '\n';
+      }
+  }
+}
+
+std::string patches_csv_header(bool plastic) {
+  std::string s = "case,tY_mm,Q_kN,patch,y_rail_mm,z_rail_mm,y_wheel_mm,gamma_deg,N_kN,pmax_MPa,area_mm2,"
+                  "length_x_mm,width_s_mm,approach_mm,x_centroid_mm,s_centroid_mm,n_elements,iterations";
+  if (plastic) s += ",plastic_area_mm2,capped_load_kN";
+  return s + "\n";
+}
+
+const char* contact_table_name(Method m) { return m == Method::MultiHertzian ? "ellipses.csv" : "patches.csv"; }
+std::string contact_table_header(Method m, bool plastic) {
+  return m == Method::MultiHertzian ? ellipses_csv_header(plastic) : patches_csv_header(plastic);
+}
+std::string pressure_table_header(Method m, bool plastic) {
+  return m == Method::MultiHertzian ? pressure_csv_header(plastic) : patch_pressure_csv_header();
+}
+
+std::string patch_pressure_csv_header() { return "case,patch,x_mm,s_mm,y_rail_mm,p_MPa\n"; }
 
 std::string cases_csv_header() {
   return "case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,"

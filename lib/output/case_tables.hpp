@@ -12,7 +12,7 @@ namespace mh {
 
 /// One case's rows, formatted.
 struct Formatted {
-  std::string cases, ellipses, json, pressure;
+  std::string cases, ellipses, patches, json, pressure;
 };
 
 /// Format case `idx` (its sweep point `cp`, its result `r`) into f.cases/f.ellipses (CSV rows)
@@ -27,7 +27,20 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
 void format_pressure(std::uint64_t idx, const CaseResult& r, const Material& mat, bool plastic, int N,
                      std::string& s);
 
+/// patches.csv rows of a grid method's case (one row per contact patch), into `s`.
+void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, bool plastic, std::string& s);
+/// The element pressures of every patch of a grid method's case (elements in contact only), into
+/// `s` (pressure.csv rows of the grid methods).
+void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& s);
+
 /// The column names of the tables (README "Output tables").
+std::string patches_csv_header(bool plastic);
+/// The per-contact table of a method: "ellipses.csv" (multi-Hertzian) or "patches.csv" (grid
+/// methods), its header, and the header of its pressure.csv.
+const char* contact_table_name(Method m);
+std::string contact_table_header(Method m, bool plastic);
+std::string pressure_table_header(Method m, bool plastic);
+std::string patch_pressure_csv_header();
 std::string cases_csv_header();
 std::string ellipses_csv_header(bool plastic);
 std::string pressure_csv_header(bool plastic);

@@ -1,0 +1,114 @@
+#include "geometry/gap.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mh {
+
+namespace {
+constexpr double kSampleStep = 0.01e-3;  // [m] sampling of g(y) for its minimum (then refined)
+constexpr int kNewtonIterations = 8;     // normal-line intersections converge in 2–4
+constexpr double kNewtonTol = 1e-13;     // [m]
+}  // namespace
+
+WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY)
+    : W_(G.wheel_curve.get()), R_(G.rail_curve.get()), shift_(G.y_offset + tY),
+      R0_(G.nominal_radius), z0_(G.wheel_z0) {
+  y0_ = std::max(R_->y_min(), W_->y_min() + shift_);
+  y1_ = std::min(R_->y_max(), W_->y_max() + shift_);
+  // Minimum of the raw gap: sampled, then refined by a parabola through the best sample.
+  const int n = std::max(3, static_cast<int>((y1_ - y0_) / kSampleStep));
+  const double h = (y1_ - y0_) / n;
+  auto raw = [&](double y) { return W_->z(y - shift_) - R_->z(y); };
+  int best = 0;
+  double gb = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= n; ++i) {
+    const double v = raw(y0_ + h * i);
+    if (v < gb) { gb = v; best = i; }
+  }
+  y_contact_ = y0_ + h * best;
+  if (best > 0 && best < n) {
+    const double gl = raw(y_contact_ - h), gr = raw(y_contact_ + h);
+    const double den = gl - 2 * gb + gr;
+    if (den > 0) {
+      const double t = std::clamp(0.5 * (gl - gr) / den, -1.0, 1.0);
+      y_contact_ += t * h;
+      gb = std::min(gb, raw(y_contact_));
+    }
+  }
+  gmin_ = gb;
+}
+
+double WheelRailGap::g(double y) const { return W_->z(y - shift_) - R_->z(y) - gmin_; }
+
+double WheelRailGap::z_rail(double y, double* slope) const { return R_->z(y, slope); }
+
+double WheelRailGap::rolling_radius(double y) const { return R0_ - (W_->z(y - shift_) - z0_); }
+
+double WheelRailGap::z_wheel(double y, double x, double* slope) const {
+  double dw = 0;
+  const double zw = W_->z(y - shift_, &dw) - gmin_;
+  const double r = R0_ - (zw + gmin_ - z0_);
+  const double root = std::sqrt(std::max(r * r - x * x, 0.0));
+  if (slope) *slope = root > 0 ? dw * r / root : dw;  // d/dy [z_w + r − √(r² − x²)], dr/dy = −z_w'
+  return zw + r - root;
+}
+
+std::vector<std::pair<double, double>> WheelRailGap::interpenetration(double dz, double step) const {
+  std::vector<std::pair<double, double>> out;
+  const int n = std::max(2, static_cast<int>(std::ceil((y1_ - y0_) / step)));
+  const double h = (y1_ - y0_) / n;
+  bool in = false;
+  double a = 0, prev_y = y0_, prev_v = g(y0_) - dz;
+  if (prev_v < 0) { in = true; a = y0_; }
+  for (int i = 1; i <= n; ++i) {
+    const double y = y0_ + h * i, v = g(y) - dz;
+    if (!in && v < 0) {  // entering: interpolate the crossing
+      a = prev_y + h * prev_v / (prev_v - v);
+      in = true;
+    } else if (in && v >= 0) {
+      out.emplace_back(a, prev_y + h * prev_v / (prev_v - v));
+      in = false;
+    }
+    prev_y = y;
+    prev_v = v;
+  }
+  if (in) out.emplace_back(a, y1_);
+  return out;
+}
+
+PatchPlane plane_at(const WheelRailGap& gap, double y_ref) {
+  PatchPlane P;
+  double slope = 0;
+  P.y_ref = y_ref;
+  P.z_ref = gap.z_rail(y_ref, &slope);
+  P.gamma = std::atan(slope);
+  return P;
+}
+
+double normal_gap(const WheelRailGap& gap, const PatchPlane& P, double x, double s, double dz, double* y_rail) {
+  const double c = std::cos(P.gamma), sn = std::sin(P.gamma);
+  const double qy = P.y_ref + s * c, qz = P.z_ref + s * sn;
+  // Distance h along n = (−sin γ, cos γ) from the plane point to a surface z = f(y):
+  // F(h) = qz + h cos γ − f(qy − h sin γ) = 0, Newton (F' = cos γ + f' sin γ > 0 near contact).
+  auto intersect = [&](auto&& f) {
+    double h = 0;
+    for (int it = 0; it < kNewtonIterations; ++it) {
+      double d = 0;
+      const double F = qz + h * c - f(qy - h * sn, &d);
+      const double dF = c + d * sn;
+      if (!(std::fabs(dF) > 1e-12)) break;
+      const double step = F / dF;
+      h -= step;
+      if (std::fabs(step) < kNewtonTol) break;
+    }
+    return h;
+  };
+  const double h_r = intersect([&](double y, double* d) { return gap.z_rail(y, d); });
+  const double h_w = intersect([&](double y, double* d) { return gap.z_wheel(y, x, d) - dz; });
+  if (y_rail) *y_rail = qy - h_r * sn;
+  return h_w - h_r;
+}
+
+}  // namespace mh

@@ -1,0 +1,65 @@
+#pragma once
+// The undeformed gap between wheel and rail at one lateral position t_Y, in three dimensions, for
+// the grid methods (half-space, strips; docs/method.md §8). Built from the smooth profiles kept by
+// ContactGeometry. Rail frame: y lateral towards the field side, z up, x the rolling direction.
+// The wheel is a body of revolution about the axle (radius r(y) from the nominal radius and the
+// profile), placed at its first-contact height, with no roll and no yaw; the rail is straight in x.
+#include <utility>
+#include <vector>
+
+#include "geometry/contact_geometry.hpp"
+
+namespace mh {
+
+class WheelRailGap {
+ public:
+  /// Precondition: G was built by build_geometry (it keeps the smooth profiles).
+  WheelRailGap(const ContactGeometry& G, double tY);
+
+  /// [m] the rail-y range where both profiles exist.
+  double y_min() const { return y0_; }
+  double y_max() const { return y1_; }
+  /// [m] vertical gap z_w(y) − z_r(y) at rail y, x = 0; 0 at first contact, ≥ 0 elsewhere.
+  double g(double y) const;
+  /// [m] rail y of first contact (the minimum of g).
+  double y_first_contact() const { return y_contact_; }
+  /// Rail height [m] and slope dz/dy at rail y.
+  double z_rail(double y, double* slope = nullptr) const;
+  /// Wheel surface height [m] at rail y and rolling coordinate x (first-contact position) and its
+  /// slope dz/dy: z_w(y) + r(y) − √(r(y)² − x²).
+  double z_wheel(double y, double x, double* slope = nullptr) const;
+  /// [m] wheel rolling radius at rail y.
+  double rolling_radius(double y) const;
+  /// [m] wheel-profile lateral coordinate facing rail y.
+  double y_wheel(double y) const { return y - shift_; }
+  /// Intervals [a, b] of rail y where g(y) < dz (the interpenetration of a rigid vertical approach
+  /// dz), found on a sampling of step `step` [m], in increasing y.
+  std::vector<std::pair<double, double>> interpenetration(double dz, double step) const;
+
+ private:
+  const ProfileCurve* W_;
+  const ProfileCurve* R_;
+  double shift_ = 0;   // rail y − wheel y
+  double gmin_ = 0;    // minimum of z_w − z_r before normalisation
+  double R0_ = 0, z0_ = 0;
+  double y0_ = 0, y1_ = 0, y_contact_ = 0;
+};
+
+/// A contact patch's tangent plane (CONTACT's planar contact approach): tangent to the rail at
+/// the reference point (y_ref, z_ref), at the contact angle γ = atan(dz_r/dy) there. Plane
+/// coordinates: x (rolling), s (lateral in the plane, towards the field side); normal n =
+/// (−sin γ, cos γ) in (y, z), pointing into the wheel.
+struct PatchPlane {
+  double y_ref = 0, z_ref = 0, gamma = 0;
+};
+PatchPlane plane_at(const WheelRailGap& gap, double y_ref);
+
+/// [m] the undeformed distance between rail and wheel along the plane normal through plane point
+/// (x, s), with the wheel lowered by `dz` [m] from its first-contact position (negative: the
+/// surfaces interpenetrate there); `y_rail` receives the rail y hit by that normal. The wheel moves
+/// vertically, not along the normal: in a conformal flange contact its lateral component in the
+/// plane (dz sin γ) changes the shape of the interpenetration, not only its depth.
+double normal_gap(const WheelRailGap& gap, const PatchPlane& P, double x, double s, double dz = 0,
+                  double* y_rail = nullptr);
+
+}  // namespace mh
