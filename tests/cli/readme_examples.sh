@@ -16,6 +16,9 @@ set -x
 ./build/mhcontact run cases/manchester.json -o out/manchester
 ./build/mhcontact run cases/manchester-plastic.json -o out/mp --pressure-grid 21
 ./build/mhcontact geometry cases/manchester.json -o out/geo
+# The half-space method
+./build/mhcontact run cases/manchester-halfspace.json -o out/manchester-halfspace
+test "$(wc -l < out/manchester-halfspace/patches.csv)" -eq 18
 # Profiles
 ./build/mhcontact profile info profiles/MBench_S1002_v3.prw
 ./build/mhcontact profile info profiles/MBench_UIC60_v3.prr --json
