@@ -1,0 +1,96 @@
+#include "contact/patch_driver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mh {
+
+PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,
+                                const PatchSolverFactory& make) {
+  PatchDriverResult R;
+  double dz_ref = dz_est, dz = dz_est;
+  bool settled = false;
+  for (int pass = 0; pass < opt.max_passes && !settled; ++pass) {
+    ++R.passes;
+    R.status = CaseStatus::Ok;
+    R.message.clear();
+    R.regions = find_patch_regions(gap, dz_ref, opt.margin * dz_ref, opt.d_comb);
+    R.solvers.clear();
+    for (const auto& reg : R.regions) {
+      std::string why;
+      auto s = make(reg, dz_ref, &why);
+      if (!s) {
+        R.status = CaseStatus::NotConverged;
+        R.message = why;
+        return R;
+      }
+      R.solvers.push_back(std::move(s));
+    }
+    if (R.solvers.empty()) {
+      R.status = CaseStatus::NotConverged;
+      R.message = "no interpenetration region found";
+      return R;
+    }
+    // F(δz) − Q with δ_k = δz cos γ_k (eqs. 10–11).
+    auto force = [&](double z) {
+      double F = 0;
+      for (std::size_t k = 0; k < R.solvers.size(); ++k) {
+        const double c = std::cos(R.regions[k].P.gamma);
+        F += R.solvers[k]->at_approach(z * c) * c;
+        ++R.evaluations;
+      }
+      return F - Q;
+    };
+    if (R.solvers.size() == 1) {
+      const double c = std::cos(R.regions[0].P.gamma);
+      dz = R.solvers[0]->at_load(Q / c) / c;  // load control inside the one patch
+      ++R.evaluations;
+    } else {
+      // Bracketed secant (Illinois) on δz from the estimate.
+      int outer = 0;
+      double lo = 0, Flo = -Q, hi = dz_ref, Fhi = force(hi);
+      ++outer;
+      while (Fhi < 0 && outer < opt.max_outer) {
+        lo = hi; Flo = Fhi;
+        hi *= 1.5;
+        Fhi = force(hi);
+        ++outer;
+      }
+      int side = 0;
+      dz = hi;
+      double Fz = Fhi;
+      while (std::fabs(Fz) > opt.force_rtol * Q && outer < opt.max_outer && hi - lo > 1e-15) {
+        double z = (lo * Fhi - hi * Flo) / (Fhi - Flo);
+        if (!(z > lo && z < hi)) z = 0.5 * (lo + hi);
+        Fz = force(z);
+        ++outer;
+        dz = z;
+        if (Fz > 0) { hi = z; Fhi = Fz; if (side == 1) Flo *= 0.5; side = 1; }
+        else { lo = z; Flo = Fz; if (side == -1) Fhi *= 0.5; side = -1; }
+      }
+      if (std::fabs(Fz) > opt.force_rtol * Q) {
+        R.status = CaseStatus::NotConverged;
+        R.message = "force balance not reached in " + std::to_string(outer) + " iterations on the approach";
+      }
+    }
+    bool outgrown = false;
+    for (const auto& s : R.solvers) {
+      if (s->failed()) { R.status = CaseStatus::NotConverged; R.message = s->why(); }
+      outgrown = outgrown || s->outgrown();
+    }
+    if (outgrown || dz > opt.margin * dz_ref || std::fabs(dz - dz_ref) > opt.ref_rtol * dz) {
+      dz_ref = outgrown ? std::max(dz, dz_ref) * 1.3 : dz;
+      continue;
+    }
+    settled = true;
+  }
+  R.dz = dz;
+  if (!settled) {
+    R.status = CaseStatus::NotConverged;
+    R.message = "the contact patches did not settle (edge reached or planes moving) after " +
+                std::to_string(opt.max_passes) + " placements";
+  }
+  return R;
+}
+
+}  // namespace mh

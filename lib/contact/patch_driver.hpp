@@ -1,0 +1,62 @@
+#pragma once
+// The case loop shared by the grid methods (half-space §8, strips §9 of docs/method.md): place the
+// contact patches and their planes (geometry/contact_patches.hpp), let a method-specific solver
+// work on each patch, and close the vertical force balance Σ_k N_k cos γ_k = Q (eq. 10) with one
+// rigid vertical approach δz shared by all patches (δ_k = δz cos γ_k, eq. 11). Patches are placed
+// again when the contact outgrows what was set up, or when the solution's approach differs from
+// the approach the planes were placed for by more than ref_rtol.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/case_result.hpp"
+#include "geometry/contact_patches.hpp"
+
+namespace mh {
+
+/// One patch's solver. Its gap is the undeformed normal gap with the wheel at the approach the
+/// patch was set up for (dz_ref), shifted so that δ = dz cos γ reproduces it at dz = dz_ref.
+class PatchSolver {
+ public:
+  virtual ~PatchSolver() = default;
+  /// Approach control: solve at normal approach δ [m]; returns the patch's normal force [N].
+  virtual double at_approach(double delta) = 0;
+  /// Load control: solve for normal force N [N]; returns the normal approach δ [m].
+  virtual double at_load(double N) = 0;
+  /// The last solve did not converge (message in why()).
+  virtual bool failed() const = 0;
+  virtual std::string why() const = 0;
+  /// The last solution reaches the edge of what was set up (grid or strips): set up larger.
+  virtual bool outgrown() const = 0;
+};
+
+/// Builds the solver of one patch (region, plane) for the wheel at vertical approach dz_ref.
+/// Returns nullptr and sets *why when the patch cannot be set up (e.g. too many elements).
+using PatchSolverFactory =
+    std::function<std::unique_ptr<PatchSolver>(const PatchRegion& region, double dz_ref, std::string* why)>;
+
+struct PatchDriverOptions {
+  double d_comb = 8e-3;     ///< [m] regions closer than this are one patch
+  double margin = 1.25;     ///< patches cover the interpenetration at margin × the approach
+  double ref_rtol = 0.02;   ///< re-place the planes when the approach moved by more than this (relative)
+  double force_rtol = 1e-7; ///< |Σ N_k cos γ_k − Q| ≤ force_rtol·Q with several patches
+  int max_outer = 60;       ///< approach iterations with several patches
+  int max_passes = 7;       ///< placements of the patches
+};
+
+struct PatchDriverResult {
+  CaseStatus status = CaseStatus::Ok;
+  std::string message;
+  double dz = 0;            ///< [m] the rigid vertical approach of the solution
+  int evaluations = 0;      ///< patch solves (all passes)
+  int passes = 0;           ///< placements of the patches
+  std::vector<PatchRegion> regions;                   ///< of the final placement
+  std::vector<std::unique_ptr<PatchSolver>> solvers;  ///< their solvers, holding the solution at dz
+};
+
+/// Solve for the load Q [N], starting from the approach estimate dz_est [m] (> 0).
+PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,
+                                const PatchSolverFactory& make);
+
+}  // namespace mh

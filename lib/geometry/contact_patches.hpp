@@ -1,0 +1,29 @@
+#pragma once
+// Contact patches of the grid methods (docs/method.md §8): the separate interpenetration regions
+// of the undeformed profiles at a rigid vertical approach, regions closer than d_comb merged into
+// one patch, and each patch's tangent plane placed as CONTACT places it (the "interpenetration
+// centre of gravity"). A geometry product: the half-space and the strip solvers build their grids
+// or strips on these planes.
+#include <vector>
+
+#include "geometry/gap.hpp"
+
+namespace mh {
+
+struct PatchRegion {
+  double y_a = 0, y_b = 0;  ///< [m] rail-y extent of the interpenetration at dz_grid
+  PatchPlane P;             ///< the patch's plane (placed from the interpenetration at dz_ref)
+  double s_a = 0, s_b = 0;  ///< [m] that extent in plane coordinates, s = (y − y_ref) / cos γ
+  double x_half = 0;        ///< [m] half-length along x of the interpenetration at dz_grid
+};
+
+/// Patches of the interpenetration at vertical approach dz_grid [m] (their extent), with planes
+/// from the interpenetration at dz_ref ≤ dz_grid (the approach of the solution, or its estimate):
+/// the mean of the rail point (y, z_r) and of the rail inclination over the interpenetration,
+/// weighted by the squared interpenetration e(x, y)² = (dz − g(y) − x²/2r)², so that a row
+/// weighs ∫ e² dx = (16/15) e0² √(2 r e0), e0 = dz − g(y) (CONTACT's default weighting). A region
+/// that does not interpenetrate at dz_ref is weighted at dz_grid. Regions whose lateral distance
+/// is below d_comb [m] form one patch. In increasing rail y.
+std::vector<PatchRegion> find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, double d_comb);
+
+}  // namespace mh
