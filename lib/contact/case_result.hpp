@@ -33,6 +33,16 @@ struct LoadedEllipse {
 };
 
 /// One contact patch of a grid method (half-space, strips): its own tangent plane (docs/method.md §8).
+/// One strip of a strip-method patch (docs/method.md §9).
+struct StripOut {
+  double s = 0;         ///< [m] lateral coordinate of the strip centre in the patch plane
+  double y_r = 0;       ///< [m] rail y of the strip centre (y_ref + s cos γ)
+  double c = 0;         ///< [m] x of its pressure centre
+  double a = 0;         ///< [m] half-length (plastic: lengthened)
+  double q = 0;         ///< [Pa] amplitude of the semi-ellipse (plastic: elastic amplitude, flat top at p_lim)
+  bool plastic = false;
+};
+
 struct PatchResult {
   int patch = 0;            ///< 1-based, in increasing rail y
   double y_r = 0;           ///< [m] contact reference point on the rail (the patch plane's origin)
@@ -56,6 +66,7 @@ struct PatchResult {
   int nx = 0, ns = 0;
   double dx = 0, ds = 0, x0 = 0, s0 = 0;
   std::vector<double> p;    ///< [Pa]
+  std::vector<StripOut> strips;  ///< strip method: the loaded strips (kept for --strips)
 };
 
 struct CaseResult {

@@ -212,7 +212,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   Ctx c{path};
   CaseFile cf;
   cf.path = path;
-  c.only_keys(j, "", {"wheel", "rail", "track", "geometry", "material", "model", "method", "half_space", "sweep", "cases", "solver", "comment"});
+  c.only_keys(j, "", {"wheel", "rail", "track", "geometry", "material", "model", "method", "half_space", "strips", "sweep", "cases", "solver", "comment"});
 
   // wheel
   if (!j.contains("wheel")) c.fail("/wheel", nullptr, "required");
@@ -294,11 +294,11 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     try {
       cf.method = parse_method(m);
     } catch (const std::invalid_argument&) {
-      c.fail("/method", &j.at("method"), "must be \"multi-hertzian\" or \"half-space\"");
+      c.fail("/method", &j.at("method"), "must be \"multi-hertzian\", \"half-space\" or \"strips\"");
     }
-    if (cf.method == Method::Strips || cf.method == Method::Auto)
-      c.fail("/method", &j.at("method"), "is not available in this version (the strip solver is not wired into runs yet)",
-             "use \"multi-hertzian\" or \"half-space\"");
+    if (cf.method == Method::Auto)
+      c.fail("/method", &j.at("method"), "is not available in this version",
+             "use \"multi-hertzian\", \"half-space\" or \"strips\"");
   }
   if (j.contains("material")) {
     const json& m = j.at("material");
@@ -376,6 +376,24 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     }
     std::string why;
     if (!o.valid(&why)) c.fail("/half_space", &h, why);
+  }
+  // strip method options (docs/method.md §9)
+  if (j.contains("strips")) {
+    const json& h = j.at("strips");
+    c.only_keys(h, "/strips", {"ds_mm", "d_comb_mm", "force_rtol", "gauss_points", "outlier_factor"});
+    StripMethodOptions& o = cf.strips;
+    if (h.contains("ds_mm")) o.ds = c.positive(h, "/strips", "ds_mm") * units::mm;
+    if (h.contains("d_comb_mm")) o.d_comb = c.number(h, "/strips", "d_comb_mm") * units::mm;
+    if (h.contains("force_rtol")) o.force_rtol = c.positive(h, "/strips", "force_rtol");
+    if (h.contains("outlier_factor")) o.strips.outlier_factor = c.positive(h, "/strips", "outlier_factor");
+    if (h.contains("gauss_points")) {
+      const json& v = h.at("gauss_points");
+      if (!v.is_number_integer() || v.get<long long>() < 2 || v.get<long long>() > 256 || v.get<long long>() % 2 != 0)
+        c.fail("/strips/gauss_points", &v, "must be an even integer in [2, 256]");
+      o.strips.gauss_points = static_cast<int>(v.get<long long>());
+    }
+    std::string why;
+    if (!o.valid(&why)) c.fail("/strips", &h, why);
   }
   // cases
   if (j.contains("sweep") && j.contains("cases")) c.fail("/cases", nullptr, "give either \"sweep\" or \"cases\", not both");
@@ -493,6 +511,10 @@ nlohmann::json CaseFile::resolved_json() const {
     j["half_space"] = {{"dx_mm", half_space.dx * units::per_mm}, {"ds_mm", half_space.ds * units::per_mm},
                        {"d_comb_mm", half_space.d_comb * units::per_mm}, {"force_rtol", half_space.force_rtol},
                        {"tol", half_space.cg.tol}, {"max_iterations", half_space.cg.max_iterations}};
+  if (method == Method::Strips)
+    j["strips"] = {{"ds_mm", strips.ds * units::per_mm}, {"d_comb_mm", strips.d_comb * units::per_mm},
+                   {"force_rtol", strips.force_rtol}, {"gauss_points", strips.strips.gauss_points},
+                   {"outlier_factor", strips.strips.outlier_factor}};
   j["solver"] = {{"rtol", solver.rtol}, {"max_iterations", solver.max_iterations},
                  {"exact_coefficients", solver.exact_coefficients}};
   j["case_order"] = cases.empty() ? "sweep: tY_mm outer, Q_kN inner" : "as listed";

@@ -63,8 +63,9 @@ struct CaseFile {
   Method method = Method::MultiHertzian;  ///< "method" (default multi-hertzian)
   SolverOptions solver;                   ///< "solver": the multi-Hertzian iteration
   HalfSpaceOptions half_space;            ///< "half_space": grid and tolerances of the half-space method
+  StripMethodOptions strips;              ///< "strips": strip width and tolerances of the strip method
   /// The options of the case's method, for solve_method().
-  MethodOptions method_options() const { return {method, solver, half_space}; }
+  MethodOptions method_options() const { return {method, solver, half_space, strips}; }
   /// Either a cartesian sweep (t_Y outer, Q inner: case i has tY[i / nQ], Q[i % nQ]) ...
   SweepAxis sweep_tY_mm, sweep_Q_kN;  ///< as given, in mm and kN
   /// ... or an explicit list.

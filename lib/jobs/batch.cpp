@@ -22,6 +22,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   (void)out;
   const auto t0 = std::chrono::steady_clock::now();
   if (opt.out_dir == "-") throw InputError("-o", "-", "a batch writes several tables: give an output directory");
+  if (opt.strips) throw InputError("--strips", "", "is not available for batch manifests", "run the pair's case file alone");
   if (opt.pressure_grid != 0 && (opt.pressure_grid < 2 || opt.pressure_grid > 1000))
     throw InputError("--pressure-grid", std::to_string(opt.pressure_grid), "must be between 2 and 1000 points per axis");
   const std::uint64_t n_pairs = m.pairs.size();
@@ -105,7 +106,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     if (pg) {
       if (!opt.quiet) warn_profiles(*pg, err);
       Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fp ? &fp->stream() : nullptr,
-                  pw.get(), prefix};
+                  nullptr, pw.get(), prefix};
       solve_cases(cf, pg->geo, 0, n, quiet_opt, sinks, &counts, err);
     } else {
       ++invalid;

@@ -79,10 +79,16 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   const bool want_csv = opt.csv && !to_stdout;
   const bool want_json = opt.json || to_stdout;
 
-  std::unique_ptr<OutputFile> fc, fe, fj, fp;
+  std::unique_ptr<OutputFile> fc, fe, fj, fp, fs;
   const int np = opt.pressure_grid;
   if (np != 0 && (np < 2 || np > 1000))
     throw InputError("--pressure-grid", std::to_string(np), "must be between 2 and 1000 points per axis");
+  if (opt.strips && M != Method::Strips)
+    throw InputError("--strips", "", "writes the strips of the strip method; the case's method is " + std::string(to_string(M)),
+                     "set \"method\": \"strips\" in the case file or drop --strips");
+  if (opt.strips && to_stdout) throw InputError("--strips", "", "needs an output directory (not -o -)");
+  if (np && M == Method::Strips)
+    throw InputError("--pressure-grid", std::to_string(np), "the strip method writes its pressures as strips", "use --strips");
   if (np && to_stdout)
     throw InputError("--pressure-grid", std::to_string(np), "needs an output directory (not -o -)");
   if (!to_stdout) {
@@ -117,7 +123,12 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   const std::uint64_t end = n_all * opt.shard_index / opt.shard_count;
   const std::uint64_t n = end - first;
   SweepCounts counts;
-  Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fp ? &fp->stream() : nullptr, jw.get(), ""};
+  if (opt.strips) {
+    fs = std::make_unique<OutputFile>(opt.out_dir + "/strips.csv");
+    fs->stream() << strips_csv_header();
+  }
+  Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fp ? &fp->stream() : nullptr,
+              fs ? &fs->stream() : nullptr, jw.get(), ""};
   solve_cases(cf, G, first, end, opt, sinks, &counts, err);
   const auto& by_status = counts.by_status;
   const std::uint64_t failed = counts.failed;
@@ -144,6 +155,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   }
   if (fj) fj->commit();
   if (fp) fp->commit();
+  if (fs) fs->commit();
   if (to_stdout) out.flush();
   if (!opt.quiet) {
     if (opt.progress) err << "\n";

@@ -118,6 +118,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
   }
   if (csv && batch) tables.push_back("pairs.csv");
   if (pressure) tables.push_back("pressure.csv");
+  if (std::ifstream(shards[0].dir + "/strips.csv").good()) tables.push_back("strips.csv");
   for (const auto& t : tables) {
     OutputFile f(out_dir + "/" + t);
     std::string header;

@@ -28,6 +28,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   const int np = out.pressure ? opt.pressure_grid : 0;
   MethodOptions mo = cf.method_options();
   mo.half_space.keep_pressure = np > 0;
+  mo.strips.keep_strips = out.strips != nullptr;
   const bool grid_method = mo.method != Method::MultiHertzian;
   const std::uint64_t n = end - first;
   const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
@@ -53,6 +54,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
         format_case(c0 + i, cp, r, plastic, want_csv, want_json, fmt[i]);
         if (grid_method) {
           if (want_csv) format_patches(c0 + i, cp, r, plastic, fmt[i].ellipses);
+          if (out.strips) format_strips(c0 + i, cp, r, fmt[i].strips);
           if (np) format_patch_pressure(c0 + i, r, fmt[i].pressure);
         } else if (np) {
           format_pressure(c0 + i, r, cf.material, plastic, np, fmt[i].pressure);
@@ -77,6 +79,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
       }
       if (want_json) out.json->element(fmt[i].json);
       if (np) put_prefixed(*out.pressure, out.prefix, fmt[i].pressure);
+      if (out.strips) put_prefixed(*out.strips, out.prefix, fmt[i].strips);
     }
     if (opt.progress && !opt.quiet) {
       const int pct = static_cast<int>(100.0 * static_cast<double>(c0 + m - first) / static_cast<double>(n));

@@ -30,6 +30,8 @@ struct RunOptions {
   /// DIR/shard.json describing the slice. `mhcontact merge` joins the shard directories into
   /// exactly the tables one run would have written. Default 1/1 (no sharding, no shard.json).
   unsigned shard_index = 1, shard_count = 1;
+  /// Strip method: also write DIR/strips.csv (one row per loaded strip). Default no.
+  bool strips = false;
 };
 
 /// Where the formatted rows go; `prefix` is put in front of every CSV line (the batch's "pair,").
@@ -37,6 +39,7 @@ struct Sinks {
   std::ostream* cases = nullptr;
   std::ostream* ellipses = nullptr;  ///< ellipses.csv (multi-Hertzian) or patches.csv (grid methods)
   std::ostream* pressure = nullptr;
+  std::ostream* strips = nullptr;    ///< strips.csv (strip method, --strips)
   JsonObjectStream* json = nullptr;  ///< with its case array open
   std::string prefix;
 };

@@ -213,6 +213,26 @@ void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& 
   }
 }
 
+void format_strips(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, std::string& s) {
+  s.clear();
+  for (const PatchResult& P : r.patches)
+    for (const StripOut& st : P.strips) {
+      append_number(s, static_cast<long long>(idx));
+      s += ','; num(s, cp.tY_mm);
+      s += ','; num(s, cp.Q_kN);
+      s += ','; append_number(s, static_cast<long long>(P.patch));
+      s += ','; num(s, st.s * units::per_mm);
+      s += ','; num(s, st.y_r * units::per_mm);
+      s += ','; num(s, st.c * units::per_mm);
+      s += ','; num(s, st.a * units::per_mm);
+      s += ','; num(s, st.q / units::MPa);
+      s += ','; s += st.plastic ? '1' : '0';
+      s += '\n';
+    }
+}
+
+std::string strips_csv_header() { return "case,tY_mm,Q_kN,patch,s_mm,y_rail_mm,x_centre_mm,half_length_mm,amplitude_MPa,plastic\n"; }
+
 std::string patches_csv_header(bool plastic) {
   std::string s = "case,tY_mm,Q_kN,patch,y_rail_mm,z_rail_mm,y_wheel_mm,gamma_deg,N_kN,pmax_MPa,area_mm2,"
                   "length_x_mm,width_s_mm,approach_mm,x_centroid_mm,s_centroid_mm,n_elements,iterations";

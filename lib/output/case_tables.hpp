@@ -12,7 +12,7 @@ namespace mh {
 
 /// One case's rows, formatted.
 struct Formatted {
-  std::string cases, ellipses, patches, json, pressure;
+  std::string cases, ellipses, patches, json, pressure, strips;
 };
 
 /// Format case `idx` (its sweep point `cp`, its result `r`) into f.cases/f.ellipses (CSV rows)
@@ -32,6 +32,10 @@ void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
 /// The element pressures of every patch of a grid method's case (elements in contact only), into
 /// `s` (pressure.csv rows of the grid methods).
 void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& s);
+
+/// strips.csv rows of a strip-method case (one row per loaded strip), into `s`.
+void format_strips(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, std::string& s);
+std::string strips_csv_header();
 
 /// The column names of the tables (README "Output tables").
 std::string patches_csv_header(bool plastic);

@@ -1,0 +1,179 @@
+#include "contact/strip_method.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "contact/multi_hertz.hpp"
+#include "contact/patch_driver.hpp"
+#include "core/numfmt.hpp"
+#include "geometry/gap.hpp"
+
+namespace mh {
+
+bool StripMethodOptions::valid(std::string* why) const {
+  auto fail = [&](const std::string& s) { if (why) *why = s; return false; };
+  if (!(ds >= 0.01e-3 && ds <= 2e-3)) return fail("ds_mm = " + format_number(ds * 1e3) + ": must be in [0.01, 2] mm");
+  if (!(d_comb >= 0 && d_comb <= 100e-3)) return fail("d_comb_mm = " + format_number(d_comb * 1e3) + ": must be in [0, 100] mm");
+  if (!(margin >= 1.0 && margin <= 4.0)) return fail("margin = " + format_number(margin) + ": must be in [1, 4]");
+  if (!(force_rtol > 0 && force_rtol < 1e-2)) return fail("force_rtol = " + format_number(force_rtol) + ": must be in (0, 0.01)");
+  if (max_outer < 1 || max_outer > 1000) return fail("max_outer must be in [1, 1000]");
+  if (max_passes < 1 || max_passes > 21) return fail("max_passes must be in [1, 21]");
+  if (!(x_curvature_step > 0)) return fail("x_curvature_step must be > 0");
+  return strips.valid(why);
+}
+
+namespace {
+
+// One patch as strips: the minimum gap g(s) of each lateral row and its parabola along x.
+class StripPatch : public PatchSolver {
+ public:
+  StripPatch(const WheelRailGap& gap, const PatchRegion& R, double dz_ref, const StripMethodOptions& opt,
+             double H, double p_lim)
+      : P(R.P), H_(H), p_lim_(p_lim), opt_(opt.strips) {
+    const double c = std::cos(P.gamma), ds = opt.ds;
+    const double sa = R.s_a - 3 * ds, sb = R.s_b + 3 * ds;
+    const int n = std::max(1, static_cast<int>(std::ceil((sb - sa) / ds)));
+    const double s0 = 0.5 * (sa + sb) - (n - 1) * 0.5 * ds;
+    const double X = opt.x_curvature_step;
+    geo.ds = ds;
+    for (int j = 0; j < n; ++j) {
+      const double s = s0 + j * ds;
+      // As for the half-space grid: the gap with the wheel at dz_ref, shifted by dz_ref cos γ.
+      const double g0 = normal_gap(gap, P, 0, s, dz_ref) + dz_ref * c;
+      const double gX = normal_gap(gap, P, X, s, dz_ref) + dz_ref * c;
+      geo.s.push_back(s);
+      geo.g.push_back(g0);
+      geo.A.push_back(std::max((gX - g0) / (X * X), 1e-12));  // h(x, s) ≈ g(s) + A(s) x² (no yaw)
+      geo.xc.push_back(0.0);
+    }
+  }
+  double at_approach(double delta) override {
+    last = solve_strips_approach(geo, H_, delta, p_lim_, opt_);
+    evaluations += 1 + last.iterations;
+    return last.status == StripStatus::Ok ? last.N : 0.0;
+  }
+  double at_load(double N) override {
+    last = solve_strips_load(geo, H_, N, p_lim_, opt_);
+    evaluations += 1 + last.iterations;
+    return last.delta;
+  }
+  bool failed() const override { return last.status == StripStatus::NotConverged || last.status == StripStatus::InvalidInput; }
+  std::string why() const override { return "strip solver: " + last.message; }
+  bool outgrown() const override {  // the first or last strip carries load
+    for (const auto& st : last.strips)
+      if (st.index == 0 || st.index + 1 == static_cast<int>(geo.s.size())) return true;
+    return false;
+  }
+
+  PatchPlane P;
+  StripGeometry geo;
+  StripResult last;
+  int evaluations = 0;
+
+ private:
+  double H_, p_lim_;
+  StripOptions opt_;
+};
+
+}  // namespace
+
+CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, double tY, double Q,
+                              const StripMethodOptions& opt) {
+  CaseResult r;
+  r.method = Method::Strips;
+  r.dz = NAN;
+  if (!(Q > 0) || !std::isfinite(Q)) {
+    r.status = CaseStatus::NoContact;
+    r.message = "Q must be > 0";
+    return r;
+  }
+  if (!G.covers(tY) || !G.wheel_curve || !G.rail_curve) {
+    r.status = CaseStatus::OutOfRange;
+    r.message = "t_Y = " + format_number(tY * 1e3) + " mm outside the geometry table [" +
+                format_number(G.tY.front() * 1e3) + ", " + format_number(G.tY.back() * 1e3) + "] mm";
+    return r;
+  }
+  const WheelRailGap gap(G, tY);
+  const double H = mat.compliance(), p_lim = mat.p_lim;
+  double dz_est = 0.05e-3;
+  {
+    const CaseResult mhr = solve_case(G, mat, tY, Q);
+    if (mhr.status == CaseStatus::Ok && mhr.approach > 0 && std::isfinite(mhr.approach)) dz_est = mhr.approach;
+  }
+  PatchDriverOptions dopt;
+  dopt.d_comb = opt.d_comb;
+  dopt.margin = opt.margin;
+  dopt.ref_rtol = opt.ref_rtol;
+  dopt.force_rtol = opt.force_rtol;
+  dopt.max_outer = opt.max_outer;
+  dopt.max_passes = opt.max_passes;
+  PatchDriverResult D = drive_patches(gap, Q, dz_est, dopt, [&](const PatchRegion& reg, double dz_ref, std::string*) {
+    return std::unique_ptr<PatchSolver>(std::make_unique<StripPatch>(gap, reg, dz_ref, opt, H, p_lim));
+  });
+  r.status = D.status;
+  r.message = D.message;
+  r.approach = D.dz;
+  int evaluations = 0;
+  for (const auto& solver : D.solvers) {
+    const StripPatch& k = static_cast<const StripPatch&>(*solver);
+    evaluations += k.evaluations;
+    const StripResult& S = k.last;
+    if (S.status != StripStatus::Ok || S.N <= 0) continue;
+    PatchResult pr;
+    pr.y_r = k.P.y_ref;
+    pr.z_r = gap.z_rail(k.P.y_ref);
+    pr.y_w = gap.y_wheel(k.P.y_ref);
+    pr.gamma = k.P.gamma;
+    pr.iterations = S.iterations;
+    pr.N = S.N;
+    pr.pmax = S.pmax;
+    pr.area = S.area;
+    pr.approach = D.dz * std::cos(k.P.gamma) - *std::min_element(k.geo.g.begin(), k.geo.g.end());
+    double s_lo = INFINITY, s_hi = -INFINITY, ls = 0, lc = 0;
+    for (const StripState& st : S.strips) {
+      pr.length_x = std::max(pr.length_x, 2 * st.a);
+      s_lo = std::min(s_lo, st.s);
+      s_hi = std::max(s_hi, st.s);
+      ls += st.load * st.s;
+      lc += st.load * st.c;
+      ++pr.n_elements;
+      if (st.plastic) {
+        // Flat top at p_lim where q √(1 − t²) ≥ p_lim: |t| ≤ √(1 − r²), r = p_lim / q (§9.6).
+        const double rr = p_lim / st.q, half = st.a * std::sqrt(std::max(0.0, 1 - rr * rr));
+        pr.plastic_area += 2 * half * k.geo.ds;
+        pr.capped_load += 2 * half * k.geo.ds * p_lim;
+      }
+      if (opt.keep_strips)
+        pr.strips.push_back({st.s, k.P.y_ref + st.s * std::cos(k.P.gamma), st.c, st.a, st.q, st.plastic});
+    }
+    pr.width_s = S.strips.empty() ? 0 : s_hi - s_lo + k.geo.ds;
+    pr.s_centroid = S.N > 0 ? ls / S.N : 0;
+    pr.x_centroid = S.N > 0 ? lc / S.N : 0;
+    r.Fz += pr.N * std::cos(pr.gamma);
+    r.Fy += pr.N * std::sin(pr.gamma);
+    r.pmax = std::max(r.pmax, pr.pmax);
+    r.area += pr.area;
+    if (S.n_outliers > 0 && S.worst_outlier >= 0) {
+      // The known failure mode (§9.7): a strip whose amplitude stands far above its neighbours'.
+      const StripState& w = S.strips[static_cast<std::size_t>(S.worst_outlier)];
+      r.warnings.push_back("strip_outlier:patch=" + std::to_string(r.patches.size() + 1) + ":strips=" +
+                           std::to_string(S.n_outliers) + ":y_rail_mm=" +
+                           format_number(std::round((k.P.y_ref + w.s * std::cos(k.P.gamma)) * 1e6) / 1e3) +
+                           ":q_MPa=" + format_number(std::round(w.q / 1e3) / 1e3));
+    }
+    r.patches.push_back(std::move(pr));
+  }
+  int index = 0;
+  for (auto& pr : r.patches) pr.patch = ++index;
+  r.n_contacts = static_cast<int>(r.patches.size());
+  r.iterations = evaluations;
+  r.residual = (r.Fz - Q) / Q;
+  if (r.status == CaseStatus::Ok && std::fabs(r.residual) > 1e-5) {
+    r.status = CaseStatus::NotConverged;
+    r.message = "force balance residual " + format_number(r.residual);
+  }
+  return r;
+}
+
+}  // namespace mh
