@@ -82,7 +82,7 @@ ProfileSource parse_profile_source(const Ctx& c, const json& v, const std::strin
     if (v.contains("step_mm")) s.step = c.positive(v, path, "step_mm") * units::mm;
     return s;
   }
-  c.only_keys(v, path, {"file", "format", "mirror_y", "mirror_z", "scale", "kind", "vampire_side", "check"});
+  c.only_keys(v, path, {"file", "format", "mirror_y", "mirror_z", "scale", "kind", "vampire_side", "check", "cleanup"});
   if (!v.contains("file")) c.fail(path, &v, "a profile object needs \"file\" (or \"standard\")");
   s.file = resolve_path(case_path, c.string(v, path, "file"));
   if (v.contains("format")) {
@@ -96,6 +96,13 @@ ProfileSource parse_profile_source(const Ctx& c, const json& v, const std::strin
   if (v.contains("mirror_z")) s.read.mirror_z = c.boolean(v, path, "mirror_z");
   if (v.contains("scale")) s.read.scale = c.positive(v, path, "scale");
   if (v.contains("check")) s.read.check = c.boolean(v, path, "check");
+  if (v.contains("cleanup")) {
+    try {
+      s.read.cleanup = parse_profile_cleanup(c.string(v, path, "cleanup"));
+    } catch (const std::invalid_argument& e) {
+      c.fail(path + "/cleanup", &v.at("cleanup"), e.what());
+    }
+  }
   if (v.contains("vampire_side")) {
     s.read.vampire_side = c.string(v, path, "vampire_side");
     if (s.read.vampire_side != "left" && s.read.vampire_side != "right")
@@ -232,7 +239,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   if (!rl.contains("profile")) c.fail("/rail/profile", nullptr, "required");
   cf.rail = parse_profile_source(c, rl.at("profile"), "/rail/profile", path);
   if (!rl.contains("inclination"))
-    c.fail("/rail/inclination", nullptr, "required: \"as-is\" (the profile is already laid as used), \"none\", \"1:40\" or \"1:20\"",
+    c.fail("/rail/inclination", nullptr, "required: \"as-is\" (the profile is already laid as used), \"none\", \"1:N\" (\"1:40\", \"1:30\", \"1:20\" ...) or an angle such as \"2.5deg\"",
            "say whether the tool must cant the rail, so it is never applied twice");
   try {
     cf.inclination = parse_inclination(c.string(rl, "/rail", "inclination"));

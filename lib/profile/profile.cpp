@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <cctype>
+#include <cstdlib>
 #include <stdexcept>
+
+#include "core/numfmt.hpp"
 
 namespace mh {
 
@@ -16,27 +20,46 @@ const char* to_string(ProfileKind k) {
 }
 
 Inclination parse_inclination(const std::string& s) {
+  const std::string rule =
+      "inclination must be \"as-is\", \"none\", a ratio \"1:N\" with N >= 5 (e.g. \"1:40\", \"1:30\", "
+      "\"1:20\") or an angle in degrees (e.g. \"2.5deg\", at most 11.3deg)";
   if (s == "as-is") return Inclination::AsIs;
   if (s == "none") return Inclination::None;
-  if (s == "1:40") return Inclination::In40;
-  if (s == "1:20") return Inclination::In20;
-  throw std::invalid_argument("inclination must be one of \"as-is\", \"none\", \"1:40\", \"1:20\"");
+  auto number = [&](const std::string& t) {
+    if (t.empty() || std::isspace(static_cast<unsigned char>(t[0]))) throw std::invalid_argument(rule + ", not \"" + s + "\"");
+    char* e = nullptr;
+    const double v = std::strtod(t.c_str(), &e);
+    if (e == t.c_str() || *e != '\0' || !std::isfinite(v)) throw std::invalid_argument(rule + ", not \"" + s + "\"");
+    return v;
+  };
+  if (s.rfind("1:", 0) == 0) {
+    const double n = number(s.substr(2));
+    if (!(n >= 5)) throw std::invalid_argument(rule + ", not \"" + s + "\" (N must be at least 5)");
+    return Inclination{Inclination::Mode::Ratio, n};
+  }
+  const auto d = s.size() >= 3 ? s.size() - 3 : std::string::npos;
+  if (d != std::string::npos && s.compare(d, 3, "deg") == 0) {
+    const double a = number(s.substr(0, d));
+    if (!(a >= 0 && a <= 11.31)) throw std::invalid_argument(rule + ", not \"" + s + "\" (angle out of range)");
+    return Inclination{Inclination::Mode::Angle, a};
+  }
+  throw std::invalid_argument(rule + ", not \"" + s + "\"");
 }
 
-const char* to_string(Inclination i) {
-  switch (i) {
-    case Inclination::AsIs: return "as-is";
-    case Inclination::None: return "none";
-    case Inclination::In40: return "1:40";
-    case Inclination::In20: return "1:20";
+std::string to_string(const Inclination& i) {
+  switch (i.mode) {
+    case Inclination::Mode::AsIs: return "as-is";
+    case Inclination::Mode::None: return "none";
+    case Inclination::Mode::Ratio: return "1:" + format_number(i.value);
+    case Inclination::Mode::Angle: return format_number(i.value) + "deg";
   }
   return "?";
 }
 
-double inclination_angle(Inclination i) {
-  switch (i) {
-    case Inclination::In40: return std::atan(1.0 / 40.0);
-    case Inclination::In20: return std::atan(1.0 / 20.0);
+double inclination_angle(const Inclination& i) {
+  switch (i.mode) {
+    case Inclination::Mode::Ratio: return std::atan(1.0 / i.value);
+    case Inclination::Mode::Angle: return i.value * 3.14159265358979323846 / 180.0;
     default: return 0.0;
   }
 }
@@ -86,6 +109,12 @@ RailLandmarks rail_landmarks(const Profile& rail, double below) {
       L.has_gauge = true;
       break;
     }
+  }
+  if (!L.has_gauge && rail.cleanup.gauge_undercut && rail.z[0] > zg && rail.z[0] < L.z_top) {
+    L.y_gauge = rail.y[0];
+    L.z_gauge = rail.z[0];
+    L.has_gauge = true;
+    L.gauge_at_widest = true;
   }
   return L;
 }

@@ -29,6 +29,8 @@ struct RawProfile {
   ProfileKind kind = ProfileKind::Unknown;
   std::string format;
   std::vector<std::string> warnings;
+  CleanupReport cleanup;
+  std::vector<std::pair<std::string, std::string>> measures;  ///< from the header (MiniProf Sd/Sh/qR)
   void add(double yy, double zz, std::size_t ln) { y.push_back(yy); z.push_back(zz); line.push_back(ln); }
   std::size_t size() const { return y.size(); }
 };
@@ -40,7 +42,8 @@ ProfileKind kind_from_extension(const std::string& ext);
 // The readers (one file each). They apply the format's own conventions and end in the
 // canonical frame of profile.hpp, in mm.
 RawProfile read_simpack(const std::string& path, const std::vector<std::string>& lines);
-RawProfile read_miniprof(const std::string& path, const std::vector<std::string>& lines, bool wheel);
+/// hint: Wheel or Rail from the extension or the user; Unknown: from the content (default rail).
+RawProfile read_miniprof(const std::string& path, const std::vector<std::string>& lines, ProfileKind hint);
 RawProfile read_table(const std::string& path, const std::vector<std::string>& lines, bool gensys);
 RawProfile read_vampire(const std::string& path, const std::vector<std::string>& lines, const std::string& side);
 /// The format of a file whose extension says nothing, from its content.
