@@ -126,9 +126,10 @@ void add_profile_io_commands(CLI::App& profile, CliContext& ctx) {
     auto opt = std::make_shared<ProfileReadOptions>();
     auto in = std::make_shared<std::string>();
     auto outp = std::make_shared<std::string>();
-    CLI::App* c = profile.add_subcommand("convert", "read a profile file and write it as .csv or .prr/.prw");
+    CLI::App* c = profile.add_subcommand("convert", "read a profile file (cleaned, see --cleanup) and write it in any format it reads");
     c->add_option("IN", *in, "input profile file")->required();
-    c->add_option("-o,--output", *outp, "output file: .csv (y_mm,z_mm; z up) or .prr/.prw (SIMPACK)")->required();
+    c->add_option("-o,--output", *outp, "output file: .csv/.txt/.dat (y_mm, z_mm; z up), .prr/.prw (SIMPACK), .ban/.whl (MiniProf), "
+                   ".rail/.wheel (GENSYS) or .rai/.whe (VAMPIRE); the extension must match the kind")->required();
     add_profile_read_options(*c, *opt);
     c->callback([opt, in, outp, &ctx]() {
       const Profile p = read_profile(*in, *opt);

@@ -49,6 +49,15 @@ RawProfile read_vampire(const std::string& path, const std::vector<std::string>&
 /// The format of a file whose extension says nothing, from its content.
 ProfileFormat sniff(const std::vector<std::string>& lines);
 
+// The writers (one per format, in the reader's file): the text of the canonical profile `p`.
+std::string write_simpack(const Profile& p, bool wheel);
+std::string write_miniprof(const Profile& p, bool wheel);
+/// sep: ',' (csv, header y_mm,z_mm) or ' '; gensys: both axes mirrored, no header.
+std::string write_table(const Profile& p, char sep, bool gensys);
+std::string write_vampire(const Profile& p, bool wheel);
+/// "! written by mhcontact from SOURCE (FORMAT)" style provenance text (without comment marker).
+std::string provenance(const Profile& p);
+
 /// Shape checks and clean-up in the canonical frame (shape.cpp).
 void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOptions& opt);
 

@@ -219,6 +219,7 @@ RawProfile read_miniprof(const std::string& path, const std::vector<std::string>
   std::size_t i = 0;
   std::size_t ncols = 0;
   long xypoints = -1;
+  int yaxis = 0;  // rails: +1 Y is a depth, −1 a height, 0 from the values
   const Style style = style_of(lines);
   if (style == Style::Elements) {
     read_elements(path, lines, r);
@@ -234,6 +235,12 @@ RawProfile read_miniprof(const std::string& path, const std::vector<std::string>
       if (eq == std::string::npos) continue;
       const std::string key = trim(l.substr(0, eq)), val = trim(l.substr(eq + 1));
       if (key == "ColumnDef") ncols = tokens(val).size();
+      if (key == "YAxis") {  // written by mhcontact (write_miniprof): no guessing of the rail's Y sign
+        if (val == "depth") yaxis = 1;
+        else if (val == "height") yaxis = -1;
+        else
+          throw InputError(at_line(path, i + 1), "'" + val + "'", "YAxis must be depth (Y down) or height (Y up)");
+      }
       if (key == "XYPoints" && !val.empty()) xypoints = static_cast<long>(parse_number(val, at_line(path, i + 1)));
     }
     if (i == lines.size())
@@ -282,13 +289,30 @@ RawProfile read_miniprof(const std::string& path, const std::vector<std::string>
     r.kind = ProfileKind::Rail;
     const double ymax = *std::max_element(r.z.begin(), r.z.end());
     const double ymin = *std::min_element(r.z.begin(), r.z.end());
-    const bool depth = ymax > -ymin;
+    const bool depth = yaxis != 0 ? yaxis > 0 : ymax > -ymin;
     for (std::size_t k = 0; k < r.size(); ++k) {
       r.y[k] = -r.y[k];
       if (depth) r.z[k] = -r.z[k];
     }
   }
   return r;
+}
+
+std::string write_miniprof(const Profile& p, bool wheel) {
+  std::string s = "Filename=" + p.source + "\nProgramName=mhcontact\n";
+  s += "Comment=" + provenance(p) + "; " +
+       (wheel ? "wheel: X = y (taping line at X = 0), Y = -z (increase of radius)"
+              : "rail: X = -y (towards the gauge side), Y = -z (depth)") +
+       ", mm\n";
+  if (!wheel) s += "YAxis=depth\n";  // read back without guessing the sign from the values
+  s += "XYPoints=" + std::to_string(p.size()) + "\nColumnDef=X,Y\n\n";
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    append_number(s, (wheel ? p.y[k] : -p.y[k]) * 1e3 + 0.0);
+    s += ',';
+    append_number(s, -p.z[k] * 1e3 + 0.0);
+    s += '\n';
+  }
+  return s;
 }
 
 }  // namespace mh::formats

@@ -85,4 +85,18 @@ RawProfile read_table(const std::string& path, const std::vector<std::string>& l
   return r;
 }
 
+std::string write_table(const Profile& p, char sep, bool gensys) {
+  std::string s;
+  if (gensys) s = "# GENSYS-style profile " + provenance(p) + "; y towards the track centre, z down, mm\n";
+  else s = std::string("y_mm") + sep + "z_mm\n";
+  const double f = gensys ? -1e3 : 1e3;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    append_number(s, p.y[k] * f);  // as before issue #13 (csv): no "+ 0.0", the bytes unchanged
+    s += sep;
+    append_number(s, p.z[k] * f);
+    s += '\n';
+  }
+  return s;
+}
+
 }  // namespace mh::formats

@@ -142,4 +142,9 @@ ProfileKind kind_from_extension(const std::string& ext) {
   return ProfileKind::Unknown;
 }
 
+std::string provenance(const Profile& p) {
+  return "written by mhcontact from " + (p.source.empty() ? std::string("(generated)") : p.source) + " (" +
+         (p.format.empty() ? std::string("?") : p.format) + ")";
+}
+
 }  // namespace mh::formats
