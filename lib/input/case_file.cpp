@@ -249,7 +249,32 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   // track
   if (j.contains("track")) {
     const json& t = j.at("track");
-    c.only_keys(t, "/track", {"gauge_mm", "gauge_height_mm", "flange_back_distance_mm", "flange_back_position_mm"});
+    c.only_keys(t, "/track", {"gauge_mm", "gauge_height_mm", "flange_back_distance_mm", "flange_back_position_mm",
+                              "positioning", "lateral_offset_mm", "roller_radius_mm"});
+    if (t.contains("positioning")) {
+      const std::string pos = c.string(t, "/track", "positioning");
+      if (pos == "explicit") cf.track.positioning = TrackSetup::Positioning::Explicit;
+      else if (pos != "gauge")
+        c.fail("/track/positioning", &t.at("positioning"), "must be \"gauge\" (default) or \"explicit\"");
+    }
+    if (cf.track.positioning == TrackSetup::Positioning::Explicit) {
+      if (!t.contains("lateral_offset_mm"))
+        c.fail("/track/lateral_offset_mm", nullptr,
+               "required with positioning \"explicit\": the rail y [mm] of the wheel profile's origin (taping line) "
+               "at t_Y = 0",
+               "e.g. 0 when both profiles have their origin on the same vertical line");
+      cf.track.lateral_offset = c.number(t, "/track", "lateral_offset_mm") * units::mm;
+      if (std::abs(cf.track.lateral_offset) > 0.2)
+        c.fail("/track/lateral_offset_mm", &t.at("lateral_offset_mm"), "must lie within -200 … 200 mm");
+    } else if (t.contains("lateral_offset_mm")) {
+      c.fail("/track/lateral_offset_mm", &t.at("lateral_offset_mm"), "only used with positioning \"explicit\"",
+             "add \"positioning\": \"explicit\" or remove it");
+    }
+    if (t.contains("roller_radius_mm")) {
+      const double rr = c.positive(t, "/track", "roller_radius_mm");
+      if (rr < 50 || rr > 5000) c.fail("/track/roller_radius_mm", &t.at("roller_radius_mm"), "must be between 50 and 5000 mm");
+      cf.track.roller_radius = rr * units::mm;
+    }
     if (t.contains("gauge_mm")) cf.track.gauge = c.positive(t, "/track", "gauge_mm") * units::mm;
     if (t.contains("gauge_height_mm")) cf.track.gauge_height = c.positive(t, "/track", "gauge_height_mm") * units::mm;
     if (t.contains("flange_back_distance_mm")) cf.track.flange_back_distance = c.positive(t, "/track", "flange_back_distance_mm") * units::mm;
@@ -431,6 +456,12 @@ nlohmann::json CaseFile::resolved_json() const {
   j["track"] = {{"gauge_mm", track.gauge * 1e3}, {"gauge_height_mm", track.gauge_height * 1e3},
                 {"flange_back_distance_mm", track.flange_back_distance * 1e3},
                 {"flange_back_position_mm", track.flange_back_position * 1e3}};
+  // Only when used: the resolved inputs of gauge-positioned straight-rail cases stay as they were.
+  if (track.positioning == TrackSetup::Positioning::Explicit) {
+    j["track"]["positioning"] = "explicit";
+    j["track"]["lateral_offset_mm"] = track.lateral_offset * 1e3;
+  }
+  if (track.roller_radius > 0) j["track"]["roller_radius_mm"] = track.roller_radius * 1e3;
   j["geometry"] = {{"tY_min_mm", geometry.tY_min * 1e3}, {"tY_max_mm", geometry.tY_max * 1e3},
                    {"tY_step_mm", geometry.tY_step * 1e3}, {"strip_width_mm", geometry.strip_width * 1e3},
                    {"jump_threshold_deg", geometry.jump_threshold / units::deg},
