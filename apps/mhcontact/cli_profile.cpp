@@ -76,6 +76,16 @@ void print_info(const Profile& p, bool json, std::ostream& out) {
     j["flange_tip_y_mm"] = L.y_tip * 1e3;
     j["flange_tip_z_mm"] = L.z_tip * 1e3;
     text += "flange_tip_mm: y " + mm(L.y_tip) + " z " + mm(L.z_tip) + "\n";
+    const WheelMeasures M = wheel_measures(p);
+    if (M.valid) {
+      auto r3 = [](double v_m) { return std::round(v_m * 1e6) / 1e3; };  // mm to 1 µm
+      j["wheel_measures_mm"] = {{"Sh", r3(M.Sh)}, {"Sd", r3(M.Sd)}, {"qR", r3(M.qR)}};
+      text += "wheel_measures_mm (EN 15313): Sh " + format_number(r3(M.Sh)) + " Sd " + format_number(r3(M.Sd)) +
+              " qR " + format_number(r3(M.qR)) + "\n";
+    } else {
+      j["wheel_measures_mm"] = nullptr;
+      text += "wheel_measures_mm: none (" + M.why + ")\n";
+    }
   }
   if (!p.file_measures.empty()) {
     nlohmann::ordered_json m;

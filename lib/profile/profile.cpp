@@ -131,3 +131,41 @@ WheelLandmarks wheel_landmarks(const Profile& wheel) {
 }
 
 }  // namespace mh
+
+namespace mh {
+
+WheelMeasures wheel_measures(const Profile& w) {
+  WheelMeasures M;
+  const std::size_t n = w.size();
+  if (n < 2) { M.why = "too few points"; return M; }
+  if (!(w.y.front() <= 0 && w.y.back() >= 0)) { M.why = "the profile does not reach the taping line y = 0"; return M; }
+  std::size_t itip = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (w.z[i] < w.z[itip]) itip = i;
+  std::size_t j = 1;
+  while (j + 1 < n && w.y[j] < 0) ++j;
+  const double z0 = w.z[j - 1] + (w.z[j] - w.z[j - 1]) * (0 - w.y[j - 1]) / (w.y[j] - w.y[j - 1]);
+  const double ztip = w.z[itip];
+  if (!(w.y[itip] < 0)) { M.why = "the flange tip is not at negative y"; return M; }
+  // First crossing of level zl on the flange face, from the tip towards the tread.
+  auto face = [&](double zl, double& y) {
+    for (std::size_t i = itip + 1; i < n && w.y[i] <= 0; ++i)
+      if (w.z[i - 1] <= zl && w.z[i] >= zl) {
+        const double dz = w.z[i] - w.z[i - 1];
+        y = dz > 0 ? w.y[i - 1] + (w.y[i] - w.y[i - 1]) * (zl - w.z[i - 1]) / dz : w.y[i];
+        return true;
+      }
+    return false;
+  };
+  double yd = 0, yq = 0;
+  const double zd = z0 - 0.010, zq = ztip + 0.002;
+  if (!(ztip < zd) || !face(zd, yd)) { M.why = "the flange is not 10 mm high"; return M; }
+  if (!face(zq, yq)) { M.why = "no flange face 2 mm above the tip"; return M; }
+  M.Sh = z0 - ztip;
+  M.Sd = yd + 0.070;  // the flange back 70 mm from the taping line (EN 13715; ProfileCheckLimits)
+  M.qR = yd - yq;
+  M.valid = true;
+  return M;
+}
+
+}  // namespace mh

@@ -97,4 +97,21 @@ struct WheelLandmarks {
 };
 WheelLandmarks wheel_landmarks(const Profile& wheel);
 
+/// Wheel measures after EN 15313 (README "Wheel measures"), from the profile in the canonical
+/// frame (taping line at y = 0, flange at negative y, z = −increase of radius), all [m]:
+///  Sh flange height: from the tread at the taping line (z at y = 0) to the flange tip (lowest z);
+///  Sd flange thickness: from the flange back, which the canonical frame puts 70 mm from the
+///     taping line (y = −70 mm, EN 13715; the taping-line rule of read.hpp), to the flange face
+///     at 10 mm from the taping-line level towards the tip (z = z(0) − 10 mm);
+///  qR flange slope: lateral distance between that Sd point and the flange face point 2 mm
+///     from the tip (z = z_tip + 2 mm).
+/// The flange-face points are the first crossings from the tip towards the tread, linearly
+/// interpolated. S1002 new (32.5 mm flange): Sh 28, Sd 32.5, qR 10.8 mm.
+struct WheelMeasures {
+  double Sh = 0, Sd = 0, qR = 0;
+  bool valid = false;   ///< false when the profile does not reach y = 0 or the levels (why says it)
+  std::string why;
+};
+WheelMeasures wheel_measures(const Profile& wheel);
+
 }  // namespace mh

@@ -80,3 +80,45 @@ TEST_CASE("a wheel is not written into a rail file, nor the reverse", "[profile]
   }
   CHECK_THROWS_WITH(mh::profile_file_text(w, "out.xlsx"), Catch::Contains("unknown output profile format"));
 }
+
+TEST_CASE("EN 15313 wheel measures of S1002 new are the nominal values", "[profile][measures]") {
+  for (double step : {0.1e-3, 0.5e-3}) {
+    const mh::WheelMeasures M = mh::wheel_measures(mh::make_standard_profile("S1002", mh::Inclination::None, step));
+    REQUIRE(M.valid);
+    CHECK(M.Sh * 1e3 == Approx(28.0).margin(0.1));
+    CHECK(M.Sd * 1e3 == Approx(32.5).margin(0.1));
+    CHECK(M.qR * 1e3 == Approx(10.8).margin(0.1));
+  }
+  // measured: the Manchester S1002 file and the MiniProf old-style copy of S1002 give the same
+  const mh::WheelMeasures F = mh::wheel_measures(mh::read_profile(kData + "MBench_S1002_v3.prw"));
+  REQUIRE(F.valid);
+  CHECK(F.Sh * 1e3 == Approx(28.0).margin(0.1));
+  CHECK(F.Sd * 1e3 == Approx(32.5).margin(0.1));
+  CHECK(F.qR * 1e3 == Approx(10.8).margin(0.1));
+  const mh::WheelMeasures O = mh::wheel_measures(mh::read_profile(kData + "constructed/old_style_wheel.whl"));
+  REQUIRE(O.valid);
+  CHECK(O.Sd * 1e3 == Approx(32.5).margin(0.1));
+  // a profile without a flange has none, and says why
+  const mh::WheelMeasures N = mh::wheel_measures(mh::read_profile(kData + "flat_plane.prw"));
+  CHECK_FALSE(N.valid);
+  CHECK(!N.why.empty());
+}
+
+TEST_CASE("any inclination 1:N or an angle; the old strings keep their meaning", "[profile][inclination]") {
+  CHECK(mh::parse_inclination("1:40") == mh::Inclination::In40);
+  CHECK(mh::parse_inclination("1:20") == mh::Inclination::In20);
+  CHECK(mh::parse_inclination("none") == mh::Inclination::None);
+  CHECK(mh::parse_inclination("as-is") == mh::Inclination::AsIs);
+  for (const char* s : {"as-is", "none", "1:40", "1:20", "1:30", "1:7.5", "2.5deg", "0deg"})
+    CHECK(mh::to_string(mh::parse_inclination(s)) == s);
+  CHECK(mh::inclination_angle(mh::parse_inclination("1:30")) == Approx(std::atan(1.0 / 30)));
+  CHECK(mh::inclination_angle(mh::parse_inclination("2.5deg")) == Approx(2.5 * 3.14159265358979323846 / 180));
+  for (const char* s : {"1:3", "1:", "1:x", "1:40 ", "12deg", "-1deg", "deg", "1/40", ""})
+    CHECK_THROWS_AS(mh::parse_inclination(s), std::invalid_argument);
+  // The crown of 60E1 at 1:30 gets the slope +1/30 at the rotated crown top's former position.
+  const mh::Profile p = mh::make_standard_profile("60E1", mh::parse_inclination("1:30"));
+  std::size_t k = 0;
+  while (p.y[k + 1] < 0) ++k;
+  CHECK((p.z[k + 1] - p.z[k]) / (p.y[k + 1] - p.y[k]) == Approx(1.0 / 30).margin(2e-3));
+  CHECK_THROWS_AS(mh::make_standard_profile("S1002", mh::parse_inclination("1:30")), mh::InputError);
+}
