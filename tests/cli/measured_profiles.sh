@@ -35,6 +35,22 @@ for r in avg_low2.ban; do
   grep -q "gauge face turns under the head" "$tmp/$r.info"
   grep -q "gauge_point_mm (widest point" "$tmp/$r.info"
 done
+# the narrow section fr_ol.csv (18 mm wide, no gauge point) and the SIMPACK test surfaces used
+# as rails run with explicit positioning (issue #13 item 3); the test-surface wheels on 60E1
+explicit='"track": {"positioning": "explicit", "lateral_offset_mm": -23}'
+for r in fr_ol.csv circ_r100.prr circ_r300.prr flat_plane.prr flat_ang200.prr groove_r1002.prr MBench_UIC60_v3.prr; do
+  echo "{\"wheel\": {\"profile\": {\"standard\": \"S1002\"}}, \"rail\": {\"profile\": \"$d/$r\", \"inclination\": \"as-is\"}, $explicit, $sweep}" > "$tmp/$r.json"
+  set +e; "$bin" run "$tmp/$r.json" -o "$tmp/$r" -q 2>"$tmp/$r.err"; rc=$?; set -e
+  echo "$r explicit: exit $rc, $(awk -F, 'NR>1{s[$4]++} END{for(k in s) printf "%s %d ", k, s[k]}' "$tmp/$r/cases.csv")"
+  [ $rc -eq 0 ] || [ $rc -eq 1 ] || { cat "$tmp/$r.err" >&2; exit 1; }
+  test "$(wc -l < "$tmp/$r/cases.csv")" -eq 75
+done
+for w in MBench_S1002_v3.prw circ_r10.prw circ_r50.prw circ_r100.prw flat_plane.prw flat_ang200.prw; do
+  echo "{\"wheel\": {\"profile\": \"$d/$w\"}, \"rail\": {\"profile\": $std_rail, \"inclination\": \"1:40\"}, $sweep}" > "$tmp/$w.json"
+  set +e; "$bin" run "$tmp/$w.json" -o "$tmp/$w" -q 2>"$tmp/$w.err"; rc=$?; set -e
+  echo "$w on 60E1 1:40: exit $rc, $(awk -F, 'NR>1{s[$4]++} END{for(k in s) printf "%s %d ", k, s[k]}' "$tmp/$w/cases.csv")"
+  [ $rc -eq 0 ] || [ $rc -eq 1 ] || { cat "$tmp/$w.err" >&2; exit 1; }
+done
 # the clean-up can be made strict: the old rejection, exit 2
 echo "{\"wheel\": {\"profile\": {\"standard\": \"S1002\"}}, \"rail\": {\"profile\": {\"file\": \"$d/avg_low2.ban\", \"cleanup\": \"strict\"}, \"inclination\": \"as-is\"}, $sweep}" > "$tmp/strict.json"
 set +e; "$bin" run "$tmp/strict.json" -o "$tmp/strict" -q 2>"$tmp/strict.err"; rc=$?; set -e
