@@ -118,6 +118,10 @@ TEST_CASE("folds and loops are replaced by the outer envelope, with a report", "
   e = error_of(kC + "big_loop_rail.txt", o);
   CHECK(e.find("big_loop_rail.txt:150") != std::string::npos);
   CHECK(e.find("deeper than 1 mm") != std::string::npos);
+  // folds over most of the width stay rejected
+  e = error_of(kC + "zigzag_rail.txt", o);
+  CHECK(e.find("zigzag_rail.txt") != std::string::npos);
+  CHECK(e.find("folds over most of the width") != std::string::npos);
 }
 
 TEST_CASE("a wheel zig-zag is cleaned with the lower envelope", "[profile][cleanup]") {

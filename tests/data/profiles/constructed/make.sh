@@ -59,6 +59,10 @@ awk -F, 'NR>1 {n++; y[n]=$1; z[n]=$2} END {
 awk -F, 'NR>1 {printf "%.4f %.4f\n", $1, $2; if (NR == 150) printf "%.4f %.4f\n%.4f %.4f\n", $1 - 3, $2 - 0.5, $1 + 0.3, $2 - 1}' \
   "$T/r.csv" > big_loop_rail.txt
 
+# a scan that folds back 0.45 mm after every second point over the whole head: refused
+awk -F, 'NR>1 {printf "%.4f %.4f\n", $1, $2; if (NR % 2 == 0) printf "%.4f %.4f\n", $1 - 0.45, $2 - 0.02}' \
+  "$T/r.csv" > zigzag_rail.txt
+
 # 4. Spreadsheets: UTF-8 BOM + CRLF + ';' separator + decimal commas (European Excel), and tabs
 #    with decimal commas.
 {
