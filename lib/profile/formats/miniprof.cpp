@@ -27,9 +27,11 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-bool is_legend(const std::string& l) {  // "(Sd/Sh/qR)" possibly after the numbers
+bool is_legend(const std::string& l) {  // "(Sd/Sh/qR)" possibly after the numbers; no '=' (a Key=Value line)
   const auto a = l.find('('), b = l.rfind(')');
-  return a != std::string::npos && b != std::string::npos && b > a && l.find('/', a) < b;
+  if (a == std::string::npos || b == std::string::npos || b <= a || l.find('=') != std::string::npos) return false;
+  const std::string in = l.substr(a + 1, b - a - 1);
+  return in.find('/') != std::string::npos && in.find(' ') == std::string::npos;
 }
 bool is_dotted_field(const std::string& l) {  // "Stock.......: 1234"
   const auto c = l.find(':');
