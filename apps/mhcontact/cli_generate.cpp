@@ -58,9 +58,18 @@ void add_profile_generate_command(CLI::App& profile, CliContext& ctx) {
       "generate", "write a standard profile (S1002 wheel; 60E1, 54E1 rails) generated from its definition");
   c->add_option("NAME", a->name, "S1002 (wheel, EN 13715), 60E1 or 54E1 (rails, EN 13674-1)")->required();
   c->add_option("--inclination", a->inclination,
-                "rails: none (vertical, default), 1:40 or 1:20, rotated about the crown top towards the "
+                "rails: none (vertical, default), 1:N (1:40, 1:30, 1:20, N >= 5) or an angle (2.5deg), rotated about the crown top towards the "
                 "track centre; wheels: none only")
-      ->check(CLI::IsMember({"none", "1:40", "1:20"}));
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            try {
+              parse_inclination(v);
+            } catch (const std::invalid_argument& e) {
+              return std::string(e.what());
+            }
+            return std::string();
+          },
+          "INCLINATION"));
   c->add_option("--step", a->step_mm, "largest node spacing along the profile [mm] (default 0.1; 0.001 … 5)");
   c->add_option("-o,--output", a->output,
                 "output file: .csv (y_mm,z_mm; y to the field side, z up) or .prr/.prw (SIMPACK, z down)")

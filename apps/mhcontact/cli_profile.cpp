@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <memory>
 #include <ostream>
 
@@ -29,6 +30,11 @@ void add_profile_read_options(CLI::App& app, ProfileReadOptions& opt) {
       ->check(CLI::PositiveNumber);
   app.add_option("--vampire-side", opt.vampire_side, "VAMPIRE files: which side to read (default right)")
       ->check(CLI::IsMember({"left", "right"}));
+  app.add_option_function<std::string>(
+         "--cleanup", [&opt](const std::string& s) { opt.cleanup = parse_profile_cleanup(s); },
+         "clean-up where contact can happen: envelope (default: folds and loops replaced by the outer "
+         "envelope, with a warning), strict (reject any fold larger than 0.05 mm jitter) or off (drop nothing)")
+      ->check(CLI::IsMember({"envelope", "strict", "off"}));
   app.add_flag("--no-check", [&opt](std::int64_t) { opt.check = false; },
                "skip the shape plausibility checks (flange side, upside down, kind)");
 }
@@ -56,7 +62,10 @@ void print_info(const Profile& p, bool json, std::ostream& out) {
     if (L.has_gauge) {
       j["gauge_point_y_mm"] = L.y_gauge * 1e3;
       j["gauge_point_z_mm"] = L.z_gauge * 1e3;
-      text += "gauge_point_mm (14 mm below the top): y " + mm(L.y_gauge) + " z " + mm(L.z_gauge) + "\n";
+      if (L.gauge_at_widest) j["gauge_point_at_widest"] = true;
+      text += std::string(L.gauge_at_widest ? "gauge_point_mm (widest point: the face turns under above 14 mm below the top)"
+                                            : "gauge_point_mm (14 mm below the top)") +
+              ": y " + mm(L.y_gauge) + " z " + mm(L.z_gauge) + "\n";
     } else {
       j["gauge_point_y_mm"] = nullptr;
       j["gauge_point_z_mm"] = nullptr;
@@ -67,6 +76,50 @@ void print_info(const Profile& p, bool json, std::ostream& out) {
     j["flange_tip_y_mm"] = L.y_tip * 1e3;
     j["flange_tip_z_mm"] = L.z_tip * 1e3;
     text += "flange_tip_mm: y " + mm(L.y_tip) + " z " + mm(L.z_tip) + "\n";
+    const WheelMeasures M = wheel_measures(p);
+    if (M.valid) {
+      auto r3 = [](double v_m) { return std::round(v_m * 1e6) / 1e3; };  // mm to 1 µm
+      j["wheel_measures_mm"] = {{"Sh", r3(M.Sh)}, {"Sd", r3(M.Sd)}, {"qR", r3(M.qR)}};
+      text += "wheel_measures_mm (EN 15313): Sh " + format_number(r3(M.Sh)) + " Sd " + format_number(r3(M.Sd)) +
+              " qR " + format_number(r3(M.qR)) + "\n";
+    } else {
+      j["wheel_measures_mm"] = nullptr;
+      text += "wheel_measures_mm: none (" + M.why + ")\n";
+    }
+  }
+  if (!p.file_measures.empty()) {
+    nlohmann::ordered_json m;
+    text += "file_measures:";
+    for (const auto& kv : p.file_measures) {
+      m[kv.first] = kv.second;
+      text += " " + kv.first + "=" + kv.second;
+    }
+    text += "\n";
+    j["file_measures"] = m;
+  }
+  if (!p.cleanup.mode.empty()) {
+    const CleanupReport& c = p.cleanup;
+    nlohmann::ordered_json cj;
+    cj["mode"] = c.mode;
+    cj["duplicates_removed"] = c.duplicates;
+    cj["jitter_points_dropped"] = c.jitter;
+    cj["folds_removed"] = c.folds;
+    cj["fold_points_dropped"] = c.fold_points;
+    cj["crossing_points_added"] = c.crossings;
+    if (c.folds) {
+      cj["folds_y_from_mm"] = c.y_from_mm;
+      cj["folds_y_to_mm"] = c.y_to_mm;
+      cj["largest_fold_mm"] = c.largest_fold_mm;
+    }
+    j["cleanup"] = cj;
+    text += "cleanup: " + c.mode + ", " + std::to_string(c.duplicates) + " duplicates, " + std::to_string(c.jitter) +
+            " jitter points, " + std::to_string(c.folds) + " folds (" + std::to_string(c.fold_points) +
+            " points dropped, " + std::to_string(c.crossings) + " crossing points added)";
+    if (c.folds)
+      text += " at y " + format_number(std::round(c.y_from_mm * 1e3) / 1e3) + " … " +
+              format_number(std::round(c.y_to_mm * 1e3) / 1e3) + " mm, largest step back " +
+              format_number(std::round(c.largest_fold_mm * 1e3) / 1e3) + " mm";
+    text += "\n";
   }
   j["sha256"] = p.checksum;
   j["warnings"] = p.warnings;
@@ -83,9 +136,10 @@ void add_profile_io_commands(CLI::App& profile, CliContext& ctx) {
     auto opt = std::make_shared<ProfileReadOptions>();
     auto in = std::make_shared<std::string>();
     auto outp = std::make_shared<std::string>();
-    CLI::App* c = profile.add_subcommand("convert", "read a profile file and write it as .csv or .prr/.prw");
+    CLI::App* c = profile.add_subcommand("convert", "read a profile file (cleaned, see --cleanup) and write it in any format it reads");
     c->add_option("IN", *in, "input profile file")->required();
-    c->add_option("-o,--output", *outp, "output file: .csv (y_mm,z_mm; z up) or .prr/.prw (SIMPACK)")->required();
+    c->add_option("-o,--output", *outp, "output file: .csv/.txt/.dat (y_mm, z_mm; z up), .prr/.prw (SIMPACK), .ban/.whl (MiniProf), "
+                   ".rail/.wheel (GENSYS) or .rai/.whe (VAMPIRE); the extension must match the kind")->required();
     add_profile_read_options(*c, *opt);
     c->callback([opt, in, outp, &ctx]() {
       const Profile p = read_profile(*in, *opt);

@@ -54,6 +54,7 @@ CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, 
     c.ellipse = static_cast<int>(e) + 1;
     c.g = geo[e];
     c.A = 1.0 / (2.0 * c.g.R_wyy());                 // (eq. 1)
+    if (c.g.r_roller > 0) c.A += 0.5 * c.g.k_ryy();  // roller rig: + 1/(2 R_ryy); a straight rail adds nothing
     c.B = 0.5 * (c.g.k_wxx + c.g.k_rxx);             // (eq. 1)
     c.cg = std::cos(c.g.gamma);
     c.sg = std::sin(c.g.gamma);

@@ -33,10 +33,31 @@ class InputError : public std::runtime_error {
 
   static std::string format(const std::string& where, const std::string& value,
                             const std::string& rule, const std::string& hint) {
-    std::string s = where;
-    if (!value.empty()) s += ": value " + value;
-    s += ": " + rule;
-    if (!hint.empty()) s += " (" + hint + ")";
+    std::string s = printable(where);
+    if (!value.empty()) s += ": value " + printable(value);
+    s += ": " + printable(rule);
+    if (!hint.empty()) s += " (" + printable(hint) + ")";
+    return s;
+  }
+
+  /// Control bytes (NUL, ESC, ...) as \xNN: a message quoting a line of a binary file must not be
+  /// cut at its first NUL byte (the rule and the fix come after the value). UTF-8 is kept.
+  static std::string printable(const std::string& in) {
+    static const char* hex = "0123456789abcdef";
+    std::string s;
+    s.reserve(in.size());
+    for (char ch : in) {
+      const auto c = static_cast<unsigned char>(ch);
+      if (c < 0x20 && c != '\t' && c != '\n') {
+        s += "\\x";
+        s += hex[c >> 4];
+        s += hex[c & 15];
+      } else if (c == 0x7f) {
+        s += "\\x7f";
+      } else {
+        s += ch;
+      }
+    }
     return s;
   }
 

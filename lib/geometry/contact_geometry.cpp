@@ -10,6 +10,7 @@
 namespace mh {
 
 double CandidateGeom::R_wyy() const { return r_roll / std::cos(gamma); }
+double CandidateGeom::k_ryy() const { return r_roller > 0 ? std::cos(gamma) / r_roller : 0.0; }
 
 bool GeometryOptions::valid(std::string* why) const {
   auto fail = [&](const std::string& s) { if (why) *why = s; return false; };
@@ -76,6 +77,7 @@ void ContactGeometry::candidates_at(double t, CandidateGeom* out, int* main) con
     c.k_rxx = a.k_rxx + f * (b.k_rxx - a.k_rxx);
     c.k_wxx = a.k_wxx + f * (b.k_wxx - a.k_wxx);
     c.r_roll = a.r_roll + f * (b.r_roll - a.r_roll);
+    c.r_roller = a.r_roller + f * (b.r_roller - a.r_roller);
   }
   if (main) *main = main_ellipse[f < 0.5 ? k : k1];
 }
@@ -96,12 +98,20 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   // centre, the wheel's flange back flange_back_distance/2, its taping line (y = 0) a further
   // −flange_back_position towards the field side.
   const RailLandmarks L = rail_landmarks(rail, track.gauge_height);
-  if (!L.has_gauge)
-    throw InputError(rail.source, "", "no gauge point found " + format_number(track.gauge_height * 1e3) +
-                                          " mm below the top of the rail on its gauge side (negative y)",
-                     "the rail profile must reach that low on the gauge side; check mirror_y");
-  G.rail_gauge_y = L.y_gauge;
-  G.y_offset = (L.y_gauge - track.gauge / 2) + (track.flange_back_distance / 2 - track.flange_back_position);
+  if (track.positioning == TrackSetup::Positioning::Explicit) {
+    // The user places the wheel: its origin (taping line) at rail y = lateral_offset.
+    G.rail_gauge_y = L.has_gauge ? L.y_gauge : 0.0;
+    G.y_offset = track.lateral_offset;
+  } else {
+    if (!L.has_gauge)
+      throw InputError(rail.source, "", "no gauge point found " + format_number(track.gauge_height * 1e3) +
+                                            " mm below the top of the rail on its gauge side (negative y)",
+                       "the rail profile must reach that low on the gauge side (check mirror_y); for a roller, a "
+                       "rail scanned only over its head or a narrow section place the wheel yourself: "
+                       "track.positioning \"explicit\" with track.lateral_offset_mm");
+    G.rail_gauge_y = L.y_gauge;
+    G.y_offset = (L.y_gauge - track.gauge / 2) + (track.flange_back_distance / 2 - track.flange_back_position);
+  }
 
   // Strips over the rail.
   const double w = opt.strip_width;
@@ -203,6 +213,7 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
       const double z_w = W.z(c.y_w);
       c.gap = (kn == k) ? 0.0 : std::max(0.0, (z_w - z_r) - mains[k].gmin);
       c.r_roll = r0 - (z_w - zw0);
+      if (track.roller_radius > 0) c.r_roller = track.roller_radius + z_r;  // z_r: height above the rail origin
     }
   }
   return G;

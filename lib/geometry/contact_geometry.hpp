@@ -21,6 +21,17 @@ struct TrackSetup {
   double flange_back_distance = 1.360;    ///< [m] wheelset flange-back distance (default 1360 mm)
   double flange_back_position = -0.070;   ///< [m] y of the flange back on the wheel profile (default −70 mm)
   double nominal_radius = 0.460;          ///< [m] wheel radius at the taping line y = 0 (default 460 mm)
+  /// How the wheel is placed against the rail at t_Y = 0 (README "Positioning"):
+  ///  Gauge (default): from the rail's gauge point (gauge_height below its top), the gauge and the
+  ///    wheelset's flange-back distance/position (method.md §7);
+  ///  Explicit: the rail y of the wheel profile's origin (taping line) is `lateral_offset`, for
+  ///    a test-rig roller, a rail scanned only over its head, a narrow section: no gauge point.
+  enum class Positioning { Gauge, Explicit };
+  Positioning positioning = Positioning::Gauge;
+  double lateral_offset = 0;              ///< [m] Explicit: rail y of the wheel origin at t_Y = 0
+  /// [m] A roller rig: the roller's radius at the rail profile's z = 0 (its origin); its
+  /// longitudinal curvature enters A = 1/(2 R_wyy) + 1/(2 R_ryy). 0 (default): a straight rail.
+  double roller_radius = 0;
 };
 
 struct GeometryOptions {
@@ -52,6 +63,9 @@ struct CandidateGeom {
   double k_wxx = 0;   ///< [1/m] 1/R_wxx (negative: concave wheel, e.g. the flange root)
   double r_roll = 0;  ///< [m] wheel rolling radius at y_w
   double R_wyy() const;  ///< [m] r_roll / cos γ (method.md §2, Meusnier)
+  double r_roller = 0;   ///< [m] roller rigs: the roller's radius at y_r (0: a straight rail)
+  /// [1/m] 1/R_ryy = cos γ / r_roller (Meusnier, as for the wheel); 0 for a straight rail.
+  double k_ryy() const;
 };
 
 struct PotentialEllipse {
@@ -72,7 +86,7 @@ class ContactGeometry {
   std::vector<std::size_t> main_strip;   ///< per grid point: index of the strip with the smallest gap
   std::vector<double> z_contact;         ///< [m] per grid point: wheel height offset at geometric contact
   double y_offset = 0;                   ///< [m] rail y of the wheel's origin (taping line) at t_Y = 0
-  double rail_gauge_y = 0;               ///< [m] gauge point of the rail (rail frame)
+  double rail_gauge_y = 0;               ///< [m] gauge point of the rail (rail frame); explicit positioning: the gauge point if the rail has one, else 0
   double wheel_window = 0, rail_window = 0;  ///< [m] curvature fit windows used (profile_curve.hpp)
   /// The smooth profiles the tables were built from, kept for the 3-D gap of the grid methods
   /// (geometry/gap.hpp): wheel in its own frame, rail with its inclination.

@@ -82,7 +82,7 @@ ProfileSource parse_profile_source(const Ctx& c, const json& v, const std::strin
     if (v.contains("step_mm")) s.step = c.positive(v, path, "step_mm") * units::mm;
     return s;
   }
-  c.only_keys(v, path, {"file", "format", "mirror_y", "mirror_z", "scale", "kind", "vampire_side", "check"});
+  c.only_keys(v, path, {"file", "format", "mirror_y", "mirror_z", "scale", "kind", "vampire_side", "check", "cleanup"});
   if (!v.contains("file")) c.fail(path, &v, "a profile object needs \"file\" (or \"standard\")");
   s.file = resolve_path(case_path, c.string(v, path, "file"));
   if (v.contains("format")) {
@@ -96,6 +96,13 @@ ProfileSource parse_profile_source(const Ctx& c, const json& v, const std::strin
   if (v.contains("mirror_z")) s.read.mirror_z = c.boolean(v, path, "mirror_z");
   if (v.contains("scale")) s.read.scale = c.positive(v, path, "scale");
   if (v.contains("check")) s.read.check = c.boolean(v, path, "check");
+  if (v.contains("cleanup")) {
+    try {
+      s.read.cleanup = parse_profile_cleanup(c.string(v, path, "cleanup"));
+    } catch (const std::invalid_argument& e) {
+      c.fail(path + "/cleanup", &v.at("cleanup"), e.what());
+    }
+  }
   if (v.contains("vampire_side")) {
     s.read.vampire_side = c.string(v, path, "vampire_side");
     if (s.read.vampire_side != "left" && s.read.vampire_side != "right")
@@ -232,7 +239,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   if (!rl.contains("profile")) c.fail("/rail/profile", nullptr, "required");
   cf.rail = parse_profile_source(c, rl.at("profile"), "/rail/profile", path);
   if (!rl.contains("inclination"))
-    c.fail("/rail/inclination", nullptr, "required: \"as-is\" (the profile is already laid as used), \"none\", \"1:40\" or \"1:20\"",
+    c.fail("/rail/inclination", nullptr, "required: \"as-is\" (the profile is already laid as used), \"none\", \"1:N\" (\"1:40\", \"1:30\", \"1:20\" ...) or an angle such as \"2.5deg\"",
            "say whether the tool must cant the rail, so it is never applied twice");
   try {
     cf.inclination = parse_inclination(c.string(rl, "/rail", "inclination"));
@@ -242,7 +249,32 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   // track
   if (j.contains("track")) {
     const json& t = j.at("track");
-    c.only_keys(t, "/track", {"gauge_mm", "gauge_height_mm", "flange_back_distance_mm", "flange_back_position_mm"});
+    c.only_keys(t, "/track", {"gauge_mm", "gauge_height_mm", "flange_back_distance_mm", "flange_back_position_mm",
+                              "positioning", "lateral_offset_mm", "roller_radius_mm"});
+    if (t.contains("positioning")) {
+      const std::string pos = c.string(t, "/track", "positioning");
+      if (pos == "explicit") cf.track.positioning = TrackSetup::Positioning::Explicit;
+      else if (pos != "gauge")
+        c.fail("/track/positioning", &t.at("positioning"), "must be \"gauge\" (default) or \"explicit\"");
+    }
+    if (cf.track.positioning == TrackSetup::Positioning::Explicit) {
+      if (!t.contains("lateral_offset_mm"))
+        c.fail("/track/lateral_offset_mm", nullptr,
+               "required with positioning \"explicit\": the rail y [mm] of the wheel profile's origin (taping line) "
+               "at t_Y = 0",
+               "e.g. 0 when both profiles have their origin on the same vertical line");
+      cf.track.lateral_offset = c.number(t, "/track", "lateral_offset_mm") * units::mm;
+      if (std::abs(cf.track.lateral_offset) > 0.2)
+        c.fail("/track/lateral_offset_mm", &t.at("lateral_offset_mm"), "must lie within -200 … 200 mm");
+    } else if (t.contains("lateral_offset_mm")) {
+      c.fail("/track/lateral_offset_mm", &t.at("lateral_offset_mm"), "only used with positioning \"explicit\"",
+             "add \"positioning\": \"explicit\" or remove it");
+    }
+    if (t.contains("roller_radius_mm")) {
+      const double rr = c.positive(t, "/track", "roller_radius_mm");
+      if (rr < 50 || rr > 5000) c.fail("/track/roller_radius_mm", &t.at("roller_radius_mm"), "must be between 50 and 5000 mm");
+      cf.track.roller_radius = rr * units::mm;
+    }
     if (t.contains("gauge_mm")) cf.track.gauge = c.positive(t, "/track", "gauge_mm") * units::mm;
     if (t.contains("gauge_height_mm")) cf.track.gauge_height = c.positive(t, "/track", "gauge_height_mm") * units::mm;
     if (t.contains("flange_back_distance_mm")) cf.track.flange_back_distance = c.positive(t, "/track", "flange_back_distance_mm") * units::mm;
@@ -493,6 +525,12 @@ nlohmann::json CaseFile::resolved_json() const {
   j["track"] = {{"gauge_mm", track.gauge * 1e3}, {"gauge_height_mm", track.gauge_height * 1e3},
                 {"flange_back_distance_mm", track.flange_back_distance * 1e3},
                 {"flange_back_position_mm", track.flange_back_position * 1e3}};
+  // Only when used: the resolved inputs of gauge-positioned straight-rail cases stay as they were.
+  if (track.positioning == TrackSetup::Positioning::Explicit) {
+    j["track"]["positioning"] = "explicit";
+    j["track"]["lateral_offset_mm"] = track.lateral_offset * 1e3;
+  }
+  if (track.roller_radius > 0) j["track"]["roller_radius_mm"] = track.roller_radius * 1e3;
   j["geometry"] = {{"tY_min_mm", geometry.tY_min * 1e3}, {"tY_max_mm", geometry.tY_max * 1e3},
                    {"tY_step_mm", geometry.tY_step * 1e3}, {"strip_width_mm", geometry.strip_width * 1e3},
                    {"jump_threshold_deg", geometry.jump_threshold / units::deg},

@@ -6,10 +6,10 @@
 
 namespace mh {
 
-/// Write a profile; the format follows the extension: ".csv" canonical table (header "y_mm,z_mm",
-/// y to the field side, z up, mm), ".prr"/".prw" SIMPACK (type from the extension, z down as
-/// SIMPACK expects, no transformations). Atomic (OutputFile). Throws InputError on an unknown
-/// extension or an unwritable path.
+/// Write a profile; the format follows the extension (profile/write.hpp: csv, txt, dat, prr/prw,
+/// ban/whl, rail/wheel, rai/whe), the kind is kept (a wheel is refused for a rail extension and the
+/// reverse, naming the right one). Atomic (OutputFile). Throws InputError on an unknown
+/// extension, a kind that the extension cannot hold, or an unwritable path.
 void write_profile(const Profile& p, const std::string& path);
 
 }  // namespace mh

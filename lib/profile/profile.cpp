@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <cctype>
+#include <cstdlib>
 #include <stdexcept>
+
+#include "core/numfmt.hpp"
 
 namespace mh {
 
@@ -16,27 +20,46 @@ const char* to_string(ProfileKind k) {
 }
 
 Inclination parse_inclination(const std::string& s) {
+  const std::string rule =
+      "inclination must be \"as-is\", \"none\", a ratio \"1:N\" with N >= 5 (e.g. \"1:40\", \"1:30\", "
+      "\"1:20\") or an angle in degrees (e.g. \"2.5deg\", at most 11.3deg)";
   if (s == "as-is") return Inclination::AsIs;
   if (s == "none") return Inclination::None;
-  if (s == "1:40") return Inclination::In40;
-  if (s == "1:20") return Inclination::In20;
-  throw std::invalid_argument("inclination must be one of \"as-is\", \"none\", \"1:40\", \"1:20\"");
+  auto number = [&](const std::string& t) {
+    if (t.empty() || std::isspace(static_cast<unsigned char>(t[0]))) throw std::invalid_argument(rule + ", not \"" + s + "\"");
+    char* e = nullptr;
+    const double v = std::strtod(t.c_str(), &e);
+    if (e == t.c_str() || *e != '\0' || !std::isfinite(v)) throw std::invalid_argument(rule + ", not \"" + s + "\"");
+    return v;
+  };
+  if (s.rfind("1:", 0) == 0) {
+    const double n = number(s.substr(2));
+    if (!(n >= 5)) throw std::invalid_argument(rule + ", not \"" + s + "\" (N must be at least 5)");
+    return Inclination{Inclination::Mode::Ratio, n};
+  }
+  const auto d = s.size() >= 3 ? s.size() - 3 : std::string::npos;
+  if (d != std::string::npos && s.compare(d, 3, "deg") == 0) {
+    const double a = number(s.substr(0, d));
+    if (!(a >= 0 && a <= 11.31)) throw std::invalid_argument(rule + ", not \"" + s + "\" (angle out of range)");
+    return Inclination{Inclination::Mode::Angle, a};
+  }
+  throw std::invalid_argument(rule + ", not \"" + s + "\"");
 }
 
-const char* to_string(Inclination i) {
-  switch (i) {
-    case Inclination::AsIs: return "as-is";
-    case Inclination::None: return "none";
-    case Inclination::In40: return "1:40";
-    case Inclination::In20: return "1:20";
+std::string to_string(const Inclination& i) {
+  switch (i.mode) {
+    case Inclination::Mode::AsIs: return "as-is";
+    case Inclination::Mode::None: return "none";
+    case Inclination::Mode::Ratio: return "1:" + format_number(i.value);
+    case Inclination::Mode::Angle: return format_number(i.value) + "deg";
   }
   return "?";
 }
 
-double inclination_angle(Inclination i) {
-  switch (i) {
-    case Inclination::In40: return std::atan(1.0 / 40.0);
-    case Inclination::In20: return std::atan(1.0 / 20.0);
+double inclination_angle(const Inclination& i) {
+  switch (i.mode) {
+    case Inclination::Mode::Ratio: return std::atan(1.0 / i.value);
+    case Inclination::Mode::Angle: return i.value * 3.14159265358979323846 / 180.0;
     default: return 0.0;
   }
 }
@@ -87,6 +110,12 @@ RailLandmarks rail_landmarks(const Profile& rail, double below) {
       break;
     }
   }
+  if (!L.has_gauge && rail.cleanup.gauge_undercut && rail.z[0] > zg && rail.z[0] < L.z_top) {
+    L.y_gauge = rail.y[0];
+    L.z_gauge = rail.z[0];
+    L.has_gauge = true;
+    L.gauge_at_widest = true;
+  }
   return L;
 }
 
@@ -99,6 +128,44 @@ WheelLandmarks wheel_landmarks(const Profile& wheel) {
   L.y_tip = wheel.y[imin];
   L.z_tip = wheel.z[imin];
   return L;
+}
+
+}  // namespace mh
+
+namespace mh {
+
+WheelMeasures wheel_measures(const Profile& w) {
+  WheelMeasures M;
+  const std::size_t n = w.size();
+  if (n < 2) { M.why = "too few points"; return M; }
+  if (!(w.y.front() <= 0 && w.y.back() >= 0)) { M.why = "the profile does not reach the taping line y = 0"; return M; }
+  std::size_t itip = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (w.z[i] < w.z[itip]) itip = i;
+  std::size_t j = 1;
+  while (j + 1 < n && w.y[j] < 0) ++j;
+  const double z0 = w.z[j - 1] + (w.z[j] - w.z[j - 1]) * (0 - w.y[j - 1]) / (w.y[j] - w.y[j - 1]);
+  const double ztip = w.z[itip];
+  if (!(w.y[itip] < 0)) { M.why = "the flange tip is not at negative y"; return M; }
+  // First crossing of level zl on the flange face, from the tip towards the tread.
+  auto face = [&](double zl, double& y) {
+    for (std::size_t i = itip + 1; i < n && w.y[i] <= 0; ++i)
+      if (w.z[i - 1] <= zl && w.z[i] >= zl) {
+        const double dz = w.z[i] - w.z[i - 1];
+        y = dz > 0 ? w.y[i - 1] + (w.y[i] - w.y[i - 1]) * (zl - w.z[i - 1]) / dz : w.y[i];
+        return true;
+      }
+    return false;
+  };
+  double yd = 0, yq = 0;
+  const double zd = z0 - 0.010, zq = ztip + 0.002;
+  if (!(ztip < zd) || !face(zd, yd)) { M.why = "the flange is not 10 mm high"; return M; }
+  if (!face(zq, yq)) { M.why = "no flange face 2 mm above the tip"; return M; }
+  M.Sh = z0 - ztip;
+  M.Sd = yd + 0.070;  // the flange back 70 mm from the taping line (EN 13715; ProfileCheckLimits)
+  M.qR = yd - yq;
+  M.valid = true;
+  return M;
 }
 
 }  // namespace mh

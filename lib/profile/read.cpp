@@ -40,6 +40,22 @@ const char* to_string(ProfileFormat f) {
   return "?";
 }
 
+ProfileCleanup parse_profile_cleanup(const std::string& s) {
+  if (s == "envelope" || s == "on") return ProfileCleanup::Envelope;
+  if (s == "strict") return ProfileCleanup::Strict;
+  if (s == "off") return ProfileCleanup::Off;
+  throw std::invalid_argument("unknown clean-up '" + s + "' (expected envelope, strict or off)");
+}
+
+const char* to_string(ProfileCleanup c) {
+  switch (c) {
+    case ProfileCleanup::Envelope: return "envelope";
+    case ProfileCleanup::Strict: return "strict";
+    case ProfileCleanup::Off: return "off";
+  }
+  return "?";
+}
+
 ProfileFormat format_from_extension(const std::string& path) {
   const std::string e = extension(path);
   if (e == "prr" || e == "prw") return ProfileFormat::Simpack;
@@ -62,9 +78,8 @@ Profile read_profile(const std::string& path, const ProfileReadOptions& opt) {
   switch (f) {
     case ProfileFormat::Simpack: r = read_simpack(path, lines); break;
     case ProfileFormat::MiniProf: {
-      bool wheel = ext == "whl";
-      if (ext != "whl" && ext != "ban") wheel = opt.kind == ProfileKind::Wheel;
-      r = read_miniprof(path, lines, wheel);
+      ProfileKind hint = ext == "whl" ? ProfileKind::Wheel : ext == "ban" ? ProfileKind::Rail : opt.kind;
+      r = read_miniprof(path, lines, hint);
       break;
     }
     case ProfileFormat::Vampire: r = read_vampire(path, lines, opt.vampire_side); break;
@@ -91,6 +106,8 @@ Profile read_profile(const std::string& path, const ProfileReadOptions& opt) {
   p.format = r.format;
   p.checksum = sha256_hex(bytes);
   p.warnings = r.warnings;
+  p.cleanup = r.cleanup;
+  p.file_measures = r.measures;
   p.y.resize(r.size());
   p.z.resize(r.size());
   for (std::size_t k = 0; k < r.size(); ++k) p.y[k] = r.y[k] / 1000 + 0.0, p.z[k] = r.z[k] / 1000 + 0.0;  // +0.0: no -0; "/ 1000" so that "* 1000" gives the file digits back

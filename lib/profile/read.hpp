@@ -17,6 +17,19 @@ enum class ProfileFormat { Auto, Simpack, MiniProf, Table, Vampire };
 ProfileFormat parse_profile_format(const std::string& s);
 const char* to_string(ProfileFormat f);
 
+/// Clean-up of measured profiles where the other body can touch (README "Clean-up"):
+///  Envelope (default): exact duplicates and ≤ 0.05 mm jitter dropped, then folds and loops
+///    (y stepping back) replaced by the outer envelope of the surface the other body can touch
+///    (rail: the upper envelope, wheel: the lower one), with a warning saying how many points
+///    went and where; still rejected: a fold deeper than kMaxFold_mm, folds over more than
+///    kMaxFoldFraction of the width, a gap wider than kMaxBridge_mm left by the clean-up.
+///  Strict: duplicates and jitter dropped, any larger backward step rejected (before issue #13).
+///  Off: nothing dropped where contact can happen; any step that does not advance y is rejected.
+enum class ProfileCleanup { Envelope, Strict, Off };
+/// "envelope", "strict", "off"; std::invalid_argument otherwise.
+ProfileCleanup parse_profile_cleanup(const std::string& s);
+const char* to_string(ProfileCleanup c);
+
 struct ProfileReadOptions {
   ProfileFormat format = ProfileFormat::Auto;  ///< Auto: by extension, else by content
   ProfileKind kind = ProfileKind::Unknown;     ///< expected kind; Unknown: from the file (header, extension)
@@ -24,6 +37,7 @@ struct ProfileReadOptions {
   bool mirror_z = false;   ///< mirror z after the format's own transformations (default: no)
   double scale = 1.0;      ///< multiply file lengths by this before interpreting them as mm (default 1)
   bool check = true;       ///< run the plausibility checks (default: yes)
+  ProfileCleanup cleanup = ProfileCleanup::Envelope;  ///< clean-up where contact can happen (default envelope)
   /// VAMPIRE files hold both sides; which one to read: "right" (default) or "left".
   std::string vampire_side = "right";
 };
@@ -40,6 +54,18 @@ struct ProfileCheckLimits {
   /// Inside that region a point that steps back in y by at most this much is measurement jitter
   /// (MiniProf resolution is 0.01 mm) and is dropped with a warning; a larger step is an error.
   static constexpr double kJitter_mm = 0.05;
+  /// Clean-up (ProfileCleanup::Envelope): a fold whose y steps back by more than this is not a
+  /// measurement artefact that an envelope can honestly remove; rejected.
+  static constexpr double kMaxFold_mm = 1.0;
+  /// ... nor folds that together cover more than this fraction of the width that can touch.
+  static constexpr double kMaxFoldFraction = 0.5;
+  /// ... nor a clean-up that leaves two neighbouring points farther apart than this.
+  static constexpr double kMaxBridge_mm = 2.0;
+  /// MiniProf drawing elements (MPD<k>=): largest spacing of the sampled points along an element
+  /// (arcs: equal angles, points exactly on the arc) ...
+  static constexpr double kElementStep_mm = 0.1;
+  /// ... and consecutive elements "join" when the end of one is this close to the start of the next.
+  static constexpr double kElementJoin_mm = 0.001;
   static constexpr double kTapingLineFromFlangeBack_mm = 70.0;  ///< EN 13715: taping line 70 mm from the flange back
   static constexpr double kFlangeHeight_mm = 10.0; ///< a flange: lowest point this far below the field-side end
 };

@@ -85,6 +85,198 @@ void keep_range(RawProfile& r, std::size_t a, std::size_t b) {  // keep [a, b]
   r.line = std::vector<std::size_t>(r.line.begin() + a, r.line.begin() + b + 1);
 }
 
+/// Folds and loops inside [i0, i1] (file order) replaced by the outer envelope of the surface
+/// that the other body can touch: a rail is touched from above (upper envelope z(y)), a wheel
+/// from below in the canonical frame (lower envelope). Vertices hidden under the envelope are
+/// dropped, the points where a loop crosses itself are added; the rest is kept as read. Throws
+/// InputError for what an envelope cannot honestly repair (ProfileCheckLimits). i0, i1 are
+/// updated to the new indices.
+void outer_envelope(RawProfile& r, const std::string& path, std::size_t& i0, std::size_t& i1) {
+  const double sgn = r.kind == ProfileKind::Wheel ? -1.0 : 1.0;  // outer = larger sgn·z
+  // Fold runs: consecutive segments that step back in y (or not forward).
+  struct Zone { double lo, hi; std::size_t first_line; };
+  std::vector<Zone> zones;
+  double largest = 0;
+  std::size_t largest_line = 0;
+  std::size_t nfolds = 0;
+  for (std::size_t k = i0 + 1; k <= i1; ++k) {
+    if (r.y[k] > r.y[k - 1]) continue;
+    std::size_t e = k;
+    while (e + 1 <= i1 && !(r.y[e + 1] > r.y[e])) ++e;
+    const double ystart = r.y[k - 1];
+    double ymin = ystart;
+    for (std::size_t j = k; j <= e; ++j) ymin = std::min(ymin, r.y[j]);
+    ++nfolds;
+    if (ystart - ymin > largest) largest = ystart - ymin, largest_line = r.line[k];
+    zones.push_back({ymin, ystart, r.line[k]});
+    k = e;
+  }
+  if (zones.empty()) return;
+  const double width = r.y[i1] - r.y[i0];
+  if (largest > L::kMaxFold_mm)
+    throw InputError(at_line(path, largest_line), "y steps back by " + mm(largest),
+                     "a fold deeper than " + mm(L::kMaxFold_mm) +
+                         " where contact can happen is not a measurement artefact that the clean-up may remove",
+                     "check the measurement there (a misplaced gauge, a wrong side?) or edit the points");
+  // Each zone widened to every segment that overlaps it (the forward layers around the fold);
+  // overlapping zones merged.
+  std::sort(zones.begin(), zones.end(), [](const Zone& a, const Zone& b) { return a.lo < b.lo; });
+  bool grown = true;
+  while (grown) {
+    grown = false;
+    for (auto& zn : zones)
+      for (std::size_t k = i0 + 1; k <= i1; ++k) {
+        const double a = std::min(r.y[k - 1], r.y[k]), b = std::max(r.y[k - 1], r.y[k]);
+        if (b > zn.lo && a < zn.hi && (a < zn.lo || b > zn.hi) && !(r.y[k] > r.y[k - 1])) {
+          zn.lo = std::min(zn.lo, a), zn.hi = std::max(zn.hi, b), grown = true;
+        }
+      }
+    std::vector<Zone> merged;
+    for (const auto& zn : zones) {
+      if (!merged.empty() && zn.lo <= merged.back().hi) merged.back().hi = std::max(merged.back().hi, zn.hi);
+      else merged.push_back(zn);
+    }
+    zones = merged;
+  }
+  double covered = 0;
+  for (const auto& zn : zones) covered += zn.hi - zn.lo;
+  if (width > 0 && covered > L::kMaxFoldFraction * width)
+    throw InputError(path, "folds over " + mm(covered) + " of " + mm(width),
+                     "the profile folds over most of the width that can touch; an envelope would invent the surface",
+                     "check the measurement (wrong axis order or sign? --mirror-y / --format), or measure again");
+  auto in_zone = [&zones](double y) {
+    for (const auto& zn : zones)
+      if (y >= zn.lo && y <= zn.hi) return true;
+    return false;
+  };
+  // The segments that lie (partly) in a zone: the only ones that can hide a point.
+  std::vector<std::size_t> segs;
+  for (std::size_t k = i0 + 1; k <= i1; ++k) {
+    const double a = std::min(r.y[k - 1], r.y[k]), b = std::max(r.y[k - 1], r.y[k]);
+    for (const auto& zn : zones)
+      if (b >= zn.lo && a <= zn.hi) { segs.push_back(k); break; }
+  }
+  auto envelope_at = [&](double y) {  // sgn·z of the outer envelope at y
+    double best = -1e300;
+    for (std::size_t k : segs) {
+      const double ya = r.y[k - 1], yb = r.y[k], za = r.z[k - 1], zb = r.z[k];
+      if (y < std::min(ya, yb) || y > std::max(ya, yb)) continue;
+      if (ya == yb) best = std::max({best, sgn * za, sgn * zb});
+      else best = std::max(best, sgn * (za + (zb - za) * (y - ya) / (yb - ya)));
+    }
+    return best;
+  };
+  struct Pt { double y, z; std::size_t line; };
+  std::vector<Pt> kept;
+  std::size_t dropped = 0;
+  double dlo = 1e300, dhi = -1e300;
+  const double tol = 1e-9;  // mm
+  for (std::size_t k = i0; k <= i1; ++k) {
+    if (!in_zone(r.y[k]) || sgn * r.z[k] >= envelope_at(r.y[k]) - tol) {
+      kept.push_back({r.y[k], r.z[k], r.line[k]});
+    } else {
+      ++dropped;
+      dlo = std::min(dlo, r.y[k]), dhi = std::max(dhi, r.y[k]);
+    }
+  }
+  // Crossings of two segments in a zone (a loop crossing itself) that lie on the envelope.
+  std::size_t crossings = 0;
+  for (std::size_t x = 0; x < segs.size(); ++x)
+    for (std::size_t w = x + 1; w < segs.size(); ++w) {
+      const std::size_t p = segs[x], q = segs[w];
+      if (q == p + 1) continue;  // neighbours share a vertex
+      const double y1 = r.y[p - 1], z1 = r.z[p - 1], y2 = r.y[p], z2 = r.z[p];
+      const double y3 = r.y[q - 1], z3 = r.z[q - 1], y4 = r.y[q], z4 = r.z[q];
+      const double den = (y2 - y1) * (z4 - z3) - (z2 - z1) * (y4 - y3);
+      if (std::abs(den) < 1e-15) continue;
+      const double t = ((y3 - y1) * (z4 - z3) - (z3 - z1) * (y4 - y3)) / den;
+      const double u = ((y3 - y1) * (z2 - z1) - (z3 - z1) * (y2 - y1)) / den;
+      if (t <= 1e-9 || t >= 1 - 1e-9 || u <= 1e-9 || u >= 1 - 1e-9) continue;
+      const double yc = y1 + t * (y2 - y1), zc = z1 + t * (z2 - z1);
+      if (sgn * zc >= envelope_at(yc) - tol) {
+        kept.push_back({yc, zc, r.line[p]});
+        ++crossings;
+      }
+    }
+  std::stable_sort(kept.begin(), kept.end(), [](const Pt& a, const Pt& b) { return a.y < b.y; });
+  // Equal y (a vertical piece of the envelope): keep the outer point only.
+  std::vector<Pt> env;
+  for (const Pt& p : kept) {
+    if (!env.empty() && p.y - env.back().y <= tol) {
+      if (sgn * p.z > sgn * env.back().z) env.back() = p;
+      ++dropped;
+      dlo = std::min(dlo, p.y), dhi = std::max(dhi, p.y);
+      continue;
+    }
+    env.push_back(p);
+  }
+  // A loop that does not cross itself leaves a notch in the envelope z(y) (a vertical drop where
+  // one layer ends and the next, lower one goes on). The other body, whose radius is many times
+  // the width of a fold, bridges it: around each fold (the zone, widened by its width and at
+  // least 0.5 mm each side) only the points on the outer convex hull are kept. On a smooth
+  // surface that removes nothing: the head is convex, and a concave wheel root of R 13 mm
+  // sags 0.01 mm over 1 mm.
+  for (const auto& zn : zones) {
+    const double m = std::max(0.5, zn.hi - zn.lo);
+    std::size_t a = 0;
+    while (a < env.size() && env[a].y < zn.lo - m) ++a;
+    std::size_t b = a;
+    while (b < env.size() && env[b].y <= zn.hi + m) ++b;
+    if (b - a < 3) continue;
+    std::vector<Pt> hull;
+    for (std::size_t j = a; j < b; ++j) {
+      const Pt& p = env[j];
+      while (hull.size() >= 2) {
+        const Pt& o = hull[hull.size() - 2];
+        const Pt& q = hull.back();
+        const double cross = (q.y - o.y) * (p.z - o.z) - (q.z - o.z) * (p.y - o.y);
+        if (sgn * cross >= 0) {  // q lies under the chord o–p (rail) / above it (wheel)
+          ++dropped;
+          dlo = std::min(dlo, q.y), dhi = std::max(dhi, q.y);
+          hull.pop_back();
+        } else {
+          break;
+        }
+      }
+      hull.push_back(p);
+    }
+    std::vector<Pt> next(env.begin(), env.begin() + static_cast<std::ptrdiff_t>(a));
+    next.insert(next.end(), hull.begin(), hull.end());
+    next.insert(next.end(), env.begin() + static_cast<std::ptrdiff_t>(b), env.end());
+    env.swap(next);
+  }
+  for (std::size_t j = 1; j < env.size(); ++j)
+    if (in_zone(env[j].y) && env[j].y - env[j - 1].y > L::kMaxBridge_mm)
+      throw InputError(at_line(path, env[j].line), "a gap of " + mm(env[j].y - env[j - 1].y),
+                       "the clean-up of a fold would leave a gap wider than " + mm(L::kMaxBridge_mm) +
+                           " where contact can happen",
+                       "check the measurement there, or edit the points");
+  // Splice: points before i0, the envelope, points after i1.
+  RawProfile c = r;
+  c.y.clear(); c.z.clear(); c.line.clear();
+  for (std::size_t k = 0; k < i0; ++k) c.add(r.y[k], r.z[k], r.line[k]);
+  const std::size_t n0 = c.size();
+  for (const Pt& p : env) c.add(p.y, p.z, p.line);
+  const std::size_t n1 = c.size() - 1;
+  for (std::size_t k = i1 + 1; k < r.size(); ++k) c.add(r.y[k], r.z[k], r.line[k]);
+  r = std::move(c);
+  i0 = n0;
+  i1 = n1;
+  if (dlo > dhi) dlo = dhi = zones.front().lo;
+  r.cleanup.folds = nfolds;
+  r.cleanup.fold_points = dropped;
+  r.cleanup.crossings = crossings;
+  r.cleanup.y_from_mm = dlo;
+  r.cleanup.y_to_mm = dhi;
+  r.cleanup.largest_fold_mm = largest;
+  r.warnings.push_back("clean-up: " + std::to_string(nfolds) + (nfolds == 1 ? " fold/loop" : " folds/loops") +
+                       " where contact can happen replaced by the outer envelope: dropped " + std::to_string(dropped) +
+                       " points at y " + format_number(std::round(dlo * 1e3) / 1e3) + " … " +
+                       format_number(std::round(dhi * 1e3) / 1e3) + " mm" +
+                       (crossings ? ", added " + std::to_string(crossings) + " crossing points" : std::string()) +
+                       " (largest step back " + mm(largest) + "; cleanup \"strict\" rejects instead)");
+}
+
 }  // namespace
 
 void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOptions& opt) {
@@ -93,9 +285,11 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
     throw InputError(path, std::to_string(r.size()) + " points",
                      "a profile needs at least " + std::to_string(L::kMinPoints) + " points",
                      "check the file (commented-out points? wrong format?)");
-  // Exact duplicates of the previous point.
+  r.cleanup.mode = to_string(opt.cleanup);
+  // Exact duplicates of the previous point (not with clean-up off: the check below rejects them
+  // where contact can happen).
   std::size_t dups = 0;
-  {
+  if (opt.cleanup != ProfileCleanup::Off) {
     RawProfile c = r;
     c.y.clear(); c.z.clear(); c.line.clear();
     for (std::size_t k = 0; k < r.size(); ++k) {
@@ -104,6 +298,7 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
     }
     r = c;
   }
+  r.cleanup.duplicates = dups;
   if (dups) r.warnings.push_back("removed " + std::to_string(dups) + " duplicated points");
   if (r.size() == 1)
     throw InputError(path, "y = " + mm(r.y[0]) + ", z = " + mm(r.z[0]), "all points are equal",
@@ -174,10 +369,27 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
     what0 = "flange back";
     what1 = "field-side end (rim face)";
   }
+  if (opt.cleanup == ProfileCleanup::Envelope && r.kind == ProfileKind::Rail) {
+    // A flank that turns under the head inside the depth that can touch (a worn gauge face that
+    // narrows downwards, avg_low2.ban) is hidden from the wheel under the widest point: the
+    // region starts at the widest point on each side, and the points below are clipped like the
+    // flank further down (warning below), rather than taken for a fold.
+    std::size_t itop = i0;
+    for (std::size_t k = i0; k <= i1; ++k)
+      if (r.z[k] > r.z[itop]) itop = k;
+    std::size_t a = i0, b = i1;
+    for (std::size_t k = i0; k <= itop; ++k)
+      if (r.y[k] < r.y[a]) a = k;
+    for (std::size_t k = itop; k <= i1; ++k)
+      if (r.y[k] > r.y[b]) b = k;
+    if (a != i0) r.cleanup.gauge_undercut = true;
+    i0 = a;
+    i1 = b;
+  }
   // Measurement jitter: inside the region, a point that does not advance in y, and lies at most
   // kJitter_mm behind the last kept point, is dropped (with a warning); a larger backward step
   // is a loop or zig-zag and an error below.
-  {
+  if (opt.cleanup != ProfileCleanup::Off) {
     std::vector<std::size_t> keep;
     keep.reserve(r.size());
     std::size_t dropped = 0;
@@ -199,28 +411,36 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
         if (keep[j] == i0) n0 = j;
         if (keep[j] <= i1) n1 = j;
       }
-      RawProfile c;
-      c.kind = r.kind;
-      c.format = r.format;
-      c.warnings = r.warnings;
+      RawProfile c = r;
+      c.y.clear(); c.z.clear(); c.line.clear();
       for (std::size_t k : keep) c.add(r.y[k], r.z[k], r.line[k]);
       r = std::move(c);
       i0 = n0;
       i1 = n1;
+      r.cleanup.jitter = dropped;
       r.warnings.push_back("dropped " + std::to_string(dropped) + " points that stepped back in y by at most " +
                            mm(worst) + " (measurement jitter, at most " + mm(L::kJitter_mm) + ") where contact can happen");
     }
   }
+  if (opt.cleanup == ProfileCleanup::Envelope && r.kind != ProfileKind::Unknown)
+    outer_envelope(r, path, i0, i1);
   for (std::size_t k = i0 + 1; k <= i1; ++k)
     if (!(r.y[k] > r.y[k - 1]))
       throw InputError(at_line(path, r.line[k]), "y = " + mm(r.y[k]) + " after y = " + mm(r.y[k - 1]),
                        std::string("y steps backward (a loop or zig-zag) inside the region that can touch the ") +
                            (r.kind == ProfileKind::Wheel ? "rail" : r.kind == ProfileKind::Rail ? "wheel" : "other body"),
-                       "fix the points there (remove the loop); y must increase strictly");
+                       opt.cleanup == ProfileCleanup::Envelope
+                           ? "fix the points there (remove the loop), or state the kind (--kind) so that the clean-up knows which side can touch; y must increase strictly"
+                           : std::string("fix the points there (remove the loop), or let the clean-up remove it (cleanup \"envelope\", the default, instead of \"") +
+                                 to_string(opt.cleanup) + "\"); y must increase strictly");
   std::size_t a = i0, b = i1;
   while (a > 0 && r.y[a - 1] < r.y[a]) --a;
   while (b + 1 < r.size() && r.y[b + 1] > r.y[b]) ++b;
-  if (a > 0) r.warnings.push_back("clipped " + std::to_string(a) + " points not monotone in y at the " + what0);
+  if (a > 0 && r.cleanup.gauge_undercut)
+    r.warnings.push_back("clipped " + std::to_string(a) + " points at the gauge side: the gauge face turns under the head below z = " +
+                         mm(r.z[a]) + " (hidden from the wheel; the widest point, y = " + mm(r.y[a]) + ", is the gauge point if the face "
+                         "does not reach the gauge height, EN 13848-1)");
+  else if (a > 0) r.warnings.push_back("clipped " + std::to_string(a) + " points not monotone in y at the " + what0);
   if (b + 1 < r.size())
     r.warnings.push_back("clipped " + std::to_string(r.size() - 1 - b) + " points not monotone in y at the " + what1);
   keep_range(r, a, b);

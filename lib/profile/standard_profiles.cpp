@@ -322,7 +322,7 @@ Profile make_standard_profile(const std::string& name, Inclination incl, double 
                      "step must lie in " + format_number(kMinStep * 1e3) + " … " +
                          format_number(kMaxStep * 1e3) + " mm");
   const bool wheel = d.kind == ProfileKind::Wheel;
-  if (wheel && (incl == Inclination::In40 || incl == Inclination::In20))
+  if (wheel && inclination_angle(incl) != 0.0)
     throw InputError("standard profile " + name, to_string(incl),
                      "a wheel profile has no inclination", "use inclination none for S1002");
   const double angle = inclination_angle(incl);
@@ -345,7 +345,7 @@ Profile make_standard_profile(const std::string& name, Inclination incl, double 
   p.kind = d.kind;
   p.source = "standard:" + name;
   p.format = "standard";
-  if (angle != 0) p.source += " inclined " + std::string(to_string(incl));
+  if (angle != 0) p.source += " inclined " + to_string(incl);
   if (drop_gauge_flank)
     p.warnings.push_back(std::string("gauge-side flank left out: it is vertical at ") + to_string(incl) +
                          "; the profile ends at the R13/flank tangency point");

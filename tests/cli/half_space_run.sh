@@ -35,9 +35,14 @@ set +e
 "$bin" run "$tmp/bad.json" -o "$tmp/x" 2> "$tmp/err"; rc=$?
 set -e
 test $rc -eq 2; grep -q '/half_space' "$tmp/err"; grep -q 'dx_mm' "$tmp/err"
-sed 's|"method": "half-space"|"method": "strips"|' "$tmp/hs.json" > "$tmp/strips.json"
+sed 's|"method": "half-space"|"method": "auto"|' "$tmp/hs.json" > "$tmp/auto.json"
 set +e
-"$bin" run "$tmp/strips.json" -o "$tmp/x" 2> "$tmp/err"; rc=$?
+"$bin" run "$tmp/auto.json" -o "$tmp/x" 2> "$tmp/err"; rc=$?
 set -e
 test $rc -eq 2; grep -q '/method' "$tmp/err"
+# --strips belongs to the strip method.
+set +e
+"$bin" run "$tmp/hs.json" -o "$tmp/x" --strips 2> "$tmp/err"; rc=$?
+set -e
+test $rc -eq 2; grep -q -- '--strips' "$tmp/err"
 echo "half_space_run: OK"

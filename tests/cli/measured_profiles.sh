@@ -2,8 +2,8 @@
 # Every measured profile of tests/data/profiles that the reader accepts, paired with a standard
 # counterpart (wheels on 60E1 1:40, rails under S1002), solved over a sweep: exit 0 or 1 (some
 # cases may be no_contact etc.), never 2 or 3, never a crash; every row has a status.
-# avg_HR.BAN is read after dropping one point of 0.01 mm jitter; avg_low2.ban keeps a 0.06 mm
-# backward step on its gauge face and must stay rejected with exit 2 (tests/unit/profile/test_profile_io.cpp).
+# avg_HR.BAN is read after dropping one point of 0.01 mm jitter; avg_low2.ban, whose gauge face
+# turns under the head (rejected before issue #13), runs after the clean-up, with its warning.
 set -euo pipefail
 bin=$1; src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -30,9 +30,29 @@ for r in site_b_hr.prr EN15302_rail_A.dat MBench_UIC60_v3.ban avg_HR.BAN; do
   run_pair '{"standard": "S1002"}' "\"$d/$r\"" "$r"
 done
 for r in avg_low2.ban; do
-  echo "{\"wheel\": {\"profile\": {\"standard\": \"S1002\"}}, \"rail\": {\"profile\": \"$d/$r\", \"inclination\": \"as-is\"}, $sweep}" > "$tmp/$r.json"
-  set +e; "$bin" run "$tmp/$r.json" -o "$tmp/$r" -q 2>"$tmp/$r.err"; rc=$?; set -e
-  test $rc -eq 2; grep -q "y must increase strictly" "$tmp/$r.err"
-  echo "$r: rejected: $(cat "$tmp/$r.err")"
+  run_pair '{"standard": "S1002"}' "\"$d/$r\"" "$r"
+  "$bin" profile info "$d/$r" > "$tmp/$r.info"
+  grep -q "gauge face turns under the head" "$tmp/$r.info"
+  grep -q "gauge_point_mm (widest point" "$tmp/$r.info"
 done
+# the narrow section fr_ol.csv (18 mm wide, no gauge point) and the SIMPACK test surfaces used
+# as rails run with explicit positioning (issue #13 item 3); the test-surface wheels on 60E1
+explicit='"track": {"positioning": "explicit", "lateral_offset_mm": -23}'
+for r in fr_ol.csv circ_r100.prr circ_r300.prr flat_plane.prr flat_ang200.prr groove_r1002.prr MBench_UIC60_v3.prr; do
+  echo "{\"wheel\": {\"profile\": {\"standard\": \"S1002\"}}, \"rail\": {\"profile\": \"$d/$r\", \"inclination\": \"as-is\"}, $explicit, $sweep}" > "$tmp/$r.json"
+  set +e; "$bin" run "$tmp/$r.json" -o "$tmp/$r" -q 2>"$tmp/$r.err"; rc=$?; set -e
+  echo "$r explicit: exit $rc, $(awk -F, 'NR>1{s[$4]++} END{for(k in s) printf "%s %d ", k, s[k]}' "$tmp/$r/cases.csv")"
+  [ $rc -eq 0 ] || [ $rc -eq 1 ] || { cat "$tmp/$r.err" >&2; exit 1; }
+  test "$(wc -l < "$tmp/$r/cases.csv")" -eq 75
+done
+for w in MBench_S1002_v3.prw circ_r10.prw circ_r50.prw circ_r100.prw flat_plane.prw flat_ang200.prw; do
+  echo "{\"wheel\": {\"profile\": \"$d/$w\"}, \"rail\": {\"profile\": $std_rail, \"inclination\": \"1:40\"}, $sweep}" > "$tmp/$w.json"
+  set +e; "$bin" run "$tmp/$w.json" -o "$tmp/$w" -q 2>"$tmp/$w.err"; rc=$?; set -e
+  echo "$w on 60E1 1:40: exit $rc, $(awk -F, 'NR>1{s[$4]++} END{for(k in s) printf "%s %d ", k, s[k]}' "$tmp/$w/cases.csv")"
+  [ $rc -eq 0 ] || [ $rc -eq 1 ] || { cat "$tmp/$w.err" >&2; exit 1; }
+done
+# the clean-up can be made strict: the old rejection, exit 2
+echo "{\"wheel\": {\"profile\": {\"standard\": \"S1002\"}}, \"rail\": {\"profile\": {\"file\": \"$d/avg_low2.ban\", \"cleanup\": \"strict\"}, \"inclination\": \"as-is\"}, $sweep}" > "$tmp/strict.json"
+set +e; "$bin" run "$tmp/strict.json" -o "$tmp/strict" -q 2>"$tmp/strict.err"; rc=$?; set -e
+test $rc -eq 2; grep -q "y must increase strictly" "$tmp/strict.err"
 echo "measured_profiles: OK"

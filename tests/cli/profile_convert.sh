@@ -41,4 +41,26 @@ grep -q "use mirror_y" "$T/err" || fail "mirror-y message"
 # unknown output extension
 "$MH" profile convert "$D/MBench_S1002_v3.prw" -o "$T/x.xlsx" >/dev/null 2>"$T/err"; rc=$?
 [ $rc -eq 2 ] || fail "xlsx: exit $rc"
+[ ! -e "$T/x.xlsx" ] || fail "xlsx written"
+
+# issue #13: a wheel is not written into a rail file (exit 2, the right extension named, nothing
+# written); every reading format is also written and reads back with the same points
+"$MH" profile convert "$D/MBench_S1002_v3.prw" -o "$T/out.prr" >"$T/out" 2>"$T/err"; rc=$?
+[ $rc -eq 2 ] || fail "wheel as .prr: exit $rc"
+grep -q "use .prw" "$T/err" || fail "wheel as .prr message: $(cat "$T/err")"
+[ ! -e "$T/out.prr" ] || fail "wheel written as .prr"
+for e in whl wheel whe txt; do
+  "$MH" profile convert "$D/MBench_S1002_v3.prw" -o "$T/rt.$e" >/dev/null 2>&1 || fail "prw -> $e"
+  "$MH" profile convert "$T/rt.$e" --kind wheel -o "$T/rt_$e.csv" >/dev/null 2>&1 || fail "$e -> csv"
+  cmp -s "$T/s1002.csv" "$T/rt_$e.csv" || fail "round trip through .$e changed the points"
+done
+for e in ban rail rai prr; do
+  "$MH" profile convert "$D/MBench_UIC60_v3.prr" -o "$T/rt.$e" >/dev/null 2>&1 || fail "prr -> $e"
+  "$MH" profile convert "$T/rt.$e" --kind rail -o "$T/rt_$e.csv" >/dev/null 2>&1 || fail "$e -> csv"
+  cmp -s "$T/uic_prr.csv" "$T/rt_$e.csv" || fail "round trip through .$e changed the points"
+done
+# the cleaned profile is what convert writes (avg_low2.ban: the hidden gauge face clipped)
+"$MH" profile convert "$D/avg_low2.ban" -o "$T/low2.csv" >"$T/out" 2>"$T/err" || fail "avg_low2 convert"
+grep -q "wrote $T/low2.csv (rail, 334 points)" "$T/out" || fail "avg_low2 message: $(cat "$T/out")"
+grep -q "gauge face turns under" "$T/err" || fail "avg_low2 warning on stderr"
 echo PASS

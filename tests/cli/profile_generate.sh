@@ -60,13 +60,13 @@ must_fail() {  # must_fail CODE MESSAGE ARGS...
     [ "$rc" -eq "$code" ] || { echo "FAIL: $* -> exit $rc, expected $code"; fail=1; }
   fi
   grep -qF -- "$msg" err.txt || { echo "FAIL: $* -> message lacks '$msg':"; cat err.txt; fail=1; }
-  if [ -e bad.csv ] || [ -e bad.prw ] || [ -e bad.txt ]; then echo "FAIL: $* wrote a file"; fail=1; fi
+  if [ -e bad.csv ] || [ -e bad.prw ] || [ -e bad.txt ] || [ -e bad.xlsx ]; then echo "FAIL: $* wrote a file"; fail=1; fi
 }
 must_fail 2 'mhcontact: error: standard profile: value "UIC60": unknown standard profile name (valid names: S1002, 60E1, 54E1)' profile generate UIC60 -o bad.csv
 must_fail 2 "a wheel profile has no inclination" profile generate S1002 --inclination 1:40 -o bad.csv
 must_fail 2 "a rail cannot be written as a SIMPACK wheel (.prw)" profile generate 60E1 -o bad.prw
 must_fail 2 "step must lie in 0.001 … 5 mm" profile generate 60E1 --step 10 -o bad.csv
-must_fail 2 "use .csv, .prr or .prw" profile generate 60E1 -o bad.txt
-must_fail 1xx "1:30 not in {none,1:40,1:20}" profile generate 60E1 --inclination 1:30 -o bad.csv
+must_fail 2 "unknown output profile format" profile generate 60E1 -o bad.xlsx
+must_fail 1xx "N >= 5" profile generate 60E1 --inclination 1:3 -o bad.csv
 
 exit $fail

@@ -48,10 +48,21 @@ grep -qx "kind: rail" "$T/out" || fail "--mirror-z kind"
 "$MH" profile info "$D/avg_HR.BAN" >"$T/out" 2>&1; rc=$?
 [ $rc -eq 0 ] || fail "avg_HR exit $rc"
 grep -q "warning: dropped 1 points that stepped back in y by at most 0.01 mm" "$T/out" || fail "avg_HR warning"
-# measured rail with a 0.06 mm backward step on the gauge face: exit 2, line named
+# measured rail whose gauge face turns under the head (a 0.06 mm backward step at line 537):
+# cleaned by default (issue #13), the report in the output; rejected with --cleanup strict
 "$MH" profile info "$D/avg_low2.ban" >"$T/out" 2>&1; rc=$?
-[ $rc -eq 2 ] || fail "avg_low2 exit $rc"
+[ $rc -eq 0 ] || fail "avg_low2 exit $rc"
+grep -q "^cleanup: envelope" "$T/out" || fail "avg_low2 cleanup line"
+grep -q "gauge face turns under the head" "$T/out" || fail "avg_low2 warning"
+"$MH" profile info "$D/avg_low2.ban" --cleanup strict >"$T/out" 2>&1; rc=$?
+[ $rc -eq 2 ] || fail "avg_low2 strict exit $rc"
 grep -q "avg_low2.ban:537" "$T/out" || fail "avg_low2 line"
+# the clean-up of folds and loops, in text and JSON
+"$MH" profile info "$SRC/tests/data/profiles/constructed/folded_rail.txt" --kind rail --json >"$T/out" 2>&1 || fail "folded json"
+grep -q '"folds_removed": 2' "$T/out" || fail "folded json report: $(cat "$T/out")"
+# MiniProf old style: the wheel measures of the file
+"$MH" profile info "$SRC/tests/data/profiles/constructed/old_style_wheel.whl" >"$T/out" 2>&1 || fail "old style"
+grep -q "file_measures: .*Sd=32.50 Sh=28.00 qR=10.80" "$T/out" || fail "old style measures"
 # bad option values are CLI11 errors (not 0)
 "$MH" profile info "$D/avg_HR.BAN" --kind tram >/dev/null 2>&1; rc=$?
 [ $rc -ne 0 ] || fail "--kind tram accepted"

@@ -29,6 +29,8 @@ struct RawProfile {
   ProfileKind kind = ProfileKind::Unknown;
   std::string format;
   std::vector<std::string> warnings;
+  CleanupReport cleanup;
+  std::vector<std::pair<std::string, std::string>> measures;  ///< from the header (MiniProf Sd/Sh/qR)
   void add(double yy, double zz, std::size_t ln) { y.push_back(yy); z.push_back(zz); line.push_back(ln); }
   std::size_t size() const { return y.size(); }
 };
@@ -40,11 +42,21 @@ ProfileKind kind_from_extension(const std::string& ext);
 // The readers (one file each). They apply the format's own conventions and end in the
 // canonical frame of profile.hpp, in mm.
 RawProfile read_simpack(const std::string& path, const std::vector<std::string>& lines);
-RawProfile read_miniprof(const std::string& path, const std::vector<std::string>& lines, bool wheel);
+/// hint: Wheel or Rail from the extension or the user; Unknown: from the content (default rail).
+RawProfile read_miniprof(const std::string& path, const std::vector<std::string>& lines, ProfileKind hint);
 RawProfile read_table(const std::string& path, const std::vector<std::string>& lines, bool gensys);
 RawProfile read_vampire(const std::string& path, const std::vector<std::string>& lines, const std::string& side);
 /// The format of a file whose extension says nothing, from its content.
 ProfileFormat sniff(const std::vector<std::string>& lines);
+
+// The writers (one per format, in the reader's file): the text of the canonical profile `p`.
+std::string write_simpack(const Profile& p, bool wheel);
+std::string write_miniprof(const Profile& p, bool wheel);
+/// sep: ',' (csv, header y_mm,z_mm) or ' '; gensys: both axes mirrored, no header.
+std::string write_table(const Profile& p, char sep, bool gensys);
+std::string write_vampire(const Profile& p, bool wheel);
+/// "! written by mhcontact from SOURCE (FORMAT)" style provenance text (without comment marker).
+std::string provenance(const Profile& p);
 
 /// Shape checks and clean-up in the canonical frame (shape.cpp).
 void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOptions& opt);

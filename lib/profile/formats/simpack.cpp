@@ -116,4 +116,21 @@ RawProfile read_simpack(const std::string& path, const std::vector<std::string>&
   return t;
 }
 
+std::string write_simpack(const Profile& p, bool wheel) {
+  std::string s = "! SIMPACK profile " + provenance(p) + "\n";
+  s += "! canonical points: y towards the field side, z DOWN (SIMPACK), mm; no transformations\n";
+  s += "header.begin\n  version = 1\n  type    = ";
+  s += wheel ? "1" : "0";
+  s += "\nheader.end\nspline.begin\n  units.len.f = 1000.\n  units.ang.f = 1.\n  point.begin\n";
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    s += "    ";
+    append_number(s, p.y[k] * 1e3);
+    s += ' ';
+    append_number(s, -p.z[k] * 1e3);
+    s += '\n';
+  }
+  s += "  point.end\nspline.end\n";
+  return s;
+}
+
 }  // namespace mh::formats

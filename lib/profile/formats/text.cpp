@@ -74,18 +74,56 @@ double parse_number(const std::string& tok, const std::string& where) {
 }
 
 
+namespace {
+/// Refuse what is not a text file of 8-bit characters, naming what it is and how to fix it.
+void check_encoding(const std::string& path, const std::string& b) {
+  auto starts = [&b](const char* sig, std::size_t n) { return b.size() >= n && b.compare(0, n, sig, n) == 0; };
+  if (starts("\xFF\xFE", 2) || starts("\xFE\xFF", 2))
+    throw InputError(path, std::string("byte-order mark ") + (b[0] == '\xFF' ? "FF FE" : "FE FF"),
+                     std::string("the file is UTF-16 (") + (b[0] == '\xFF' ? "little" : "big") +
+                         "-endian) text; profile files must be UTF-8 or ASCII",
+                     "save it as UTF-8 (Excel: \"CSV UTF-8\"; iconv -f UTF-16 -t UTF-8 IN > OUT)");
+  if (starts("\x1F\x8B", 2))
+    throw InputError(path, "bytes 1F 8B", "the file is gzip-compressed", "decompress it first: gunzip -k FILE");
+  if (starts("PK\x03\x04", 4))
+    throw InputError(path, "bytes 50 4B 03 04", "the file is a ZIP archive (an .xlsx workbook?)",
+                     "unpack it, or export the sheet as CSV (two columns y, z in mm)");
+  const auto nul = b.find('\0');
+  if (nul != std::string::npos) {
+    // UTF-16 without a byte-order mark: every other byte of ASCII text is NUL.
+    std::size_t even = 0, odd = 0, n = std::min<std::size_t>(b.size(), 4096);
+    for (std::size_t i = 0; i < n; ++i)
+      if (b[i] == '\0') (i % 2 ? odd : even)++;
+    if (n >= 8 && (odd > n * 4 / 10 || even > n * 4 / 10))
+      throw InputError(path, "NUL bytes at every other position",
+                       "the file looks like UTF-16 text without a byte-order mark; profile files must be UTF-8 or ASCII",
+                       "save it as UTF-8 (iconv -f UTF-16LE -t UTF-8 IN > OUT)");
+    throw InputError(path, "NUL byte at offset " + std::to_string(nul),
+                     "the file is binary, not a text profile",
+                     "export the profile as text (CSV, SIMPACK .prr/.prw, MiniProf .ban/.whl)");
+  }
+}
+}  // namespace
+
 std::vector<std::string> read_lines(const std::string& path, std::string& bytes) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "cannot open the profile file", "check the path and permissions");
   std::ostringstream ss;
   ss << in.rdbuf();
   bytes = ss.str();
+  check_encoding(path, bytes);
   std::vector<std::string> lines;
   std::string cur;
-  for (char c : bytes) {
+  // A UTF-8 byte-order mark (Excel's "CSV UTF-8") is not part of the first line.
+  const std::size_t start = bytes.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+  for (std::size_t i = start; i < bytes.size(); ++i) {
+    const char c = bytes[i];
     if (c == '\n') {
       if (!cur.empty() && cur.back() == '\r') cur.pop_back();
       lines.push_back(cur);
+      cur.clear();
+    } else if (c == '\r' && i + 1 < bytes.size() && bytes[i + 1] != '\n') {
+      lines.push_back(cur);  // old Mac line ends (CR only)
       cur.clear();
     } else {
       cur += c;
@@ -102,6 +140,11 @@ ProfileKind kind_from_extension(const std::string& ext) {
   if (ext == "prr" || ext == "ban" || ext == "rail" || ext == "rai") return ProfileKind::Rail;
   if (ext == "prw" || ext == "whl" || ext == "wheel" || ext == "whe") return ProfileKind::Wheel;
   return ProfileKind::Unknown;
+}
+
+std::string provenance(const Profile& p) {
+  return "written by mhcontact from " + (p.source.empty() ? std::string("(generated)") : p.source) + " (" +
+         (p.format.empty() ? std::string("?") : p.format) + ")";
 }
 
 }  // namespace mh::formats

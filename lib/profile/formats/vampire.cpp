@@ -45,4 +45,18 @@ RawProfile read_vampire(const std::string& path, const std::vector<std::string>&
   return r;
 }
 
+std::string write_vampire(const Profile& p, bool wheel) {
+  std::string s = wheel ? "WHEELPROFILE\n" : "RAILPROFILE\n";
+  s += provenance(p) + " (both sides the same profile)\nEUROPEAN\n";
+  s += wheel ? "1360.0\n" : "1435.0\n";
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    std::string row;
+    append_number(row, p.y[k] * 1e3 + 0.0);
+    row += ' ';
+    append_number(row, p.z[k] * 1e3 + 0.0);
+    s += row + ' ' + row + '\n';
+  }
+  return s;
+}
+
 }  // namespace mh::formats

@@ -477,7 +477,7 @@ TEST_CASE("profile generate writes what make_standard_profile makes", "[stdprof]
       {{"profile", "generate", "S1002", "--inclination", "1:40", "-o", tmp}, 2, "no inclination"},
       {{"profile", "generate", "60E1", "-o", base + ".prw"}, 2, "use .csv or .prr"},
       {{"profile", "generate", "60E1", "--step", "0", "-o", tmp}, 2, "step must lie in"},
-      {{"profile", "generate", "60E1", "-o", base + ".txt"}, 2, ".csv, .prr or .prw"},
+      {{"profile", "generate", "60E1", "-o", base + ".xlsx"}, 2, "unknown output profile format"},  // .txt is written since #13
   };
   for (const auto& b : bad) {
     CAPTURE(b.message);
@@ -486,6 +486,6 @@ TEST_CASE("profile generate writes what make_standard_profile makes", "[stdprof]
     CHECK(err.str().find(b.message) != std::string::npos);
     CHECK(!std::ifstream(tmp).good());
     CHECK(!std::ifstream(base + ".prw").good());
-    CHECK(!std::ifstream(base + ".txt").good());
+    CHECK(!std::ifstream(base + ".xlsx").good());
   }
 }
