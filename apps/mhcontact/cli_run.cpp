@@ -28,7 +28,7 @@ void add_geometry_command(CLI::App& app, CliContext& ctx) {
 }
 
 void add_run_command(CLI::App& app, CliContext& ctx) {
-  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false; std::string shard; };
+  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false; std::string shard; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Solve every case of the case file's sweep (or of a batch manifest over many profile pairs) (writes DIR/cases.csv, DIR/ellipses.csv, "
@@ -41,6 +41,7 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
       ->check(CLI::Range(0u, 1024u))->capture_default_str();
   cmd->add_option("--pressure-grid", o->pressure_grid,
                   "Also write DIR/pressure.csv: the pressure of every loaded ellipse on an N x N grid over its patch");
+  cmd->add_flag("--force", o->force, "Write pressure.csv even when it would be larger than the limit of 10 GB");
   cmd->add_option("--shard", o->shard, "K/N: run only the K-th of N deterministic slices of the case list (join them with `mhcontact merge`)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or summary on standard error");
   cmd->callback([o, &ctx] {
@@ -53,6 +54,7 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
     ro.threads = o->threads;
     ro.quiet = o->quiet;
     ro.pressure_grid = o->pressure_grid;
+    ro.force = o->force;
     ro.progress = (&ctx.err == &std::cerr) && ::isatty(2);
     if (is_manifest(j)) {
       ctx.exit_code = batch_job(parse_manifest(j, o->case_file), ro, ctx.out, ctx.err);

@@ -13,6 +13,7 @@
 #include "output/json_stream.hpp"
 #include "output/output_file.hpp"
 #include "output/pair_tables.hpp"
+#include "output/run_dir.hpp"
 
 namespace mh {
 
@@ -22,31 +23,30 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   (void)out;
   const auto t0 = std::chrono::steady_clock::now();
   if (opt.out_dir == "-") throw InputError("-o", "-", "a batch writes several tables: give an output directory");
-  if (opt.pressure_grid != 0 && (opt.pressure_grid < 2 || opt.pressure_grid > 1000))
-    throw InputError("--pressure-grid", std::to_string(opt.pressure_grid), "must be between 2 and 1000 points per axis");
   const std::uint64_t n_pairs = m.pairs.size();
   const std::uint64_t first = n_pairs * (opt.shard_index - 1) / opt.shard_count;
   const std::uint64_t end = n_pairs * opt.shard_index / opt.shard_count;
   const CaseFile shared = pair_case(m, 0);  // validated already: the sweep and the model
   const bool plastic = shared.model == Model::Plastic;
   const int np = opt.pressure_grid;
-  ensure_directory(opt.out_dir);
+  check_pressure_grid(np, (end - first) * shared.case_count(), plastic, opt.force);
+  RunDirectory rd(opt.out_dir);
   std::unique_ptr<OutputFile> fc, fe, fp, fpp, fj;
   std::unique_ptr<JsonObjectStream> jw;
   if (opt.csv) {
-    fc = std::make_unique<OutputFile>(opt.out_dir + "/cases.csv");
-    fe = std::make_unique<OutputFile>(opt.out_dir + "/ellipses.csv");
-    fpp = std::make_unique<OutputFile>(opt.out_dir + "/pairs.csv");
+    fc = std::make_unique<OutputFile>(rd.path("cases.csv"));
+    fe = std::make_unique<OutputFile>(rd.path("ellipses.csv"));
+    fpp = std::make_unique<OutputFile>(rd.path("pairs.csv"));
     fc->stream() << "pair," << cases_csv_header();
     fe->stream() << "pair," << ellipses_csv_header(plastic);
     fpp->stream() << "pair,name,wheel,rail,status,n_ellipses,wheel_sha256,rail_sha256,message\n";
   }
   if (np) {
-    fp = std::make_unique<OutputFile>(opt.out_dir + "/pressure.csv");
+    fp = std::make_unique<OutputFile>(rd.path("pressure.csv"));
     fp->stream() << "pair," << pressure_csv_header(plastic);
   }
   if (opt.json) {
-    fj = std::make_unique<OutputFile>(opt.out_dir + "/results.json");
+    fj = std::make_unique<OutputFile>(rd.path("results.json"));
     jw = std::make_unique<JsonObjectStream>(fj->stream());
     jw->member("schema", kBatchSchema);
     jw->member("program", program_json());
@@ -141,10 +141,11 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
                          {"unit", "pair"}, {"first", first}, {"end", end}, {"total", n_pairs}, {"summary", summary},
                          {"csv", opt.csv}, {"json", opt.json}, {"pressure", np > 0},
                          {"inputs", {{"manifest", m.path}, {"common", m.common}, {"pairs", n_pairs}}}};
-    OutputFile f(opt.out_dir + "/shard.json");
+    OutputFile f(rd.path("shard.json"));
     f.stream() << sh.dump(2) << "\n";
     f.commit();
   }
+  rd.finish("run", program_json(), {{"summary", summary}});
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!opt.quiet) {
     if (opt.progress) err << "\n";

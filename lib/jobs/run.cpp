@@ -11,6 +11,7 @@
 #include "output/json_stream.hpp"
 #include "output/output_file.hpp"
 #include "output/pair_tables.hpp"
+#include "output/run_dir.hpp"
 #include "profile/standard_profiles.hpp"
 
 #ifndef MHCONTACT_GIT_COMMIT
@@ -41,9 +42,9 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
   const PairGeometry pg = build_pair_geometry(cf);
   const ContactGeometry& G = pg.geo;
   if (!quiet) warn_profiles(pg, err);
-  ensure_directory(out_dir);
-  write_caf_csv(G, out_dir + "/caf.csv");
-  write_profiles_csv(pg, out_dir + "/profiles.csv");
+  RunDirectory rd(out_dir);
+  write_caf_csv(G, rd.path("caf.csv"));
+  write_profiles_csv(pg, rd.path("profiles.csv"));
   {
     nlohmann::json j;
     j["schema"] = kGeometrySchema;
@@ -54,10 +55,11 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
     j["strips"] = G.strip_y.size();
     j["grid_points"] = G.tY.size();
     j["potential_ellipses"] = ellipses_json(G);
-    OutputFile f(out_dir + "/geometry.json");
+    OutputFile f(rd.path("geometry.json"));
     f.stream() << j.dump(2) << "\n";
     f.commit();
   }
+  rd.finish("geometry", program_json());
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!quiet)
     err << "mhcontact geometry: " << G.n_ellipses() << " potential ellipses over t_Y " << format_number(G.tY.front() * 1e3)
@@ -78,25 +80,31 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   const bool want_csv = opt.csv && !to_stdout;
   const bool want_json = opt.json || to_stdout;
 
+  std::unique_ptr<RunDirectory> rd;
   std::unique_ptr<OutputFile> fc, fe, fj, fp;
   const int np = opt.pressure_grid;
-  if (np != 0 && (np < 2 || np > 1000))
-    throw InputError("--pressure-grid", std::to_string(np), "must be between 2 and 1000 points per axis");
   if (np && to_stdout)
     throw InputError("--pressure-grid", std::to_string(np), "needs an output directory (not -o -)");
+  if (to_stdout && !opt.json)
+    throw InputError("--format", "csv", "-o - writes results.json to standard output; the CSV tables need an output directory",
+                     "give -o DIR, or --format json");
+  if (opt.shard_count < 1 || opt.shard_index < 1 || opt.shard_index > opt.shard_count)
+    throw InputError("--shard", std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count), "must be K/N with 1 <= K <= N");
+  check_pressure_grid(np, cf.case_count() * opt.shard_index / opt.shard_count -
+                              cf.case_count() * (opt.shard_index - 1) / opt.shard_count, plastic, opt.force);
   if (!to_stdout) {
-    ensure_directory(opt.out_dir);
+    rd = std::make_unique<RunDirectory>(opt.out_dir);
     if (np) {
-      fp = std::make_unique<OutputFile>(opt.out_dir + "/pressure.csv");
+      fp = std::make_unique<OutputFile>(rd->path("pressure.csv"));
       fp->stream() << pressure_csv_header(plastic);
     }
     if (want_csv) {
-      fc = std::make_unique<OutputFile>(opt.out_dir + "/cases.csv");
-      fe = std::make_unique<OutputFile>(opt.out_dir + "/ellipses.csv");
+      fc = std::make_unique<OutputFile>(rd->path("cases.csv"));
+      fe = std::make_unique<OutputFile>(rd->path("ellipses.csv"));
       fc->stream() << cases_csv_header();
       fe->stream() << ellipses_csv_header(plastic);
     }
-    if (want_json) fj = std::make_unique<OutputFile>(opt.out_dir + "/results.json");
+    if (want_json) fj = std::make_unique<OutputFile>(rd->path("results.json"));
   }
   std::ostream* js = to_stdout ? &out : (fj ? &fj->stream() : nullptr);
   std::unique_ptr<JsonObjectStream> jw;
@@ -110,13 +118,11 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   }
 
   const std::uint64_t n_all = cf.case_count();
-  if (opt.shard_count < 1 || opt.shard_index < 1 || opt.shard_index > opt.shard_count)
-    throw InputError("--shard", std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count), "must be K/N with 1 <= K <= N");
   const std::uint64_t first = n_all * (opt.shard_index - 1) / opt.shard_count;
   const std::uint64_t end = n_all * opt.shard_index / opt.shard_count;
   const std::uint64_t n = end - first;
   SweepCounts counts;
-  Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fp ? &fp->stream() : nullptr, jw.get(), ""};
+  Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fp ? &fp->stream() : nullptr, jw.get(), "", to_stdout ? "standard output" : "results.json"};
   solve_cases(cf, G, first, end, opt, sinks, &counts, err);
   const auto& by_status = counts.by_status;
   const std::uint64_t failed = counts.failed;
@@ -129,7 +135,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   if (fc) {
     fc->commit();
     fe->commit();
-    write_profiles_csv(pg, opt.out_dir + "/profiles.csv");
+    write_profiles_csv(pg, rd->path("profiles.csv"));
   }
   if (opt.shard_count > 1 && !to_stdout) {
     nlohmann::json sh = {{"schema", "mhcontact.shard/1"}, {"index", opt.shard_index}, {"count", opt.shard_count},
@@ -137,13 +143,14 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
                          {"summary", {{"cases", n_all}, {"failed", failed}, {"by_status", by_status}}},
                          {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0},
                          {"inputs", inputs_json(cf, pg)}};
-    OutputFile f(opt.out_dir + "/shard.json");
+    OutputFile f(rd->path("shard.json"));
     f.stream() << sh.dump(2) << "\n";
     f.commit();
   }
   if (fj) fj->commit();
   if (fp) fp->commit();
-  if (to_stdout) out.flush();
+  if (rd) rd->finish("run", program_json(), {{"summary", {{"cases", n}, {"failed", failed}, {"by_status", by_status}}}});
+  if (to_stdout) check_written(out, "standard output");
   if (!opt.quiet) {
     if (opt.progress) err << "\n";
     err << "mhcontact run: " << n << " cases";

@@ -13,6 +13,7 @@
 #include "core/errors.hpp"
 #include "output/json_stream.hpp"
 #include "output/output_file.hpp"
+#include "output/run_dir.hpp"
 
 namespace mh {
 
@@ -90,7 +91,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
   }
   if (expect != shards[0].meta["total"].get<std::uint64_t>()) throw InputError("merge", "", "the shards do not cover every case (or pair)");
   const bool batch = shards[0].meta["unit"] == "pair";
-  ensure_directory(out_dir);
+  RunDirectory rd(out_dir);
   // Summary of all shards: counts added up, by_status merged; `cases` and `pairs` are totals
   // of the whole run for unsharded-equal output (run: cases = total).
   nlohmann::json summary = nlohmann::json::object();
@@ -115,13 +116,13 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
   if (csv && batch) tables.push_back("pairs.csv");
   if (pressure) tables.push_back("pressure.csv");
   for (const auto& t : tables) {
-    OutputFile f(out_dir + "/" + t);
+    OutputFile f(rd.path(t));
     std::string header;
     for (unsigned k = 0; k < N; ++k) append_csv(shards[k].dir + "/" + t, f.stream(), &header, k == 0);
     f.commit();
   }
   if (csv && !batch) {
-    OutputFile f(out_dir + "/profiles.csv");
+    OutputFile f(rd.path("profiles.csv"));
     f.stream() << read_all(shards[0].dir + "/profiles.csv");
     f.commit();
   }
@@ -130,7 +131,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     // parse each, keep the first head, stream the records of all in order, write the summary of
     // the whole run. Memory: one shard's results.json at a time.
     const std::string key = batch ? "pairs" : "cases";
-    OutputFile f(out_dir + "/results.json");
+    OutputFile f(rd.path("results.json"));
     std::unique_ptr<JsonObjectStream> w;
     for (unsigned k = 0; k < N; ++k) {
       const std::string path = shards[k].dir + "/results.json";
@@ -165,6 +166,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     w->end();
     f.commit();
   }
+  rd.finish("merge", shards[0].meta.value("program", nlohmann::json::object()), {{"summary", summary}, {"shards", N}});
   if (!quiet) {
     err << "mhcontact merge: " << N << " shards, " << shards[0].meta["total"].get<std::uint64_t>() << (batch ? " pairs" : " cases");
     for (const auto& [k, v] : by_status) err << ", " << k << " " << v;

@@ -8,6 +8,7 @@
 
 #include "cli.hpp"
 #include "core/errors.hpp"
+#include "jobs/sweep.hpp"
 
 namespace fs = std::filesystem;
 using mh::run_cli;
@@ -165,10 +166,33 @@ TEST_CASE("bad case files: exit 2, JSON path, value and rule; nothing written", 
   }
 }
 
-TEST_CASE("an output directory that cannot be written: exit 2", "[run][errors]") {
+TEST_CASE("an output directory that cannot be written: exit 4", "[run][errors]") {
   TempDir d;
   std::ofstream(d / "file") << "x";
   std::string err;
-  REQUIRE(cli({"run", kSrc + "/cases/manchester.json", "-o", d / "file/sub", "-q"}, nullptr, &err) == mh::kExitInputError);
+  REQUIRE(cli({"run", kSrc + "/cases/manchester.json", "-o", d / "file/sub", "-q"}, nullptr, &err) == mh::kExitOutput);
   REQUIRE_THAT(err, Catch::Contains("cannot be created"));
+}
+
+TEST_CASE("an exception inside a worker is an internal error (exit 3), not a row", "[run][errors]") {
+  TempDir d;
+  for (const char* threads : {"1", "2"}) {
+    mh::set_case_hook_for_tests([](std::uint64_t c) {
+      if (c == 7) throw std::runtime_error("injected failure");
+    });
+    std::string err;
+    const int rc = cli({"run", kSrc + "/cases/manchester.json", "-o", d / "out", "-q", "--threads", threads}, nullptr, &err);
+    mh::set_case_hook_for_tests(nullptr);
+    CAPTURE(threads, err);
+    REQUIRE(rc == mh::kExitInternal);
+    REQUIRE_THAT(err, Catch::Contains("mhcontact: internal error: case 7: injected failure"));
+    REQUIRE_FALSE(fs::exists(d / "out/cases.csv"));
+  }
+}
+
+TEST_CASE("a full standard output is an error (exit 4)", "[run][errors]") {
+  std::ostringstream o, e;
+  o.setstate(std::ios::badbit);  // as a stream on /dev/full ends up
+  REQUIRE(run_cli({"run", kSrc + "/cases/manchester.json", "-o", "-", "-q"}, o, e) == mh::kExitOutput);
+  REQUIRE_THAT(e.str(), Catch::Contains("output could not be written"));
 }
