@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
 #include "output/case_tables.hpp"
+#include "output/cells.hpp"
 #include "output/json_stream.hpp"
 #include "output/output_file.hpp"
 #include "output/pair_tables.hpp"
@@ -37,8 +38,10 @@ PairGeometry build_pair_geometry(const CaseFile& cf) {
   return pg;
 }
 
-int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& out, std::ostream& err, bool quiet) {
+int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& out, std::ostream& err, bool quiet,
+                 int digits) {
   const auto t0 = std::chrono::steady_clock::now();
+  const cells::DigitsScope digits_scope(digits);
   const PairGeometry pg = build_pair_geometry(cf);
   const ContactGeometry& G = pg.geo;
   if (!quiet) warn_profiles(pg, err);
@@ -49,7 +52,8 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
     nlohmann::json j;
     j["schema"] = kGeometrySchema;
     j["program"] = program_json();
-    j["inputs"] = inputs_json(cf, pg);
+    j["inputs"] = inputs_json(cf, out_dir);
+    j["profiles"] = profiles_json(pg);
     j["y_offset_mm"] = G.y_offset * 1e3;
     j["rail_gauge_point_y_mm"] = G.rail_gauge_y * 1e3;
     j["strips"] = G.strip_y.size();
@@ -59,7 +63,7 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
     f.stream() << j.dump(2) << "\n";
     f.commit();
   }
-  rd.finish("geometry", program_json());
+  rd.finish("geometry", program_json(), {{"digits", digits ? nlohmann::json(digits) : nlohmann::json("max")}});
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!quiet)
     err << "mhcontact geometry: " << G.n_ellipses() << " potential ellipses over t_Y " << format_number(G.tY.front() * 1e3)
@@ -72,6 +76,7 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
 
 int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::ostream& err) {
   const auto t0 = std::chrono::steady_clock::now();
+  const cells::DigitsScope digits_scope(opt.digits);
   const PairGeometry pg = build_pair_geometry(cf);
   const ContactGeometry& G = pg.geo;
   if (!opt.quiet) warn_profiles(pg, err);
@@ -112,7 +117,9 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     jw = std::make_unique<JsonObjectStream>(*js);
     jw->member("schema", kResultsSchema);
     jw->member("program", program_json());
-    jw->member("inputs", inputs_json(cf, pg));
+    jw->member("inputs", inputs_json(cf, to_stdout ? std::string() : opt.out_dir));
+    jw->member("case_count", cf.case_count());
+    jw->member("profiles", profiles_json(pg));
     jw->member("potential_ellipses", ellipses_json(G));
     jw->begin_array("cases");
   }
@@ -141,15 +148,15 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     nlohmann::json sh = {{"schema", "mhcontact.shard/1"}, {"index", opt.shard_index}, {"count", opt.shard_count},
                          {"unit", "case"}, {"first", first}, {"end", end}, {"total", n_all},
                          {"summary", {{"cases", n_all}, {"failed", failed}, {"by_status", by_status}}},
-                         {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0},
-                         {"inputs", inputs_json(cf, pg)}};
+                         {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0}, {"digits", opt.digits},
+                         {"inputs", inputs_json(cf)}, {"profiles", profiles_json(pg)}};
     OutputFile f(rd->path("shard.json"));
     f.stream() << sh.dump(2) << "\n";
     f.commit();
   }
   if (fj) fj->commit();
   if (fp) fp->commit();
-  if (rd) rd->finish("run", program_json(), {{"summary", {{"cases", n}, {"failed", failed}, {"by_status", by_status}}}});
+  if (rd) rd->finish("run", program_json(), {{"digits", opt.digits ? nlohmann::json(opt.digits) : nlohmann::json("max")}, {"summary", {{"cases", n}, {"failed", failed}, {"by_status", by_status}}}});
   if (to_stdout) check_written(out, "standard output");
   if (!opt.quiet) {
     if (opt.progress) err << "\n";

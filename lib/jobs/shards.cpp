@@ -84,7 +84,8 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     if (m["count"] != shards[0].meta["count"] || m["total"] != shards[0].meta["total"] || m["unit"] != shards[0].meta["unit"])
       throw InputError(where, "", "shards of different runs (case or shard counts differ)");
     if (m["inputs"] != shards[0].meta["inputs"]) throw InputError(where, "", "shards of different runs (inputs differ: case file, profiles or options)");
-    if (m["csv"] != shards[0].meta["csv"] || m["json"] != shards[0].meta["json"] || m["pressure"] != shards[0].meta["pressure"])
+    if (m["csv"] != shards[0].meta["csv"] || m["json"] != shards[0].meta["json"] || m["pressure"] != shards[0].meta["pressure"] ||
+        m.value("digits", -1) != shards[0].meta.value("digits", -1))
       throw InputError(where, "", "shards written with different output options");
     if (m["first"].get<std::uint64_t>() != expect) throw InputError(where, m["first"].dump(), "the shards' ranges do not tile the case (or pair) list");
     expect = m["end"].get<std::uint64_t>();

@@ -1,6 +1,7 @@
 #include "jobs/sweep.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <exception>
 #include <mutex>
@@ -37,6 +38,15 @@ void check_pressure_grid(int N, std::uint64_t cases, bool plastic, bool force) {
                          " bytes), more than the limit of 10 GB",
                      "use a coarser grid or fewer cases, or --force to write it anyway");
   }
+}
+
+int parse_digits(const std::string& text) {
+  if (text == "max") return 0;
+  int d = 0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), d);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || d < 1 || d > 17)
+    throw InputError("--digits", text, "must be an integer from 1 to 17, or max", "max: the shortest text that reads back to the same double");
+  return d;
 }
 
 void put_prefixed(std::ostream& o, const std::string& prefix, const std::string& lines) {

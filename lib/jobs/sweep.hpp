@@ -33,7 +33,12 @@ struct RunOptions {
   unsigned shard_index = 1, shard_count = 1;
   /// Write pressure.csv even when its estimated size is above kPressureLimitBytes (--force).
   bool force = false;
+  /// Significant digits of the numbers in the tables (--digits N), 0 = shortest round-trip (--digits max).
+  int digits = 10;
 };
+
+/// Parse --digits: "max" (0) or an integer 1..17. Throws InputError.
+int parse_digits(const std::string& text);
 
 /// pressure.csv is refused before anything is solved when its estimated size (at least one
 /// contact per case) is above this, unless forced (README "Output tables").

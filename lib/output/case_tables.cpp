@@ -27,8 +27,8 @@ const Col kEllipseCols[] = {
     {"R_rxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_rxx); }},
     {"R_wxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_wxx); }},
     {"R_wyy_mm", [](const LoadedEllipse& e) { return e.g.R_wyy() * 1e3; }},
-    {"A_1pm", [](const LoadedEllipse& e) { return e.A; }},
-    {"B_1pm", [](const LoadedEllipse& e) { return e.B; }},
+    {"A_per_mm", [](const LoadedEllipse& e) { return e.A * 1e-3; }},  // 1/m -> 1/mm, as `hertz --A`
+    {"B_per_mm", [](const LoadedEllipse& e) { return e.B * 1e-3; }},
     {"lambda", [](const LoadedEllipse& e) { return e.c.lambda; }},
     {"m", [](const LoadedEllipse& e) { return e.c.m; }},
     {"n", [](const LoadedEllipse& e) { return e.c.n; }},
@@ -129,7 +129,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
   }
   if (want_json) {
     // The record, built as JSON (ordered keys, as in the CSV) and dumped compact on one line.
-    auto jv = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr); };
+    auto jv = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(rounded(v)) : nlohmann::ordered_json(nullptr); };
     nlohmann::ordered_json j;
     j["case"] = idx;
     j["tY_mm"] = jv(cp.tY_mm);

@@ -77,12 +77,12 @@ TEST_CASE("run writes the three tables, byte-identical for 1, 2 and 4 threads", 
   REQUIRE(cases.rfind("case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,pmax_MPa,area_mm2,warnings,message\n", 0) == 0);
   REQUIRE(std::count(cases.begin(), cases.end(), '\n') == 100);
   const std::string ell = slurp(d / "t1/ellipses.csv");
-  REQUIRE(ell.rfind("case,tY_mm,Q_kN,ellipse,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,A_1pm,B_1pm,"
+  REQUIRE(ell.rfind("case,tY_mm,Q_kN,ellipse,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,A_per_mm,B_per_mm,"
                     "lambda,m,n,gap_mm,h0_mm,N_kN,a_mm,b_mm,p0_MPa,pmean_MPa,approach_mm\n", 0) == 0);
   // results.json: valid JSON, schema, inputs with checksums, the same cases.
   const auto j = nlohmann::json::parse(slurp(d / "t1/results.json"));
-  REQUIRE(j.at("schema") == "mhcontact.results/1");
-  REQUIRE(j.at("inputs").at("wheel").at("read").at("sha256").get<std::string>().size() == 64);
+  REQUIRE(j.at("schema") == "mhcontact.results/2");
+  REQUIRE(j.at("profiles").at("wheel").at("sha256").get<std::string>().size() == 64);
   REQUIRE(j.at("cases").size() == 99);
   REQUIRE(j.at("potential_ellipses").size() == 4);
   REQUIRE(j.at("summary").at("failed") == 0);
