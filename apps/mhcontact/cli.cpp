@@ -14,6 +14,7 @@ namespace {
 
 extern "C" void on_fatal_signal(int sig) {
   remove_pending_output_temporaries();
+  print_interrupt_message();
   std::signal(sig, SIG_DFL);
   std::raise(sig);
 }

@@ -1,6 +1,8 @@
 #include "jobs/sweep.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <memory>
 #include <charconv>
@@ -49,6 +51,24 @@ int parse_digits(const std::string& text) {
   if (r.ec != std::errc() || r.ptr != text.data() + text.size() || d < 1 || d > 17)
     throw InputError("--digits", text, "must be an integer from 1 to 17, or max", "max: the shortest text that reads back to the same double");
   return d;
+}
+
+std::string progress_line(std::uint64_t done, std::uint64_t total, double secs) {
+  char buf[160];
+  const double rate = secs > 0 ? static_cast<double>(done) / secs : 0;
+  const int pct = total ? static_cast<int>(100.0 * static_cast<double>(done) / static_cast<double>(total)) : 100;
+  std::string left = "?";
+  if (rate > 0) {
+    const double s = static_cast<double>(total - done) / rate;
+    char l[32];
+    if (s < 60) std::snprintf(l, sizeof l, "%.0f s", std::ceil(s));
+    else if (s < 3600) std::snprintf(l, sizeof l, "%d min %02d s", static_cast<int>(s) / 60, static_cast<int>(s) % 60);
+    else std::snprintf(l, sizeof l, "%d h %02d min", static_cast<int>(s) / 3600, static_cast<int>(s) / 60 % 60);
+    left = l;
+  }
+  std::snprintf(buf, sizeof buf, "mhcontact run: %llu/%llu cases (%d %%), %.0f cases/s, %s left   ",
+                static_cast<unsigned long long>(done), static_cast<unsigned long long>(total), pct, rate, left.c_str());
+  return buf;
 }
 
 void put_prefixed(std::ostream& o, const std::string& prefix, const std::string& lines) {
@@ -240,7 +260,8 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   // --threads 1: everything on this thread, no writer thread; otherwise a writer overlaps.
   std::unique_ptr<Writer> writer = nt > 1 ? std::make_unique<Writer>(out) : nullptr;
   auto write_failed = [&] { return OutputError(out.cases ? "cases.csv" : out.json_where, "output could not be written", "disk full?"); };
-  int last_pct = -1;
+  const auto t_start = std::chrono::steady_clock::now();
+  auto last_shown = t_start - std::chrono::seconds(1);
   int cur = 0;
   for (std::uint64_t c0 = first; c0 < end; c0 += chunk, cur ^= 1) {
     Slot& S = slots[cur];
@@ -300,10 +321,12 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
       throw write_failed();
     }
     if (opt.progress && !opt.quiet) {
-      const int pct = static_cast<int>(100.0 * static_cast<double>(c0 + m - first) / static_cast<double>(n));
-      if (pct != last_pct) {
-        err << "\rmhcontact run: " << (c0 + m - first) << "/" << n << " cases (" << pct << " %)" << std::flush;
-        last_pct = pct;
+      // At most 4 refreshes a second, and at least one a second while chunks keep finishing.
+      const auto now = std::chrono::steady_clock::now();
+      const std::uint64_t done = c0 + m - first;
+      if (now - last_shown >= std::chrono::milliseconds(250) || done == n) {
+        err << "\r" << progress_line(done, n, std::chrono::duration<double>(now - t_start).count()) << std::flush;
+        last_shown = now;
       }
     }
   }

@@ -72,6 +72,9 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
 /// check that an exception inside a worker ends the run as an internal error). Empty: none.
 void set_case_hook_for_tests(std::function<void(std::uint64_t)> hook);
 
+/// The progress display: "mhcontact run: DONE/TOTAL cases (P %), R cases/s, T left".
+std::string progress_line(std::uint64_t done, std::uint64_t total, double secs);
+
 /// Write `lines` (one or more '\n'-terminated lines) to `o`, each preceded by `prefix`.
 void put_prefixed(std::ostream& o, const std::string& prefix, const std::string& lines);
 

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -44,6 +45,26 @@ void unregister_pending(int slot) {
   if (slot < 0) return;
   std::lock_guard<std::mutex> lock(g_mutex);
   g_used[slot].store(false);
+}
+
+namespace {
+char g_interrupt_msg[8192];
+std::atomic<std::size_t> g_interrupt_len{0};
+}  // namespace
+
+void set_interrupt_message(const std::string& line) {
+  g_interrupt_len.store(0);
+  const std::size_t n = std::min(line.size(), sizeof g_interrupt_msg);
+  std::memcpy(g_interrupt_msg, line.data(), n);
+  g_interrupt_len.store(n);
+}
+
+void print_interrupt_message() noexcept {
+  const std::size_t n = g_interrupt_len.load();
+  if (n) {
+    const ssize_t r = ::write(2, g_interrupt_msg, n);
+    (void)r;
+  }
 }
 
 void check_written(std::ostream& o, const std::string& where) {

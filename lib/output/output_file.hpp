@@ -49,6 +49,11 @@ class OutputFile {
 int register_pending(const std::string& path, bool is_dir);
 void unregister_pending(int slot);
 
+/// The line a signal handler prints after removing the temporaries (what was kept); empty: none.
+void set_interrupt_message(const std::string& line);
+/// Write that line to standard error (async-signal-safe).
+void print_interrupt_message() noexcept;
+
 /// Remove every temporary still registered (for signal handlers; async-signal-safe: unlink only).
 void remove_pending_output_temporaries() noexcept;
 

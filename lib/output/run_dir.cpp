@@ -81,9 +81,13 @@ RunDirectory::RunDirectory(std::string dir) : dir_(std::move(dir)) {
   tmp_.assign(buf.data());
   ::chmod(tmp_.c_str(), 0777 & ~[] { const mode_t m = ::umask(0); ::umask(m); return m; }());
   slots_.push_back(register_pending(tmp_, true));
+  set_interrupt_message(fs::exists(abs)
+      ? "\nmhcontact: interrupted: " + dir_ + " was left as it was (the previous complete run); nothing of this run was kept\n"
+      : "\nmhcontact: interrupted: nothing was kept (" + dir_ + " was not created)\n");
 }
 
 RunDirectory::~RunDirectory() {
+  set_interrupt_message("");
   if (!finished_) remove_tmp();
   for (int s : slots_) unregister_pending(s);
 }
