@@ -90,6 +90,15 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                  bool plastic, bool want_csv, bool want_json, Formatted& f, const char* status_text) {
   const char* status = status_text ? status_text : to_string(r.status);
   const std::string warn = join(r.warnings, ";");
+  // The main contact: the loaded ellipse carrying the largest normal force.
+  const LoadedEllipse* main = nullptr;
+  bool any_plastic = false;
+  for (const LoadedEllipse& L : r.loaded) {
+    if (!main || L.s.N > main->s.N) main = &L;
+    any_plastic = any_plastic || (plastic && L.s.plastic);
+  }
+  const double gamma_main = main ? main->g.gamma / units::deg : NAN;
+  const double r_roll_main = main ? main->g.r_roll * 1e3 : NAN;
   auto h_y_mm = [](const LoadedEllipse& e) { return e.h_y * 1e3; };  // from the ellipse law (method.md §5)
   if (want_csv) {
     std::string& s = f.cases;
@@ -108,6 +117,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; num(s, r.Fy / units::kN);
     s += ','; num(s, r.pmax / units::MPa);
     s += ','; num(s, r.area * units::per_mm2);
+    s += ','; num(s, gamma_main);
+    s += ','; num(s, r_roll_main);
+    s += ','; s += any_plastic ? '1' : '0';
+    s += ','; append_number(s, static_cast<long long>(r.warnings.size()));
     s += ','; csv_text(s, warn);
     s += ','; csv_text(s, r.message);
     s += '\n';
@@ -145,6 +158,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     j["Fy_kN"] = jv(r.Fy / units::kN);
     j["pmax_MPa"] = jv(r.pmax / units::MPa);
     j["area_mm2"] = jv(r.area * units::per_mm2);
+    j["gamma_main_deg"] = jv(gamma_main);
+    j["r_roll_main_mm"] = jv(r_roll_main);
+    j["plastic"] = any_plastic;
+    j["n_warnings"] = r.warnings.size();
     j["warnings"] = r.warnings;
     j["message"] = r.message;
     nlohmann::ordered_json el = nlohmann::ordered_json::array();
@@ -166,7 +183,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
 
 std::string cases_csv_header() {
   return "case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,"
-         "pmax_MPa,area_mm2,warnings,message\n";
+         "pmax_MPa,area_mm2,gamma_main_deg,r_roll_main_mm,plastic,n_warnings,warnings,message\n";
 }
 
 std::string pressure_csv_header(bool plastic) {
