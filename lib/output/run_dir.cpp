@@ -25,7 +25,11 @@ bool is_mhcontact_output_name(const std::string& name) {
                                        "pair_ellipses.csv"};
   for (const char* n : kNames)
     if (name == n) return true;
-  return name.find(".tmp.") != std::string::npos;  // an OutputFile temporary left by a hard kill
+  if (name.find(".tmp.") != std::string::npos) return true;  // an OutputFile temporary left by a hard kill
+  // Plots that scripts/plot_*.py write into the directory by default: derived from the run they
+  // sit beside, so they go with it when a new run replaces the set.
+  auto ends = [&](const char* suf) { const std::string x(suf); return name.size() >= x.size() && name.compare(name.size() - x.size(), x.size(), x) == 0; };
+  return name.rfind("pressure_case_", 0) == 0 && ends(".png");
 }
 
 namespace {

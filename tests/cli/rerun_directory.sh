@@ -18,6 +18,10 @@ d="$tmp/out"
 [ "$(present "$d")" = "cases.csv ellipses.csv profiles.csv run.json" ] || fail "rerun --format csv: $(present "$d")"
 [ "$(listed "$d")" = "$(present "$d")" ] || fail "rerun: run.json lists $(listed "$d")"
 grep -q '"command": "run"' "$d/run.json" || fail "run.json has no command"
+# A default plot of the previous run goes with it.
+echo png > "$d/pressure_case_3.png"
+"$bin" run "$src/cases/manchester.json" -o "$d" --format csv -q || fail "rerun over a plot"
+[ ! -e "$d/pressure_case_3.png" ] || fail "the previous run's plot stayed beside the new tables"
 # A directory with a file no run wrote is refused (exit 2) and left as it was.
 echo "notes" > "$d/my_notes.txt"
 before=$(present "$d")
