@@ -13,22 +13,25 @@
 namespace mh {
 
 void add_geometry_command(CLI::App& app, CliContext& ctx) {
-  struct Opts { std::string case_file, out_dir; bool quiet = false; };
+  struct Opts { std::string case_file, out_dir, digits = "10"; bool quiet = false; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "geometry", "Contact geometry of the case's profile pair: CAF, radii and potential ellipses "
                   "(writes DIR/caf.csv and DIR/geometry.json)");
   cmd->add_option("case", o->case_file, "Case file (JSON)")->required();
   cmd->add_option("-o,--output", o->out_dir, "Output directory (created if missing)")->required();
+  cmd->add_option("--digits", o->digits, "Significant digits of the numbers in the tables (1..17), or max for the shortest round-trip")
+      ->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "No summary on standard error");
   cmd->callback([o, &ctx] {
+    const int digits = parse_digits(o->digits);
     const CaseFile cf = load_case_file(o->case_file, false);
-    ctx.exit_code = geometry_job(cf, o->out_dir, ctx.out, ctx.err, o->quiet);
+    ctx.exit_code = geometry_job(cf, o->out_dir, ctx.out, ctx.err, o->quiet, digits);
   });
 }
 
 void add_run_command(CLI::App& app, CliContext& ctx) {
-  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false; bool strips = false; std::string shard; };
+  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false, strips = false; std::string shard, digits = "10"; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Solve every case of the case file's sweep (or of a batch manifest over many profile pairs) (writes DIR/cases.csv, DIR/ellipses.csv, "
@@ -42,6 +45,9 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--pressure-grid", o->pressure_grid,
                   "Also write DIR/pressure.csv: the pressure of every loaded ellipse on an N x N grid over its patch");
   cmd->add_flag("--strips", o->strips, "Strip method: also write DIR/strips.csv, one row per loaded strip");
+  cmd->add_option("--digits", o->digits, "Significant digits of the numbers in the tables (1..17), or max for the shortest round-trip")
+      ->capture_default_str();
+  cmd->add_flag("--force", o->force, "Write pressure.csv even when it would be larger than the limit of 10 GB");
   cmd->add_option("--shard", o->shard, "K/N: run only the K-th of N deterministic slices of the case list (join them with `mhcontact merge`)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or summary on standard error");
   cmd->callback([o, &ctx] {
@@ -55,6 +61,8 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
     ro.quiet = o->quiet;
     ro.pressure_grid = o->pressure_grid;
     ro.strips = o->strips;
+    ro.force = o->force;
+    ro.digits = parse_digits(o->digits);
     ro.progress = (&ctx.err == &std::cerr) && ::isatty(2);
     if (is_manifest(j)) {
       ctx.exit_code = batch_job(parse_manifest(j, o->case_file), ro, ctx.out, ctx.err);

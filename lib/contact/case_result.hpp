@@ -49,6 +49,7 @@ struct PatchResult {
   double z_r = 0;           ///< [m] its height on the rail profile
   double y_w = 0;           ///< [m] the facing wheel-profile lateral coordinate
   double gamma = 0;         ///< [rad] contact angle of the patch plane
+  double r_roll = 0;        ///< [m] wheel rolling radius at the reference point
   double N = 0;             ///< [N] normal force Σ p dx ds
   double pmax = 0;          ///< [Pa] largest element pressure
   double area = 0;          ///< [m²] elements in contact × dx ds

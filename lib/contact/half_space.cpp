@@ -164,6 +164,7 @@ CaseResult solve_half_space(const ContactGeometry& G, const Material& mat, doubl
     pr.y_r = k.P.y_ref;
     pr.z_r = gap.z_rail(k.P.y_ref);  // the reference point on the rail profile (as CONTACT reports it)
     pr.y_w = gap.y_wheel(k.P.y_ref);
+    pr.r_roll = gap.rolling_radius(k.P.y_ref);
     pr.gamma = k.P.gamma;
     pr.iterations = k.iterations;
     const double da = k.dx * k.ds;

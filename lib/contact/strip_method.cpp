@@ -124,6 +124,7 @@ CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, dou
     pr.y_r = k.P.y_ref;
     pr.z_r = gap.z_rail(k.P.y_ref);
     pr.y_w = gap.y_wheel(k.P.y_ref);
+    pr.r_roll = gap.rolling_radius(k.P.y_ref);
     pr.gamma = k.P.gamma;
     pr.iterations = S.iterations;
     pr.N = S.N;

@@ -15,6 +15,7 @@ enum ExitCode : int {
   kExitCasesFailed = 1,  ///< outputs written, but some cases did not end `ok` (or `diff` found deviations)
   kExitInputError = 2,   ///< invalid input: file, JSON, option values; nothing written
   kExitInternal = 3,     ///< an unexpected internal error (a bug): please report
+  kExitOutput = 4,       ///< output could not be written (disk full, closed pipe, /dev/full, rename failed)
   // CLI11's own codes (e.g. 105 for a parse error, 106 for a validation error) are passed through.
 };
 

@@ -13,18 +13,33 @@
 #include "output/json_stream.hpp"
 #include "output/output_file.hpp"
 #include "output/pair_tables.hpp"
+#include "output/run_dir.hpp"
 
 namespace mh {
 
 using cells::csv_text;
 
+namespace {
+// A pair's profile as pairs.csv names it when the pair could not be read: the file name (or the
+// standard profile's name) as given, in the same form as a read profile's source, not JSON.
+std::string source_text(const nlohmann::json& side) {
+  const nlohmann::json* p = &side;
+  if (side.is_object() && side.contains("profile")) p = &side["profile"];
+  if (p->is_string()) return p->get<std::string>();
+  if (p->is_object()) {
+    if (p->contains("file") && (*p)["file"].is_string()) return (*p)["file"].get<std::string>();
+    if (p->contains("standard") && (*p)["standard"].is_string()) return "standard:" + (*p)["standard"].get<std::string>();
+  }
+  return p->dump();
+}
+}  // namespace
+
 int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::ostream& err) {
   (void)out;
   const auto t0 = std::chrono::steady_clock::now();
+  const cells::DigitsScope digits_scope(opt.digits);
   if (opt.out_dir == "-") throw InputError("-o", "-", "a batch writes several tables: give an output directory");
   if (opt.strips) throw InputError("--strips", "", "is not available for batch manifests", "run the pair's case file alone");
-  if (opt.pressure_grid != 0 && (opt.pressure_grid < 2 || opt.pressure_grid > 1000))
-    throw InputError("--pressure-grid", std::to_string(opt.pressure_grid), "must be between 2 and 1000 points per axis");
   const std::uint64_t n_pairs = m.pairs.size();
   const std::uint64_t first = n_pairs * (opt.shard_index - 1) / opt.shard_count;
   const std::uint64_t end = n_pairs * opt.shard_index / opt.shard_count;
@@ -32,23 +47,24 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   const bool plastic = shared.model == Model::Plastic;
   const Method M = shared.method;
   const int np = opt.pressure_grid;
-  ensure_directory(opt.out_dir);
+  check_pressure_grid(np, (end - first) * shared.case_count(), plastic, opt.force);
+  RunDirectory rd(opt.out_dir);
   std::unique_ptr<OutputFile> fc, fe, fp, fpp, fj;
   std::unique_ptr<JsonObjectStream> jw;
   if (opt.csv) {
-    fc = std::make_unique<OutputFile>(opt.out_dir + "/cases.csv");
-    fe = std::make_unique<OutputFile>(opt.out_dir + "/" + contact_table_name(M));
-    fpp = std::make_unique<OutputFile>(opt.out_dir + "/pairs.csv");
+    fc = std::make_unique<OutputFile>(rd.path("cases.csv"));
+    fe = std::make_unique<OutputFile>(rd.path(contact_table_name(M)));
+    fpp = std::make_unique<OutputFile>(rd.path("pairs.csv"));
     fc->stream() << "pair," << cases_csv_header();
     fe->stream() << "pair," << contact_table_header(M, plastic);
     fpp->stream() << "pair,name,wheel,rail,status,n_ellipses,wheel_sha256,rail_sha256,message\n";
   }
   if (np) {
-    fp = std::make_unique<OutputFile>(opt.out_dir + "/pressure.csv");
+    fp = std::make_unique<OutputFile>(rd.path("pressure.csv"));
     fp->stream() << "pair," << pressure_table_header(M, plastic);
   }
   if (opt.json) {
-    fj = std::make_unique<OutputFile>(opt.out_dir + "/results.json");
+    fj = std::make_unique<OutputFile>(rd.path("results.json"));
     jw = std::make_unique<JsonObjectStream>(fj->stream());
     jw->member("schema", kBatchSchema);
     jw->member("program", program_json());
@@ -80,9 +96,9 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
       std::string row = prefix;
       csv_text(row, P.name);
       row += ',';
-      csv_text(row, pg ? pg->wheel.source : P.wheel.dump());
+      csv_text(row, pg ? pg->wheel.source : source_text(P.wheel));
       row += ',';
-      csv_text(row, pg ? pg->rail.source : P.rail.dump());
+      csv_text(row, pg ? pg->rail.source : source_text(P.rail));
       row += ',' + status + ',' + (pg ? std::to_string(pg->geo.n_ellipses()) : std::string()) + ',';
       row += (pg ? pg->wheel.checksum : std::string()) + ',' + (pg ? pg->rail.checksum : std::string()) + ',';
       csv_text(row, message);
@@ -98,7 +114,8 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
       pw->member("status", status);
       pw->member("message", message);
       if (pg) {
-        pw->member("inputs", inputs_json(cf, *pg));
+        pw->member("inputs", inputs_json(cf, opt.out_dir));
+        pw->member("profiles", profiles_json(*pg));
         pw->member("potential_ellipses", ellipses_json(pg->geo));
       }
       pw->begin_array("cases");
@@ -111,6 +128,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     } else {
       ++invalid;
       by_status[kInvalidPair] += n;
+      counts.failed += n;  // counted as a single run counts its cases that are not ok
       for (std::uint64_t i = 0; i < n; ++i) {
         CaseResult r;
         r.message = message;
@@ -127,7 +145,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     }
     if (opt.progress && !opt.quiet) err << "\rmhcontact run: pair " << (k + 1 - first) << "/" << (end - first) << std::flush;
   }
-  const std::uint64_t failed = counts.failed;  // cases of valid pairs that are not ok
+  const std::uint64_t failed = counts.failed;  // cases not ok, invalid pairs' cases included
   const nlohmann::json summary = {{"pairs", end - first}, {"invalid_pairs", invalid}, {"cases", cases_total},
                                   {"failed", failed}, {"by_status", by_status}};
   if (jw) {
@@ -141,12 +159,13 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   if (opt.shard_count > 1) {
     nlohmann::json sh = {{"schema", "mhcontact.shard/1"}, {"index", opt.shard_index}, {"count", opt.shard_count},
                          {"unit", "pair"}, {"first", first}, {"end", end}, {"total", n_pairs}, {"summary", summary},
-                         {"csv", opt.csv}, {"json", opt.json}, {"pressure", np > 0},
+                         {"csv", opt.csv}, {"json", opt.json}, {"pressure", np > 0}, {"digits", opt.digits},
                          {"inputs", {{"manifest", m.path}, {"common", m.common}, {"pairs", n_pairs}}}};
-    OutputFile f(opt.out_dir + "/shard.json");
+    OutputFile f(rd.path("shard.json"));
     f.stream() << sh.dump(2) << "\n";
     f.commit();
   }
+  rd.finish("run", program_json(), {{"digits", opt.digits ? nlohmann::json(opt.digits) : nlohmann::json("max")}, {"summary", summary}});
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!opt.quiet) {
     if (opt.progress) err << "\n";

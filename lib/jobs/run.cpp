@@ -8,9 +8,11 @@
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
 #include "output/case_tables.hpp"
+#include "output/cells.hpp"
 #include "output/json_stream.hpp"
 #include "output/output_file.hpp"
 #include "output/pair_tables.hpp"
+#include "output/run_dir.hpp"
 #include "profile/standard_profiles.hpp"
 
 #ifndef MHCONTACT_GIT_COMMIT
@@ -36,28 +38,32 @@ PairGeometry build_pair_geometry(const CaseFile& cf) {
   return pg;
 }
 
-int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& out, std::ostream& err, bool quiet) {
+int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& out, std::ostream& err, bool quiet,
+                 int digits) {
   const auto t0 = std::chrono::steady_clock::now();
+  const cells::DigitsScope digits_scope(digits);
   const PairGeometry pg = build_pair_geometry(cf);
   const ContactGeometry& G = pg.geo;
   if (!quiet) warn_profiles(pg, err);
-  ensure_directory(out_dir);
-  write_caf_csv(G, out_dir + "/caf.csv");
-  write_profiles_csv(pg, out_dir + "/profiles.csv");
+  RunDirectory rd(out_dir);
+  write_caf_csv(G, rd.path("caf.csv"));
+  write_profiles_csv(pg, rd.path("profiles.csv"));
   {
     nlohmann::json j;
     j["schema"] = kGeometrySchema;
     j["program"] = program_json();
-    j["inputs"] = inputs_json(cf, pg);
+    j["inputs"] = inputs_json(cf, out_dir);
+    j["profiles"] = profiles_json(pg);
     j["y_offset_mm"] = G.y_offset * 1e3;
     j["rail_gauge_point_y_mm"] = G.rail_gauge_y * 1e3;
     j["strips"] = G.strip_y.size();
     j["grid_points"] = G.tY.size();
     j["potential_ellipses"] = ellipses_json(G);
-    OutputFile f(out_dir + "/geometry.json");
+    OutputFile f(rd.path("geometry.json"));
     f.stream() << j.dump(2) << "\n";
     f.commit();
   }
+  rd.finish("geometry", program_json(), {{"digits", digits ? nlohmann::json(digits) : nlohmann::json("max")}});
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!quiet)
     err << "mhcontact geometry: " << G.n_ellipses() << " potential ellipses over t_Y " << format_number(G.tY.front() * 1e3)
@@ -70,6 +76,7 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
 
 int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::ostream& err) {
   const auto t0 = std::chrono::steady_clock::now();
+  const cells::DigitsScope digits_scope(opt.digits);
   const PairGeometry pg = build_pair_geometry(cf);
   const ContactGeometry& G = pg.geo;
   if (!opt.quiet) warn_profiles(pg, err);
@@ -79,10 +86,9 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   const bool want_csv = opt.csv && !to_stdout;
   const bool want_json = opt.json || to_stdout;
 
+  std::unique_ptr<RunDirectory> rd;
   std::unique_ptr<OutputFile> fc, fe, fj, fp, fs;
   const int np = opt.pressure_grid;
-  if (np != 0 && (np < 2 || np > 1000))
-    throw InputError("--pressure-grid", std::to_string(np), "must be between 2 and 1000 points per axis");
   if (opt.strips && M != Method::Strips)
     throw InputError("--strips", "", "writes the strips of the strip method; the case's method is " + std::string(to_string(M)),
                      "set \"method\": \"strips\" in the case file or drop --strips");
@@ -91,19 +97,26 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     throw InputError("--pressure-grid", std::to_string(np), "the strip method writes its pressures as strips", "use --strips");
   if (np && to_stdout)
     throw InputError("--pressure-grid", std::to_string(np), "needs an output directory (not -o -)");
+  if (to_stdout && !opt.json)
+    throw InputError("--format", "csv", "-o - writes results.json to standard output; the CSV tables need an output directory",
+                     "give -o DIR, or --format json");
+  if (opt.shard_count < 1 || opt.shard_index < 1 || opt.shard_index > opt.shard_count)
+    throw InputError("--shard", std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count), "must be K/N with 1 <= K <= N");
+  check_pressure_grid(np, cf.case_count() * opt.shard_index / opt.shard_count -
+                              cf.case_count() * (opt.shard_index - 1) / opt.shard_count, plastic, opt.force);
   if (!to_stdout) {
-    ensure_directory(opt.out_dir);
+    rd = std::make_unique<RunDirectory>(opt.out_dir);
     if (np) {
-      fp = std::make_unique<OutputFile>(opt.out_dir + "/pressure.csv");
+      fp = std::make_unique<OutputFile>(rd->path("pressure.csv"));
       fp->stream() << pressure_table_header(M, plastic);
     }
     if (want_csv) {
-      fc = std::make_unique<OutputFile>(opt.out_dir + "/cases.csv");
-      fe = std::make_unique<OutputFile>(opt.out_dir + "/" + contact_table_name(M));
+      fc = std::make_unique<OutputFile>(rd->path("cases.csv"));
+      fe = std::make_unique<OutputFile>(rd->path(contact_table_name(M)));
       fc->stream() << cases_csv_header();
       fe->stream() << contact_table_header(M, plastic);
     }
-    if (want_json) fj = std::make_unique<OutputFile>(opt.out_dir + "/results.json");
+    if (want_json) fj = std::make_unique<OutputFile>(rd->path("results.json"));
   }
   std::ostream* js = to_stdout ? &out : (fj ? &fj->stream() : nullptr);
   std::unique_ptr<JsonObjectStream> jw;
@@ -111,24 +124,24 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     jw = std::make_unique<JsonObjectStream>(*js);
     jw->member("schema", kResultsSchema);
     jw->member("program", program_json());
-    jw->member("inputs", inputs_json(cf, pg));
+    jw->member("inputs", inputs_json(cf, to_stdout ? std::string() : opt.out_dir));
+    jw->member("case_count", cf.case_count());
+    jw->member("profiles", profiles_json(pg));
     jw->member("potential_ellipses", ellipses_json(G));
     jw->begin_array("cases");
   }
 
   const std::uint64_t n_all = cf.case_count();
-  if (opt.shard_count < 1 || opt.shard_index < 1 || opt.shard_index > opt.shard_count)
-    throw InputError("--shard", std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count), "must be K/N with 1 <= K <= N");
   const std::uint64_t first = n_all * (opt.shard_index - 1) / opt.shard_count;
   const std::uint64_t end = n_all * opt.shard_index / opt.shard_count;
   const std::uint64_t n = end - first;
   SweepCounts counts;
   if (opt.strips) {
-    fs = std::make_unique<OutputFile>(opt.out_dir + "/strips.csv");
+    fs = std::make_unique<OutputFile>(rd->path("strips.csv"));
     fs->stream() << strips_csv_header();
   }
   Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fp ? &fp->stream() : nullptr,
-              fs ? &fs->stream() : nullptr, jw.get(), ""};
+              fs ? &fs->stream() : nullptr, jw.get(), "", to_stdout ? "standard output" : "results.json"};
   solve_cases(cf, G, first, end, opt, sinks, &counts, err);
   const auto& by_status = counts.by_status;
   const std::uint64_t failed = counts.failed;
@@ -141,22 +154,23 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   if (fc) {
     fc->commit();
     fe->commit();
-    write_profiles_csv(pg, opt.out_dir + "/profiles.csv");
+    write_profiles_csv(pg, rd->path("profiles.csv"));
   }
   if (opt.shard_count > 1 && !to_stdout) {
     nlohmann::json sh = {{"schema", "mhcontact.shard/1"}, {"index", opt.shard_index}, {"count", opt.shard_count},
                          {"unit", "case"}, {"first", first}, {"end", end}, {"total", n_all},
                          {"summary", {{"cases", n_all}, {"failed", failed}, {"by_status", by_status}}},
-                         {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0},
-                         {"inputs", inputs_json(cf, pg)}};
-    OutputFile f(opt.out_dir + "/shard.json");
+                         {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0}, {"digits", opt.digits},
+                         {"inputs", inputs_json(cf)}, {"profiles", profiles_json(pg)}};
+    OutputFile f(rd->path("shard.json"));
     f.stream() << sh.dump(2) << "\n";
     f.commit();
   }
   if (fj) fj->commit();
   if (fp) fp->commit();
   if (fs) fs->commit();
-  if (to_stdout) out.flush();
+  if (rd) rd->finish("run", program_json(), {{"digits", opt.digits ? nlohmann::json(opt.digits) : nlohmann::json("max")}, {"summary", {{"cases", n}, {"failed", failed}, {"by_status", by_status}}}});
+  if (to_stdout) check_written(out, "standard output");
   if (!opt.quiet) {
     if (opt.progress) err << "\n";
     err << "mhcontact run: " << n << " cases";

@@ -18,15 +18,17 @@ PairGeometry build_pair_geometry(const CaseFile& cf);
 void warn_profiles(const PairGeometry& pg, std::ostream& err);
 
 /// `mhcontact geometry`: writes DIR/caf.csv, DIR/geometry.json and DIR/profiles.csv. Returns the exit code.
-int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& out, std::ostream& err, bool quiet);
+/// `digits`: significant digits of the numbers in caf.csv and profiles.csv (0 = shortest round-trip).
+int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& out, std::ostream& err, bool quiet,
+                 int digits = 10);
 
 /// `mhcontact run`: returns 0 when every case is ok, 1 when some are not (kExitCasesFailed).
 int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::ostream& err);
 
 /// The schema names written into results.json and geometry.json.
-constexpr const char* kResultsSchema = "mhcontact.results/1";
-constexpr const char* kGeometrySchema = "mhcontact.geometry/1";
-constexpr const char* kBatchSchema = "mhcontact.batch/1";
+constexpr const char* kResultsSchema = "mhcontact.results/2";
+constexpr const char* kGeometrySchema = "mhcontact.geometry/2";
+constexpr const char* kBatchSchema = "mhcontact.batch/2";
 /// {"name": "mhcontact", "version": ..., "commit": ...}
 nlohmann::json program_json();
 

@@ -13,6 +13,7 @@
 #include "core/errors.hpp"
 #include "output/json_stream.hpp"
 #include "output/output_file.hpp"
+#include "output/run_dir.hpp"
 
 namespace mh {
 
@@ -83,14 +84,15 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     if (m["count"] != shards[0].meta["count"] || m["total"] != shards[0].meta["total"] || m["unit"] != shards[0].meta["unit"])
       throw InputError(where, "", "shards of different runs (case or shard counts differ)");
     if (m["inputs"] != shards[0].meta["inputs"]) throw InputError(where, "", "shards of different runs (inputs differ: case file, profiles or options)");
-    if (m["csv"] != shards[0].meta["csv"] || m["json"] != shards[0].meta["json"] || m["pressure"] != shards[0].meta["pressure"])
+    if (m["csv"] != shards[0].meta["csv"] || m["json"] != shards[0].meta["json"] || m["pressure"] != shards[0].meta["pressure"] ||
+        m.value("digits", -1) != shards[0].meta.value("digits", -1))
       throw InputError(where, "", "shards written with different output options");
     if (m["first"].get<std::uint64_t>() != expect) throw InputError(where, m["first"].dump(), "the shards' ranges do not tile the case (or pair) list");
     expect = m["end"].get<std::uint64_t>();
   }
   if (expect != shards[0].meta["total"].get<std::uint64_t>()) throw InputError("merge", "", "the shards do not cover every case (or pair)");
   const bool batch = shards[0].meta["unit"] == "pair";
-  ensure_directory(out_dir);
+  RunDirectory rd(out_dir);
   // Summary of all shards: counts added up, by_status merged; `cases` and `pairs` are totals
   // of the whole run for unsharded-equal output (run: cases = total).
   nlohmann::json summary = nlohmann::json::object();
@@ -120,13 +122,13 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
   if (pressure) tables.push_back("pressure.csv");
   if (std::ifstream(shards[0].dir + "/strips.csv").good()) tables.push_back("strips.csv");
   for (const auto& t : tables) {
-    OutputFile f(out_dir + "/" + t);
+    OutputFile f(rd.path(t));
     std::string header;
     for (unsigned k = 0; k < N; ++k) append_csv(shards[k].dir + "/" + t, f.stream(), &header, k == 0);
     f.commit();
   }
   if (csv && !batch) {
-    OutputFile f(out_dir + "/profiles.csv");
+    OutputFile f(rd.path("profiles.csv"));
     f.stream() << read_all(shards[0].dir + "/profiles.csv");
     f.commit();
   }
@@ -135,7 +137,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     // parse each, keep the first head, stream the records of all in order, write the summary of
     // the whole run. Memory: one shard's results.json at a time.
     const std::string key = batch ? "pairs" : "cases";
-    OutputFile f(out_dir + "/results.json");
+    OutputFile f(rd.path("results.json"));
     std::unique_ptr<JsonObjectStream> w;
     for (unsigned k = 0; k < N; ++k) {
       const std::string path = shards[k].dir + "/results.json";
@@ -170,6 +172,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     w->end();
     f.commit();
   }
+  rd.finish("merge", shards[0].meta.value("program", nlohmann::json::object()), {{"summary", summary}, {"shards", N}});
   if (!quiet) {
     err << "mhcontact merge: " << N << " shards, " << shards[0].meta["total"].get<std::uint64_t>() << (batch ? " pairs" : " cases");
     for (const auto& [k, v] : by_status) err << ", " << k << " " << v;

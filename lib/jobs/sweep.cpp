@@ -1,13 +1,75 @@
 #include "jobs/sweep.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <memory>
+#include <charconv>
+#include <cstdio>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
 #include "contact/solve.hpp"
+#include "core/errors.hpp"
 #include "output/case_tables.hpp"
+#include "output/output_file.hpp"
 
 namespace mh {
+
+namespace {
+std::function<void(std::uint64_t)> g_case_hook;
+}  // namespace
+
+void set_case_hook_for_tests(std::function<void(std::uint64_t)> hook) { g_case_hook = std::move(hook); }
+
+void check_pressure_grid(int N, std::uint64_t cases, bool plastic, bool force) {
+  if (N == 0) return;
+  if (N < 2 || N > 1000)
+    throw InputError("--pressure-grid", std::to_string(N), "must be between 2 and 1000 points per axis");
+  // A lower bound: one loaded ellipse per case, rows of about 52 bytes (64 plastic).
+  const double row = plastic ? 64 : 52;
+  const double bytes = static_cast<double>(cases) * N * N * row;
+  if (bytes > kPressureLimitBytes && !force) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3g GB", bytes / 1e9);
+    throw InputError("--pressure-grid", std::to_string(N),
+                     std::string("pressure.csv would be at least ") + buf + " (" + std::to_string(cases) + " cases x " +
+                         std::to_string(N * N) + " points x " + std::to_string(static_cast<int>(row)) +
+                         " bytes), more than the limit of 10 GB",
+                     "use a coarser grid or fewer cases, or --force to write it anyway");
+  }
+}
+
+int parse_digits(const std::string& text) {
+  if (text == "max") return 0;
+  int d = 0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), d);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || d < 1 || d > 17)
+    throw InputError("--digits", text, "must be an integer from 1 to 17, or max", "max: the shortest text that reads back to the same double");
+  return d;
+}
+
+std::string progress_line(std::uint64_t done, std::uint64_t total, double secs) {
+  char buf[160];
+  const double rate = secs > 0 ? static_cast<double>(done) / secs : 0;
+  const int pct = total ? static_cast<int>(100.0 * static_cast<double>(done) / static_cast<double>(total)) : 100;
+  std::string left = "?";
+  if (rate > 0) {
+    const double s = static_cast<double>(total - done) / rate;
+    char l[32];
+    if (s < 60) std::snprintf(l, sizeof l, "%.0f s", std::ceil(s));
+    else if (s < 3600) std::snprintf(l, sizeof l, "%d min %02d s", static_cast<int>(s) / 60, static_cast<int>(s) % 60);
+    else std::snprintf(l, sizeof l, "%d h %02d min", static_cast<int>(s) / 3600, static_cast<int>(s) / 60 % 60);
+    left = l;
+  }
+  std::snprintf(buf, sizeof buf, "mhcontact run: %llu/%llu cases (%d %%), %.0f cases/s, %s left   ",
+                static_cast<unsigned long long>(done), static_cast<unsigned long long>(total), pct, rate, left.c_str());
+  return buf;
+}
 
 void put_prefixed(std::ostream& o, const std::string& prefix, const std::string& lines) {
   if (prefix.empty()) { o << lines; return; }
@@ -20,7 +82,163 @@ void put_prefixed(std::ostream& o, const std::string& prefix, const std::string&
   }
 }
 
-// Solve cases [first, end) of `cf` on `G` in parallel chunks and write them in order.
+namespace {
+
+// Append `lines` to `s`, each line preceded by `prefix`.
+void append_prefixed(std::string& s, const std::string& prefix, const std::string& lines) {
+  if (prefix.empty()) { s += lines; return; }
+  std::size_t a = 0;
+  while (a < lines.size()) {
+    const std::size_t b = lines.find('\n', a);
+    const std::size_t e = b == std::string::npos ? lines.size() : b + 1;
+    s += prefix;
+    s.append(lines, a, e - a);
+    a = e;
+  }
+}
+
+// A persistent pool: `n` threads (the caller's included as thread 0) run job(t) together.
+class Pool {
+ public:
+  explicit Pool(unsigned n) : n_(n) {
+    for (unsigned t = 1; t < n_; ++t) threads_.emplace_back([this, t] { loop(t); });
+  }
+  ~Pool() {
+    { std::lock_guard<std::mutex> l(m_); stop_ = true; }
+    cv_.notify_all();
+    for (auto& th : threads_) th.join();
+  }
+  unsigned size() const { return n_; }
+  void run(const std::function<void(unsigned)>& job) {
+    {
+      std::lock_guard<std::mutex> l(m_);
+      job_ = &job;
+      pending_ = n_ - 1;
+      ++gen_;
+    }
+    cv_.notify_all();
+    job(0);
+    std::unique_lock<std::mutex> l(m_);
+    done_.wait(l, [this] { return pending_ == 0; });
+    job_ = nullptr;
+  }
+
+ private:
+  void loop(unsigned t) {
+    std::uint64_t seen = 0;
+    for (;;) {
+      const std::function<void(unsigned)>* job;
+      {
+        std::unique_lock<std::mutex> l(m_);
+        cv_.wait(l, [&] { return stop_ || gen_ != seen; });
+        if (stop_) return;
+        seen = gen_;
+        job = job_;
+      }
+      (*job)(t);
+      std::lock_guard<std::mutex> l(m_);
+      if (--pending_ == 0) done_.notify_one();
+    }
+  }
+  unsigned n_;
+  std::vector<std::thread> threads_;
+  std::mutex m_;
+  std::condition_variable cv_, done_;
+  const std::function<void(unsigned)>* job_ = nullptr;
+  std::uint64_t gen_ = 0;
+  unsigned pending_ = 0;
+  bool stop_ = false;
+};
+
+// The rows of one worker's contiguous slice of a chunk, formatted and prefixed.
+struct Block {
+  std::string cases, ellipses, pressure, strips;
+  std::vector<std::string> json;
+  void clear() { cases.clear(); ellipses.clear(); pressure.clear(); strips.clear(); json.clear(); }
+};
+
+// One chunk in flight: the blocks of its workers, in case order.
+struct Slot {
+  std::vector<Block> blocks;
+  std::vector<CaseStatus> status;
+  std::size_t m = 0;
+};
+
+// The writer thread: writes a finished slot while the workers fill the other one.
+class Writer {
+ public:
+  explicit Writer(const Sinks& out) : out_(out), th_([this] { loop(); }) {}
+  ~Writer() { finish(); }
+  // Wait until `slot` is written (free to refill).
+  void wait_free(const Slot* slot) {
+    std::unique_lock<std::mutex> l(m_);
+    cv_.wait(l, [&] { return queue_ != slot || error_; });
+  }
+  void submit(const Slot* slot) {
+    std::unique_lock<std::mutex> l(m_);
+    cv_.wait(l, [&] { return queue_ == nullptr; });
+    queue_ = slot;
+    cv_.notify_all();
+  }
+  void finish() {
+    {
+      std::unique_lock<std::mutex> l(m_);
+      cv_.wait(l, [&] { return queue_ == nullptr; });
+      stop_ = true;
+    }
+    cv_.notify_all();
+    if (th_.joinable()) th_.join();
+  }
+  bool error() {
+    std::lock_guard<std::mutex> l(m_);
+    return error_;
+  }
+
+ private:
+  void loop() {
+    for (;;) {
+      const Slot* s;
+      {
+        std::unique_lock<std::mutex> l(m_);
+        cv_.wait(l, [&] { return stop_ || queue_ != nullptr; });
+        if (queue_ == nullptr) return;
+        s = queue_;
+      }
+      const bool ok = write_slot(out_, *s);
+      std::lock_guard<std::mutex> l(m_);
+      if (!ok) error_ = true;
+      queue_ = nullptr;
+      cv_.notify_all();
+    }
+  }
+ public:
+  static bool write_slot(const Sinks& out, const Slot& s) {
+    for (const Block& b : s.blocks) {
+      if (out.cases) {
+        out.cases->write(b.cases.data(), static_cast<std::streamsize>(b.cases.size()));
+        out.ellipses->write(b.ellipses.data(), static_cast<std::streamsize>(b.ellipses.size()));
+      }
+      if (out.pressure) out.pressure->write(b.pressure.data(), static_cast<std::streamsize>(b.pressure.size()));
+      if (out.strips) out.strips->write(b.strips.data(), static_cast<std::streamsize>(b.strips.size()));
+      if (out.json) for (const auto& j : b.json) out.json->element(j);
+    }
+    return !((out.cases && (!*out.cases || !*out.ellipses)) || (out.pressure && !*out.pressure) ||
+             (out.strips && !*out.strips) || (out.json && !out.json->good()));
+  }
+ private:
+  const Sinks& out_;
+  std::mutex m_;
+  std::condition_variable cv_;
+  const Slot* queue_ = nullptr;
+  bool stop_ = false, error_ = false;
+  std::thread th_;
+};
+
+}  // namespace
+
+// Solve cases [first, end) of `cf` on `G` and write them in order. A persistent pool of workers
+// fills one chunk (each worker a contiguous slice, formatted into its own block) while a writer
+// thread writes the previous chunk (double buffers); the bytes are the same for any thread count.
 void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t first, std::uint64_t end,
                  const RunOptions& opt, const Sinks& out, SweepCounts* counts, std::ostream& err) {
   const bool plastic = cf.model == Model::Plastic;
@@ -31,65 +249,104 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   mo.strips.keep_strips = out.strips != nullptr;
   const bool grid_method = mo.method != Method::MultiHertzian;
   const std::uint64_t n = end - first;
-  const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  if (n == 0) return;
+  const unsigned threads = std::max(1u, opt.threads ? opt.threads : std::thread::hardware_concurrency());
   const std::size_t chunk = std::max<std::size_t>(opt.chunk, 1);
-  std::vector<Formatted> fmt(std::max<std::uint64_t>(1, std::min<std::uint64_t>(chunk, n)));
-  std::vector<CaseStatus> status(fmt.size());
-  int last_pct = -1;
-  for (std::uint64_t c0 = first; c0 < end; c0 += chunk) {
+  const unsigned nt = static_cast<unsigned>(std::min<std::uint64_t>(threads, std::min<std::uint64_t>(chunk, n)));
+  Slot slots[2];
+  for (Slot& s : slots) {
+    s.blocks.resize(nt);
+    s.status.resize(static_cast<std::size_t>(std::min<std::uint64_t>(chunk, n)));
+  }
+  std::mutex fail_mutex;
+  std::uint64_t fail_case = UINT64_MAX;
+  std::string fail_what;
+  std::vector<Formatted> scratch(nt);
+  Pool pool(nt);
+  // --threads 1: everything on this thread, no writer thread; otherwise a writer overlaps.
+  std::unique_ptr<Writer> writer = nt > 1 ? std::make_unique<Writer>(out) : nullptr;
+  auto write_failed = [&] { return OutputError(out.cases ? "cases.csv" : out.json_where, "output could not be written", "disk full?"); };
+  const auto t_start = std::chrono::steady_clock::now();
+  auto last_shown = t_start - std::chrono::seconds(1);
+  int cur = 0;
+  for (std::uint64_t c0 = first; c0 < end; c0 += chunk, cur ^= 1) {
+    Slot& S = slots[cur];
+    if (writer) {
+      writer->wait_free(&S);
+      if (writer->error()) throw write_failed();
+    }
     const std::size_t m = static_cast<std::size_t>(std::min<std::uint64_t>(chunk, end - c0));
-    auto work = [&](unsigned t, unsigned nt) {
-      for (std::size_t i = t; i < m; i += nt) {
+    S.m = m;
+    const std::function<void(unsigned)> work = [&](unsigned t) {
+      Block& B = S.blocks[t];
+      B.clear();
+      Formatted& f = scratch[t];
+      const std::size_t a = m * t / nt, b = m * (t + 1) / nt;
+      for (std::size_t i = a; i < b; ++i) {
         const CasePoint cp = cf.case_at(c0 + i);
-        CaseResult r;
         try {
-          r = solve_method(G, cf.material, cp.tY, cp.Q, mo);
+          if (g_case_hook) g_case_hook(c0 + i);
+          const CaseResult r = solve_method(G, cf.material, cp.tY, cp.Q, mo);
+          S.status[i] = r.status;
+          format_case(c0 + i, cp, r, plastic, want_csv, want_json, f);
+          // The per-contact table: ellipses (multi-Hertzian) or patches (grid methods).
+          if (want_csv && grid_method) format_patches(c0 + i, cp, r, plastic, f.ellipses);
+          if (want_csv) {
+            append_prefixed(B.cases, out.prefix, f.cases);
+            append_prefixed(B.ellipses, out.prefix, f.ellipses);
+          }
+          if (want_json) B.json.push_back(std::move(f.json));
+          if (np) {
+            if (grid_method) format_patch_pressure(c0 + i, r, f.pressure);
+            else format_pressure(c0 + i, r, cf.material, plastic, np, f.pressure);
+            append_prefixed(B.pressure, out.prefix, f.pressure);
+          }
+          if (out.strips) {
+            format_strips(c0 + i, cp, r, f.strips);
+            append_prefixed(B.strips, out.prefix, f.strips);
+          }
         } catch (const std::exception& ex) {
-          // Never let one case end the sweep (or a worker thread): report it in its row.
-          r = CaseResult{};
-          r.status = CaseStatus::NotConverged;
-          r.message = std::string("internal error: ") + ex.what();
-        }
-        status[i] = r.status;
-        format_case(c0 + i, cp, r, plastic, want_csv, want_json, fmt[i]);
-        if (grid_method) {
-          if (want_csv) format_patches(c0 + i, cp, r, plastic, fmt[i].ellipses);
-          if (out.strips) format_strips(c0 + i, cp, r, fmt[i].strips);
-          if (np) format_patch_pressure(c0 + i, r, fmt[i].pressure);
-        } else if (np) {
-          format_pressure(c0 + i, r, cf.material, plastic, np, fmt[i].pressure);
+          // A solver reports a case's failure in its status; an exception is a bug. Keep the
+          // first (by case number, so the message does not depend on the thread count) and end
+          // the run as an internal error (exit 3) once the workers have stopped.
+          std::lock_guard<std::mutex> lock(fail_mutex);
+          if (c0 + i < fail_case) {
+            fail_case = c0 + i;
+            fail_what = ex.what();
+          }
+          return;
         }
       }
     };
-    const unsigned nt = static_cast<unsigned>(std::min<std::size_t>(threads, m));
-    if (nt <= 1) {
-      work(0, 1);
-    } else {
-      std::vector<std::thread> pool;
-      for (unsigned t = 1; t < nt; ++t) pool.emplace_back(work, t, nt);
-      work(0, nt);
-      for (auto& th : pool) th.join();
+    pool.run(work);
+    if (fail_case != UINT64_MAX) {
+      if (writer) writer->finish();
+      throw std::runtime_error("case " + std::to_string(fail_case) + ": " + fail_what);
     }
     for (std::size_t i = 0; i < m; ++i) {
-      ++counts->by_status[to_string(status[i])];
-      if (status[i] != CaseStatus::Ok) ++counts->failed;
-      if (want_csv) {
-        put_prefixed(*out.cases, out.prefix, fmt[i].cases);
-        put_prefixed(*out.ellipses, out.prefix, fmt[i].ellipses);
-      }
-      if (want_json) out.json->element(fmt[i].json);
-      if (np) put_prefixed(*out.pressure, out.prefix, fmt[i].pressure);
-      if (out.strips) put_prefixed(*out.strips, out.prefix, fmt[i].strips);
+      ++counts->by_status[to_string(S.status[i])];
+      if (S.status[i] != CaseStatus::Ok) ++counts->failed;
+    }
+    if (writer) {
+      writer->submit(&S);
+    } else if (!Writer::write_slot(out, S)) {
+      // Stop at the first failed write (a full disk) rather than solve millions more cases.
+      throw write_failed();
     }
     if (opt.progress && !opt.quiet) {
-      const int pct = static_cast<int>(100.0 * static_cast<double>(c0 + m - first) / static_cast<double>(n));
-      if (pct != last_pct) {
-        err << "\rmhcontact run: " << (c0 + m - first) << "/" << n << " cases (" << pct << " %)" << std::flush;
-        last_pct = pct;
+      // At most 4 refreshes a second, and at least one a second while chunks keep finishing.
+      const auto now = std::chrono::steady_clock::now();
+      const std::uint64_t done = c0 + m - first;
+      if (now - last_shown >= std::chrono::milliseconds(250) || done == n) {
+        err << "\r" << progress_line(done, n, std::chrono::duration<double>(now - t_start).count()) << std::flush;
+        last_shown = now;
       }
     }
   }
+  if (writer) {
+    writer->finish();
+    if (writer->error()) throw write_failed();
+  }
 }
-
 
 }  // namespace mh

@@ -3,6 +3,7 @@
 // parallel chunks, formats each case's rows in its worker, and writes them to the sinks in case
 // order, so the output is byte-identical whatever the thread count.
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <ostream>
 #include <string>
@@ -32,7 +33,22 @@ struct RunOptions {
   unsigned shard_index = 1, shard_count = 1;
   /// Strip method: also write DIR/strips.csv (one row per loaded strip). Default no.
   bool strips = false;
+  /// Write pressure.csv even when its estimated size is above kPressureLimitBytes (--force).
+  bool force = false;
+  /// Significant digits of the numbers in the tables (--digits N), 0 = shortest round-trip (--digits max).
+  int digits = 10;
 };
+
+/// Parse --digits: "max" (0) or an integer 1..17. Throws InputError.
+int parse_digits(const std::string& text);
+
+/// pressure.csv is refused before anything is solved when its estimated size (at least one
+/// contact per case) is above this, unless forced (README "Output tables").
+constexpr double kPressureLimitBytes = 10e9;
+
+/// Refuse (InputError on --pressure-grid) a pressure grid of N×N points for `cases` cases whose
+/// estimated pressure.csv is larger than kPressureLimitBytes, unless `force`. Also checks 2 <= N <= 1000.
+void check_pressure_grid(int N, std::uint64_t cases, bool plastic, bool force);
 
 /// Where the formatted rows go; `prefix` is put in front of every CSV line (the batch's "pair,").
 struct Sinks {
@@ -42,6 +58,7 @@ struct Sinks {
   std::ostream* strips = nullptr;    ///< strips.csv (strip method, --strips)
   JsonObjectStream* json = nullptr;  ///< with its case array open
   std::string prefix;
+  std::string json_where = "results.json";  ///< names the JSON sink in a write error
 };
 
 /// Counts of a sweep by status.
@@ -53,6 +70,13 @@ struct SweepCounts {
 /// Solve cases [first, end) of `cf` on `G` in parallel chunks and write them in order.
 void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t first, std::uint64_t end,
                  const RunOptions& opt, const Sinks& out, SweepCounts* counts, std::ostream& err);
+
+/// Tests only: a function called in the worker before each case is solved (it may throw, to
+/// check that an exception inside a worker ends the run as an internal error). Empty: none.
+void set_case_hook_for_tests(std::function<void(std::uint64_t)> hook);
+
+/// The progress display: "mhcontact run: DONE/TOTAL cases (P %), R cases/s, T left".
+std::string progress_line(std::uint64_t done, std::uint64_t total, double secs);
 
 /// Write `lines` (one or more '\n'-terminated lines) to `o`, each preceded by `prefix`.
 void put_prefixed(std::ostream& o, const std::string& prefix, const std::string& lines);

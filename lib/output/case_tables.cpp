@@ -27,8 +27,8 @@ const Col kEllipseCols[] = {
     {"R_rxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_rxx); }},
     {"R_wxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_wxx); }},
     {"R_wyy_mm", [](const LoadedEllipse& e) { return e.g.R_wyy() * 1e3; }},
-    {"A_1pm", [](const LoadedEllipse& e) { return e.A; }},
-    {"B_1pm", [](const LoadedEllipse& e) { return e.B; }},
+    {"A_per_mm", [](const LoadedEllipse& e) { return e.A * 1e-3; }},  // 1/m -> 1/mm, as `hertz --A`
+    {"B_per_mm", [](const LoadedEllipse& e) { return e.B * 1e-3; }},
     {"lambda", [](const LoadedEllipse& e) { return e.c.lambda; }},
     {"m", [](const LoadedEllipse& e) { return e.c.m; }},
     {"n", [](const LoadedEllipse& e) { return e.c.n; }},
@@ -90,6 +90,25 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                  bool plastic, bool want_csv, bool want_json, Formatted& f, const char* status_text) {
   const char* status = status_text ? status_text : to_string(r.status);
   const std::string warn = join(r.warnings, ";");
+  // The main contact: the loaded ellipse carrying the largest normal force.
+  const LoadedEllipse* main = nullptr;
+  bool any_plastic = false;
+  for (const LoadedEllipse& L : r.loaded) {
+    if (!main || L.s.N > main->s.N) main = &L;
+    any_plastic = any_plastic || (plastic && L.s.plastic);
+  }
+  double gamma_main = main ? main->g.gamma / units::deg : NAN;
+  double r_roll_main = main ? main->g.r_roll * 1e3 : NAN;
+  // Grid methods: the patch carrying the largest normal force.
+  const PatchResult* main_patch = nullptr;
+  for (const PatchResult& P : r.patches) {
+    if (!main_patch || P.N > main_patch->N) main_patch = &P;
+    any_plastic = any_plastic || (plastic && P.plastic_area > 0);
+  }
+  if (main_patch) {
+    gamma_main = main_patch->gamma / units::deg;
+    r_roll_main = main_patch->r_roll * units::per_mm;
+  }
   auto h_y_mm = [](const LoadedEllipse& e) { return e.h_y * 1e3; };  // from the ellipse law (method.md §5)
   if (want_csv) {
     std::string& s = f.cases;
@@ -108,6 +127,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; num(s, r.Fy / units::kN);
     s += ','; num(s, r.pmax / units::MPa);
     s += ','; num(s, r.area * units::per_mm2);
+    s += ','; num(s, gamma_main);
+    s += ','; num(s, r_roll_main);
+    s += ','; s += any_plastic ? '1' : '0';
+    s += ','; append_number(s, static_cast<long long>(r.warnings.size()));
     s += ','; csv_text(s, warn);
     s += ','; csv_text(s, r.message);
     s += '\n';
@@ -129,7 +152,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
   }
   if (want_json) {
     // The record, built as JSON (ordered keys, as in the CSV) and dumped compact on one line.
-    auto jv = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr); };
+    auto jv = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(rounded(v)) : nlohmann::ordered_json(nullptr); };
     nlohmann::ordered_json j;
     j["case"] = idx;
     j["tY_mm"] = jv(cp.tY_mm);
@@ -145,6 +168,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     j["Fy_kN"] = jv(r.Fy / units::kN);
     j["pmax_MPa"] = jv(r.pmax / units::MPa);
     j["area_mm2"] = jv(r.area * units::per_mm2);
+    j["gamma_main_deg"] = jv(gamma_main);
+    j["r_roll_main_mm"] = jv(r_roll_main);
+    j["plastic"] = any_plastic;
+    j["n_warnings"] = r.warnings.size();
     j["warnings"] = r.warnings;
     j["message"] = r.message;
     nlohmann::ordered_json el = nlohmann::ordered_json::array();
@@ -252,7 +279,7 @@ std::string patch_pressure_csv_header() { return "case,patch,x_mm,s_mm,y_rail_mm
 
 std::string cases_csv_header() {
   return "case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,"
-         "pmax_MPa,area_mm2,warnings,message\n";
+         "pmax_MPa,area_mm2,gamma_main_deg,r_roll_main_mm,plastic,n_warnings,warnings,message\n";
 }
 
 std::string pressure_csv_header(bool plastic) {

@@ -32,6 +32,8 @@ class JsonObjectStream {
   void end_array();
   /// Closes the object (a document: and a final newline).
   void end();
+  /// The underlying stream has not failed.
+  bool good() const { return static_cast<bool>(o_); }
 
  private:
   std::ostream& o_;

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -22,13 +23,17 @@ namespace {
 constexpr int kMaxPending = 64;
 char g_pending[kMaxPending][4096];
 std::atomic<bool> g_used[kMaxPending];
+bool g_is_dir[kMaxPending];
 std::mutex g_mutex;
 
-int register_pending(const std::string& tmp) {
+}  // namespace
+
+int register_pending(const std::string& path, bool is_dir) {
   std::lock_guard<std::mutex> lock(g_mutex);
   for (int i = 0; i < kMaxPending; ++i) {
     if (!g_used[i].load()) {
-      std::snprintf(g_pending[i], sizeof g_pending[i], "%s", tmp.c_str());
+      std::snprintf(g_pending[i], sizeof g_pending[i], "%s", path.c_str());
+      g_is_dir[i] = is_dir;
       g_used[i].store(true);
       return i;
     }
@@ -42,20 +47,44 @@ void unregister_pending(int slot) {
   g_used[slot].store(false);
 }
 
-
+namespace {
+char g_interrupt_msg[8192];
+std::atomic<std::size_t> g_interrupt_len{0};
 }  // namespace
+
+void set_interrupt_message(const std::string& line) {
+  g_interrupt_len.store(0);
+  const std::size_t n = std::min(line.size(), sizeof g_interrupt_msg);
+  std::memcpy(g_interrupt_msg, line.data(), n);
+  g_interrupt_len.store(n);
+}
+
+void print_interrupt_message() noexcept {
+  const std::size_t n = g_interrupt_len.load();
+  if (n) {
+    const ssize_t r = ::write(2, g_interrupt_msg, n);
+    (void)r;
+  }
+}
+
+void check_written(std::ostream& o, const std::string& where) {
+  o.flush();
+  if (!o) throw OutputError(where, "output could not be written", "disk full, or the reader closed the pipe?");
+}
 
 void remove_pending_output_temporaries() noexcept {
   for (int i = 0; i < kMaxPending; ++i)
-    if (g_used[i].load()) ::unlink(g_pending[i]);
+    if (g_used[i].load() && !g_is_dir[i]) ::unlink(g_pending[i]);
+  for (int i = 0; i < kMaxPending; ++i)
+    if (g_used[i].load() && g_is_dir[i]) ::rmdir(g_pending[i]);
 }
 
 void ensure_directory(const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))
-    throw InputError(dir, "", "output directory cannot be created: " +
-                                  (ec ? ec.message() : std::string("not a directory")));
+    throw OutputError(dir, "output directory cannot be created: " +
+                               (ec ? ec.message() : std::string("not a directory")));
 }
 
 OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
@@ -64,19 +93,19 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
   buf.push_back('\0');
   int fd = ::mkstemp(buf.data());
   if (fd < 0)
-    throw InputError(path_, "", std::string("output file cannot be written: ") + std::strerror(errno));
+    throw OutputError(path_, std::string("output file cannot be written: ") + std::strerror(errno));
   // mkstemp creates 0600; an output file gets the usual 0666 less the umask.
   const mode_t mask = ::umask(0);
   ::umask(mask);
   ::fchmod(fd, 0666 & ~mask);
   ::close(fd);
   tmp_.assign(buf.data());
-  slot_ = register_pending(tmp_);
+  slot_ = register_pending(tmp_, false);
   out_.open(tmp_, std::ios::binary | std::ios::trunc);
   if (!out_) {
     ::unlink(tmp_.c_str());
     unregister_pending(slot_);
-    throw InputError(path_, "", "output file cannot be written");
+    throw OutputError(path_, "output file cannot be written");
   }
 }
 
@@ -90,16 +119,20 @@ OutputFile::~OutputFile() {
 
 void OutputFile::commit() {
   out_.flush();
-  if (!out_) throw InputError(path_, "", "writing the output file failed (disk full?)");
+  if (!out_) throw OutputError(path_, "writing the output file failed", "disk full?");
   out_.close();
+  if (out_.fail()) throw OutputError(path_, "writing the output file failed", "disk full?");
   int fd = ::open(tmp_.c_str(), O_RDONLY);
   if (fd >= 0) {
-    ::fsync(fd);
+    const int rc = ::fsync(fd);
+    const int e = errno;
     ::close(fd);
+    if (rc != 0 && e != EINVAL && e != EROFS)
+      throw OutputError(path_, std::string("writing the output file failed: ") + std::strerror(e));
   }
   if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
-    throw InputError(path_, "", std::string("cannot rename the finished output into place: ") +
-                                    std::strerror(errno));
+    throw OutputError(path_, std::string("cannot rename the finished output into place: ") +
+                                 std::strerror(errno));
   committed_ = true;
 }
 

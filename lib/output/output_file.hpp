@@ -6,13 +6,26 @@
 // CLI (see cli.cpp); a hard kill (SIGKILL) leaves at most a *.tmp.* file, never a complete-
 // looking NAME.
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
 namespace mh {
 
+/// Output that could not be written: a full disk, a closed pipe, /dev/full, a failed rename, a
+/// directory that cannot be created. Exit code 4 (kExitOutput). Message as InputError's:
+/// "WHERE: RULE (FIX)".
+class OutputError : public std::runtime_error {
+ public:
+  OutputError(const std::string& where, const std::string& rule, const std::string& hint = {})
+      : std::runtime_error(where + ": " + rule + (hint.empty() ? std::string() : " (" + hint + ")")) {}
+};
+
+/// Throw OutputError naming `where` if the stream has failed (after flushing it).
+void check_written(std::ostream& o, const std::string& where);
+
 class OutputFile {
  public:
-  /// Opens a temporary beside `path`. Throws InputError naming the directory if it cannot be written.
+  /// Opens a temporary beside `path`. Throws OutputError naming the file if it cannot be written.
   explicit OutputFile(std::string path);
   ~OutputFile();
   OutputFile(const OutputFile&) = delete;
@@ -31,10 +44,20 @@ class OutputFile {
   int slot_ = -1;
 };
 
+/// Register a path for removal by remove_pending_output_temporaries() (a file: unlinked; a
+/// directory: removed after the files, when empty). Returns its slot (-1: registry full).
+int register_pending(const std::string& path, bool is_dir);
+void unregister_pending(int slot);
+
+/// The line a signal handler prints after removing the temporaries (what was kept); empty: none.
+void set_interrupt_message(const std::string& line);
+/// Write that line to standard error (async-signal-safe).
+void print_interrupt_message() noexcept;
+
 /// Remove every temporary still registered (for signal handlers; async-signal-safe: unlink only).
 void remove_pending_output_temporaries() noexcept;
 
-/// Make sure a directory exists (creating parents). Throws InputError if it cannot.
+/// Make sure a directory exists (creating parents). Throws OutputError if it cannot.
 void ensure_directory(const std::string& dir);
 
 }  // namespace mh

@@ -2,6 +2,8 @@
 // (caf.csv), and the JSON records of the profiles, the potential ellipses and the inputs.
 #include "output/pair_tables.hpp"
 
+#include <filesystem>
+
 #include "core/units.hpp"
 #include "output/cells.hpp"
 #include "output/output_file.hpp"
@@ -25,11 +27,40 @@ nlohmann::json ellipses_json(const ContactGeometry& G) {
   return a;
 }
 
-nlohmann::json inputs_json(const CaseFile& cf, const PairGeometry& pg) {
+namespace {
+nlohmann::json axis_json(const SweepAxis& a) {
+  if (!a.list.empty()) return a.list;
+  return {{"from", a.from}, {"to", a.from + a.step * static_cast<double>(a.n - 1)}, {"step", a.step}};
+}
+}  // namespace
+
+nlohmann::json inputs_json(const CaseFile& cf, const std::string& base_dir) {
   nlohmann::json j = cf.resolved_json();
-  j["wheel"]["read"] = profile_json(pg.wheel, pg.geo.wheel_window);
-  j["rail"]["read"] = profile_json(pg.rail, pg.geo.rail_window);
+  for (const char* k : {"case_count", "case_file", "case_order"}) j.erase(k);
+  for (const char* side : {"wheel", "rail"}) {
+    nlohmann::json& p = j[side]["profile"];
+    if (p.is_object() && p.contains("file") && p["file"].is_string()) {
+      std::error_code ec;
+      const std::filesystem::path abs = std::filesystem::absolute(p["file"].get<std::string>(), ec);
+      std::filesystem::path rel;
+      if (!base_dir.empty()) rel = std::filesystem::relative(abs, std::filesystem::absolute(base_dir, ec), ec);
+      p["file"] = (base_dir.empty() || ec || rel.empty()) ? abs.lexically_normal().string() : rel.string();
+    }
+  }
+  if (cf.has_cases) {
+    if (!cf.cases.empty()) {
+      nlohmann::json c = nlohmann::json::array();
+      for (const CasePoint& cp : cf.cases) c.push_back({{"tY_mm", cp.tY_mm}, {"Q_kN", cp.Q_kN}});
+      j["cases"] = c;
+    } else {
+      j["sweep"] = {{"tY_mm", axis_json(cf.sweep_tY_mm)}, {"Q_kN", axis_json(cf.sweep_Q_kN)}};
+    }
+  }
   return j;
+}
+
+nlohmann::json profiles_json(const PairGeometry& pg) {
+  return {{"wheel", profile_json(pg.wheel, pg.geo.wheel_window)}, {"rail", profile_json(pg.rail, pg.geo.rail_window)}};
 }
 
 // The profiles as used (rail with its inclination), canonical frame, mm: for plots.

@@ -13,7 +13,12 @@ namespace mh {
 nlohmann::json profile_json(const Profile& p, double window);
 nlohmann::json ellipses_json(const ContactGeometry& G);
 /// The case file's resolved inputs plus what was read of each profile.
-nlohmann::json inputs_json(const CaseFile& cf, const PairGeometry& pg);
+/// The resolved inputs as a valid case file (defaults filled in, the sweep or case list, profile
+/// paths relative to `base_dir`, or absolute when it is empty): `mhcontact run` on it reproduces
+/// the run. The profiles as read (checksums, warnings) are in profiles_json().
+nlohmann::json inputs_json(const CaseFile& cf, const std::string& base_dir = {});
+/// {"wheel": profile_json(...), "rail": profile_json(...)}
+nlohmann::json profiles_json(const PairGeometry& pg);
 /// The profiles as used (rail with its inclination), canonical frame, mm: for plots.
 void write_profiles_csv(const PairGeometry& pg, const std::string& path);
 /// caf.csv: the contact angle function and the main strip per t_Y of the grid.

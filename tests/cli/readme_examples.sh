@@ -40,8 +40,8 @@ cmp 60E1_1-40.csv profiles/60E1_1-40.csv
 bash scripts/run_sharded.sh cases/manchester.json out/study 8 2
 cmp out/study/cases.csv out/manchester/cases.csv
 if command -v parallel >/dev/null && parallel --version 2>/dev/null | grep -q "GNU parallel"; then
-  parallel ./build/mhcontact run cases/manchester.json -o out/par/shard{} --shard {}/8 -q ::: 1 2 3 4 5 6 7 8
-  ./build/mhcontact merge out/par/shard* -o out/par
+  parallel ./build/mhcontact run cases/manchester.json -o out/par.shards/shard{} --shard {}/8 -q ::: 1 2 3 4 5 6 7 8
+  ./build/mhcontact merge out/par.shards/shard* -o out/par
 fi
 # Plots
 "$py" scripts/plot_geometry.py out/geo --tY 5

@@ -2,7 +2,9 @@
 # Regression of the shipped cases against the reviewed reference tables in tests/ref/, compared
 # with `mhcontact diff` (as users do in their own CI). Tolerances: rtol 1e-7 and atol 1e-9 in each
 # column's unit: far above last-bit noise of another compiler or libm, far below any change in
-# the method (a 0.01 mm change of a semi-axis is 1e-3 relative).
+# the method (a 0.01 mm change of a semi-axis is 1e-3 relative), and far above the rounding of
+# the tables to 10 significant digits (at most 5e-10 relative, also when a last-bit difference
+# flips the rounding of the 10th digit).
 set -euo pipefail
 bin=$1; src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT

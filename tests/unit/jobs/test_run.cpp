@@ -8,6 +8,7 @@
 
 #include "cli.hpp"
 #include "core/errors.hpp"
+#include "jobs/sweep.hpp"
 
 namespace fs = std::filesystem;
 using mh::run_cli;
@@ -73,15 +74,15 @@ TEST_CASE("run writes the three tables, byte-identical for 1, 2 and 4 threads", 
     REQUIRE(e.path().filename().string().find(".tmp.") == std::string::npos);
   // Headers as documented in the README.
   const std::string cases = slurp(d / "t1/cases.csv");
-  REQUIRE(cases.rfind("case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,pmax_MPa,area_mm2,warnings,message\n", 0) == 0);
+  REQUIRE(cases.rfind("case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,pmax_MPa,area_mm2,gamma_main_deg,r_roll_main_mm,plastic,n_warnings,warnings,message\n", 0) == 0);
   REQUIRE(std::count(cases.begin(), cases.end(), '\n') == 100);
   const std::string ell = slurp(d / "t1/ellipses.csv");
-  REQUIRE(ell.rfind("case,tY_mm,Q_kN,ellipse,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,A_1pm,B_1pm,"
+  REQUIRE(ell.rfind("case,tY_mm,Q_kN,ellipse,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,A_per_mm,B_per_mm,"
                     "lambda,m,n,gap_mm,h0_mm,N_kN,a_mm,b_mm,p0_MPa,pmean_MPa,approach_mm\n", 0) == 0);
   // results.json: valid JSON, schema, inputs with checksums, the same cases.
   const auto j = nlohmann::json::parse(slurp(d / "t1/results.json"));
-  REQUIRE(j.at("schema") == "mhcontact.results/1");
-  REQUIRE(j.at("inputs").at("wheel").at("read").at("sha256").get<std::string>().size() == 64);
+  REQUIRE(j.at("schema") == "mhcontact.results/2");
+  REQUIRE(j.at("profiles").at("wheel").at("sha256").get<std::string>().size() == 64);
   REQUIRE(j.at("cases").size() == 99);
   REQUIRE(j.at("potential_ellipses").size() == 4);
   REQUIRE(j.at("summary").at("failed") == 0);
@@ -165,10 +166,33 @@ TEST_CASE("bad case files: exit 2, JSON path, value and rule; nothing written", 
   }
 }
 
-TEST_CASE("an output directory that cannot be written: exit 2", "[run][errors]") {
+TEST_CASE("an output directory that cannot be written: exit 4", "[run][errors]") {
   TempDir d;
   std::ofstream(d / "file") << "x";
   std::string err;
-  REQUIRE(cli({"run", kSrc + "/cases/manchester.json", "-o", d / "file/sub", "-q"}, nullptr, &err) == mh::kExitInputError);
+  REQUIRE(cli({"run", kSrc + "/cases/manchester.json", "-o", d / "file/sub", "-q"}, nullptr, &err) == mh::kExitOutput);
   REQUIRE_THAT(err, Catch::Contains("cannot be created"));
+}
+
+TEST_CASE("an exception inside a worker is an internal error (exit 3), not a row", "[run][errors]") {
+  TempDir d;
+  for (const char* threads : {"1", "2"}) {
+    mh::set_case_hook_for_tests([](std::uint64_t c) {
+      if (c == 7) throw std::runtime_error("injected failure");
+    });
+    std::string err;
+    const int rc = cli({"run", kSrc + "/cases/manchester.json", "-o", d / "out", "-q", "--threads", threads}, nullptr, &err);
+    mh::set_case_hook_for_tests(nullptr);
+    CAPTURE(threads, err);
+    REQUIRE(rc == mh::kExitInternal);
+    REQUIRE_THAT(err, Catch::Contains("mhcontact: internal error: case 7: injected failure"));
+    REQUIRE_FALSE(fs::exists(d / "out/cases.csv"));
+  }
+}
+
+TEST_CASE("a full standard output is an error (exit 4)", "[run][errors]") {
+  std::ostringstream o, e;
+  o.setstate(std::ios::badbit);  // as a stream on /dev/full ends up
+  REQUIRE(run_cli({"run", kSrc + "/cases/manchester.json", "-o", "-", "-q"}, o, e) == mh::kExitOutput);
+  REQUIRE_THAT(e.str(), Catch::Contains("output could not be written"));
 }

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# A schema a script can trust: the resolved inputs in results.json are a valid case file whose
+# paths resolve from the output directory (rerunning them reproduces the tables byte for byte);
+# batch summaries count failures as single runs do; every column of every table is documented
+# in the README; curvature sums use the unit name of `hertz` (A_per_mm).
+set -uo pipefail
+bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1"); src=$2
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0
+fail() { echo "FAIL: $*"; fails=1; }
+extract() {  # results.json -> its inputs as a case file beside it
+  python3 -c 'import json,sys; json.dump(json.load(open(sys.argv[1]))["inputs"], open(sys.argv[2], "w"), indent=2)' "$1" "$2"
+}
+for c in manchester manchester-plastic s1002-60e1; do
+  "$bin" run "$src/cases/$c.json" -o "$tmp/$c" -q || fail "$c"
+  grep -q '"schema": "mhcontact.results/2"' "$tmp/$c/results.json" || fail "$c: schema version"
+  extract "$tmp/$c/results.json" "$tmp/$c/inputs.json"
+  (cd "$tmp" && "$bin" run "$c/inputs.json" -o "re_$c" -q) || fail "$c: the inputs of results.json do not run"
+  for t in cases.csv ellipses.csv; do cmp -s "$tmp/$c/$t" "$tmp/re_$c/$t" || fail "$c: rerunning the inputs gives another $t"; done
+done
+# -o -: absolute paths, valid as well.
+"$bin" run "$src/cases/manchester.json" -o - -q > "$tmp/stdout.json"
+extract "$tmp/stdout.json" "$tmp/elsewhere.json"
+mkdir -p "$tmp/sub" && mv "$tmp/elsewhere.json" "$tmp/sub/"
+"$bin" run "$tmp/sub/elsewhere.json" -o "$tmp/re_stdout" --format csv -q || fail "inputs of -o - do not run"
+cmp -s "$tmp/manchester/cases.csv" "$tmp/re_stdout/cases.csv" || fail "inputs of -o -: other cases.csv"
+# Units: the tables name the curvature sums as hertz does.
+head -1 "$tmp/manchester/ellipses.csv" | grep -q ",A_per_mm,B_per_mm," || fail "ellipses.csv: A_per_mm, B_per_mm"
+# Batch: invalid pairs' cases are failures, as in a single run.
+cat > "$tmp/bad.json" <<JSON
+{"pairs": [{"name": "good", "wheel": "$src/profiles/MBench_S1002_v3.prw", "rail": "$src/profiles/MBench_UIC60_v3.prr"},
+           {"name": "missing", "wheel": "$tmp/no_such.prw", "rail": "$src/profiles/MBench_UIC60_v3.prr"}],
+ "inclination": "as-is", "sweep": {"tY_mm": [0, 1], "Q_kN": [50]}}
+JSON
+"$bin" run "$tmp/bad.json" -o "$tmp/batch" -q; rc=$?
+[ $rc = 1 ] || fail "batch with an invalid pair: exit $rc"
+python3 - "$tmp/batch/results.json" <<'PY' || fail "batch summary does not count the invalid pair's cases as failed"
+import json, sys
+s = json.load(open(sys.argv[1]))["summary"]
+assert s["failed"] == 2 and s["invalid_pairs"] == 1, s
+PY
+grep -q "^1,missing,$tmp/no_such.prw," "$tmp/batch/pairs.csv" || fail "pairs.csv: the source of an invalid pair is not a plain path: $(sed -n 3p "$tmp/batch/pairs.csv")"
+# Every column of every table is documented in the README (as `name`).
+"$bin" run "$src/cases/manchester-plastic.json" -o "$tmp/p" --pressure-grid 3 -q
+"$bin" geometry "$src/cases/manchester.json" -o "$tmp/g" -q
+for f in "$tmp/p/cases.csv" "$tmp/p/ellipses.csv" "$tmp/p/pressure.csv" "$tmp/g/caf.csv" "$tmp/batch/pairs.csv"; do
+  for col in $(head -1 "$f" | tr ',' ' '); do
+    grep -q "\`$col\`\|[,\`]$col[,\`]" "$src/README.md" || fail "README does not document column $col of $(basename "$f")"
+  done
+done
+exit $fails
