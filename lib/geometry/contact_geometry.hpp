@@ -73,6 +73,16 @@ class ContactGeometry {
   double y_offset = 0;                   ///< [m] rail y of the wheel's origin (taping line) at t_Y = 0
   double rail_gauge_y = 0;               ///< [m] gauge point of the rail (rail frame)
   double wheel_window = 0, rail_window = 0;  ///< [m] curvature fit windows used (profile_curve.hpp)
+  /// Curvature samples of both profiles every kappa_dy, in the solver's signs: rail_k[i] =
+  /// 1/R_rxx at y_r = rail_k_y0 + i·kappa_dy, wheel_k[i] = 1/R_wxx at y_w = wheel_k_y0 + i·kappa_dy.
+  /// Used by the Hertz validity test over the patch width (contact/hertz_validity.hpp).
+  double kappa_dy = 0.05e-3;
+  double rail_k_y0 = 0, wheel_k_y0 = 0;
+  std::vector<double> rail_k, wheel_k;
+  bool has_curvature_samples() const { return !rail_k.empty() && !wheel_k.empty(); }
+  /// 1/R_rxx, 1/R_wxx [1/m] at any y, linear between samples, held constant beyond the ends.
+  double k_rxx_at(double y_r) const;
+  double k_wxx_at(double y_w) const;
 
   std::size_t n_ellipses() const { return ellipses.size(); }
   const CandidateGeom& at(std::size_t k, std::size_t e) const { return table[k * ellipses.size() + e]; }

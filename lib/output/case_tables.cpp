@@ -50,7 +50,13 @@ const Col kPlasticCols[] = {
     {"b_el_mm", [](const LoadedEllipse& e) { return e.s.b_el * 1e3; }},
     {"area_ratio", [](const LoadedEllipse& e) { return e.s.area_ratio; }},
 };
-
+// Columns appended after all others (new columns are only ever appended: existing positions stay).
+// hertz_valid is written as 1/0 (true/false in JSON), see below.
+const Col kTailCols[] = {
+    {"hertz_valid", nullptr},
+    {"b_over_R", [](const LoadedEllipse& e) { return e.validity.b_over_R; }},
+    {"gap_error", [](const LoadedEllipse& e) { return e.validity.gap_error; }},
+};
 
 }  // namespace
 
@@ -124,6 +130,8 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
         e += ','; num(e, h_y_mm(L));
         for (std::size_t k = 1; k < std::size(kPlasticCols); ++k) { e += ','; num(e, kPlasticCols[k].get(L)); }
       }
+      e += ','; e += L.validity.valid ? "1" : "0";
+      for (std::size_t k = 1; k < std::size(kTailCols); ++k) { e += ','; num(e, kTailCols[k].get(L)); }
       e += '\n';
     }
   }
@@ -157,6 +165,8 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
         e["h_y_mm"] = jv(h_y_mm(L));
         for (std::size_t k = 1; k < std::size(kPlasticCols); ++k) e[kPlasticCols[k].name] = jv(kPlasticCols[k].get(L));
       }
+      e["hertz_valid"] = L.validity.valid;
+      for (std::size_t k = 1; k < std::size(kTailCols); ++k) e[kTailCols[k].name] = jv(kTailCols[k].get(L));
       el.push_back(std::move(e));
     }
     j["ellipses"] = std::move(el);
@@ -180,6 +190,7 @@ std::string ellipses_csv_header(bool plastic) {
     s += ",plastic";
     for (const Col& c : kPlasticCols) { s += ','; s += c.name; }
   }
+  for (const Col& c : kTailCols) { s += ','; s += c.name; }
   return s + "\n";
 }
 
