@@ -257,7 +257,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   if (j.contains("geometry")) {
     const json& g = j.at("geometry");
     c.only_keys(g, "/geometry", {"tY_min_mm", "tY_max_mm", "tY_step_mm", "strip_width_mm", "jump_threshold_deg",
-                                 "jump_distance_mm", "fit_window_mm", "measured_fit_window_mm"});
+                                 "jump_distance_mm", "min_ellipse_width_mm", "fit_window_mm", "measured_fit_window_mm"});
     if (g.contains("tY_min_mm") != g.contains("tY_max_mm"))
       c.fail("/geometry", &g, "give both tY_min_mm and tY_max_mm, or neither (then the range covers the sweep)");
     if (g.contains("tY_min_mm")) {
@@ -279,6 +279,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     }
     if (g.contains("jump_threshold_deg")) cf.geometry.jump_threshold = c.positive(g, "/geometry", "jump_threshold_deg") * units::deg;
     if (g.contains("jump_distance_mm")) cf.geometry.jump_distance = c.number(g, "/geometry", "jump_distance_mm") * units::mm;
+    if (g.contains("min_ellipse_width_mm")) cf.geometry.min_ellipse_width = c.number(g, "/geometry", "min_ellipse_width_mm") * units::mm;
     if (g.contains("fit_window_mm")) cf.geometry.curve.window_half_width = c.positive(g, "/geometry", "fit_window_mm") * units::mm;
     if (g.contains("measured_fit_window_mm")) cf.geometry.curve.measured_window_half_width = c.positive(g, "/geometry", "measured_fit_window_mm") * units::mm;
   }
@@ -457,6 +458,7 @@ nlohmann::json CaseFile::resolved_json() const {
                    {"tY_step_mm", geometry.tY_step * 1e3}, {"strip_width_mm", geometry.strip_width * 1e3},
                    {"jump_threshold_deg", geometry.jump_threshold / units::deg},
                    {"jump_distance_mm", geometry.jump_distance * 1e3},
+                   {"min_ellipse_width_mm", geometry.min_ellipse_width * 1e3},
                    {"fit_window_mm", geometry.curve.window_half_width * 1e3},
                    {"measured_fit_window_mm", geometry.curve.measured_window_half_width * 1e3}};
   json mat = {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}};
