@@ -57,6 +57,14 @@ const Col kTailCols[] = {
     {"b_over_R", [](const LoadedEllipse& e) { return e.validity.b_over_R; }},
     {"gap_error", [](const LoadedEllipse& e) { return e.validity.gap_error; }},
 };
+// Plastic mode only, appended after kTailCols (issue #10 item 5): the elastic and the plastic
+// patch side by side.
+const Col kPlasticTailCols[] = {
+    {"p0_el_MPa", [](const LoadedEllipse& e) { return e.s.p0_el / units::MPa; }},
+    {"pmax_MPa", [](const LoadedEllipse& e) { return e.s.p_max / units::MPa; }},
+    {"area_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a * e.s.b * units::per_mm2; }},
+    {"area_el_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a_el * e.s.b_el * units::per_mm2; }},
+};
 
 }  // namespace
 
@@ -132,6 +140,8 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       }
       e += ','; e += L.validity.valid ? "1" : "0";
       for (std::size_t k = 1; k < std::size(kTailCols); ++k) { e += ','; num(e, kTailCols[k].get(L)); }
+      if (plastic)
+        for (const Col& c : kPlasticTailCols) { e += ','; num(e, c.get(L)); }
       e += '\n';
     }
   }
@@ -167,6 +177,8 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       }
       e["hertz_valid"] = L.validity.valid;
       for (std::size_t k = 1; k < std::size(kTailCols); ++k) e[kTailCols[k].name] = jv(kTailCols[k].get(L));
+      if (plastic)
+        for (const Col& c : kPlasticTailCols) e[c.name] = jv(c.get(L));
       el.push_back(std::move(e));
     }
     j["ellipses"] = std::move(el);
@@ -191,6 +203,8 @@ std::string ellipses_csv_header(bool plastic) {
     for (const Col& c : kPlasticCols) { s += ','; s += c.name; }
   }
   for (const Col& c : kTailCols) { s += ','; s += c.name; }
+  if (plastic)
+    for (const Col& c : kPlasticTailCols) { s += ','; s += c.name; }
   return s + "\n";
 }
 
