@@ -100,11 +100,16 @@ void format_pressure(std::uint64_t idx, const CaseResult& r, const Material& mat
   }
 }
 
+bool is_failed_row(const CaseResult& r, const char* status_text) {
+  return status_text != nullptr || r.status == CaseStatus::OutOfRange || r.status == CaseStatus::NoContact;
+}
+
 void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                  bool plastic, bool want_csv, bool want_json, Formatted& f, const char* status_text) {
   const char* status = status_text ? status_text : to_string(r.status);
   const std::string warn = join(r.warnings, ";");
   auto h_y_mm = [](const LoadedEllipse& e) { return e.h_y * 1e3; };  // from the ellipse law (method.md §5)
+  const bool failed = is_failed_row(r, status_text);
   if (want_csv) {
     std::string& s = f.cases;
     s.clear();
@@ -113,15 +118,18 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; num(s, cp.Q_kN);
     s += ','; s += status;
     s += ','; s += to_string(r.method);
-    s += ','; num(s, r.dz * units::per_mm);
-    s += ','; num(s, r.approach * units::per_mm);
-    s += ','; append_number(s, static_cast<long long>(r.iterations));
-    s += ','; num(s, r.residual);
+    // A failed row (no solution: out_of_range, no_contact, invalid_pair) leaves every result
+    // field empty in CSV and null in JSON (README "Output tables"); n_contacts stays 0.
+    auto rnum = [&](std::string& o, double v) { if (!failed) num(o, v); };
+    s += ','; rnum(s, r.dz * units::per_mm);
+    s += ','; rnum(s, r.approach * units::per_mm);
+    s += ','; if (!failed) append_number(s, static_cast<long long>(r.iterations));
+    s += ','; rnum(s, r.residual);
     s += ','; append_number(s, static_cast<long long>(r.loaded.size()));
-    s += ','; num(s, r.Fz / units::kN);
-    s += ','; num(s, r.Fy / units::kN);
-    s += ','; num(s, r.pmax / units::MPa);
-    s += ','; num(s, r.area * units::per_mm2);
+    s += ','; rnum(s, r.Fz / units::kN);
+    s += ','; rnum(s, r.Fy / units::kN);
+    s += ','; rnum(s, r.pmax / units::MPa);
+    s += ','; rnum(s, r.area * units::per_mm2);
     s += ','; csv_text(s, warn);
     s += ','; csv_text(s, r.message);
     s += '\n';
@@ -148,21 +156,22 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
   if (want_json) {
     // The record, built as JSON (ordered keys, as in the CSV) and dumped compact on one line.
     auto jv = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr); };
+    auto rv = [&](double v) { return failed ? nlohmann::ordered_json(nullptr) : jv(v); };
     nlohmann::ordered_json j;
     j["case"] = idx;
     j["tY_mm"] = jv(cp.tY_mm);
     j["Q_kN"] = jv(cp.Q_kN);
     j["status"] = status;
     j["method"] = to_string(r.method);
-    j["dz_virtual_mm"] = jv(r.dz * units::per_mm);
-    j["approach_mm"] = jv(r.approach * units::per_mm);
-    j["iterations"] = r.iterations;
-    j["residual"] = jv(r.residual);
+    j["dz_virtual_mm"] = rv(r.dz * units::per_mm);
+    j["approach_mm"] = rv(r.approach * units::per_mm);
+    j["iterations"] = failed ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.iterations);
+    j["residual"] = rv(r.residual);
     j["n_contacts"] = r.loaded.size();
-    j["Fz_kN"] = jv(r.Fz / units::kN);
-    j["Fy_kN"] = jv(r.Fy / units::kN);
-    j["pmax_MPa"] = jv(r.pmax / units::MPa);
-    j["area_mm2"] = jv(r.area * units::per_mm2);
+    j["Fz_kN"] = rv(r.Fz / units::kN);
+    j["Fy_kN"] = rv(r.Fy / units::kN);
+    j["pmax_MPa"] = rv(r.pmax / units::MPa);
+    j["area_mm2"] = rv(r.area * units::per_mm2);
     j["warnings"] = r.warnings;
     j["message"] = r.message;
     nlohmann::ordered_json el = nlohmann::ordered_json::array();
