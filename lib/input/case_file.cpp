@@ -350,7 +350,12 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     if (s.contains("rtol")) cf.solver.rtol = c.positive(s, "/solver", "rtol");
     if (s.contains("max_iterations")) {
       if (!s.at("max_iterations").is_number_integer()) c.fail("/solver/max_iterations", &s.at("max_iterations"), "must be an integer");
-      cf.solver.max_iterations = s.at("max_iterations").get<int>();
+      // Range-checked as an integer before any conversion (4294967297 must not wrap to 1).
+      const json& v = s.at("max_iterations");
+      const bool in_range = v.is_number_unsigned() ? v.get<std::uint64_t>() <= 10000u
+                                                   : (v.get<std::int64_t>() >= 1 && v.get<std::int64_t>() <= 10000);
+      if (!in_range) c.fail("/solver/max_iterations", &v, "must be an integer in [1, 10000]");
+      cf.solver.max_iterations = static_cast<int>(v.get<std::int64_t>());
     }
     if (s.contains("exact_coefficients")) cf.solver.exact_coefficients = c.boolean(s, "/solver", "exact_coefficients");
     std::string why;
