@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contact/ellipse_law.hpp"
+#include "contact/hertz_validity.hpp"
 #include "geometry/contact_geometry.hpp"
 
 namespace mh {
@@ -30,6 +31,7 @@ struct LoadedEllipse {
   HertzCoefficients c;
   double h_y = INFINITY;    ///< [m] yield penetration of its law (docs/method.md §5); INFINITY when elastic
   EllipseState s;           ///< h0, N, a, b, p0, ... (ellipse_law.hpp)
+  HertzValidity validity;   ///< Hertz assumptions checked on this patch (hertz_validity.hpp)
 };
 
 /// One contact patch of a grid method (half-space, strips): its own tangent plane (docs/method.md §8).

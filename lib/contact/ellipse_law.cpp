@@ -72,6 +72,7 @@ EllipseState ellipse_state(const EllipseLaw& L, double h0) {
     s.b_el = s.b;
     s.area_ratio = 1.0;
   }
+  s.p0_el = 1.5 * s.N / (pi * s.a_el * s.b_el);
   return s;
 }
 

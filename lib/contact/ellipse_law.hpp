@@ -81,6 +81,8 @@ struct EllipseState {
   double plateau_a = 0, plateau_b = 0;  ///< [m] semi-axes a√(1−s²), b√(1−s²) where p = p_lim; 0 if elastic
   double a_el = 0, b_el = 0;            ///< [m] elastic Hertz semi-axes at the same load N
   double area_ratio = 1;                ///< [-] a b / (a_el b_el); 1 if elastic
+  double p0_el = 0;                     ///< [Pa] elastic Hertz peak at the same load N, 3N/(2π a_el b_el)
+                                        ///<     (= p0 if elastic; below p0 in the plastic regime)
 };
 
 /// The state of the ellipse of `law` at virtual penetration h0 [m]. Throws std::invalid_argument

@@ -13,6 +13,7 @@ namespace mh {
 bool SolverOptions::valid(std::string* why) const {
   if (!(rtol > 0 && rtol < 1e-3)) { if (why) *why = "rtol must be in (0, 1e-3)"; return false; }
   if (max_iterations < 1 || max_iterations > 10000) { if (why) *why = "max_iterations must be in [1, 10000]"; return false; }
+  if (!validity.valid(why)) return false;
   return true;
 }
 
@@ -130,6 +131,9 @@ CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, 
     L.c = c.law.c;
     L.h_y = c.law.h_y;
     L.s = ellipse_state(c.law, h);
+    L.validity = hertz_validity(G, c.g, L.s.b, opt.validity);
+    if (!L.validity.valid)
+      r.warnings.push_back("non_hertzian:ellipse=" + std::to_string(c.ellipse) + ":" + L.validity.describe(opt.validity));
     r.Fz += L.s.N * c.cg;
     r.Fy += L.s.N * c.sg;
     // Case summary shared with the grid methods (case_result.hpp).

@@ -11,6 +11,7 @@
 #include "geometry/contact_geometry.hpp"
 #include "contact/case_result.hpp"
 #include "contact/ellipse_law.hpp"
+#include "contact/hertz_validity.hpp"
 
 namespace mh {
 
@@ -18,13 +19,16 @@ struct SolverOptions {
   double rtol = 1e-12;     ///< converged when |Σ N_i cos γ_i − Q| ≤ rtol·Q (default 1e-12)
   int max_iterations = 60; ///< safeguarded Newton iterations before `not_converged` (default 60)
   bool exact_coefficients = false;  ///< Hertz m, n, ρ from GSL instead of the fast table (default: table)
+  HertzValidityOptions validity;    ///< limits of the per-ellipse Hertz validity test (hertz_validity.hpp)
   bool valid(std::string* why) const;
 };
 
 /// Solve one case. Candidates whose curvature sum B ≤ 0 (conformal: a concave wheel root on a rail
 /// corner of nearly the same radius) have no Hertz ellipse: they are excluded, and when such a
 /// candidate would have been loaded (h0 > 0 at the solution) the case carries a warning
-/// "non_hertzian_excluded:ellipse=K". Q ≤ 0 or not finite gives `no_contact` with a message.
+/// "non_hertzian_excluded:ellipse=K". Every loaded ellipse is checked against the Hertz
+/// assumptions (hertz_validity.hpp); one that fails keeps its result, has validity.valid = false
+/// and adds the warning "non_hertzian:ellipse=K:<limit>=<value>><max>" (never a silent ok). Q ≤ 0 or not finite gives `no_contact` with a message.
 CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, double Q,
                       const SolverOptions& opt = {});
 

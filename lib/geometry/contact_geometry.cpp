@@ -20,6 +20,7 @@ bool GeometryOptions::valid(std::string* why) const {
   if (!(strip_width > 0) || strip_width > 5e-3) return fail("strip_width_mm must be in (0, 5]");
   if (!(jump_threshold > 0)) return fail("jump_threshold_deg must be > 0");
   if (!(jump_distance >= 0)) return fail("jump_distance_mm must be >= 0");
+  if (!(min_ellipse_width >= 0) || min_ellipse_width > 5e-3) return fail("min_ellipse_width_mm must be in [0, 5]");
   return true;
 }
 
@@ -58,6 +59,22 @@ double refine_minimum(const ProfileCurve& W, const ProfileCurve& R, double s, do
 
 }  // namespace
 
+namespace {
+double sample_at(const std::vector<double>& v, double y0, double dy, double y) {
+  if (v.empty()) return 0.0;
+  double s = (y - y0) / dy;
+  if (!(s > 0)) return v.front();
+  const double last = static_cast<double>(v.size() - 1);
+  if (s >= last) return v.back();
+  const std::size_t i = static_cast<std::size_t>(s);
+  const double f = s - static_cast<double>(i);
+  return v[i] + f * (v[i + 1] - v[i]);
+}
+}  // namespace
+
+double ContactGeometry::k_rxx_at(double y) const { return sample_at(rail_k, rail_k_y0, kappa_dy, y); }
+double ContactGeometry::k_wxx_at(double y) const { return sample_at(wheel_k, wheel_k_y0, kappa_dy, y); }
+
 void ContactGeometry::candidates_at(double t, CandidateGeom* out, int* main) const {
   const std::size_t n = tY.size(), ne = ellipses.size();
   const double step = n > 1 ? (tY.back() - tY.front()) / static_cast<double>(n - 1) : 1.0;
@@ -93,6 +110,11 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   const ProfileCurve& R = *G.rail_curve;
   G.wheel_window = W.window_used();
   G.rail_window = R.window_used();
+  // Curvature samples for the Hertz validity test (signs as in CandidateGeom).
+  G.rail_k_y0 = R.y_min();
+  for (double y = R.y_min(); y <= R.y_max() + 1e-12; y += G.kappa_dy) G.rail_k.push_back(-R.kappa(std::min(y, R.y_max())));
+  G.wheel_k_y0 = W.y_min();
+  for (double y = W.y_min(); y <= W.y_max() + 1e-12; y += G.kappa_dy) G.wheel_k.push_back(W.kappa(std::min(y, W.y_max())));
 
   // Positioning at t_Y = 0 (method.md §7): the gauge point of the rail is gauge/2 from the track
   // centre, the wheel's flange back flange_back_distance/2, its taping line (y = 0) a further
@@ -129,13 +151,10 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   for (std::size_t k = 0; k < nt; ++k)
     G.tY[k] = aligned ? (k0 + static_cast<double>(k)) * step_mm / 1e3 : opt.tY_min + opt.tY_step * static_cast<double>(k);
 
-  // Main strip and CAF per grid point.
+  // Main strip and CAF at any t_Y: the strip with the smallest gap, refined between strips.
   struct Main { double y_r, gmin; std::size_t strip; };
-  std::vector<Main> mains(nt);
-  G.main_strip.resize(nt);
-  G.z_contact.resize(nt);
-  for (std::size_t k = 0; k < nt; ++k) {
-    const double s = G.y_offset + G.tY[k];
+  auto locate = [&](double t) {
+    const double s = G.y_offset + t;
     double best = std::numeric_limits<double>::infinity();
     std::size_t jb = ns;
     for (std::size_t j = 0; j < ns; ++j) {
@@ -145,26 +164,88 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
       if (g < best) { best = g; jb = j; }
     }
     if (jb == ns)
-      throw InputError(wheel.source + " on " + rail.source, "t_Y = " + format_number(G.tY[k] * 1e3) + " mm",
+      throw InputError(wheel.source + " on " + rail.source, "t_Y = " + format_number(t * 1e3) + " mm",
                        "the wheel and rail profiles do not overlap laterally",
                        "check the track data, mirror options and the t_Y range");
     const double a = G.strip_y[jb > 2 ? jb - 3 : 0], b = G.strip_y[std::min(jb + 3, ns - 1)];
     const double yc = refine_minimum(W, R, s, std::max(a, W.y_min() + s), std::min(b, W.y_max() + s));
-    mains[k] = {yc, W.z(yc - s) - R.z(yc), jb};
-    G.main_strip[k] = jb;
+    return Main{yc, W.z(yc - s) - R.z(yc), jb};
+  };
+  std::vector<Main> mains(nt);
+  G.main_strip.resize(nt);
+  G.z_contact.resize(nt);
+  for (std::size_t k = 0; k < nt; ++k) {
+    mains[k] = locate(G.tY[k]);
+    G.main_strip[k] = mains[k].strip;
     G.z_contact[k] = mains[k].gmin;
   }
 
-  // Jumps of the CAF cut the t_Y axis into potential ellipses (method.md §3.5).
+  // Jumps of the CAF cut the t_Y axis into potential ellipses (method.md §3.5). A jump is a
+  // discontinuity of the contact point, a property of the profiles and not of the grid: every
+  // grid interval where the contact point moves by more than jump_distance is bisected (halves
+  // that still move by more than jump_distance, down to kJumpBracket); a jump is a final bracket
+  // across which the point still moves by more than jump_distance and γ by more than
+  // jump_threshold. Continuous motion, however fast, moves the point by ~0 over such a bracket.
   auto gamma_at = [&](double y) { double d; R.z(y, &d); return std::atan(d); };
-  std::vector<double> gam(nt);
-  for (std::size_t k = 0; k < nt; ++k) gam[k] = gamma_at(mains[k].y_r);
+  constexpr double kJumpBracket = 1e-8;  // [m] 0.01 µm
+  std::vector<double> jumps;              // t_Y of each jump, increasing
+  auto split = [&](auto&& self, double ta, const Main& ma, double tb, const Main& mb) -> void {
+    if (!(std::fabs(mb.y_r - ma.y_r) > opt.jump_distance)) return;
+    if (tb - ta <= kJumpBracket) {
+      if (std::fabs(gamma_at(mb.y_r) - gamma_at(ma.y_r)) > opt.jump_threshold) jumps.push_back(0.5 * (ta + tb));
+      return;
+    }
+    const double tm = 0.5 * (ta + tb);
+    const Main mm = locate(tm);
+    self(self, ta, ma, tm, mm);
+    self(self, tm, mm, tb, mb);
+  };
+  for (std::size_t k = 1; k < nt; ++k) split(split, G.tY[k - 1], mains[k - 1], G.tY[k], mains[k]);
+
+  // Slivers: an ellipse narrower than min_ellipse_width, or without a grid point (it would have no
+  // candidate data), is merged into the neighbour whose contact point at the shared jump is
+  // closer on the rail; i.e. the jump between them is dropped. Repeated until none is left.
+  for (bool changed = true; changed && !jumps.empty();) {
+    changed = false;
+    const std::size_t nj = jumps.size();
+    for (std::size_t i = 0; i <= nj; ++i) {  // ellipse i lies between jumps[i-1] and jumps[i]
+      const double lo = i == 0 ? G.tY.front() : jumps[i - 1];
+      const double hi = i == nj ? G.tY.back() : jumps[i];
+      bool has_point = false;
+      for (std::size_t k = 0; k < nt && !has_point; ++k) has_point = G.tY[k] > lo && G.tY[k] < hi;
+      if (i == 0) has_point = has_point || lo == G.tY.front();
+      const bool interior = i > 0 && i < nj;
+      if (has_point && (!interior || hi - lo >= opt.min_ellipse_width)) continue;
+      std::size_t drop;
+      if (i == 0) drop = 0;
+      else if (i == nj) drop = nj - 1;
+      else {
+        const double y = locate(0.5 * (lo + hi)).y_r;
+        const double yl = locate(lo - kJumpBracket).y_r, yh = locate(hi + kJumpBracket).y_r;
+        drop = std::fabs(y - yl) <= std::fabs(y - yh) ? i - 1 : i;
+      }
+      jumps.erase(jumps.begin() + static_cast<std::ptrdiff_t>(drop));
+      changed = true;
+      break;
+    }
+  }
+
   G.main_ellipse.resize(nt);
-  int e = 0;
-  std::size_t first = 0;
-  auto close = [&](std::size_t last) {
+  G.jumps = jumps;
+  {
+    std::size_t e = 0;
+    for (std::size_t k = 0; k < nt; ++k) {
+      while (e < jumps.size() && G.tY[k] > jumps[e]) ++e;
+      G.main_ellipse[k] = static_cast<int>(e);
+    }
+  }
+  for (std::size_t e = 0; e <= jumps.size(); ++e) {
     PotentialEllipse P;
-    P.index = e + 1;
+    P.index = static_cast<int>(e) + 1;
+    std::size_t first = nt, last = 0;
+    for (std::size_t k = 0; k < nt; ++k)
+      if (G.main_ellipse[k] == static_cast<int>(e)) { first = std::min(first, k); last = k; }
+    if (first == nt) continue;  // cannot happen after the sliver rule
     P.k_first = first;
     P.k_last = last;
     P.tY_min = G.tY[first];
@@ -177,17 +258,7 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
       P.y_w_min = std::min(P.y_w_min, yw); P.y_w_max = std::max(P.y_w_max, yw);
     }
     G.ellipses.push_back(P);
-  };
-  for (std::size_t k = 0; k < nt; ++k) {
-    if (k > 0 && std::fabs(gam[k] - gam[k - 1]) > opt.jump_threshold &&
-        std::fabs(mains[k].y_r - mains[k - 1].y_r) > opt.jump_distance) {
-      close(k - 1);
-      ++e;
-      first = k;
-    }
-    G.main_ellipse[k] = e;
   }
-  close(nt - 1);
 
   // Candidate table: for every grid point and ellipse, the ellipse's own main strip when it is
   // the main one, else the main strip of the ellipse's t_Y nearest to this t_Y (method.md §3.6).

@@ -39,16 +39,17 @@ struct GeometryOptions {
   double tY_max = 12e-3;       ///< [m] last t_Y of the grid (default +12 mm: covers flange contact)
   double tY_step = 0.01e-3;    ///< [m] grid step (default 0.01 mm)
   double strip_width = 0.1e-3; ///< [m] width of the rail strips (default 0.1 mm)
-  /// A change of γ larger than this between two neighbouring t_Y of the grid is a jump of the CAF
-  /// and starts a new potential ellipse (method.md §3.5). Default 0.5°: continuous motion of the
-  /// contact moves γ by less than 0.3° per 0.01 mm step even in near-conformal flange-root
-  /// contact (eq. 9 with R_wxx + R_rxx = −2 mm), while the jumps of a real pair are degrees.
+  /// A jump of the CAF (method.md §3.5) is a discontinuity of the contact point in t_Y, located
+  /// by bisection between grid points down to a 0.01 µm bracket, independently of the grid step:
+  /// across that bracket γ must change by more than jump_threshold (default 0.5°) ...
   double jump_threshold = 0.5 * 3.14159265358979323846 / 180.0;  ///< [rad]
-  /// ... and the main strip must move on the rail by more than this between the two t_Y (a jump
-  /// of the contact point, not the contact sliding over a slightly wavy or nearly conformal
-  /// surface, whose γ can wobble by a degree while the point moves a fraction of a millimetre).
-  /// Default 1 mm: the jumps of the Manchester pair move the contact 4 to 10 mm.
+  /// ... and the contact point move on the rail by more than jump_distance (default 1 mm; the
+  /// jumps of the Manchester pair move it 4 to 10 mm). Continuous motion moves it by ~0 there.
   double jump_distance = 1.0e-3;  ///< [m]
+  /// An interior potential ellipse narrower than this in t_Y (a sliver between two jumps), or
+  /// one that contains no grid point, is merged into the neighbour whose contact point is closer
+  /// (the jump between them is dropped). Default 0.05 mm.
+  double min_ellipse_width = 0.05e-3;  ///< [m]
   CurveOptions curve;          ///< smoothing of both profiles (profile_curve.hpp)
   bool valid(std::string* why) const;
 };
@@ -81,6 +82,7 @@ class ContactGeometry {
   std::vector<double> tY;                ///< [m] grid
   std::vector<int> main_ellipse;         ///< per grid point: 0-based index of the ellipse of the main strip
   std::vector<PotentialEllipse> ellipses;
+  std::vector<double> jumps;             ///< [m] t_Y of the jumps between ellipses (bisected, grid-independent)
   std::vector<CandidateGeom> table;      ///< [k * n_ellipses() + e]
   std::vector<double> strip_y;           ///< [m] centres of the rail strips
   std::vector<std::size_t> main_strip;   ///< per grid point: index of the strip with the smallest gap
@@ -93,6 +95,16 @@ class ContactGeometry {
   std::shared_ptr<const ProfileCurve> wheel_curve, rail_curve;
   double nominal_radius = 0;             ///< [m] wheel radius at the taping line (y_w = 0)
   double wheel_z0 = 0;                   ///< [m] smoothed wheel height at y_w = 0 (r(y_w) = R0 − (z_w(y_w) − z0))
+  /// Curvature samples of both profiles every kappa_dy, in the solver's signs: rail_k[i] =
+  /// 1/R_rxx at y_r = rail_k_y0 + i·kappa_dy, wheel_k[i] = 1/R_wxx at y_w = wheel_k_y0 + i·kappa_dy.
+  /// Used by the Hertz validity test over the patch width (contact/hertz_validity.hpp).
+  double kappa_dy = 0.05e-3;
+  double rail_k_y0 = 0, wheel_k_y0 = 0;
+  std::vector<double> rail_k, wheel_k;
+  bool has_curvature_samples() const { return !rail_k.empty() && !wheel_k.empty(); }
+  /// 1/R_rxx, 1/R_wxx [1/m] at any y, linear between samples, held constant beyond the ends.
+  double k_rxx_at(double y_r) const;
+  double k_wxx_at(double y_w) const;
 
   std::size_t n_ellipses() const { return ellipses.size(); }
   const CandidateGeom& at(std::size_t k, std::size_t e) const { return table[k * ellipses.size() + e]; }

@@ -289,7 +289,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   if (j.contains("geometry")) {
     const json& g = j.at("geometry");
     c.only_keys(g, "/geometry", {"tY_min_mm", "tY_max_mm", "tY_step_mm", "strip_width_mm", "jump_threshold_deg",
-                                 "jump_distance_mm", "fit_window_mm", "measured_fit_window_mm"});
+                                 "jump_distance_mm", "min_ellipse_width_mm", "fit_window_mm", "measured_fit_window_mm"});
     if (g.contains("tY_min_mm") != g.contains("tY_max_mm"))
       c.fail("/geometry", &g, "give both tY_min_mm and tY_max_mm, or neither (then the range covers the sweep)");
     if (g.contains("tY_min_mm")) {
@@ -311,6 +311,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     }
     if (g.contains("jump_threshold_deg")) cf.geometry.jump_threshold = c.positive(g, "/geometry", "jump_threshold_deg") * units::deg;
     if (g.contains("jump_distance_mm")) cf.geometry.jump_distance = c.number(g, "/geometry", "jump_distance_mm") * units::mm;
+    if (g.contains("min_ellipse_width_mm")) cf.geometry.min_ellipse_width = c.number(g, "/geometry", "min_ellipse_width_mm") * units::mm;
     if (g.contains("fit_window_mm")) cf.geometry.curve.window_half_width = c.positive(g, "/geometry", "fit_window_mm") * units::mm;
     if (g.contains("measured_fit_window_mm")) cf.geometry.curve.measured_window_half_width = c.positive(g, "/geometry", "measured_fit_window_mm") * units::mm;
   }
@@ -384,7 +385,12 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     if (s.contains("rtol")) cf.solver.rtol = c.positive(s, "/solver", "rtol");
     if (s.contains("max_iterations")) {
       if (!s.at("max_iterations").is_number_integer()) c.fail("/solver/max_iterations", &s.at("max_iterations"), "must be an integer");
-      cf.solver.max_iterations = s.at("max_iterations").get<int>();
+      // Range-checked as an integer before any conversion (4294967297 must not wrap to 1).
+      const json& v = s.at("max_iterations");
+      const bool in_range = v.is_number_unsigned() ? v.get<std::uint64_t>() <= 10000u
+                                                   : (v.get<std::int64_t>() >= 1 && v.get<std::int64_t>() <= 10000);
+      if (!in_range) c.fail("/solver/max_iterations", &v, "must be an integer in [1, 10000]");
+      cf.solver.max_iterations = static_cast<int>(v.get<std::int64_t>());
     }
     if (s.contains("exact_coefficients")) cf.solver.exact_coefficients = c.boolean(s, "/solver", "exact_coefficients");
     std::string why;
@@ -535,6 +541,7 @@ nlohmann::json CaseFile::resolved_json() const {
                    {"tY_step_mm", geometry.tY_step * 1e3}, {"strip_width_mm", geometry.strip_width * 1e3},
                    {"jump_threshold_deg", geometry.jump_threshold / units::deg},
                    {"jump_distance_mm", geometry.jump_distance * 1e3},
+                   {"min_ellipse_width_mm", geometry.min_ellipse_width * 1e3},
                    {"fit_window_mm", geometry.curve.window_half_width * 1e3},
                    {"measured_fit_window_mm", geometry.curve.measured_window_half_width * 1e3}};
   json mat = {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}};

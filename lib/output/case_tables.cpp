@@ -50,7 +50,21 @@ const Col kPlasticCols[] = {
     {"b_el_mm", [](const LoadedEllipse& e) { return e.s.b_el * 1e3; }},
     {"area_ratio", [](const LoadedEllipse& e) { return e.s.area_ratio; }},
 };
-
+// Columns appended after all others (new columns are only ever appended: existing positions stay).
+// hertz_valid is written as 1/0 (true/false in JSON), see below.
+const Col kTailCols[] = {
+    {"hertz_valid", nullptr},
+    {"b_over_R", [](const LoadedEllipse& e) { return e.validity.b_over_R; }},
+    {"gap_error", [](const LoadedEllipse& e) { return e.validity.gap_error; }},
+};
+// Plastic mode only, appended after kTailCols (issue #10 item 5): the elastic and the plastic
+// patch side by side.
+const Col kPlasticTailCols[] = {
+    {"p0_el_MPa", [](const LoadedEllipse& e) { return e.s.p0_el / units::MPa; }},
+    {"pmax_MPa", [](const LoadedEllipse& e) { return e.s.p_max / units::MPa; }},
+    {"area_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a * e.s.b * units::per_mm2; }},
+    {"area_el_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a_el * e.s.b_el * units::per_mm2; }},
+};
 
 }  // namespace
 
@@ -86,6 +100,10 @@ void format_pressure(std::uint64_t idx, const CaseResult& r, const Material& mat
   }
 }
 
+bool is_failed_row(const CaseResult& r, const char* status_text) {
+  return status_text != nullptr || r.status == CaseStatus::OutOfRange || r.status == CaseStatus::NoContact;
+}
+
 void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                  bool plastic, bool want_csv, bool want_json, Formatted& f, const char* status_text) {
   const char* status = status_text ? status_text : to_string(r.status);
@@ -110,6 +128,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     r_roll_main = main_patch->r_roll * units::per_mm;
   }
   auto h_y_mm = [](const LoadedEllipse& e) { return e.h_y * 1e3; };  // from the ellipse law (method.md §5)
+  const bool failed = is_failed_row(r, status_text);
   if (want_csv) {
     std::string& s = f.cases;
     s.clear();
@@ -118,18 +137,21 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; num(s, cp.Q_kN);
     s += ','; s += status;
     s += ','; s += to_string(r.method);
-    s += ','; num(s, r.dz * units::per_mm);
-    s += ','; num(s, r.approach * units::per_mm);
-    s += ','; append_number(s, static_cast<long long>(r.iterations));
-    s += ','; num(s, r.residual);
+    // A failed row (no solution: out_of_range, no_contact, invalid_pair) leaves every result
+    // field empty in CSV and null in JSON (README "Output tables"); n_contacts stays 0.
+    auto rnum = [&](std::string& o, double v) { if (!failed) num(o, v); };
+    s += ','; rnum(s, r.dz * units::per_mm);
+    s += ','; rnum(s, r.approach * units::per_mm);
+    s += ','; if (!failed) append_number(s, static_cast<long long>(r.iterations));
+    s += ','; rnum(s, r.residual);
     s += ','; append_number(s, static_cast<long long>(r.n_contacts));
-    s += ','; num(s, r.Fz / units::kN);
-    s += ','; num(s, r.Fy / units::kN);
-    s += ','; num(s, r.pmax / units::MPa);
-    s += ','; num(s, r.area * units::per_mm2);
-    s += ','; num(s, gamma_main);
-    s += ','; num(s, r_roll_main);
-    s += ','; s += any_plastic ? '1' : '0';
+    s += ','; rnum(s, r.Fz / units::kN);
+    s += ','; rnum(s, r.Fy / units::kN);
+    s += ','; rnum(s, r.pmax / units::MPa);
+    s += ','; rnum(s, r.area * units::per_mm2);
+    s += ','; rnum(s, gamma_main);
+    s += ','; rnum(s, r_roll_main);
+    s += ','; if (!failed) s += any_plastic ? '1' : '0';
     s += ','; append_number(s, static_cast<long long>(r.warnings.size()));
     s += ','; csv_text(s, warn);
     s += ','; csv_text(s, r.message);
@@ -147,30 +169,35 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
         e += ','; num(e, h_y_mm(L));
         for (std::size_t k = 1; k < std::size(kPlasticCols); ++k) { e += ','; num(e, kPlasticCols[k].get(L)); }
       }
+      e += ','; e += L.validity.valid ? "1" : "0";
+      for (std::size_t k = 1; k < std::size(kTailCols); ++k) { e += ','; num(e, kTailCols[k].get(L)); }
+      if (plastic)
+        for (const Col& c : kPlasticTailCols) { e += ','; num(e, c.get(L)); }
       e += '\n';
     }
   }
   if (want_json) {
     // The record, built as JSON (ordered keys, as in the CSV) and dumped compact on one line.
     auto jv = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(rounded(v)) : nlohmann::ordered_json(nullptr); };
+    auto rv = [&](double v) { return failed ? nlohmann::ordered_json(nullptr) : jv(v); };
     nlohmann::ordered_json j;
     j["case"] = idx;
     j["tY_mm"] = jv(cp.tY_mm);
     j["Q_kN"] = jv(cp.Q_kN);
     j["status"] = status;
     j["method"] = to_string(r.method);
-    j["dz_virtual_mm"] = jv(r.dz * units::per_mm);
-    j["approach_mm"] = jv(r.approach * units::per_mm);
-    j["iterations"] = r.iterations;
-    j["residual"] = jv(r.residual);
+    j["dz_virtual_mm"] = rv(r.dz * units::per_mm);
+    j["approach_mm"] = rv(r.approach * units::per_mm);
+    j["iterations"] = failed ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.iterations);
+    j["residual"] = rv(r.residual);
     j["n_contacts"] = r.n_contacts;
-    j["Fz_kN"] = jv(r.Fz / units::kN);
-    j["Fy_kN"] = jv(r.Fy / units::kN);
-    j["pmax_MPa"] = jv(r.pmax / units::MPa);
-    j["area_mm2"] = jv(r.area * units::per_mm2);
-    j["gamma_main_deg"] = jv(gamma_main);
-    j["r_roll_main_mm"] = jv(r_roll_main);
-    j["plastic"] = any_plastic;
+    j["Fz_kN"] = rv(r.Fz / units::kN);
+    j["Fy_kN"] = rv(r.Fy / units::kN);
+    j["pmax_MPa"] = rv(r.pmax / units::MPa);
+    j["area_mm2"] = rv(r.area * units::per_mm2);
+    j["gamma_main_deg"] = rv(gamma_main);
+    j["r_roll_main_mm"] = rv(r_roll_main);
+    j["plastic"] = failed ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(any_plastic);
     j["n_warnings"] = r.warnings.size();
     j["warnings"] = r.warnings;
     j["message"] = r.message;
@@ -184,6 +211,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
         e["h_y_mm"] = jv(h_y_mm(L));
         for (std::size_t k = 1; k < std::size(kPlasticCols); ++k) e[kPlasticCols[k].name] = jv(kPlasticCols[k].get(L));
       }
+      e["hertz_valid"] = L.validity.valid;
+      for (std::size_t k = 1; k < std::size(kTailCols); ++k) e[kTailCols[k].name] = jv(kTailCols[k].get(L));
+      if (plastic)
+        for (const Col& c : kPlasticTailCols) e[c.name] = jv(c.get(L));
       el.push_back(std::move(e));
     }
     j["ellipses"] = std::move(el);
@@ -293,6 +324,9 @@ std::string ellipses_csv_header(bool plastic) {
     s += ",plastic";
     for (const Col& c : kPlasticCols) { s += ','; s += c.name; }
   }
+  for (const Col& c : kTailCols) { s += ','; s += c.name; }
+  if (plastic)
+    for (const Col& c : kPlasticTailCols) { s += ','; s += c.name; }
   return s + "\n";
 }
 

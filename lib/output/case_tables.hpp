@@ -18,6 +18,10 @@ struct Formatted {
 /// Format case `idx` (its sweep point `cp`, its result `r`) into f.cases/f.ellipses (CSV rows)
 /// and/or f.json (its record in results.json's "cases" array: one line of JSON). `status_text`
 /// overrides the solver's status (a batch's `invalid_pair`); default: to_string(r.status).
+/// True for a row without a solution (out_of_range, no_contact, or a status_text such as
+/// invalid_pair): its result fields are written empty in CSV and null in JSON (issue #10 item 8).
+bool is_failed_row(const CaseResult& r, const char* status_text = nullptr);
+
 void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                  bool plastic, bool want_csv, bool want_json, Formatted& f,
                  const char* status_text = nullptr);

@@ -112,3 +112,48 @@ TEST_CASE("candidates interpolate between grid points and keep their gaps", "[ge
   for (int e : {0, 2, 3}) REQUIRE(c[static_cast<std::size_t>(e)].gap > 0);  // the others are apart
   REQUIRE_FALSE(G.covers(12.5e-3));
 }
+
+TEST_CASE("potential ellipses do not depend on the t_Y grid (issue #10 item 1)", "[geometry]") {
+  // Manchester pair: 4 potential ellipses with the same jumps for every step 0.005 … 0.5 mm; the
+  // jumps are bisected to 0.01 µm, so they agree far closer than one step (measured: identical
+  // to 1e-5 mm). The ellipses' grid boundaries agree within one step.
+  ProfileReadOptions o;
+  o.kind = ProfileKind::Wheel;
+  const Profile w = read_profile(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/MBench_S1002_v3.prw", o);
+  o.kind = ProfileKind::Rail;
+  const Profile r = read_profile(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/MBench_UIC60_v3.prr", o);
+  GeometryOptions ref_opt;
+  ref_opt.tY_step = 0.005e-3;
+  const ContactGeometry ref = build_geometry(w, r, TrackSetup{}, ref_opt);
+  REQUIRE(ref.n_ellipses() == 4);
+  REQUIRE(ref.jumps.size() == 3);
+  for (double step_mm : {0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.25, 0.5}) {
+    GeometryOptions go;
+    go.tY_step = step_mm * 1e-3;
+    const ContactGeometry G = build_geometry(w, r, TrackSetup{}, go);
+    CAPTURE(step_mm);
+    REQUIRE(G.n_ellipses() == 4);
+    for (std::size_t j = 0; j < 3; ++j) REQUIRE(G.jumps[j] == Approx(ref.jumps[j]).margin(1e-7));
+    for (std::size_t e = 0; e < 4; ++e) {
+      REQUIRE(G.ellipses[e].tY_min == Approx(ref.ellipses[e].tY_min).margin(go.tY_step + 1e-12));
+      REQUIRE(G.ellipses[e].tY_max == Approx(ref.ellipses[e].tY_max).margin(go.tY_step + 1e-12));
+    }
+  }
+}
+
+TEST_CASE("a sliver between two jumps is merged into a neighbour", "[geometry]") {
+  // With the minimum width raised above the 3rd Manchester ellipse's width (5.02 … 6.61 mm) but
+  // below the 2nd's (0.21 … 5.02 mm), the 3rd alone is merged: one jump fewer; with 0 nothing is.
+  ProfileReadOptions o;
+  o.kind = ProfileKind::Wheel;
+  const Profile w = read_profile(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/MBench_S1002_v3.prw", o);
+  o.kind = ProfileKind::Rail;
+  const Profile r = read_profile(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/MBench_UIC60_v3.prr", o);
+  GeometryOptions go;
+  go.min_ellipse_width = 0;
+  REQUIRE(build_geometry(w, r, TrackSetup{}, go).n_ellipses() == 4);
+  go.min_ellipse_width = 3e-3;
+  const ContactGeometry G = build_geometry(w, r, TrackSetup{}, go);
+  REQUIRE(G.n_ellipses() == 3);
+  for (std::size_t k = 0; k < G.tY.size(); ++k) REQUIRE(G.main_ellipse[k] < 3);
+}

@@ -1,0 +1,56 @@
+#pragma once
+// Validity of the Hertz assumptions for one loaded ellipse (docs/method.md §4, "Validity of an
+// ellipse"). Hertz theory holds while the patch is small against the radii of both bodies and
+// lies inside a zone of (nearly) constant curvature. Two limits, both dimensionless:
+//   b_over_R         = b / min(|R_rxx|, |R_wxx|)                       (default limit 0.3)
+//   gap_error        = max over u = ±b of |g(u) − B u²| / (B b²)      (default limit 0.5)
+//                      g(u) = ∫_0^u (u − w) S(w) dw, S(w) = 1/R_rxx(y_r + w) + 1/R_wxx(y_w + w):
+//                      the gap the curvatures of both profiles actually give at the patch edges,
+//                      against the quadratic B u² (B = S(0)/2) Hertz assumes. It measures the
+//                      curvature along [y − b, y + b] against its value at the contact point,
+//                      integrated the way it acts on the patch.
+// b is the lateral semi-axis of the (possibly plastic) patch. A candidate with B ≤ 0 has no
+// ellipse at all and is handled by the solver (non_hertzian_excluded).
+// The multi-Hertzian solver reports the result per loaded ellipse (hertz_valid column, warning
+// non_hertzian:ellipse=K:...); a method chooser ("method": "auto") can use hertz_validity() to
+// send such a case to a grid solver.
+#include <string>
+
+#include "geometry/contact_geometry.hpp"
+
+namespace mh {
+
+struct HertzValidityOptions {
+  /// Largest b / min(|R_rxx|, |R_wxx|) (default 0.3: the half-space approximation needs the patch
+  /// small against the radii; the conformal flange-root contacts of the Manchester reference
+  /// reach 0.24).
+  double max_b_over_R = 0.3;
+  /// Largest relative error of the Hertz quadratic gap B b² at the patch edges y ± b, from the
+  /// curvature of both profiles along the patch (default 0.5: the gap at the edge is off by half).
+  double max_gap_error = 0.5;
+  bool valid(std::string* why = nullptr) const;
+};
+
+/// The outcome of the test for one ellipse: both measured ratios and which limits failed.
+struct HertzValidity {
+  bool valid = true;              ///< both ratios within their limits
+  double b_over_R = 0;            ///< [-] b / min(|R_rxx|, |R_wxx|)
+  double gap_error = 0;    ///< [-] max over u = ±b of |g(u) − B u²| / (B b²)
+  bool b_over_R_failed = false;
+  bool gap_error_failed = false;
+  /// "b_over_R=22.31>0.3" and/or "gap_error=3.1>0.5" joined by ':'; empty when valid.
+  std::string describe(const HertzValidityOptions& opt) const;
+};
+
+/// The test from its ingredients: lateral semi-axis b [m], curvatures at the contact point
+/// k_rxx = 1/R_rxx, k_wxx = 1/R_wxx [1/m], and the gap_error [-] measured on the profiles.
+HertzValidity hertz_validity(double b, double k_rxx, double k_wxx, double gap_error,
+                             const HertzValidityOptions& opt = {});
+
+/// The test for a candidate g of the geometry G with lateral semi-axis b [m]: the curvature
+/// gap error is measured on G's curvature samples of both profiles (ContactGeometry::k_rxx_at,
+/// k_wxx_at) at up to 401 points over [−b, b].
+HertzValidity hertz_validity(const ContactGeometry& G, const CandidateGeom& g, double b,
+                             const HertzValidityOptions& opt = {});
+
+}  // namespace mh

@@ -1,0 +1,84 @@
+// Hertz validity of a loaded ellipse (contact/hertz_validity.hpp, docs/method.md §4; issue #10 item 2).
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "contact/hertz_validity.hpp"
+#include "contact/multi_hertz.hpp"
+#include "geometry/contact_geometry.hpp"
+#include "profile/read.hpp"
+
+using namespace mh;
+
+namespace {
+const std::string kData = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/";
+Profile read(const std::string& name, ProfileKind kind, bool check = true) {
+  ProfileReadOptions o;
+  o.kind = kind;
+  o.check = check;
+  return read_profile(kData + name, o);
+}
+}  // namespace
+
+TEST_CASE("hertz_validity: b against the smaller radius, by hand", "[solver][validity]") {
+  const HertzValidityOptions opt;  // 0.3, 0.5
+  // b = 3 mm, R_rxx = 13 mm, R_wxx = −15 mm: b/min|R| = 3/13.
+  HertzValidity v = hertz_validity(3e-3, 1 / 13e-3, -1 / 15e-3, 0.1, opt);
+  REQUIRE(v.b_over_R == Approx(3.0 / 13.0).epsilon(1e-12));
+  REQUIRE(v.valid);
+  REQUIRE(v.describe(opt).empty());
+  // The issue's ellipse: b = 290 mm on a 13 mm gauge corner.
+  v = hertz_validity(290e-3, 1 / 13e-3, -1 / 13.0005e-3, 0.1, opt);
+  REQUIRE_FALSE(v.valid);
+  REQUIRE(v.b_over_R_failed);
+  REQUIRE_FALSE(v.gap_error_failed);
+  REQUIRE(v.describe(opt) == "b_over_R=22.308>0.3");
+  // The gap limit alone, and NaN never passes.
+  v = hertz_validity(1e-3, 1 / 300e-3, 0, 0.75, opt);
+  REQUIRE_FALSE(v.valid);
+  REQUIRE(v.describe(opt) == "gap_error=0.75>0.5");
+  REQUIRE_FALSE(hertz_validity(1e-3, 1 / 300e-3, 0, NAN, opt).valid);
+  HertzValidityOptions bad;
+  bad.max_b_over_R = 0;
+  REQUIRE_FALSE(bad.valid());
+}
+
+TEST_CASE("hertz_validity: circular profiles are Hertzian, gap error ~0", "[solver][validity]") {
+  // Constant radii 50 mm (wheel, concave... as in the circ_* files) and 100 mm: the curvature sum
+  // is constant over any patch, so the gap error is the fitted radii's noise only.
+  const ContactGeometry G = build_geometry(read("circ_r50.prw", ProfileKind::Wheel, false),
+                                           read("circ_r100.prr", ProfileKind::Rail, false),
+                                           TrackSetup{}, GeometryOptions{});
+  Material mat;
+  const CaseResult r = solve_case(G, mat, 0.0, 100e3);
+  REQUIRE(r.status == CaseStatus::Ok);
+  REQUIRE(r.loaded.size() == 1);
+  CAPTURE(r.loaded[0].validity.gap_error, r.loaded[0].validity.b_over_R);
+  REQUIRE(r.loaded[0].validity.valid);
+  REQUIRE(r.loaded[0].validity.gap_error < 1e-3);
+  REQUIRE(r.warnings.empty());
+}
+
+TEST_CASE("Manchester t_Y = 6.6 mm, Q = 100 kN: the 290 mm ellipse is flagged, never a plain ok",
+          "[solver][validity]") {
+  const ContactGeometry G = build_geometry(read("MBench_S1002_v3.prw", ProfileKind::Wheel),
+                                           read("MBench_UIC60_v3.prr", ProfileKind::Rail),
+                                           TrackSetup{}, GeometryOptions{});
+  Material mat;
+  const CaseResult r = solve_case(G, mat, 6.6e-3, 100e3);
+  REQUIRE(r.status == CaseStatus::Ok);
+  int flagged = 0;
+  for (const LoadedEllipse& L : r.loaded) {
+    const double Rmin = std::min(std::fabs(1 / L.g.k_rxx), std::fabs(1 / L.g.k_wxx));
+    CAPTURE(L.ellipse, L.s.b, Rmin, L.validity.gap_error);
+    REQUIRE(L.validity.b_over_R == Approx(L.s.b / Rmin).epsilon(1e-12));
+    if (L.s.b > 0.3 * Rmin) REQUIRE_FALSE(L.validity.valid);
+    if (!L.validity.valid) {
+      ++flagged;
+      const std::string w = "non_hertzian:ellipse=" + std::to_string(L.ellipse) + ":";
+      bool found = false;
+      for (const std::string& s : r.warnings) found = found || s.rfind(w, 0) == 0;
+      REQUIRE(found);
+    }
+  }
+  REQUIRE(flagged >= 1);
+}
