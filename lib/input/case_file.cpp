@@ -327,11 +327,8 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     try {
       cf.method = parse_method(m);
     } catch (const std::invalid_argument&) {
-      c.fail("/method", &j.at("method"), "must be \"multi-hertzian\", \"half-space\" or \"strips\"");
+      c.fail("/method", &j.at("method"), "must be \"multi-hertzian\", \"half-space\", \"strips\" or \"auto\"");
     }
-    if (cf.method == Method::Auto)
-      c.fail("/method", &j.at("method"), "is not available in this version",
-             "use \"multi-hertzian\", \"half-space\" or \"strips\"");
   }
   if (j.contains("material")) {
     const json& m = j.at("material");
@@ -556,7 +553,7 @@ nlohmann::json CaseFile::resolved_json() const {
     j["half_space"] = {{"dx_mm", half_space.dx * units::per_mm}, {"ds_mm", half_space.ds * units::per_mm},
                        {"d_comb_mm", half_space.d_comb * units::per_mm}, {"force_rtol", half_space.force_rtol},
                        {"tol", half_space.cg.tol}, {"max_iterations", half_space.cg.max_iterations}};
-  if (method == Method::Strips)
+  if (method == Method::Strips || method == Method::Auto)
     j["strips"] = {{"ds_mm", strips.ds * units::per_mm}, {"d_comb_mm", strips.d_comb * units::per_mm},
                    {"force_rtol", strips.force_rtol}, {"gauss_points", strips.strips.gauss_points},
                    {"outlier_factor", strips.strips.outlier_factor}};

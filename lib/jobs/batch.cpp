@@ -46,17 +46,22 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   const CaseFile shared = pair_case(m, 0);  // validated already: the sweep and the model
   const bool plastic = shared.model == Model::Plastic;
   const Method M = shared.method;
+  if (opt.pressure_grid && (M == Method::Strips || M == Method::Auto))
+    throw InputError("--pressure-grid", std::to_string(opt.pressure_grid), "the strip and \"auto\" methods write no pressure grid",
+                     "use a single grid method or the multi-Hertzian method");
   const int np = opt.pressure_grid;
   check_pressure_grid(np, (end - first) * shared.case_count(), plastic, opt.force);
   RunDirectory rd(opt.out_dir);
-  std::unique_ptr<OutputFile> fc, fe, fp, fpp, fj;
+  std::unique_ptr<OutputFile> fc, fe, fpa, fp, fpp, fj;
   std::unique_ptr<JsonObjectStream> jw;
   if (opt.csv) {
     fc = std::make_unique<OutputFile>(rd.path("cases.csv"));
-    fe = std::make_unique<OutputFile>(rd.path(contact_table_name(M)));
+    if (writes_ellipses(M)) fe = std::make_unique<OutputFile>(rd.path("ellipses.csv"));
+    if (writes_patches(M)) fpa = std::make_unique<OutputFile>(rd.path("patches.csv"));
     fpp = std::make_unique<OutputFile>(rd.path("pairs.csv"));
     fc->stream() << "pair," << cases_csv_header();
-    fe->stream() << "pair," << contact_table_header(M, plastic);
+    if (fe) fe->stream() << "pair," << ellipses_csv_header(plastic);
+    if (fpa) fpa->stream() << "pair," << patches_csv_header(plastic);
     fpp->stream() << "pair,name,wheel,rail,status,n_ellipses,wheel_sha256,rail_sha256,message\n";
   }
   if (np) {
@@ -122,8 +127,8 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     }
     if (pg) {
       if (!opt.quiet) warn_profiles(*pg, err);
-      Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fp ? &fp->stream() : nullptr,
-                  nullptr, pw.get(), prefix};
+      Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fpa ? &fpa->stream() : nullptr,
+                  fp ? &fp->stream() : nullptr, nullptr, pw.get(), prefix};
       solve_cases(cf, pg->geo, 0, n, quiet_opt, sinks, &counts, err);
     } else {
       ++invalid;
@@ -153,7 +158,12 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     jw->member("summary", summary);
     jw->end();
   }
-  if (fc) { fc->commit(); fe->commit(); fpp->commit(); }
+  if (fc) {
+    fc->commit();
+    if (fe) fe->commit();
+    if (fpa) fpa->commit();
+    fpp->commit();
+  }
   if (fp) fp->commit();
   if (fj) fj->commit();
   if (opt.shard_count > 1) {

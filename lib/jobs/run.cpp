@@ -87,14 +87,16 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   const bool want_json = opt.json || to_stdout;
 
   std::unique_ptr<RunDirectory> rd;
-  std::unique_ptr<OutputFile> fc, fe, fj, fp, fs;
+  std::unique_ptr<OutputFile> fc, fe, fpa, fj, fp, fs;
   const int np = opt.pressure_grid;
-  if (opt.strips && M != Method::Strips)
+  if (opt.strips && M != Method::Strips && M != Method::Auto)
     throw InputError("--strips", "", "writes the strips of the strip method; the case's method is " + std::string(to_string(M)),
-                     "set \"method\": \"strips\" in the case file or drop --strips");
+                     "set \"method\": \"strips\" (or \"auto\") in the case file or drop --strips");
   if (opt.strips && to_stdout) throw InputError("--strips", "", "needs an output directory (not -o -)");
-  if (np && M == Method::Strips)
-    throw InputError("--pressure-grid", std::to_string(np), "the strip method writes its pressures as strips", "use --strips");
+  if (np && (M == Method::Strips || M == Method::Auto))
+    throw InputError("--pressure-grid", std::to_string(np),
+                     std::string("the ") + (M == Method::Auto ? "\"auto\"" : "strip") + " method writes no pressure grid",
+                     "use --strips for the strips, or a single method");
   if (np && to_stdout)
     throw InputError("--pressure-grid", std::to_string(np), "needs an output directory (not -o -)");
   if (to_stdout && !opt.json)
@@ -112,9 +114,15 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     }
     if (want_csv) {
       fc = std::make_unique<OutputFile>(rd->path("cases.csv"));
-      fe = std::make_unique<OutputFile>(rd->path(contact_table_name(M)));
       fc->stream() << cases_csv_header();
-      fe->stream() << contact_table_header(M, plastic);
+      if (writes_ellipses(M)) {
+        fe = std::make_unique<OutputFile>(rd->path("ellipses.csv"));
+        fe->stream() << ellipses_csv_header(plastic);
+      }
+      if (writes_patches(M)) {
+        fpa = std::make_unique<OutputFile>(rd->path("patches.csv"));
+        fpa->stream() << patches_csv_header(plastic);
+      }
     }
     if (want_json) fj = std::make_unique<OutputFile>(rd->path("results.json"));
   }
@@ -140,8 +148,9 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     fs = std::make_unique<OutputFile>(rd->path("strips.csv"));
     fs->stream() << strips_csv_header();
   }
-  Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fp ? &fp->stream() : nullptr,
-              fs ? &fs->stream() : nullptr, jw.get(), "", to_stdout ? "standard output" : "results.json"};
+  Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fpa ? &fpa->stream() : nullptr,
+              fp ? &fp->stream() : nullptr, fs ? &fs->stream() : nullptr, jw.get(), "",
+              to_stdout ? "standard output" : "results.json"};
   solve_cases(cf, G, first, end, opt, sinks, &counts, err);
   const auto& by_status = counts.by_status;
   const std::uint64_t failed = counts.failed;
@@ -153,7 +162,8 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   }
   if (fc) {
     fc->commit();
-    fe->commit();
+    if (fe) fe->commit();
+    if (fpa) fpa->commit();
     write_profiles_csv(pg, rd->path("profiles.csv"));
   }
   if (opt.shard_count > 1 && !to_stdout) {

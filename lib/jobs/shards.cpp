@@ -114,9 +114,10 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
   const bool csv = shards[0].meta["csv"], json = shards[0].meta["json"], pressure = shards[0].meta["pressure"];
   std::vector<std::string> tables;
   if (csv) {
-    // The per-contact table: ellipses.csv (multi-Hertzian) or patches.csv (grid methods).
-    const bool patches = std::ifstream(shards[0].dir + "/patches.csv").good();
-    tables = {"cases.csv", patches ? "patches.csv" : "ellipses.csv"};
+    // The per-contact tables: ellipses.csv (multi-Hertzian) and/or patches.csv (grid methods).
+    tables = {"cases.csv"};
+    for (const char* t : {"ellipses.csv", "patches.csv"})
+      if (std::ifstream(shards[0].dir + "/" + t).good()) tables.push_back(t);
   }
   if (csv && batch) tables.push_back("pairs.csv");
   if (pressure) tables.push_back("pressure.csv");

@@ -152,9 +152,9 @@ class Pool {
 
 // The rows of one worker's contiguous slice of a chunk, formatted and prefixed.
 struct Block {
-  std::string cases, ellipses, pressure, strips;
+  std::string cases, ellipses, patches, pressure, strips;
   std::vector<std::string> json;
-  void clear() { cases.clear(); ellipses.clear(); pressure.clear(); strips.clear(); json.clear(); }
+  void clear() { cases.clear(); ellipses.clear(); patches.clear(); pressure.clear(); strips.clear(); json.clear(); }
 };
 
 // One chunk in flight: the blocks of its workers, in case order.
@@ -214,15 +214,15 @@ class Writer {
  public:
   static bool write_slot(const Sinks& out, const Slot& s) {
     for (const Block& b : s.blocks) {
-      if (out.cases) {
-        out.cases->write(b.cases.data(), static_cast<std::streamsize>(b.cases.size()));
-        out.ellipses->write(b.ellipses.data(), static_cast<std::streamsize>(b.ellipses.size()));
-      }
+      if (out.cases) out.cases->write(b.cases.data(), static_cast<std::streamsize>(b.cases.size()));
+      if (out.ellipses) out.ellipses->write(b.ellipses.data(), static_cast<std::streamsize>(b.ellipses.size()));
+      if (out.patches) out.patches->write(b.patches.data(), static_cast<std::streamsize>(b.patches.size()));
       if (out.pressure) out.pressure->write(b.pressure.data(), static_cast<std::streamsize>(b.pressure.size()));
       if (out.strips) out.strips->write(b.strips.data(), static_cast<std::streamsize>(b.strips.size()));
       if (out.json) for (const auto& j : b.json) out.json->element(j);
     }
-    return !((out.cases && (!*out.cases || !*out.ellipses)) || (out.pressure && !*out.pressure) ||
+    return !((out.cases && !*out.cases) || (out.ellipses && !*out.ellipses) || (out.patches && !*out.patches) ||
+             (out.pressure && !*out.pressure) ||
              (out.strips && !*out.strips) || (out.json && !out.json->good()));
   }
  private:
@@ -289,11 +289,15 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
           const CaseResult r = solve_method(G, cf.material, cp.tY, cp.Q, mo);
           S.status[i] = r.status;
           format_case(c0 + i, cp, r, plastic, want_csv, want_json, f);
-          // The per-contact table: ellipses (multi-Hertzian) or patches (grid methods).
-          if (want_csv && grid_method) format_patches(c0 + i, cp, r, plastic, f.ellipses);
+          // The per-contact tables: ellipses (multi-Hertzian) and patches (grid methods); "auto"
+          // writes each case into the table of the method that solved it.
           if (want_csv) {
             append_prefixed(B.cases, out.prefix, f.cases);
-            append_prefixed(B.ellipses, out.prefix, f.ellipses);
+            if (out.ellipses) append_prefixed(B.ellipses, out.prefix, f.ellipses);
+            if (out.patches) {
+              format_patches(c0 + i, cp, r, plastic, f.patches);
+              append_prefixed(B.patches, out.prefix, f.patches);
+            }
           }
           if (want_json) B.json.push_back(std::move(f.json));
           if (np) {

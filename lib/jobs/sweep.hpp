@@ -53,7 +53,8 @@ void check_pressure_grid(int N, std::uint64_t cases, bool plastic, bool force);
 /// Where the formatted rows go; `prefix` is put in front of every CSV line (the batch's "pair,").
 struct Sinks {
   std::ostream* cases = nullptr;
-  std::ostream* ellipses = nullptr;  ///< ellipses.csv (multi-Hertzian) or patches.csv (grid methods)
+  std::ostream* ellipses = nullptr;  ///< ellipses.csv: the loaded ellipses of multi-Hertzian cases
+  std::ostream* patches = nullptr;   ///< patches.csv: the contact patches of grid-method cases
   std::ostream* pressure = nullptr;
   std::ostream* strips = nullptr;    ///< strips.csv (strip method, --strips)
   JsonObjectStream* json = nullptr;  ///< with its case array open

@@ -298,10 +298,8 @@ std::string patches_csv_header(bool plastic) {
   return s + "\n";
 }
 
-const char* contact_table_name(Method m) { return m == Method::MultiHertzian ? "ellipses.csv" : "patches.csv"; }
-std::string contact_table_header(Method m, bool plastic) {
-  return m == Method::MultiHertzian ? ellipses_csv_header(plastic) : patches_csv_header(plastic);
-}
+bool writes_ellipses(Method m) { return m == Method::MultiHertzian || m == Method::Auto; }
+bool writes_patches(Method m) { return m != Method::MultiHertzian; }
 std::string pressure_table_header(Method m, bool plastic) {
   return m == Method::MultiHertzian ? pressure_csv_header(plastic) : patch_pressure_csv_header();
 }

@@ -43,10 +43,11 @@ std::string strips_csv_header();
 
 /// The column names of the tables (README "Output tables").
 std::string patches_csv_header(bool plastic);
-/// The per-contact table of a method: "ellipses.csv" (multi-Hertzian) or "patches.csv" (grid
-/// methods), its header, and the header of its pressure.csv.
-const char* contact_table_name(Method m);
-std::string contact_table_header(Method m, bool plastic);
+/// Which per-contact tables a method writes: ellipses.csv (multi-Hertzian, and "auto" for the cases
+/// it keeps), patches.csv (grid methods, and "auto" for the cases it hands to the strip method).
+bool writes_ellipses(Method m);
+bool writes_patches(Method m);
+/// The header of pressure.csv of a method ("auto" writes none).
 std::string pressure_table_header(Method m, bool plastic);
 std::string patch_pressure_csv_header();
 std::string cases_csv_header();
