@@ -27,5 +27,5 @@ awk -v t="$t1" -v m="$m1" -v n="$ncases" 'BEGIN{printf "  --threads 1:      %.2f
 awk -v t="$tn" -v m="$mn" -v n="$ncases" -v c="$(nproc)" 'BEGIN{printf "  all %d cores:     %.2f s wall, %.0f cases/s, peak RSS %.0f MB\n", c, t, n/t, m/1024}'
 awk -v a="$t1" -v b="$tn" 'BEGIN{printf "  speed-up:         %.2f\n", a/b}'
 ls -la "$tmp/out" | awk 'NR>1{print "  " $5 " bytes  " $9}'
-# The half-space method on the CONTACT benchmark sweep (median and worst time per case).
-./build/mhcontact_bench_half_space . 3
+# The grid methods (half-space, strips) on the CONTACT benchmark sweep (median and worst per case).
+./build/mhcontact_bench_grid . 3

@@ -19,6 +19,12 @@ set -x
 # The half-space method
 ./build/mhcontact run cases/manchester-halfspace.json -o out/manchester-halfspace
 test "$(wc -l < out/manchester-halfspace/patches.csv)" -eq 18
+./build/mhcontact run cases/manchester-strips.json -o out/manchester-strips --strips
+test -s out/manchester-strips/strips.csv
+if "$py" -c 'import matplotlib' 2>/dev/null; then
+  "$py" scripts/compare_methods.py cases/manchester-halfspace.json -o out/compare.png
+  test -s out/compare.png
+fi
 # Profiles
 ./build/mhcontact profile info profiles/MBench_S1002_v3.prw
 ./build/mhcontact profile info profiles/MBench_UIC60_v3.prr --json

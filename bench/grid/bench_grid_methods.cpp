@@ -1,0 +1,70 @@
+// Benchmark of the grid methods (docs/method.md §8 half-space, §9 strips): the CONTACT benchmark
+// sweep of the Manchester pair (t_Y = -6 ... 10 mm, Q = 50 kN, 0.2 mm elements and strips) solved
+// case by case on one thread. Prints per case and method the time, solver iterations and size,
+// the median and worst time per case, and the ratios to CONTACT's own time per case on this
+// machine kind (tests/data/contact, wall_s) and between the methods.
+// Figures only, never an assertion. Usage: mhcontact_bench_grid SOURCE_DIR [REPEATS]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "contact/half_space.hpp"
+#include "contact/strip_method.hpp"
+#include "input/case_file.hpp"
+#include "jobs/run.hpp"
+#include "output/csv_table.hpp"
+
+int main(int argc, char** argv) {
+  const std::string src = argc > 1 ? argv[1] : ".";
+  const int repeats = argc > 2 ? std::max(1, std::atoi(argv[2])) : 3;
+  const mh::CaseFile cf = mh::load_case_file(src + "/cases/manchester-halfspace.json", true);
+  const mh::PairGeometry pg = mh::build_pair_geometry(cf);
+  const mh::CsvTable ref = mh::read_csv_file(src + "/tests/data/contact/contact_mbench_right_q50_dx0.2.csv");
+  std::vector<double> ms, contact_s;
+  std::printf("half-space, Manchester pair, Q = 50 kN, dx = ds = %.2f mm, one thread, best of %d runs per case:\n",
+              cf.half_space.dx * 1e3, repeats);
+  std::printf("  tY_mm   time_ms  passes  cg_iterations  elements  pmax_MPa\n");
+  for (int t = -6; t <= 10; ++t) {
+    double best = 1e99;
+    mh::CaseResult r;
+    for (int k = 0; k < repeats; ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      r = mh::solve_half_space(pg.geo, cf.material, t * 1e-3, 50e3, cf.half_space);
+      best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * 1e3);
+    }
+    int cg = 0, n = 0;
+    for (const auto& P : r.patches) { cg += P.iterations; n += P.n_elements; }
+    std::printf("  %5d  %8.1f  %6d  %13d  %8d  %8.1f  %s\n", t, best, r.iterations, cg, n, r.pmax / 1e6, mh::to_string(r.status));
+    ms.push_back(best);
+  }
+  // The strip method on the same cases.
+  const mh::CaseFile cs = mh::load_case_file(src + "/cases/manchester-strips.json", true);
+  std::vector<double> ms_st;
+  std::printf("strips, same cases, ds = %.2f mm:\n  tY_mm   time_ms  patch_solves  strips  pmax_MPa\n", cs.strips.ds * 1e3);
+  for (int t = -6; t <= 10; ++t) {
+    double best = 1e99;
+    mh::CaseResult r;
+    for (int k = 0; k < repeats; ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      r = mh::solve_strip_method(pg.geo, cs.material, t * 1e-3, 50e3, cs.strips);
+      best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * 1e3);
+    }
+    int n = 0;
+    for (const auto& P : r.patches) n += P.n_elements;
+    std::printf("  %5d  %8.2f  %12d  %6d  %8.1f  %s\n", t, best, r.iterations, n, r.pmax / 1e6, mh::to_string(r.status));
+    ms_st.push_back(best);
+  }
+  for (const auto& row : ref.rows) contact_s.push_back(std::stod(row[static_cast<std::size_t>(ref.column("wall_s"))]));
+  auto median = [](std::vector<double> v) { std::sort(v.begin(), v.end()); return v[v.size() / 2]; };
+  const double med = median(ms), worst = *std::max_element(ms.begin(), ms.end());
+  const double med_st = median(ms_st), worst_st = *std::max_element(ms_st.begin(), ms_st.end());
+  std::printf("half-space: median %.1f ms per case, worst %.1f ms\n", med, worst);
+  std::printf("strips:     median %.2f ms per case, worst %.2f ms\n", med_st, worst_st);
+  std::printf("CONTACT (whole process, same machine kind): median %.2f s per case\n", median(contact_s));
+  std::printf("ratios of the medians: CONTACT / half-space %.0f, half-space / strips %.0f, CONTACT / strips %.0f\n",
+              median(contact_s) * 1e3 / med, med / med_st, median(contact_s) * 1e3 / med_st);
+  return 0;
+}

@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+"""Run one case file with several methods and plot them against t_Y.
+
+    compare_methods.py CASE.json [--methods multi-hertzian,strips,half-space] [--Q 50]
+                       [--mhcontact build/mhcontact] [--reference CONTACT.csv] [-o FILE.png]
+                       [--table FILE.csv]
+
+The case file's sweep is solved by each method (`mhcontact run` with the case's "method"
+replaced), and one figure shows, against t_Y, for the load Q (kN; default: the first load of
+the sweep): the peak pressure, the total contact area, and the share of Q carried by the main
+contact (the load split), one curve per method. --reference adds CONTACT's results (a table like
+tests/data/contact/*.csv: y_ws_mm, pmax_MPa, area_mm2). --table writes the numbers plotted.
+This is the picture that shows where the fast method can be trusted for your own profiles.
+Needs matplotlib (Debian: python3-matplotlib); runs headless.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+STYLE = {"multi-hertzian": ("tab:blue", "o"), "strips": ("tab:orange", "s"), "half-space": ("tab:green", "^"),
+         "auto": ("tab:purple", "x"), "CONTACT": ("black", "+")}
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def fnum(s):
+    try:
+        return float(s)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def run_method(mhcontact, case_path, method, out_dir):
+    with open(case_path) as f:
+        case = json.load(f)
+    base = os.path.dirname(os.path.abspath(case_path))
+    for side in ("wheel", "rail"):  # profile paths relative to the case file stay valid
+        prof = case.get(side, {}).get("profile")
+        if isinstance(prof, str) and not os.path.isabs(prof) and not prof.startswith("standard:"):
+            candidate = os.path.join(base, prof)
+            if os.path.exists(candidate):
+                case[side]["profile"] = candidate
+    case["method"] = method
+    path = os.path.join(out_dir, method + ".json")
+    with open(path, "w") as f:
+        json.dump(case, f)
+    res = subprocess.run([mhcontact, "run", path, "-o", os.path.join(out_dir, method), "--format", "csv", "-q"])
+    if res.returncode not in (0, 1):
+        sys.exit(f"compare_methods.py: mhcontact run failed for method {method} (exit {res.returncode})")
+    return os.path.join(out_dir, method)
+
+
+def method_rows(run_dir, Q):
+    cases = [r for r in read_csv(os.path.join(run_dir, "cases.csv")) if abs(fnum(r["Q_kN"]) - Q) < 1e-9]
+    # Load split: the main contact's share of the normal loads (ellipses or patches of each case).
+    main = {}
+    for name, force in (("ellipses.csv", "N_kN"), ("patches.csv", "N_kN")):
+        p = os.path.join(run_dir, name)
+        if not os.path.exists(p):
+            continue
+        for r in read_csv(p):
+            main.setdefault(r["case"], []).append(fnum(r[force]))
+    out = []
+    for r in cases:
+        loads = main.get(r["case"], [])
+        share = max(loads) / sum(loads) if loads and sum(loads) > 0 else math.nan
+        out.append((fnum(r["tY_mm"]), fnum(r["pmax_MPa"]), fnum(r["area_mm2"]), share, r["status"], r["method"]))
+    return sorted(out)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("case", help="case file (JSON)")
+    ap.add_argument("--methods", default="multi-hertzian,strips,half-space",
+                    help="comma-separated methods (default: multi-hertzian,strips,half-space)")
+    ap.add_argument("--Q", type=float, help="load in kN (default: the first load of the sweep)")
+    ap.add_argument("--mhcontact", default=os.path.join("build", "mhcontact"), help="the mhcontact binary")
+    ap.add_argument("--reference", help="CONTACT reference table (y_ws_mm, pmax_MPa, area_mm2)")
+    ap.add_argument("-o", "--output", default="compare_methods.png", help="PNG file (default compare_methods.png)")
+    ap.add_argument("--table", help="also write the plotted numbers to this CSV file")
+    a = ap.parse_args(argv)
+    methods = [m.strip() for m in a.methods.split(",") if m.strip()]
+    for m in methods:
+        if m not in STYLE or m == "CONTACT":
+            ap.error(f"unknown method '{m}' (expected multi-hertzian, strips, half-space or auto)")
+    if not os.path.exists(a.mhcontact):
+        sys.exit(f"compare_methods.py: {a.mhcontact} not found (build first, or give --mhcontact)")
+    data = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        for m in methods:
+            d = run_method(a.mhcontact, a.case, m, tmp)
+            if a.Q is None:
+                a.Q = fnum(read_csv(os.path.join(d, "cases.csv"))[0]["Q_kN"])
+            data[m] = method_rows(d, a.Q)
+    if a.reference:
+        ref = [r for r in read_csv(a.reference) if abs(fnum(r.get("Fz_target_N")) / 1000 - a.Q) < 1e-6]
+        data["CONTACT"] = sorted((fnum(r["y_ws_mm"]), fnum(r["pmax_MPa"]), fnum(r["area_mm2"]), math.nan, "ok", "CONTACT")
+                                 for r in ref)
+    with open(a.case) as f:
+        case = json.load(f)
+    model = case.get("model", "elastic")
+    plim = case.get("material", {}).get("p_lim_MPa")
+    title = os.path.basename(a.case) + f": model {model}" + (f", p_lim {plim:g} MPa" if plim else "")
+    fig, axes = plt.subplots(3, 1, figsize=(9, 10), sharex=True)
+    for name, rows in data.items():
+        color, marker = STYLE[name]
+        t = [r[0] for r in rows if r[4] == "ok"]
+        for ax, k in zip(axes, (1, 2, 3)):
+            v = [r[k] for r in rows if r[4] == "ok"]
+            if all(math.isnan(x) for x in v):
+                continue
+            ax.plot(t, v, marker=marker, color=color, label=name, linewidth=1.2, markersize=4)
+    axes[0].set_ylabel("peak pressure [MPa]")
+    axes[1].set_ylabel("contact area [mm²]")
+    axes[2].set_ylabel("main contact's share of the load")
+    axes[2].set_xlabel("t_Y [mm]")
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+    axes[0].legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=9)
+    if plim:
+        axes[0].axhline(plim, color="red", linestyle="--", linewidth=0.8, label="p_lim")
+    fig.suptitle(f"{title}, Q = {a.Q:g} kN", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(a.output, dpi=110)
+    if a.table:
+        with open(a.table, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["method", "tY_mm", "pmax_MPa", "area_mm2", "main_share", "status", "solved_by"])
+            for name, rows in data.items():
+                for r in rows:
+                    w.writerow([name] + list(r))
+    print(f"compare_methods.py: wrote {a.output}" + (f" and {a.table}" if a.table else ""))
+
+
+if __name__ == "__main__":
+    main()
