@@ -8,6 +8,7 @@
 
 #include "cli.hpp"
 #include "core/errors.hpp"
+#include "core/units.hpp"
 #include "core/numfmt.hpp"
 #include "output/profile_file.hpp"
 #include "profile/read.hpp"
@@ -41,7 +42,7 @@ void add_profile_read_options(CLI::App& app, ProfileReadOptions& opt) {
 
 namespace {
 
-std::string mm(double v_m) { return format_number(v_m * 1e3); }
+std::string mm(double v_m) { return format_number(v_m * units::per_mm); }
 
 void print_info(const Profile& p, bool json, std::ostream& out) {
   double ymin = p.y.front(), ymax = p.y.back();
@@ -50,18 +51,18 @@ void print_info(const Profile& p, bool json, std::ostream& out) {
   j["format"] = p.format;
   j["kind"] = to_string(p.kind);
   j["points"] = p.size();
-  j["y_min_mm"] = ymin * 1e3;
-  j["y_max_mm"] = ymax * 1e3;
+  j["y_min_mm"] = ymin * units::per_mm;
+  j["y_max_mm"] = ymax * units::per_mm;
   std::string text = "file: " + p.source + "\nformat: " + p.format + "\nkind: " + to_string(p.kind) +
                      "\npoints: " + std::to_string(p.size()) + "\ny_range_mm: " + mm(ymin) + " " + mm(ymax) + "\n";
   if (p.kind == ProfileKind::Rail) {
     const RailLandmarks L = rail_landmarks(p);
-    j["head_top_y_mm"] = L.y_top * 1e3;
-    j["head_top_z_mm"] = L.z_top * 1e3;
+    j["head_top_y_mm"] = L.y_top * units::per_mm;
+    j["head_top_z_mm"] = L.z_top * units::per_mm;
     text += "head_top_mm: y " + mm(L.y_top) + " z " + mm(L.z_top) + "\n";
     if (L.has_gauge) {
-      j["gauge_point_y_mm"] = L.y_gauge * 1e3;
-      j["gauge_point_z_mm"] = L.z_gauge * 1e3;
+      j["gauge_point_y_mm"] = L.y_gauge * units::per_mm;
+      j["gauge_point_z_mm"] = L.z_gauge * units::per_mm;
       if (L.gauge_at_widest) j["gauge_point_at_widest"] = true;
       text += std::string(L.gauge_at_widest ? "gauge_point_mm (widest point: the face turns under above 14 mm below the top)"
                                             : "gauge_point_mm (14 mm below the top)") +
@@ -73,8 +74,8 @@ void print_info(const Profile& p, bool json, std::ostream& out) {
     }
   } else if (p.kind == ProfileKind::Wheel) {
     const WheelLandmarks L = wheel_landmarks(p);
-    j["flange_tip_y_mm"] = L.y_tip * 1e3;
-    j["flange_tip_z_mm"] = L.z_tip * 1e3;
+    j["flange_tip_y_mm"] = L.y_tip * units::per_mm;
+    j["flange_tip_z_mm"] = L.z_tip * units::per_mm;
     text += "flange_tip_mm: y " + mm(L.y_tip) + " z " + mm(L.z_tip) + "\n";
     const WheelMeasures M = wheel_measures(p);
     if (M.valid) {
@@ -116,9 +117,9 @@ void print_info(const Profile& p, bool json, std::ostream& out) {
             " jitter points, " + std::to_string(c.folds) + " folds (" + std::to_string(c.fold_points) +
             " points dropped, " + std::to_string(c.crossings) + " crossing points added)";
     if (c.folds)
-      text += " at y " + format_number(std::round(c.y_from_mm * 1e3) / 1e3) + " … " +
-              format_number(std::round(c.y_to_mm * 1e3) / 1e3) + " mm, largest step back " +
-              format_number(std::round(c.largest_fold_mm * 1e3) / 1e3) + " mm";
+      text += " at y " + format_number(std::round(c.y_from_mm * units::per_mm) / 1e3) + " … " +
+              format_number(std::round(c.y_to_mm * units::per_mm) / 1e3) + " mm, largest step back " +
+              format_number(std::round(c.largest_fold_mm * units::per_mm) / 1e3) + " mm";
     text += "\n";
   }
   j["sha256"] = p.checksum;

@@ -5,6 +5,7 @@
 // The force law of an ellipse built on these coefficients is in ellipse_law.hpp.
 #include <cmath>
 #include <string>
+#include "core/units.hpp"
 
 namespace mh {
 
@@ -26,7 +27,7 @@ struct Material {
   }
   /// [1/Pa] combined compliance of the half-space solvers (docs/method.md §8):
   /// (1−ν_w²)/(π E_w) + (1−ν_r²)/(π E_r) = 2 / (π E_star).
-  double compliance() const { return 2.0 / (3.14159265358979323846 * E_star()); }
+  double compliance() const { return 2.0 / (units::pi * E_star()); }
   /// Ceres-style check: true when valid; otherwise false and *why names the field, the value and
   /// the rule (E > 0 and finite, 0 < ν < 0.5, p_lim > 0 or INFINITY; the same for the rail's).
   bool valid(std::string* why = nullptr) const;

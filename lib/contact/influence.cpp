@@ -8,11 +8,12 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include "core/units.hpp"
 
 namespace mh {
 
 double combined_compliance(double E_w, double nu_w, double E_r, double nu_r) {
-  constexpr double pi = 3.14159265358979323846;
+  constexpr double pi = units::pi;
   return (1.0 - nu_w * nu_w) / (pi * E_w) + (1.0 - nu_r * nu_r) / (pi * E_r);
 }
 

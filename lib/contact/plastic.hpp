@@ -9,6 +9,7 @@
 // C¹ at h_y. For a sphere (m = n = 1) it is Thornton's (1997) truncated-Hertz law.
 // SI throughout.
 #include <cmath>
+#include "core/units.hpp"
 
 namespace mh {
 
@@ -16,7 +17,7 @@ namespace mh {
 /// peak p0 [Pa] and cap p_lim [Pa] (method.md §5): π a b p_lim (1 − s²/3), s = p_lim/p0, when
 /// p0 > p_lim; the Hertz load (2/3) π a b p0 otherwise (p_lim = INFINITY: always elastic).
 inline double capped_hertz_load(double a, double b, double p0, double p_lim) {
-  constexpr double pi = 3.14159265358979323846;
+  constexpr double pi = units::pi;
   if (!(p0 > p_lim)) return (2.0 / 3.0) * pi * a * b * p0;
   const double s = p_lim / p0;
   return pi * a * b * p_lim * (1.0 - s * s / 3.0);
@@ -48,7 +49,7 @@ struct PlasticBranch {
 /// stiffness k_e [N/m^1.5] (eq. 8) and p_lim [Pa]. p_lim = INFINITY gives the elastic defaults
 /// (h_y = N_y = INFINITY, k_p = 0).
 inline PlasticBranch plastic_branch(double m, double n, double B, double k_e, double p_lim) {
-  constexpr double pi = 3.14159265358979323846;
+  constexpr double pi = units::pi;
   PlasticBranch p;
   if (!std::isfinite(p_lim)) return p;
   // p0 = 3 N/(2π a b) = 3 k_e n B √h0 / (2π m) on the patch b = √(h0/B), a = (m/n) b.

@@ -14,12 +14,13 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include "core/units.hpp"
 
 namespace mh {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = units::pi;
 
 /// Complete elliptic integrals K(m), E(m) of parameter m = e^2 by the
 /// arithmetic–geometric mean (Abramowitz & Stegun 17.6).

@@ -10,6 +10,7 @@
 
 #include "profile/profile.hpp"
 #include "profile/curve.hpp"
+#include "core/units.hpp"
 
 namespace mh {
 
@@ -42,7 +43,7 @@ struct GeometryOptions {
   /// A jump of the CAF (method.md §3.5) is a discontinuity of the contact point in t_Y, located
   /// by bisection between grid points down to a 0.01 µm bracket, independently of the grid step:
   /// across that bracket γ must change by more than jump_threshold (default 0.5°) ...
-  double jump_threshold = 0.5 * 3.14159265358979323846 / 180.0;  ///< [rad]
+  double jump_threshold = 0.5 * units::pi / 180.0;  ///< [rad]
   /// ... and the contact point move on the rail by more than jump_distance (default 1 mm; the
   /// jumps of the Manchester pair move it 4 to 10 mm). Continuous motion moves it by ~0 there.
   double jump_distance = 1.0e-3;  ///< [m]

@@ -282,7 +282,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     if (cf.track.gauge_height > 0.05) c.fail("/track/gauge_height_mm", &t.at("gauge_height_mm"), "must be at most 50 mm");
     if (cf.track.flange_back_distance >= cf.track.gauge)
       c.fail("/track/flange_back_distance_mm", t.contains("flange_back_distance_mm") ? &t.at("flange_back_distance_mm") : nullptr,
-             "must be smaller than the gauge (" + format_number(cf.track.gauge * 1e3) + " mm)");
+             "must be smaller than the gauge (" + format_number(cf.track.gauge * units::per_mm) + " mm)");
   }
   // geometry
   bool range_given = false;
@@ -511,7 +511,7 @@ Profile load_profile(const ProfileSource& src, ProfileKind kind, Inclination inc
 nlohmann::json CaseFile::resolved_json() const {
   auto src = [](const ProfileSource& s) {
     json o;
-    if (!s.standard.empty()) { o["standard"] = s.standard; o["step_mm"] = s.step * 1e3; }
+    if (!s.standard.empty()) { o["standard"] = s.standard; o["step_mm"] = s.step * units::per_mm; }
     else {
       o["file"] = s.file;
       o["format"] = to_string(s.read.format);
@@ -523,24 +523,24 @@ nlohmann::json CaseFile::resolved_json() const {
   };
   json j;
   j["case_file"] = path;
-  j["wheel"] = {{"profile", src(wheel)}, {"nominal_radius_mm", track.nominal_radius * 1e3}};
+  j["wheel"] = {{"profile", src(wheel)}, {"nominal_radius_mm", track.nominal_radius * units::per_mm}};
   j["rail"] = {{"profile", src(rail)}, {"inclination", to_string(inclination)}};
-  j["track"] = {{"gauge_mm", track.gauge * 1e3}, {"gauge_height_mm", track.gauge_height * 1e3},
-                {"flange_back_distance_mm", track.flange_back_distance * 1e3},
-                {"flange_back_position_mm", track.flange_back_position * 1e3}};
+  j["track"] = {{"gauge_mm", track.gauge * units::per_mm}, {"gauge_height_mm", track.gauge_height * units::per_mm},
+                {"flange_back_distance_mm", track.flange_back_distance * units::per_mm},
+                {"flange_back_position_mm", track.flange_back_position * units::per_mm}};
   // Only when used: the resolved inputs of gauge-positioned straight-rail cases stay as they were.
   if (track.positioning == TrackSetup::Positioning::Explicit) {
     j["track"]["positioning"] = "explicit";
-    j["track"]["lateral_offset_mm"] = track.lateral_offset * 1e3;
+    j["track"]["lateral_offset_mm"] = track.lateral_offset * units::per_mm;
   }
-  if (track.roller_radius > 0) j["track"]["roller_radius_mm"] = track.roller_radius * 1e3;
-  j["geometry"] = {{"tY_min_mm", geometry.tY_min * 1e3}, {"tY_max_mm", geometry.tY_max * 1e3},
-                   {"tY_step_mm", geometry.tY_step * 1e3}, {"strip_width_mm", geometry.strip_width * 1e3},
+  if (track.roller_radius > 0) j["track"]["roller_radius_mm"] = track.roller_radius * units::per_mm;
+  j["geometry"] = {{"tY_min_mm", geometry.tY_min * units::per_mm}, {"tY_max_mm", geometry.tY_max * units::per_mm},
+                   {"tY_step_mm", geometry.tY_step * units::per_mm}, {"strip_width_mm", geometry.strip_width * units::per_mm},
                    {"jump_threshold_deg", geometry.jump_threshold / units::deg},
-                   {"jump_distance_mm", geometry.jump_distance * 1e3},
-                   {"min_ellipse_width_mm", geometry.min_ellipse_width * 1e3},
-                   {"fit_window_mm", geometry.curve.window_half_width * 1e3},
-                   {"measured_fit_window_mm", geometry.curve.measured_window_half_width * 1e3}};
+                   {"jump_distance_mm", geometry.jump_distance * units::per_mm},
+                   {"min_ellipse_width_mm", geometry.min_ellipse_width * units::per_mm},
+                   {"fit_window_mm", geometry.curve.window_half_width * units::per_mm},
+                   {"measured_fit_window_mm", geometry.curve.measured_window_half_width * units::per_mm}};
   json mat = {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}};
   if (!std::isnan(material.E_rail))
     mat = {{"wheel", {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}}},

@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "core/errors.hpp"
+#include "core/units.hpp"
 #include "core/numfmt.hpp"
 #include "jobs/run.hpp"
 #include "output/case_tables.hpp"
@@ -181,7 +182,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     if (opt.progress) err << "\n";
     err << "mhcontact run: " << (end - first) << " pairs (" << invalid << " invalid), " << cases_total << " cases";
     for (const auto& [s, v] : by_status) err << ", " << s << " " << v;
-    err << "; " << format_number(std::round(secs * 1e3) / 1e3) << " s; outputs in " << opt.out_dir << "\n";
+    err << "; " << format_number(std::round(secs * units::per_mm) / 1e3) << " s; outputs in " << opt.out_dir << "\n";
   }
   return (failed || invalid) ? kExitCasesFailed : kExitOk;
 }

@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "core/errors.hpp"
+#include "core/units.hpp"
 #include "core/numfmt.hpp"
 #include "output/case_tables.hpp"
 #include "output/cells.hpp"
@@ -54,8 +55,8 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
     j["program"] = program_json();
     j["inputs"] = inputs_json(cf, out_dir);
     j["profiles"] = profiles_json(pg);
-    j["y_offset_mm"] = G.y_offset * 1e3;
-    j["rail_gauge_point_y_mm"] = G.rail_gauge_y * 1e3;
+    j["y_offset_mm"] = G.y_offset * units::per_mm;
+    j["rail_gauge_point_y_mm"] = G.rail_gauge_y * units::per_mm;
     j["strips"] = G.strip_y.size();
     j["grid_points"] = G.tY.size();
     j["potential_ellipses"] = ellipses_json(G);
@@ -66,9 +67,9 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
   rd.finish("geometry", program_json(), {{"digits", digits ? nlohmann::json(digits) : nlohmann::json("max")}});
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!quiet)
-    err << "mhcontact geometry: " << G.n_ellipses() << " potential ellipses over t_Y " << format_number(G.tY.front() * 1e3)
-        << " .. " << format_number(G.tY.back() * 1e3) << " mm (" << G.tY.size() << " grid points, "
-        << G.strip_y.size() << " strips) in " << format_number(std::round(secs * 1e3) / 1e3) << " s; wrote "
+    err << "mhcontact geometry: " << G.n_ellipses() << " potential ellipses over t_Y " << format_number(G.tY.front() * units::per_mm)
+        << " .. " << format_number(G.tY.back() * units::per_mm) << " mm (" << G.tY.size() << " grid points, "
+        << G.strip_y.size() << " strips) in " << format_number(std::round(secs * units::per_mm) / 1e3) << " s; wrote "
         << out_dir << "/caf.csv, geometry.json, profiles.csv\n";
   (void)out;
   return kExitOk;
@@ -186,7 +187,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     err << "mhcontact run: " << n << " cases";
     if (opt.shard_count > 1) err << " (shard " << opt.shard_index << "/" << opt.shard_count << ": cases " << first << " .. " << end - 1 << ")";
     for (const auto& [k, v] : by_status) err << ", " << k << " " << v;
-    err << "; " << G.n_ellipses() << " potential ellipses; " << format_number(std::round(secs * 1e3) / 1e3) << " s";
+    err << "; " << G.n_ellipses() << " potential ellipses; " << format_number(std::round(secs * units::per_mm) / 1e3) << " s";
     if (!to_stdout) err << "; outputs in " << opt.out_dir;
     err << "\n";
   }

@@ -21,33 +21,33 @@ namespace {
 // Per-ellipse values in output units, in column order (shared by CSV and JSON).
 struct Col { const char* name; double (*get)(const LoadedEllipse&); };
 const Col kEllipseCols[] = {
-    {"y_rail_mm", [](const LoadedEllipse& e) { return e.g.y_r * 1e3; }},
-    {"y_wheel_mm", [](const LoadedEllipse& e) { return e.g.y_w * 1e3; }},
+    {"y_rail_mm", [](const LoadedEllipse& e) { return e.g.y_r * units::per_mm; }},
+    {"y_wheel_mm", [](const LoadedEllipse& e) { return e.g.y_w * units::per_mm; }},
     {"gamma_deg", [](const LoadedEllipse& e) { return e.g.gamma / units::deg; }},
     {"R_rxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_rxx); }},
     {"R_wxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_wxx); }},
-    {"R_wyy_mm", [](const LoadedEllipse& e) { return e.g.R_wyy() * 1e3; }},
+    {"R_wyy_mm", [](const LoadedEllipse& e) { return e.g.R_wyy() * units::per_mm; }},
     {"A_per_mm", [](const LoadedEllipse& e) { return e.A * 1e-3; }},  // 1/m -> 1/mm, as `hertz --A`
     {"B_per_mm", [](const LoadedEllipse& e) { return e.B * 1e-3; }},
     {"lambda", [](const LoadedEllipse& e) { return e.c.lambda; }},
     {"m", [](const LoadedEllipse& e) { return e.c.m; }},
     {"n", [](const LoadedEllipse& e) { return e.c.n; }},
-    {"gap_mm", [](const LoadedEllipse& e) { return e.g.gap * 1e3; }},
-    {"h0_mm", [](const LoadedEllipse& e) { return e.s.h0 * 1e3; }},
+    {"gap_mm", [](const LoadedEllipse& e) { return e.g.gap * units::per_mm; }},
+    {"h0_mm", [](const LoadedEllipse& e) { return e.s.h0 * units::per_mm; }},
     {"N_kN", [](const LoadedEllipse& e) { return e.s.N / units::kN; }},
-    {"a_mm", [](const LoadedEllipse& e) { return e.s.a * 1e3; }},
-    {"b_mm", [](const LoadedEllipse& e) { return e.s.b * 1e3; }},
+    {"a_mm", [](const LoadedEllipse& e) { return e.s.a * units::per_mm; }},
+    {"b_mm", [](const LoadedEllipse& e) { return e.s.b * units::per_mm; }},
     {"p0_MPa", [](const LoadedEllipse& e) { return e.s.p0 / units::MPa; }},
     {"pmean_MPa", [](const LoadedEllipse& e) { return e.s.p_mean / units::MPa; }},
-    {"approach_mm", [](const LoadedEllipse& e) { return e.s.approach * 1e3; }},
+    {"approach_mm", [](const LoadedEllipse& e) { return e.s.approach * units::per_mm; }},
 };
 const Col kPlasticCols[] = {
     {"h_y_mm", nullptr},  // filled from the law, see below
     {"p_max_MPa", [](const LoadedEllipse& e) { return e.s.p_max / units::MPa; }},
-    {"plateau_a_mm", [](const LoadedEllipse& e) { return e.s.plateau_a * 1e3; }},
-    {"plateau_b_mm", [](const LoadedEllipse& e) { return e.s.plateau_b * 1e3; }},
-    {"a_el_mm", [](const LoadedEllipse& e) { return e.s.a_el * 1e3; }},
-    {"b_el_mm", [](const LoadedEllipse& e) { return e.s.b_el * 1e3; }},
+    {"plateau_a_mm", [](const LoadedEllipse& e) { return e.s.plateau_a * units::per_mm; }},
+    {"plateau_b_mm", [](const LoadedEllipse& e) { return e.s.plateau_b * units::per_mm; }},
+    {"a_el_mm", [](const LoadedEllipse& e) { return e.s.a_el * units::per_mm; }},
+    {"b_el_mm", [](const LoadedEllipse& e) { return e.s.b_el * units::per_mm; }},
     {"area_ratio", [](const LoadedEllipse& e) { return e.s.area_ratio; }},
 };
 // Columns appended after all others (new columns are only ever appended: existing positions stay).
@@ -87,8 +87,8 @@ void format_pressure(std::uint64_t idx, const CaseResult& r, const Material& mat
         if (plastic) p = std::min(p, mat.p_lim);
         append_number(s, static_cast<long long>(idx));
         s += ','; append_number(s, static_cast<long long>(L.ellipse));
-        s += ','; num(s, x * 1e3);
-        s += ','; num(s, y * 1e3);
+        s += ','; num(s, x * units::per_mm);
+        s += ','; num(s, y * units::per_mm);
         s += ','; num(s, p / units::MPa);
         if (plastic) {
           const double qe = 1 - (x * x) / (L.s.a_el * L.s.a_el) - (y * y) / (L.s.b_el * L.s.b_el);
@@ -116,7 +116,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     any_plastic = any_plastic || (plastic && L.s.plastic);
   }
   double gamma_main = main ? main->g.gamma / units::deg : NAN;
-  double r_roll_main = main ? main->g.r_roll * 1e3 : NAN;
+  double r_roll_main = main ? main->g.r_roll * units::per_mm : NAN;
   // Grid methods: the patch carrying the largest normal force.
   const PatchResult* main_patch = nullptr;
   for (const PatchResult& P : r.patches) {
@@ -127,7 +127,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     gamma_main = main_patch->gamma / units::deg;
     r_roll_main = main_patch->r_roll * units::per_mm;
   }
-  auto h_y_mm = [](const LoadedEllipse& e) { return e.h_y * 1e3; };  // from the ellipse law (method.md §5)
+  auto h_y_mm = [](const LoadedEllipse& e) { return e.h_y * units::per_mm; };  // from the ellipse law (method.md §5)
   const bool failed = is_failed_row(r, status_text);
   if (want_csv) {
     std::string& s = f.cases;

@@ -14,16 +14,16 @@ using namespace cells;
 
 nlohmann::json profile_json(const Profile& p, double window) {
   return {{"source", p.source}, {"format", p.format}, {"kind", to_string(p.kind)},
-          {"sha256", p.checksum}, {"points", p.size()}, {"y_min_mm", p.y.front() * 1e3},
-          {"y_max_mm", p.y.back() * 1e3}, {"fit_window_mm", window * 1e3}, {"warnings", p.warnings}};
+          {"sha256", p.checksum}, {"points", p.size()}, {"y_min_mm", p.y.front() * units::per_mm},
+          {"y_max_mm", p.y.back() * units::per_mm}, {"fit_window_mm", window * units::per_mm}, {"warnings", p.warnings}};
 }
 
 nlohmann::json ellipses_json(const ContactGeometry& G) {
   nlohmann::json a = nlohmann::json::array();
   for (const PotentialEllipse& P : G.ellipses)
     a.push_back({{"ellipse", P.index}, {"tY_min_mm", grid_mm(P.tY_min)}, {"tY_max_mm", grid_mm(P.tY_max)},
-                 {"y_rail_min_mm", P.y_r_min * 1e3}, {"y_rail_max_mm", P.y_r_max * 1e3},
-                 {"y_wheel_min_mm", P.y_w_min * 1e3}, {"y_wheel_max_mm", P.y_w_max * 1e3}});
+                 {"y_rail_min_mm", P.y_r_min * units::per_mm}, {"y_rail_max_mm", P.y_r_max * units::per_mm},
+                 {"y_wheel_min_mm", P.y_w_min * units::per_mm}, {"y_wheel_max_mm", P.y_w_max * units::per_mm}});
   return a;
 }
 
@@ -70,8 +70,8 @@ void write_profiles_csv(const PairGeometry& pg, const std::string& path) {
   for (const Profile* p : {&pg.wheel, &pg.rail}) {
     for (std::size_t i = 0; i < p->size(); ++i) {
       s += to_string(p->kind);
-      s += ','; num(s, p->y[i] * 1e3);
-      s += ','; num(s, p->z[i] * 1e3);
+      s += ','; num(s, p->y[i] * units::per_mm);
+      s += ','; num(s, p->z[i] * units::per_mm);
       s += '\n';
     }
   }
@@ -86,14 +86,14 @@ void write_caf_csv(const ContactGeometry& G, const std::string& path) {
   for (std::size_t k = 0; k < G.tY.size(); ++k) {
     const CandidateGeom& c = G.main_at(k);
     num(s, grid_mm(G.tY[k]));
-    s += ','; num(s, c.y_r * 1e3);
-    s += ','; num(s, c.y_w * 1e3);
+    s += ','; num(s, c.y_r * units::per_mm);
+    s += ','; num(s, c.y_w * units::per_mm);
     s += ','; num(s, c.gamma / units::deg);
     s += ','; num(s, radius_mm(c.k_rxx));
     s += ','; num(s, radius_mm(c.k_wxx));
-    s += ','; num(s, c.R_wyy() * 1e3);
-    s += ','; num(s, c.r_roll * 1e3);
-    s += ','; num(s, -G.z_contact[k] * 1e3);
+    s += ','; num(s, c.R_wyy() * units::per_mm);
+    s += ','; num(s, c.r_roll * units::per_mm);
+    s += ','; num(s, -G.z_contact[k] * units::per_mm);
     s += ','; append_number(s, static_cast<long long>(G.main_strip[k]));
     s += ','; append_number(s, static_cast<long long>(G.main_ellipse[k] + 1));
     s += '\n';

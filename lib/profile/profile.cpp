@@ -1,5 +1,7 @@
 #include "profile/profile.hpp"
 
+#include "core/units.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -59,7 +61,7 @@ std::string to_string(const Inclination& i) {
 double inclination_angle(const Inclination& i) {
   switch (i.mode) {
     case Inclination::Mode::Ratio: return std::atan(1.0 / i.value);
-    case Inclination::Mode::Angle: return i.value * 3.14159265358979323846 / 180.0;
+    case Inclination::Mode::Angle: return i.value * units::pi / 180.0;
     default: return 0.0;
   }
 }

@@ -10,6 +10,7 @@
 
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
+#include "core/units.hpp"
 
 namespace mh::formats {
 
@@ -25,7 +26,7 @@ namespace mh::formats {
 //    the flange back.
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = units::pi;
 
 bool is_legend(const std::string& l) {  // "(Sd/Sh/qR)" possibly after the numbers; no '=' (a Key=Value line)
   const auto a = l.find('('), b = l.rfind(')');
