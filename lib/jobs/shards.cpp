@@ -96,12 +96,14 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
   // Summary of all shards: counts added up, by_status merged; `cases` and `pairs` are totals
   // of the whole run for unsharded-equal output (run: cases = total).
   nlohmann::json summary = nlohmann::json::object();
-  std::map<std::string, std::uint64_t> by_status;
+  std::map<std::string, std::uint64_t> by_status, warnings;
   for (const auto& sh : shards) {
     const nlohmann::json& su = sh.meta["summary"];
     for (auto it = su.begin(); it != su.end(); ++it) {
       if (it.key() == "by_status") {
         for (auto b = it.value().begin(); b != it.value().end(); ++b) by_status[b.key()] += b.value().get<std::uint64_t>();
+      } else if (it.key() == "warnings") {
+        for (auto b = it.value().begin(); b != it.value().end(); ++b) warnings[b.key()] += b.value().get<std::uint64_t>();
       } else if (!batch && it.key() == "cases") {
         summary["cases"] = it.value();
       } else {
@@ -110,6 +112,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     }
   }
   summary["by_status"] = by_status;
+  if (summary.contains("cases_with_warnings")) summary["warnings"] = warnings;
   const std::uint64_t failed = summary.value("failed", std::uint64_t{0}) + summary.value("invalid_pairs", std::uint64_t{0});
   const bool csv = shards[0].meta["csv"], json = shards[0].meta["json"], pressure = shards[0].meta["pressure"];
   std::vector<std::string> tables;
