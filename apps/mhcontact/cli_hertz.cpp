@@ -13,6 +13,7 @@
 #include "contact/ellipse_law.hpp"
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
+#include "core/plausible.hpp"
 #include "core/units.hpp"
 
 namespace mh {
@@ -38,6 +39,11 @@ constexpr const char* kHertzSchema = "mhcontact.hertz/1";
   throw InputError("hertz " + option, format_number(value), rule, hint);
 }
 
+/// Refuse a value outside its plausible range (core/plausible.hpp), as the case file does.
+void plausible_or_bad(const std::string& option, double value, const plausible::Range& r) {
+  if (!plausible::inside(r, value)) bad(option, value, plausible::rule(r), plausible::hint(r, value));
+}
+
 void run_hertz(const HertzCliOptions& o, CliContext& ctx) {
   // ---- Geometry (eq. 1): SI curvature sums [1/m] ----
   const bool by_AB = !std::isnan(o.A_per_mm) || !std::isnan(o.B_per_mm);
@@ -53,6 +59,8 @@ void run_hertz(const HertzCliOptions& o, CliContext& ctx) {
     if (!(o.B_per_mm > 0) || !std::isfinite(o.B_per_mm))
       bad("--B", o.B_per_mm, "B must be > 0 1/mm",
           "B <= 0: the profiles are conformal or diverge across the contact, no Hertzian ellipse");
+    plausible_or_bad("--A", o.A_per_mm, plausible::kCurvature_per_mm);
+    plausible_or_bad("--B", o.B_per_mm, plausible::kCurvature_per_mm);
     A = o.A_per_mm / units::mm;
     B = o.B_per_mm / units::mm;
   } else {
@@ -60,10 +68,12 @@ void run_hertz(const HertzCliOptions& o, CliContext& ctx) {
       throw InputError("hertz --R-wyy", "", "missing: the wheel radius in the rolling direction is required with the radii");
     if (!(o.R_wyy_mm > 0) || !std::isfinite(o.R_wyy_mm))
       bad("--R-wyy", o.R_wyy_mm, "R_wyy must be > 0 mm and finite");
+    plausible_or_bad("--R-wyy", o.R_wyy_mm, plausible::kRadius_mm);
     auto curv = [](double R_mm, const char* opt) {  // 1/R [1/m]; omitted = straight profile
       if (std::isnan(R_mm)) return 0.0;
       if (R_mm == 0 || !std::isfinite(R_mm))
         bad(opt, R_mm, "a profile radius must be non-zero and finite (mm)", "omit it for a straight profile");
+      plausible_or_bad(opt, std::fabs(R_mm), plausible::kProfileRadius_mm);
       return 1.0 / (R_mm * units::mm);
     };
     A = 1.0 / (2.0 * o.R_wyy_mm * units::mm);                            // (eq. 1)
@@ -76,11 +86,15 @@ void run_hertz(const HertzCliOptions& o, CliContext& ctx) {
   // ---- Load and material ----
   if (std::isnan(o.N_kN) || !(o.N_kN >= 0) || !std::isfinite(o.N_kN))
     bad("--N", o.N_kN, "the normal load must be >= 0 kN and finite");
+  if (o.N_kN != 0) plausible_or_bad("--N", o.N_kN, plausible::kQ_kN);  // 0: the unloaded ellipse
   if (!(o.E_GPa > 0) || !std::isfinite(o.E_GPa)) bad("--E", o.E_GPa, "Young's modulus must be > 0 GPa");
   if (!(o.nu > 0 && o.nu < 0.5)) bad("--nu", o.nu, "Poisson's ratio must be in (0, 0.5)");
+  plausible_or_bad("--E", o.E_GPa, plausible::kE_GPa);
+  plausible_or_bad("--nu", o.nu, plausible::kNu);
   const bool plastic = !std::isnan(o.p_lim_MPa);
   if (plastic && (!(o.p_lim_MPa > 0) || std::isinf(o.p_lim_MPa)))
     bad("--p-lim", o.p_lim_MPa, "the limit pressure must be > 0 MPa and finite", "omit it for an elastic contact");
+  if (plastic) plausible_or_bad("--p-lim", o.p_lim_MPa, plausible::kPlim_MPa);
   Material mat;
   mat.E = o.E_GPa * units::GPa;
   mat.nu = o.nu;

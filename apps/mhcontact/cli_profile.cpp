@@ -117,9 +117,9 @@ void print_info(const Profile& p, bool json, std::ostream& out) {
             " jitter points, " + std::to_string(c.folds) + " folds (" + std::to_string(c.fold_points) +
             " points dropped, " + std::to_string(c.crossings) + " crossing points added)";
     if (c.folds)
-      text += " at y " + format_number(std::round(c.y_from_mm * units::per_mm) / 1e3) + " … " +
-              format_number(std::round(c.y_to_mm * units::per_mm) / 1e3) + " mm, largest step back " +
-              format_number(std::round(c.largest_fold_mm * units::per_mm) / 1e3) + " mm";
+      text += " at y " + format_number(std::round(c.y_from_mm * 1e3) / 1e3) + " … " +
+              format_number(std::round(c.y_to_mm * 1e3) / 1e3) + " mm, largest step back " +
+              format_number(std::round(c.largest_fold_mm * 1e3) / 1e3) + " mm";
     text += "\n";
   }
   j["sha256"] = p.checksum;

@@ -31,7 +31,7 @@ void add_geometry_command(CLI::App& app, CliContext& ctx) {
 }
 
 void add_run_command(CLI::App& app, CliContext& ctx) {
-  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false, strips = false; std::string shard, digits = "10"; };
+  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false, strips = false, fail_on_warning = false; std::string shard, digits = "10"; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Solve every case of the case file's sweep (or of a batch manifest over many profile pairs) (writes DIR/cases.csv, DIR/ellipses.csv, "
@@ -47,6 +47,8 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
   cmd->add_flag("--strips", o->strips, "Strip method: also write DIR/strips.csv, one row per loaded strip");
   cmd->add_option("--digits", o->digits, "Significant digits of the numbers in the tables (1..17), or max for the shortest round-trip")
       ->capture_default_str();
+  cmd->add_flag("--fail-on-warning", o->fail_on_warning,
+                "Exit 1 when any case has a warning (e.g. non_hertzian_excluded), as when a case fails: for CI");
   cmd->add_flag("--force", o->force, "Write pressure.csv even when it would be larger than the limit of 10 GB");
   cmd->add_option("--shard", o->shard, "K/N: run only the K-th of N deterministic slices of the case list (join them with `mhcontact merge`)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or summary on standard error");
@@ -58,6 +60,7 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
     ro.csv = o->format != "json";
     ro.json = o->format != "csv";
     ro.threads = o->threads;
+    ro.fail_on_warning = o->fail_on_warning;
     ro.quiet = o->quiet;
     ro.pressure_grid = o->pressure_grid;
     ro.strips = o->strips;

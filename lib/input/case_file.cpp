@@ -1,6 +1,7 @@
 #include "input/case_file.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
+#include "core/plausible.hpp"
 #include "profile/standard_profiles.hpp"
 #include "core/units.hpp"
 
@@ -48,6 +50,33 @@ struct Ctx {
     const double d = number(obj, path, key);
     if (!(d > 0)) fail(path + "/" + key, &obj.at(key), "must be > 0");
     return d;
+  }
+  /// A number inside its plausible range (core/plausible.hpp), refused with the unit hint.
+  double plausible(const json& obj, const std::string& path, const std::string& key, const plausible::Range& r) const {
+    const double d = number(obj, path, key);
+    check(d, path + "/" + key, obj.at(key), r);
+    return d;
+  }
+  void check(double d, const std::string& path, const json& v, const plausible::Range& r) const {
+    if (!plausible::inside(r, d)) fail(path, &v, plausible::rule(r), plausible::hint(r, d));
+  }
+  /// An integer in [lo, hi], range-checked as an integer before any conversion (4294967297 must
+  /// not wrap to 1, 1e3 or 2.5 are not integers).
+  long long integer(const json& obj, const std::string& path, const std::string& key, long long lo, long long hi,
+                    std::string rule = {}) const {
+    const json& v = obj.at(key);
+    if (rule.empty()) rule = "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (!v.is_number_integer()) fail(path + "/" + key, &v, rule);
+    bool in_range;
+    if (v.is_number_unsigned()) {
+      const std::uint64_t u = v.get<std::uint64_t>();  // compared as unsigned first: no wrap
+      in_range = hi >= 0 && u <= static_cast<std::uint64_t>(hi) && static_cast<long long>(u) >= lo;
+    } else {
+      const std::int64_t i = v.get<std::int64_t>();
+      in_range = i >= lo && i <= hi;
+    }
+    if (!in_range) fail(path + "/" + key, &v, rule);
+    return v.is_number_unsigned() ? static_cast<long long>(v.get<std::uint64_t>()) : static_cast<long long>(v.get<std::int64_t>());
   }
   bool boolean(const json& obj, const std::string& path, const std::string& key) const {
     const json& v = obj.at(key);
@@ -112,6 +141,49 @@ ProfileSource parse_profile_source(const Ctx& c, const json& v, const std::strin
   return s;
 }
 
+// Decimal places of the shortest representation of v ("0.3" -> 1, "1e-05" -> 5, "2.5e-07" -> 8,
+// "1e+20" -> 0).
+int decimals(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  const std::string t(buf, r.ptr);
+  const auto e = t.find('e');
+  const std::string mant = t.substr(0, e);
+  const int exp10 = e == std::string::npos ? 0 : std::stoi(t.substr(e + 1));
+  const auto dot = mant.find('.');
+  const int frac = dot == std::string::npos ? 0 : static_cast<int>(mant.size() - dot - 1);
+  return std::max(0, frac - exp10);
+}
+
+// A range {from, to, step} counted and, where the inputs are short decimals, scaled to integers:
+// F = from·10^d, S = step·10^d, T = to·10^d with d the most decimals of the three. Values are
+// F + i·S for i = 0 … n−1 with n = floor((T − F) / S) + 1: `to` is included when it lies on the
+// grid (exactly, in the decimals given), otherwise the last value is the largest grid value below
+// `to`. Long decimals (d > 15) or huge integers fall back to from + i·step with a 1e-9 tolerance.
+struct RangeCount {
+  double count = 0;
+  long long F = 0, S = 0;
+  double scale = 0;
+};
+RangeCount range_count(double from, double to, double step) {
+  RangeCount rc;
+  const int d = std::max({decimals(from), decimals(to), decimals(step)});
+  if (d <= 15) {
+    const double sc = std::pow(10.0, d);
+    const double f = std::round(from * sc), t = std::round(to * sc), st = std::round(step * sc);
+    const double lim = 9007199254740992.0;  // 2^53: integers exact in a double
+    if (std::fabs(f) < lim && std::fabs(t) < lim && st >= 1 && st < lim && f / sc == from && t / sc == to && st / sc == step) {
+      rc.F = static_cast<long long>(f);
+      rc.S = static_cast<long long>(st);
+      rc.scale = sc;
+      rc.count = static_cast<double>((static_cast<long long>(t) - rc.F) / rc.S) + 1;
+      return rc;
+    }
+  }
+  rc.count = std::floor((to - from) / step + 1e-9) + 1;
+  return rc;
+}
+
 // Number of values an axis will have (0 when malformed: parse_axis then reports the error).
 double axis_count(const json& v) {
   if (v.is_array()) return static_cast<double>(v.size());
@@ -119,13 +191,16 @@ double axis_count(const json& v) {
   if (v.is_object() && v.contains("from") && v.contains("to") && v.contains("step") && v["from"].is_number() &&
       v["to"].is_number() && v["step"].is_number()) {
     const double from = v["from"].get<double>(), to = v["to"].get<double>(), step = v["step"].get<double>();
-    if (step > 0 && to >= from && std::isfinite((to - from) / step)) return std::floor((to - from) / step + 1e-9) + 1;
+    if (std::isfinite(from) && std::isfinite(to) && step > 0 && to >= from && std::isfinite((to - from) / step))
+      return range_count(from, to, step).count;
   }
   return 0;
 }
 
 // A sweep axis: a list of numbers or {"from", "to", "step"} (a range is not materialised).
-SweepAxis parse_axis(const Ctx& c, const json& v, const std::string& path, bool positive_values) {
+// Every value lies in the plausible range `r` (core/plausible.hpp): each list entry is checked,
+// a range by its first and last value.
+SweepAxis parse_axis(const Ctx& c, const json& v, const std::string& path, const plausible::Range& r) {
   SweepAxis out;
   if (v.is_array()) {
     if (v.empty()) c.fail(path, &v, "an empty list gives no cases");
@@ -133,7 +208,7 @@ SweepAxis parse_axis(const Ctx& c, const json& v, const std::string& path, bool 
       const std::string p = path + "/" + std::to_string(i);
       if (!v[i].is_number() || !std::isfinite(v[i].get<double>())) c.fail(p, &v[i], "must be a finite number");
       const double d = v[i].get<double>();
-      if (positive_values && !(d > 0)) c.fail(p, &v[i], "must be > 0");
+      c.check(d, p, v[i], r);
       out.list.push_back(d);
     }
     out.n = out.list.size();
@@ -142,7 +217,7 @@ SweepAxis parse_axis(const Ctx& c, const json& v, const std::string& path, bool 
   if (v.is_number()) {
     const double d = v.get<double>();
     if (!std::isfinite(d)) c.fail(path, &v, "must be a finite number");
-    if (positive_values && !(d > 0)) c.fail(path, &v, "must be > 0");
+    c.check(d, path, v, r);
     out.list = {d};
     out.n = 1;
     return out;
@@ -155,13 +230,17 @@ SweepAxis parse_axis(const Ctx& c, const json& v, const std::string& path, bool 
   const double step = c.number(v, path, "step");
   if (!(step > 0)) c.fail(path + "/step", &v.at("step"), "must be > 0");
   if (to < from) c.fail(path + "/to", &v.at("to"), "must be >= from (" + format_number(from) + ")");
-  const double count = std::floor((to - from) / step + 1e-9) + 1;
-  if (!(count <= static_cast<double>(kMaxCases)))
-    c.fail(path, &v, "gives " + format_number(count) + " values, more than the limit of " + std::to_string(kMaxCases) + " cases");
-  if (positive_values && !(from > 0)) c.fail(path + "/from", &v.at("from"), "every value must be > 0");
+  const RangeCount rc = range_count(from, to, step);
+  if (!(rc.count <= static_cast<double>(kMaxCases)))
+    c.fail(path, &v, "gives " + format_number(rc.count) + " values, more than the limit of " + std::to_string(kMaxCases) + " cases");
   out.from = from;
-  out.step = step;  // values from + i·step, by multiplication: no accumulated drift
-  out.n = static_cast<std::uint64_t>(count);
+  out.step = step;  // values from + i·step, by multiplication (or scaled integers): no accumulated drift
+  out.n = static_cast<std::uint64_t>(rc.count);
+  out.F = rc.F;
+  out.S = rc.S;
+  out.scale = rc.scale;
+  c.check(out.at(0), path + "/from", v.at("from"), r);
+  c.check(out.at(out.n - 1), path + "/to", v.at("to"), r);
   return out;
 }
 
@@ -228,8 +307,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   if (!w.contains("profile")) c.fail("/wheel/profile", nullptr, "required");
   cf.wheel = parse_profile_source(c, w.at("profile"), "/wheel/profile", path);
   if (w.contains("nominal_radius_mm")) {
-    const double r = c.positive(w, "/wheel", "nominal_radius_mm");
-    if (r < 100 || r > 2000) c.fail("/wheel/nominal_radius_mm", &w.at("nominal_radius_mm"), "must be between 100 and 2000 mm");
+    const double r = c.plausible(w, "/wheel", "nominal_radius_mm", plausible::kRadius_mm);
     cf.track.nominal_radius = r * units::mm;
   }
   // rail
@@ -337,13 +415,11 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     // to the common values).
     auto elastic = [&](const json& o, const std::string& path, double* E_out, double* nu_out) {
       if (o.contains("E_GPa")) {
-        const double E = c.positive(o, path, "E_GPa");
-        if (E > 2000) c.fail(path + "/E_GPa", &o.at("E_GPa"), "must be at most 2000 GPa (is it in MPa?)");
+        const double E = c.plausible(o, path, "E_GPa", plausible::kE_GPa);
         *E_out = E * units::GPa;
       }
       if (o.contains("nu")) {
-        const double nu = c.number(o, path, "nu");
-        if (!(nu > 0 && nu < 0.5)) c.fail(path + "/nu", &o.at("nu"), "must be in (0, 0.5)");
+        const double nu = c.plausible(o, path, "nu", plausible::kNu);
         *nu_out = nu;
       }
     };
@@ -368,8 +444,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
       if (cf.model != Model::Plastic)
         c.fail("/material/p_lim_MPa", &m.at("p_lim_MPa"), "is used by the plastic model only",
                "set \"model\": \"plastic\" or remove p_lim_MPa");
-      const double p = c.positive(m, "/material", "p_lim_MPa");
-      if (p > 20000) c.fail("/material/p_lim_MPa", &m.at("p_lim_MPa"), "must be at most 20000 MPa");
+      const double p = c.plausible(m, "/material", "p_lim_MPa", plausible::kPlim_MPa);
       cf.material.p_lim = p * units::MPa;
     }
   }
@@ -380,15 +455,8 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     const json& s = j.at("solver");
     c.only_keys(s, "/solver", {"rtol", "max_iterations", "exact_coefficients"});
     if (s.contains("rtol")) cf.solver.rtol = c.positive(s, "/solver", "rtol");
-    if (s.contains("max_iterations")) {
-      if (!s.at("max_iterations").is_number_integer()) c.fail("/solver/max_iterations", &s.at("max_iterations"), "must be an integer");
-      // Range-checked as an integer before any conversion (4294967297 must not wrap to 1).
-      const json& v = s.at("max_iterations");
-      const bool in_range = v.is_number_unsigned() ? v.get<std::uint64_t>() <= 10000u
-                                                   : (v.get<std::int64_t>() >= 1 && v.get<std::int64_t>() <= 10000);
-      if (!in_range) c.fail("/solver/max_iterations", &v, "must be an integer in [1, 10000]");
-      cf.solver.max_iterations = static_cast<int>(v.get<std::int64_t>());
-    }
+    if (s.contains("max_iterations"))
+      cf.solver.max_iterations = static_cast<int>(c.integer(s, "/solver", "max_iterations", 1, 10000));
     if (s.contains("exact_coefficients")) cf.solver.exact_coefficients = c.boolean(s, "/solver", "exact_coefficients");
     std::string why;
     if (!cf.solver.valid(&why)) c.fail("/solver", &s, why);
@@ -403,12 +471,8 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     if (h.contains("d_comb_mm")) o.d_comb = c.number(h, "/half_space", "d_comb_mm") * units::mm;
     if (h.contains("force_rtol")) o.force_rtol = c.positive(h, "/half_space", "force_rtol");
     if (h.contains("tol")) o.cg.tol = c.positive(h, "/half_space", "tol");
-    if (h.contains("max_iterations")) {
-      const json& v = h.at("max_iterations");
-      if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 100000)
-        c.fail("/half_space/max_iterations", &v, "must be an integer in [1, 100000]");
-      o.cg.max_iterations = static_cast<int>(v.get<long long>());
-    }
+    if (h.contains("max_iterations"))
+      o.cg.max_iterations = static_cast<int>(c.integer(h, "/half_space", "max_iterations", 1, 100000));
     std::string why;
     if (!o.valid(&why)) c.fail("/half_space", &h, why);
   }
@@ -422,10 +486,9 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     if (h.contains("force_rtol")) o.force_rtol = c.positive(h, "/strips", "force_rtol");
     if (h.contains("outlier_factor")) o.strips.outlier_factor = c.positive(h, "/strips", "outlier_factor");
     if (h.contains("gauss_points")) {
-      const json& v = h.at("gauss_points");
-      if (!v.is_number_integer() || v.get<long long>() < 2 || v.get<long long>() > 256 || v.get<long long>() % 2 != 0)
-        c.fail("/strips/gauss_points", &v, "must be an even integer in [2, 256]");
-      o.strips.gauss_points = static_cast<int>(v.get<long long>());
+      const long long g = c.integer(h, "/strips", "gauss_points", 2, 256, "must be an even integer in [2, 256]");
+      if (g % 2 != 0) c.fail("/strips/gauss_points", &h.at("gauss_points"), "must be an even integer in [2, 256]");
+      o.strips.gauss_points = static_cast<int>(g);
     }
     std::string why;
     if (!o.valid(&why)) c.fail("/strips", &h, why);
@@ -442,8 +505,8 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     if (n > static_cast<double>(kMaxCases))
       c.fail("/sweep", nullptr, "gives " + format_number(n) + " cases, more than the limit of " + std::to_string(kMaxCases),
              "split the study (shards) or coarsen the steps");
-    cf.sweep_tY_mm = parse_axis(c, s.at("tY_mm"), "/sweep/tY_mm", false);
-    cf.sweep_Q_kN = parse_axis(c, s.at("Q_kN"), "/sweep/Q_kN", true);
+    cf.sweep_tY_mm = parse_axis(c, s.at("tY_mm"), "/sweep/tY_mm", plausible::kTY_mm);
+    cf.sweep_Q_kN = parse_axis(c, s.at("Q_kN"), "/sweep/Q_kN", plausible::kQ_kN);
     cf.has_cases = true;
   } else if (j.contains("cases")) {
     const json& a = j.at("cases");
@@ -452,7 +515,8 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
       const std::string p = "/cases/" + std::to_string(i);
       c.only_keys(a[i], p, {"tY_mm", "Q_kN"});
       if (!a[i].contains("tY_mm") || !a[i].contains("Q_kN")) c.fail(p, &a[i], "needs tY_mm and Q_kN");
-      const double t = c.number(a[i], p, "tY_mm"), q = c.positive(a[i], p, "Q_kN");
+      // Every entry is checked (not a sample), whatever the length of the list.
+      const double t = c.plausible(a[i], p, "tY_mm", plausible::kTY_mm), q = c.plausible(a[i], p, "Q_kN", plausible::kQ_kN);
       cf.cases.push_back({t * units::mm, q * units::kN, t, q});
     }
     cf.has_cases = true;
@@ -460,10 +524,11 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   if (need_cases && !cf.has_cases) c.fail("/sweep", nullptr, "required: a \"sweep\" or a \"cases\" list");
   // The geometry range covers the default range and the sweep unless given.
   if (!range_given && cf.has_cases) {
-    for (std::uint64_t i = 0, n = cf.case_count(); i < n; i += (n > 100000 ? n / 100000 : 1)) {
-      const double t = cf.case_at(i).tY;
-      cf.geometry.tY_min = std::min(cf.geometry.tY_min, t);
-      cf.geometry.tY_max = std::max(cf.geometry.tY_max, t);
+    // Every case of a list, not a sample: a value at any index widens the range (it costs nothing
+    // next to the solve). A sweep's axis gives its ends directly.
+    for (const CasePoint& p : cf.cases) {
+      cf.geometry.tY_min = std::min(cf.geometry.tY_min, p.tY);
+      cf.geometry.tY_max = std::max(cf.geometry.tY_max, p.tY);
     }
     if (cf.sweep_tY_mm.size() > 0) {
       cf.geometry.tY_min = std::min(cf.geometry.tY_min, cf.sweep_tY_mm.min() * units::mm);

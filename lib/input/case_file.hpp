@@ -37,14 +37,24 @@ struct CasePoint {
   double Q_kN = 0;   ///< the value as given
 };
 
-/// One axis of a sweep, as given: an explicit list, or a range whose values from + i·step are
-/// computed when asked (never stored: memory does not grow with the sweep).
+/// One axis of a sweep, as given: an explicit list, or a range whose values are computed when
+/// asked (never stored: memory does not grow with the sweep). A range whose from and step have at
+/// most 15 decimals is generated in scaled integers, value i = (F + i·S) / 10^d with F = from·10^d,
+/// S = step·10^d: the value is the double nearest to the decimal the user meant, so it prints as
+/// that decimal ({"from": 0, "to": 1, "step": 0.3} gives 0, 0.3, 0.6, 0.9, never
+/// 0.8999999999999999). Otherwise from + i·step.
 struct SweepAxis {
   std::vector<double> list;   ///< explicit values, or empty for a range
   double from = 0, step = 0;  ///< range
   std::uint64_t n = 0;        ///< number of values
+  long long F = 0, S = 0;     ///< scaled range (when scale > 0): from = F / scale, step = S / scale
+  double scale = 0;           ///< 10^d, or 0 when the range is not scaled
   std::uint64_t size() const { return n; }
-  double at(std::uint64_t i) const { return list.empty() ? from + step * static_cast<double>(i) : list[i]; }
+  double at(std::uint64_t i) const {
+    if (!list.empty()) return list[i];
+    if (scale > 0) return static_cast<double>(F + S * static_cast<long long>(i)) / scale;
+    return from + step * static_cast<double>(i);
+  }
   double min() const;
   double max() const;
 };

@@ -153,7 +153,8 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   }
   const std::uint64_t failed = counts.failed;  // cases not ok, invalid pairs' cases included
   const nlohmann::json summary = {{"pairs", end - first}, {"invalid_pairs", invalid}, {"cases", cases_total},
-                                  {"failed", failed}, {"by_status", by_status}};
+                                  {"failed", failed}, {"by_status", by_status},
+                                  {"cases_with_warnings", counts.with_warnings}, {"warnings", counts.warnings}};
   if (jw) {
     jw->end_array();
     jw->member("summary", summary);
@@ -182,9 +183,12 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     if (opt.progress) err << "\n";
     err << "mhcontact run: " << (end - first) << " pairs (" << invalid << " invalid), " << cases_total << " cases";
     for (const auto& [s, v] : by_status) err << ", " << s << " " << v;
-    err << "; " << format_number(std::round(secs * units::per_mm) / 1e3) << " s; outputs in " << opt.out_dir << "\n";
+    for (const auto& [k, v] : counts.warnings) err << ", " << v << " with " << k;
+    err << "; " << format_number(std::round(secs * 1e3) / 1e3) << " s; outputs in " << opt.out_dir << "\n";
   }
-  return (failed || invalid) ? kExitCasesFailed : kExitOk;
+  if (!opt.quiet && opt.fail_on_warning && counts.with_warnings)
+    err << "mhcontact run: " << counts.with_warnings << " cases with warnings (--fail-on-warning): exit 1\n";
+  return (failed || invalid || (opt.fail_on_warning && counts.with_warnings)) ? kExitCasesFailed : kExitOk;
 }
 
 

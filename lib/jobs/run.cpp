@@ -69,7 +69,7 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
   if (!quiet)
     err << "mhcontact geometry: " << G.n_ellipses() << " potential ellipses over t_Y " << format_number(G.tY.front() * units::per_mm)
         << " .. " << format_number(G.tY.back() * units::per_mm) << " mm (" << G.tY.size() << " grid points, "
-        << G.strip_y.size() << " strips) in " << format_number(std::round(secs * units::per_mm) / 1e3) << " s; wrote "
+        << G.strip_y.size() << " strips) in " << format_number(std::round(secs * 1e3) / 1e3) << " s; wrote "
         << out_dir << "/caf.csv, geometry.json, profiles.csv\n";
   (void)out;
   return kExitOk;
@@ -158,7 +158,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (jw) {
     jw->end_array();
-    jw->member("summary", nlohmann::json{{"cases", n}, {"failed", failed}, {"by_status", by_status}});
+    jw->member("summary", counts.summary_json(n));
     jw->end();
   }
   if (fc) {
@@ -170,7 +170,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   if (opt.shard_count > 1 && !to_stdout) {
     nlohmann::json sh = {{"schema", "mhcontact.shard/1"}, {"index", opt.shard_index}, {"count", opt.shard_count},
                          {"unit", "case"}, {"first", first}, {"end", end}, {"total", n_all},
-                         {"summary", {{"cases", n_all}, {"failed", failed}, {"by_status", by_status}}},
+                         {"summary", counts.summary_json(n_all)},
                          {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0}, {"digits", opt.digits},
                          {"inputs", inputs_json(cf)}, {"profiles", profiles_json(pg)}};
     OutputFile f(rd->path("shard.json"));
@@ -180,18 +180,22 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   if (fj) fj->commit();
   if (fp) fp->commit();
   if (fs) fs->commit();
-  if (rd) rd->finish("run", program_json(), {{"digits", opt.digits ? nlohmann::json(opt.digits) : nlohmann::json("max")}, {"summary", {{"cases", n}, {"failed", failed}, {"by_status", by_status}}}});
+  if (rd) rd->finish("run", program_json(), {{"digits", opt.digits ? nlohmann::json(opt.digits) : nlohmann::json("max")}, {"summary", counts.summary_json(n)}});
   if (to_stdout) check_written(out, "standard output");
   if (!opt.quiet) {
     if (opt.progress) err << "\n";
     err << "mhcontact run: " << n << " cases";
     if (opt.shard_count > 1) err << " (shard " << opt.shard_index << "/" << opt.shard_count << ": cases " << first << " .. " << end - 1 << ")";
     for (const auto& [k, v] : by_status) err << ", " << k << " " << v;
-    err << "; " << G.n_ellipses() << " potential ellipses; " << format_number(std::round(secs * units::per_mm) / 1e3) << " s";
+    // Warnings reach the user (issue #10 item 3): cases with each kind of warning.
+    for (const auto& [k, v] : counts.warnings) err << ", " << v << " with " << k;
+    err << "; " << G.n_ellipses() << " potential ellipses; " << format_number(std::round(secs * 1e3) / 1e3) << " s";
     if (!to_stdout) err << "; outputs in " << opt.out_dir;
     err << "\n";
   }
-  return failed ? kExitCasesFailed : kExitOk;
+  if (!opt.quiet && opt.fail_on_warning && counts.with_warnings)
+    err << "mhcontact run: " << counts.with_warnings << " cases with warnings (--fail-on-warning): exit 1\n";
+  return (failed || (opt.fail_on_warning && counts.with_warnings)) ? kExitCasesFailed : kExitOk;
 }
 
 

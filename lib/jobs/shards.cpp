@@ -55,6 +55,16 @@ void append_csv(const std::string& path, std::ostream& out, std::string* header,
   while (in.read(buf, sizeof buf) || in.gcount() > 0) out.write(buf, in.gcount());
 }
 
+// An integer field of shard.json, range-checked as an integer before any conversion
+// (a count of 4294967297 must not wrap to 1; a string or 2.5 is an input error, not a crash).
+std::uint64_t uint_field(const nlohmann::json& m, const char* key, const std::string& where, std::uint64_t lo, std::uint64_t hi) {
+  const auto it = m.find(key);
+  if (it == m.end()) throw InputError(where + ": /" + key, "", "missing: not a shard description");
+  if (!it->is_number_unsigned() || it->get<std::uint64_t>() < lo || it->get<std::uint64_t>() > hi)
+    throw InputError(where + ": /" + key, it->dump(), "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return it->get<std::uint64_t>();
+}
+
 }  // namespace
 
 int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, std::ostream& err, bool quiet) {
@@ -69,7 +79,12 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     } catch (const nlohmann::json::exception& e) {
       throw InputError(p, "", std::string("not a shard description: ") + e.what());
     }
-    if (j.value("schema", "") != "mhcontact.shard/1") throw InputError(p, "", "not a shard description (schema mhcontact.shard/1)");
+    if (!j.is_object() || j.value("schema", "") != "mhcontact.shard/1") throw InputError(p, "", "not a shard description (schema mhcontact.shard/1)");
+    const std::uint64_t count = uint_field(j, "count", p, 1, 1000000);
+    uint_field(j, "index", p, 1, count);
+    const std::uint64_t total = uint_field(j, "total", p, 0, UINT64_MAX);
+    const std::uint64_t end = uint_field(j, "end", p, 0, total);
+    uint_field(j, "first", p, 0, end);
     shards.push_back({d, j});
   }
   std::sort(shards.begin(), shards.end(), [](const Shard& a, const Shard& b) { return a.meta["index"] < b.meta["index"]; });
@@ -96,12 +111,14 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
   // Summary of all shards: counts added up, by_status merged; `cases` and `pairs` are totals
   // of the whole run for unsharded-equal output (run: cases = total).
   nlohmann::json summary = nlohmann::json::object();
-  std::map<std::string, std::uint64_t> by_status;
+  std::map<std::string, std::uint64_t> by_status, warnings;
   for (const auto& sh : shards) {
     const nlohmann::json& su = sh.meta["summary"];
     for (auto it = su.begin(); it != su.end(); ++it) {
       if (it.key() == "by_status") {
         for (auto b = it.value().begin(); b != it.value().end(); ++b) by_status[b.key()] += b.value().get<std::uint64_t>();
+      } else if (it.key() == "warnings") {
+        for (auto b = it.value().begin(); b != it.value().end(); ++b) warnings[b.key()] += b.value().get<std::uint64_t>();
       } else if (!batch && it.key() == "cases") {
         summary["cases"] = it.value();
       } else {
@@ -110,6 +127,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     }
   }
   summary["by_status"] = by_status;
+  if (summary.contains("cases_with_warnings")) summary["warnings"] = warnings;
   const std::uint64_t failed = summary.value("failed", std::uint64_t{0}) + summary.value("invalid_pairs", std::uint64_t{0});
   const bool csv = shards[0].meta["csv"], json = shards[0].meta["json"], pressure = shards[0].meta["pressure"];
   std::vector<std::string> tables;

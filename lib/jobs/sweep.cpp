@@ -161,6 +161,7 @@ struct Block {
 struct Slot {
   std::vector<Block> blocks;
   std::vector<CaseStatus> status;
+  std::vector<std::vector<std::string>> warning_kinds;  ///< per case, each kind once
   std::size_t m = 0;
 };
 
@@ -257,6 +258,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   for (Slot& s : slots) {
     s.blocks.resize(nt);
     s.status.resize(static_cast<std::size_t>(std::min<std::uint64_t>(chunk, n)));
+    s.warning_kinds.resize(s.status.size());
   }
   std::mutex fail_mutex;
   std::uint64_t fail_case = UINT64_MAX;
@@ -288,6 +290,12 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
           if (g_case_hook) g_case_hook(c0 + i);
           const CaseResult r = solve_method(G, cf.material, cp.tY, cp.Q, mo);
           S.status[i] = r.status;
+          auto& kinds = S.warning_kinds[i];
+          kinds.clear();
+          for (const std::string& w : r.warnings) {
+            std::string k = w.substr(0, w.find(':'));
+            if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(std::move(k));
+          }
           format_case(c0 + i, cp, r, plastic, want_csv, want_json, f);
           // The per-contact tables: ellipses (multi-Hertzian) and patches (grid methods); "auto"
           // writes each case into the table of the method that solved it.
@@ -330,6 +338,8 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
     for (std::size_t i = 0; i < m; ++i) {
       ++counts->by_status[to_string(S.status[i])];
       if (S.status[i] != CaseStatus::Ok) ++counts->failed;
+      for (const std::string& k : S.warning_kinds[i]) ++counts->warnings[k];
+      if (!S.warning_kinds[i].empty()) ++counts->with_warnings;
     }
     if (writer) {
       writer->submit(&S);

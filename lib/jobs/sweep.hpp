@@ -35,6 +35,7 @@ struct RunOptions {
   bool strips = false;
   /// Write pressure.csv even when its estimated size is above kPressureLimitBytes (--force).
   bool force = false;
+  bool fail_on_warning = false;  ///< exit 1 when any case has a warning (for CI), issue #10 item 3
   /// Significant digits of the numbers in the tables (--digits N), 0 = shortest round-trip (--digits max).
   int digits = 10;
 };
@@ -66,6 +67,15 @@ struct Sinks {
 struct SweepCounts {
   std::map<std::string, std::uint64_t> by_status;
   std::uint64_t failed = 0;  ///< cases not `ok`
+  /// Cases with at least one warning of each kind (the text before the first ':' of a warning,
+  /// e.g. "non_hertzian_excluded"); a case with several warnings of one kind counts once.
+  std::map<std::string, std::uint64_t> warnings;
+  std::uint64_t with_warnings = 0;  ///< cases with any warning
+  /// The summary object of results.json, run.json and shard.json.
+  nlohmann::json summary_json(std::uint64_t cases) const {
+    return {{"cases", cases}, {"failed", failed}, {"by_status", by_status}, {"cases_with_warnings", with_warnings},
+            {"warnings", warnings}};
+  }
 };
 
 /// Solve cases [first, end) of `cf` on `G` in parallel chunks and write them in order.

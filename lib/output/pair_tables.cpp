@@ -30,7 +30,7 @@ nlohmann::json ellipses_json(const ContactGeometry& G) {
 namespace {
 nlohmann::json axis_json(const SweepAxis& a) {
   if (!a.list.empty()) return a.list;
-  return {{"from", a.from}, {"to", a.from + a.step * static_cast<double>(a.n - 1)}, {"step", a.step}};
+  return {{"from", a.from}, {"to", a.at(a.n - 1)}, {"step", a.step}};
 }
 }  // namespace
 

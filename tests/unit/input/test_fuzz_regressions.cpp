@@ -32,3 +32,17 @@ int replay(const std::string& target, int (*one)(const uint8_t*, size_t)) {
 TEST_CASE("fuzz corpora and regressions: profile readers", "[fuzz]") { REQUIRE(replay("profile", mh::fuzz::profile_one) >= 15); }
 TEST_CASE("fuzz corpora and regressions: case files and manifests", "[fuzz]") { REQUIRE(replay("casefile", mh::fuzz::casefile_one) >= 4); }
 TEST_CASE("fuzz corpora and regressions: CSV reader", "[fuzz]") { REQUIRE(replay("csv", mh::fuzz::csv_one) >= 5); }
+
+TEST_CASE("fuzz harness invariants can fail", "[fuzz]") {
+  // The checks the harnesses return kBroken on: a NaN or null among the resolved inputs, an
+  // error message with a raw control byte or without a location.
+  CHECK(mh::fuzz::all_finite(nlohmann::json{{"a", 1.5}, {"b", {1, 2}}}));
+  CHECK_FALSE(mh::fuzz::all_finite(nlohmann::json{{"a", std::nan("")}}));
+  CHECK_FALSE(mh::fuzz::all_finite(nlohmann::json{{"a", nullptr}}));
+  CHECK(mh::fuzz::good_error(mh::InputError("f.json: /x", "1", "must be > 0")));
+  CHECK_FALSE(mh::fuzz::good_error(mh::InputError("", "1", "must be > 0")));
+  // A case file whose load is implausible is refused (an InputError, not a case with Q = 1e5).
+  const std::string text = R"({"wheel": {"profile": {"standard": "S1002"}}, "rail": {"profile": {"standard": "60E1"},
+    "inclination": "1:40"}, "sweep": {"tY_mm": [0], "Q_kN": [100000]}})";
+  CHECK(mh::fuzz::casefile_one(reinterpret_cast<const uint8_t*>(text.data()), text.size()) == 0);
+}
