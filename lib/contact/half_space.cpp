@@ -101,18 +101,8 @@ CaseResult solve_half_space(const ContactGeometry& G, const Material& mat, doubl
                             const HalfSpaceOptions& opt) {
   CaseResult r;
   r.method = Method::HalfSpace;
-  r.dz = NAN;
-  if (!(Q > 0) || !std::isfinite(Q)) {
-    r.status = CaseStatus::NoContact;
-    r.message = "Q must be > 0";
-    return r;
-  }
-  if (!G.covers(tY) || !G.wheel_curve || !G.rail_curve) {
-    r.status = CaseStatus::OutOfRange;
-    r.message = "t_Y = " + format_number(tY * 1e3) + " mm outside the geometry table [" +
-                format_number(G.tY.front() * 1e3) + ", " + format_number(G.tY.back() * 1e3) + "] mm";
-    return r;
-  }
+  double dz_est = 0;
+  if (!begin_grid_case(G, mat, tY, Q, r, &dz_est)) return r;
   if (std::isfinite(mat.p_lim)) {
     // Plastic model: when the elastic solution stays below the cap it is the solution of the
     // capped problem too (it satisfies every condition, and the solution is unique), exactly.
@@ -125,13 +115,6 @@ CaseResult solve_half_space(const ContactGeometry& G, const Material& mat, doubl
   const double H = mat.compliance();
   const double p_lim = mat.p_lim;
 
-  // First estimate of the vertical approach: the multi-Hertzian one (below a microsecond), or a
-  // Hertz-like 0.05 mm when it has none.
-  double dz_est = 0.05e-3;
-  {
-    const CaseResult mhr = solve_case(G, mat, tY, Q);
-    if (mhr.status == CaseStatus::Ok && mhr.approach > 0 && std::isfinite(mhr.approach)) dz_est = mhr.approach;
-  }
 
   PatchDriverOptions dopt;
   dopt.d_comb = opt.d_comb;

@@ -3,7 +3,29 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/multi_hertz.hpp"
+#include "core/numfmt.hpp"
+
 namespace mh {
+
+bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, double Q, CaseResult& r, double* dz_est) {
+  r.dz = NAN;
+  if (!(Q > 0) || !std::isfinite(Q)) {
+    r.status = CaseStatus::NoContact;
+    r.message = "Q must be > 0";
+    return false;
+  }
+  if (!G.covers(tY) || !G.wheel_curve || !G.rail_curve) {
+    r.status = CaseStatus::OutOfRange;
+    r.message = "t_Y = " + format_number(tY * 1e3) + " mm outside the geometry table [" +
+                format_number(G.tY.front() * 1e3) + ", " + format_number(G.tY.back() * 1e3) + "] mm";
+    return false;
+  }
+  *dz_est = 0.05e-3;
+  const CaseResult mhr = solve_case(G, mat, tY, Q);
+  if (mhr.status == CaseStatus::Ok && mhr.approach > 0 && std::isfinite(mhr.approach)) *dz_est = mhr.approach;
+  return true;
+}
 
 PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,
                                 const PatchSolverFactory& make) {

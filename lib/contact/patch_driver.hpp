@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "contact/case_result.hpp"
+#include "contact/hertz.hpp"
 #include "geometry/contact_patches.hpp"
 
 namespace mh {
@@ -54,6 +55,12 @@ struct PatchDriverResult {
   std::vector<PatchRegion> regions;                   ///< of the final placement
   std::vector<std::unique_ptr<PatchSolver>> solvers;  ///< their solvers, holding the solution at dz
 };
+
+/// What every grid method does before solving a case: refuse Q ≤ 0 (`no_contact`) and a t_Y outside
+/// the geometry (`out_of_range`), with r's status and message set (returns false), else return
+/// true with *dz_est the first estimate of the vertical approach: the multi-Hertzian one (below a
+/// microsecond), or 0.05 mm when it has none.
+bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, double Q, CaseResult& r, double* dz_est);
 
 /// Solve for the load Q [N], starting from the approach estimate dz_est [m] (> 0).
 PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,

@@ -82,12 +82,8 @@ CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, dou
                               const StripMethodOptions& opt) {
   CaseResult r;
   r.method = Method::Strips;
-  r.dz = NAN;
-  if (!(Q > 0) || !std::isfinite(Q)) {
-    r.status = CaseStatus::NoContact;
-    r.message = "Q must be > 0";
-    return r;
-  }
+  double dz_est = 0;
+  if (!begin_grid_case(G, mat, tY, Q, r, &dz_est)) return r;
   if (!G.covers(tY) || !G.wheel_curve || !G.rail_curve) {
     r.status = CaseStatus::OutOfRange;
     r.message = "t_Y = " + format_number(tY * 1e3) + " mm outside the geometry table [" +
@@ -96,11 +92,6 @@ CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, dou
   }
   const WheelRailGap gap(G, tY);
   const double H = mat.compliance(), p_lim = mat.p_lim;
-  double dz_est = 0.05e-3;
-  {
-    const CaseResult mhr = solve_case(G, mat, tY, Q);
-    if (mhr.status == CaseStatus::Ok && mhr.approach > 0 && std::isfinite(mhr.approach)) dz_est = mhr.approach;
-  }
   PatchDriverOptions dopt;
   dopt.d_comb = opt.d_comb;
   dopt.margin = opt.margin;
