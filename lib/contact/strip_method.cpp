@@ -84,12 +84,6 @@ CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, dou
   r.method = Method::Strips;
   double dz_est = 0;
   if (!begin_grid_case(G, mat, tY, Q, r, &dz_est)) return r;
-  if (!G.covers(tY) || !G.wheel_curve || !G.rail_curve) {
-    r.status = CaseStatus::OutOfRange;
-    r.message = "t_Y = " + format_number(tY * 1e3) + " mm outside the geometry table [" +
-                format_number(G.tY.front() * 1e3) + ", " + format_number(G.tY.back() * 1e3) + "] mm";
-    return r;
-  }
   const WheelRailGap gap(G, tY);
   const double H = mat.compliance(), p_lim = mat.p_lim;
   PatchDriverOptions dopt;
