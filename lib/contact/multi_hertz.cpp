@@ -179,6 +179,9 @@ CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, 
     L.h_y = c.law.h_y;
     L.s = ellipse_state(c.law, h);
     L.validity = hertz_validity(G, c.g, L.s.b, opt.validity);
+    // The contact point on each profile (issue #14 item 3): for plots and checks.
+    if (G.rail_curve) L.z_r = G.rail_curve->z(c.g.y_r);
+    if (G.wheel_curve) L.z_w = G.wheel_curve->z(c.g.y_w);
     if (!L.validity.valid)
       r.warnings.push_back("non_hertzian:ellipse=" + std::to_string(c.ellipse) + ":" + L.validity.describe(opt.validity));
     r.Fz += L.s.N * c.cg;
