@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
 """Plot the contact geometry written by `mhcontact geometry CASE -o DIR`.
 
-    plot_geometry.py DIR [--tY MM] [-o PREFIX]
+    plot_geometry.py DIR [--tY MM] [--pair P] [-o PREFIX]
+
+DIR is the output directory of `mhcontact geometry CASE`, or of `mhcontact geometry MANIFEST` or
+a batch `mhcontact run MANIFEST` (both have DIR/pairs.csv): then --pair P plots the geometry of
+pair P (DIR/pairs/P/).
 
 Writes PREFIX_caf.png: the contact angle function gamma(t_Y) with the potential-ellipse
 intervals shaded (as Fig. 2 of Sebes et al. 2014), and PREFIX_profiles.png: the wheel placed
@@ -29,15 +33,34 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("dir", help="output directory of `mhcontact geometry`")
     ap.add_argument("--tY", type=float, default=5.0, help="t_Y [mm] of the profile plot (default 5)")
-    ap.add_argument("-o", "--output", help="prefix of the PNG files (default DIR/geometry)")
+    ap.add_argument("--pair", type=int, help="profile pair of a batch directory (column `pair` of pairs.csv)")
+    ap.add_argument("-o", "--output", help="prefix of the PNG files (default DIR/geometry, or DIR/geometry_pair_P)")
     a = ap.parse_args(argv)
+    batch = os.path.exists(os.path.join(a.dir, "pairs.csv"))
+    if batch and a.pair is None:
+        sys.exit(f"plot_geometry.py: {a.dir} is a batch over several profile pairs (pairs.csv): "
+                 f"give --pair P with P from the column `pair` of {a.dir}/pairs.csv")
+    if not batch and a.pair is not None:
+        sys.exit(f"plot_geometry.py: --pair is for batch directories; {a.dir} holds one pair (no pairs.csv)")
+    d = os.path.join(a.dir, "pairs", str(a.pair)) if batch else a.dir
     try:
-        caf = read_csv(os.path.join(a.dir, "caf.csv"))
-        geo = json.load(open(os.path.join(a.dir, "geometry.json")))
-        prof = read_csv(os.path.join(a.dir, "profiles.csv"))
+        caf = read_csv(os.path.join(d, "caf.csv"))
+        geo = json.load(open(os.path.join(d, "geometry.json")))
+        prof = read_csv(os.path.join(d, "profiles.csv"))
     except OSError as e:
         sys.exit(f"plot_geometry.py: {e}")
-    prefix = a.output or os.path.join(a.dir, "geometry")
+    prefix = a.output or os.path.join(a.dir, "geometry" if not batch else f"geometry_pair_{a.pair}")
+    inputs = geo.get("inputs") or {}
+
+    def pname(side):
+        p = side.get("profile", side) if isinstance(side, dict) else side
+        if isinstance(p, dict):
+            p = p.get("file") or p.get("standard") or ""
+        return os.path.basename(str(p))
+    pair_txt = (f"pair {a.pair}: " if batch else "") + f"{pname(inputs.get('wheel', {}))} / {pname(inputs.get('rail', {}))}"
+    model = inputs.get("model", "elastic")
+    plim = (inputs.get("material") or {}).get("p_lim_MPa")
+    model_txt = f"{model}, p_lim = {plim:g} MPa" if isinstance(plim, (int, float)) else f"{model}, p_lim = none"
     tY = [float(r["tY_mm"]) for r in caf]
     gam = [float(r["gamma_deg"]) for r in caf]
     ells = geo["potential_ellipses"]
@@ -55,7 +78,7 @@ def main(argv=None):
         ax.plot(xs, ys, color=colors[i % len(colors)], lw=1.5)
     ax.set_xlabel("t_Y [mm]")
     ax.set_ylabel("contact angle gamma [deg]")
-    ax.set_title(f"Contact angle function: {len(ells)} potential ellipses")
+    ax.set_title(f"{pair_txt} ({model_txt})\ncontact angle function: {len(ells)} potential ellipses", fontsize=10)
     ax.grid(True, alpha=0.3)
     fig.tight_layout()
     fig.savefig(prefix + "_caf.png", dpi=120)
@@ -88,11 +111,11 @@ def main(argv=None):
     ax.set_aspect("equal")
     ax.set_xlabel("y [mm] (towards the field side)")
     ax.set_ylabel("z [mm]")
-    ax.set_title(f"Strips of the potential ellipses at t_Y = {tY[k]:g} mm")
-    ax.legend(loc="lower right", fontsize=8)
+    ax.set_title(f"{pair_txt} ({model_txt})\nstrips of the potential ellipses at t_Y = {tY[k]:g} mm", fontsize=10)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0, fontsize=8)
     ax.grid(True, alpha=0.3)
     fig.tight_layout()
-    fig.savefig(prefix + "_profiles.png", dpi=120)
+    fig.savefig(prefix + "_profiles.png", dpi=120, bbox_inches="tight")  # legend outside, right
     plt.close(fig)
     print(f"wrote {prefix}_caf.png, {prefix}_profiles.png")
 

@@ -18,13 +18,18 @@ void add_geometry_command(CLI::App& app, CliContext& ctx) {
   CLI::App* cmd = app.add_subcommand(
       "geometry", "Contact geometry of the case's profile pair: CAF, radii and potential ellipses "
                   "(writes DIR/caf.csv and DIR/geometry.json)");
-  cmd->add_option("case", o->case_file, "Case file (JSON)")->required();
+  cmd->add_option("case", o->case_file, "Case file or batch manifest (JSON); a manifest writes DIR/pairs/<k>/ per pair")->required();
   cmd->add_option("-o,--output", o->out_dir, "Output directory (created if missing)")->required();
   cmd->add_option("--digits", o->digits, "Significant digits of the numbers in the tables (1..17), or max for the shortest round-trip")
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "No summary on standard error");
   cmd->callback([o, &ctx] {
     const int digits = parse_digits(o->digits);
+    const nlohmann::json j = read_json_file(o->case_file);
+    if (is_manifest(j)) {
+      ctx.exit_code = geometry_batch_job(j, o->case_file, o->out_dir, ctx.err, o->quiet, digits);
+      return;
+    }
     const CaseFile cf = load_case_file(o->case_file, false);
     ctx.exit_code = geometry_job(cf, o->out_dir, ctx.out, ctx.err, o->quiet, digits);
   });

@@ -32,6 +32,8 @@ struct LoadedEllipse {
   double h_y = INFINITY;    ///< [m] yield penetration of its law (docs/method.md §5); INFINITY when elastic
   EllipseState s;           ///< h0, N, a, b, p0, ... (ellipse_law.hpp)
   HertzValidity validity;   ///< Hertz assumptions checked on this patch (hertz_validity.hpp)
+  double z_r = 0;           ///< [m] rail profile z at y_r (the rail's frame, as in profiles.csv)
+  double z_w = 0;           ///< [m] wheel profile z at y_w (the wheel's frame, as in profiles.csv)
 };
 
 /// One contact patch of a grid method (half-space, strips): its own tangent plane (docs/method.md §8).

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -27,6 +29,38 @@ struct Cand {
   EllipseLaw law;
 };
 
+std::uint64_t bits(double v) {
+  std::uint64_t u;
+  std::memcpy(&u, &v, sizeof u);
+  return u;
+}
+
+// The law of an ellipse depends only on (A, B, material, exact): the same for every Q at one t_Y,
+// and the sweep runs Q inside t_Y. One slot per potential ellipse remembers the last law built;
+// a hit needs A and B bit-identical, so results are unchanged (issue #14 item 6).
+struct LawSlot {
+  bool used = false;
+  std::uint64_t A = 0, B = 0;
+  bool hertzian = false;
+  EllipseLaw law;
+};
+struct LawCache {
+  std::uint64_t E = 0, nu = 0, E_rail = 0, nu_rail = 0, p_lim = 0;
+  bool exact = false;
+  std::vector<LawSlot> slots;
+  // Forget every slot when the material or the coefficient path changed.
+  void key(const Material& m, bool ex, std::size_t ne) {
+    const bool same = bits(m.E) == E && bits(m.nu) == nu && bits(m.E_rail) == E_rail &&
+                      bits(m.nu_rail) == nu_rail && bits(m.p_lim) == p_lim && ex == exact;
+    if (!same) {
+      E = bits(m.E); nu = bits(m.nu); E_rail = bits(m.E_rail); nu_rail = bits(m.nu_rail); p_lim = bits(m.p_lim);
+      exact = ex;
+      slots.clear();
+    }
+    if (slots.size() < ne) slots.resize(ne);
+  }
+};
+
 }  // namespace
 
 CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, double Q,
@@ -46,6 +80,8 @@ CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, 
   const std::size_t ne = G.n_ellipses();
   thread_local std::vector<CandidateGeom> geo;
   thread_local std::vector<Cand> cs;
+  thread_local LawCache cache;
+  cache.key(mat, opt.exact_coefficients, ne);
   geo.resize(ne);
   cs.clear();
   int main = 0;
@@ -61,10 +97,21 @@ CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, 
     c.sg = std::sin(c.g.gamma);
     c.hertzian = c.B > 0 && c.A > 0 && std::isfinite(c.A) && std::isfinite(c.B);
     if (c.hertzian) {
-      try {
-        c.law = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients);
-      } catch (const std::exception&) {
-        c.hertzian = false;  // e.g. λ beyond the Hertz range: nearly conformal, no ellipse
+      LawSlot& slot = cache.slots[e];
+      if (slot.used && slot.A == bits(c.A) && slot.B == bits(c.B)) {
+        c.hertzian = slot.hertzian;
+        c.law = slot.law;
+      } else {
+        try {
+          c.law = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients);
+        } catch (const std::exception&) {
+          c.hertzian = false;  // e.g. λ beyond the Hertz range: nearly conformal, no ellipse
+        }
+        slot.used = true;
+        slot.A = bits(c.A);
+        slot.B = bits(c.B);
+        slot.hertzian = c.hertzian;
+        slot.law = c.law;
       }
     }
     cs.push_back(c);
@@ -132,6 +179,9 @@ CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, 
     L.h_y = c.law.h_y;
     L.s = ellipse_state(c.law, h);
     L.validity = hertz_validity(G, c.g, L.s.b, opt.validity);
+    // The contact point on each profile (issue #14 item 3): for plots and checks.
+    if (G.rail_curve) L.z_r = G.rail_curve->z(c.g.y_r);
+    if (G.wheel_curve) L.z_w = G.wheel_curve->z(c.g.y_w);
     if (!L.validity.valid)
       r.warnings.push_back("non_hertzian:ellipse=" + std::to_string(c.ellipse) + ":" + L.validity.describe(opt.validity));
     r.Fz += L.s.N * c.cg;

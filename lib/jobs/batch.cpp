@@ -128,6 +128,9 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     }
     if (pg) {
       if (!opt.quiet) warn_profiles(*pg, err);
+      // Each pair can be inspected on its own (issue #14 item 4): its profiles, CAF and potential
+      // ellipses, as `mhcontact geometry` writes them for one pair.
+      write_pair_geometry(cf, *pg, rd, "pairs/" + std::to_string(k) + "/", opt.out_dir);
       Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fpa ? &fpa->stream() : nullptr,
                   fp ? &fp->stream() : nullptr, nullptr, pw.get(), prefix};
       solve_cases(cf, pg->geo, 0, n, quiet_opt, sinks, &counts, err);

@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "core/units.hpp"
+#include "input/manifest.hpp"
 #include "core/numfmt.hpp"
 #include "output/case_tables.hpp"
 #include "output/cells.hpp"
@@ -39,6 +40,59 @@ PairGeometry build_pair_geometry(const CaseFile& cf) {
   return pg;
 }
 
+void write_pair_geometry(const CaseFile& cf, const PairGeometry& pg, RunDirectory& rd, const std::string& prefix,
+                         const std::string& out_dir) {
+  const ContactGeometry& G = pg.geo;
+  write_caf_csv(G, rd.path(prefix + "caf.csv"));
+  write_profiles_csv(pg, rd.path(prefix + "profiles.csv"));
+  nlohmann::json j;
+  j["schema"] = kGeometrySchema;
+  j["program"] = program_json();
+  j["inputs"] = inputs_json(cf, out_dir);
+  j["profiles"] = profiles_json(pg);
+  j["y_offset_mm"] = G.y_offset * units::per_mm;
+  j["rail_gauge_point_y_mm"] = G.rail_gauge_y * units::per_mm;
+  j["strips"] = G.strip_y.size();
+  j["grid_points"] = G.tY.size();
+  j["potential_ellipses"] = ellipses_json(G);
+  OutputFile f(rd.path(prefix + "geometry.json"));
+  f.stream() << j.dump(2) << "\n";
+  f.commit();
+}
+
+int geometry_batch_job(const nlohmann::json& mj, const std::string& manifest_path, const std::string& out_dir,
+                       std::ostream& err, bool quiet, int digits) {
+  const cells::DigitsScope digits_scope(digits);
+  const Manifest m = parse_manifest(mj, manifest_path);
+  RunDirectory rd(out_dir);
+  OutputFile fp(rd.path("pairs.csv"));
+  fp.stream() << "pair,name,status,n_ellipses,message\n";
+  std::uint64_t invalid = 0;
+  for (std::size_t k = 0; k < m.pairs.size(); ++k) {
+    std::string row = std::to_string(k) + ",";
+    cells::csv_text(row, m.pairs[k].name);
+    try {
+      const CaseFile cf = pair_case(m, k);
+      const PairGeometry pg = build_pair_geometry(cf);
+      if (!quiet) warn_profiles(pg, err);
+      write_pair_geometry(cf, pg, rd, "pairs/" + std::to_string(k) + "/", out_dir);
+      row += ",ok," + std::to_string(pg.geo.n_ellipses()) + ",";
+    } catch (const InputError& e) {
+      ++invalid;
+      row += ",invalid_pair,,";
+      cells::csv_text(row, e.what());
+    }
+    fp.stream() << row << "\n";
+  }
+  fp.commit();
+  rd.finish("geometry", program_json(), {{"digits", digits ? nlohmann::json(digits) : nlohmann::json("max")},
+                                         {"pairs", m.pairs.size()}, {"invalid_pairs", invalid}});
+  if (!quiet)
+    err << "mhcontact geometry: " << m.pairs.size() << " pairs (" << invalid << " invalid); wrote " << out_dir
+        << "/pairs.csv and pairs/<k>/caf.csv, geometry.json, profiles.csv\n";
+  return invalid ? kExitCasesFailed : kExitOk;
+}
+
 int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& out, std::ostream& err, bool quiet,
                  int digits) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -47,23 +101,7 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
   const ContactGeometry& G = pg.geo;
   if (!quiet) warn_profiles(pg, err);
   RunDirectory rd(out_dir);
-  write_caf_csv(G, rd.path("caf.csv"));
-  write_profiles_csv(pg, rd.path("profiles.csv"));
-  {
-    nlohmann::json j;
-    j["schema"] = kGeometrySchema;
-    j["program"] = program_json();
-    j["inputs"] = inputs_json(cf, out_dir);
-    j["profiles"] = profiles_json(pg);
-    j["y_offset_mm"] = G.y_offset * units::per_mm;
-    j["rail_gauge_point_y_mm"] = G.rail_gauge_y * units::per_mm;
-    j["strips"] = G.strip_y.size();
-    j["grid_points"] = G.tY.size();
-    j["potential_ellipses"] = ellipses_json(G);
-    OutputFile f(rd.path("geometry.json"));
-    f.stream() << j.dump(2) << "\n";
-    f.commit();
-  }
+  write_pair_geometry(cf, pg, rd, "", out_dir);
   rd.finish("geometry", program_json(), {{"digits", digits ? nlohmann::json(digits) : nlohmann::json("max")}});
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!quiet)

@@ -19,6 +19,15 @@ void warn_profiles(const PairGeometry& pg, std::ostream& err);
 
 /// `mhcontact geometry`: writes DIR/caf.csv, DIR/geometry.json and DIR/profiles.csv. Returns the exit code.
 /// `digits`: significant digits of the numbers in caf.csv and profiles.csv (0 = shortest round-trip).
+class RunDirectory;
+/// The geometry files of one profile pair into `rd` under `prefix` ("" or "pairs/<k>/"):
+/// caf.csv, profiles.csv and geometry.json (potential ellipses, offsets, inputs).
+void write_pair_geometry(const CaseFile& cf, const PairGeometry& pg, RunDirectory& rd, const std::string& prefix,
+                         const std::string& out_dir);
+/// `mhcontact geometry MANIFEST -o DIR`: pairs/<k>/{caf.csv,profiles.csv,geometry.json} for every
+/// pair and pairs.csv; an invalid pair is listed with its message (exit 1).
+int geometry_batch_job(const nlohmann::json& manifest, const std::string& manifest_path, const std::string& out_dir,
+                       std::ostream& err, bool quiet, int digits);
 int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& out, std::ostream& err, bool quiet,
                  int digits = 10);
 

@@ -65,6 +65,13 @@ const Col kPlasticTailCols[] = {
     {"area_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a * e.s.b * units::per_mm2; }},
     {"area_el_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a_el * e.s.b_el * units::per_mm2; }},
 };
+// Appended last (issue #14 item 3): the patch area (elastic mode only: the plastic tail already
+// has area_mm2) and the contact point's z on each profile, in the frames of profiles.csv.
+const Col kAreaCol = {"area_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a * e.s.b * units::per_mm2; }};
+const Col kPointCols[] = {
+    {"z_rail_mm", [](const LoadedEllipse& e) { return e.z_r * 1e3; }},
+    {"z_wheel_mm", [](const LoadedEllipse& e) { return e.z_w * 1e3; }},
+};
 
 }  // namespace
 
@@ -173,6 +180,8 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       for (std::size_t k = 1; k < std::size(kTailCols); ++k) { e += ','; num(e, kTailCols[k].get(L)); }
       if (plastic)
         for (const Col& c : kPlasticTailCols) { e += ','; num(e, c.get(L)); }
+      if (!plastic) { e += ','; num(e, kAreaCol.get(L)); }
+      for (const Col& c : kPointCols) { e += ','; num(e, c.get(L)); }
       e += '\n';
     }
   }
@@ -215,6 +224,8 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       for (std::size_t k = 1; k < std::size(kTailCols); ++k) e[kTailCols[k].name] = jv(kTailCols[k].get(L));
       if (plastic)
         for (const Col& c : kPlasticTailCols) e[c.name] = jv(c.get(L));
+      if (!plastic) e[kAreaCol.name] = jv(kAreaCol.get(L));
+      for (const Col& c : kPointCols) e[c.name] = jv(c.get(L));
       el.push_back(std::move(e));
     }
     j["ellipses"] = std::move(el);
@@ -325,6 +336,8 @@ std::string ellipses_csv_header(bool plastic) {
   for (const Col& c : kTailCols) { s += ','; s += c.name; }
   if (plastic)
     for (const Col& c : kPlasticTailCols) { s += ','; s += c.name; }
+  if (!plastic) { s += ','; s += kAreaCol.name; }
+  for (const Col& c : kPointCols) { s += ','; s += c.name; }
   return s + "\n";
 }
 

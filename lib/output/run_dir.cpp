@@ -66,8 +66,9 @@ RunDirectory::RunDirectory(std::string dir) : dir_(std::move(dir)) {
     const std::vector<std::string> listed = listed_files(abs);
     for (const auto& e : fs::directory_iterator(abs, ec)) {
       const std::string name = e.path().filename().string();
-      const bool ours = e.is_regular_file() &&
-                        (is_mhcontact_output_name(name) || std::find(listed.begin(), listed.end(), name) != listed.end());
+      const bool ours = (e.is_regular_file() &&
+                         (is_mhcontact_output_name(name) || std::find(listed.begin(), listed.end(), name) != listed.end())) ||
+                        (e.is_directory() && name == "pairs");  // a batch's per-pair files (pairs/<k>/)
       if (!ours)
         throw InputError(dir_, name, "the output directory holds a file that no mhcontact run wrote; a run replaces its output directory as a whole",
                          "give a new or empty directory");
@@ -106,6 +107,12 @@ std::string RunDirectory::path(const std::string& name) {
   if (std::find(files_.begin(), files_.end(), name) == files_.end()) {
     files_.push_back(name);
     slots_.push_back(register_pending(tmp_ + "/" + name, false));
+    const fs::path parent = fs::path(name).parent_path();  // pairs/<k>/...: per-pair files of a batch
+    if (!parent.empty()) {
+      std::error_code ec;
+      fs::create_directories(fs::path(tmp_) / parent, ec);
+      if (ec) throw OutputError(dir_, "cannot create " + parent.string() + ": " + ec.message());
+    }
   }
   return tmp_ + "/" + name;
 }

@@ -79,7 +79,7 @@ TEST_CASE("run writes the three tables, byte-identical for 1, 2 and 4 threads", 
   const std::string ell = slurp(d / "t1/ellipses.csv");
   REQUIRE(ell.rfind("case,tY_mm,Q_kN,ellipse,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,A_per_mm,B_per_mm,"
                     "lambda,m,n,gap_mm,h0_mm,N_kN,a_mm,b_mm,p0_MPa,pmean_MPa,approach_mm,"
-                    "hertz_valid,b_over_R,gap_error\n", 0) == 0);
+                    "hertz_valid,b_over_R,gap_error,area_mm2,z_rail_mm,z_wheel_mm\n", 0) == 0);
   // results.json: valid JSON, schema, inputs with checksums, the same cases.
   const auto j = nlohmann::json::parse(slurp(d / "t1/results.json"));
   REQUIRE(j.at("schema") == "mhcontact.results/2");

@@ -1,0 +1,64 @@
+// The fast fixed-digit number path (cells::general_digits) writes exactly what
+// std::to_chars(general, d) (printf %.*g) writes, for every digit count, on random and edge values.
+#include <catch2/catch.hpp>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "output/cells.hpp"
+
+using namespace mh;
+
+namespace {
+std::string slow(double v, int d) {
+  char b[64];
+  return std::string(b, std::to_chars(b, b + sizeof b, v, std::chars_format::general, d).ptr);
+}
+std::string fast(double v, int d) {
+  char b[64];
+  return std::string(b, cells::general_digits(b, v, d));
+}
+}  // namespace
+
+TEST_CASE("general_digits equals to_chars(general, d) on edge values") {
+  const double edge[] = {0.0, -0.0, 1.0, -1.0, 0.1, 0.5, 9.5, 0.95, 99.5, 999.99995, 9999999999.5,
+                         1e-5, 1e-4, 9.99999999995e-5, 1e15, 1e16, 1e17, 123456789012.0, 1e-300, 5e-324,
+                         1.7976931348623157e308, 2.5, 0.125, 1.0 / 3, 2.0 / 3, 6.6, 6.6000000000000005,
+                         std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                         std::numeric_limits<double>::quiet_NaN()};
+  for (int d = 1; d <= 17; ++d)
+    for (double v : edge) {
+      INFO("v = " << slow(v, 17) << ", d = " << d);
+      CHECK(fast(v, d) == slow(v, d));
+    }
+}
+
+TEST_CASE("general_digits equals to_chars(general, d) on random values") {
+  std::mt19937_64 rng(14);
+  std::uniform_real_distribution<double> mant(-10, 10);
+  std::uniform_int_distribution<int> ex(-30, 30);
+  std::uniform_int_distribution<int> dd(1, 17);
+  int bad = 0;
+  for (int i = 0; i < 2000000 && bad < 5; ++i) {
+    double v;
+    if (i % 3 == 0) {  // arbitrary bit patterns (finite)
+      std::uint64_t u = rng();
+      std::memcpy(&v, &u, sizeof v);
+      if (!std::isfinite(v)) continue;
+    } else if (i % 3 == 1) {  // short decimals, the midpoint case of the fast path
+      v = std::round(mant(rng) * 1e6) / 1e6 * std::pow(10.0, ex(rng) / 3);
+    } else {
+      v = mant(rng) * std::pow(10.0, ex(rng));
+    }
+    const int d = i % 2 ? 10 : dd(rng);
+    if (fast(v, d) != slow(v, d)) {
+      ++bad;
+      FAIL_CHECK("v = " << slow(v, 17) << ", d = " << d << ": fast " << fast(v, d) << " vs " << slow(v, d));
+    }
+  }
+  CHECK(bad == 0);
+}
