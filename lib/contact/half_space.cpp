@@ -116,13 +116,7 @@ CaseResult solve_half_space(const ContactGeometry& G, const Material& mat, doubl
   const double p_lim = mat.p_lim;
 
 
-  PatchDriverOptions dopt;
-  dopt.d_comb = opt.d_comb;
-  dopt.margin = opt.margin;
-  dopt.ref_rtol = opt.ref_rtol;
-  dopt.force_rtol = opt.force_rtol;
-  dopt.max_outer = opt.max_outer;
-  dopt.max_passes = opt.max_rebuilds + 1;
+  const PatchDriverOptions dopt = patch_driver_options(opt, opt.max_rebuilds + 1);
   PatchDriverResult D = drive_patches(gap, Q, dz_est, dopt, [&](const PatchRegion& reg, double dz_ref, std::string* why) {
     auto k = std::make_unique<HalfSpacePatch>(gap, reg, dz_ref, opt, H, p_lim);
     if (!k->ok()) {

@@ -56,6 +56,20 @@ struct PatchDriverResult {
   std::vector<std::unique_ptr<PatchSolver>> solvers;  ///< their solvers, holding the solution at dz
 };
 
+/// The driver options from a grid method's options (they share the fields d_comb, margin,
+/// ref_rtol, force_rtol, max_outer), with max_passes placements of the patches.
+template <class MethodOptions>
+PatchDriverOptions patch_driver_options(const MethodOptions& o, int max_passes) {
+  PatchDriverOptions d;
+  d.d_comb = o.d_comb;
+  d.margin = o.margin;
+  d.ref_rtol = o.ref_rtol;
+  d.force_rtol = o.force_rtol;
+  d.max_outer = o.max_outer;
+  d.max_passes = max_passes;
+  return d;
+}
+
 /// What every grid method does before solving a case: refuse Q ≤ 0 (`no_contact`) and a t_Y outside
 /// the geometry (`out_of_range`), with r's status and message set (returns false), else return
 /// true with *dz_est the first estimate of the vertical approach: the multi-Hertzian one (below a

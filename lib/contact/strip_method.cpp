@@ -86,13 +86,7 @@ CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, dou
   if (!begin_grid_case(G, mat, tY, Q, r, &dz_est)) return r;
   const WheelRailGap gap(G, tY);
   const double H = mat.compliance(), p_lim = mat.p_lim;
-  PatchDriverOptions dopt;
-  dopt.d_comb = opt.d_comb;
-  dopt.margin = opt.margin;
-  dopt.ref_rtol = opt.ref_rtol;
-  dopt.force_rtol = opt.force_rtol;
-  dopt.max_outer = opt.max_outer;
-  dopt.max_passes = opt.max_passes;
+  const PatchDriverOptions dopt = patch_driver_options(opt, opt.max_passes);
   PatchDriverResult D = drive_patches(gap, Q, dz_est, dopt, [&](const PatchRegion& reg, double dz_ref, std::string*) {
     return std::unique_ptr<PatchSolver>(std::make_unique<StripPatch>(gap, reg, dz_ref, opt, H, p_lim));
   });
