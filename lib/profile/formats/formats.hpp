@@ -21,6 +21,8 @@ std::vector<std::string> tokens(const std::string& line);
 bool looks_numeric(const std::string& t);
 /// A number that must be the whole token and finite; InputError at `where` otherwise.
 double parse_number(const std::string& tok, const std::string& where);
+/// A whole number in [lo, hi] (a count, a type code); InputError at `where` naming `what` otherwise.
+long parse_integer(const std::string& tok, const std::string& where, const std::string& what, long lo, long hi);
 
 /// Points as read, in file order, mm, with their file line (for messages).
 struct RawProfile {

@@ -135,7 +135,7 @@ void read_elements(const std::string& path, const std::vector<std::string>& line
     }
     const std::string key = trim(l.substr(0, eq)), val = trim(l.substr(eq + 1));
     if (key == "MPDC") {
-      count = static_cast<long>(parse_number(val, where));
+      count = parse_integer(val, where, "MPDC (the number of drawing elements)", 0, 1000000);
       count_line = i + 1;
       continue;
     }
@@ -152,6 +152,8 @@ void read_elements(const std::string& path, const std::vector<std::string>& line
                        "a drawing element must be 'L y1 z1 y2 z2' (line) or 'A y1 z1 y2 z2 yc zc' (arc, centre yc zc)",
                        "correct the element");
     for (std::size_t k = 1; k < need; ++k) e.v[k - 1] = parse_number(t[k], where);
+    if (num.size() > 9)
+      throw InputError(where, "'" + key + "'", "drawing element number too large (at most 9 digits)");
     els.emplace_back(std::stol(num), e);
   }
   std::stable_sort(els.begin(), els.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -184,7 +186,17 @@ void read_elements(const std::string& path, const std::vector<std::string>& line
                          "check the order and the end points of the elements");
       if (gap <= 1e-9) { r.y.pop_back(); r.z.pop_back(); r.line.pop_back(); }  // the shared end point once
     }
+    // An element longer than the widest plausible profile is a broken file, and would be
+    // sampled into more points than memory holds: rejected before sampling.
+    auto check_length = [&](double len) {
+      if (!(len <= ProfileCheckLimits::kMaxWidth_mm))
+        throw InputError(at_line(path, e.line), "length " + mm(len),
+                         "a drawing element cannot be longer than the widest profile (" +
+                             mm(ProfileCheckLimits::kMaxWidth_mm) + ")",
+                         "check the end points (and the units: mm expected)");
+    };
     if (e.type == 'L') {
+      check_length(std::hypot(y2 - y1, z2 - z1));
       const int m = std::max(1, static_cast<int>(std::ceil(std::hypot(y2 - y1, z2 - z1) / step - 1e-9)));
       for (int k = 0; k <= m; ++k) r.add(y1 + (y2 - y1) * k / m, z1 + (z2 - z1) * k / m, e.line);
     } else {
@@ -198,6 +210,7 @@ void read_elements(const std::string& path, const std::vector<std::string>& line
       double da = std::atan2(z2 - zc, y2 - yc) - a1;  // the minor arc from the start to the end
       while (da > kPi) da -= 2 * kPi;
       while (da < -kPi) da += 2 * kPi;
+      check_length(std::abs(da) * R1);
       const int m = std::max(1, static_cast<int>(std::ceil(std::abs(da) * R1 / step - 1e-9)));
       for (int k = 0; k <= m; ++k) {
         const double a = a1 + da * k / m;
@@ -244,7 +257,7 @@ RawProfile read_miniprof(const std::string& path, const std::vector<std::string>
         else
           throw InputError(at_line(path, i + 1), "'" + val + "'", "YAxis must be depth (Y down) or height (Y up)");
       }
-      if (key == "XYPoints" && !val.empty()) xypoints = static_cast<long>(parse_number(val, at_line(path, i + 1)));
+      if (key == "XYPoints" && !val.empty()) xypoints = parse_integer(val, at_line(path, i + 1), "XYPoints (the number of points)", 0, 100000000);
     }
     if (i == lines.size())
       throw InputError(path, "", "MiniProf header without the empty line that ends it, or no data",

@@ -58,7 +58,12 @@ RawProfile read_simpack(const std::string& path, const std::vector<std::string>&
       return parse_number(t[0], where);
     };
     if (state == Header) {
-      if (key == "type") type = static_cast<int>(num());
+      if (key == "type") {
+        const double v = num();
+        if (v != 0 && v != 1)
+          throw InputError(where, "type = " + tokens(val)[0], "header type must be 0 (rail) or 1 (wheel)");
+        type = static_cast<int>(v);
+      }
     } else if (state == Spline) {
       if (key == "shift.y") shift_y = num();
       else if (key == "shift.z") shift_z = num();

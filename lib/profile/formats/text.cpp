@@ -73,6 +73,14 @@ double parse_number(const std::string& tok, const std::string& where) {
   return v;
 }
 
+long parse_integer(const std::string& tok, const std::string& where, const std::string& what, long lo, long hi) {
+  const double v = parse_number(tok, where);
+  if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi))
+    throw InputError(where, "'" + tok + "'",
+                     what + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+  return static_cast<long>(v);
+}
+
 
 namespace {
 /// Refuse what is not a text file of 8-bit characters, naming what it is and how to fix it.
