@@ -176,7 +176,7 @@ TEST_CASE("plastic law: N and dN/dh0 continuous at h_y", "[plastic]") {
   }
 }
 
-TEST_CASE("plastic law: p_lim → ∞ is the elastic law; the inverse h0_for_force", "[plastic]") {
+TEST_CASE("plastic law: p_lim → ∞ is the elastic law, and the inverse h0_for_force", "[plastic]") {
   // Tolerances: 1e-12 relative.
   Material mat;
   mat.E = 210e9;

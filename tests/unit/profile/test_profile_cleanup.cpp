@@ -148,7 +148,7 @@ TEST_CASE("a wheel zig-zag is cleaned with the lower envelope", "[profile][clean
   CHECK(max_dev_mm(p, s, -69, 59) < 1e-5);  // the point inside the wheel is gone
 }
 
-TEST_CASE("spreadsheet files: BOM, CRLF, ';' with decimal commas, tabs", "[profile][table]") {
+TEST_CASE("spreadsheet files: BOM, CRLF, semicolons with decimal commas, tabs", "[profile][table]") {
   mh::ProfileReadOptions o;
   o.kind = mh::ProfileKind::Rail;
   const mh::Profile a = mh::read_profile(kC + "excel_semicolon.csv", o);

@@ -104,7 +104,7 @@ TEST_CASE("EN 15313 wheel measures of S1002 new are the nominal values", "[profi
   CHECK(!N.why.empty());
 }
 
-TEST_CASE("any inclination 1:N or an angle; the old strings keep their meaning", "[profile][inclination]") {
+TEST_CASE("any inclination 1:N or an angle, the old strings keep their meaning", "[profile][inclination]") {
   CHECK(mh::parse_inclination("1:40") == mh::Inclination::In40);
   CHECK(mh::parse_inclination("1:20") == mh::Inclination::In20);
   CHECK(mh::parse_inclination("none") == mh::Inclination::None);

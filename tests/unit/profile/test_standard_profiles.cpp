@@ -285,7 +285,7 @@ TEST_CASE("60E1 and 54E1: junctions tangent, derived centres, width at the gauge
   }
 }
 
-TEST_CASE("nodes are at most `step` apart along the profile; bad steps are refused", "[stdprof]") {
+TEST_CASE("nodes are at most `step` apart along the profile, bad steps are refused", "[stdprof]") {
   for (const std::string name : {"S1002", "60E1", "54E1"}) {
     for (double step : {0.1 * mm, 0.5 * mm, 0.02 * mm}) {
       CAPTURE(name, step);
