@@ -48,8 +48,8 @@ HertzValidity hertz_validity(double b, double k_rxx, double k_wxx, double gap_er
                              const HertzValidityOptions& opt = {});
 
 /// The test for a candidate g of the geometry G with lateral semi-axis b [m]: the curvature
-/// gap error is measured on G's curvature samples of both profiles (ContactGeometry::k_rxx_at,
-/// k_wxx_at) at up to 401 points over [−b, b].
+/// gap error is measured on G's curvature samples of both profiles (ContactGeometry::rail_k,
+/// wheel_k), integrated exactly over [−b, b] in O(1) (CurvatureSamples::edge_gap).
 HertzValidity hertz_validity(const ContactGeometry& G, const CandidateGeom& g, double b,
                              const HertzValidityOptions& opt = {});
 

@@ -59,22 +59,6 @@ double refine_minimum(const ProfileCurve& W, const ProfileCurve& R, double s, do
 
 }  // namespace
 
-namespace {
-double sample_at(const std::vector<double>& v, double y0, double dy, double y) {
-  if (v.empty()) return 0.0;
-  double s = (y - y0) / dy;
-  if (!(s > 0)) return v.front();
-  const double last = static_cast<double>(v.size() - 1);
-  if (s >= last) return v.back();
-  const std::size_t i = static_cast<std::size_t>(s);
-  const double f = s - static_cast<double>(i);
-  return v[i] + f * (v[i + 1] - v[i]);
-}
-}  // namespace
-
-double ContactGeometry::k_rxx_at(double y) const { return sample_at(rail_k, rail_k_y0, kappa_dy, y); }
-double ContactGeometry::k_wxx_at(double y) const { return sample_at(wheel_k, wheel_k_y0, kappa_dy, y); }
-
 void ContactGeometry::candidates_at(double t, CandidateGeom* out, int* main) const {
   const std::size_t n = tY.size(), ne = ellipses.size();
   const double step = n > 1 ? (tY.back() - tY.front()) / static_cast<double>(n - 1) : 1.0;
@@ -111,10 +95,13 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   G.wheel_window = W.window_used();
   G.rail_window = R.window_used();
   // Curvature samples for the Hertz validity test (signs as in CandidateGeom).
-  G.rail_k_y0 = R.y_min();
-  for (double y = R.y_min(); y <= R.y_max() + 1e-12; y += G.kappa_dy) G.rail_k.push_back(-R.kappa(std::min(y, R.y_max())));
-  G.wheel_k_y0 = W.y_min();
-  for (double y = W.y_min(); y <= W.y_max() + 1e-12; y += G.kappa_dy) G.wheel_k.push_back(W.kappa(std::min(y, W.y_max())));
+  {
+    std::vector<double> kr, kw;
+    for (double y = R.y_min(); y <= R.y_max() + 1e-12; y += G.kappa_dy) kr.push_back(-R.kappa(std::min(y, R.y_max())));
+    for (double y = W.y_min(); y <= W.y_max() + 1e-12; y += G.kappa_dy) kw.push_back(W.kappa(std::min(y, W.y_max())));
+    G.rail_k = CurvatureSamples(R.y_min(), G.kappa_dy, std::move(kr));
+    G.wheel_k = CurvatureSamples(W.y_min(), G.kappa_dy, std::move(kw));
+  }
 
   // Positioning at t_Y = 0 (method.md §7): the gauge point of the rail is gauge/2 from the track
   // centre, the wheel's flange back flange_back_distance/2, its taping line (y = 0) a further

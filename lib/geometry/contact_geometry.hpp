@@ -11,6 +11,7 @@
 #include "profile/profile.hpp"
 #include "profile/curve.hpp"
 #include "core/units.hpp"
+#include "geometry/curvature_samples.hpp"
 
 namespace mh {
 
@@ -96,16 +97,16 @@ class ContactGeometry {
   std::shared_ptr<const ProfileCurve> wheel_curve, rail_curve;
   double nominal_radius = 0;             ///< [m] wheel radius at the taping line (y_w = 0)
   double wheel_z0 = 0;                   ///< [m] smoothed wheel height at y_w = 0 (r(y_w) = R0 − (z_w(y_w) − z0))
-  /// Curvature samples of both profiles every kappa_dy, in the solver's signs: rail_k[i] =
-  /// 1/R_rxx at y_r = rail_k_y0 + i·kappa_dy, wheel_k[i] = 1/R_wxx at y_w = wheel_k_y0 + i·kappa_dy.
-  /// Used by the Hertz validity test over the patch width (contact/hertz_validity.hpp).
+  /// Curvature samples of both profiles every kappa_dy over each profile's width, in the
+  /// solver's signs: rail_k gives 1/R_rxx at y_r, wheel_k 1/R_wxx at y_w, with the gap they give
+  /// along the patch (geometry/curvature_samples.hpp). Used by the Hertz validity test over the
+  /// patch width (contact/hertz_validity.hpp).
   double kappa_dy = 0.05e-3;
-  double rail_k_y0 = 0, wheel_k_y0 = 0;
-  std::vector<double> rail_k, wheel_k;
+  CurvatureSamples rail_k, wheel_k;
   bool has_curvature_samples() const { return !rail_k.empty() && !wheel_k.empty(); }
   /// 1/R_rxx, 1/R_wxx [1/m] at any y, linear between samples, held constant beyond the ends.
-  double k_rxx_at(double y_r) const;
-  double k_wxx_at(double y_w) const;
+  double k_rxx_at(double y_r) const { return rail_k.at(y_r); }
+  double k_wxx_at(double y_w) const { return wheel_k.at(y_w); }
 
   std::size_t n_ellipses() const { return ellipses.size(); }
   const CandidateGeom& at(std::size_t k, std::size_t e) const { return table[k * ellipses.size() + e]; }
