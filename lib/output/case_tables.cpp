@@ -18,21 +18,22 @@ using namespace cells;
 
 namespace {
 
-// Per-ellipse values in output units, in column order (shared by CSV and JSON).
-struct Col { const char* name; double (*get)(const LoadedEllipse&); };
+// Per-ellipse values in output units, in column order (shared by CSV and JSON). `geometry`: the
+// value depends on t_Y only (the same for every Q), formatted through the repeat cache.
+struct Col { const char* name; double (*get)(const LoadedEllipse&); bool geometry = false; };
 const Col kEllipseCols[] = {
-    {"y_rail_mm", [](const LoadedEllipse& e) { return e.g.y_r * units::per_mm; }},
-    {"y_wheel_mm", [](const LoadedEllipse& e) { return e.g.y_w * units::per_mm; }},
-    {"gamma_deg", [](const LoadedEllipse& e) { return e.g.gamma / units::deg; }},
-    {"R_rxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_rxx); }},
-    {"R_wxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_wxx); }},
-    {"R_wyy_mm", [](const LoadedEllipse& e) { return e.g.R_wyy() * units::per_mm; }},
-    {"A_per_mm", [](const LoadedEllipse& e) { return e.A * 1e-3; }},  // 1/m -> 1/mm, as `hertz --A`
-    {"B_per_mm", [](const LoadedEllipse& e) { return e.B * 1e-3; }},
-    {"lambda", [](const LoadedEllipse& e) { return e.c.lambda; }},
-    {"m", [](const LoadedEllipse& e) { return e.c.m; }},
-    {"n", [](const LoadedEllipse& e) { return e.c.n; }},
-    {"gap_mm", [](const LoadedEllipse& e) { return e.g.gap * units::per_mm; }},
+    {"y_rail_mm", [](const LoadedEllipse& e) { return e.g.y_r * units::per_mm; }, true},
+    {"y_wheel_mm", [](const LoadedEllipse& e) { return e.g.y_w * units::per_mm; }, true},
+    {"gamma_deg", [](const LoadedEllipse& e) { return e.g.gamma / units::deg; }, true},
+    {"R_rxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_rxx); }, true},
+    {"R_wxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_wxx); }, true},
+    {"R_wyy_mm", [](const LoadedEllipse& e) { return e.g.R_wyy() * units::per_mm; }, true},
+    {"A_per_mm", [](const LoadedEllipse& e) { return e.A * 1e-3; }, true},  // 1/m -> 1/mm, as `hertz --A`
+    {"B_per_mm", [](const LoadedEllipse& e) { return e.B * 1e-3; }, true},
+    {"lambda", [](const LoadedEllipse& e) { return e.c.lambda; }, true},
+    {"m", [](const LoadedEllipse& e) { return e.c.m; }, true},
+    {"n", [](const LoadedEllipse& e) { return e.c.n; }, true},
+    {"gap_mm", [](const LoadedEllipse& e) { return e.g.gap * units::per_mm; }, true},
     {"h0_mm", [](const LoadedEllipse& e) { return e.s.h0 * units::per_mm; }},
     {"N_kN", [](const LoadedEllipse& e) { return e.s.N / units::kN; }},
     {"a_mm", [](const LoadedEllipse& e) { return e.s.a * units::per_mm; }},
@@ -69,8 +70,8 @@ const Col kPlasticTailCols[] = {
 // has area_mm2) and the contact point's z on each profile, in the frames of profiles.csv.
 const Col kAreaCol = {"area_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a * e.s.b * units::per_mm2; }};
 const Col kPointCols[] = {
-    {"z_rail_mm", [](const LoadedEllipse& e) { return e.z_r * 1e3; }},
-    {"z_wheel_mm", [](const LoadedEllipse& e) { return e.z_w * 1e3; }},
+    {"z_rail_mm", [](const LoadedEllipse& e) { return e.z_r * 1e3; }, true},
+    {"z_wheel_mm", [](const LoadedEllipse& e) { return e.z_w * 1e3; }, true},
 };
 
 }  // namespace
@@ -140,8 +141,8 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     std::string& s = f.cases;
     s.clear();
     append_number(s, static_cast<long long>(idx));
-    s += ','; num(s, cp.tY_mm);
-    s += ','; num(s, cp.Q_kN);
+    s += ','; num_repeated(s, cp.tY_mm);
+    s += ','; num_repeated(s, cp.Q_kN);
     s += ','; s += status;
     s += ','; s += to_string(r.method);
     // A failed row (no solution: out_of_range, no_contact, invalid_pair) leaves every result
@@ -156,8 +157,8 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; rnum(s, r.Fy / units::kN);
     s += ','; rnum(s, r.pmax / units::MPa);
     s += ','; rnum(s, r.area * units::per_mm2);
-    s += ','; rnum(s, gamma_main);
-    s += ','; rnum(s, r_roll_main);
+    s += ','; if (!failed) num_repeated(s, gamma_main);
+    s += ','; if (!failed) num_repeated(s, r_roll_main);
     s += ','; if (!failed) s += any_plastic ? '1' : '0';
     s += ','; append_number(s, static_cast<long long>(r.warnings.size()));
     s += ','; csv_text(s, warn);
@@ -167,10 +168,13 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     e.clear();
     for (const LoadedEllipse& L : r.loaded) {
       append_number(e, static_cast<long long>(idx));
-      e += ','; num(e, cp.tY_mm);
-      e += ','; num(e, cp.Q_kN);
+      e += ','; num_repeated(e, cp.tY_mm);
+      e += ','; num_repeated(e, cp.Q_kN);
       e += ','; append_number(e, static_cast<long long>(L.ellipse));
-      for (const Col& c : kEllipseCols) { e += ','; num(e, c.get(L)); }
+      for (const Col& c : kEllipseCols) {
+        e += ',';
+        if (c.geometry) num_repeated(e, c.get(L)); else num(e, c.get(L));
+      }
       if (plastic) {
         e += ','; e += L.s.plastic ? "1" : "0";
         e += ','; num(e, h_y_mm(L));
@@ -181,7 +185,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (plastic)
         for (const Col& c : kPlasticTailCols) { e += ','; num(e, c.get(L)); }
       if (!plastic) { e += ','; num(e, kAreaCol.get(L)); }
-      for (const Col& c : kPointCols) { e += ','; num(e, c.get(L)); }
+      for (const Col& c : kPointCols) { e += ','; num_repeated(e, c.get(L)); }
       e += '\n';
     }
   }

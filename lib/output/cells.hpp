@@ -30,6 +30,19 @@ struct DigitsScope {
 };
 
 namespace detail {
+/// "00".."99".
+inline constexpr char kDigitPairs[201] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+/// v < 10^8 as exactly 8 digits (leading zeros) at p.
+inline void write8(char* p, std::uint32_t v) {
+  const std::uint32_t a = v / 10000, b = v % 10000;
+  std::memcpy(p, kDigitPairs + 2 * (a / 100), 2);
+  std::memcpy(p + 2, kDigitPairs + 2 * (a % 100), 2);
+  std::memcpy(p + 4, kDigitPairs + 2 * (b / 100), 2);
+  std::memcpy(p + 6, kDigitPairs + 2 * (b % 100), 2);
+}
 // %g layout of the significant digits dig[0..nd) (no trailing zeros) with decimal exponent X.
 inline char* layout_general(char* o, bool neg, const char* dig, int nd, int X, int d) {
   if (neg) *o++ = '-';
@@ -83,54 +96,59 @@ inline char* general_digits(char* out, double v, int d) {
   // floor(log10 2^(e+52)) = floor((e+52)·log10 2), maybe 1 below log10|v|.
   const int e2m1 = e + 52;
   int X = e2m1 >= 0 ? (e2m1 * 78913) >> 18 : -((-e2m1 * 78913 + (1 << 18) - 1) >> 18);
-  std::uint64_t q = 0;
-  for (int attempt = 0;; ++attempt) {
-    if (attempt == 3) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
-    const int k = d - 1 - X;  // q = round(|v|·10^k)
-    // |v|·10^k = num/den, num = m·10^max(k,0)·2^max(e,0), den = 10^max(−k,0)·2^max(−e,0).
-    const int k10 = k > 0 ? k : 0, d10 = k < 0 ? -k : 0;
-    const int s2 = e < 0 ? -e : 0, n2 = e > 0 ? e : 0;
-    if (k10 > 19 || d10 > 19 || n2 > 10) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
-    u128 num = static_cast<u128>(m) * p10[k10];  // < 2^53·2^64
-    if (n2) {
-      if (num >> (126 - n2)) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
-      num <<= n2;
-    }
-    u128 qq, r, half;
-    bool exact_half;
-    if (d10 == 0) {  // den = 2^s2: a shift
-      if (s2 >= 127) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
-      if (s2 == 0) { qq = num; r = 0; half = 1; exact_half = false; }
-      else {
-        qq = num >> s2;
-        r = num - (qq << s2);
-        half = static_cast<u128>(1) << (s2 - 1);
-        exact_half = r == half;
-      }
-      const bool up = r > half || (exact_half && (qq & 1));
-      if (s2 != 0 && up) ++qq;
-    } else {
-      if (s2 > 60) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
-      const u128 den = static_cast<u128>(p10[d10]) << s2;  // < 2^64·2^60
-      qq = num / den;
-      r = num - qq * den;
-      const u128 r2 = r << 1;
-      if (r2 > den || (r2 == den && (qq & 1))) ++qq;
-    }
-    // Digit count: X too low gives ≥ 10^d before rounding, X too high < 10^(d−1).
-    if (qq < p10[d - 1]) { --X; continue; }
-    if (qq > p10[d]) { ++X; continue; }
-    if (qq == p10[d]) {
-      // Either X was one too low (the floor is already 10^d) or the rounding carried (9.99 -> 10.0):
-      // both print 10^(d−1) at exponent X+1, as %g does.
-      qq = p10[d - 1];
-      ++X;
-    }
-    q = static_cast<std::uint64_t>(qq);
-    break;
+  // q = |v|·10^k rounded half-even, k = d − 1 − X; num/den = |v|·10^k exactly with
+  // num = m·10^max(k,0)·2^max(e,0), den = 10^max(−k,0)·2^max(−e,0).
+  const int k = d - 1 - X;
+  const int k10 = k > 0 ? k : 0, d10 = k < 0 ? -k : 0;
+  const int s2 = e < 0 ? -e : 0, n2 = e > 0 ? e : 0;
+  if (k10 > 19 || d10 > 19 || n2 > 10) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
+  u128 num = static_cast<u128>(m) * p10[k10];  // < 2^53·2^64
+  if (n2) {
+    if (num >> (126 - n2)) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
+    num <<= n2;
   }
-  char dig[20];
-  for (int i = d - 1; i >= 0; --i) { dig[i] = static_cast<char>('0' + q % 10); q /= 10; }
+  // The floor qf and where the remainder lies against half a unit: cmp < 0 below, 0 exactly
+  // half, > 0 above; sticky: the remainder is not zero.
+  u128 qf;
+  int cmp;
+  bool sticky;
+  if (d10 == 0) {  // den = 2^s2: a shift
+    if (s2 >= 127) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
+    if (s2 == 0) { qf = num; cmp = -1; sticky = false; }
+    else {
+      qf = num >> s2;
+      const u128 r = num - (qf << s2), half = static_cast<u128>(1) << (s2 - 1);
+      cmp = r > half ? 1 : r == half ? 0 : -1;
+      sticky = r != 0;
+    }
+  } else {
+    if (s2 > 60) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
+    const u128 den = static_cast<u128>(p10[d10]) << s2;  // < 2^64·2^60
+    qf = num / den;
+    const u128 r2 = (num - qf * den) << 1;
+    cmp = r2 > den ? 1 : r2 == den ? 0 : -1;
+    sticky = r2 != 0;
+  }
+  std::uint64_t q;
+  if (qf >= p10[d]) {
+    // X was one too low (its estimate is floor(log10 2^(e+52)) ≤ log10|v|): one digit more than
+    // wanted; drop it, rounding half-even on the dropped digit and the remainder below it.
+    ++X;
+    const std::uint64_t q1 = static_cast<std::uint64_t>(qf / 10), last = static_cast<std::uint64_t>(qf % 10);
+    q = q1 + ((last > 5 || (last == 5 && (sticky || (q1 & 1)))) ? 1 : 0);
+  } else {
+    if (qf < p10[d - 1]) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;  // never: X is never too high
+    q = static_cast<std::uint64_t>(qf) + ((cmp > 0 || (cmp == 0 && (qf & 1))) ? 1 : 0);
+  }
+  if (q == p10[d]) {  // the rounding carried (9.99 -> 10.0): 10^(d−1) at exponent X+1, as %g
+    q = p10[d - 1];
+    ++X;
+  }
+  // The d digits of q (< 10^15) from 16 written two at a time: q = hi·10^8 + lo.
+  char buf16[16];
+  detail::write8(buf16, static_cast<std::uint32_t>(q / 100000000u));
+  detail::write8(buf16 + 8, static_cast<std::uint32_t>(q % 100000000u));
+  const char* dig = buf16 + 16 - d;
   int nd = d;
   while (nd > 1 && dig[nd - 1] == '0') --nd;  // %g drops trailing zeros
   return detail::layout_general(out, neg, dig, nd, X, d);
@@ -143,6 +161,27 @@ inline void num(std::string& s, double v) {
   if (d <= 0) { append_number(s, v); return; }
   char buf[64];
   s.append(buf, general_digits(buf, v, d));
+}
+/// num() for values that repeat over consecutive rows (a sweep's t_Y and Q, an ellipse's geometry,
+/// the same for every load at one t_Y): a small per-thread cache of the formatted text, keyed by
+/// the bits of v and the digits, so the bytes are exactly num()'s.
+inline void num_repeated(std::string& s, double v) {
+  struct Entry { std::uint64_t bits; int d1; unsigned len; char text[40]; };  // d1 = digits + 1, 0: empty
+  static thread_local Entry cache[1024];
+  const int d = digits();
+  std::uint64_t bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  Entry& e = cache[(bits * 0x9E3779B97F4A7C15ull) >> 54];
+  if (e.d1 == d + 1 && e.bits == bits) { s.append(e.text, e.len); return; }
+  const std::size_t at = s.size();
+  num(s, v);
+  const std::size_t len = s.size() - at;
+  if (len <= sizeof e.text) {
+    e.bits = bits;
+    e.d1 = d + 1;
+    e.len = static_cast<unsigned>(len);
+    std::memcpy(e.text, s.data() + at, len);
+  }
 }
 /// `v` rounded to `digits()` significant digits (for JSON, where the library prints the double).
 inline double rounded(double v) {

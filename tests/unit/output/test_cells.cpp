@@ -62,3 +62,23 @@ TEST_CASE("general_digits equals to_chars(general, d) on random values") {
   }
   CHECK(bad == 0);
 }
+
+TEST_CASE("num_repeated writes what num writes, across digit settings and cache collisions") {
+  // The cache is keyed by the bits and the digits: a value seen at 10 digits must not come back
+  // when 4 are asked, and values sharing a slot must not return each other's text.
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> mant(-10, 10);
+  std::vector<double> vals = {0.0, -0.0, 1.0, INFINITY, -INFINITY, 6.6, 1.0 / 3};
+  for (int i = 0; i < 5000; ++i) vals.push_back(mant(rng) * std::pow(10.0, static_cast<int>(rng() % 20) - 10));
+  for (int d : {10, 4, 0, 17, 10}) {
+    cells::DigitsScope scope(d);
+    for (int pass = 0; pass < 2; ++pass)  // the second pass reads from the cache
+      for (double v : vals) {
+        std::string a, b;
+        cells::num(a, v);
+        cells::num_repeated(b, v);
+        INFO("v = " << slow(v, 17) << ", digits " << d);
+        REQUIRE(a == b);
+      }
+  }
+}
