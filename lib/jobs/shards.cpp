@@ -1,12 +1,16 @@
 #include "jobs/shards.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +18,8 @@
 #include "output/json_stream.hpp"
 #include "output/output_file.hpp"
 #include "output/run_dir.hpp"
+
+namespace fs = std::filesystem;
 
 namespace mh {
 
@@ -150,6 +156,28 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     OutputFile f(rd.path("profiles.csv"));
     f.stream() << read_all(shards[0].dir + "/profiles.csv");
     f.commit();
+  }
+  if (batch) {
+    // Each pair's profiles and contact geometry (pairs/<k>/, numbered over the whole manifest)
+    // come from the one shard that solved the pair: copied as they are, in pair order.
+    std::vector<std::pair<std::string, std::string>> files;  // (name in the run, source path)
+    for (const auto& sh : shards) {
+      const fs::path root = fs::path(sh.dir) / "pairs";
+      std::error_code ec;
+      if (!fs::is_directory(root, ec)) continue;
+      for (fs::recursive_directory_iterator it(root, ec), e; !ec && it != e; it.increment(ec))
+        if (it->is_regular_file()) files.emplace_back("pairs/" + fs::relative(it->path(), root).generic_string(), it->path().string());
+      if (ec) throw InputError(root.string(), "", "cannot read the shard's per-pair files: " + ec.message());
+    }
+    std::sort(files.begin(), files.end());
+    for (std::size_t i = 1; i < files.size(); ++i)
+      if (files[i].first == files[i - 1].first)
+        throw InputError(files[i].second, "", "two shards hold " + files[i].first + " (shards of different runs?)");
+    for (const auto& [name, src] : files) {
+      OutputFile f(rd.path(name));
+      f.stream() << read_all(src);
+      f.commit();
+    }
   }
   if (json) {
     // Each shard's results.json holds the same head, its own cases (or pairs) and its summary:

@@ -37,6 +37,10 @@ for k in 1 2 3; do "$bin" run "$tmp/bad.json" -o "$tmp/bs$k" --shard $k/3 -q || 
 set +e; "$bin" merge "$tmp/bs2" "$tmp/bs1" "$tmp/bs3" -o "$tmp/bm" -q; rc=$?; set -e
 test $rc -eq 1
 for f in cases.csv ellipses.csv pairs.csv results.json; do cmp "$tmp/bad/$f" "$tmp/bm/$f"; done
+# ... and so do the per-pair profiles and geometry (pairs/<k>/), listed in the merged run.json.
+diff -r "$tmp/bad/pairs" "$tmp/bm/pairs"
+test -n "$(ls "$tmp/bm/pairs")"
+for f in $(cd "$tmp/bm" && find pairs -type f); do grep -q "\"$f\"" "$tmp/bm/run.json" || { echo "$f not in run.json" >&2; exit 1; }; done
 
 # Malformed manifests: exit 2 with the JSON path.
 expect2() { set +e; "$bin" run "$1" -o "$tmp/x" -q 2>"$tmp/err"; rc=$?; set -e; test $rc -eq 2 || { echo "expected exit 2 for $1" >&2; exit 1; }; grep -q "$2" "$tmp/err" || { cat "$tmp/err" >&2; exit 1; }; }

@@ -2,6 +2,8 @@
 // CONTACT and A_WRCC files, provenance in tests/data/profiles/README.md) and on malformed inputs.
 // Tolerances are in mm (profile files are in mm; Profile holds metres).
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <stdexcept>
 
 #include <cmath>
 #include <cstdio>
@@ -21,14 +23,23 @@ namespace {
 
 const std::string kData = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/";
 
-std::string tmpdir() {
-  static std::string dir;
-  if (dir.empty()) {
+// One scratch directory per test process, removed when the process exits.
+struct ScratchDir {
+  std::string dir;
+  ScratchDir() {
     char t[] = "/tmp/mh_profio_XXXXXX";
-    REQUIRE(mkdtemp(t) != nullptr);
+    if (mkdtemp(t) == nullptr) throw std::runtime_error("cannot create a scratch directory in /tmp");
     dir = t;
   }
-  return dir + "/";
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+  }
+};
+
+std::string tmpdir() {
+  static const ScratchDir d;
+  return d.dir + "/";
 }
 
 std::string write_file(const std::string& name, const std::string& text) {
