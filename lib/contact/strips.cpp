@@ -8,6 +8,8 @@
 //  - Sichani, Enblom, Berg 2014 (ANALYN: local Hertz solution per strip).
 #include "contact/strips.hpp"
 
+#include "contact/strip_kernel.hpp"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -249,7 +251,6 @@ struct Solver {
   StripOptions opt;
   int n;
   std::vector<double> gx, gw;     // Gauss nodes per sub-interval
-  std::vector<double> t_even, c_even;  // tabulated nodes/weights for X0 = 0, uncapped
   std::vector<double> Bloc;       // [1/m] local lateral curvature (g''/2), <= 0: none
   std::vector<double> ka, kb;     // ANALYN Hertz shape per strip (valid where Bloc > 0)
   double gmin = 0.0;
@@ -258,13 +259,6 @@ struct Solver {
   Solver(const StripGeometry& g, double Hc, const StripOptions& o)
       : geo(g), H(Hc), opt(o), n(static_cast<int>(g.s.size())) {
     gauss_legendre(opt.gauss_points / 2, &gx, &gw);
-    // Table for the even, uncapped case (X0 = 0): theta in [0, pi/2],
-    // integrand a cos(theta) (cos(theta) - 1) F(a sin(theta)), doubled.
-    for (std::size_t k = 0; k < gx.size(); ++k) {
-      const double th = 0.25 * kPi * (1.0 + gx[k]);
-      t_even.push_back(std::sin(th));
-      c_even.push_back(2.0 * 0.25 * kPi * gw[k] * std::cos(th) * (std::cos(th) - 1.0));
-    }
     Bloc.assign(n, 0.0);
     ka.assign(n, 0.0);
     kb.assign(n, 0.0);
@@ -385,13 +379,8 @@ struct Solver {
 
   double K_elastic(int i, int j, double aj) const {
     const double e1 = geo.s[j] - 0.5 * geo.ds - geo.s[i], e2 = geo.s[j] + 0.5 * geo.ds - geo.s[i];
-    if (geo.xc[i] == geo.xc[j] && aj > 0.0) {
-      // Fast path of influence() for X0 = 0, uncapped: same nodes, tabulated.
-      const double R = 2.0 * (P_rect(aj, e2) - P_rect(aj, e1));  // P is odd in X
-      double acc = 0.0;
-      for (std::size_t k = 0; k < t_even.size(); ++k) acc += c_even[k] * lateral_kernel(aj * t_even[k], e1, e2);
-      return H * (R + aj * acc);
-    }
+    if (geo.xc[i] == geo.xc[j] && aj > 0.0)  // X0 = 0, uncapped: the tabulated kernel, exact
+      return H * aj * (strip_kernel_g(e2 / aj) - strip_kernel_g(e1 / aj));
     return H * influence(geo.xc[i] - geo.xc[j], aj, geo.s[j] - 0.5 * geo.ds - geo.s[i],
                          geo.s[j] + 0.5 * geo.ds - geo.s[i], 1.0, gx, gw);
   }
