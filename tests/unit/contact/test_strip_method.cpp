@@ -6,7 +6,11 @@
 // t_Y = 0 mm (wide conformal tread patch: pmax −8.5 %) and t_Y = 2 mm (area −12 %).
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <string>
 
 #include "contact/half_space.hpp"
@@ -80,6 +84,36 @@ TEST_CASE("strip method against the half-space solver on S1002 / 60E1 1:40", "[s
     CHECK(st.approach == Approx(hs.approach).epsilon(0.03));
   }
   CHECK(compared >= 3);
+}
+
+TEST_CASE("strip method against the half-space solver on two measured pairs", "[strips]") {
+  // Measured profiles from tests/data/profiles (README there): a worn wheel on a worn heavy-haul
+  // rail, and a MiniProf wheel on a MiniProf rail, both rails laid at 1:40; Q = 50 kN, 0.2 mm
+  // elements and strips. Single-region tread contacts over t_Y = -6 ... 8 mm (docs/strips.md,
+  // "Measured pairs", has the whole sweep, with the conformal flange-root misses beyond it).
+  struct Pair { const char* wheel; const char* rail; };
+  for (const Pair& p : {Pair{"worn_high_mileage.prw", "site_b_hr.prr"}, Pair{"avg_wheel.whl", "avg_HR.BAN"}}) {
+    const std::string data = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/";
+    const std::string path = "/tmp/mhcontact_strip_measured_" + std::to_string(::getpid()) + ".json";
+    std::ofstream(path) << "{\"wheel\": {\"profile\": \"" << data << p.wheel << "\", \"nominal_radius_mm\": 460}, "
+                        << "\"rail\": {\"profile\": \"" << data << p.rail << "\", \"inclination\": \"1:40\"}, "
+                        << "\"material\": {\"E_GPa\": 210, \"nu\": 0.28}, \"sweep\": {\"tY_mm\": [0], \"Q_kN\": [50]}}";
+    const mh::CaseFile cf = mh::load_case_file(path, true);
+    std::remove(path.c_str());
+    const mh::PairGeometry pg = mh::build_pair_geometry(cf);
+    for (double tY : {-6.0, -2.0, 2.0, 6.0, 8.0}) {
+      INFO(p.wheel << " on " << p.rail << ", t_Y = " << tY << " mm");
+      const mh::CaseResult hs = mh::solve_half_space(pg.geo, cf.material, tY * 1e-3, 50e3, cf.half_space);
+      const mh::CaseResult st = mh::solve_strip_method(pg.geo, cf.material, tY * 1e-3, 50e3, cf.strips);
+      REQUIRE(hs.status == mh::CaseStatus::Ok);
+      REQUIRE(st.status == mh::CaseStatus::Ok);
+      REQUIRE(hs.n_contacts == 1);
+      REQUIRE(st.n_contacts == 1);
+      CHECK(st.pmax == Approx(hs.pmax).epsilon(0.05));
+      CHECK(st.area == Approx(hs.area).epsilon(0.10));
+      CHECK(st.approach == Approx(hs.approach).epsilon(0.03));
+    }
+  }
 }
 
 TEST_CASE("strip method plastic: a cap above the peak changes nothing, a low cap carries the load", "[strips]") {
