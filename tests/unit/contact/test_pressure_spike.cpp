@@ -1,0 +1,69 @@
+// A peak pressure on a single element is reported (contact/pressure_spike.hpp): never on a smooth
+// Hertz pressure, always on an isolated or towering element, and on the measured pair where the
+// half-space solution puts 386 GPa on one element of a measured gauge corner (docs/strips.md,
+// "Measured pairs").
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "contact/half_space.hpp"
+#include "contact/pressure_spike.hpp"
+#include "input/case_file.hpp"
+#include "jobs/run.hpp"
+
+namespace {
+// Hertz pressure p0 sqrt(1 − x²/a² − s²/b²) on an nx × ns grid of spacing h, centred.
+std::vector<double> hertz_grid(int nx, int ns, double a, double b, double h) {
+  std::vector<double> p(static_cast<std::size_t>(nx * ns), 0.0);
+  for (int j = 0; j < ns; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const double x = (i - 0.5 * (nx - 1)) * h, s = (j - 0.5 * (ns - 1)) * h;
+      const double q = 1 - x * x / (a * a) - s * s / (b * b);
+      p[static_cast<std::size_t>(i + nx * j)] = q > 0 ? 1e9 * std::sqrt(q) : 0.0;
+    }
+  return p;
+}
+}  // namespace
+
+TEST_CASE("pressure spike: smooth Hertz pressures have none, a towering element is one", "[half_space][spike]") {
+  for (double a : {1e-3, 6e-3, 18e-3})  // coarse to fine patches, 0.2 mm elements
+    CHECK_FALSE(mh::find_pressure_spike(hertz_grid(201, 41, a, 3e-3, 0.2e-3), 201, 41).found);
+  std::vector<double> p = hertz_grid(101, 41, 8e-3, 3e-3, 0.2e-3);
+  p[5 + 101 * 3] = 50e9;  // an isolated element outside the patch
+  mh::PressureSpike s = mh::find_pressure_spike(p, 101, 41);
+  CHECK(s.found);
+  CHECK(s.i == 5);
+  CHECK(s.j == 3);
+  CHECK(s.neighbours == 0.0);
+  p = hertz_grid(101, 41, 8e-3, 3e-3, 0.2e-3);
+  p[50 + 101 * 20] *= 4;  // the centre element four times its neighbours
+  s = mh::find_pressure_spike(p, 101, 41);
+  CHECK(s.found);
+  CHECK(s.p / s.neighbours == Approx(4.0).epsilon(0.01));
+  CHECK_FALSE(mh::find_pressure_spike(std::vector<double>(20, 0.0), 5, 4).found);
+}
+
+TEST_CASE("pressure spike: the half-space case with a single-element peak warns", "[half_space][spike]") {
+  const std::string data = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/";
+  const std::string path = "/tmp/mhcontact_spike_" + std::to_string(::getpid()) + ".json";
+  std::ofstream(path) << "{\"wheel\": {\"profile\": \"" << data << "avg_wheel.whl\", \"nominal_radius_mm\": 460}, "
+                      << "\"rail\": {\"profile\": \"" << data << "avg_HR.BAN\", \"inclination\": \"1:40\"}, "
+                      << "\"material\": {\"E_GPa\": 210, \"nu\": 0.28}, \"sweep\": {\"tY_mm\": [0], \"Q_kN\": [50]}}";
+  const mh::CaseFile cf = mh::load_case_file(path, true);
+  std::remove(path.c_str());
+  const mh::PairGeometry pg = mh::build_pair_geometry(cf);
+  const mh::CaseResult spike = mh::solve_half_space(pg.geo, cf.material, 11.5e-3, 50e3, cf.half_space);
+  REQUIRE(spike.status == mh::CaseStatus::Ok);
+  CHECK(spike.pmax > 100e9);  // the singular element
+  REQUIRE(spike.warnings.size() == 1);
+  CHECK(spike.warnings[0].rfind("pressure_spike:patch=1:", 0) == 0);
+  const mh::CaseResult smooth = mh::solve_half_space(pg.geo, cf.material, 2e-3, 50e3, cf.half_space);
+  REQUIRE(smooth.status == mh::CaseStatus::Ok);
+  CHECK(smooth.warnings.empty());
+}
