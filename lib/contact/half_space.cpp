@@ -71,6 +71,24 @@ class HalfSpacePatch : public PatchSolver {
     iterations += last.iterations;
     return last.delta;
   }
+  /// The previous placement's pressures at the same rail point: element (x, s) here is rail
+  /// y = y_ref + s cos γ, i.e. s' = (y − y'_ref)/cos γ' there; nearest element, 0 outside its grid.
+  /// Only a capped solution is carried over (the capped load control then starts from it instead
+  /// of solving elastically first); an elastic one is rebuilt from a cold start, as before.
+  void warm_start_from(const PatchSolver& previous) override {
+    const auto* q = dynamic_cast<const HalfSpacePatch*>(&previous);
+    if (!q || !std::isfinite(p_lim_) || q->last.status != GridStatus::Ok || q->last.n_plastic == 0) return;
+    for (int j = 0; j < ns; ++j) {
+      const double y = P.y_ref + (s0 + j * ds) * std::cos(P.gamma);
+      const int jq = static_cast<int>(std::lround(((y - q->P.y_ref) / std::cos(q->P.gamma) - q->s0) / q->ds));
+      if (jq < 0 || jq >= q->ns) continue;
+      for (int i = 0; i < nx; ++i) {
+        const int iq = static_cast<int>(std::lround((x0 + i * dx - q->x0) / q->dx));
+        if (iq < 0 || iq >= q->nx) continue;
+        p[static_cast<std::size_t>(i + nx * j)] = q->p[static_cast<std::size_t>(iq + q->nx * jq)];
+      }
+    }
+  }
   bool failed() const override { return last.status == GridStatus::NotConverged; }
   std::string why() const override { return "the half-space solver did not converge on a patch grid"; }
   bool outgrown() const override {  // pressure on the grid's edge

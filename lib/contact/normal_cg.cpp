@@ -262,13 +262,32 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
 
   // 1. The elastic solution ([PK] load control, p_lim = ∞). If it stays below the cap it is the
   //    solution of the capped problem too (it satisfies every condition; the solution is unique).
+  //    Skipped when the guess already holds capped elements (a previous capped solution): then δ
+  //    starts from the guess's own approach, the mean of g + C p over its free elements.
   std::vector<double> guess(p, p + n);
-  NormalCGResult el = solve(C, g, N, Control::Load, INFINITY, p, options, options.max_iterations);
-  int used = el.iterations;
-  if (el.status != GridStatus::Ok) {
-    std::copy(guess.begin(), guess.end(), p);  // the caller's guess, for the δ-loop below
+  bool capped_guess = false;
+  for (std::size_t e = 0; e < n; ++e) capped_guess = capped_guess || p[e] >= p_lim;
+  NormalCGResult el;
+  el.status = GridStatus::NotConverged;
+  double delta_guess = -INFINITY;
+  int used = 0;
+  if (capped_guess) {
+    for (std::size_t e = 0; e < n; ++e) p[e] = std::isfinite(p[e]) ? std::min(std::max(p[e], 0.0), p_lim) : 0.0;
+    std::vector<double> u(n);
+    C.apply(p, u.data());
+    double sum = 0, top = -INFINITY;
+    std::size_t n_free = 0;
+    for (std::size_t e = 0; e < n; ++e) {
+      if (p[e] > 0 && p[e] < p_lim) { sum += g[e] + u[e]; ++n_free; }
+      if (p[e] > 0) top = std::max(top, g[e] + u[e]);
+    }
+    delta_guess = n_free ? sum / static_cast<double>(n_free) : top;
   } else {
-    if (*std::max_element(p, p + n) <= p_lim) {
+    el = solve(C, g, N, Control::Load, INFINITY, p, options, options.max_iterations);
+    used = el.iterations;
+    if (el.status != GridStatus::Ok) {
+      std::copy(guess.begin(), guess.end(), p);  // the caller's guess, for the δ-loop below
+    } else if (*std::max_element(p, p + n) <= p_lim) {
       el.n_plastic = 0;
       return el;
     }
@@ -286,6 +305,7 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
   const double g_min = *std::min_element(g, g + n);
   double delta = delta_rp;
   if (el.status == GridStatus::Ok) delta = std::max(delta, el.delta);
+  if (std::isfinite(delta_guess)) delta = std::max(delta, delta_guess);
   for (std::size_t e = 0; e < n; ++e) p[e] = std::min(std::max(p[e], 0.0), p_lim);  // warm start
 
   // Safeguarded secant (Illinois) on F(δ) = N(δ) − N; stop when |F| ≤ tol·N (the force to the

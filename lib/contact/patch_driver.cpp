@@ -39,6 +39,8 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
     ++R.passes;
     R.status = CaseStatus::Ok;
     R.message.clear();
+    std::vector<PatchRegion> old_regions = std::move(R.regions);
+    std::vector<std::unique_ptr<PatchSolver>> old_solvers = std::move(R.solvers);
     R.regions = find_patch_regions(gap, dz_ref, margin * dz_ref, opt.d_comb);
     for (auto& reg : R.regions) {  // an outgrown grid's room: its extents × grow about the region
       const double mid = 0.5 * (reg.s_a + reg.s_b), half = 0.5 * (reg.s_b - reg.s_a) * grow;
@@ -55,8 +57,16 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
         R.message = why;
         return R;
       }
+      // Warm start from the previous placement's solver nearest in rail y, if any.
+      std::size_t best = old_solvers.size();
+      for (std::size_t k = 0; k < old_solvers.size(); ++k)
+        if (best == old_solvers.size() ||
+            std::fabs(old_regions[k].P.y_ref - reg.P.y_ref) < std::fabs(old_regions[best].P.y_ref - reg.P.y_ref))
+          best = k;
+      if (best < old_solvers.size()) s->warm_start_from(*old_solvers[best]);
       R.solvers.push_back(std::move(s));
     }
+    old_solvers.clear();
     if (R.solvers.empty()) {
       R.status = CaseStatus::NotConverged;
       R.message = "no interpenetration region found";

@@ -345,6 +345,35 @@ TEST_CASE("Strongly capped sphere (p_lim = p0/4): load control converges, cap, e
   CHECK(fine.area == Approx(coarse.area).epsilon(1e-2));    // measured 0.36 %
 }
 
+// The half-space driver hands a patch's capped solution to the next placement: a guess holding
+// elements at p_lim skips the elastic first solve and starts δ from the guess's own approach.
+TEST_CASE("Capped load control warm-started from a capped solution: fewer steps, the same solution",
+          "[normal_cg][plastic]") {
+  const double A = 1 / (2 * R_sphere);
+  const HertzEllipse hz = hertz_ellipse(A, A, N_sphere);
+  const double p_lim = 0.25 * hz.p0, dx = 2 * hz.a / 20;
+  const int n = 2 * static_cast<int>(std::ceil(1.5 * std::sqrt(N_sphere / (pi * p_lim)) / dx));
+  const Case c = quadratic_case(n, n, dx, dx, A, A);
+  const mh::InfluenceGrid C(c.nx, c.ny, c.dx, c.dy, H);
+  std::vector<double> p1(c.g.size(), 0.0);
+  const mh::NormalCGResult cold = mh::solve_normal_load(C, c.g.data(), N_sphere, p_lim, p1.data());
+  REQUIRE(cold.status == mh::GridStatus::Ok);
+  std::vector<double> p2 = p1;
+  const mh::NormalCGResult warm = mh::solve_normal_load(C, c.g.data(), N_sphere, p_lim, p2.data());
+  INFO("cold " << cold.iterations << " steps, warm " << warm.iterations);
+  REQUIRE(warm.status == mh::GridStatus::Ok);
+  CHECK(warm.iterations * 2 < cold.iterations);
+  double diff = 0, sum = 0;
+  for (std::size_t e = 0; e < p1.size(); ++e) {
+    diff = std::max(diff, std::fabs(p1[e] - p2[e]));
+    sum += p2[e];
+  }
+  CHECK(diff <= 1e-6 * p_lim);
+  CHECK(sum * dx * dx == Approx(N_sphere).epsilon(1e-12));
+  CHECK(*std::max_element(p2.begin(), p2.end()) == p_lim);
+  CHECK(warm.delta == Approx(cold.delta).epsilon(1e-7));
+}
+
 TEST_CASE("No contact: delta <= min g or N <= 0 gives NoContact and p = 0", "[normal_cg]") {
   const Case c = quadratic_case(8, 6, 1e-3, 1e-3, 1.0, 2.0);
   const double g_min = *std::min_element(c.g.begin(), c.g.end());
