@@ -3,7 +3,7 @@
 
     compare_methods.py CASE.json [--methods multi-hertzian,strips,half-space] [--Q 50]
                        [--mhcontact build/mhcontact] [--reference CONTACT.csv] [-o FILE.png]
-                       [--table FILE.csv]
+                       [--table FILE.csv] [--markdown FILE.md]
 
 The case file's sweep is solved by each method (`mhcontact run` with the case's "method"
 replaced), and one figure shows, against t_Y, for the load Q (kN; default: the first load of
@@ -11,6 +11,12 @@ the sweep): the peak pressure, the total contact area, and the share of Q carrie
 contact (the load split), one curve per method. --reference adds CONTACT's results (a table like
 tests/data/contact/*.csv: y_ws_mm, pmax_MPa, area_mm2). --table writes the numbers plotted.
 This is the picture that shows where the fast method can be trusted for your own profiles.
+
+A plastic case ("model": "plastic") is also run elastic (the same case without p_lim) with every
+method, and a fourth panel shows the area ratio plastic/elastic at the same load; the table gains
+the columns area_elastic_mm2, pmax_elastic_MPa, area_ratio. --markdown writes, per t_Y, the total
+area, the peak pressure and (plastic) the area ratio of each method as a Markdown table (the one
+in docs/half_space.md).
 Needs matplotlib (Debian: python3-matplotlib); runs headless.
 """
 import argparse
@@ -43,9 +49,14 @@ def fnum(s):
         return math.nan
 
 
-def run_method(mhcontact, case_path, method, out_dir):
+def run_method(mhcontact, case_path, method, out_dir, elastic=False):
     with open(case_path) as f:
         case = json.load(f)
+    name = method + ("-elastic" if elastic else "")
+    if elastic:  # the same case without the cap (p_lim is refused with the elastic model)
+        case["model"] = "elastic"
+        if isinstance(case.get("material"), dict):
+            case["material"].pop("p_lim_MPa", None)
     base = os.path.dirname(os.path.abspath(case_path))
     for side in ("wheel", "rail"):  # profile paths relative to the case file stay valid
         prof = case.get(side, {}).get("profile")
@@ -54,13 +65,13 @@ def run_method(mhcontact, case_path, method, out_dir):
             if os.path.exists(candidate):
                 case[side]["profile"] = candidate
     case["method"] = method
-    path = os.path.join(out_dir, method + ".json")
+    path = os.path.join(out_dir, name + ".json")
     with open(path, "w") as f:
         json.dump(case, f)
-    res = subprocess.run([mhcontact, "run", path, "-o", os.path.join(out_dir, method), "--format", "csv", "-q"])
+    res = subprocess.run([mhcontact, "run", path, "-o", os.path.join(out_dir, name), "--format", "csv", "-q"])
     if res.returncode not in (0, 1):
-        sys.exit(f"compare_methods.py: mhcontact run failed for method {method} (exit {res.returncode})")
-    return os.path.join(out_dir, method)
+        sys.exit(f"compare_methods.py: mhcontact run failed for method {name} (exit {res.returncode})")
+    return os.path.join(out_dir, name)
 
 
 def method_rows(run_dir, Q):
@@ -91,6 +102,8 @@ def main(argv=None):
     ap.add_argument("--reference", help="CONTACT reference table (y_ws_mm, pmax_MPa, area_mm2)")
     ap.add_argument("-o", "--output", default="compare_methods.png", help="PNG file (default compare_methods.png)")
     ap.add_argument("--table", help="also write the plotted numbers to this CSV file")
+    ap.add_argument("--markdown", help="also write area, peak pressure (and plastic/elastic area ratio) per t_Y "
+                                       "and method as a Markdown table to this file")
     a = ap.parse_args(argv)
     methods = [m.strip() for m in a.methods.split(",") if m.strip()]
     for m in methods:
@@ -98,23 +111,33 @@ def main(argv=None):
             ap.error(f"unknown method '{m}' (expected multi-hertzian, strips, half-space or auto)")
     if not os.path.exists(a.mhcontact):
         sys.exit(f"compare_methods.py: {a.mhcontact} not found (build first, or give --mhcontact)")
-    data = {}
+    try:
+        with open(a.case) as f:
+            case = json.load(f)
+    except (OSError, ValueError) as e:
+        sys.exit(f"compare_methods.py: cannot read the case file: {e}")
+    model = case.get("model", "elastic")
+    plim = case.get("material", {}).get("p_lim_MPa")
+    plastic = model == "plastic"
+    data, elastic = {}, {}
     with tempfile.TemporaryDirectory() as tmp:
         for m in methods:
             d = run_method(a.mhcontact, a.case, m, tmp)
             if a.Q is None:
                 a.Q = fnum(read_csv(os.path.join(d, "cases.csv"))[0]["Q_kN"])
             data[m] = method_rows(d, a.Q)
+            if plastic:
+                elastic[m] = {r[0]: r for r in method_rows(run_method(a.mhcontact, a.case, m, tmp, elastic=True), a.Q)}
     if a.reference:
         ref = [r for r in read_csv(a.reference) if abs(fnum(r.get("Fz_target_N")) / 1000 - a.Q) < 1e-6]
         data["CONTACT"] = sorted((fnum(r["y_ws_mm"]), fnum(r["pmax_MPa"]), fnum(r["area_mm2"]), math.nan, "ok", "CONTACT")
                                  for r in ref)
-    with open(a.case) as f:
-        case = json.load(f)
-    model = case.get("model", "elastic")
-    plim = case.get("material", {}).get("p_lim_MPa")
+    def elastic_of(name, r):  # (area, pmax) of the elastic run at the same t_Y, or NaNs
+        e = elastic.get(name, {}).get(r[0])
+        return (e[2], e[1]) if e and e[4] == "ok" else (math.nan, math.nan)
+
     title = os.path.basename(a.case) + f": model {model}" + (f", p_lim {plim:g} MPa" if plim else "")
-    fig, axes = plt.subplots(3, 1, figsize=(9, 10), sharex=True)
+    fig, axes = plt.subplots(4 if plastic else 3, 1, figsize=(9, 13 if plastic else 10), sharex=True)
     for name, rows in data.items():
         color, marker = STYLE[name]
         t = [r[0] for r in rows if r[4] == "ok"]
@@ -123,10 +146,16 @@ def main(argv=None):
             if all(math.isnan(x) for x in v):
                 continue
             ax.plot(t, v, marker=marker, color=color, label=name, linewidth=1.2, markersize=4)
+        if plastic and name in elastic:
+            ratio = [r[2] / elastic_of(name, r)[0] for r in rows if r[4] == "ok"]
+            axes[3].plot(t, ratio, marker=marker, color=color, label=name, linewidth=1.2, markersize=4)
+    if plastic:
+        axes[3].set_ylabel("area ratio plastic / elastic")
+        axes[3].axhline(1.0, color="grey", linewidth=0.8)
     axes[0].set_ylabel("peak pressure [MPa]")
     axes[1].set_ylabel("contact area [mm²]")
     axes[2].set_ylabel("main contact's share of the load")
-    axes[2].set_xlabel("t_Y [mm]")
+    axes[-1].set_xlabel("t_Y [mm]")
     for ax in axes:
         ax.grid(True, alpha=0.3)
     axes[0].legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=9)
@@ -138,11 +167,41 @@ def main(argv=None):
     if a.table:
         with open(a.table, "w", newline="") as f:
             w = csv.writer(f)
-            w.writerow(["method", "tY_mm", "pmax_MPa", "area_mm2", "main_share", "status", "solved_by"])
+            w.writerow(["method", "tY_mm", "pmax_MPa", "area_mm2", "main_share", "status", "solved_by"] +
+                       (["area_elastic_mm2", "pmax_elastic_MPa", "area_ratio"] if plastic else []))
             for name, rows in data.items():
                 for r in rows:
-                    w.writerow([name] + list(r))
-    print(f"compare_methods.py: wrote {a.output}" + (f" and {a.table}" if a.table else ""))
+                    extra = []
+                    if plastic:
+                        ae, pe = elastic_of(name, r)
+                        extra = [ae, pe, r[2] / ae if ae > 0 else math.nan]
+                    w.writerow([name] + list(r) + extra)
+    if a.markdown:
+        names = [m for m in methods]
+        tys = sorted({r[0] for m in names for r in data[m]})
+        by = {m: {r[0]: r for r in data[m]} for m in names}
+        head = "| t_Y mm |"
+        rule = "|---|"
+        for m in names:
+            head += f" {m} area mm² | pmax MPa |" + (" area ratio |" if plastic else "")
+            rule += "---|---|" + ("---|" if plastic else "")
+        lines = [head, rule]
+        for t in tys:
+            line = f"| {t:g} |"
+            for m in names:
+                r = by[m].get(t)
+                if r is None or r[4] != "ok":
+                    line += f" {r[4] if r else '-'} | |" + (" |" if plastic else "")
+                    continue
+                line += f" {r[2]:.1f} | {r[1]:.0f} |"
+                if plastic:
+                    ae = elastic_of(m, r)[0]
+                    line += f" {r[2] / ae:.2f} |" if ae > 0 else " - |"
+            lines.append(line)
+        with open(a.markdown, "w") as f:
+            f.write("\n".join(lines) + "\n")
+    print(f"compare_methods.py: wrote {a.output}" + (f" and {a.table}" if a.table else "") +
+          (f" and {a.markdown}" if a.markdown else ""))
 
 
 if __name__ == "__main__":

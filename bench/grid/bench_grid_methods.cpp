@@ -79,12 +79,32 @@ int main(int argc, char** argv) {
   std::printf("auto: %d of %zu cases by strips; mean %.3f ms per case against %.3f ms for strips on every case "
               "(ratio %.2f, issue 12 asks <= 0.33)\n",
               by_strips, ms_auto.size(), mean(ms_auto), mean(ms_st), mean(ms_auto) / mean(ms_st));
+  // The plastic model on the same pair (cases/manchester-plastic.json: Q = 100 kN, p_lim 900 MPa,
+  // t_Y -6 ... 10 mm by 0.5), half-space, one run per case (issue 11: the flange cases took > 60 s).
+  const mh::CaseFile cp = mh::load_case_file(src + "/cases/manchester-plastic.json", true);
+  std::vector<double> ms_pl;
+  std::printf("half-space plastic, p_lim = %.0f MPa, Q = 100 kN, dx = ds = %.2f mm:\n"
+              "  tY_mm   time_ms  patch_solves  cg_iterations  elements  area_mm2  pmax_MPa\n",
+              cp.material.p_lim / 1e6, cp.half_space.dx * 1e3);
+  for (int k = 0; k <= 32; ++k) {
+    const double tY = (-6 + 0.5 * k) * 1e-3;
+    const auto t0 = std::chrono::steady_clock::now();
+    const mh::CaseResult r = mh::solve_half_space(pg.geo, cp.material, tY, 100e3, cp.half_space);
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * 1e3;
+    int cg = 0, n = 0;
+    for (const auto& P : r.patches) { cg += P.iterations; n += P.n_elements; }
+    std::printf("  %5.1f  %8.1f  %12d  %13d  %8d  %8.2f  %8.1f  %s\n", tY * 1e3, t, r.iterations, cg, n, r.area * 1e6,
+                r.pmax / 1e6, mh::to_string(r.status));
+    ms_pl.push_back(t);
+  }
   for (const auto& row : ref.rows) contact_s.push_back(std::stod(row[static_cast<std::size_t>(ref.column("wall_s"))]));
   auto median = [](std::vector<double> v) { std::sort(v.begin(), v.end()); return v[v.size() / 2]; };
   const double med = median(ms), worst = *std::max_element(ms.begin(), ms.end());
   const double med_st = median(ms_st), worst_st = *std::max_element(ms_st.begin(), ms_st.end());
   std::printf("half-space: median %.1f ms per case, worst %.1f ms\n", med, worst);
   std::printf("strips:     median %.2f ms per case, worst %.2f ms\n", med_st, worst_st);
+  std::printf("half-space plastic: median %.1f ms per case, worst %.1f ms\n", median(ms_pl),
+              *std::max_element(ms_pl.begin(), ms_pl.end()));
   std::printf("CONTACT (whole process, same machine kind): median %.2f s per case\n", median(contact_s));
   std::printf("ratios of the medians: CONTACT / half-space %.0f, half-space / strips %.0f, CONTACT / strips %.0f\n",
               median(contact_s) * 1e3 / med, med / med_st, median(contact_s) * 1e3 / med_st);

@@ -29,9 +29,13 @@ namespace {
 
 enum class Control { Approach, Load };
 
-/// The shared CG loop. target is δ [m] (Approach) or N [N] (Load).
+constexpr int kMaxLoadSteps = 60;  // capped load control: approach solves on δ (usually 4–8)
+constexpr int kPolishSteps = 50;   // capped load control: final [PK] load-control steps (usually 0–2)
+
+/// The shared CG loop ([PK]). target is δ [m] (Approach) or N [N] (Load); at most max_iterations
+/// CG steps (0: only the initial guess is prepared and measured).
 NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Control control,
-                     double p_lim, double* p, const NormalCGOptions& options) {
+                     double p_lim, double* p, const NormalCGOptions& options, int max_iterations) {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   constexpr double inf = std::numeric_limits<double>::infinity();
   NormalCGResult result;
@@ -195,7 +199,7 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
     if (!std::isfinite(G) || !std::isfinite(violation) || std::isnan(error))
       return finish(GridStatus::NotConverged);  // numerical trouble
     if (error <= options.tol) return finish(GridStatus::Ok);
-    if (it >= options.max_iterations) return finish(GridStatus::NotConverged);
+    if (it >= max_iterations) return finish(GridStatus::NotConverged);
 
     // Conjugate direction on F ([PK]): t = h + β t_old, β = G/G_old unless reset.
     const double beta = (reset || !(G_old > 0)) ? 0.0 : G / G_old;
@@ -243,16 +247,119 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
   }
 }
 
+/// Load control with a finite cap (normal_cg.hpp, "Load control with a cap"): the elastic solution
+/// when it stays below p_lim, else a safeguarded secant on δ over capped approach-control solves.
+NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double N, double p_lim,
+                                 double* p, const NormalCGOptions& options) {
+  const std::size_t n = static_cast<std::size_t>(C.nx()) * static_cast<std::size_t>(C.ny());
+  const double area = C.dx() * C.dy();
+  // Invalid input, no load and an infeasible load are answered by the shared loop, untouched.
+  if (!options.valid(nullptr) || !(p_lim > 0) || !std::isfinite(N) || !(N > 0) ||
+      N > p_lim * area * static_cast<double>(n))
+    return solve(C, g, N, Control::Load, p_lim, p, options, options.max_iterations);
+  for (std::size_t e = 0; e < n; ++e)
+    if (!std::isfinite(g[e])) return solve(C, g, N, Control::Load, p_lim, p, options, options.max_iterations);
+
+  // 1. The elastic solution ([PK] load control, p_lim = ∞). If it stays below the cap it is the
+  //    solution of the capped problem too (it satisfies every condition; the solution is unique).
+  //    Skipped when the guess already holds capped elements (a previous capped solution): then δ
+  //    starts from the guess's own approach, the mean of g + C p over its free elements.
+  std::vector<double> guess(p, p + n);
+  bool capped_guess = false;
+  for (std::size_t e = 0; e < n; ++e) capped_guess = capped_guess || p[e] >= p_lim;
+  NormalCGResult el;
+  el.status = GridStatus::NotConverged;
+  double delta_guess = -INFINITY;
+  int used = 0;
+  if (capped_guess) {
+    for (std::size_t e = 0; e < n; ++e) p[e] = std::isfinite(p[e]) ? std::min(std::max(p[e], 0.0), p_lim) : 0.0;
+    std::vector<double> u(n);
+    C.apply(p, u.data());
+    double sum = 0, top = -INFINITY;
+    std::size_t n_free = 0;
+    for (std::size_t e = 0; e < n; ++e) {
+      if (p[e] > 0 && p[e] < p_lim) { sum += g[e] + u[e]; ++n_free; }
+      if (p[e] > 0) top = std::max(top, g[e] + u[e]);
+    }
+    delta_guess = n_free ? sum / static_cast<double>(n_free) : top;
+  } else {
+    el = solve(C, g, N, Control::Load, INFINITY, p, options, options.max_iterations);
+    used = el.iterations;
+    if (el.status != GridStatus::Ok) {
+      std::copy(guess.begin(), guess.end(), p);  // the caller's guess, for the δ-loop below
+    } else if (*std::max_element(p, p + n) <= p_lim) {
+      el.n_plastic = 0;
+      return el;
+    }
+  }
+
+  // 2. δ ↦ N(δ) = dx·dy·Σp of the capped approach-control solution is continuous and
+  //    non-decreasing; the capped δ* is at least
+  //      δ_el (the elastic approach: capping only softens, N_cap(δ) ≤ N_el(δ)), and
+  //      δ_rp (rigid–perfectly-plastic bound: contact needs g + u ≤ δ with u ≥ 0, so g < δ, and
+  //            N(δ) ≤ p_lim·dx·dy·#{g < δ}; δ_rp is the k-th smallest g, k = ⌈N/(p_lim dx dy)⌉).
+  std::vector<double> sorted(g, g + n);
+  const std::size_t k = std::min(n - 1, static_cast<std::size_t>(std::ceil(N / (p_lim * area))));
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k), sorted.end());
+  const double delta_rp = sorted[k];
+  const double g_min = *std::min_element(g, g + n);
+  double delta = delta_rp;
+  if (el.status == GridStatus::Ok) delta = std::max(delta, el.delta);
+  if (std::isfinite(delta_guess)) delta = std::max(delta, delta_guess);
+  for (std::size_t e = 0; e < n; ++e) p[e] = std::min(std::max(p[e], 0.0), p_lim);  // warm start
+
+  // Safeguarded secant (Illinois) on F(δ) = N(δ) − N; stop when |F| ≤ tol·N (the force to the
+  // accuracy the gap has: ε ≤ tol of the interference).
+  NormalCGOptions inner = options;
+  double lo = g_min, F_lo = -N, hi = INFINITY, F_hi = 0;
+  int side = 0;
+  NormalCGResult r;
+  for (int eval = 0; eval < kMaxLoadSteps; ++eval) {
+    inner.max_iterations = std::max(1, options.max_iterations - used);
+    r = solve(C, g, delta, Control::Approach, p_lim, p, inner, inner.max_iterations);
+    used += r.iterations;
+    if (r.status != GridStatus::Ok && r.status != GridStatus::NoContact) break;
+    const double F = r.N - N;
+    if (std::fabs(F) <= options.tol * N) break;
+    if (F < 0) {
+      lo = delta; F_lo = F;
+      if (side == -1) F_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = delta; F_hi = F;
+      if (side == 1) F_lo *= 0.5;
+      side = 1;
+    }
+    if (std::isinf(hi)) {
+      // Not bracketed yet: the interference grown by N/N(δ) (exact for a fully capped contact
+      // on a quadratic gap, whose area grows linearly with the interference), at most doubled.
+      const double grow = r.N > 0 ? std::min(2.0, N / r.N) : 2.0;
+      delta = g_min + (delta - g_min) * std::max(grow, 1.05);
+    } else {
+      delta = (lo * F_hi - hi * F_lo) / (F_hi - F_lo);
+      if (!(delta > lo && delta < hi)) delta = 0.5 * (lo + hi);
+    }
+    if (used >= options.max_iterations) break;
+  }
+  // 3. Exact load and the load-control measure: the shared loop from this solution ([PK] scaling
+  //    of the free pressures, δ = mean of g + u over them), polishing if needed.
+  NormalCGResult fin = solve(C, g, N, Control::Load, p_lim, p, options,
+                             std::max(0, std::min(kPolishSteps, options.max_iterations - used)));
+  fin.iterations += used;
+  return fin;
+}
+
 }  // namespace
 
 NormalCGResult solve_normal_approach(const InfluenceGrid& C, const double* g, double delta,
                                      double p_lim, double* p, const NormalCGOptions& options) {
-  return solve(C, g, delta, Control::Approach, p_lim, p, options);
+  return solve(C, g, delta, Control::Approach, p_lim, p, options, options.max_iterations);
 }
 
 NormalCGResult solve_normal_load(const InfluenceGrid& C, const double* g, double N, double p_lim,
                                  double* p, const NormalCGOptions& options) {
-  return solve(C, g, N, Control::Load, p_lim, p, options);
+  if (std::isfinite(p_lim)) return solve_capped_load(C, g, N, p_lim, p, options);
+  return solve(C, g, N, Control::Load, p_lim, p, options, options.max_iterations);
 }
 
 }  // namespace mh

@@ -31,12 +31,23 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
                                 const PatchSolverFactory& make) {
   PatchDriverResult R;
   double dz_ref = dz_est, dz = dz_est;
+  const double margin = opt.margin;  // the grid covers the interpenetration at margin × dz_ref,
+  double grow = 1;                    // its extents (x, s) times this
+  double prev_ref = NAN, prev_dz = NAN;  // the last placement that was not outgrown: dz_ref ↦ dz
   bool settled = false;
   for (int pass = 0; pass < opt.max_passes && !settled; ++pass) {
     ++R.passes;
     R.status = CaseStatus::Ok;
     R.message.clear();
-    R.regions = find_patch_regions(gap, dz_ref, opt.margin * dz_ref, opt.d_comb);
+    std::vector<PatchRegion> old_regions = std::move(R.regions);
+    std::vector<std::unique_ptr<PatchSolver>> old_solvers = std::move(R.solvers);
+    R.regions = find_patch_regions(gap, dz_ref, margin * dz_ref, opt.d_comb);
+    for (auto& reg : R.regions) {  // an outgrown grid's room: its extents × grow about the region
+      const double mid = 0.5 * (reg.s_a + reg.s_b), half = 0.5 * (reg.s_b - reg.s_a) * grow;
+      reg.s_a = mid - half;
+      reg.s_b = mid + half;
+      reg.x_half *= grow;
+    }
     R.solvers.clear();
     for (const auto& reg : R.regions) {
       std::string why;
@@ -46,8 +57,16 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
         R.message = why;
         return R;
       }
+      // Warm start from the previous placement's solver nearest in rail y, if any.
+      std::size_t best = old_solvers.size();
+      for (std::size_t k = 0; k < old_solvers.size(); ++k)
+        if (best == old_solvers.size() ||
+            std::fabs(old_regions[k].P.y_ref - reg.P.y_ref) < std::fabs(old_regions[best].P.y_ref - reg.P.y_ref))
+          best = k;
+      if (best < old_solvers.size()) s->warm_start_from(*old_solvers[best]);
       R.solvers.push_back(std::move(s));
     }
+    old_solvers.clear();
     if (R.solvers.empty()) {
       R.status = CaseStatus::NotConverged;
       R.message = "no interpenetration region found";
@@ -100,8 +119,31 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
       if (s->failed()) { R.status = CaseStatus::NotConverged; R.message = s->why(); }
       outgrown = outgrown || s->outgrown();
     }
-    if (outgrown || dz > opt.margin * dz_ref || std::fabs(dz - dz_ref) > opt.ref_rtol * dz) {
-      dz_ref = outgrown ? std::max(dz, dz_ref) * 1.3 : dz;
+    if (outgrown || dz > margin * dz_ref || std::fabs(dz - dz_ref) > opt.ref_rtol * dz) {
+      // The planes go where the solution is (dz). An outgrown grid that already covered the
+      // interpenetration at the solution's approach gets more room (margin × 1.3); one that did
+      // not is rebuilt at the new approach with the same margin. (Placing the planes at 1.3 ×
+      // max(dz, dz_ref), as before, moved a conformal flange patch's plane by several degrees per
+      // pass and its grid onto the tread: the capped flange cases never settled.)
+      // The extent grows about the region, not through a deeper interpenetration: at 1.6 × the
+      // approach the Manchester flange region spans to the tread, where the planar gap of the
+      // patch is meaningless.
+      if (outgrown && !(dz > margin * dz_ref * grow)) grow *= 1.3;
+      if (std::isfinite(dz) && dz > 0) {
+        // The placement is a fixed point dz = F(dz_ref). In conformal flange contact F' ≈ −0.6
+        // (a plane placed deeper tilts and the contact then needs less approach): plain
+        // substitution oscillates for 6 passes. Secant on F(x) − x from the last two placements.
+        double next = dz;
+        if (!outgrown && std::isfinite(prev_ref) && prev_ref != dz_ref) {
+          const double slope = (dz - prev_dz) / (dz_ref - prev_ref);
+          const double z = dz_ref + (dz - dz_ref) / (1 - slope);
+          if (slope < 0.5 && slope > -5 && z > 0) next = z;
+        }
+        if (!outgrown) { prev_ref = dz_ref; prev_dz = dz; }
+        dz_ref = next;
+      } else if (outgrown) {
+        dz_ref *= 1.3;
+      }
       continue;
     }
     settled = true;

@@ -30,6 +30,9 @@ class PatchSolver {
   virtual std::string why() const = 0;
   /// The last solution reaches the edge of what was set up (grid or strips): set up larger.
   virtual bool outgrown() const = 0;
+  /// Take the solution of `previous` (the same patch at the previous placement, possibly another
+  /// plane or grid) as the initial guess of the next solve. Default: nothing (a cold start).
+  virtual void warm_start_from(const PatchSolver& previous) { (void)previous; }
 };
 
 /// Builds the solver of one patch (region, plane) for the wheel at vertical approach dz_ref.

@@ -55,6 +55,17 @@ double WheelRailGap::z_wheel(double y, double x, double* slope) const {
   return zw + r - root;
 }
 
+double WheelRailGap::projected_interpenetration_area(double dz, double step) const {
+  const int n = std::max(2, static_cast<int>(std::ceil((y1_ - y0_) / step)));
+  const double h = (y1_ - y0_) / n;
+  double A = 0;
+  for (int i = 0; i < n; ++i) {
+    const double y = y0_ + h * (i + 0.5), e = dz - g(y);
+    if (e > 0) A += 2 * std::sqrt(2 * rolling_radius(y) * e) * h;
+  }
+  return A;
+}
+
 std::vector<std::pair<double, double>> WheelRailGap::interpenetration(double dz, double step) const {
   std::vector<std::pair<double, double>> out;
   const int n = std::max(2, static_cast<int>(std::ceil((y1_ - y0_) / step)));

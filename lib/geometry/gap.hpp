@@ -35,6 +35,10 @@ class WheelRailGap {
   /// Intervals [a, b] of rail y where g(y) < dz (the interpenetration of a rigid vertical approach
   /// dz), found on a sampling of step `step` [m], in increasing y.
   std::vector<std::pair<double, double>> interpenetration(double dz, double step) const;
+  /// [m²] the horizontal projection of the interpenetration of a rigid vertical approach dz:
+  /// ∫ 2 √(2 r(y) (dz − g(y))) dy over g(y) < dz (the wheel's x-extent g + x²/2r < dz, as in
+  /// find_patch_regions), midpoint rule on a sampling of step `step` [m].
+  double projected_interpenetration_area(double dz, double step) const;
 
  private:
   const ProfileCurve* W_;

@@ -53,6 +53,9 @@ fi
 "$py" scripts/plot_geometry.py out/geo --tY 5
 "$py" scripts/plot_pressure.py out/mp --case 23
 test -s out/geo/geometry_caf.png && test -s out/geo/geometry_profiles.png && test -s out/mp/pressure_case_23.png
+./build/mhcontact run cases/manchester-halfspace.json -o out/hs --pressure-grid 2
+"$py" scripts/plot_pressure.py out/hs --case 13
+test -s out/hs/pressure_case_13.png
 # Exit codes: a failing case gives 1, bad input 2, CLI syntax >= 100
 set +e
 ./build/mhcontact run /nonexistent.json -o out/x 2>/dev/null; test $? -eq 2 || exit 1

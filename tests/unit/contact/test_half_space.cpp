@@ -89,3 +89,45 @@ TEST_CASE("half-space plastic: a cap above the elastic peak changes nothing, a l
   CHECK(P.N * std::cos(P.gamma) == Approx(Q).epsilon(1e-6));
   CHECK(P.capped_load == Approx(P.plastic_area * low.p_lim).epsilon(1e-9));
 }
+
+// Regression (issue 11): the plastic half-space on strongly capped flange contacts took > 60 s a
+// case (Manchester pair, Q = 100 kN, p_lim = 900 MPa, elastic peaks 4–6 GPa): a first approach 4×
+// too deep put the grid over tread and flange, the planes moved every pass, and the capped load
+// control did not converge. Bounded in work, not time (the machine is shared): at most 5 patch
+// solves and 400 CG steps in the final one (measured 2–4 and 83–116). Physical checks: the cap,
+// the vertical force balance, each patch's area at least N/p_lim (no element above p_lim), the
+// capped patch larger and the approach deeper than the elastic ones; a cap above the elastic
+// peak gives the elastic result.
+TEST_CASE("half-space plastic on strongly capped flange contacts: few placements, cap, equilibrium, area >= N/p_lim",
+          "[half_space][plastic]") {
+  const mh::CaseFile cf = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/manchester-plastic.json", true);
+  const double Q = 100e3;
+  for (double tY : {7e-3, 7.5e-3, 8e-3}) {
+    INFO("t_Y = " << tY * 1e3 << " mm");
+    mh::Material el_mat = cf.material;
+    el_mat.p_lim = INFINITY;
+    const mh::CaseResult el = mh::solve_half_space(manchester().geo, el_mat, tY, Q, cf.half_space);
+    REQUIRE(el.status == mh::CaseStatus::Ok);
+    REQUIRE(el.pmax > 4 * cf.material.p_lim);  // strongly capped
+    const mh::CaseResult pl = mh::solve_half_space(manchester().geo, cf.material, tY, Q, cf.half_space);
+    INFO("patch solves " << pl.iterations << ", message " << pl.message);
+    REQUIRE(pl.status == mh::CaseStatus::Ok);
+    CHECK(pl.iterations <= 5);
+    CHECK(pl.pmax == cf.material.p_lim);
+    CHECK(pl.Fz == Approx(Q).epsilon(1e-9));
+    CHECK(pl.area > 2 * el.area);
+    CHECK(pl.approach > el.approach);
+    for (const auto& P : pl.patches) {
+      CHECK(P.iterations <= 400);
+      CHECK(P.area >= P.N / cf.material.p_lim);
+      CHECK(P.area <= 1.05 * P.N / cf.material.p_lim);  // nearly fully plastic (measured ≤ 1.013)
+      CHECK(P.capped_load == Approx(P.plastic_area * cf.material.p_lim).epsilon(1e-9));
+    }
+    mh::Material high = cf.material;
+    high.p_lim = 1.5 * el.pmax;
+    const mh::CaseResult same = mh::solve_half_space(manchester().geo, high, tY, Q, cf.half_space);
+    REQUIRE(same.status == mh::CaseStatus::Ok);
+    CHECK(same.area == el.area);
+    CHECK(same.pmax == Approx(el.pmax).epsilon(1e-12));
+  }
+}
