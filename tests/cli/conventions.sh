@@ -76,4 +76,16 @@ set +e
 set -e
 [ "$rc" = 2 ] || fail "bad noise: exit $rc"
 grep -q '/geometry/noise' "$tmp/err" || fail "bad noise message: $(cat "$tmp/err")"
+# Flange climb reaches the summary: on the Manchester pair the contact angle, 70° on the straight
+# flange section up to t_Y = 8 mm, falls to 67.4° at 8.5 mm (caf.csv): the 12 cases at t_Y 8.5 ... 10
+# mm (3 loads each) warn flange_climb, the others not.
+"$bin" run "$src/cases/manchester.json" -o "$tmp/m" 2> "$tmp/err" || fail "manchester exit $?"
+grep -q ", 12 with flange_climb" "$tmp/err" || fail "summary line: $(tail -1 "$tmp/err")"
+python3 - "$tmp/m/results.json" <<'PY' || fail "results.json: flange_climb count"
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["summary"]["warnings"]["flange_climb"] == 12, j["summary"]
+climb = sorted({c["tY_mm"] for c in j["cases"] if any(w.startswith("flange_climb") for w in c["warnings"])})
+assert climb == [8.5, 9, 9.5, 10], climb
+PY
 echo "ok"
