@@ -10,7 +10,10 @@
 #include "core/errors.hpp"
 #include "core/units.hpp"
 #include "core/numfmt.hpp"
+#include "output/pair_tables.hpp"
 #include "output/profile_file.hpp"
+#include "profile/curve.hpp"
+#include "profile/rail_cant.hpp"
 #include "profile/read.hpp"
 
 namespace mh {
@@ -44,8 +47,9 @@ namespace {
 
 std::string mm(double v_m) { return format_number(v_m * units::per_mm); }
 
-void print_info(const Profile& p, bool json, std::ostream& out) {
+void print_info(const Profile& p, bool json, ProfileNoise noise, std::ostream& out) {
   double ymin = p.y.front(), ymax = p.y.back();
+  std::vector<std::string> info_warnings;  // from the checks below, after the reader's own
   nlohmann::ordered_json j;
   j["file"] = p.source;
   j["format"] = p.format;
@@ -60,6 +64,17 @@ void print_info(const Profile& p, bool json, std::ostream& out) {
     j["head_top_y_mm"] = L.y_top * units::per_mm;
     j["head_top_z_mm"] = L.z_top * units::per_mm;
     text += "head_top_mm: y " + mm(L.y_top) + " z " + mm(L.z_top) + "\n";
+    // The cant of the head (profiles.md "Cant estimate"): positive leaning to the gauge side.
+    const RailCantCheck cc = check_rail_cant(p, Inclination::AsIs);
+    j["cant"] = cant_json(cc.used);
+    if (cc.used.found)
+      text += "cant: " + format_number(std::round(cc.used.angle / units::deg * 1e3) / 1e3 + 0.0) + " deg (" +
+              cant_ratio(cc.used.angle) + "; positive: canted towards the gauge side), standard error " +
+              format_number(std::round(cc.used.std_error / units::deg * 1e3) / 1e3 + 0.0) + " deg" +
+              (cc.used.confident ? "" : ", not confident: " + cc.used.why) + "\n";
+    else
+      text += "cant: not estimated (" + cc.used.why + ")\n";
+    info_warnings = cc.warnings;
     if (L.has_gauge) {
       j["gauge_point_y_mm"] = L.y_gauge * units::per_mm;
       j["gauge_point_z_mm"] = L.z_gauge * units::per_mm;
@@ -122,10 +137,24 @@ void print_info(const Profile& p, bool json, std::ostream& out) {
               format_number(std::round(c.largest_fold_mm * 1e3) / 1e3) + " mm";
     text += "\n";
   }
+  // Measured or exact (profiles.md "Measured or exact"): the curvature fit's decision.
+  try {
+    CurveOptions co;
+    co.noise = noise;
+    const ProfileCurve curve(p, co);
+    j["noise"] = noise_json(curve.noise());
+    j["fit_window_mm"] = curve.window_used() * units::per_mm;
+    text += "noise: " + curve.noise().reason + "; fit window " + mm(curve.window_used()) + " mm\n";
+  } catch (const InputError& e) {
+    j["noise"] = nullptr;
+    text += std::string("noise: not classified (") + e.what() + ")\n";
+  }
   j["sha256"] = p.checksum;
-  j["warnings"] = p.warnings;
+  std::vector<std::string> all = p.warnings;
+  all.insert(all.end(), info_warnings.begin(), info_warnings.end());
+  j["warnings"] = all;
   text += "sha256: " + p.checksum + "\n";
-  for (const auto& w : p.warnings) text += "warning: " + w + "\n";
+  for (const auto& w : all) text += "warning: " + w + "\n";
   if (json) out << j.dump(2) << "\n";
   else out << text;
 }
@@ -154,13 +183,20 @@ void add_profile_io_commands(CLI::App& profile, CliContext& ctx) {
     auto opt = std::make_shared<ProfileReadOptions>();
     auto in = std::make_shared<std::string>();
     auto json = std::make_shared<bool>(false);
-    CLI::App* c = profile.add_subcommand("info", "print format, kind, point count, y range, landmarks, warnings");
+    auto noise = std::make_shared<ProfileNoise>(ProfileNoise::Auto);
+    CLI::App* c = profile.add_subcommand("info", "print format, kind, point count, y range, landmarks, cant (rails), "
+                                                 "measured or exact, warnings");
     c->add_option("IN", *in, "input profile file")->required();
     c->add_flag("--json", *json, "print JSON instead of text");
+    c->add_option_function<std::string>(
+         "--noise", [noise](const std::string& s) { *noise = parse_profile_noise(s); },
+         "measured or exact: auto (default: the fit residual against the rounding of the printed digits), "
+         "exact or measured")
+        ->check(CLI::IsMember({"auto", "exact", "measured"}));
     add_profile_read_options(*c, *opt);
-    c->callback([opt, in, json, &ctx]() {
+    c->callback([opt, in, json, noise, &ctx]() {
       const Profile p = read_profile(*in, *opt);
-      print_info(p, *json, ctx.out);
+      print_info(p, *json, *noise, ctx.out);
       ctx.exit_code = kExitOk;
     });
   }

@@ -166,6 +166,9 @@ CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, 
   for (const Cand& c : cs) {
     const double h = (dz - c.g.gap) * c.cg;
     if (h <= 0) continue;
+    // A loaded candidate off the end of a profile (method.md §3.7): its geometry is the end's,
+    // extrapolated; never silent.
+    if (c.g.off_profile) r.warnings.push_back("off_profile:ellipse=" + std::to_string(c.ellipse));
     if (!c.hertzian) {
       r.warnings.push_back("non_hertzian_excluded:ellipse=" + std::to_string(c.ellipse));
       continue;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace mh {
 
@@ -39,7 +40,8 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
 
 }  // namespace
 
-CaseResult solve_method(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt) {
+namespace {
+CaseResult solve_by_method(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt) {
   switch (opt.method) {
     case Method::Auto: return solve_auto(G, mat, tY, Q, opt);
     case Method::HalfSpace: return solve_half_space(G, mat, tY, Q, opt.half_space);
@@ -47,6 +49,20 @@ CaseResult solve_method(const ContactGeometry& G, const Material& mat, double tY
     case Method::MultiHertzian:
     default: return solve_case(G, mat, tY, Q, opt.multi_hertzian);
   }
+}
+}  // namespace
+
+CaseResult solve_method(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt) {
+  CaseResult r = solve_by_method(G, mat, tY, Q, opt);
+  // Flange climb (method.md §3.7): the main contact at this t_Y has passed the wheel's steepest
+  // flange point, whatever the method; the case says so.
+  if (r.status != CaseStatus::OutOfRange && G.covers(tY) && G.n_ellipses() > 0) {
+    std::vector<CandidateGeom> c(G.n_ellipses());
+    int main = 0;
+    G.candidates_at(tY, c.data(), &main);
+    if (c[static_cast<std::size_t>(main)].flange_climb) r.warnings.push_back("flange_climb:ellipse=" + std::to_string(main + 1));
+  }
+  return r;
 }
 
 }  // namespace mh

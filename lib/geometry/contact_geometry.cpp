@@ -79,6 +79,8 @@ void ContactGeometry::candidates_at(double t, CandidateGeom* out, int* main) con
     c.k_wxx = a.k_wxx + f * (b.k_wxx - a.k_wxx);
     c.r_roll = a.r_roll + f * (b.r_roll - a.r_roll);
     c.r_roller = a.r_roller + f * (b.r_roller - a.r_roller);
+    c.off_profile = (f < 1 && a.off_profile) || (f > 0 && b.off_profile);
+    c.flange_climb = (f < 1 && a.flange_climb) || (f > 0 && b.flange_climb);
   }
   if (main) *main = main_ellipse[f < 0.5 ? k : k1];
 }
@@ -88,8 +90,11 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   std::string why;
   if (!opt.valid(&why)) throw InputError("geometry options", "", why);
   ContactGeometry G;
-  G.wheel_curve = std::make_shared<const ProfileCurve>(wheel, opt.curve);
-  G.rail_curve = std::make_shared<const ProfileCurve>(rail, opt.curve);
+  CurveOptions cw = opt.curve, cr = opt.curve;
+  cw.noise = opt.wheel_noise;
+  cr.noise = opt.rail_noise;
+  G.wheel_curve = std::make_shared<const ProfileCurve>(wheel, cw);
+  G.rail_curve = std::make_shared<const ProfileCurve>(rail, cr);
   const ProfileCurve& W = *G.wheel_curve;
   const ProfileCurve& R = *G.rail_curve;
   G.wheel_window = W.window_used();
@@ -253,6 +258,35 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   const double zw0 = W.z(0.0);
   G.nominal_radius = r0;
   G.wheel_z0 = zw0;
+  // The wheel's steepest flange section (method.md §3.7): the largest slope of the smoothed wheel
+  // between its lowest point (the flange tip) and the taping line, and the tip-side end of the part
+  // of the face within flange_angle_tolerance of it.
+  {
+    std::size_t i_tip = 0;
+    for (std::size_t i = 0; i < W.nodes(); ++i) if (W.z(W.node_y(i)) < W.z(W.node_y(i_tip))) i_tip = i;
+    const double y_tip = W.node_y(i_tip);
+    if (y_tip < 0 && W.contains(0.0) && W.z(0.0) - W.z(y_tip) >= opt.flange_min_height) {
+      double smax = 0;
+      std::size_t i_max = i_tip;
+      for (std::size_t i = i_tip; i < W.nodes() && W.node_y(i) <= 0; ++i) {
+        double d;
+        W.z(W.node_y(i), &d);
+        if (d > smax) { smax = d; i_max = i; }
+      }
+      const double gmax = std::atan(smax);
+      std::size_t i_lo = i_max;
+      while (i_lo > i_tip) {
+        double d;
+        W.z(W.node_y(i_lo - 1), &d);
+        if (std::atan(d) < gmax - opt.flange_angle_tolerance) break;
+        --i_lo;
+      }
+      G.has_flange = true;
+      G.flange_gamma_max = gmax;
+      G.flange_y_steepest = W.node_y(i_lo);
+    }
+  }
+  const double y_strip_lo = G.strip_y.front() + 0.5 * w, y_strip_hi = G.strip_y.back() - 0.5 * w;
   const std::size_t ne = G.ellipses.size();
   G.table.resize(nt * ne);
   for (std::size_t k = 0; k < nt; ++k) {
@@ -272,6 +306,8 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
       c.gap = (kn == k) ? 0.0 : std::max(0.0, (z_w - z_r) - mains[k].gmin);
       c.r_roll = r0 - (z_w - zw0);
       if (track.roller_radius > 0) c.r_roller = track.roller_radius + z_r;  // z_r: height above the rail origin
+      c.off_profile = c.y_w < W.y_min() + w || c.y_w > W.y_max() - w || c.y_r < y_strip_lo || c.y_r > y_strip_hi;
+      c.flange_climb = G.has_flange && c.y_w < G.flange_y_steepest;
     }
   }
   return G;

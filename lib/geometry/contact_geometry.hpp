@@ -10,6 +10,7 @@
 
 #include "profile/profile.hpp"
 #include "profile/curve.hpp"
+#include "profile/rail_cant.hpp"
 #include "core/units.hpp"
 #include "geometry/curvature_samples.hpp"
 
@@ -52,7 +53,18 @@ struct GeometryOptions {
   /// one that contains no grid point, is merged into the neighbour whose contact point is closer
   /// (the jump between them is dropped). Default 0.05 mm.
   double min_ellipse_width = 0.05e-3;  ///< [m]
+  /// Flange climb (method.md §3.7): the steepest flange section is where the wheel's contact
+  /// angle is within this of its largest (default 1°: the smoothed S1002 overshoots its straight
+  /// 70° section by 0.67° at the junction with the R13 arc; the whole straight section, and a
+  /// contact on it, stays inside) ...
+  double flange_angle_tolerance = 1.0 * units::pi / 180.0;  ///< [rad]
+  /// ... and a wheel has a flange when its lowest point lies on the gauge side (y < 0) at least
+  /// this far below its height at the taping line (default 10 mm, profiles.md §5).
+  double flange_min_height = 10e-3;  ///< [m]
   CurveOptions curve;          ///< smoothing of both profiles (profile_curve.hpp)
+  /// Measured or exact, per profile (case file geometry.noise; profiles.md "Measured or exact");
+  /// each overrides curve.noise for its profile. Default auto: decided from the data.
+  ProfileNoise wheel_noise = ProfileNoise::Auto, rail_noise = ProfileNoise::Auto;
   bool valid(std::string* why) const;
 };
 
@@ -67,6 +79,14 @@ struct CandidateGeom {
   double r_roll = 0;  ///< [m] wheel rolling radius at y_w
   double R_wyy() const;  ///< [m] r_roll / cos γ (method.md §2, Meusnier)
   double r_roller = 0;   ///< [m] roller rigs: the roller's radius at y_r (0: a straight rail)
+  /// The point lies off the end of a profile (method.md §3.7): y_w outside the wheel profile (its
+  /// height and curvature are the end's, extrapolated) or within one strip width of its ends (an
+  /// edge contact: the profile is cut where the contact would be), or y_r within one strip width
+  /// of the rail's ends.
+  bool off_profile = false;
+  /// Flange climb (method.md §3.7): y_w lies between the wheel's flange tip and its steepest
+  /// flange point, i.e. the contact has passed the largest contact angle of the wheel.
+  bool flange_climb = false;
   /// [1/m] 1/R_ryy = cos γ / r_roller (Meusnier, as for the wheel); 0 for a straight rail.
   double k_ryy() const;
 };
@@ -90,6 +110,11 @@ class ContactGeometry {
   std::vector<std::size_t> main_strip;   ///< per grid point: index of the strip with the smallest gap
   std::vector<double> z_contact;         ///< [m] per grid point: wheel height offset at geometric contact
   double y_offset = 0;                   ///< [m] rail y of the wheel's origin (taping line) at t_Y = 0
+  /// The wheel's steepest flange section (method.md §3.7): largest contact angle [rad] on the flange
+  /// face (between the flange tip and y_w = 0), and the tip-side end of the part of the face
+  /// within `flange_angle_tolerance` of it [m]; has_flange false for a wheel without a flange.
+  bool has_flange = false;
+  double flange_gamma_max = 0, flange_y_steepest = 0;
   double rail_gauge_y = 0;               ///< [m] gauge point of the rail (rail frame); explicit positioning: the gauge point if the rail has one, else 0
   double wheel_window = 0, rail_window = 0;  ///< [m] curvature fit windows used (profile_curve.hpp)
   /// The smooth profiles the tables were built from, kept for the 3-D gap of the grid methods
@@ -129,6 +154,9 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
 struct PairGeometry {
   Profile wheel, rail;
   ContactGeometry geo;
+  /// The rail's cant as estimated from its head, against the case's inclination (its warnings
+  /// are also in rail.warnings).
+  RailCantCheck cant;
 };
 
 }  // namespace mh

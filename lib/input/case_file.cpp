@@ -367,7 +367,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   if (j.contains("geometry")) {
     const json& g = j.at("geometry");
     c.only_keys(g, "/geometry", {"tY_min_mm", "tY_max_mm", "tY_step_mm", "strip_width_mm", "jump_threshold_deg",
-                                 "jump_distance_mm", "min_ellipse_width_mm", "fit_window_mm", "measured_fit_window_mm"});
+                                 "jump_distance_mm", "min_ellipse_width_mm", "fit_window_mm", "measured_fit_window_mm", "noise"});
     if (g.contains("tY_min_mm") != g.contains("tY_max_mm"))
       c.fail("/geometry", &g, "give both tY_min_mm and tY_max_mm, or neither (then the range covers the sweep)");
     if (g.contains("tY_min_mm")) {
@@ -392,6 +392,27 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     if (g.contains("min_ellipse_width_mm")) cf.geometry.min_ellipse_width = c.number(g, "/geometry", "min_ellipse_width_mm") * units::mm;
     if (g.contains("fit_window_mm")) cf.geometry.curve.window_half_width = c.positive(g, "/geometry", "fit_window_mm") * units::mm;
     if (g.contains("measured_fit_window_mm")) cf.geometry.curve.measured_window_half_width = c.positive(g, "/geometry", "measured_fit_window_mm") * units::mm;
+    // Measured or exact (profiles.md "Measured or exact"): one value for both profiles or
+    // {"wheel": ..., "rail": ...} (a missing one stays "auto").
+    if (g.contains("noise")) {
+      const json& nz = g.at("noise");
+      auto noise = [&](const json& v, const std::string& path) {
+        if (!v.is_string()) c.fail(path, &v, "must be \"auto\", \"exact\" or \"measured\"");
+        try {
+          return parse_profile_noise(v.get<std::string>());
+        } catch (const std::invalid_argument&) {
+          c.fail(path, &v, "must be \"auto\", \"exact\" or \"measured\"");
+        }
+        return ProfileNoise::Auto;
+      };
+      if (nz.is_object()) {
+        c.only_keys(nz, "/geometry/noise", {"wheel", "rail"});
+        if (nz.contains("wheel")) cf.geometry.wheel_noise = noise(nz.at("wheel"), "/geometry/noise/wheel");
+        if (nz.contains("rail")) cf.geometry.rail_noise = noise(nz.at("rail"), "/geometry/noise/rail");
+      } else {
+        cf.geometry.wheel_noise = cf.geometry.rail_noise = noise(nz, "/geometry/noise");
+      }
+    }
   }
   // model and material
   if (j.contains("model")) {
@@ -605,7 +626,8 @@ nlohmann::json CaseFile::resolved_json() const {
                    {"jump_distance_mm", geometry.jump_distance * units::per_mm},
                    {"min_ellipse_width_mm", geometry.min_ellipse_width * units::per_mm},
                    {"fit_window_mm", geometry.curve.window_half_width * units::per_mm},
-                   {"measured_fit_window_mm", geometry.curve.measured_window_half_width * units::per_mm}};
+                   {"measured_fit_window_mm", geometry.curve.measured_window_half_width * units::per_mm},
+                   {"noise", {{"wheel", to_string(geometry.wheel_noise)}, {"rail", to_string(geometry.rail_noise)}}}};
   json mat = {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}};
   if (!std::isnan(material.E_rail))
     mat = {{"wheel", {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}}},

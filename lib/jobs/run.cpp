@@ -27,6 +27,30 @@ nlohmann::json program_json() {
   return {{"name", "mhcontact"}, {"version", MHCONTACT_VERSION}, {"commit", MHCONTACT_GIT_COMMIT}};
 }
 
+nlohmann::json pair_summary_json(const PairGeometry& pg) {
+  nlohmann::json j;
+  if (pg.geo.wheel_curve && pg.geo.rail_curve)
+    j["profiles"] = {{"wheel", pg.geo.wheel_curve->noise().measured ? "measured" : "exact"},
+                     {"rail", pg.geo.rail_curve->noise().measured ? "measured" : "exact"}};
+  j["rail_cant_deg"] = pg.cant.used.found ? nlohmann::json(pg.cant.used.angle / units::deg) : nlohmann::json(nullptr);
+  j["pair_warnings"] = pg.cant.warnings;
+  return j;
+}
+
+std::string pair_summary_line(const PairGeometry& pg) {
+  std::string s = "mhcontact run: profiles:";
+  for (const auto& [name, c] : {std::pair<const char*, const ProfileCurve*>{"wheel", pg.geo.wheel_curve.get()},
+                                {"rail", pg.geo.rail_curve.get()}})
+    if (c) s += std::string(" ") + name + " " + c->noise().reason + ";";
+  if (pg.cant.used.found)
+    s += " rail cant " + format_number(std::round(pg.cant.used.angle / units::deg * 1e3) / 1e3 + 0.0) + " deg (" +
+         cant_ratio(pg.cant.used.angle) + (pg.cant.used.confident ? "" : ", not confident") + ")";
+  else
+    s += " rail cant not estimated";
+  if (!pg.cant.warnings.empty()) s += "; " + std::to_string(pg.cant.warnings.size()) + " cant warning(s)";
+  return s + "\n";
+}
+
 void warn_profiles(const PairGeometry& pg, std::ostream& err) {
   for (const Profile* p : {&pg.wheel, &pg.rail})
     for (const auto& w : p->warnings) err << "mhcontact: warning: " << p->source << ": " << w << "\n";
@@ -36,6 +60,10 @@ PairGeometry build_pair_geometry(const CaseFile& cf) {
   PairGeometry pg;
   pg.wheel = load_profile(cf.wheel, ProfileKind::Wheel);
   pg.rail = load_profile(cf.rail, ProfileKind::Rail, cf.inclination);
+  // Conventions that can be checked are checked (issue #10 item 9): a cant applied twice, a
+  // mirrored canted rail (profiles.md "Cant checks").
+  pg.cant = check_rail_cant(pg.rail, cf.inclination);
+  for (const auto& w : pg.cant.warnings) pg.rail.warnings.push_back(w);
   pg.geo = build_geometry(pg.wheel, pg.rail, cf.track, cf.geometry);
   return pg;
 }
@@ -52,6 +80,10 @@ void write_pair_geometry(const CaseFile& cf, const PairGeometry& pg, RunDirector
   j["profiles"] = profiles_json(pg);
   j["y_offset_mm"] = G.y_offset * units::per_mm;
   j["rail_gauge_point_y_mm"] = G.rail_gauge_y * units::per_mm;
+  // The wheel's steepest flange section, against which flange climb is flagged (method.md §3.7).
+  j["wheel_flange"] = G.has_flange ? nlohmann::json{{"gamma_max_deg", G.flange_gamma_max / units::deg},
+                                                    {"y_steepest_mm", G.flange_y_steepest * units::per_mm}}
+                                   : nlohmann::json(nullptr);
   j["strips"] = G.strip_y.size();
   j["grid_points"] = G.tY.size();
   j["potential_ellipses"] = ellipses_json(G);
@@ -196,7 +228,9 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (jw) {
     jw->end_array();
-    jw->member("summary", counts.summary_json(n));
+    nlohmann::json summary = counts.summary_json(n);
+    summary.update(pair_summary_json(pg));
+    jw->member("summary", summary);
     jw->end();
   }
   if (fc) {
@@ -208,7 +242,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   if (opt.shard_count > 1 && !to_stdout) {
     nlohmann::json sh = {{"schema", "mhcontact.shard/1"}, {"index", opt.shard_index}, {"count", opt.shard_count},
                          {"unit", "case"}, {"first", first}, {"end", end}, {"total", n_all},
-                         {"summary", counts.summary_json(n_all)},
+                         {"summary", [&] { nlohmann::json su = counts.summary_json(n_all); su.update(pair_summary_json(pg)); return su; }()},
                          {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0}, {"digits", opt.digits},
                          {"inputs", inputs_json(cf)}, {"profiles", profiles_json(pg)}};
     OutputFile f(rd->path("shard.json"));
@@ -218,10 +252,11 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   if (fj) fj->commit();
   if (fp) fp->commit();
   if (fs) fs->commit();
-  if (rd) rd->finish("run", program_json(), {{"digits", opt.digits ? nlohmann::json(opt.digits) : nlohmann::json("max")}, {"summary", counts.summary_json(n)}});
+  if (rd) rd->finish("run", program_json(), {{"digits", opt.digits ? nlohmann::json(opt.digits) : nlohmann::json("max")}, {"summary", counts.summary_json(n)}, {"pair", pair_summary_json(pg)}});
   if (to_stdout) check_written(out, "standard output");
   if (!opt.quiet) {
     if (opt.progress) err << "\n";
+    err << pair_summary_line(pg);
     err << "mhcontact run: " << n << " cases";
     if (opt.shard_count > 1) err << " (shard " << opt.shard_index << "/" << opt.shard_count << ": cases " << first << " .. " << end - 1 << ")";
     for (const auto& [k, v] : by_status) err << ", " << k << " " << v;

@@ -14,6 +14,12 @@ namespace mh {
 /// Read the case's profiles (rail with its inclination) and build their contact geometry.
 PairGeometry build_pair_geometry(const CaseFile& cf);
 
+/// The pair's part of the run summary (results.json, run.json): each profile's exact/measured
+/// class, the rail's estimated cant [deg] and the pair warnings (cant checks).
+nlohmann::json pair_summary_json(const PairGeometry& pg);
+/// "mhcontact run: profiles: wheel exact: ...; rail measured: ...; rail cant 1.432 deg (1:40)\n"
+std::string pair_summary_line(const PairGeometry& pg);
+
 /// Print each profile's reading warnings on `err`.
 void warn_profiles(const PairGeometry& pg, std::ostream& err);
 

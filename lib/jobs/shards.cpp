@@ -127,6 +127,10 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
         for (auto b = it.value().begin(); b != it.value().end(); ++b) warnings[b.key()] += b.value().get<std::uint64_t>();
       } else if (!batch && it.key() == "cases") {
         summary["cases"] = it.value();
+      } else if (!it.value().is_number_unsigned()) {
+        // Facts of the profile pair (pair_summary_json: classes, cant, pair warnings): the same in
+        // every shard.
+        if (!summary.contains(it.key())) summary[it.key()] = it.value();
       } else {
         summary[it.key()] = summary.value(it.key(), std::uint64_t{0}) + it.value().get<std::uint64_t>();
       }

@@ -12,10 +12,31 @@ namespace mh {
 
 using namespace cells;
 
-nlohmann::json profile_json(const Profile& p, double window) {
-  return {{"source", p.source}, {"format", p.format}, {"kind", to_string(p.kind)},
-          {"sha256", p.checksum}, {"points", p.size()}, {"y_min_mm", p.y.front() * units::per_mm},
-          {"y_max_mm", p.y.back() * units::per_mm}, {"fit_window_mm", window * units::per_mm}, {"warnings", p.warnings}};
+nlohmann::json noise_json(const NoiseDecision& d) {
+  return {{"class", d.measured ? "measured" : "exact"}, {"forced", d.forced},
+          {"median_residual_um", d.median_residual * 1e6}, {"print_step_mm", d.print_step * units::per_mm},
+          {"rounding_rms_um", d.rounding_rms * 1e6}, {"threshold_um", d.threshold * 1e6}, {"reason", d.reason}};
+}
+
+nlohmann::json cant_json(const RailCant& c) {
+  if (!c.found) return {{"found", false}, {"why", c.why}};
+  nlohmann::json j = {{"found", true}, {"angle_deg", c.angle / units::deg}, {"ratio", cant_ratio(c.angle)},
+                      {"std_error_deg", c.std_error / units::deg}, {"residual_mm", c.residual * units::per_mm},
+                      {"levels", c.levels}, {"confident", c.confident}};
+  if (!c.confident) j["why"] = c.why;
+  return j;
+}
+
+nlohmann::json profile_json(const Profile& p, const ProfileCurve* curve) {
+  nlohmann::json j = {{"source", p.source}, {"format", p.format}, {"kind", to_string(p.kind)},
+                      {"sha256", p.checksum}, {"points", p.size()}, {"y_min_mm", p.y.front() * units::per_mm},
+                      {"y_max_mm", p.y.back() * units::per_mm}};
+  if (curve) {
+    j["fit_window_mm"] = curve->window_used() * units::per_mm;
+    j["noise"] = noise_json(curve->noise());
+  }
+  j["warnings"] = p.warnings;
+  return j;
 }
 
 nlohmann::json ellipses_json(const ContactGeometry& G) {
@@ -60,7 +81,13 @@ nlohmann::json inputs_json(const CaseFile& cf, const std::string& base_dir) {
 }
 
 nlohmann::json profiles_json(const PairGeometry& pg) {
-  return {{"wheel", profile_json(pg.wheel, pg.geo.wheel_window)}, {"rail", profile_json(pg.rail, pg.geo.rail_window)}};
+  nlohmann::json j = {{"wheel", profile_json(pg.wheel, pg.geo.wheel_curve.get())},
+                      {"rail", profile_json(pg.rail, pg.geo.rail_curve.get())}};
+  // The rail's cant as used (after the case's inclination) and as in its file (profiles.md §3).
+  j["rail"]["cant"] = cant_json(pg.cant.used);
+  j["rail"]["cant"]["file_angle_deg"] = pg.cant.file_angle / units::deg;
+  j["rail"]["cant"]["inclination_deg"] = pg.cant.inclination / units::deg;
+  return j;
 }
 
 // The profiles as used (rail with its inclination), canonical frame, mm: for plots.

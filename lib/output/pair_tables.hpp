@@ -6,11 +6,17 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/contact_geometry.hpp"
+#include "profile/rail_cant.hpp"
 #include "input/case_file.hpp"
 
 namespace mh {
 
-nlohmann::json profile_json(const Profile& p, double window);
+/// What was read of a profile, and how its curvature fit classified it (`curve` may be null).
+nlohmann::json profile_json(const Profile& p, const ProfileCurve* curve);
+/// {"class": "exact"|"measured", "forced", "median_residual_um", "print_step_mm", ...}
+nlohmann::json noise_json(const NoiseDecision& d);
+/// {"found", "angle_deg", "ratio", "std_error_deg", "residual_mm", "levels", "confident"[, "why"]}
+nlohmann::json cant_json(const RailCant& c);
 nlohmann::json ellipses_json(const ContactGeometry& G);
 /// The case file's resolved inputs plus what was read of each profile.
 /// The resolved inputs as a valid case file (defaults filled in, the sweep or case list, profile

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/numfmt.hpp"
 
 namespace mh {
 namespace {
@@ -106,10 +108,54 @@ LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, 
 
 }  // namespace
 
+ProfileNoise parse_profile_noise(const std::string& s) {
+  if (s == "auto") return ProfileNoise::Auto;
+  if (s == "exact") return ProfileNoise::Exact;
+  if (s == "measured") return ProfileNoise::Measured;
+  throw std::invalid_argument("unknown profile noise '" + s + "' (expected auto, exact or measured)");
+}
+
+const char* to_string(ProfileNoise n) {
+  switch (n) {
+    case ProfileNoise::Auto: return "auto";
+    case ProfileNoise::Exact: return "exact";
+    case ProfileNoise::Measured: return "measured";
+  }
+  return "?";
+}
+
+namespace {
+std::string um(double v_m) { return format_number(std::round(v_m * 1e9) / 1e3) + " µm"; }  // to 1 nm
+}  // namespace
+
 ProfileCurve::ProfileCurve(const Profile& p, const CurveOptions& opt) {
   build(p, opt, opt.window_half_width);
-  if (opt.measured_window_half_width > opt.window_half_width && median_rms_ > opt.noise_threshold)
-    build(p, opt, opt.measured_window_half_width);
+  // Measured or exact (profiles.md "Measured or exact"): the residual against what rounding the
+  // printed coordinates explains.
+  NoiseDecision& d = noise_;
+  d.median_residual = median_rms_;
+  d.print_step = p.print_step;
+  d.rounding_rms = p.print_step / std::sqrt(12.0);
+  d.threshold = std::max(opt.noise_threshold, opt.quantisation_factor * d.rounding_rms);
+  const std::string step = p.print_step > 0 ? "the printed " + format_number(p.print_step * 1e3) + " mm" : "";
+  const std::string rule =
+      "median residual " + um(d.median_residual) + (d.median_residual > d.threshold ? " > " : " <= ") + um(d.threshold) +
+      (opt.quantisation_factor * d.rounding_rms > opt.noise_threshold
+           ? " (" + format_number(opt.quantisation_factor) + " x " + um(d.rounding_rms) + ", rounding to " + step + ")"
+           : " (noise threshold" + (step.empty() ? std::string() : "; rounding to " + step + " explains " + um(d.rounding_rms)) + ")");
+  const bool coarse = d.rounding_rms > opt.max_exact_rounding && d.median_residual > opt.noise_threshold;
+  const std::string coarse_rule = "printed to " + format_number(p.print_step * 1e3) + " mm, whose rounding (" +
+                                  um(d.rounding_rms) + " RMS) exceeds " + um(opt.max_exact_rounding) +
+                                  ": noise to the narrow window; " + rule;
+  if (opt.noise == ProfileNoise::Auto) {
+    d.measured = d.median_residual > (coarse ? opt.noise_threshold : d.threshold);
+    d.reason = std::string(d.measured ? "measured: " : "exact: ") + (coarse ? coarse_rule : rule);
+  } else {
+    d.forced = true;
+    d.measured = opt.noise == ProfileNoise::Measured;
+    d.reason = std::string(d.measured ? "measured" : "exact") + ": forced by the noise option; " + rule;
+  }
+  if (d.measured && opt.measured_window_half_width > opt.window_half_width) build(p, opt, opt.measured_window_half_width);
 }
 
 void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w) {

@@ -23,11 +23,19 @@
 // upwards. Radii with the paper's sign (positive when the centre of curvature is inside the
 // material, method.md §1): rail 1/R_rxx = −kappa (material below), wheel 1/R_wxx = +kappa
 // (material above).
+#include <string>
 #include <vector>
 
 #include "profile/profile.hpp"
 
 namespace mh {
+
+/// Whether a profile is an exact construction or a measurement (profiles.md "Measured or exact"):
+/// Auto decides from the data, Exact and Measured force the narrow or the wide window.
+enum class ProfileNoise { Auto, Exact, Measured };
+/// "auto", "exact", "measured"; std::invalid_argument otherwise.
+ProfileNoise parse_profile_noise(const std::string& s);
+const char* to_string(ProfileNoise n);
 
 struct CurveOptions {
   double window_half_width = 1.0e-3;  ///< [m] w: half-width of the centred fit window (default 1 mm)
@@ -35,13 +43,35 @@ struct CurveOptions {
   double one_sided_factor = 3.0;      ///< switch to a one-sided window when the centred residual exceeds this × the better one (default 3)
   double residual_floor = 1e-9;       ///< [m] residuals below this count as exact: no switch (default 1 nm)
   int min_points = 5;                 ///< a window is widened until it holds at least this many points (default 5)
-  /// Measured profiles: when the median RMS residual of the centred fits exceeds `noise_threshold`
-  /// (the profile is not an exact construction but carries measurement noise), the whole profile
-  /// is refitted with the wider window `measured_window_half_width`, which keeps the curvature
-  /// sign stable on a rail crown (R 300 mm) under ±2 µm noise. Set it ≤ window_half_width to
-  /// disable.
+  /// Measured profiles: a profile is "measured" (not an exact construction but carrying
+  /// measurement noise) when the median RMS residual r of the centred fits exceeds both
+  /// `noise_threshold` and `quantisation_factor` × q/√12, the RMS error that rounding the printed
+  /// coordinates to their step q (Profile::print_step) alone gives (uniform rounding error; the
+  /// fit's residual normal to the profile is q/√12 whatever the slope, as both y and z are
+  /// rounded to q). A measured profile is refitted with the wider window
+  /// `measured_window_half_width`, which keeps the curvature sign stable on a rail crown (R 300
+  /// mm) under ±2 µm noise. Set it ≤ window_half_width to disable. `noise` forces the choice.
   double noise_threshold = 0.2e-6;            ///< [m] (default 0.2 µm)
+  double quantisation_factor = 3.0;           ///< [-] (default 3)
+  /// ... but rounding is noise to the narrow window too: when the rounding RMS q/√12 exceeds
+  /// this (2 decimals: 2.9 µm), the quantisation allowance is not granted and a residual above
+  /// `noise_threshold` makes the profile measured (default 0.5 µm: 3 decimals, 0.29 µm, can still
+  /// be exact).
+  double max_exact_rounding = 0.5e-6;         ///< [m]
   double measured_window_half_width = 3.0e-3; ///< [m] (default 3 mm)
+  ProfileNoise noise = ProfileNoise::Auto;    ///< (default auto: decided from the data as above)
+};
+
+/// How a profile was classified by the curve fit (ProfileCurve::noise()).
+struct NoiseDecision {
+  bool measured = false;        ///< true: the wide window was used
+  bool forced = false;          ///< decided by CurveOptions::noise, not from the data
+  double median_residual = 0;   ///< [m] r: median RMS residual of the narrow-window centred fits
+  double print_step = 0;        ///< [m] q: step of the printed coordinates (0: not printed/unknown)
+  double rounding_rms = 0;      ///< [m] q/√12
+  double threshold = 0;         ///< [m] max(noise_threshold, quantisation_factor × q/√12)
+  /// "exact: median residual 0.28 µm <= 0.87 µm (3 × 0.29 µm, rounding to the printed 0.001 mm)".
+  std::string reason;
 };
 
 class ProfileCurve {
@@ -63,6 +93,8 @@ class ProfileCurve {
   /// Half-width of the fit window actually used [m], and the median RMS residual of its centred fits.
   double window_used() const { return window_; }
   double median_residual() const { return median_rms_; }
+  /// Exact or measured, and why.
+  const NoiseDecision& noise() const { return noise_; }
 
   const std::vector<double>& node_kappa() const { return k_; }
   double node_y(std::size_t i) const { return y0_ + h_ * static_cast<double>(i); }
@@ -73,6 +105,7 @@ class ProfileCurve {
   std::vector<double> z_, dz_, k_;
   std::vector<signed char> side_;
   double window_ = 0, median_rms_ = 0;
+  NoiseDecision noise_;
   void build(const Profile& p, const CurveOptions& opt, double w);
 };
 

@@ -41,6 +41,11 @@ struct Profile {
   CleanupReport cleanup;   ///< what the clean-up did (files only)
   /// Measures found in the file's header (MiniProf "Sd/Sh/qR" line, ...), as written there.
   std::vector<std::pair<std::string, std::string>> file_measures;
+  /// [m] Step of the coordinates as printed in the file: 10^-d mm for the most decimals d seen
+  /// (times the reader's and the user's scale); 0 for generated profiles and sampled MiniProf
+  /// drawing elements. The curvature fit compares its residual with the rounding error this
+  /// step explains (curve.hpp, profiles.md "Measured or exact").
+  double print_step = 0;
 
   std::size_t size() const { return y.size(); }
 };

@@ -21,6 +21,10 @@ std::vector<std::string> tokens(const std::string& line);
 bool looks_numeric(const std::string& t);
 /// A number that must be the whole token and finite; InputError at `where` otherwise.
 double parse_number(const std::string& tok, const std::string& where);
+/// The step of the last printed digit of a number token, in the token's units: 10^-d for d
+/// decimals, times 10^e for an exponent ("12.345" 0.001, "1.5e-3" 1e-4, "12" 1); 0 when the token
+/// is not a plain decimal number (profiles.md "Measured or exact").
+double printed_step(const std::string& tok);
 /// A whole number in [lo, hi] (a count, a type code); InputError at `where` naming `what` otherwise.
 long parse_integer(const std::string& tok, const std::string& where, const std::string& what, long lo, long hi);
 
@@ -33,7 +37,18 @@ struct RawProfile {
   std::vector<std::string> warnings;
   CleanupReport cleanup;
   std::vector<std::pair<std::string, std::string>> measures;  ///< from the header (MiniProf Sd/Sh/qR)
+  /// Smallest printed step of the coordinates (the most decimals seen), in the file's length
+  /// units until the reader scales it to mm; 0: not printed (sampled elements) or unknown.
+  double print_step = 0;
   void add(double yy, double zz, std::size_t ln) { y.push_back(yy); z.push_back(zz); line.push_back(ln); }
+  /// The same from the tokens as printed; records their printed step.
+  void add(const std::string& ty, const std::string& tz, const std::string& where, std::size_t ln) {
+    add(parse_number(ty, where), parse_number(tz, where), ln);
+    for (const std::string* t : {&ty, &tz}) {
+      const double q = printed_step(*t);
+      if (q > 0 && (print_step == 0 || q < print_step)) print_step = q;
+    }
+  }
   std::size_t size() const { return y.size(); }
 };
 

@@ -287,8 +287,7 @@ RawProfile read_miniprof(const std::string& path, const std::vector<std::string>
         r.warnings.push_back(where + ": ignored the text after the columns ('" + t[nnum] + "...')");
         junk_warned = true;
       }
-      const double X = parse_number(t[0], where), Y = parse_number(t[1], where);
-      r.add(X, Y, i + 1);
+      r.add(t[0], t[1], where, i + 1);
     }
   if (xypoints >= 0 && static_cast<long>(r.size()) < xypoints)
     throw InputError(path, "XYPoints=" + std::to_string(xypoints),

@@ -40,7 +40,7 @@ RawProfile read_simpack(const std::string& path, const std::vector<std::string>&
       if (t.size() < 2 || t.size() > 3)
         throw InputError(where, "'" + l + "'", "a point row must be 'y z [weight]'",
                          "check for a missing point.end or a broken row");
-      r.add(parse_number(t[0], where), parse_number(t[1], where), i + 1);
+      r.add(t[0], t[1], where, i + 1);
       if (t.size() == 3) parse_number(t[2], where);
       continue;
     }
@@ -113,6 +113,7 @@ RawProfile read_simpack(const std::string& path, const std::vector<std::string>&
     t.y[k] = y * to_mm;
     t.z[k] = -z * to_mm;
   }
+  t.print_step = r.print_step * to_mm;
   if (inversion) {
     std::reverse(t.y.begin(), t.y.end());
     std::reverse(t.z.begin(), t.z.end());

@@ -78,7 +78,7 @@ RawProfile read_table(const std::string& path, const std::vector<std::string>& l
     if (t.size() != 2)
       throw InputError(where, "'" + l + "'", "a table row must hold exactly two numbers y z",
                        "remove extra columns; use '#' for comments");
-    r.add(parse_number(t[0], where), parse_number(t[1], where), i + 1);
+    r.add(t[0], t[1], where, i + 1);
   }
   if (gensys)
     for (std::size_t k = 0; k < r.size(); ++k) r.y[k] = -r.y[k], r.z[k] = -r.z[k];

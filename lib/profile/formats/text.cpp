@@ -73,6 +73,28 @@ double parse_number(const std::string& tok, const std::string& where) {
   return v;
 }
 
+double printed_step(const std::string& tok) {
+  std::size_t i = 0;
+  if (i < tok.size() && (tok[i] == '+' || tok[i] == '-')) ++i;
+  int decimals = 0;
+  bool digits = false, point = false;
+  for (; i < tok.size(); ++i) {
+    const char c = tok[i];
+    if (std::isdigit(static_cast<unsigned char>(c))) { digits = true; if (point) ++decimals; }
+    else if (c == '.' && !point) point = true;
+    else break;
+  }
+  if (!digits) return 0;
+  long exponent = 0;
+  if (i < tok.size()) {
+    if (tok[i] != 'e' && tok[i] != 'E') return 0;
+    char* e = nullptr;
+    exponent = std::strtol(tok.c_str() + i + 1, &e, 10);
+    if (*e != '\0' || e == tok.c_str() + i + 1 || std::labs(exponent) > 300) return 0;
+  }
+  return std::pow(10.0, static_cast<double>(exponent - decimals));
+}
+
 long parse_integer(const std::string& tok, const std::string& where, const std::string& what, long lo, long hi) {
   const double v = parse_number(tok, where);
   if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi))

@@ -39,8 +39,9 @@ RawProfile read_vampire(const std::string& path, const std::vector<std::string>&
     if (t.size() != 4) throw InputError(where, "'" + l + "'", "a VAMPIRE row must be 'yl zl yr zr'");
     double v[4];
     for (int k = 0; k < 4; ++k) v[k] = parse_number(t[k], where);
-    if (side == "right") r.add(v[2], v[3], i + 1);
-    else r.add(v[0], v[1], i + 1);
+    (void)v;
+    if (side == "right") r.add(t[2], t[3], where, i + 1);
+    else r.add(t[0], t[1], where, i + 1);
   }
   return r;
 }
