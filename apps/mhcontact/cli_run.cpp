@@ -36,7 +36,7 @@ void add_geometry_command(CLI::App& app, CliContext& ctx) {
 }
 
 void add_run_command(CLI::App& app, CliContext& ctx) {
-  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false, strips = false, fail_on_warning = false; std::string shard, digits = "10"; };
+  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false, strips = false, fail_on_warning = false; std::string shard, digits = "10", pressure_cases; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Solve every case of the case file's sweep (or of a batch manifest over many profile pairs) (writes DIR/cases.csv, DIR/ellipses.csv, "
@@ -49,6 +49,8 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
       ->check(CLI::Range(0u, 1024u))->capture_default_str();
   cmd->add_option("--pressure-grid", o->pressure_grid,
                   "Also write DIR/pressure.csv: the pressure of every loaded ellipse on an N x N grid over its patch");
+  cmd->add_option("--pressure-cases", o->pressure_cases,
+                  "With --pressure-grid: only these cases, e.g. 3,17,40-45 (case numbers; in a batch, per pair)");
   cmd->add_flag("--strips", o->strips, "Strip method: also write DIR/strips.csv, one row per loaded strip");
   cmd->add_option("--digits", o->digits, "Significant digits of the numbers in the tables (1..17), or max for the shortest round-trip")
       ->capture_default_str();
@@ -68,6 +70,7 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
     ro.fail_on_warning = o->fail_on_warning;
     ro.quiet = o->quiet;
     ro.pressure_grid = o->pressure_grid;
+    if (!o->pressure_cases.empty()) ro.pressure_cases = parse_case_selection(o->pressure_cases);
     ro.strips = o->strips;
     ro.force = o->force;
     ro.digits = parse_digits(o->digits);

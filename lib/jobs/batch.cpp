@@ -51,7 +51,8 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     throw InputError("--pressure-grid", std::to_string(opt.pressure_grid), "the strip and \"auto\" methods write no pressure grid",
                      "use a single grid method or the multi-Hertzian method");
   const int np = opt.pressure_grid;
-  check_pressure_grid(np, (end - first) * shared.case_count(), plastic, opt.force);
+  check_pressure_cases(opt, shared.case_count());
+  check_pressure_grid(np, (end - first) * opt.pressure_cases.count_in(0, shared.case_count()), plastic, opt.force);
   RunDirectory rd(opt.out_dir);
   std::unique_ptr<OutputFile> fc, fe, fpa, fp, fpp, fj;
   std::unique_ptr<JsonObjectStream> jw;

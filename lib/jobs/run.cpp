@@ -175,8 +175,10 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
                      "give -o DIR, or --format json");
   if (opt.shard_count < 1 || opt.shard_index < 1 || opt.shard_index > opt.shard_count)
     throw InputError("--shard", std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count), "must be K/N with 1 <= K <= N");
-  check_pressure_grid(np, cf.case_count() * opt.shard_index / opt.shard_count -
-                              cf.case_count() * (opt.shard_index - 1) / opt.shard_count, plastic, opt.force);
+  check_pressure_cases(opt, cf.case_count());
+  check_pressure_grid(np, opt.pressure_cases.count_in(cf.case_count() * (opt.shard_index - 1) / opt.shard_count,
+                                                      cf.case_count() * opt.shard_index / opt.shard_count),
+                      plastic, opt.force);
   if (!to_stdout) {
     rd = std::make_unique<RunDirectory>(opt.out_dir);
     if (np) {

@@ -8,8 +8,10 @@
 #include <charconv>
 #include <cstdio>
 #include <exception>
+#include <iterator>
 #include <mutex>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -25,6 +27,66 @@ std::function<void(std::uint64_t)> g_case_hook;
 }  // namespace
 
 void set_case_hook_for_tests(std::function<void(std::uint64_t)> hook) { g_case_hook = std::move(hook); }
+
+bool CaseSelection::contains(std::uint64_t c) const {
+  if (ranges.empty()) return true;
+  auto it = std::upper_bound(ranges.begin(), ranges.end(), c,
+                             [](std::uint64_t v, const std::pair<std::uint64_t, std::uint64_t>& r) { return v < r.first; });
+  return it != ranges.begin() && c <= std::prev(it)->second;
+}
+
+std::uint64_t CaseSelection::count_in(std::uint64_t first, std::uint64_t end) const {
+  if (ranges.empty()) return end - first;
+  std::uint64_t n = 0;
+  for (const auto& [a, b] : ranges) {
+    const std::uint64_t lo = std::max(a, first), hi = std::min(b + 1, end);
+    if (hi > lo) n += hi - lo;
+  }
+  return n;
+}
+
+CaseSelection parse_case_selection(const std::string& text) {
+  auto bad = [&](const std::string& rule) {
+    return InputError("--pressure-cases", text, rule, "give case numbers and ranges, e.g. 3,17,40-45");
+  };
+  auto number = [&](const std::string& t) {
+    std::uint64_t v = 0;
+    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size()) throw bad("'" + t + "' is not a case number");
+    return v;
+  };
+  CaseSelection sel;
+  std::size_t a = 0;
+  while (a <= text.size()) {
+    const std::size_t b = std::min(text.find(',', a), text.size());
+    const std::string item = text.substr(a, b - a);
+    const std::size_t dash = item.find('-');
+    const std::uint64_t lo = number(item.substr(0, dash));
+    const std::uint64_t hi = dash == std::string::npos ? lo : number(item.substr(dash + 1));
+    if (hi < lo) throw bad("the range " + item + " runs backwards");
+    sel.ranges.emplace_back(lo, hi);
+    a = b + 1;
+  }
+  // Sorted and merged: overlapping or touching ranges become one.
+  std::sort(sel.ranges.begin(), sel.ranges.end());
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> merged;
+  for (const auto& r : sel.ranges) {
+    if (!merged.empty() && r.first <= merged.back().second + 1) merged.back().second = std::max(merged.back().second, r.second);
+    else merged.push_back(r);
+  }
+  sel.ranges = merged;
+  return sel;
+}
+
+void check_pressure_cases(const RunOptions& opt, std::uint64_t cases) {
+  if (opt.pressure_cases.all()) return;
+  if (!opt.pressure_grid)
+    throw InputError("--pressure-cases", "", "selects the cases of the pressure grid: needs --pressure-grid N");
+  if (opt.pressure_cases.largest() >= cases)
+    throw InputError("--pressure-cases", std::to_string(opt.pressure_cases.largest()),
+                     "no such case: the case file has " + std::to_string(cases) + " cases (0 to " +
+                         std::to_string(cases - 1) + ")");
+}
 
 void check_pressure_grid(int N, std::uint64_t cases, bool plastic, bool force) {
   if (N == 0) return;
@@ -308,7 +370,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
             }
           }
           if (want_json) B.json.push_back(std::move(f.json));
-          if (np) {
+          if (np && opt.pressure_cases.contains(c0 + i)) {
             if (grid_method) format_patch_pressure(c0 + i, r, f.pressure);
             else format_pressure(c0 + i, r, cf.material, plastic, np, f.pressure);
             append_prefixed(B.pressure, out.prefix, f.pressure);

@@ -7,12 +7,26 @@
 #include <map>
 #include <ostream>
 #include <string>
+#include <utility>
 
 #include "geometry/contact_geometry.hpp"
 #include "input/case_file.hpp"
 #include "output/json_stream.hpp"
 
 namespace mh {
+
+/// A set of case numbers written as a list of numbers and ranges, "3,17,40-45" (--pressure-cases).
+/// Empty: every case.
+struct CaseSelection {
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> ranges;  ///< inclusive, sorted, disjoint
+  bool all() const { return ranges.empty(); }
+  bool contains(std::uint64_t c) const;
+  /// How many of the cases [first, end) it holds.
+  std::uint64_t count_in(std::uint64_t first, std::uint64_t end) const;
+  std::uint64_t largest() const { return ranges.empty() ? 0 : ranges.back().second; }
+};
+/// Parse "3,17,40-45" (numbers >= 0, ranges a-b with a <= b). Throws InputError on --pressure-cases.
+CaseSelection parse_case_selection(const std::string& text);
 
 /// Options of `run` shared by single runs and batches.
 struct RunOptions {
@@ -26,6 +40,9 @@ struct RunOptions {
   /// N > 0: also write DIR/pressure.csv, the pressure of every loaded ellipse on an N × N grid
   /// over its patch (x along the rolling direction, y lateral in the contact plane). Default 0.
   int pressure_grid = 0;
+  /// The cases (their `case` numbers; in a batch, per pair) whose pressure grid is written;
+  /// default: every case (--pressure-cases).
+  CaseSelection pressure_cases;
   /// Shards: run only the K-th (1-based) of N contiguous, deterministic slices of the case list:
   /// cases [floor((K−1)·n/N), floor(K·n/N)), keeping their global case numbers, and write
   /// DIR/shard.json describing the slice. `mhcontact merge` joins the shard directories into
@@ -50,6 +67,9 @@ constexpr double kPressureLimitBytes = 10e9;
 /// Refuse (InputError on --pressure-grid) a pressure grid of N×N points for `cases` cases whose
 /// estimated pressure.csv is larger than kPressureLimitBytes, unless `force`. Also checks 2 <= N <= 1000.
 void check_pressure_grid(int N, std::uint64_t cases, bool plastic, bool force);
+/// Refuse --pressure-cases without --pressure-grid, or naming a case beyond the `cases` of the
+/// case file (InputError on --pressure-cases).
+void check_pressure_cases(const RunOptions& opt, std::uint64_t cases);
 
 /// Where the formatted rows go; `prefix` is put in front of every CSV line (the batch's "pair,").
 struct Sinks {

@@ -18,6 +18,8 @@ set -x
 ./build/mhcontact geometry cases/manchester.json -o out/geo
 # The half-space method
 ./build/mhcontact run cases/manchester-halfspace.json -o out/manchester-halfspace
+./build/mhcontact run cases/manchester-halfspace.json -o out/hs-flange --pressure-grid 2 --pressure-cases 13-14
+test "$(cut -d, -f1 out/hs-flange/pressure.csv | tail -n +2 | sort -u | tr '\n' ' ')" = "13 14 "
 test "$(wc -l < out/manchester-halfspace/patches.csv)" -eq 18
 ./build/mhcontact run cases/manchester-strips.json -o out/manchester-strips --strips
 test -s out/manchester-strips/strips.csv
