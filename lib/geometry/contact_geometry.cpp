@@ -59,6 +59,56 @@ double refine_minimum(const ProfileCurve& W, const ProfileCurve& R, double s, do
 
 }  // namespace
 
+ContactGeometry::MainPoint ContactGeometry::locate_main(double t) const {
+  const ProfileCurve& W = *wheel_curve;
+  const ProfileCurve& R = *rail_curve;
+  const std::size_t ns = strip_y.size();
+  const double s = y_offset + t;
+  double best = std::numeric_limits<double>::infinity();
+  std::size_t jb = ns;
+  for (std::size_t j = 0; j < ns; ++j) {
+    const double yw = strip_y[j] - s;
+    if (!W.contains(yw)) continue;
+    const double g = W.z(yw) - strip_zr[j];
+    if (g < best) { best = g; jb = j; }
+  }
+  if (jb == ns) return MainPoint{0, 0, ns, false};
+  const double a = strip_y[jb > 2 ? jb - 3 : 0], b = strip_y[std::min(jb + 3, ns - 1)];
+  const double yc = refine_minimum(W, R, s, std::max(a, W.y_min() + s), std::min(b, W.y_max() + s));
+  return MainPoint{yc, W.z(yc - s) - R.z(yc), jb, true};
+}
+
+void ContactGeometry::fill_candidate(double t, double y_r, bool is_main, double gmin, CandidateGeom& c) const {
+  const ProfileCurve& W = *wheel_curve;
+  const ProfileCurve& R = *rail_curve;
+  c.y_r = y_r;
+  c.y_w = y_r - (y_offset + t);
+  double dzr;
+  const double z_r = R.z(c.y_r, &dzr);
+  c.gamma = std::atan(dzr);
+  c.k_rxx = -R.kappa(c.y_r);
+  c.k_wxx = W.kappa(c.y_w);
+  const double z_w = W.z(c.y_w);
+  c.sep = z_w - z_r;
+  c.gap = is_main ? 0.0 : std::max(0.0, c.sep - gmin);
+  c.r_roll = nominal_radius - (z_w - wheel_z0);
+  c.r_roller = roller_radius > 0 ? roller_radius + z_r : 0.0;  // z_r: height above the rail origin
+  c.off_profile = c.y_w < W.y_min() + strip_width || c.y_w > W.y_max() - strip_width ||
+                  c.y_r < strip_y.front() + 0.5 * strip_width || c.y_r > strip_y.back() - 0.5 * strip_width;
+  c.flange_climb = has_flange && c.y_w < flange_y_steepest;
+}
+
+bool ContactGeometry::exact_candidates_at(double t, CandidateGeom* out, int* main) const {
+  const std::size_t ne = ellipses.size();
+  const std::size_t m = std::min(static_cast<std::size_t>(std::upper_bound(jumps.begin(), jumps.end(), t) - jumps.begin()), ne - 1);
+  const MainPoint M = locate_main(t);
+  if (!M.found) return false;
+  for (std::size_t e = 0; e < ne; ++e)
+    fill_candidate(t, e == m ? M.y_r : e > m ? ellipses[e].y_r_below : ellipses[e].y_r_above, e == m, M.gmin, out[e]);
+  if (main) *main = static_cast<int>(m);
+  return true;
+}
+
 void ContactGeometry::candidates_at(double t, CandidateGeom* out, int* main) const {
   const std::size_t n = tY.size(), ne = ellipses.size();
   const double step = n > 1 ? (tY.back() - tY.front()) / static_cast<double>(n - 1) : 1.0;
@@ -67,11 +117,32 @@ void ContactGeometry::candidates_at(double t, CandidateGeom* out, int* main) con
   std::size_t k = std::min(static_cast<std::size_t>(s), n > 1 ? n - 2 : 0);
   const double f = n > 1 ? s - static_cast<double>(k) : 0.0;
   const std::size_t k1 = n > 1 ? k + 1 : k;
+  // A grid interval that holds a jump: the main candidate moves fast and its curvatures change
+  // just before a jump, so interpolating across the interval would make the load sharing depend
+  // on the grid step. There the candidates are evaluated at t itself from the profiles (cached
+  // per thread for the cases that share a t_Y).
+  if (f > 0 && k1 > k) {
+    const auto j = std::upper_bound(jumps.begin(), jumps.end(), tY[k]);
+    if (j != jumps.end() && *j < tY[k1]) {
+      struct Cache { const ContactGeometry* g = nullptr; double t = 0; int main = 0; std::vector<CandidateGeom> c; };
+      thread_local Cache cache;
+      if (cache.g != this || cache.t != t || cache.c.size() != ne) {
+        cache.c.assign(ne, CandidateGeom{});
+        cache.g = exact_candidates_at(t, cache.c.data(), &cache.main) ? this : nullptr;
+        cache.t = t;
+      }
+      if (cache.g == this) {
+        std::copy(cache.c.begin(), cache.c.end(), out);
+        if (main) *main = cache.main;
+        return;
+      }
+    }
+  }
   for (std::size_t e = 0; e < ne; ++e) {
     const CandidateGeom& a = table[k * ne + e];
     const CandidateGeom& b = table[k1 * ne + e];
     CandidateGeom& c = out[e];
-    c.gap = a.gap + f * (b.gap - a.gap);
+    c.sep = a.sep + f * (b.sep - a.sep);
     c.y_r = a.y_r + f * (b.y_r - a.y_r);
     c.y_w = a.y_w + f * (b.y_w - a.y_w);
     c.gamma = a.gamma + f * (b.gamma - a.gamma);
@@ -82,7 +153,14 @@ void ContactGeometry::candidates_at(double t, CandidateGeom* out, int* main) con
     c.off_profile = (f < 1 && a.off_profile) || (f > 0 && b.off_profile);
     c.flange_climb = (f < 1 && a.flange_climb) || (f > 0 && b.flange_climb);
   }
-  if (main) *main = main_ellipse[f < 0.5 ? k : k1];
+  // The main candidate: the smallest separation; on a tie, the ellipse whose interval between
+  // the (bisected) jumps holds t. Its gap is 0, the others' the difference of separations.
+  std::size_t m = static_cast<std::size_t>(std::upper_bound(jumps.begin(), jumps.end(), t) - jumps.begin());
+  m = std::min(m, ne - 1);
+  for (std::size_t e = 0; e < ne; ++e)
+    if (out[e].sep < out[m].sep) m = e;
+  for (std::size_t e = 0; e < ne; ++e) out[e].gap = e == m ? 0.0 : std::max(0.0, out[e].sep - out[m].sep);
+  if (main) *main = static_cast<int>(m);
 }
 
 ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const TrackSetup& track,
@@ -131,8 +209,12 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   const double w = opt.strip_width;
   for (double y = R.y_min() + w / 2; y <= R.y_max() - w / 2 + 1e-15; y += w) G.strip_y.push_back(y);
   const std::size_t ns = G.strip_y.size();
-  std::vector<double> zr(ns);
-  for (std::size_t j = 0; j < ns; ++j) zr[j] = R.z(G.strip_y[j]);
+  G.strip_width = w;
+  G.strip_zr.resize(ns);
+  for (std::size_t j = 0; j < ns; ++j) G.strip_zr[j] = R.z(G.strip_y[j]);
+  G.nominal_radius = track.nominal_radius;
+  G.wheel_z0 = W.z(0.0);
+  G.roller_radius = track.roller_radius;
 
   const std::size_t nt = static_cast<std::size_t>(std::floor((opt.tY_max - opt.tY_min) / opt.tY_step + 1e-9)) + 1;
   G.tY.resize(nt);
@@ -144,24 +226,14 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
     G.tY[k] = aligned ? (k0 + static_cast<double>(k)) * step_mm / 1e3 : opt.tY_min + opt.tY_step * static_cast<double>(k);
 
   // Main strip and CAF at any t_Y: the strip with the smallest gap, refined between strips.
-  struct Main { double y_r, gmin; std::size_t strip; };
+  using Main = ContactGeometry::MainPoint;
   auto locate = [&](double t) {
-    const double s = G.y_offset + t;
-    double best = std::numeric_limits<double>::infinity();
-    std::size_t jb = ns;
-    for (std::size_t j = 0; j < ns; ++j) {
-      const double yw = G.strip_y[j] - s;
-      if (!W.contains(yw)) continue;
-      const double g = W.z(yw) - zr[j];
-      if (g < best) { best = g; jb = j; }
-    }
-    if (jb == ns)
+    const Main M = G.locate_main(t);
+    if (!M.found)
       throw InputError(wheel.source + " on " + rail.source, "t_Y = " + format_number(t * 1e3) + " mm",
                        "the wheel and rail profiles do not overlap laterally",
                        "check the track data, mirror options and the t_Y range");
-    const double a = G.strip_y[jb > 2 ? jb - 3 : 0], b = G.strip_y[std::min(jb + 3, ns - 1)];
-    const double yc = refine_minimum(W, R, s, std::max(a, W.y_min() + s), std::min(b, W.y_max() + s));
-    return Main{yc, W.z(yc - s) - R.z(yc), jb};
+    return M;
   };
   std::vector<Main> mains(nt);
   G.main_strip.resize(nt);
@@ -254,10 +326,6 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
 
   // Candidate table: for every grid point and ellipse, the ellipse's own main strip when it is
   // the main one, else the main strip of the ellipse's t_Y nearest to this t_Y (method.md §3.6).
-  const double r0 = track.nominal_radius;
-  const double zw0 = W.z(0.0);
-  G.nominal_radius = r0;
-  G.wheel_z0 = zw0;
   // The wheel's steepest flange section (method.md §3.7): the largest slope of the smoothed wheel
   // between its lowest point (the flange tip) and the taping line, and the tip-side end of the part
   // of the face within flange_angle_tolerance of it.
@@ -286,28 +354,20 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
       G.flange_y_steepest = W.node_y(i_lo);
     }
   }
-  const double y_strip_lo = G.strip_y.front() + 0.5 * w, y_strip_hi = G.strip_y.back() - 0.5 * w;
   const std::size_t ne = G.ellipses.size();
   G.table.resize(nt * ne);
+  // Outside its own t_Y interval an ellipse's candidate is its main strip at the nearer end of
+  // that interval (method.md §3.6): the contact point just inside the bisected jump, so that the
+  // table does not depend on where the grid points fall.
+  for (std::size_t ie = 0; ie < ne; ++ie) {
+    if (ie > 0) G.ellipses[ie].y_r_below = locate(jumps[ie - 1] + kJumpBracket).y_r;
+    if (ie + 1 < ne) G.ellipses[ie].y_r_above = locate(jumps[ie] - kJumpBracket).y_r;
+  }
   for (std::size_t k = 0; k < nt; ++k) {
-    const double s = G.y_offset + G.tY[k];
+    const std::size_t em = static_cast<std::size_t>(G.main_ellipse[k]);
     for (std::size_t ie = 0; ie < ne; ++ie) {
-      const PotentialEllipse& P = G.ellipses[ie];
-      const std::size_t kn = std::clamp(k, P.k_first, P.k_last);
-      CandidateGeom& c = G.table[k * ne + ie];
-      c.y_r = mains[kn].y_r;
-      c.y_w = c.y_r - s;
-      double dzr;
-      const double z_r = R.z(c.y_r, &dzr);
-      c.gamma = std::atan(dzr);
-      c.k_rxx = -R.kappa(c.y_r);
-      c.k_wxx = W.kappa(c.y_w);
-      const double z_w = W.z(c.y_w);
-      c.gap = (kn == k) ? 0.0 : std::max(0.0, (z_w - z_r) - mains[k].gmin);
-      c.r_roll = r0 - (z_w - zw0);
-      if (track.roller_radius > 0) c.r_roller = track.roller_radius + z_r;  // z_r: height above the rail origin
-      c.off_profile = c.y_w < W.y_min() + w || c.y_w > W.y_max() - w || c.y_r < y_strip_lo || c.y_r > y_strip_hi;
-      c.flange_climb = G.has_flange && c.y_w < G.flange_y_steepest;
+      const double y_r = ie == em ? mains[k].y_r : em < ie ? G.ellipses[ie].y_r_below : G.ellipses[ie].y_r_above;
+      G.fill_candidate(G.tY[k], y_r, ie == em, mains[k].gmin, G.table[k * ne + ie]);
     }
   }
   return G;

@@ -71,6 +71,10 @@ struct GeometryOptions {
 /// One candidate contact (a potential ellipse's strip) at one t_Y. SI, paper signs.
 struct CandidateGeom {
   double gap = 0;     ///< [m] z_w − z_r at the strip minus the minimum over all strips (0 at the main strip)
+  /// [m] z_w − z_r at the strip itself, the wheel at its datum height (not lowered to contact).
+  /// A smooth (C¹) function of t_Y for every candidate, across the jumps too (method.md §3.6), so
+  /// it is what candidates_at interpolates; the gaps follow as sep − min over the candidates.
+  double sep = 0;
   double y_r = 0;     ///< [m] rail lateral coordinate of the strip
   double y_w = 0;     ///< [m] wheel lateral coordinate facing it (y_r − y_offset − t_Y)
   double gamma = 0;   ///< [rad] contact angle: rail slope angle at the strip
@@ -97,6 +101,9 @@ struct PotentialEllipse {
   double tY_min = 0, tY_max = 0;        ///< [m]
   double y_r_min = 0, y_r_max = 0;      ///< [m] where its main strips lie on the rail
   double y_w_min = 0, y_w_max = 0;      ///< [m] and on the wheel
+  /// [m] its contact point on the rail just inside its lower / upper jump: its candidate at any
+  /// t_Y below / above its interval (method.md §3.6); 0 for the first / last ellipse.
+  double y_r_below = 0, y_r_above = 0;
 };
 
 class ContactGeometry {
@@ -138,10 +145,32 @@ class ContactGeometry {
   const CandidateGeom& main_at(std::size_t k) const { return at(k, static_cast<std::size_t>(main_ellipse[k])); }
   bool covers(double t) const { return t >= tY.front() - 1e-12 && t <= tY.back() + 1e-12; }
 
-  /// Candidates of all potential ellipses at an arbitrary t_Y inside the grid, linearly
-  /// interpolated between the two neighbouring grid points; `main` receives the ellipse of the
-  /// nearest grid point's main strip. Precondition: covers(t).
+  /// Candidates of all potential ellipses at an arbitrary t_Y inside the grid (method.md §3.6):
+  /// positions, angles, radii and separations `sep` linearly interpolated between the two
+  /// neighbouring grid points; the gaps are sep − min(sep), and `main` receives the candidate of
+  /// the smallest separation (the ellipse whose t_Y interval between the jumps holds t on ties).
+  /// Interpolating the separations, which are smooth in t_Y, instead of the gaps, which have a
+  /// kink at every jump, keeps the load sharing near a jump independent of the grid step
+  /// (issue #10 item 1). Precondition: covers(t).
   void candidates_at(double t, CandidateGeom* out, int* main) const;
+
+  /// The candidates at t evaluated from the profiles themselves (no interpolation): the main
+  /// strip at t for the ellipse whose interval holds t, y_r_below / y_r_above for the others.
+  /// Used by candidates_at in grid intervals that hold a jump. False if the profiles do not
+  /// overlap at t.
+  bool exact_candidates_at(double t, CandidateGeom* out, int* main) const;
+
+  /// The main strip at t: the strip of smallest z_w − z_r, refined between strips to the local
+  /// minimum of the smooth gap; `found` false when the profiles do not overlap laterally.
+  struct MainPoint { double y_r = 0, gmin = 0; std::size_t strip = 0; bool found = false; };
+  MainPoint locate_main(double t) const;
+  /// Candidate data at t for the rail point y_r (method.md §3.6); `gmin` is the smallest
+  /// separation at t, `is_main` makes the gap exactly 0.
+  void fill_candidate(double t, double y_r, bool is_main, double gmin, CandidateGeom& c) const;
+
+  std::vector<double> strip_zr;          ///< [m] rail height at the strip centres
+  double strip_width = 0;                ///< [m]
+  double roller_radius = 0;              ///< [m] roller rigs (TrackSetup::roller_radius), else 0
 };
 
 /// Build the geometry of a wheel on a rail. The rail must already carry its inclination

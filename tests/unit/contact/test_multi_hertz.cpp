@@ -1,6 +1,7 @@
 // Multi-Hertzian solver (solver.hpp) on real profile pairs and on hand-made geometries.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <vector>
 
 #include "geometry/contact_geometry.hpp"
 #include "profile/read.hpp"
@@ -156,7 +157,7 @@ ContactGeometry two_candidates(double k_wxx_second, double gap_second) {
   main.gamma = 0.02; main.k_rxx = 1 / 0.3; main.k_wxx = 0; main.r_roll = 0.46;
   CandidateGeom second;
   second.gamma = 0.5; second.k_rxx = 1 / 0.013; second.k_wxx = k_wxx_second; second.r_roll = 0.47;
-  second.gap = gap_second;
+  second.gap = second.sep = gap_second;  // separation above the main candidate's (sep 0)
   G.table = {main, second, main, second};
   return G;
 }
@@ -186,4 +187,34 @@ TEST_CASE("non-Hertzian candidates (B <= 0) are excluded and flagged when they w
   const CaseResult both = solve_case(two_candidates(1 / 0.020, 1e-6), mat, 0.5e-3, 100e3);
   REQUIRE(both.loaded.size() == 2);
   REQUIRE(both.Fz == Approx(100e3).epsilon(1e-12));
+}
+
+TEST_CASE("load sharing next to a jump does not depend on the t_Y grid (issue #10 item 1)", "[solver]") {
+  // Manchester pair, Q = 100 kN, t_Y around the jumps at 0.21279, 5.02274 and 6.61399 mm. Before
+  // the fix the gaps were interpolated linearly across the jump's grid interval and the lateral
+  // force at t_Y = 6.6 mm was 130 / 140 / 83 / 84 / 75 kN for steps 0.005 / 0.01 / 0.05 / 0.1 /
+  // 0.5 mm. Reference: the finest grid. Measured after the fix: the forces agree to 0.01 kN.
+  const Profile W = read("MBench_S1002_v3.prw", ProfileKind::Wheel);
+  const Profile R = read("MBench_UIC60_v3.prr", ProfileKind::Rail);
+  const Material mat = steel();
+  const std::vector<double> tY_mm = {0.2, 0.21, 0.22, 0.3, 5.0, 5.02, 5.03, 5.1, 6.5, 6.6, 6.61, 6.62, 6.63, 6.7, 7.0};
+  auto forces = [&](double step_mm) {
+    GeometryOptions o;
+    o.tY_step = step_mm * 1e-3;
+    const ContactGeometry G = build_geometry(W, R, TrackSetup{}, o);
+    std::vector<CaseResult> out;
+    for (double t : tY_mm) out.push_back(solve_case(G, mat, t * 1e-3, 100e3));
+    return out;
+  };
+  const std::vector<CaseResult> ref = forces(0.005);
+  for (double step : {0.01, 0.05, 0.1, 0.5}) {
+    const std::vector<CaseResult> r = forces(step);
+    for (std::size_t i = 0; i < tY_mm.size(); ++i) {
+      INFO("step " << step << " mm, t_Y " << tY_mm[i] << " mm");
+      REQUIRE(r[i].status == CaseStatus::Ok);
+      REQUIRE(r[i].n_contacts == ref[i].n_contacts);
+      REQUIRE(r[i].Fy == Approx(ref[i].Fy).margin(0.1e3));   // 0.1 kN
+      REQUIRE(r[i].Fz == Approx(ref[i].Fz).margin(0.1e3));
+    }
+  }
 }
