@@ -59,6 +59,7 @@ struct PatchResult {
   double area = 0;          ///< [m²] elements in contact × dx ds
   double length_x = 0;      ///< [m] extent of the contact along x (element centres, + one element)
   double width_s = 0;       ///< [m] extent along s in the patch plane (+ one element)
+  double s_lo = 0, s_hi = 0;  ///< [m] s of the first and last element row (strip) in contact
   double approach = 0;      ///< [m] normal approach of the patch, δz cos γ minus the plane's offset
   double x_centroid = 0;    ///< [m] pressure centroid relative to the reference point, along x
   double s_centroid = 0;    ///< [m] ... and along s (rail y ≈ y_r + s cos γ)

@@ -203,6 +203,8 @@ CaseResult solve_half_space(const ContactGeometry& G, const Material& mat, doubl
     if (pr.n_elements > 0) {
       pr.length_x = (i1 - i0 + 1) * opt.dx;
       pr.width_s = (j1 - j0 + 1) * opt.ds;
+      pr.s_lo = k.s0 + j0 * opt.ds;
+      pr.s_hi = k.s0 + j1 * opt.ds;
       pr.x_centroid = spx / sp;
       pr.s_centroid = sps / sp;
     }

@@ -62,6 +62,15 @@ CaseResult solve_method(const ContactGeometry& G, const Material& mat, double tY
     G.candidates_at(tY, c.data(), &main);
     if (c[static_cast<std::size_t>(main)].flange_climb) r.warnings.push_back("flange_climb:ellipse=" + std::to_string(main + 1));
   }
+  // Off the end of a profile (method.md §3.7), grid methods: a patch whose contact reaches the
+  // end of either profile stands on extrapolated geometry. (The multi-Hertzian solver flags its
+  // loaded candidates itself.)
+  if (G.wheel_curve && G.rail_curve && !G.strip_y.empty())
+    for (const PatchResult& P : r.patches) {
+      const double c = std::cos(P.gamma);
+      if (G.off_profile(tY, P.y_r + P.s_lo * c) || G.off_profile(tY, P.y_r + P.s_hi * c))
+        r.warnings.push_back("off_profile:patch=" + std::to_string(P.patch));
+    }
   return r;
 }
 

@@ -128,6 +128,7 @@ CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, dou
         pr.strips.push_back({st.s, k.P.y_ref + st.s * std::cos(k.P.gamma), st.c, st.a, st.q, st.plastic});
     }
     pr.width_s = S.strips.empty() ? 0 : s_hi - s_lo + k.geo.ds;
+    if (!S.strips.empty()) { pr.s_lo = s_lo; pr.s_hi = s_hi; }
     pr.s_centroid = S.N > 0 ? ls / S.N : 0;
     pr.x_centroid = S.N > 0 ? lc / S.N : 0;
     r.Fz += pr.N * std::cos(pr.gamma);

@@ -93,9 +93,15 @@ void ContactGeometry::fill_candidate(double t, double y_r, bool is_main, double 
   c.gap = is_main ? 0.0 : std::max(0.0, c.sep - gmin);
   c.r_roll = nominal_radius - (z_w - wheel_z0);
   c.r_roller = roller_radius > 0 ? roller_radius + z_r : 0.0;  // z_r: height above the rail origin
-  c.off_profile = c.y_w < W.y_min() + strip_width || c.y_w > W.y_max() - strip_width ||
-                  c.y_r < strip_y.front() + 0.5 * strip_width || c.y_r > strip_y.back() - 0.5 * strip_width;
+  c.off_profile = off_profile(t, y_r);
   c.flange_climb = has_flange && c.y_w < flange_y_steepest;
+}
+
+bool ContactGeometry::off_profile(double t, double y_r) const {
+  const ProfileCurve& W = *wheel_curve;
+  const double y_w = y_r - (y_offset + t);
+  return y_w < W.y_min() + strip_width || y_w > W.y_max() - strip_width ||
+         y_r < strip_y.front() + 0.5 * strip_width || y_r > strip_y.back() - 0.5 * strip_width;
 }
 
 bool ContactGeometry::exact_candidates_at(double t, CandidateGeom* out, int* main) const {

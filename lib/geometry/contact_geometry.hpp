@@ -167,6 +167,9 @@ class ContactGeometry {
   /// Candidate data at t for the rail point y_r (method.md §3.6); `gmin` is the smallest
   /// separation at t, `is_main` makes the gap exactly 0.
   void fill_candidate(double t, double y_r, bool is_main, double gmin, CandidateGeom& c) const;
+  /// The rail point y_r, and the wheel point facing it at t, lie off the end of a profile or
+  /// within one strip width of it (method.md §3.7; CandidateGeom::off_profile).
+  bool off_profile(double t, double y_r) const;
 
   std::vector<double> strip_zr;          ///< [m] rail height at the strip centres
   double strip_width = 0;                ///< [m]
