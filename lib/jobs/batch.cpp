@@ -81,7 +81,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   }
   SweepCounts counts;
   auto& by_status = counts.by_status;
-  std::uint64_t invalid = 0, cases_total = 0;
+  std::uint64_t invalid = 0, cases_total = 0, cant_warned = 0;
   RunOptions quiet_opt = opt;
   quiet_opt.progress = false;
   for (std::uint64_t k = first; k < end; ++k) {
@@ -129,6 +129,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     }
     if (pg) {
       if (!opt.quiet) warn_profiles(*pg, err);
+      if (!pg->cant.warnings.empty()) ++cant_warned;
       // Each pair can be inspected on its own (issue #14 item 4): its profiles, CAF and potential
       // ellipses, as `mhcontact geometry` writes them for one pair.
       write_pair_geometry(cf, *pg, rd, "pairs/" + std::to_string(k) + "/", opt.out_dir);
@@ -158,7 +159,8 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   const std::uint64_t failed = counts.failed;  // cases not ok, invalid pairs' cases included
   const nlohmann::json summary = {{"pairs", end - first}, {"invalid_pairs", invalid}, {"cases", cases_total},
                                   {"failed", failed}, {"by_status", by_status},
-                                  {"cases_with_warnings", counts.with_warnings}, {"warnings", counts.warnings}};
+                                  {"cases_with_warnings", counts.with_warnings}, {"warnings", counts.warnings},
+                                  {"pairs_with_cant_warnings", cant_warned}};
   if (jw) {
     jw->end_array();
     jw->member("summary", summary);
@@ -188,11 +190,15 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     err << "mhcontact run: " << (end - first) << " pairs (" << invalid << " invalid), " << cases_total << " cases";
     for (const auto& [s, v] : by_status) err << ", " << s << " " << v;
     for (const auto& [k, v] : counts.warnings) err << ", " << v << " with " << k;
+    if (cant_warned) err << ", " << cant_warned << " pairs with cant warnings";
     err << "; " << format_number(std::round(secs * 1e3) / 1e3) << " s; outputs in " << opt.out_dir << "\n";
   }
-  if (!opt.quiet && opt.fail_on_warning && counts.with_warnings)
-    err << "mhcontact run: " << counts.with_warnings << " cases with warnings (--fail-on-warning): exit 1\n";
-  return (failed || invalid || (opt.fail_on_warning && counts.with_warnings)) ? kExitCasesFailed : kExitOk;
+  // --fail-on-warning: case warnings, and a rail cant that looks wrong (applied twice, mirrored).
+  const bool warned = counts.with_warnings || cant_warned;
+  if (!opt.quiet && opt.fail_on_warning && warned)
+    err << "mhcontact run: " << counts.with_warnings << " cases with warnings, " << cant_warned
+        << " pairs with cant warnings (--fail-on-warning): exit 1\n";
+  return (failed || invalid || (opt.fail_on_warning && warned)) ? kExitCasesFailed : kExitOk;
 }
 
 

@@ -43,6 +43,28 @@ assert abs(s["rail_cant_deg"] - 2.864) < 0.01, s
 c = j["profiles"]["rail"]["cant"]
 assert abs(c["file_angle_deg"] - 1.432) < 0.01 and abs(c["inclination_deg"] - 1.432) < 0.01, c
 PY
+# --fail-on-warning counts a cant warning (no case of this run warns; the pair does): exit 1.
+sed 's/"tY_mm": \[0, 2\]/"tY_mm": [0]/' "$tmp/twice.json" > "$tmp/twice0.json"
+set +e
+"$bin" run "$tmp/twice0.json" -o "$tmp/of" --fail-on-warning 2> "$tmp/err"; rc=$?
+set -e
+[ "$rc" = 1 ] || fail "--fail-on-warning with a cant warning: exit $rc"
+grep -q "0 cases with warnings, 1 cant warning(s) (--fail-on-warning): exit 1" "$tmp/err" || fail "no fail-on-warning line: $(cat "$tmp/err")"
+# A batch counts the pairs with cant warnings in its summary, and --fail-on-warning applies.
+cat > "$tmp/m.json" <<JSON
+{"pairs": [{"name": "twice", "wheel": "$d/MBench_S1002_v3.prw", "rail": "$d/MBench_UIC60_v3.prr"},
+           {"name": "once", "wheel": "$d/MBench_S1002_v3.prw", "rail": {"standard": "60E1"}}],
+ "inclination": "1:40", "sweep": {"tY_mm": [0], "Q_kN": [50]}}
+JSON
+set +e
+"$bin" run "$tmp/m.json" -o "$tmp/ob" 2> "$tmp/err"; rc0=$?
+"$bin" run "$tmp/m.json" -o "$tmp/obf" --fail-on-warning 2> "$tmp/errf"; rc1=$?
+set -e
+[ "$rc0" = 0 ] || fail "batch exit $rc0: $(cat "$tmp/err")"
+[ "$rc1" = 1 ] || fail "batch --fail-on-warning exit $rc1"
+grep -q ", 1 pairs with cant warnings;" "$tmp/err" || fail "batch summary line: $(tail -1 "$tmp/err")"
+python3 -c 'import json,sys; s=json.load(open(sys.argv[1]))["summary"]; assert s["pairs_with_cant_warnings"] == 1, s' "$tmp/ob/results.json" \
+  || fail "batch results.json summary"
 # The same rail as-is: no cant warning.
 sed 's/"1:40"/"as-is"/' "$tmp/twice.json" > "$tmp/once.json"
 "$bin" run "$tmp/once.json" -o "$tmp/o1" 2> "$tmp/err"
