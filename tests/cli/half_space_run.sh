@@ -35,13 +35,15 @@ set +e
 "$bin" run "$tmp/bad.json" -o "$tmp/x" 2> "$tmp/err"; rc=$?
 set -e
 test $rc -eq 2; grep -q '/half_space' "$tmp/err"; grep -q 'dx_mm' "$tmp/err"
-# "auto": each case in the table of the method that solved it (t_Y = 5 mm: interacting contacts -> strips).
+# "auto": each case in the table of the method that solved it (t_Y = 5 mm: interacting contacts,
+# t_Y = 8 mm: a flange patch reaching the end of the wheel's R13 arc, gap_mean_error -> strips).
 sed 's|"method": "half-space"|"method": "auto"|' "$tmp/hs.json" > "$tmp/auto.json"
 "$bin" run "$tmp/auto.json" -o "$tmp/auto" -q --strips
 grep -q '^1,5,50,ok,strips,' "$tmp/auto/cases.csv"
+grep -q '^2,8,50,ok,strips,' "$tmp/auto/cases.csv"
 grep -q '^0,-3,50,ok,multi-hertzian,' "$tmp/auto/cases.csv"
-test "$(cut -d, -f1 "$tmp/auto/patches.csv" | sort -u | grep -c '^[0-9]')" -eq 1
-test "$(cut -d, -f1 "$tmp/auto/ellipses.csv" | sort -u | grep -c '^[0-9]')" -eq 2
+test "$(cut -d, -f1 "$tmp/auto/patches.csv" | sort -u | grep -c '^[0-9]')" -eq 2
+test "$(cut -d, -f1 "$tmp/auto/ellipses.csv" | sort -u | grep -c '^[0-9]')" -eq 1
 test "$(wc -l < "$tmp/auto/strips.csv")" -gt 10
 sed 's|"method": "half-space"|"method": "bogus"|' "$tmp/hs.json" > "$tmp/bogus.json"
 set +e
