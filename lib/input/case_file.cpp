@@ -1,269 +1,28 @@
+// The case file: JSON -> CaseFile, section by section; see case_file.hpp. The typed field
+// readers are in json_fields.hpp, the profile entries in profile_source.cpp, the sweep and the
+// case list in case_sweep.cpp.
 #include "input/case_file.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
-#include <set>
 #include <sstream>
 
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
 #include "core/plausible.hpp"
-#include "profile/standard_profiles.hpp"
 #include "core/units.hpp"
+#include "input/case_sweep.hpp"
+#include "input/json_fields.hpp"
+#include "input/profile_source.hpp"
 
 namespace mh {
 
 using nlohmann::json;
+using detail::Ctx;
+using detail::parse_profile_source;
 
 const char* to_string(Model m) { return m == Model::Plastic ? "plastic" : "elastic"; }
-
-namespace {
-
-// Validation context: file name + JSON path.
-struct Ctx {
-  std::string file;
-  [[noreturn]] void fail(const std::string& path, const json* v, const std::string& rule,
-                         const std::string& hint = {}) const {
-    throw InputError(file + ": " + (path.empty() ? "/" : path), v ? v->dump() : std::string(), rule, hint);
-  }
-  void only_keys(const json& obj, const std::string& path, const std::set<std::string>& allowed) const {
-    if (!obj.is_object()) fail(path, &obj, "must be an object");
-    for (auto it = obj.begin(); it != obj.end(); ++it) {
-      if (!allowed.count(it.key())) {
-        std::string list;
-        for (const auto& k : allowed) list += (list.empty() ? "" : ", ") + k;
-        fail(path + "/" + it.key(), nullptr, "unknown key", "allowed here: " + list);
-      }
-    }
-  }
-  double number(const json& obj, const std::string& path, const std::string& key) const {
-    const json& v = obj.at(key);
-    if (!v.is_number()) fail(path + "/" + key, &v, "must be a number");
-    const double d = v.get<double>();
-    if (!std::isfinite(d)) fail(path + "/" + key, &v, "must be finite");
-    return d;
-  }
-  double positive(const json& obj, const std::string& path, const std::string& key) const {
-    const double d = number(obj, path, key);
-    if (!(d > 0)) fail(path + "/" + key, &obj.at(key), "must be > 0");
-    return d;
-  }
-  /// A number inside its plausible range (core/plausible.hpp), refused with the unit hint.
-  double plausible(const json& obj, const std::string& path, const std::string& key, const plausible::Range& r) const {
-    const double d = number(obj, path, key);
-    check(d, path + "/" + key, obj.at(key), r);
-    return d;
-  }
-  void check(double d, const std::string& path, const json& v, const plausible::Range& r) const {
-    if (!plausible::inside(r, d)) fail(path, &v, plausible::rule(r), plausible::hint(r, d));
-  }
-  /// An integer in [lo, hi], range-checked as an integer before any conversion (4294967297 must
-  /// not wrap to 1, 1e3 or 2.5 are not integers).
-  long long integer(const json& obj, const std::string& path, const std::string& key, long long lo, long long hi,
-                    std::string rule = {}) const {
-    const json& v = obj.at(key);
-    if (rule.empty()) rule = "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-    if (!v.is_number_integer()) fail(path + "/" + key, &v, rule);
-    bool in_range;
-    if (v.is_number_unsigned()) {
-      const std::uint64_t u = v.get<std::uint64_t>();  // compared as unsigned first: no wrap
-      in_range = hi >= 0 && u <= static_cast<std::uint64_t>(hi) && static_cast<long long>(u) >= lo;
-    } else {
-      const std::int64_t i = v.get<std::int64_t>();
-      in_range = i >= lo && i <= hi;
-    }
-    if (!in_range) fail(path + "/" + key, &v, rule);
-    return v.is_number_unsigned() ? static_cast<long long>(v.get<std::uint64_t>()) : static_cast<long long>(v.get<std::int64_t>());
-  }
-  bool boolean(const json& obj, const std::string& path, const std::string& key) const {
-    const json& v = obj.at(key);
-    if (!v.is_boolean()) fail(path + "/" + key, &v, "must be true or false");
-    return v.get<bool>();
-  }
-  std::string string(const json& obj, const std::string& path, const std::string& key) const {
-    const json& v = obj.at(key);
-    if (!v.is_string()) fail(path + "/" + key, &v, "must be a string");
-    return v.get<std::string>();
-  }
-};
-
-std::string resolve_path(const std::string& case_path, const std::string& p) {
-  std::filesystem::path q(p);
-  if (q.is_absolute()) return p;
-  return (std::filesystem::path(case_path).parent_path() / q).lexically_normal().string();
-}
-
-ProfileSource parse_profile_source(const Ctx& c, const json& v, const std::string& path, const std::string& case_path) {
-  ProfileSource s;
-  s.json_path = path;
-  s.case_file = case_path;
-  if (v.is_string()) {
-    s.file = resolve_path(case_path, v.get<std::string>());
-    return s;
-  }
-  if (!v.is_object()) c.fail(path, &v, "a profile is a file name, {\"file\": ...} or {\"standard\": ...}");
-  if (v.contains("standard")) {
-    c.only_keys(v, path, {"standard", "step_mm"});
-    s.standard = c.string(v, path, "standard");
-    if (v.contains("step_mm")) s.step = c.positive(v, path, "step_mm") * units::mm;
-    return s;
-  }
-  c.only_keys(v, path, {"file", "format", "mirror_y", "mirror_z", "scale", "kind", "vampire_side", "check", "cleanup"});
-  if (!v.contains("file")) c.fail(path, &v, "a profile object needs \"file\" (or \"standard\")");
-  s.file = resolve_path(case_path, c.string(v, path, "file"));
-  if (v.contains("format")) {
-    try {
-      s.read.format = parse_profile_format(c.string(v, path, "format"));
-    } catch (const std::invalid_argument& e) {
-      c.fail(path + "/format", &v.at("format"), e.what());
-    }
-  }
-  if (v.contains("mirror_y")) s.read.mirror_y = c.boolean(v, path, "mirror_y");
-  if (v.contains("mirror_z")) s.read.mirror_z = c.boolean(v, path, "mirror_z");
-  if (v.contains("scale")) s.read.scale = c.positive(v, path, "scale");
-  if (v.contains("check")) s.read.check = c.boolean(v, path, "check");
-  if (v.contains("cleanup")) {
-    try {
-      s.read.cleanup = parse_profile_cleanup(c.string(v, path, "cleanup"));
-    } catch (const std::invalid_argument& e) {
-      c.fail(path + "/cleanup", &v.at("cleanup"), e.what());
-    }
-  }
-  if (v.contains("vampire_side")) {
-    s.read.vampire_side = c.string(v, path, "vampire_side");
-    if (s.read.vampire_side != "left" && s.read.vampire_side != "right")
-      c.fail(path + "/vampire_side", &v.at("vampire_side"), "must be \"left\" or \"right\"");
-  }
-  if (v.contains("kind")) c.fail(path + "/kind", &v.at("kind"), "the kind follows from the section (wheel or rail)");
-  return s;
-}
-
-// Decimal places of the shortest representation of v ("0.3" -> 1, "1e-05" -> 5, "2.5e-07" -> 8,
-// "1e+20" -> 0).
-int decimals(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  const std::string t(buf, r.ptr);
-  const auto e = t.find('e');
-  const std::string mant = t.substr(0, e);
-  const int exp10 = e == std::string::npos ? 0 : std::stoi(t.substr(e + 1));
-  const auto dot = mant.find('.');
-  const int frac = dot == std::string::npos ? 0 : static_cast<int>(mant.size() - dot - 1);
-  return std::max(0, frac - exp10);
-}
-
-// A range {from, to, step} counted and, where the inputs are short decimals, scaled to integers:
-// F = from·10^d, S = step·10^d, T = to·10^d with d the most decimals of the three. Values are
-// F + i·S for i = 0 … n−1 with n = floor((T − F) / S) + 1: `to` is included when it lies on the
-// grid (exactly, in the decimals given), otherwise the last value is the largest grid value below
-// `to`. Long decimals (d > 15) or huge integers fall back to from + i·step with a 1e-9 tolerance.
-struct RangeCount {
-  double count = 0;
-  long long F = 0, S = 0;
-  double scale = 0;
-};
-RangeCount range_count(double from, double to, double step) {
-  RangeCount rc;
-  const int d = std::max({decimals(from), decimals(to), decimals(step)});
-  if (d <= 15) {
-    const double sc = std::pow(10.0, d);
-    const double f = std::round(from * sc), t = std::round(to * sc), st = std::round(step * sc);
-    const double lim = 9007199254740992.0;  // 2^53: integers exact in a double
-    if (std::fabs(f) < lim && std::fabs(t) < lim && st >= 1 && st < lim && f / sc == from && t / sc == to && st / sc == step) {
-      rc.F = static_cast<long long>(f);
-      rc.S = static_cast<long long>(st);
-      rc.scale = sc;
-      rc.count = static_cast<double>((static_cast<long long>(t) - rc.F) / rc.S) + 1;
-      return rc;
-    }
-  }
-  rc.count = std::floor((to - from) / step + 1e-9) + 1;
-  return rc;
-}
-
-// Number of values an axis will have (0 when malformed: parse_axis then reports the error).
-double axis_count(const json& v) {
-  if (v.is_array()) return static_cast<double>(v.size());
-  if (v.is_number()) return 1;
-  if (v.is_object() && v.contains("from") && v.contains("to") && v.contains("step") && v["from"].is_number() &&
-      v["to"].is_number() && v["step"].is_number()) {
-    const double from = v["from"].get<double>(), to = v["to"].get<double>(), step = v["step"].get<double>();
-    if (std::isfinite(from) && std::isfinite(to) && step > 0 && to >= from && std::isfinite((to - from) / step))
-      return range_count(from, to, step).count;
-  }
-  return 0;
-}
-
-// A sweep axis: a list of numbers or {"from", "to", "step"} (a range is not materialised).
-// Every value lies in the plausible range `r` (core/plausible.hpp): each list entry is checked,
-// a range by its first and last value.
-SweepAxis parse_axis(const Ctx& c, const json& v, const std::string& path, const plausible::Range& r) {
-  SweepAxis out;
-  if (v.is_array()) {
-    if (v.empty()) c.fail(path, &v, "an empty list gives no cases");
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      const std::string p = path + "/" + std::to_string(i);
-      if (!v[i].is_number() || !std::isfinite(v[i].get<double>())) c.fail(p, &v[i], "must be a finite number");
-      const double d = v[i].get<double>();
-      c.check(d, p, v[i], r);
-      out.list.push_back(d);
-    }
-    out.n = out.list.size();
-    return out;
-  }
-  if (v.is_number()) {
-    const double d = v.get<double>();
-    if (!std::isfinite(d)) c.fail(path, &v, "must be a finite number");
-    c.check(d, path, v, r);
-    out.list = {d};
-    out.n = 1;
-    return out;
-  }
-  if (!v.is_object()) c.fail(path, &v, "a sweep axis is a list of numbers or {\"from\", \"to\", \"step\"}");
-  c.only_keys(v, path, {"from", "to", "step"});
-  for (const char* k : {"from", "to", "step"})
-    if (!v.contains(k)) c.fail(path, &v, std::string("a range needs \"") + k + "\"");
-  const double from = c.number(v, path, "from"), to = c.number(v, path, "to");
-  const double step = c.number(v, path, "step");
-  if (!(step > 0)) c.fail(path + "/step", &v.at("step"), "must be > 0");
-  if (to < from) c.fail(path + "/to", &v.at("to"), "must be >= from (" + format_number(from) + ")");
-  const RangeCount rc = range_count(from, to, step);
-  if (!(rc.count <= static_cast<double>(kMaxCases)))
-    c.fail(path, &v, "gives " + format_number(rc.count) + " values, more than the limit of " + std::to_string(kMaxCases) + " cases");
-  out.from = from;
-  out.step = step;  // values from + i·step, by multiplication (or scaled integers): no accumulated drift
-  out.n = static_cast<std::uint64_t>(rc.count);
-  out.F = rc.F;
-  out.S = rc.S;
-  out.scale = rc.scale;
-  c.check(out.at(0), path + "/from", v.at("from"), r);
-  c.check(out.at(out.n - 1), path + "/to", v.at("to"), r);
-  return out;
-}
-
-}  // namespace
-
-double SweepAxis::min() const {
-  return list.empty() ? from : *std::min_element(list.begin(), list.end());
-}
-double SweepAxis::max() const {
-  return list.empty() ? at(n - 1) : *std::max_element(list.begin(), list.end());
-}
-
-std::uint64_t CaseFile::case_count() const {
-  if (!cases.empty()) return cases.size();
-  return static_cast<std::uint64_t>(sweep_tY_mm.size()) * sweep_Q_kN.size();
-}
-
-CasePoint CaseFile::case_at(std::uint64_t i) const {
-  if (!cases.empty()) return cases[i];
-  const std::uint64_t nq = sweep_Q_kN.size();
-  const double t = sweep_tY_mm.at(i / nq), q = sweep_Q_kN.at(i % nq);
-  return {t * units::mm, q * units::kN, t, q};
-}
 
 nlohmann::json read_json_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -515,33 +274,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     if (!o.valid(&why)) c.fail("/strips", &h, why);
   }
   // cases
-  if (j.contains("sweep") && j.contains("cases")) c.fail("/cases", nullptr, "give either \"sweep\" or \"cases\", not both");
-  if (j.contains("sweep")) {
-    const json& s = j.at("sweep");
-    c.only_keys(s, "/sweep", {"tY_mm", "Q_kN"});
-    if (!s.contains("tY_mm")) c.fail("/sweep/tY_mm", nullptr, "required");
-    if (!s.contains("Q_kN")) c.fail("/sweep/Q_kN", nullptr, "required");
-    // Count before materialising anything: a sweep of 10^12 cases is refused up front.
-    const double n = axis_count(s.at("tY_mm")) * axis_count(s.at("Q_kN"));
-    if (n > static_cast<double>(kMaxCases))
-      c.fail("/sweep", nullptr, "gives " + format_number(n) + " cases, more than the limit of " + std::to_string(kMaxCases),
-             "split the study (shards) or coarsen the steps");
-    cf.sweep_tY_mm = parse_axis(c, s.at("tY_mm"), "/sweep/tY_mm", plausible::kTY_mm);
-    cf.sweep_Q_kN = parse_axis(c, s.at("Q_kN"), "/sweep/Q_kN", plausible::kQ_kN);
-    cf.has_cases = true;
-  } else if (j.contains("cases")) {
-    const json& a = j.at("cases");
-    if (!a.is_array() || a.empty()) c.fail("/cases", &a, "must be a non-empty list of {\"tY_mm\", \"Q_kN\"}");
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      const std::string p = "/cases/" + std::to_string(i);
-      c.only_keys(a[i], p, {"tY_mm", "Q_kN"});
-      if (!a[i].contains("tY_mm") || !a[i].contains("Q_kN")) c.fail(p, &a[i], "needs tY_mm and Q_kN");
-      // Every entry is checked (not a sample), whatever the length of the list.
-      const double t = c.plausible(a[i], p, "tY_mm", plausible::kTY_mm), q = c.plausible(a[i], p, "Q_kN", plausible::kQ_kN);
-      cf.cases.push_back({t * units::mm, q * units::kN, t, q});
-    }
-    cf.has_cases = true;
-  }
+  detail::parse_sweep_or_cases(c, j, cf);
   if (need_cases && !cf.has_cases) c.fail("/sweep", nullptr, "required: a \"sweep\" or a \"cases\" list");
   // The geometry range covers the default range and the sweep unless given.
   if (!range_given && cf.has_cases) {
@@ -564,34 +297,6 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   std::string why;
   if (!cf.geometry.valid(&why)) c.fail("/geometry", nullptr, why);
   return cf;
-}
-
-Profile load_profile(const ProfileSource& src, ProfileKind kind, Inclination incl) {
-  Profile p;
-  if (!src.standard.empty()) {
-    ProfileKind k;
-    try {
-      k = standard_profile_kind(src.standard);
-    } catch (const InputError& e) {
-      throw InputError(src.case_file + ": " + src.json_path + "/standard", "\"" + src.standard + "\"", e.rule(), e.hint());
-    }
-    if (k != kind)
-      throw InputError(src.case_file + ": " + src.json_path + "/standard", "\"" + src.standard + "\"",
-                       std::string("is a ") + to_string(k) + " profile, but a " + to_string(kind) + " is needed here");
-    // The generator applies the inclination itself (it knows where a 1:20 flank turns vertical).
-    return make_standard_profile(src.standard, kind == ProfileKind::Rail ? incl : Inclination::None, src.step);
-  }
-  ProfileReadOptions o = src.read;
-  o.kind = kind;
-  try {
-    p = read_profile(src.file, o);
-  } catch (const InputError& e) {
-    // Say which entry of the case file named the profile, then the profile's own location.
-    if (src.case_file.empty()) throw;
-    throw InputError(src.case_file + ": " + src.json_path + ": " + e.where(), e.value(), e.rule(), e.hint());
-  }
-  if (kind == ProfileKind::Rail) rotate_towards_track_centre(p, inclination_angle(incl));
-  return p;
 }
 
 nlohmann::json CaseFile::resolved_json() const {
