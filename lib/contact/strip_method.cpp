@@ -98,7 +98,9 @@ CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, dou
     const StripPatch& k = static_cast<const StripPatch&>(*solver);
     evaluations += k.evaluations;
     const StripResult& S = k.last;
-    if (S.status != StripStatus::Ok || S.N <= 0) continue;
+    // A patch solve that did not converge keeps its last (closest) iterate, as every
+    // not_converged row does (README "Failed rows"); the case's status and message say why.
+    if ((S.status != StripStatus::Ok && S.status != StripStatus::NotConverged) || S.N <= 0) continue;
     PatchResult pr;
     pr.y_r = k.P.y_ref;
     pr.z_r = gap.z_rail(k.P.y_ref);

@@ -183,3 +183,20 @@ TEST_CASE("auto keeps the multi-Hertzian answer where it is valid and hands the 
   REQUIRE(!d.warnings.empty());
   CHECK(d.warnings[0].rfind("auto:strips:ellipse 4 not Hertzian", 0) == 0);
 }
+
+TEST_CASE("a strip case that does not converge keeps its closest iterate", "[strips]") {
+  // Manchester pair, t_Y = 0.5 mm, Q = 10 kN: the patch's N(δ) jumps across the target load
+  // (two lateral bands of the strip extents merge at a saddle of the minimum gap), so the load
+  // cannot be met exactly. The row is not_converged and says so; it keeps the closest iterate
+  // (measured: 10.016 kN) instead of zeros (README "Failed rows": a not_converged row keeps its
+  // last iterate).
+  const Fixture& F = manchester();
+  const mh::CaseResult r = mh::solve_method(F.pg.geo, F.cf.material, 0.5e-3, 10e3, F.cf.method_options());
+  REQUIRE(r.status == mh::CaseStatus::NotConverged);
+  CHECK(r.message.find("jumps across the target") != std::string::npos);
+  REQUIRE(r.n_contacts >= 1);
+  CHECK(r.Fz == Approx(10e3).epsilon(0.01));
+  CHECK(std::fabs(r.residual) < 0.01);
+  CHECK(r.pmax > 0);
+  CHECK(r.area > 0);
+}
