@@ -119,13 +119,13 @@ RailCant estimate_rail_cant(const Profile& rail, const RailCantOptions& opt) {
                 ? "the head is cut on both sides at only " + std::to_string(max_levels) + " of " + std::to_string(opt.levels) +
                       " levels " + format_number(opt.depth_min * 1e3) + " … " + format_number(opt.depth_max * 1e3) +
                       " mm below its top (need " + std::to_string(opt.min_levels) + ")"
-                : "no axis of symmetry within ±" + format_number(opt.max_angle * 180 / 3.14159265358979323846) + " deg";
+                : "no axis of symmetry within ±" + format_number(std::round(opt.max_angle / units::deg * 1e3) / 1e3) + " deg";
     return r;
   }
   r.levels = L.n;
   // Sensitivity db/dθ at the root: the standard error of b becomes one of θ, and a head whose
   // cuts do not move when turned (a circular arc, symmetric about every radius) has no axis.
-  const double h = 0.1 * 3.14159265358979323846 / 180.0;
+  const double h = 0.1 * units::deg;
   Line Lp, Lm;
   const double bp = b_at(theta + h, &Lp), bm = b_at(theta - h, &Lm);
   const double dbdth = (bp - bm) / (2 * h);
@@ -139,13 +139,13 @@ RailCant estimate_rail_cant(const Profile& rail, const RailCantOptions& opt) {
   r.residual = L.rms;
   r.confident = r.std_error <= opt.max_std_error && r.residual <= opt.max_residual;
   if (!r.confident)
-    r.why = "the head is not symmetric enough (standard error " + format_number(std::round(r.std_error * 180 / 3.14159265358979323846 * 1e3) / 1e3) +
+    r.why = "the head is not symmetric enough (standard error " + format_number(std::round(r.std_error / units::deg * 1e3) / 1e3) +
             " deg, midpoints " + format_number(std::round(r.residual * 1e6) / 1e3) + " mm RMS from the axis)";
   return r;
 }
 
 namespace {
-std::string deg(double a) { return format_number(std::round(a * 180 / 3.14159265358979323846 * 1e3) / 1e3 + 0.0) + " deg"; }
+std::string deg(double a) { return format_number(std::round(a / units::deg * 1e3) / 1e3 + 0.0) + " deg"; }
 }  // namespace
 
 RailCantCheck check_rail_cant(const Profile& rail, const Inclination& incl, const RailCantOptions& opt,

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "core/units.hpp"
 #include "profile/profile.hpp"
 
 namespace mh {
@@ -32,15 +33,15 @@ struct RailCantOptions {
   double depth_max = 12.0e-3;  ///< [m] last cut (default 12 mm: above the 60E1/54E1 flank, 14.3 mm, and the gauge point)
   int levels = 45;             ///< cuts between them, equally spaced (default 45: every 0.25 mm)
   int min_levels = 10;         ///< fewer cuts with both sides found: no estimate (default 10)
-  double max_angle = 10 * 3.14159265358979323846 / 180.0;  ///< [rad] cants searched: ±max_angle (default ±10°)
-  double scan_step = 0.25 * 3.14159265358979323846 / 180.0;  ///< [rad] scan that brackets the root (default 0.25°)
+  double max_angle = 10 * units::deg;  ///< [rad] cants searched: ±max_angle (default ±10°)
+  double scan_step = 0.25 * units::deg;  ///< [rad] scan that brackets the root (default 0.25°)
   /// Smallest |db/dθ| [1/rad] at the root for an axis to count as found (default 0.5; the 60E1
   /// crown gives about 8: a circular arc gives 0, symmetric about every radius).
   double min_sensitivity = 0.5;
   int max_iterations = 60;     ///< bisection steps after the scan (default 60: far below 1e-9 rad)
   /// The estimate counts as confident when the standard error of the tilt and the RMS distance
   /// of the midpoints from the fitted axis are below these (defaults 0.05° and 0.05 mm).
-  double max_std_error = 0.05 * 3.14159265358979323846 / 180.0;  ///< [rad]
+  double max_std_error = 0.05 * units::deg;  ///< [rad]
   double max_residual = 0.05e-3;                                 ///< [m]
   bool valid(std::string* why) const;
 };
@@ -62,7 +63,7 @@ RailCant estimate_rail_cant(const Profile& rail, const RailCantOptions& opt = {}
 /// The checks of a rail's cant against the case's inclination (profiles.md "Cant checks").
 struct RailCantLimits {
   double max_cant = 0.049958395721942765;     ///< [rad] usual range 0 … 1:20 (atan(1/20), 2.862°)
-  double tolerance = 0.25 * 3.14159265358979323846 / 180.0;  ///< [rad] beyond the range before a warning (default 0.25°)
+  double tolerance = 0.25 * units::deg;  ///< [rad] beyond the range before a warning (default 0.25°)
   /// A file whose own cant is at least this counts as canted already (default half of 1:40, 0.716°).
   double already_canted = 0.5 * 0.024994793618920598;   ///< [rad]
 };
