@@ -1,6 +1,7 @@
 #include "geometry/contact_geometry.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -130,14 +131,15 @@ void ContactGeometry::candidates_at(double t, CandidateGeom* out, int* main) con
   if (f > 0 && k1 > k) {
     const auto j = std::upper_bound(jumps.begin(), jumps.end(), tY[k]);
     if (j != jumps.end() && *j < tY[k1]) {
-      struct Cache { const ContactGeometry* g = nullptr; double t = 0; int main = 0; std::vector<CandidateGeom> c; };
+      struct Cache { std::uint64_t id = 0; bool ok = false; double t = 0; int main = 0; std::vector<CandidateGeom> c; };
       thread_local Cache cache;
-      if (cache.g != this || cache.t != t || cache.c.size() != ne) {
+      if (build_id == 0 || cache.id != build_id || cache.t != t || cache.c.size() != ne) {
         cache.c.assign(ne, CandidateGeom{});
-        cache.g = exact_candidates_at(t, cache.c.data(), &cache.main) ? this : nullptr;
+        cache.ok = exact_candidates_at(t, cache.c.data(), &cache.main);
+        cache.id = build_id;
         cache.t = t;
       }
-      if (cache.g == this) {
+      if (cache.ok) {
         std::copy(cache.c.begin(), cache.c.end(), out);
         if (main) *main = cache.main;
         return;
@@ -174,6 +176,8 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   std::string why;
   if (!opt.valid(&why)) throw InputError("geometry options", "", why);
   ContactGeometry G;
+  static std::atomic<std::uint64_t> next_build_id{1};
+  G.build_id = next_build_id++;
   CurveOptions cw = opt.curve, cr = opt.curve;
   cw.noise = opt.wheel_noise;
   cr.noise = opt.rail_noise;

@@ -4,6 +4,7 @@
 // every t_Y of a fine grid the candidate of every potential ellipse. Built once per profile pair;
 // every case of a sweep only interpolates these tables (it never rescans the profiles).
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -171,6 +172,10 @@ class ContactGeometry {
   /// within one strip width of it (method.md §3.7; CandidateGeom::off_profile).
   bool off_profile(double t, double y_r) const;
 
+  /// Unique per build_geometry call (copies share it: same content); keys the per-thread cache of
+  /// exact_candidates_at, so that a geometry built at the address of a destroyed one (the next
+  /// pair of a batch) never sees the other's candidates.
+  std::uint64_t build_id = 0;
   std::vector<double> strip_zr;          ///< [m] rail height at the strip centres
   double strip_width = 0;                ///< [m]
   double roller_radius = 0;              ///< [m] roller rigs (TrackSetup::roller_radius), else 0
