@@ -182,6 +182,15 @@ TEST_CASE("auto keeps the multi-Hertzian answer where it is valid and hands the 
   CHECK(d.method == mh::Method::Strips);
   REQUIRE(!d.warnings.empty());
   CHECK(d.warnings[0].rfind("auto:strips:ellipse 4 not Hertzian", 0) == 0);
+  // t_Y = 0.5 mm, Q = 10 kN: the strip method cannot meet the load (a jump of N(δ), test below),
+  // so auto falls back to the half-space method and says both steps.
+  const mh::CaseResult e = mh::solve_method(F.pg.geo, F.cf.material, 0.5e-3, 10e3, mo);
+  CHECK(e.status == mh::CaseStatus::Ok);
+  CHECK(e.method == mh::Method::HalfSpace);
+  REQUIRE(e.warnings.size() >= 2);
+  CHECK(e.warnings[0].rfind("auto:strips:", 0) == 0);
+  CHECK(e.warnings[1] == "auto:half-space:strips not converged");
+  CHECK(e.Fz == Approx(10e3).epsilon(1e-4));
 }
 
 TEST_CASE("a strip case that does not converge keeps its closest iterate", "[strips]") {
@@ -199,4 +208,20 @@ TEST_CASE("a strip case that does not converge keeps its closest iterate", "[str
   CHECK(std::fabs(r.residual) < 0.01);
   CHECK(r.pmax > 0);
   CHECK(r.area > 0);
+}
+
+TEST_CASE("auto in the plastic model: a strongly capped flange contact ends ok", "[strips][auto]") {
+  // Manchester pair, Q = 100 kN, p_lim = 900 MPa (cases/manchester-plastic.json), t_Y = 7 mm: the
+  // plastic flange patch fails the Hertz validity test; the strip method's capped strips spread
+  // without settling there (docs/strips.md, Limits), so auto ends with the half-space method.
+  const mh::CaseFile cf = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/manchester-plastic.json", true);
+  const mh::PairGeometry pg = mh::build_pair_geometry(cf);
+  mh::MethodOptions mo = cf.method_options();
+  mo.method = mh::Method::Auto;
+  const mh::CaseResult r = mh::solve_method(pg.geo, cf.material, 7e-3, 100e3, mo);
+  INFO(r.message);
+  REQUIRE(r.status == mh::CaseStatus::Ok);
+  CHECK(r.method != mh::Method::MultiHertzian);
+  CHECK(r.Fz == Approx(100e3).epsilon(1e-4));
+  CHECK(r.pmax <= cf.material.p_lim * (1 + 1e-9));
 }
