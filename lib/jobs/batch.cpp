@@ -54,15 +54,19 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   check_pressure_cases(opt, shared.case_count());
   check_pressure_grid(np, (end - first) * opt.pressure_cases.count_in(0, shared.case_count()), plastic, opt.force);
   RunDirectory rd(opt.out_dir);
-  std::unique_ptr<OutputFile> fc, fe, fpa, fp, fpp, fj;
+  std::unique_ptr<OutputFile> fc, fe, fg, fpa, fp, fpp, fj;
   std::unique_ptr<JsonObjectStream> jw;
   if (opt.csv) {
     fc = std::make_unique<OutputFile>(rd.path("cases.csv"));
-    if (writes_ellipses(M)) fe = std::make_unique<OutputFile>(rd.path("ellipses.csv"));
+    if (writes_ellipses(M)) {
+      fe = std::make_unique<OutputFile>(rd.path("ellipses.csv"));
+      fg = std::make_unique<OutputFile>(rd.path("geometry.csv"));
+    }
     if (writes_patches(M)) fpa = std::make_unique<OutputFile>(rd.path("patches.csv"));
     fpp = std::make_unique<OutputFile>(rd.path("pairs.csv"));
     fc->stream() << "pair," << cases_csv_header();
     if (fe) fe->stream() << "pair," << ellipses_csv_header(plastic);
+    if (fg) fg->stream() << "pair," << geometry_csv_header();
     if (fpa) fpa->stream() << "pair," << patches_csv_header(plastic);
     fpp->stream() << "pair,name,wheel,rail,status,n_ellipses,wheel_sha256,rail_sha256,message\n";
   }
@@ -125,8 +129,15 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
         pw->member("profiles", profiles_json(*pg));
         pw->member("potential_ellipses", ellipses_json(pg->geo));
       }
+      // The load-independent part of the pair's ellipses, once per (t_Y, ellipse).
+      if (pg && writes_ellipses(M)) {
+        pw->begin_array("geometry");
+        write_geometry(cf, pg->geo, 0, shared.case_count(), nullptr, prefix, pw.get());
+        pw->end_array();
+      }
       pw->begin_array("cases");
     }
+    if (pg && fg) write_geometry(cf, pg->geo, 0, shared.case_count(), &fg->stream(), prefix, nullptr);
     if (pg) {
       if (!opt.quiet) warn_profiles(*pg, err);
       // Each pair can be inspected on its own (issue #14 item 4): its profiles, CAF and potential
@@ -167,6 +178,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   if (fc) {
     fc->commit();
     if (fe) fe->commit();
+    if (fg) fg->commit();
     if (fpa) fpa->commit();
     fpp->commit();
   }
