@@ -129,15 +129,15 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
         pw->member("profiles", profiles_json(*pg));
         pw->member("potential_ellipses", ellipses_json(pg->geo));
       }
-      // The load-independent part of the pair's ellipses, once per (t_Y, ellipse).
-      if (pg && writes_ellipses(M)) {
-        pw->begin_array("geometry");
-        write_geometry(cf, pg->geo, 0, shared.case_count(), nullptr, prefix, pw.get());
-        pw->end_array();
-      }
-      pw->begin_array("cases");
     }
-    if (pg && fg) write_geometry(cf, pg->geo, 0, shared.case_count(), &fg->stream(), prefix, nullptr);
+    // The load-independent part of the pair's ellipses, once per (t_Y, ellipse), before its cases
+    // (geometry.csv; the pair record's "geometry").
+    if (pg && writes_ellipses(M)) {
+      if (pw) pw->begin_array("geometry");
+      write_geometry(cf, pg->geo, 0, n, fg ? &fg->stream() : nullptr, prefix, pw.get());
+      if (pw) pw->end_array();
+    }
+    if (pw) pw->begin_array("cases");
     if (pg) {
       if (!opt.quiet) warn_profiles(*pg, err);
       // Each pair can be inspected on its own (issue #14 item 4): its profiles, CAF and potential
