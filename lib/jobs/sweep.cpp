@@ -312,11 +312,15 @@ void write_geometry(const CaseFile& cf, const ContactGeometry& G, std::uint64_t 
   std::string key, rows;
   bool have_last = false;
   std::uint64_t last_bits = 0;
-  for (std::uint64_t i = first; i < end; ++i) {
+  // A sweep runs Q inside t_Y (case i has t_Y number i / nQ): one case per t_Y is enough, so the
+  // pass costs the number of t_Y, not of cases. A case list: every case, skipping a t_Y equal to
+  // the previous case's.
+  const std::uint64_t stride = cf.cases.empty() ? std::max<std::uint64_t>(cf.sweep_Q_kN.size(), 1) : 1;
+  for (std::uint64_t i = first; i < end; i = (i / stride + 1) * stride) {
     const CasePoint cp = cf.case_at(i);
     std::uint64_t b;
     std::memcpy(&b, &cp.tY_mm, sizeof b);
-    if (have_last && b == last_bits) continue;  // a sweep runs Q inside t_Y: most cases repeat the last t_Y
+    if (have_last && b == last_bits) continue;
     have_last = true;
     last_bits = b;
     if (!G.covers(cp.tY)) continue;  // out_of_range cases have no candidates
