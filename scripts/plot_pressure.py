@@ -3,7 +3,8 @@
 
     plot_pressure.py DIR --case K [--pair P] [--ellipses MH_DIR] [-o FILE.png]
 
-Multi-Hertzian runs (DIR holds ellipses.csv): elastic versus plastic pressure. For a batch
+Multi-Hertzian runs (DIR holds ellipses.csv, joined with geometry.csv for the contact point and
+angle): elastic versus plastic pressure. For a batch
 (DIR/pairs.csv), --pair P picks the profile pair: its rows of ellipses.csv and
 DIR/pairs/P/profiles.csv. The title names the pair, the case, the model and p_lim; the pressure
 panels draw the p_lim line. Three panels: the rail section with the contact patches of case K (the plastic patch
@@ -38,6 +39,21 @@ import matplotlib.pyplot as plt  # noqa: E402
 def read_csv(path):
     with open(path, newline="") as f:
         return list(csv.DictReader(f))
+
+
+def read_ellipses(d):
+    """ellipses.csv of run directory d, each row completed with its candidate's columns of
+    geometry.csv (y_rail_mm, gamma_deg, radii, ...), joined on the text of (pair,) tY_mm, ellipse."""
+    rows = read_csv(os.path.join(d, "ellipses.csv"))
+    key = lambda r: (r.get("pair"), r["tY_mm"], r["ellipse"])  # noqa: E731
+    geo = {key(g): g for g in read_csv(os.path.join(d, "geometry.csv"))}
+    for r in rows:
+        g = geo.get(key(r))
+        if g is None:
+            raise ValueError(f"{d}/geometry.csv has no row for tY_mm={r['tY_mm']}, ellipse={r['ellipse']}")
+        for k, v in g.items():
+            r.setdefault(k, v)
+    return rows
 
 
 def hertz(p0, a, b, x, y):
@@ -133,7 +149,7 @@ def grid_map(a, batch):
     ellipses = []
     if a.ellipses:
         try:
-            ellipses = of_case(read_csv(os.path.join(a.ellipses, "ellipses.csv")), a)
+            ellipses = of_case(read_ellipses(a.ellipses), a)
         except (OSError, KeyError, ValueError) as e:
             sys.exit(f"plot_pressure.py: --ellipses {a.ellipses}: {e} (give the output directory of a "
                      "multi-Hertzian `mhcontact run` with CSV output)")
@@ -280,11 +296,11 @@ def main(argv=None):
         sys.exit("plot_pressure.py: --ellipses is for half-space and strip runs (patches.csv); "
                  f"{a.dir} is a multi-Hertzian run")
     try:
-        ell = [r for r in read_csv(os.path.join(a.dir, "ellipses.csv"))
+        ell = [r for r in read_ellipses(a.dir)
                if int(r["case"]) == a.case and (a.pair is None or int(r["pair"]) == a.pair)]
         prof = read_csv(os.path.join(a.dir, "pairs", str(a.pair), "profiles.csv") if batch
                         else os.path.join(a.dir, "profiles.csv"))
-    except OSError as e:
+    except (OSError, ValueError) as e:
         sys.exit(f"plot_pressure.py: {e} (run `mhcontact run CASE_OR_MANIFEST -o DIR` with CSV output first)")
     if not ell:
         where = f"pair {a.pair}, " if batch else ""

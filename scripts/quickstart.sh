@@ -5,4 +5,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
 ./build/mhcontact run cases/manchester.json -o out/manchester
-echo "results: out/manchester/cases.csv, out/manchester/ellipses.csv, out/manchester/results.json"
+echo "results: out/manchester/cases.csv, out/manchester/ellipses.csv, out/manchester/geometry.csv, out/manchester/results.json"

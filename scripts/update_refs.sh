@@ -9,7 +9,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # which names the build); default digits (10 significant), as users get them.
 for c in manchester manchester-plastic s1002-60e1 fleet; do
   "$bin" run "cases/$c.json" -o "$tmp/$c" --format csv -q || test $? -eq 1
-  cp "$tmp/$c/cases.csv" "$tmp/$c/ellipses.csv" "tests/ref/$c/"
+  cp "$tmp/$c/cases.csv" "$tmp/$c/ellipses.csv" "$tmp/$c/geometry.csv" "tests/ref/$c/"
   if [ -f "$tmp/$c/pairs.csv" ]; then cp "$tmp/$c/pairs.csv" "tests/ref/$c/"; fi
 done
 echo "updated tests/ref/: review with git diff"

@@ -42,7 +42,7 @@ void add_diff_command(CLI::App& app, CliContext& ctx) {
   const DiffOptions defaults;
   CLI::App* cmd = app.add_subcommand(
       "diff",
-      "Compare a result table (cases.csv, ellipses.csv, caf.csv, pressure.csv, ...) against a "
+      "Compare a result table (cases.csv, ellipses.csv, geometry.csv, caf.csv, pressure.csv, ...) against a "
       "reference: rows matched by key, numbers within tolerance, text exactly. Exit 0 within "
       "tolerance, 1 if they differ, 2 if an input is unreadable or malformed.");
   cmd->add_option("REF", args->ref, "Reference CSV table")->required()->type_name("FILE");
@@ -62,7 +62,8 @@ void add_diff_command(CLI::App& app, CliContext& ctx) {
       ->allow_extra_args(false);
   cmd->add_option("--key", args->key,
                   "Key column (repeatable or comma separated); default: those of pair, case, "
-                  "ellipse present in both tables, else the row number")
+                  "ellipse present in both tables (with tY_mm before ellipse when there is no case), "
+                  "else the row number")
       ->delimiter(',')
       ->type_name("COL")
       ->allow_extra_args(false);

@@ -39,7 +39,7 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
   struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false, strips = false, fail_on_warning = false; std::string shard, digits = "10", pressure_cases; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
-      "run", "Solve every case of the case file's sweep (or of a batch manifest over many profile pairs) (writes DIR/cases.csv, DIR/ellipses.csv, "
+      "run", "Solve every case of the case file's sweep (or of a batch manifest over many profile pairs) (writes DIR/cases.csv, DIR/ellipses.csv, DIR/geometry.csv, "
              "DIR/results.json). Exit 0 if every case is ok, 1 if some are not.");
   cmd->add_option("case", o->case_file, "Case file (JSON)")->required();
   cmd->add_option("-o,--output", o->out_dir, "Output directory (created if missing); '-' writes results.json to standard output")->required();

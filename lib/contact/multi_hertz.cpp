@@ -61,7 +61,41 @@ struct LawCache {
   }
 };
 
+// A and B [1/m] of a candidate (eq. 1).
+void curvature_sums(const CandidateGeom& g, double* A, double* B) {
+  *A = 1.0 / (2.0 * g.R_wyy());                 // (eq. 1)
+  if (g.r_roller > 0) *A += 0.5 * g.k_ryy();    // roller rig: + 1/(2 R_ryy); a straight rail adds nothing
+  *B = 0.5 * (g.k_wxx + g.k_rxx);               // (eq. 1)
+}
+
+bool hertzian_sums(double A, double B) { return B > 0 && A > 0 && std::isfinite(A) && std::isfinite(B); }
+
 }  // namespace
+
+void candidate_ellipses(const ContactGeometry& G, const Material& mat, double tY, const SolverOptions& opt,
+                        std::vector<CandidateEllipse>& out) {
+  const std::size_t ne = G.n_ellipses();
+  std::vector<CandidateGeom> geo(ne);
+  int main = 0;
+  G.candidates_at(tY, geo.data(), &main);
+  out.assign(ne, CandidateEllipse{});
+  for (std::size_t e = 0; e < ne; ++e) {
+    CandidateEllipse& c = out[e];
+    c.ellipse = static_cast<int>(e) + 1;
+    c.g = geo[e];
+    curvature_sums(c.g, &c.A, &c.B);
+    c.hertzian = hertzian_sums(c.A, c.B);
+    if (c.hertzian) {
+      try {
+        c.c = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients).c;
+      } catch (const std::exception&) {
+        c.hertzian = false;  // as solve_case: λ beyond the Hertz range, no ellipse
+      }
+    }
+    if (G.rail_curve) c.z_r = G.rail_curve->z(c.g.y_r);
+    if (G.wheel_curve) c.z_w = G.wheel_curve->z(c.g.y_w);
+  }
+}
 
 CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, double Q,
                       const SolverOptions& opt) {
@@ -90,12 +124,10 @@ CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, 
     Cand c;
     c.ellipse = static_cast<int>(e) + 1;
     c.g = geo[e];
-    c.A = 1.0 / (2.0 * c.g.R_wyy());                 // (eq. 1)
-    if (c.g.r_roller > 0) c.A += 0.5 * c.g.k_ryy();  // roller rig: + 1/(2 R_ryy); a straight rail adds nothing
-    c.B = 0.5 * (c.g.k_wxx + c.g.k_rxx);             // (eq. 1)
+    curvature_sums(c.g, &c.A, &c.B);
     c.cg = std::cos(c.g.gamma);
     c.sg = std::sin(c.g.gamma);
-    c.hertzian = c.B > 0 && c.A > 0 && std::isfinite(c.A) && std::isfinite(c.B);
+    c.hertzian = hertzian_sums(c.A, c.B);
     if (c.hertzian) {
       LawSlot& slot = cache.slots[e];
       if (slot.used && slot.A == bits(c.A) && slot.B == bits(c.B)) {

@@ -32,4 +32,21 @@ struct SolverOptions {
 CaseResult solve_case(const ContactGeometry& G, const Material& mat, double tY, double Q,
                       const SolverOptions& opt = {});
 
+/// One potential ellipse as a candidate at one t_Y: everything about it that does not depend on
+/// the load Q (geometry.csv, issue #14 item 3). The values are those solve_case() uses and copies
+/// into a LoadedEllipse (same code, same bits).
+struct CandidateEllipse {
+  int ellipse = 0;         ///< 1-based index of the potential ellipse
+  CandidateGeom g;         ///< its strip, interpolated at t_Y
+  double A = 0, B = 0;     ///< [1/m] (eq. 1)
+  bool hertzian = false;   ///< it has a Hertz ellipse (B > 0 and λ in the Hertz range); else c is unset
+  HertzCoefficients c;     ///< λ, m, n of its law (only when hertzian)
+  double z_r = 0, z_w = 0; ///< [m] profile heights at y_r (rail) and y_w (wheel), as in LoadedEllipse
+};
+
+/// Every potential ellipse of G as a candidate at t_Y (precondition: G.covers(tY)), in
+/// increasing ellipse index, into `out` (resized to G.n_ellipses()).
+void candidate_ellipses(const ContactGeometry& G, const Material& mat, double tY, const SolverOptions& opt,
+                        std::vector<CandidateEllipse>& out);
+
 }  // namespace mh

@@ -54,15 +54,19 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   check_pressure_cases(opt, shared.case_count());
   check_pressure_grid(np, (end - first) * opt.pressure_cases.count_in(0, shared.case_count()), plastic, opt.force);
   RunDirectory rd(opt.out_dir);
-  std::unique_ptr<OutputFile> fc, fe, fpa, fp, fpp, fj;
+  std::unique_ptr<OutputFile> fc, fe, fg, fpa, fp, fpp, fj;
   std::unique_ptr<JsonObjectStream> jw;
   if (opt.csv) {
     fc = std::make_unique<OutputFile>(rd.path("cases.csv"));
-    if (writes_ellipses(M)) fe = std::make_unique<OutputFile>(rd.path("ellipses.csv"));
+    if (writes_ellipses(M)) {
+      fe = std::make_unique<OutputFile>(rd.path("ellipses.csv"));
+      fg = std::make_unique<OutputFile>(rd.path("geometry.csv"));
+    }
     if (writes_patches(M)) fpa = std::make_unique<OutputFile>(rd.path("patches.csv"));
     fpp = std::make_unique<OutputFile>(rd.path("pairs.csv"));
     fc->stream() << "pair," << cases_csv_header();
     if (fe) fe->stream() << "pair," << ellipses_csv_header(plastic);
+    if (fg) fg->stream() << "pair," << geometry_csv_header();
     if (fpa) fpa->stream() << "pair," << patches_csv_header(plastic);
     fpp->stream() << "pair,name,wheel,rail,status,n_ellipses,wheel_sha256,rail_sha256,message\n";
   }
@@ -125,8 +129,15 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
         pw->member("profiles", profiles_json(*pg));
         pw->member("potential_ellipses", ellipses_json(pg->geo));
       }
-      pw->begin_array("cases");
     }
+    // The load-independent part of the pair's ellipses, once per (t_Y, ellipse), before its cases
+    // (geometry.csv; the pair record's "geometry").
+    if (pg && writes_ellipses(M)) {
+      if (pw) pw->begin_array("geometry");
+      write_geometry(cf, pg->geo, 0, n, fg ? &fg->stream() : nullptr, prefix, pw.get());
+      if (pw) pw->end_array();
+    }
+    if (pw) pw->begin_array("cases");
     if (pg) {
       if (!opt.quiet) warn_profiles(*pg, err);
       if (!pg->cant.warnings.empty()) ++cant_warned;
@@ -169,6 +180,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   if (fc) {
     fc->commit();
     if (fe) fe->commit();
+    if (fg) fg->commit();
     if (fpa) fpa->commit();
     fpp->commit();
   }

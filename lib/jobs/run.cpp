@@ -158,7 +158,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   const bool want_json = opt.json || to_stdout;
 
   std::unique_ptr<RunDirectory> rd;
-  std::unique_ptr<OutputFile> fc, fe, fpa, fj, fp, fs;
+  std::unique_ptr<OutputFile> fc, fe, fg, fpa, fj, fp, fs;
   const int np = opt.pressure_grid;
   if (opt.strips && M != Method::Strips && M != Method::Auto)
     throw InputError("--strips", "", "writes the strips of the strip method; the case's method is " + std::string(to_string(M)),
@@ -191,6 +191,8 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
       if (writes_ellipses(M)) {
         fe = std::make_unique<OutputFile>(rd->path("ellipses.csv"));
         fe->stream() << ellipses_csv_header(plastic);
+        fg = std::make_unique<OutputFile>(rd->path("geometry.csv"));
+        fg->stream() << geometry_csv_header();
       }
       if (writes_patches(M)) {
         fpa = std::make_unique<OutputFile>(rd->path("patches.csv"));
@@ -209,12 +211,19 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     jw->member("case_count", cf.case_count());
     jw->member("profiles", profiles_json(pg));
     jw->member("potential_ellipses", ellipses_json(G));
-    jw->begin_array("cases");
   }
 
   const std::uint64_t n_all = cf.case_count();
   const std::uint64_t first = n_all * (opt.shard_index - 1) / opt.shard_count;
   const std::uint64_t end = n_all * opt.shard_index / opt.shard_count;
+  // The load-independent part of the ellipses, once per (t_Y, ellipse), before the cases
+  // (geometry.csv; results.json "geometry").
+  if (writes_ellipses(M)) {
+    if (jw) jw->begin_array("geometry");
+    write_geometry(cf, G, first, end, fg ? &fg->stream() : nullptr, "", jw.get());
+    if (jw) jw->end_array();
+  }
+  if (jw) jw->begin_array("cases");
   const std::uint64_t n = end - first;
   SweepCounts counts;
   if (opt.strips) {
@@ -238,6 +247,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   if (fc) {
     fc->commit();
     if (fe) fe->commit();
+    if (fg) fg->commit();
     if (fpa) fpa->commit();
     write_profiles_csv(pg, rd->path("profiles.csv"));
   }

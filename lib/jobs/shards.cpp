@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -59,6 +60,31 @@ void append_csv(const std::string& path, std::ostream& out, std::string* header,
   if (with_header) out << line << '\n';
   char buf[1 << 16];
   while (in.read(buf, sizeof buf) || in.gcount() > 0) out.write(buf, in.gcount());
+}
+
+// geometry.csv of the shards: rows in shard order, a row whose key (its first `key_fields`
+// fields: tY_mm,ellipse, or pair,tY_mm,ellipse) an earlier shard already wrote is skipped, so the
+// rows are those of one run: each (t_Y, ellipse) once, in order of first appearance in case order.
+// Memory: the keys (a few per distinct t_Y).
+void append_csv_dedupe(const std::string& path, std::ostream& out, std::string* header, bool with_header,
+                       std::size_t key_fields, std::unordered_set<std::string>& seen) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "missing in a shard directory");
+  std::string line;
+  std::getline(in, line);
+  if (header->empty()) *header = line;
+  else if (line != *header) throw InputError(path, "", "its header differs from the first shard's");
+  if (with_header) out << line << '\n';
+  while (std::getline(in, line)) {
+    std::size_t at = std::string::npos, from = 0;
+    for (std::size_t k = 0; k < key_fields; ++k) {
+      at = line.find(',', from);
+      if (at == std::string::npos) break;
+      from = at + 1;
+    }
+    if (!seen.insert(line.substr(0, at)).second) continue;
+    out << line << '\n';
+  }
 }
 
 // An integer field of shard.json, range-checked as an integer before any conversion
@@ -144,7 +170,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
   if (csv) {
     // The per-contact tables: ellipses.csv (multi-Hertzian) and/or patches.csv (grid methods).
     tables = {"cases.csv"};
-    for (const char* t : {"ellipses.csv", "patches.csv"})
+    for (const char* t : {"ellipses.csv", "geometry.csv", "patches.csv"})
       if (std::ifstream(shards[0].dir + "/" + t).good()) tables.push_back(t);
   }
   if (csv && batch) tables.push_back("pairs.csv");
@@ -153,7 +179,11 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
   for (const auto& t : tables) {
     OutputFile f(rd.path(t));
     std::string header;
-    for (unsigned k = 0; k < N; ++k) append_csv(shards[k].dir + "/" + t, f.stream(), &header, k == 0);
+    std::unordered_set<std::string> seen;
+    for (unsigned k = 0; k < N; ++k) {
+      if (t == "geometry.csv") append_csv_dedupe(shards[k].dir + "/" + t, f.stream(), &header, k == 0, batch ? 3 : 2, seen);
+      else append_csv(shards[k].dir + "/" + t, f.stream(), &header, k == 0);
+    }
     f.commit();
   }
   if (csv && !batch) {
@@ -188,6 +218,33 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     // parse each, keep the first head, stream the records of all in order, write the summary of
     // the whole run. Memory: one shard's results.json at a time.
     const std::string key = batch ? "pairs" : "cases";
+    // A run's "geometry" records (one per (t_Y, ellipse), before the cases) are spread over the
+    // shards like geometry.csv: a first pass reads each shard's head (its cases skipped while
+    // parsing) and keeps each record once, in shard order.
+    std::vector<nlohmann::ordered_json> geometry;
+    bool has_geometry = false;
+    if (!batch) {
+      std::unordered_set<std::string> seen;
+      for (unsigned k = 0; k < N; ++k) {
+        const std::string path = shards[k].dir + "/results.json";
+        nlohmann::ordered_json t;
+        try {
+          t = nlohmann::ordered_json::parse(read_all(path), [](int depth, nlohmann::ordered_json::parse_event_t ev,
+                                                               nlohmann::ordered_json& parsed) {
+            return !(depth == 1 && ev == nlohmann::ordered_json::parse_event_t::key && parsed == "cases");
+          });
+        } catch (const nlohmann::json::exception& e) {
+          throw InputError(path, "", std::string("not a results.json of mhcontact run: ") + e.what());
+        }
+        if (!t.is_object() || !t.contains("geometry")) continue;
+        if (!t["geometry"].is_array()) throw InputError(path, "", "not a results.json of mhcontact run (geometry is not an array)");
+        has_geometry = true;
+        for (auto& rec : t["geometry"]) {
+          if (!seen.insert(rec.value("tY_mm", nlohmann::ordered_json()).dump() + "," + rec.value("ellipse", nlohmann::ordered_json()).dump()).second) continue;
+          geometry.push_back(std::move(rec));
+        }
+      }
+    }
     OutputFile f(rd.path("results.json"));
     std::unique_ptr<JsonObjectStream> w;
     for (unsigned k = 0; k < N; ++k) {
@@ -201,8 +258,17 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
       if (!t.is_object() || !t.contains(key) || !t[key].is_array()) throw InputError(path, "", "not a results.json of mhcontact run");
       if (k == 0) {
         w = std::make_unique<JsonObjectStream>(f.stream());
-        for (auto it = t.begin(); it != t.end(); ++it)
-          if (it.key() != key && it.key() != "summary") w->member(it.key(), it.value());
+        for (auto it = t.begin(); it != t.end(); ++it) {
+          if (it.key() == key || it.key() == "summary") continue;
+          if (it.key() == "geometry" && has_geometry) {
+            // Streamed as run_job writes it: one record a line.
+            w->begin_array("geometry");
+            for (const auto& g : geometry) w->element_json(g);
+            w->end_array();
+            continue;
+          }
+          w->member(it.key(), it.value());
+        }
         w->begin_array(key);
       }
       for (const auto& rec : t[key]) {
@@ -210,8 +276,16 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
         // A pair's record is an object with its own streamed case array (as batch_job writes it).
         w->element_open();
         JsonObjectStream pw(f.stream(), 6);
-        for (auto it = rec.begin(); it != rec.end(); ++it)
-          if (it.key() != "cases") pw.member(it.key(), it.value());
+        for (auto it = rec.begin(); it != rec.end(); ++it) {
+          if (it.key() == "cases") continue;
+          if (it.key() == "geometry" && it.value().is_array()) {  // streamed, as batch_job writes it
+            pw.begin_array("geometry");
+            for (const auto& g : it.value()) pw.element_json(g);
+            pw.end_array();
+            continue;
+          }
+          pw.member(it.key(), it.value());
+        }
         pw.begin_array("cases");
         for (const auto& c : rec.value("cases", nlohmann::ordered_json::array())) pw.element_json(c);
         pw.end_array();

@@ -7,6 +7,8 @@
 #include <memory>
 #include <charconv>
 #include <cstdio>
+#include <cstring>
+#include <unordered_set>
 #include <exception>
 #include <iterator>
 #include <mutex>
@@ -18,6 +20,7 @@
 #include "contact/solve.hpp"
 #include "core/errors.hpp"
 #include "output/case_tables.hpp"
+#include "output/cells.hpp"
 #include "output/output_file.hpp"
 
 namespace mh {
@@ -298,6 +301,38 @@ class Writer {
 };
 
 }  // namespace
+
+void write_geometry(const CaseFile& cf, const ContactGeometry& G, std::uint64_t first, std::uint64_t end,
+                    std::ostream* csv, const std::string& prefix, JsonObjectStream* json) {
+  if (!csv && !json) return;
+  const SolverOptions so = cf.method_options().multi_hertzian;
+  std::unordered_set<std::string> seen;  // t_Y as written in the tables
+  std::vector<CandidateEllipse> cands;
+  std::vector<std::string> records;
+  std::string key, rows;
+  bool have_last = false;
+  std::uint64_t last_bits = 0;
+  // A sweep runs Q inside t_Y (case i has t_Y number i / nQ): one case per t_Y is enough, so the
+  // pass costs the number of t_Y, not of cases. A case list: every case, skipping a t_Y equal to
+  // the previous case's.
+  const std::uint64_t stride = cf.cases.empty() ? std::max<std::uint64_t>(cf.sweep_Q_kN.size(), 1) : 1;
+  for (std::uint64_t i = first; i < end; i = (i / stride + 1) * stride) {
+    const CasePoint cp = cf.case_at(i);
+    std::uint64_t b;
+    std::memcpy(&b, &cp.tY_mm, sizeof b);
+    if (have_last && b == last_bits) continue;
+    have_last = true;
+    last_bits = b;
+    if (!G.covers(cp.tY)) continue;  // out_of_range cases have no candidates
+    key.clear();
+    cells::num(key, cp.tY_mm);
+    if (!seen.insert(key).second) continue;
+    candidate_ellipses(G, cf.material, cp.tY, so, cands);
+    format_geometry(cp.tY_mm, cands, csv != nullptr, json != nullptr, rows, json ? &records : nullptr);
+    if (csv) put_prefixed(*csv, prefix, rows);
+    if (json) for (const std::string& r : records) json->element(r);
+  }
+}
 
 // Solve cases [first, end) of `cf` on `G` and write them in order. A persistent pool of workers
 // fills one chunk (each worker a contiguous slice, formatted into its own block) while a writer

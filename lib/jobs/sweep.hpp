@@ -98,6 +98,15 @@ struct SweepCounts {
   }
 };
 
+/// geometry.csv and results.json's "geometry" records (issue #14 item 3): for each distinct t_Y of
+/// the cases [first, end) of `cf` that lies inside `G` (distinct as written in the tables), in
+/// order of first appearance, every potential ellipse of G as a candidate there
+/// (format_geometry()). CSV rows go to `csv` (each preceded by `prefix`), JSON records to `json`
+/// (with an array open); either may be null. One pass over the case list before the sweep;
+/// memory: the set of t_Y seen.
+void write_geometry(const CaseFile& cf, const ContactGeometry& G, std::uint64_t first, std::uint64_t end,
+                    std::ostream* csv, const std::string& prefix, JsonObjectStream* json);
+
 /// Solve cases [first, end) of `cf` on `G` in parallel chunks and write them in order.
 void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t first, std::uint64_t end,
                  const RunOptions& opt, const Sinks& out, SweepCounts* counts, std::ostream& err);

@@ -18,22 +18,10 @@ using namespace cells;
 
 namespace {
 
-// Per-ellipse values in output units, in column order (shared by CSV and JSON). `geometry`: the
-// value depends on t_Y only (the same for every Q), formatted through the repeat cache.
-struct Col { const char* name; double (*get)(const LoadedEllipse&); bool geometry = false; };
+// Per-ellipse values in output units, in column order (shared by CSV and JSON): what depends on
+// the load. What does not (the candidate's geometry at its t_Y) is in geometry.csv (kGeometryCols).
+struct Col { const char* name; double (*get)(const LoadedEllipse&); };
 const Col kEllipseCols[] = {
-    {"y_rail_mm", [](const LoadedEllipse& e) { return e.g.y_r * units::per_mm; }, true},
-    {"y_wheel_mm", [](const LoadedEllipse& e) { return e.g.y_w * units::per_mm; }, true},
-    {"gamma_deg", [](const LoadedEllipse& e) { return e.g.gamma / units::deg; }, true},
-    {"R_rxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_rxx); }, true},
-    {"R_wxx_mm", [](const LoadedEllipse& e) { return radius_mm(e.g.k_wxx); }, true},
-    {"R_wyy_mm", [](const LoadedEllipse& e) { return e.g.R_wyy() * units::per_mm; }, true},
-    {"A_per_mm", [](const LoadedEllipse& e) { return e.A * 1e-3; }, true},  // 1/m -> 1/mm, as `hertz --A`
-    {"B_per_mm", [](const LoadedEllipse& e) { return e.B * 1e-3; }, true},
-    {"lambda", [](const LoadedEllipse& e) { return e.c.lambda; }, true},
-    {"m", [](const LoadedEllipse& e) { return e.c.m; }, true},
-    {"n", [](const LoadedEllipse& e) { return e.c.n; }, true},
-    {"gap_mm", [](const LoadedEllipse& e) { return e.g.gap * units::per_mm; }, true},
     {"h0_mm", [](const LoadedEllipse& e) { return e.s.h0 * units::per_mm; }},
     {"N_kN", [](const LoadedEllipse& e) { return e.s.N / units::kN; }},
     {"a_mm", [](const LoadedEllipse& e) { return e.s.a * units::per_mm; }},
@@ -41,6 +29,26 @@ const Col kEllipseCols[] = {
     {"p0_MPa", [](const LoadedEllipse& e) { return e.s.p0 / units::MPa; }},
     {"pmean_MPa", [](const LoadedEllipse& e) { return e.s.p_mean / units::MPa; }},
     {"approach_mm", [](const LoadedEllipse& e) { return e.s.approach * units::per_mm; }},
+};
+// geometry.csv (issue #14 item 3): one potential ellipse as a candidate at one t_Y, the same for
+// every Q. `hertz`: the value exists only for a candidate with a Hertz ellipse (empty in CSV,
+// null in JSON otherwise).
+struct GeoCol { const char* name; double (*get)(const CandidateEllipse&); bool hertz = false; };
+const GeoCol kGeometryCols[] = {
+    {"y_rail_mm", [](const CandidateEllipse& e) { return e.g.y_r * units::per_mm; }},
+    {"y_wheel_mm", [](const CandidateEllipse& e) { return e.g.y_w * units::per_mm; }},
+    {"gamma_deg", [](const CandidateEllipse& e) { return e.g.gamma / units::deg; }},
+    {"R_rxx_mm", [](const CandidateEllipse& e) { return radius_mm(e.g.k_rxx); }},
+    {"R_wxx_mm", [](const CandidateEllipse& e) { return radius_mm(e.g.k_wxx); }},
+    {"R_wyy_mm", [](const CandidateEllipse& e) { return e.g.R_wyy() * units::per_mm; }},
+    {"A_per_mm", [](const CandidateEllipse& e) { return e.A * 1e-3; }},  // 1/m -> 1/mm, as `hertz --A`
+    {"B_per_mm", [](const CandidateEllipse& e) { return e.B * 1e-3; }},
+    {"lambda", [](const CandidateEllipse& e) { return e.c.lambda; }, true},
+    {"m", [](const CandidateEllipse& e) { return e.c.m; }, true},
+    {"n", [](const CandidateEllipse& e) { return e.c.n; }, true},
+    {"gap_mm", [](const CandidateEllipse& e) { return e.g.gap * units::per_mm; }},
+    {"z_rail_mm", [](const CandidateEllipse& e) { return e.z_r * 1e3; }},
+    {"z_wheel_mm", [](const CandidateEllipse& e) { return e.z_w * 1e3; }},
 };
 const Col kPlasticCols[] = {
     {"h_y_mm", nullptr},  // filled from the law, see below
@@ -57,6 +65,7 @@ const Col kTailCols[] = {
     {"hertz_valid", nullptr},
     {"b_over_R", [](const LoadedEllipse& e) { return e.validity.b_over_R; }},
     {"gap_error", [](const LoadedEllipse& e) { return e.validity.gap_error; }},
+    {"gap_mean_error", [](const LoadedEllipse& e) { return e.validity.gap_mean_error; }},
 };
 // Plastic mode only, appended after kTailCols (issue #10 item 5): the elastic and the plastic
 // patch side by side.
@@ -67,12 +76,8 @@ const Col kPlasticTailCols[] = {
     {"area_el_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a_el * e.s.b_el * units::per_mm2; }},
 };
 // Appended last (issue #14 item 3): the patch area (elastic mode only: the plastic tail already
-// has area_mm2) and the contact point's z on each profile, in the frames of profiles.csv.
+// has area_mm2).
 const Col kAreaCol = {"area_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a * e.s.b * units::per_mm2; }};
-const Col kPointCols[] = {
-    {"z_rail_mm", [](const LoadedEllipse& e) { return e.z_r * 1e3; }, true},
-    {"z_wheel_mm", [](const LoadedEllipse& e) { return e.z_w * 1e3; }, true},
-};
 
 }  // namespace
 
@@ -171,10 +176,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       e += ','; num_repeated(e, cp.tY_mm);
       e += ','; num_repeated(e, cp.Q_kN);
       e += ','; append_number(e, static_cast<long long>(L.ellipse));
-      for (const Col& c : kEllipseCols) {
-        e += ',';
-        if (c.geometry) num_repeated(e, c.get(L)); else num(e, c.get(L));
-      }
+      for (const Col& c : kEllipseCols) { e += ','; num(e, c.get(L)); }
       if (plastic) {
         e += ','; e += L.s.plastic ? "1" : "0";
         e += ','; num(e, h_y_mm(L));
@@ -185,7 +187,6 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (plastic)
         for (const Col& c : kPlasticTailCols) { e += ','; num(e, c.get(L)); }
       if (!plastic) { e += ','; num(e, kAreaCol.get(L)); }
-      for (const Col& c : kPointCols) { e += ','; num_repeated(e, c.get(L)); }
       e += '\n';
     }
   }
@@ -229,7 +230,6 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (plastic)
         for (const Col& c : kPlasticTailCols) e[c.name] = jv(c.get(L));
       if (!plastic) e[kAreaCol.name] = jv(kAreaCol.get(L));
-      for (const Col& c : kPointCols) e[c.name] = jv(c.get(L));
       el.push_back(std::move(e));
     }
     j["ellipses"] = std::move(el);
@@ -341,8 +341,38 @@ std::string ellipses_csv_header(bool plastic) {
   if (plastic)
     for (const Col& c : kPlasticTailCols) { s += ','; s += c.name; }
   if (!plastic) { s += ','; s += kAreaCol.name; }
-  for (const Col& c : kPointCols) { s += ','; s += c.name; }
   return s + "\n";
+}
+
+std::string geometry_csv_header() {
+  std::string s = "tY_mm,ellipse";
+  for (const GeoCol& c : kGeometryCols) { s += ','; s += c.name; }
+  return s + "\n";
+}
+
+void format_geometry(double tY_mm, const std::vector<CandidateEllipse>& cands, bool want_csv, bool want_json,
+                     std::string& csv, std::vector<std::string>* json) {
+  csv.clear();
+  if (json) json->clear();
+  auto jv = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(rounded(v)) : nlohmann::ordered_json(nullptr); };
+  for (const CandidateEllipse& E : cands) {
+    if (want_csv) {
+      num(csv, tY_mm);  // as num_repeated() writes it in ellipses.csv: the two tables join on this text
+      csv += ','; append_number(csv, static_cast<long long>(E.ellipse));
+      for (const GeoCol& c : kGeometryCols) {
+        csv += ',';
+        if (!c.hertz || E.hertzian) num(csv, c.get(E));
+      }
+      csv += '\n';
+    }
+    if (want_json && json) {
+      nlohmann::ordered_json j;
+      j["tY_mm"] = jv(tY_mm);
+      j["ellipse"] = E.ellipse;
+      for (const GeoCol& c : kGeometryCols) j[c.name] = (!c.hertz || E.hertzian) ? jv(c.get(E)) : nlohmann::ordered_json(nullptr);
+      json->push_back(j.dump());
+    }
+  }
 }
 
 

@@ -4,6 +4,7 @@
 // formats one case into strings, so that cases can be formatted in parallel and written in order.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "contact/multi_hertz.hpp"
 #include "input/case_file.hpp"
@@ -52,6 +53,15 @@ std::string pressure_table_header(Method m, bool plastic);
 std::string patch_pressure_csv_header();
 std::string cases_csv_header();
 std::string ellipses_csv_header(bool plastic);
+
+/// geometry.csv (issue #14 item 3): what ellipses.csv would repeat for every Q, once per (t_Y,
+/// potential ellipse). Its header, and the rows of the candidates `cands` at the case t_Y `tY_mm`
+/// (as given: written exactly as in ellipses.csv, so the tables join on the text of tY_mm and
+/// ellipse) into `csv`, and/or one JSON record per candidate (results.json "geometry") into `json`.
+/// λ, m, n of a candidate without a Hertz ellipse are empty (null in JSON).
+std::string geometry_csv_header();
+void format_geometry(double tY_mm, const std::vector<CandidateEllipse>& cands, bool want_csv, bool want_json,
+                     std::string& csv, std::vector<std::string>* json);
 std::string pressure_csv_header(bool plastic);
 
 }  // namespace mh

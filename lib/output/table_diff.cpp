@@ -85,7 +85,7 @@ KeyIndex index_keys(const CsvTable& t, const std::vector<std::string>& key_cols,
                        "duplicate key: the same key is on line " +
                            std::to_string(t.row_line[it->second]),
                        default_key
-                           ? "the default key is those of pair, case, ellipse in both tables; choose "
+                           ? "the default key is those of pair, case, ellipse in both tables (with tY_mm when there is no case); choose "
                              "the key columns with --key, e.g. --key tY_mm for caf.csv, --key "
                              "case,ellipse,x_mm,y_mm for pressure.csv"
                            : "each row must have its own key; choose the key columns with --key");
@@ -146,6 +146,11 @@ TableDiffResult diff_tables(const CsvTable& ref, const CsvTable& out, const Diff
   } else {
     for (const char* k : kDefaultKeys)
       if (ref.has_column(k) && out.has_column(k)) r.key_columns.push_back(k);
+    // A table with one row per (t_Y, ellipse) and no case column (geometry.csv, caf.csv): t_Y
+    // joins the key, before the ellipse (pair, tY_mm, ellipse).
+    const auto has = [&](const char* k) { return std::find(r.key_columns.begin(), r.key_columns.end(), k) != r.key_columns.end(); };
+    if (has("ellipse") && !has("case") && ref.has_column("tY_mm") && out.has_column("tY_mm"))
+      r.key_columns.insert(r.key_columns.end() - 1, "tY_mm");
   }
   r.by_row_number = r.key_columns.empty();
   const std::unordered_set<std::string> is_key(r.key_columns.begin(), r.key_columns.end());

@@ -11,7 +11,7 @@ test "$(tail -n +2 "$tmp/fleet/pairs.csv" | wc -l)" -eq 4
 ! grep -q invalid "$tmp/fleet/pairs.csv"
 # Pair 0 is the Manchester pair with the Manchester sweep: its rows equal the single run's.
 "$bin" run "$src/cases/manchester.json" -o "$tmp/m" -q
-for t in cases ellipses; do
+for t in cases ellipses geometry; do
   awk -F, 'NR>1 && $1==0' "$tmp/fleet/$t.csv" | cut -d, -f2- > "$tmp/p0_$t.csv"
   tail -n +2 "$tmp/m/$t.csv" | cmp - "$tmp/p0_$t.csv"
 done
@@ -36,7 +36,7 @@ test "$(grep -c '^0,[01],.*,ok,' "$tmp/bad/cases.csv")" -eq 2
 for k in 1 2 3; do "$bin" run "$tmp/bad.json" -o "$tmp/bs$k" --shard $k/3 -q || test $? -eq 1; done
 set +e; "$bin" merge "$tmp/bs2" "$tmp/bs1" "$tmp/bs3" -o "$tmp/bm" -q; rc=$?; set -e
 test $rc -eq 1
-for f in cases.csv ellipses.csv pairs.csv results.json; do cmp "$tmp/bad/$f" "$tmp/bm/$f"; done
+for f in cases.csv ellipses.csv geometry.csv pairs.csv results.json; do cmp "$tmp/bad/$f" "$tmp/bm/$f"; done
 # ... and so do the per-pair profiles and geometry (pairs/<k>/), listed in the merged run.json.
 diff -r "$tmp/bad/pairs" "$tmp/bm/pairs"
 test -n "$(ls "$tmp/bm/pairs")"

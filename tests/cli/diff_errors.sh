@@ -18,7 +18,7 @@ expect() {  # expected-code message-substring args...
 expect 2 "ragged.csv:3: value 12 fields: row has 12 fields but the header has 11" cases_ref.csv ragged.csv
 expect 2 "no_such.csv: cannot open file for reading" no_such.csv cases_ref.csv
 expect 2 "dupkey.csv:4: value case=c1: duplicate key: the same key is on line 2" dupkey.csv cases_ref.csv
-expect 2 "caf_ref.csv:3: value ellipse=1: duplicate key" caf_ref.csv caf_out.csv
+expect 2 "caf_ref.csv:3: value ellipse=1: duplicate key" caf_ref.csv caf_out.csv --key ellipse
 expect 2 "--column-tol: value \"Fz_kN:0.01\": expected COL=TOL" cases_ref.csv cases_ref.csv --column-tol Fz_kN:0.01
 expect 2 "--column-tol Fz_kN: value \"x\": not a number" cases_ref.csv cases_ref.csv --column-tol Fz_kN=x
 expect 2 "--column-tol Fz_kN: value -1: tolerance must be finite and >= 0" cases_ref.csv cases_ref.csv --column-tol Fz_kN=-1

@@ -46,6 +46,9 @@ expect 0 "diff: OK" ellipses_ref.csv ellipses_out.csv --atol 0.5
 expect 1 "key: tY_mm|rows missing in OUT (1): tY_mm=5|rows extra in OUT (1): tY_mm=5.0" \
   caf_ref.csv caf_out.csv --key tY_mm
 expect 0 "diff: OK" caf_ref.csv caf_ref.csv --key tY_mm,ellipse
+# Without a case column, the default key is tY_mm,ellipse (geometry.csv, caf.csv).
+expect 1 "key: tY_mm, ellipse|rows missing in OUT (1): tY_mm=5, ellipse=2|rows extra in OUT (1): tY_mm=5.0, ellipse=2" \
+  caf_ref.csv caf_out.csv
 
 # pressure.csv: one row per grid point, key case,ellipse,x_mm,y_mm; p_MPa off by 1e-5 MPa (8.7e-9 relative), tolerance 1e-4 MPa.
 expect 1 "worst abs deviation 1e-05 at case=c1, ellipse=1, x_mm=1, y_mm=0|diff: 1 cells out of tolerance, 0 missing rows, 0 extra rows" \

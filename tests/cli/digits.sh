@@ -23,9 +23,9 @@ PY
 "$bin" run "$src/cases/manchester-plastic.json" -o "$tmp/d10" --pressure-grid 5 -q || fail "default run"
 "$bin" run "$src/cases/manchester-plastic.json" -o "$tmp/d4" --pressure-grid 5 --digits 4 -q || fail "--digits 4"
 "$bin" run "$src/cases/manchester-plastic.json" -o "$tmp/dmax" --pressure-grid 5 --digits max -q || fail "--digits max"
-n=$(maxdig "$tmp/d10/cases.csv" "$tmp/d10/ellipses.csv" "$tmp/d10/pressure.csv"); [ "$n" -le 10 ] || fail "default: $n digits"
+n=$(maxdig "$tmp/d10/cases.csv" "$tmp/d10/ellipses.csv" "$tmp/d10/geometry.csv" "$tmp/d10/pressure.csv"); [ "$n" -le 10 ] || fail "default: $n digits"
 [ "$n" -ge 9 ] || fail "default: only $n digits"
-n=$(maxdig "$tmp/d4/cases.csv" "$tmp/d4/ellipses.csv" "$tmp/d4/pressure.csv"); [ "$n" -le 4 ] || fail "--digits 4: $n digits"
+n=$(maxdig "$tmp/d4/cases.csv" "$tmp/d4/ellipses.csv" "$tmp/d4/geometry.csv" "$tmp/d4/pressure.csv"); [ "$n" -le 4 ] || fail "--digits 4: $n digits"
 n=$(maxdig "$tmp/dmax/cases.csv" "$tmp/dmax/ellipses.csv"); [ "$n" -ge 15 ] || fail "--digits max: only $n digits"
 grep -q '"digits": 10' "$tmp/d10/run.json" || fail "run.json does not record the digits"
 # The rounded tables agree with the exact ones to 10 digits.
@@ -53,7 +53,7 @@ done
 # Straight profile parts (60E1's flat head ends): inf, never a finite radius beyond 1e9 mm.
 "$bin" run "$src/cases/s1002-60e1.json" -o "$tmp/s" --format csv -q
 "$bin" geometry "$src/cases/s1002-60e1.json" -o "$tmp/g" -q
-python3 - "$tmp/s/ellipses.csv" "$tmp/g/caf.csv" <<'PY' || fail "radii of straight profiles"
+python3 - "$tmp/s/geometry.csv" "$tmp/g/caf.csv" <<'PY' || fail "radii of straight profiles"
 import csv, math, sys
 infs = 0
 for p in sys.argv[1:]:

@@ -13,6 +13,7 @@ head -1 "$tmp/a/cases.csv" | grep -q '^case,tY_mm,Q_kN,status,method,dz_virtual_
 test "$(grep -c ',ok,half-space,' "$tmp/a/cases.csv")" -eq 3
 test "$(wc -l < "$tmp/a/patches.csv")" -eq 4
 test ! -e "$tmp/a/ellipses.csv"
+test ! -e "$tmp/a/geometry.csv"
 # The element pressures integrate to the patch forces (0.2 mm x 0.2 mm elements): within 1e-6.
 python3 - "$tmp/a" <<'PY'
 import csv, sys

@@ -10,7 +10,7 @@ bin=$1; src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 for c in manchester manchester-plastic s1002-60e1 fleet; do
   "$bin" run "$src/cases/$c.json" -o "$tmp/$c" --format csv -q
-  for t in cases ellipses; do
+  for t in cases ellipses geometry; do
     "$bin" diff "$src/tests/ref/$c/$t.csv" "$tmp/$c/$t.csv" --rtol 1e-7 --atol 1e-9 --quiet
   done
 done

@@ -12,10 +12,10 @@ listed() { python3 -c 'import json,sys; print(" ".join(json.load(open(sys.argv[1
 present() { (cd "$1" && ls | sort | tr '\n' ' ' | sed 's/ $//'); }
 d="$tmp/out"
 "$bin" run "$src/cases/manchester-plastic.json" -o "$d" --pressure-grid 5 -q
-[ "$(present "$d")" = "cases.csv ellipses.csv pressure.csv profiles.csv results.json run.json" ] || fail "first run: $(present "$d")"
+[ "$(present "$d")" = "cases.csv ellipses.csv geometry.csv pressure.csv profiles.csv results.json run.json" ] || fail "first run: $(present "$d")"
 [ "$(listed "$d")" = "$(present "$d")" ] || fail "run.json lists $(listed "$d"), the directory holds $(present "$d")"
 "$bin" run "$src/cases/manchester.json" -o "$d" --format csv -q
-[ "$(present "$d")" = "cases.csv ellipses.csv profiles.csv run.json" ] || fail "rerun --format csv: $(present "$d")"
+[ "$(present "$d")" = "cases.csv ellipses.csv geometry.csv profiles.csv run.json" ] || fail "rerun --format csv: $(present "$d")"
 [ "$(listed "$d")" = "$(present "$d")" ] || fail "rerun: run.json lists $(listed "$d")"
 grep -q '"command": "run"' "$d/run.json" || fail "run.json has no command"
 # A default plot of the previous run goes with it.

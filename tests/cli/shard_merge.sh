@@ -6,7 +6,7 @@ set -euo pipefail
 bin=$1; src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 check_equal() {  # $1 = reference dir, $2 = merged dir
-  for f in cases.csv ellipses.csv results.json profiles.csv; do cmp "$1/$f" "$2/$f"; done
+  for f in cases.csv ellipses.csv geometry.csv results.json profiles.csv; do cmp "$1/$f" "$2/$f"; done
 }
 "$bin" run "$src/cases/manchester.json" -o "$tmp/full" -q
 for k in 1 2 3; do "$bin" run "$src/cases/manchester.json" -o "$tmp/s$k" --shard $k/3 -q & done
@@ -14,6 +14,12 @@ wait
 test -s "$tmp/s2/shard.json"
 "$bin" merge "$tmp/s3" "$tmp/s1" "$tmp/s2" -o "$tmp/merged" -q
 check_equal "$tmp/full" "$tmp/merged"
+# 4 shards cut the loads of one t_Y between shards 2 and 3 (cases 49 .. 50 share t_Y = 2 mm):
+# both shards write its geometry rows, the merge keeps them once, where one run writes them.
+for k in 1 2 3 4; do "$bin" run "$src/cases/manchester.json" -o "$tmp/q$k" --shard $k/4 -q; done
+test "$(tail -n +2 "$tmp/q2/geometry.csv" | tail -n 1 | cut -d, -f1)" = "$(tail -n +2 "$tmp/q3/geometry.csv" | head -n 1 | cut -d, -f1)"
+"$bin" merge "$tmp"/q1 "$tmp"/q2 "$tmp"/q3 "$tmp"/q4 -o "$tmp/qmerged" -q
+check_equal "$tmp/full" "$tmp/qmerged"
 
 # More shards than cases, a failing case (exit 1 kept by merge), pressure grids.
 sed -e 's|"sweep": .*|"cases": [{"tY_mm": 0, "Q_kN": 50}, {"tY_mm": 40, "Q_kN": 50}, {"tY_mm": 5, "Q_kN": 80}]|' \

@@ -218,3 +218,43 @@ TEST_CASE("load sharing next to a jump does not depend on the t_Y grid (issue #1
     }
   }
 }
+
+TEST_CASE("candidate_ellipses: the load-independent part of every loaded ellipse, bit for bit", "[solver]") {
+  // geometry.csv is written from candidate_ellipses() and joined to ellipses.csv on (t_Y,
+  // ellipse): each loaded ellipse's strip, A, B, λ, m, n and profile heights must be exactly the
+  // candidate's, at every load (same code path, not a tolerance).
+  const ContactGeometry& G = manchester();
+  const Material mat = steel();
+  std::vector<CandidateEllipse> cands;
+  int loaded = 0;
+  for (double tY : {-6e-3, -0.25e-3, 0.5e-3, 5e-3, 7.5e-3}) {
+    candidate_ellipses(G, mat, tY, SolverOptions{}, cands);
+    REQUIRE(cands.size() == G.n_ellipses());
+    for (std::size_t e = 0; e < cands.size(); ++e) REQUIRE(cands[e].ellipse == static_cast<int>(e) + 1);
+    for (double Q : {10e3, 100e3, 300e3}) {
+      const CaseResult r = solve_case(G, mat, tY, Q);
+      REQUIRE(r.status == CaseStatus::Ok);
+      for (const LoadedEllipse& L : r.loaded) {
+        CAPTURE(tY, Q, L.ellipse);
+        const CandidateEllipse& c = cands[static_cast<std::size_t>(L.ellipse - 1)];
+        REQUIRE(c.hertzian);
+        CHECK(c.g.y_r == L.g.y_r);
+        CHECK(c.g.y_w == L.g.y_w);
+        CHECK(c.g.gamma == L.g.gamma);
+        CHECK(c.g.k_rxx == L.g.k_rxx);
+        CHECK(c.g.k_wxx == L.g.k_wxx);
+        CHECK(c.g.R_wyy() == L.g.R_wyy());
+        CHECK(c.g.gap == L.g.gap);
+        CHECK(c.A == L.A);
+        CHECK(c.B == L.B);
+        CHECK(c.c.lambda == L.c.lambda);
+        CHECK(c.c.m == L.c.m);
+        CHECK(c.c.n == L.c.n);
+        CHECK(c.z_r == L.z_r);
+        CHECK(c.z_w == L.z_w);
+        ++loaded;
+      }
+    }
+  }
+  REQUIRE(loaded >= 15);  // at least one ellipse per case, two near the jumps
+}

@@ -38,7 +38,7 @@ TEST_CASE("plastic state: p0_el, p_max and the elastic patch are those of the el
 
 TEST_CASE("plastic ellipses table appends p0_el_MPa, pmax_MPa, area_mm2, area_el_mm2", "[plastic]") {
   const std::string h = ellipses_csv_header(true);
-  REQUIRE(h.find(",area_ratio,hertz_valid,b_over_R,gap_error,p0_el_MPa,pmax_MPa,area_mm2,area_el_mm2,z_rail_mm,z_wheel_mm\n") !=
+  REQUIRE(h.find(",area_ratio,hertz_valid,b_over_R,gap_error,gap_mean_error,p0_el_MPa,pmax_MPa,area_mm2,area_el_mm2\n") !=
           std::string::npos);
   REQUIRE(ellipses_csv_header(false).find("p0_el_MPa") == std::string::npos);
 }

@@ -62,7 +62,7 @@ TEST_CASE("run writes the three tables, byte-identical for 1, 2 and 4 threads", 
   REQUIRE(cli({"run", cf, "-o", d / "t2", "--threads", "2", "-q"}) == 0);
   REQUIRE(cli({"run", cf, "-o", d / "t4", "--threads", "4"}, nullptr, &err) == 0);
   REQUIRE_THAT(err, Catch::Contains("99 cases, ok 99"));
-  for (const char* f : {"cases.csv", "ellipses.csv", "results.json"}) {
+  for (const char* f : {"cases.csv", "ellipses.csv", "geometry.csv", "results.json"}) {
     CAPTURE(f);
     const std::string a = slurp(d / (std::string("t1/") + f));
     REQUIRE(!a.empty());
@@ -77,15 +77,21 @@ TEST_CASE("run writes the three tables, byte-identical for 1, 2 and 4 threads", 
   REQUIRE(cases.rfind("case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,pmax_MPa,area_mm2,gamma_main_deg,r_roll_main_mm,plastic,n_warnings,warnings,message\n", 0) == 0);
   REQUIRE(std::count(cases.begin(), cases.end(), '\n') == 100);
   const std::string ell = slurp(d / "t1/ellipses.csv");
-  REQUIRE(ell.rfind("case,tY_mm,Q_kN,ellipse,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,A_per_mm,B_per_mm,"
-                    "lambda,m,n,gap_mm,h0_mm,N_kN,a_mm,b_mm,p0_MPa,pmean_MPa,approach_mm,"
-                    "hertz_valid,b_over_R,gap_error,area_mm2,z_rail_mm,z_wheel_mm\n", 0) == 0);
+  REQUIRE(ell.rfind("case,tY_mm,Q_kN,ellipse,h0_mm,N_kN,a_mm,b_mm,p0_MPa,pmean_MPa,approach_mm,"
+                    "hertz_valid,b_over_R,gap_error,gap_mean_error,area_mm2\n", 0) == 0);
+  // geometry.csv (schema 3): the candidates' geometry once per (t_Y, ellipse): 33 t_Y x 4
+  // potential ellipses.
+  const std::string geo = slurp(d / "t1/geometry.csv");
+  REQUIRE(geo.rfind("tY_mm,ellipse,y_rail_mm,y_wheel_mm,gamma_deg,R_rxx_mm,R_wxx_mm,R_wyy_mm,A_per_mm,B_per_mm,"
+                    "lambda,m,n,gap_mm,z_rail_mm,z_wheel_mm\n", 0) == 0);
+  REQUIRE(std::count(geo.begin(), geo.end(), '\n') == 1 + 33 * 4);
   // results.json: valid JSON, schema, inputs with checksums, the same cases.
   const auto j = nlohmann::json::parse(slurp(d / "t1/results.json"));
-  REQUIRE(j.at("schema") == "mhcontact.results/2");
+  REQUIRE(j.at("schema") == "mhcontact.results/3");
   REQUIRE(j.at("profiles").at("wheel").at("sha256").get<std::string>().size() == 64);
   REQUIRE(j.at("cases").size() == 99);
   REQUIRE(j.at("potential_ellipses").size() == 4);
+  REQUIRE(j.at("geometry").size() == 33 * 4);
   REQUIRE(j.at("summary").at("failed") == 0);
   double sumFz = 0;
   for (const auto& c : j.at("cases")) sumFz += c.at("Fz_kN").get<double>() - c.at("Q_kN").get<double>();

@@ -341,12 +341,26 @@ TEST_CASE("diff: default keys, row-number mode and --key", "[diff]") {
 TEST_CASE("diff: duplicate keys are input errors naming file and line", "[diff]") {
   CHECK(where_of([] { D("case,x\nc1,1\nc2,2\nc1,3\n", "case,x\nc1,1\n"); }) == "ref.csv:4");
   CHECK(where_of([] { D("case,x\nc1,1\n", "case,x\nc1,1\nc1,1\n"); }) == "out.csv:3");
-  // caf.csv-like: the default key `ellipse` alone repeats; --key tY_mm resolves it.
+  // caf.csv-like: the key `ellipse` alone repeats; --key tY_mm resolves it.
   const char* caf = "tY_mm,y_rail_mm,ellipse\n0,-1.25,1\n2.5,2.1,1\n";
-  CHECK(where_of([&] { D(caf, caf); }) == "ref.csv:3");
+  DiffOptions ke;
+  ke.key = {"ellipse"};
+  CHECK(where_of([&] { D(caf, caf, ke); }) == "ref.csv:3");
   DiffOptions k;
   k.key = {"tY_mm"};
   CHECK(D(caf, caf, k).ok());
+}
+
+TEST_CASE("diff: without a case column, tY_mm joins the default key (geometry.csv, caf.csv)", "[diff]") {
+  const char* geo = "tY_mm,ellipse,gamma_deg\n0,1,1.4\n0,2,20\n0.5,1,1.5\n0.5,2,21\n";
+  const TableDiffResult r = D(geo, "tY_mm,ellipse,gamma_deg\n0,1,1.4\n0,2,20\n0.5,2,21\n0.5,1,1.5\n");
+  CHECK(r.key_columns == std::vector<std::string>{"tY_mm", "ellipse"});
+  CHECK(r.ok());
+  const char* batch = "pair,tY_mm,ellipse,gamma_deg\n0,0,1,1.4\n1,0,1,1.6\n";
+  CHECK(D(batch, batch).key_columns == std::vector<std::string>{"pair", "tY_mm", "ellipse"});
+  // With a case column the key stays case, ellipse (ellipses.csv: tY_mm is a value of the case).
+  CHECK(D("case,tY_mm,ellipse,x\n0,0,1,1\n", "case,tY_mm,ellipse,x\n0,0,1,1\n").key_columns ==
+        std::vector<std::string>{"case", "ellipse"});
 }
 
 TEST_CASE("diff: missing and extra columns make the tables differ", "[diff]") {
@@ -440,7 +454,7 @@ TEST_CASE("diff cli: bad input exits 2 naming file, line or option", "[diff][cli
       {{ref, ref, "--rtol", "-1e-9"}, "--rtol: value -1e-9"},
       {{ref, ref, "--atol", "inf"}, "--atol: value inf"},
       {{ref, ref, "--key", "pair"}, "pair: key column is not in the header"},
-      {{kData + "caf_ref.csv", kData + "caf_out.csv"}, "caf_ref.csv:3: value ellipse=1: duplicate key"},
+      {{kData + "caf_ref.csv", kData + "caf_out.csv", "--key", "ellipse"}, "caf_ref.csv:3: value ellipse=1: duplicate key"},
   };
   for (const Bad& b : bad) {
     INFO(b.args.back());
