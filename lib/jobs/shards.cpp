@@ -49,8 +49,9 @@ std::string read_all(const std::string& path) {
   return ss.str();
 }
 
-// Copy a CSV file to `out`, skipping its header unless `with_header`; the header must equal `header`.
-void append_csv(const std::string& path, std::ostream& out, std::string* header, bool with_header) {
+// Open a shard's CSV file and check its header against `header` (set from the first shard);
+// the header is copied to `out` when `with_header`.
+std::ifstream open_shard_csv(const std::string& path, std::ostream& out, std::string* header, bool with_header) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "missing in a shard directory");
   std::string line;
@@ -58,6 +59,12 @@ void append_csv(const std::string& path, std::ostream& out, std::string* header,
   if (header->empty()) *header = line;
   else if (line != *header) throw InputError(path, "", "its header differs from the first shard's");
   if (with_header) out << line << '\n';
+  return in;
+}
+
+// Copy a CSV file to `out`, skipping its header unless `with_header`; the header must equal `header`.
+void append_csv(const std::string& path, std::ostream& out, std::string* header, bool with_header) {
+  std::ifstream in = open_shard_csv(path, out, header, with_header);
   char buf[1 << 16];
   while (in.read(buf, sizeof buf) || in.gcount() > 0) out.write(buf, in.gcount());
 }
@@ -68,13 +75,8 @@ void append_csv(const std::string& path, std::ostream& out, std::string* header,
 // Memory: the keys (a few per distinct t_Y).
 void append_csv_dedupe(const std::string& path, std::ostream& out, std::string* header, bool with_header,
                        std::size_t key_fields, std::unordered_set<std::string>& seen) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "missing in a shard directory");
+  std::ifstream in = open_shard_csv(path, out, header, with_header);
   std::string line;
-  std::getline(in, line);
-  if (header->empty()) *header = line;
-  else if (line != *header) throw InputError(path, "", "its header differs from the first shard's");
-  if (with_header) out << line << '\n';
   while (std::getline(in, line)) {
     std::size_t at = std::string::npos, from = 0;
     for (std::size_t k = 0; k < key_fields; ++k) {

@@ -17,6 +17,19 @@ Profile read(const std::string& name, ProfileKind kind, bool check = true) {
   o.check = check;
   return read_profile(kData + name, o);
 }
+// The Manchester pair (S1002 on UIC60 1:40, standard track), built once.
+const ContactGeometry& manchester() {
+  static const ContactGeometry G = build_geometry(read("MBench_S1002_v3.prw", ProfileKind::Wheel),
+                                                  read("MBench_UIC60_v3.prr", ProfileKind::Rail),
+                                                  TrackSetup{}, GeometryOptions{});
+  return G;
+}
+Material steel() {
+  Material m;
+  m.E = 210e9;
+  m.nu = 0.28;
+  return m;
+}
 }  // namespace
 
 TEST_CASE("hertz_validity: b against the smaller radius, by hand", "[solver][validity]") {
@@ -90,16 +103,12 @@ TEST_CASE("Manchester t_Y = 6.6 mm, Q = 100 kN: the 290 mm ellipse is flagged, n
 
 TEST_CASE("the edge gaps are taken along the patch, which is inclined by the contact angle", "[solver][validity]") {
   // The curvature samples are uniform in the profiles' lateral y, while the patch runs along the
-  // contact plane: its edge at in-plane distance b lies at y ± b cos γ. Manchester flange contact, t_Y = 7 mm, γ = 70°: the contact sits on the
-  // wheel's R13 arc with the straight 70° flange section 1 mm beyond in y; before the arc-length
+  // contact plane: its edge at in-plane distance b lies at y ± b cos γ. Manchester flange contact,
+  // t_Y = 7 mm, γ = 70°: the contact sits on the wheel's R13 arc with the straight 70° flange section 1 mm beyond in y; before the arc-length
   // mapping the test looked b = 0.94 mm out in y (2.9 b along the arc, onto the straight
   // section) and measured gap_error 0.43 on a patch that lies wholly on the arc.
-  const ContactGeometry G = build_geometry(read("MBench_S1002_v3.prw", ProfileKind::Wheel),
-                                           read("MBench_UIC60_v3.prr", ProfileKind::Rail),
-                                           TrackSetup{}, GeometryOptions{});
-  Material mat;
-  mat.E = 210e9;
-  mat.nu = 0.28;
+  const ContactGeometry& G = manchester();
+  const Material mat = steel();
   const CaseResult r = solve_case(G, mat, 7e-3, 50e3);
   REQUIRE(r.status == CaseStatus::Ok);
   REQUIRE(r.loaded.size() == 1);
@@ -117,12 +126,8 @@ TEST_CASE("the mean edge-gap error flags the patches where the multi-Hertzian an
   // junction of the wheel's R13 arc with its straight 70° flange, where the curvature sum drops on
   // one side) and within 7 % elsewhere. Measured gap_mean_error: 0.11–0.40 at those five, at most
   // 0.05 at the other twelve.
-  const ContactGeometry G = build_geometry(read("MBench_S1002_v3.prw", ProfileKind::Wheel),
-                                           read("MBench_UIC60_v3.prr", ProfileKind::Rail),
-                                           TrackSetup{}, GeometryOptions{});
-  Material mat;
-  mat.E = 210e9;
-  mat.nu = 0.28;
+  const ContactGeometry& G = manchester();
+  const Material mat = steel();
   for (int t = -6; t <= 10; ++t) {
     CAPTURE(t);
     const CaseResult r = solve_case(G, mat, t * 1e-3, 50e3);
