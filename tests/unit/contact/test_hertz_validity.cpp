@@ -6,30 +6,16 @@
 #include "contact/multi_hertz.hpp"
 #include "geometry/contact_geometry.hpp"
 #include "profile/read.hpp"
+#include "manchester_fixture.hpp"
 
 using namespace mh;
 
 namespace {
-const std::string kData = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/";
 Profile read(const std::string& name, ProfileKind kind, bool check = true) {
-  ProfileReadOptions o;
-  o.kind = kind;
-  o.check = check;
-  return read_profile(kData + name, o);
+  return testing::read_test_profile(name, kind, check);
 }
-// The Manchester pair (S1002 on UIC60 1:40, standard track), built once.
-const ContactGeometry& manchester() {
-  static const ContactGeometry G = build_geometry(read("MBench_S1002_v3.prw", ProfileKind::Wheel),
-                                                  read("MBench_UIC60_v3.prr", ProfileKind::Rail),
-                                                  TrackSetup{}, GeometryOptions{});
-  return G;
-}
-Material steel() {
-  Material m;
-  m.E = 210e9;
-  m.nu = 0.28;
-  return m;
-}
+const ContactGeometry& manchester() { return testing::manchester_geometry(); }
+using testing::steel;
 }  // namespace
 
 TEST_CASE("hertz_validity: b against the smaller radius, by hand", "[solver][validity]") {
