@@ -115,19 +115,6 @@ class HalfSpacePatch : public PatchSolver {
   NormalCGOptions cg_;
 };
 
-/// [m] the vertical approach at which p_lim [Pa] times the horizontal projection of the rigid
-/// interpenetration equals Q [N] (bisection to 1e-4 relative: a first estimate for the driver).
-double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim) {
-  constexpr double kStep = 0.02e-3;  // [m] as find_patch_regions samples g(y)
-  double lo = 0, hi = 0.05e-3;
-  while (p_lim * gap.projected_interpenetration_area(hi, kStep) < Q && hi < 0.1) { lo = hi; hi *= 2; }
-  while (hi - lo > 1e-4 * hi) {
-    const double mid = 0.5 * (lo + hi);
-    (p_lim * gap.projected_interpenetration_area(mid, kStep) < Q ? lo : hi) = mid;
-  }
-  return hi;
-}
-
 }  // namespace
 
 CaseResult solve_half_space(const ContactGeometry& G, const Material& mat, double tY, double Q,

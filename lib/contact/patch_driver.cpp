@@ -22,9 +22,22 @@ bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, d
     return false;
   }
   *dz_est = 0.05e-3;
-  const CaseResult mhr = solve_case(G, mat, tY, Q);
+  Material elastic = mat;
+  elastic.p_lim = INFINITY;
+  const CaseResult mhr = solve_case(G, elastic, tY, Q);
   if (mhr.status == CaseStatus::Ok && mhr.approach > 0 && std::isfinite(mhr.approach)) *dz_est = mhr.approach;
   return true;
+}
+
+double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim) {
+  constexpr double kStep = 0.02e-3;  // [m] as find_patch_regions samples g(y)
+  double lo = 0, hi = 0.05e-3;
+  while (p_lim * gap.projected_interpenetration_area(hi, kStep) < Q && hi < 0.1) { lo = hi; hi *= 2; }
+  while (hi - lo > 1e-4 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (p_lim * gap.projected_interpenetration_area(mid, kStep) < Q ? lo : hi) = mid;
+  }
+  return hi;
 }
 
 PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,

@@ -75,9 +75,17 @@ PatchDriverOptions patch_driver_options(const MethodOptions& o, int max_passes) 
 
 /// What every grid method does before solving a case: refuse Q ≤ 0 (`no_contact`) and a t_Y outside
 /// the geometry (`out_of_range`), with r's status and message set (returns false), else return
-/// true with *dz_est the first estimate of the vertical approach: the multi-Hertzian one (below a
-/// microsecond), or 0.05 mm when it has none.
+/// true with *dz_est the first estimate of the vertical approach: the elastic multi-Hertzian one
+/// (below a microsecond; elastic even in the plastic model, whose "approach", Thornton's δ of the
+/// grown ellipse, overestimates the capped approach 3–5 times in flange contact), or 0.05 mm when
+/// it has none.
 bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, double Q, CaseResult& r, double* dz_est);
+
+/// [m] the vertical approach at which p_lim [Pa] times the horizontal projection of the rigid
+/// interpenetration equals Q [N]: a lower bound of the capped approach (contact needs g + u ≤ δ
+/// with u ≥ 0, and the vertical force is at most p_lim times the projected contact area), found
+/// by bisection to 1e-4 relative.
+double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim);
 
 /// Solve for the load Q [N], starting from the approach estimate dz_est [m] (> 0).
 PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,

@@ -36,9 +36,9 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
   CaseResult sr = solve_strip_method(G, mat, tY, Q, opt.strips);
   sr.warnings.insert(sr.warnings.begin(), "auto:strips:" + reason);
   if (sr.status != CaseStatus::NotConverged) return sr;
-  // The strip method did not converge either (a load inside a jump of N(δ), or a strongly
-  // capped plastic flange patch whose strips spread without settling): the exact half-space
-  // method, slower but robust, solves the case; the warning says both steps.
+  // The strip method did not converge either (e.g. a load inside a jump of its N(δ),
+  // docs/strips.md): the exact half-space method, slower but robust, solves the case; the
+  // warnings say both steps.
   CaseResult hr = solve_half_space(G, mat, tY, Q, opt.half_space);
   if (hr.status != CaseStatus::Ok) return sr;
   hr.warnings.insert(hr.warnings.begin(), "auto:half-space:strips not converged");

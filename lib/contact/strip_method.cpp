@@ -85,6 +85,9 @@ CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, dou
   double dz_est = 0;
   if (!begin_grid_case(G, mat, tY, Q, r, &dz_est)) return r;
   const WheelRailGap gap(G, tY);
+  // Plastic model: the capped approach is at least the elastic one and at least the rigid–
+  // perfectly-plastic one (as for the half-space method).
+  if (std::isfinite(mat.p_lim)) dz_est = std::max(dz_est, rigid_plastic_approach(gap, Q, mat.p_lim));
   const double H = mat.compliance(), p_lim = mat.p_lim;
   const PatchDriverOptions dopt = patch_driver_options(opt, opt.max_passes);
   PatchDriverResult D = drive_patches(gap, Q, dz_est, dopt, [&](const PatchRegion& reg, double dz_ref, std::string*) {

@@ -17,7 +17,7 @@ struct StripMethodOptions {
   double ref_rtol = 0.02;      ///< planes re-placed when the approach moved by more than this
   double force_rtol = 1e-7;    ///< vertical force balance across patches
   int max_outer = 60;
-  int max_passes = 7;
+  int max_passes = 12;         ///< placements of the patches (default 12: a strongly capped flange patch, Manchester t_Y = 8.5 mm, 100 kN, p_lim 900 MPa, needs 8; each costs about a millisecond)
   double x_curvature_step = 1e-3;  ///< [m] x of the second point of the gap's parabola along x (default 1 mm)
   StripOptions strips;         ///< the per-patch solver (quadrature, tolerances, outlier factor)
   bool keep_strips = false;    ///< keep every strip in PatchResult::strips (for --strips)

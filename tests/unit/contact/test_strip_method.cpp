@@ -210,18 +210,32 @@ TEST_CASE("a strip case that does not converge keeps its closest iterate", "[str
   CHECK(r.area > 0);
 }
 
-TEST_CASE("auto in the plastic model: a strongly capped flange contact ends ok", "[strips][auto]") {
-  // Manchester pair, Q = 100 kN, p_lim = 900 MPa (cases/manchester-plastic.json), t_Y = 7 mm: the
-  // plastic flange patch fails the Hertz validity test; the strip method's capped strips spread
-  // without settling there (docs/strips.md, Limits), so auto ends with the half-space method.
+TEST_CASE("strips in the plastic model: strongly capped flange contacts settle", "[strips]") {
+  // Manchester pair, Q = 100 kN, p_lim = 900 MPa (cases/manchester-plastic.json), t_Y = 7 and
+  // 8.5 mm: the strip method used to start from the multi-Hertzian plastic approach (2.7 mm at
+  // 7 mm), placed its plane across the whole profile and never settled. Against the plastic
+  // half-space solution (measured: area +12.0 % and +2.0 %): ok, the load carried, the cap held,
+  // the total area within 15 % (issue 12's two-region tolerance).
   const mh::CaseFile cf = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/manchester-plastic.json", true);
   const mh::PairGeometry pg = mh::build_pair_geometry(cf);
   mh::MethodOptions mo = cf.method_options();
-  mo.method = mh::Method::Auto;
-  const mh::CaseResult r = mh::solve_method(pg.geo, cf.material, 7e-3, 100e3, mo);
-  INFO(r.message);
-  REQUIRE(r.status == mh::CaseStatus::Ok);
-  CHECK(r.method != mh::Method::MultiHertzian);
-  CHECK(r.Fz == Approx(100e3).epsilon(1e-4));
-  CHECK(r.pmax <= cf.material.p_lim * (1 + 1e-9));
+  for (double tY : {7e-3, 8.5e-3}) {
+    CAPTURE(tY);
+    mo.method = mh::Method::Strips;
+    const mh::CaseResult r = mh::solve_method(pg.geo, cf.material, tY, 100e3, mo);
+    INFO(r.message);
+    REQUIRE(r.status == mh::CaseStatus::Ok);
+    CHECK(r.Fz == Approx(100e3).epsilon(1e-4));
+    CHECK(r.pmax <= cf.material.p_lim * (1 + 1e-9));
+    mo.method = mh::Method::HalfSpace;
+    const mh::CaseResult h = mh::solve_method(pg.geo, cf.material, tY, 100e3, mo);
+    REQUIRE(h.status == mh::CaseStatus::Ok);
+    CHECK(r.area == Approx(h.area).epsilon(0.15));
+    // auto hands the plastic flange patch at 7 mm (it fails the Hertz validity test) to the strip
+    // method; at 8.5 mm the multi-Hertzian ellipse passes it and is kept.
+    mo.method = mh::Method::Auto;
+    const mh::CaseResult a = mh::solve_method(pg.geo, cf.material, tY, 100e3, mo);
+    CHECK(a.status == mh::CaseStatus::Ok);
+    CHECK(a.method == (tY < 8e-3 ? mh::Method::Strips : mh::Method::MultiHertzian));
+  }
 }
