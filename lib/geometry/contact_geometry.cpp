@@ -128,7 +128,7 @@ void ContactGeometry::candidates_at(double t, CandidateGeom* out, int* main) con
   // just before a jump, so interpolating across the interval would make the load sharing depend
   // on the grid step. There the candidates are evaluated at t itself from the profiles (cached
   // per thread for the cases that share a t_Y).
-  if (f > 0 && k1 > k) {
+  if (f > 0 && k1 > k && wheel_curve && rail_curve && !strip_y.empty()) {
     const auto j = std::upper_bound(jumps.begin(), jumps.end(), tY[k]);
     if (j != jumps.end() && *j < tY[k1]) {
       struct Cache { std::uint64_t id = 0; bool ok = false; double t = 0; int main = 0; std::vector<CandidateGeom> c; };
