@@ -46,6 +46,10 @@ grep -q '^0,-3,50,ok,multi-hertzian,' "$tmp/auto/cases.csv"
 test "$(cut -d, -f1 "$tmp/auto/patches.csv" | sort -u | grep -c '^[0-9]')" -eq 2
 test "$(cut -d, -f1 "$tmp/auto/ellipses.csv" | sort -u | grep -c '^[0-9]')" -eq 1
 test "$(wc -l < "$tmp/auto/strips.csv")" -gt 10
+# The same bytes for any thread count (auto mixes the multi-Hertzian and strip methods per case).
+"$bin" run "$tmp/auto.json" -o "$tmp/auto1" -q --strips --threads 1
+"$bin" run "$tmp/auto.json" -o "$tmp/auto2" -q --strips --threads 2
+for f in cases.csv ellipses.csv geometry.csv patches.csv strips.csv results.json; do cmp "$tmp/auto1/$f" "$tmp/auto2/$f"; done
 sed 's|"method": "half-space"|"method": "bogus"|' "$tmp/hs.json" > "$tmp/bogus.json"
 set +e
 "$bin" run "$tmp/bogus.json" -o "$tmp/x" 2> "$tmp/err"; rc=$?
