@@ -145,7 +145,9 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
       // ellipses, as `mhcontact geometry` writes them for one pair.
       write_pair_geometry(cf, *pg, rd, "pairs/" + std::to_string(k) + "/", opt.out_dir);
       Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fpa ? &fpa->stream() : nullptr,
-                  fp ? &fp->stream() : nullptr, nullptr, pw.get(), prefix};
+                  fp ? &fp->stream() : nullptr, nullptr, pw.get(), prefix, "results.json", {}};
+      for (OutputFile* f : {fc.get(), fe.get(), fpa.get(), fp.get(), fj.get()})
+        if (f) sinks.files.push_back(f);
       solve_cases(cf, pg->geo, 0, n, quiet_opt, sinks, &counts, err);
     } else {
       ++invalid;

@@ -232,7 +232,9 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   }
   Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fpa ? &fpa->stream() : nullptr,
               fp ? &fp->stream() : nullptr, fs ? &fs->stream() : nullptr, jw.get(), "",
-              to_stdout ? "standard output" : "results.json"};
+              to_stdout ? "standard output" : "results.json", {}};
+  for (OutputFile* f : {fc.get(), fe.get(), fpa.get(), fp.get(), fs.get(), fj.get()})
+    if (f) sinks.files.push_back(f);
   solve_cases(cf, G, first, end, opt, sinks, &counts, err);
   const auto& by_status = counts.by_status;
   const std::uint64_t failed = counts.failed;

@@ -287,6 +287,7 @@ class Writer {
       if (out.strips) out.strips->write(b.strips.data(), static_cast<std::streamsize>(b.strips.size()));
       if (out.json) for (const auto& j : b.json) out.json->element(j);
     }
+    for (OutputFile* f : out.files) f->start_writeback();
     return !((out.cases && !*out.cases) || (out.ellipses && !*out.ellipses) || (out.patches && !*out.patches) ||
              (out.pressure && !*out.pressure) ||
              (out.strips && !*out.strips) || (out.json && !out.json->good()));

@@ -8,10 +8,12 @@
 #include <ostream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "geometry/contact_geometry.hpp"
 #include "input/case_file.hpp"
 #include "output/json_stream.hpp"
+#include "output/output_file.hpp"
 
 namespace mh {
 
@@ -81,6 +83,9 @@ struct Sinks {
   JsonObjectStream* json = nullptr;  ///< with its case array open
   std::string prefix;
   std::string json_where = "results.json";  ///< names the JSON sink in a write error
+  /// The files behind the sinks: each chunk, once written, is started on its way to the disk
+  /// (OutputFile::start_writeback), so the final fsync does not flush the whole run serially.
+  std::vector<OutputFile*> files;
 };
 
 /// Counts of a sweep by status.

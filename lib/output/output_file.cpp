@@ -98,11 +98,14 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
   const mode_t mask = ::umask(0);
   ::umask(mask);
   ::fchmod(fd, 0666 & ~mask);
-  ::close(fd);
+  fd_ = fd;
   tmp_.assign(buf.data());
   slot_ = register_pending(tmp_, false);
-  out_.open(tmp_, std::ios::binary | std::ios::trunc);
+  // in|out: open the empty temporary without truncating it. (A truncating open of an existing
+  // file makes ext4 flush the whole file when it is closed: a serial stall of ~0.1 s per 200 MB.)
+  out_.open(tmp_, std::ios::binary | std::ios::in | std::ios::out);
   if (!out_) {
+    ::close(fd_);
     ::unlink(tmp_.c_str());
     unregister_pending(slot_);
     throw OutputError(path_, "output file cannot be written");
@@ -114,7 +117,21 @@ OutputFile::~OutputFile() {
     out_.close();
     ::unlink(tmp_.c_str());
   }
+  if (fd_ >= 0) ::close(fd_);
   unregister_pending(slot_);
+}
+
+void OutputFile::start_writeback() {
+#ifdef SYNC_FILE_RANGE_WRITE
+  constexpr long long kMinBytes = 8LL << 20;
+  if (fd_ < 0 || !out_) return;
+  out_.flush();
+  const std::streamoff end = out_.tellp();
+  if (end < 0 || end - written_back_ < kMinBytes) return;
+  // Asynchronous: it only queues the pages for writing; errors surface at commit()'s fsync.
+  ::sync_file_range(fd_, written_back_, end - written_back_, SYNC_FILE_RANGE_WRITE);
+  written_back_ = end;
+#endif
 }
 
 void OutputFile::commit() {
@@ -122,11 +139,11 @@ void OutputFile::commit() {
   if (!out_) throw OutputError(path_, "writing the output file failed", "disk full?");
   out_.close();
   if (out_.fail()) throw OutputError(path_, "writing the output file failed", "disk full?");
-  int fd = ::open(tmp_.c_str(), O_RDONLY);
-  if (fd >= 0) {
-    const int rc = ::fsync(fd);
+  if (fd_ >= 0) {
+    const int rc = ::fsync(fd_);
     const int e = errno;
-    ::close(fd);
+    ::close(fd_);
+    fd_ = -1;
     if (rc != 0 && e != EINVAL && e != EROFS)
       throw OutputError(path_, std::string("writing the output file failed: ") + std::strerror(e));
   }
