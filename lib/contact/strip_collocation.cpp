@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include "core/units.hpp"
 
@@ -29,10 +30,78 @@ double Phi(double r) {
   return r * std::sqrt(1.0 - r * r) + std::asin(r);
 }
 
+/// The amplitudes q >= 0 of the strips E with K q = rhs where q > 0 and K q >= rhs where q = 0
+/// (no strip penetrated; a linear complementarity problem), by an active set: solve on the
+/// active strips, drop those with q < 0; once none is negative, add back every inactive strip
+/// that is penetrated (K q < rhs - tol); repeat until neither happens. `in_act` holds the
+/// starting set (a warm start) and returns the final one. K is factorised once: with R the
+/// inactive strips, q = K⁻¹(z + E_R mu), z = rhs with z_R = 0, and mu from q_R = 0,
+/// (K⁻¹)_RR mu = −(K⁻¹ z)_R: a |R|×|R| system and one back-substitution per strip of R (the
+/// capacitance matrix method); (K q)_R = mu is the displacement the add-back test needs.
+/// A large R (over a third of E) is solved directly on the active strips instead.
+bool solve_active_set(const Eigen::MatrixXd& K, const Eigen::VectorXd& rhs, double tol, int max_iter,
+                      std::vector<char>& in_act, Eigen::VectorXd& q) {
+  const int e = static_cast<int>(K.rows());
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(K);
+  std::vector<Eigen::VectorXd> col(static_cast<std::size_t>(e));  // K⁻¹ e_r, when r is first inactive
+  std::vector<int> R, A;
+  Eigen::VectorXd KqR;
+  for (int it = 0; it < max_iter; ++it) {
+    R.clear();
+    A.clear();
+    for (int r = 0; r < e; ++r) (in_act[r] ? A : R).push_back(r);
+    const int nR = static_cast<int>(R.size()), nA = static_cast<int>(A.size());
+    if (nR == 0) {
+      q = lu.solve(rhs);
+    } else if (3 * nR <= e) {
+      Eigen::VectorXd z = rhs;
+      for (int r : R) z(r) = 0.0;
+      const Eigen::VectorXd w = lu.solve(z);
+      Eigen::MatrixXd C(nR, nR);
+      Eigen::VectorXd wR(nR);
+      for (int b = 0; b < nR; ++b) {
+        Eigen::VectorXd& x = col[static_cast<std::size_t>(R[b])];
+        if (x.size() == 0) x = lu.solve(Eigen::VectorXd::Unit(e, R[b]));
+        for (int a = 0; a < nR; ++a) C(a, b) = x(R[a]);
+        wR(b) = w(R[b]);
+      }
+      KqR = -C.partialPivLu().solve(wR);
+      q = w;
+      for (int b = 0; b < nR; ++b) q += col[static_cast<std::size_t>(R[b])] * KqR(b);
+      for (int r : R) q(r) = 0.0;
+    } else {
+      q.setZero(e);
+      if (nA > 0) {
+        Eigen::MatrixXd Kaa(nA, nA);
+        Eigen::VectorXd ra(nA);
+        for (int c = 0; c < nA; ++c) {
+          for (int r = 0; r < nA; ++r) Kaa(r, c) = K(A[r], A[c]);
+          ra(c) = rhs(A[c]);
+        }
+        const Eigen::VectorXd qa = Kaa.partialPivLu().solve(ra);
+        for (int c = 0; c < nA; ++c) q(A[c]) = qa(c);
+      }
+      KqR.setZero(nR);
+      for (int a = 0; a < nR; ++a)
+        for (int c = 0; c < nA; ++c) KqR(a) += K(R[a], A[c]) * q(A[c]);
+    }
+    bool dropped = false;
+    for (int r : A)
+      if (q(r) < 0.0) { in_act[r] = 0; q(r) = 0.0; dropped = true; }
+    if (dropped) continue;
+    bool added = false;
+    for (int a = 0; a < nR; ++a)
+      if (KqR(a) < rhs(R[a]) - tol) { in_act[R[a]] = 1; added = true; }
+    if (!added) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 Solver::Solver(const StripGeometry& g, double Hc, const StripOptions& o) : StripExtents(g), H(Hc), opt(o) {
   gauss_legendre(opt.gauss_points / 2, &gx, &gw);
+  for (double x : geo.xc) same_xc = same_xc && x == geo.xc.front();
 }
 
 double Solver::K_elastic(int i, int j, double aj) const {
@@ -44,7 +113,7 @@ double Solver::K_elastic(int i, int j, double aj) const {
 }
 
 /// Solve at fixed approach.
-StripResult Solver::evaluate(double delta, double p_lim) const {
+StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>* warm) const {
   StripResult res;
   res.delta = delta;
   if (!(delta > gmin)) {
@@ -68,9 +137,26 @@ StripResult Solver::evaluate(double delta, double p_lim) const {
   }
   // Elastic influence matrix among candidates (unit amplitude).
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(m, m);
-  for (int jj = 0; jj < m; ++jj)
-    for (int ii = 0; ii < m; ++ii)
-      if (opt.coupling || ii == jj) K(ii, jj) = K_elastic(cand[ii], cand[jj], a[cand[jj]]);
+  std::vector<double> h;
+  for (int jj = 0; jj < m; ++jj) {
+    const int j = cand[jj];
+    const double aj = a[j];
+    if (same_xc && opt.coupling) {
+      // K_ij = H a_j [g((j − i + ½) ds / a_j) − g((j − i − ½) ds / a_j)] (strip_kernel.hpp) with
+      // g odd: with h_k = g((k + ½) ds / a_j), K_ij = H a_j (h_d − h_{d−1}), d = |i − j| ≥ 1, and
+      // 2 H a_j h_0 on the diagonal. One kernel lookup per distance instead of two per entry.
+      const int dmax = std::max(j - cand.front(), cand.back() - j);
+      h.resize(static_cast<std::size_t>(dmax) + 1);
+      for (int k = 0; k <= dmax; ++k) h[k] = strip_kernel_g((k + 0.5) * geo.ds / aj);
+      for (int ii = 0; ii < m; ++ii) {
+        const int d = std::abs(cand[ii] - j);
+        K(ii, jj) = H * aj * (d == 0 ? 2.0 * h[0] : h[d] - h[d - 1]);
+      }
+    } else {
+      for (int ii = 0; ii < m; ++ii)
+        if (opt.coupling || ii == jj) K(ii, jj) = K_elastic(cand[ii], j, aj);
+    }
+  }
 
   // Plastic bookkeeping. A capped strip keeps the ELASTIC amplitude q_j at
   // which it was capped and is lengthened to a'_j = a_j (pi/2)/Phi(r_j),
@@ -82,38 +168,50 @@ StripResult Solver::evaluate(double delta, double p_lim) const {
   Eigen::MatrixXd Ucap = Eigen::MatrixXd::Zero(m, m);  // column j: displacement from capped strip j
   for (int ii = 0; ii < m; ++ii) aeff[ii] = a[cand[ii]];
 
+  // The starting active set: the strips of a previous solve that are still candidates (warm
+  // start: along an approach iteration the set changes by a few strips), else every candidate.
+  std::vector<char> start(m, 1);
+  if (warm && !warm->empty()) {
+    std::fill(start.begin(), start.end(), 0);
+    int found = 0;
+    for (int ii = 0, w = 0; ii < m; ++ii) {
+      while (w < static_cast<int>(warm->size()) && (*warm)[w] < cand[ii]) ++w;
+      if (w < static_cast<int>(warm->size()) && (*warm)[w] == cand[ii]) { start[ii] = 1; ++found; }
+    }
+    if (found == 0) std::fill(start.begin(), start.end(), 1);
+  }
+
   bool settled = false;
   bool as_ok = true;
+  std::vector<int> act, E;
   for (int pass = 0; pass < opt.max_active_set && !settled; ++pass) {
-    std::vector<int> act;
+    // The elastic strips E of this pass (each plastic pass drops the newly capped ones) and
+    // their equations K_EE q_E = delta - g - u_cap, solved for q >= 0 from the previous pass's
+    // active set.
+    E.clear();
     for (int ii = 0; ii < m; ++ii)
-      if (!capped[ii]) act.push_back(ii);
+      if (!capped[ii]) E.push_back(ii);
+    const int e = static_cast<int>(E.size());
     Eigen::VectorXd ucap = Eigen::VectorXd::Zero(m);
     for (int jj = 0; jj < m; ++jj)
       if (capped[jj]) ucap += Ucap.col(jj);
-    // Active set for q >= 0 among elastic strips.
-    as_ok = false;
-    for (int it = 0; it < opt.max_active_set; ++it) {
-      const int k = static_cast<int>(act.size());
-      if (k == 0) { as_ok = true; break; }
-      Eigen::MatrixXd Kaa(k, k);
-      Eigen::VectorXd rhs(k);
-      for (int r = 0; r < k; ++r) {
-        rhs(r) = delta - geo.g[cand[act[r]]] - ucap(act[r]);
-        for (int c = 0; c < k; ++c) Kaa(r, c) = K(act[r], act[c]);
-      }
-      const Eigen::VectorXd sol = Kaa.partialPivLu().solve(rhs);
-      std::vector<int> keep;
-      for (int r = 0; r < k; ++r) {
-        q[act[r]] = sol(r);
-        if (sol(r) >= 0.0) keep.push_back(act[r]);
-      }
-      for (int ii = 0; ii < m; ++ii)
-        if (!capped[ii] && std::find(keep.begin(), keep.end(), ii) == keep.end()) q[ii] = 0.0;
-      if (keep.size() == act.size()) { as_ok = true; break; }
-      act.swap(keep);
+    Eigen::MatrixXd KE(e, e);
+    Eigen::VectorXd rhs(e), qE = Eigen::VectorXd::Zero(e);
+    std::vector<char> in_act(e);
+    for (int c = 0; c < e; ++c) {
+      for (int r = 0; r < e; ++r) KE(r, c) = K(E[r], E[c]);
+      rhs(c) = delta - geo.g[cand[E[c]]] - ucap(E[c]);
+      in_act[c] = start[E[c]];
     }
+    as_ok = e == 0 || solve_active_set(KE, rhs, 1e-9 * (delta - gmin), opt.max_active_set, in_act, qE);
     if (!as_ok) break;
+    act.clear();
+    for (int c = 0; c < e; ++c) {
+      q[E[c]] = qE(c);
+      if (in_act[c]) act.push_back(E[c]);
+    }
+    std::fill(start.begin(), start.end(), 0);
+    for (int ii : act) start[ii] = 1;
     // Newly capped strips.
     bool any = false;
     if (std::isfinite(p_lim)) {

@@ -22,14 +22,18 @@ struct Solver : StripExtents {
   double H;
   StripOptions opt;
   std::vector<double> gx, gw;     // Gauss nodes per sub-interval
+  bool same_xc = true;            // every row's minimum at one x: K_ij depends on |i − j| and a_j only
 
   Solver(const StripGeometry& g, double Hc, const StripOptions& o);
 
   /// Influence coefficient K_ij of an uncapped strip j of half-length aj at the centre of strip i.
   double K_elastic(int i, int j, double aj) const;
 
-  /// Solve at fixed approach.
-  StripResult evaluate(double delta, double p_lim) const;
+  /// Solve at fixed approach. `warm`: the strips (geometry indices, increasing) that carried
+  /// load in a previous solve of this geometry, as the starting active set; null or empty: every
+  /// strip with a positive extent.
+  StripResult evaluate(double delta, double p_lim, const std::vector<int>* warm = nullptr) const;
+
 };
 
 }  // namespace strips_detail

@@ -49,14 +49,33 @@ class StripPatch : public PatchSolver {
     }
   }
   double at_approach(double delta) override {
-    last = solve_strips_approach(geo, H_, delta, p_lim_, opt_);
+    last = solver().at_approach(delta, &warm_);
+    warm_ = loaded_strips(last);
     evaluations += 1 + last.iterations;
     return last.status == StripStatus::Ok ? last.N : 0.0;
   }
   double at_load(double N) override {
-    last = solve_strips_load(geo, H_, N, p_lim_, opt_);
+    last = solver().at_load(N, &warm_, delta_start_);
+    warm_ = loaded_strips(last);
     evaluations += 1 + last.iterations;
     return last.delta;
+  }
+  /// The loaded strips of the same patch at the previous placement, mapped by rail y onto this
+  /// plane's strips: the first active set (strips.hpp: the cost changes, not the answer).
+  void warm_start_from(const PatchSolver& previous) override {
+    const auto* o = dynamic_cast<const StripPatch*>(&previous);
+    if (!o) return;
+    // The same interpenetration depth below the deepest row as the previous placement's answer.
+    if (o->last.status == StripStatus::Ok)
+      delta_start_ = o->last.delta - *std::min_element(o->geo.g.begin(), o->geo.g.end()) +
+                     *std::min_element(geo.g.begin(), geo.g.end());
+    warm_.clear();
+    const double c = std::cos(P.gamma), n = static_cast<double>(geo.s.size());
+    for (const StripState& st : o->last.strips) {
+      const double y = o->P.y_ref + st.s * std::cos(o->P.gamma);
+      const double j = std::round(((y - P.y_ref) / c - geo.s.front()) / geo.ds);
+      if (j >= 0 && j < n && (warm_.empty() || warm_.back() < static_cast<int>(j))) warm_.push_back(static_cast<int>(j));
+    }
   }
   bool failed() const override { return last.status == StripStatus::NotConverged || last.status == StripStatus::InvalidInput; }
   std::string why() const override { return "strip solver: " + last.message; }
@@ -74,6 +93,13 @@ class StripPatch : public PatchSolver {
  private:
   double H_, p_lim_;
   StripOptions opt_;
+  std::vector<int> warm_;  ///< the strips that carried load in this patch's last solve
+  double delta_start_ = NAN;  ///< the first approach of load control (from the previous placement)
+  std::unique_ptr<StripSolver> solver_;
+  const StripSolver& solver() {
+    if (!solver_) solver_ = std::make_unique<StripSolver>(geo, H_, p_lim_, opt_);
+    return *solver_;
+  }
 };
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include "core/units.hpp"
 
@@ -70,6 +71,13 @@ bool check_input(const StripGeometry& geo, double H, double p_lim, const StripOp
 
 }  // namespace
 
+std::vector<int> loaded_strips(const StripResult& r) {
+  std::vector<int> v;
+  v.reserve(r.strips.size());
+  for (const StripState& st : r.strips) v.push_back(st.index);
+  return v;
+}
+
 bool StripOptions::valid(std::string* why) const {
   std::ostringstream os;
   if (gauss_points < 2 || gauss_points % 2 != 0) {
@@ -89,29 +97,43 @@ bool StripOptions::valid(std::string* why) const {
   return false;
 }
 
-StripResult solve_strips_approach(const StripGeometry& geo, double H, double delta, double p_lim,
-                                  const StripOptions& opt) {
-  std::string why;
-  if (!check_input(geo, H, p_lim, opt, &why) || !std::isfinite(delta)) {
+StripSolver::StripSolver(const StripGeometry& geo, double H, double p_lim, const StripOptions& opt) : p_lim_(p_lim) {
+  if (check_input(geo, H, p_lim, opt, &why_)) s_ = std::make_unique<Solver>(geo, H, opt);
+}
+
+StripSolver::~StripSolver() = default;
+
+StripResult StripSolver::at_approach(double delta, const std::vector<int>* warm) const {
+  if (!s_ || !std::isfinite(delta)) {
     StripResult r;
     r.status = StripStatus::InvalidInput;
-    r.message = why.empty() ? "delta must be finite" : why;
+    r.message = !s_ ? why_ : "delta must be finite";
     return r;
   }
-  Solver S(geo, H, opt);
-  return S.evaluate(delta, p_lim);
+  return s_->evaluate(delta, p_lim_, warm);
+}
+
+StripResult solve_strips_approach(const StripGeometry& geo, double H, double delta, double p_lim,
+                                  const StripOptions& opt, const std::vector<int>* warm) {
+  return StripSolver(geo, H, p_lim, opt).at_approach(delta, warm);
 }
 
 StripResult solve_strips_load(const StripGeometry& geo, double H, double Nt, double p_lim,
-                              const StripOptions& opt) {
-  std::string why;
-  if (!check_input(geo, H, p_lim, opt, &why) || !(Nt > 0.0) || !std::isfinite(Nt)) {
+                              const StripOptions& opt, const std::vector<int>* warm) {
+  return StripSolver(geo, H, p_lim, opt).at_load(Nt, warm);
+}
+
+StripResult StripSolver::at_load(double Nt, const std::vector<int>* warm_start, double delta_start) const {
+  if (!s_ || !(Nt > 0.0) || !std::isfinite(Nt)) {
     StripResult r;
     r.status = StripStatus::InvalidInput;
-    r.message = why.empty() ? "N must be positive and finite" : why;
+    r.message = !s_ ? why_ : "N must be positive and finite";
     return r;
   }
-  Solver S(geo, H, opt);
+  const Solver& S = *s_;
+  const StripGeometry& geo = S.geo;
+  const double H = S.H, p_lim = p_lim_;
+  const StripOptions& opt = S.opt;
   // Start: Hertz with the equivalent sphere at the deepest row (Johnson §4.2,
   // R_e = 1/(2 sqrt(A B)), E* = 1/(pi H)): delta = (9 N^2 / (16 R_e E*^2))^(1/3).
   const int i0 = S.imin;
@@ -119,6 +141,7 @@ StripResult solve_strips_load(const StripGeometry& geo, double H, double Nt, dou
   const double Re = 1.0 / (2.0 * std::sqrt(geo.A[i0] * B0));
   const double Es = 1.0 / (kPi * H);
   double d = S.gmin + std::cbrt(9.0 * Nt * Nt / (16.0 * Re * Es * Es));
+  if (delta_start > S.gmin && std::isfinite(delta_start)) d = delta_start;
 
   // Safeguarded secant on psi(delta) = N^(2/3) - Nt^(2/3), nearly linear in
   // delta for Hertz-like patches (N ~ (delta - gmin)^(3/2)). The bracket
@@ -128,8 +151,11 @@ StripResult solve_strips_load(const StripGeometry& geo, double H, double Nt, dou
   double d_prev = S.gmin, psi_prev = -psi_t;
   StripResult best;
   best.status = StripStatus::NotConverged;
+  std::vector<int> warm;  // each approach starts its active set from the previous one's
+  if (warm_start) warm = *warm_start;
   for (int it = 1; it <= opt.max_iterations; ++it) {
-    StripResult r = S.evaluate(d, p_lim);
+    StripResult r = S.evaluate(d, p_lim, &warm);
+    warm = loaded_strips(r);
     r.iterations = it;
     const double N = (r.status == StripStatus::Ok || r.status == StripStatus::NotConverged) ? r.N : 0.0;
     if (r.status == StripStatus::NotConverged) {

@@ -20,6 +20,8 @@
 // result carries a status.
 #pragma once
 
+#include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -93,12 +95,43 @@ struct StripResult {
   std::vector<StripState> strips;  ///< loaded strips only, in increasing s
 };
 
-/// Approach given.
+/// Approach given. `warm`: geometry indices (increasing) of the strips expected to carry load,
+/// e.g. those of a solve at a nearby approach, as the starting active set. The active set
+/// method ends where no strip has q < 0 and no unloaded strip is penetrated, whatever it
+/// started from: a warm start changes the cost (fewer factorisations), not the answer. Null or
+/// empty: every strip with a positive extent.
 StripResult solve_strips_approach(const StripGeometry& geo, double H, double delta, double p_lim,
-                                  const StripOptions& opt = {});
-/// Load given.
+                                  const StripOptions& opt = {}, const std::vector<int>* warm = nullptr);
+/// Load given. `warm`: as for solve_strips_approach, for the first approach; each later one
+/// starts from the strips of the one before.
 StripResult solve_strips_load(const StripGeometry& geo, double H, double N, double p_lim,
-                              const StripOptions& opt = {});
+                              const StripOptions& opt = {}, const std::vector<int>* warm = nullptr);
+
+namespace strips_detail { struct Solver; }
+
+/// A strip solver bound to one geometry, H and p_lim: the input is checked once and what
+/// depends on the geometry only (the ANALYN shape per strip, the deepest row) computed once, for
+/// the many solves of one patch; solve_strips_approach and solve_strips_load are this for one
+/// call. `geo` must outlive the solver. Invalid input: every solve returns InvalidInput.
+class StripSolver {
+ public:
+  StripSolver(const StripGeometry& geo, double H, double p_lim, const StripOptions& opt = {});
+  ~StripSolver();
+  StripSolver(const StripSolver&) = delete;
+  StripSolver& operator=(const StripSolver&) = delete;
+  StripResult at_approach(double delta, const std::vector<int>* warm = nullptr) const;
+  /// `delta_start`: the first approach tried (e.g. a previous solve's), if above the minimum gap;
+  /// else the Hertz approach of the deepest row.
+  StripResult at_load(double N, const std::vector<int>* warm = nullptr, double delta_start = NAN) const;
+
+ private:
+  std::unique_ptr<strips_detail::Solver> s_;  ///< null: invalid input (why_)
+  std::string why_;
+  double p_lim_;
+};
+
+/// The geometry indices of a result's loaded strips (increasing): a warm start's active set.
+std::vector<int> loaded_strips(const StripResult& r);
 
 namespace strips_detail {
 /// Integral over one strip of f(t)/r, f(t) = min(sqrt(1 - t^2), r_cap),

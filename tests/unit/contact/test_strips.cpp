@@ -377,6 +377,40 @@ TEST_CASE("two bands: both carry load and coupling matters", "[strips]") {
   }
 }
 
+TEST_CASE("active set: the answer does not depend on the starting set", "[strips]") {
+  // The amplitudes solve a linear complementarity problem (q >= 0, no unloaded strip
+  // penetrated), whose solution is unique: a warm start changes the cost, not the answer.
+  // Reference: the cold start (every strip with a positive extent). A start from a single strip
+  // fails this unless strips are added back, a start from every strip unless they are dropped.
+  const double ds = 0.25e-3;
+  const auto geo = two_wells(7e-3, 1e-5, 25.0, ds, -8e-3, 10e-3);
+  const double delta = 7e-5;
+  const int n = static_cast<int>(geo.s.size());
+  for (const double p_lim : {static_cast<double>(INFINITY), 1.2e9}) {
+    const auto cold = mh::solve_strips_approach(geo, kH, delta, p_lim);
+    REQUIRE(cold.status == mh::StripStatus::Ok);
+    std::vector<int> cold_set = mh::loaded_strips(cold);
+    std::vector<int> every(n), one{n / 3}, band1;
+    for (int i = 0; i < n; ++i) every[i] = i;
+    for (int i : cold_set)
+      if (geo.s[i] > 3.5e-3) band1.push_back(i);
+    for (const std::vector<int>* warm : {&every, &one, &band1, &cold_set}) {
+      const auto r = mh::solve_strips_approach(geo, kH, delta, p_lim, {}, warm);
+      REQUIRE(r.status == mh::StripStatus::Ok);
+      CHECK(mh::loaded_strips(r) == cold_set);
+      CHECK(r.N == Approx(cold.N).epsilon(1e-9));
+      CHECK(r.pmax == Approx(cold.pmax).epsilon(1e-9));
+    }
+    // Load control from a start far from the answer reaches the same load.
+    const mh::StripSolver S(geo, kH, p_lim);
+    const auto a = S.at_load(cold.N), b = S.at_load(cold.N, &one, 1.5 * delta);
+    REQUIRE(a.status == mh::StripStatus::Ok);
+    REQUIRE(b.status == mh::StripStatus::Ok);
+    CHECK(b.delta == Approx(a.delta).epsilon(1e-7));
+    CHECK(b.delta == Approx(delta).epsilon(1e-6));
+  }
+}
+
 TEST_CASE("outlier flag", "[strips]") {
   const double R = 0.3, N = 50e3;
   const HertzRef h = hertz_ref(1.0 / (2.0 * R), 1.0 / (2.0 * R), N, kEstar);
