@@ -22,6 +22,8 @@ namespace strips_detail {
 namespace {
 
 constexpr double kPi = units::pi;
+constexpr int kMaxWiden = 12;         // widening passes per approach (docs/method.md §9 item 7; 7 at most measured on the Manchester sweeps)
+constexpr double kWidenRtol = 1e-6;   // a strip is widened when it gains more than this (relative)
 
 /// Phi(r) = r sqrt(1 - r^2) + asin r: load of a capped semi-ellipse
 /// min(q sqrt(1-t^2), r q) over t in [-1, 1] is q a Phi(r); Phi(1) = pi/2.
@@ -97,6 +99,30 @@ bool solve_active_set(const Eigen::MatrixXd& K, const Eigen::VectorXd& rhs, doub
   return false;
 }
 
+/// Column jj of the elastic influence matrix among the strips `cand` (unit amplitude), strip
+/// cand[jj] of half-length aj; zero for aj = 0 (a strip without extent carries no load).
+void elastic_column(const Solver& S, const std::vector<int>& cand, int jj, double aj, Eigen::MatrixXd& K) {
+  const int m = static_cast<int>(cand.size()), j = cand[jj];
+  K.col(jj).setZero();
+  if (!(aj > 0.0)) return;
+  if (S.same_xc && S.opt.coupling) {
+    // K_ij = H a_j [g((j − i + ½) ds / a_j) − g((j − i − ½) ds / a_j)] (strip_kernel.hpp) with
+    // g odd: with h_k = g((k + ½) ds / a_j), K_ij = H a_j (h_d − h_{d−1}), d = |i − j| ≥ 1, and
+    // 2 H a_j h_0 on the diagonal. One kernel lookup per distance instead of two per entry.
+    const int dmax = std::max(j - cand.front(), cand.back() - j);
+    thread_local std::vector<double> h;
+    h.resize(static_cast<std::size_t>(dmax) + 1);
+    for (int k = 0; k <= dmax; ++k) h[k] = strip_kernel_g((k + 0.5) * S.geo.ds / aj);
+    for (int ii = 0; ii < m; ++ii) {
+      const int d = std::abs(cand[ii] - j);
+      K(ii, jj) = S.H * aj * (d == 0 ? 2.0 * h[0] : h[d] - h[d - 1]);
+    }
+  } else {
+    for (int ii = 0; ii < m; ++ii)
+      if (S.opt.coupling || ii == jj) K(ii, jj) = S.K_elastic(cand[ii], j, aj);
+  }
+}
+
 }  // namespace
 
 Solver::Solver(const StripGeometry& g, double Hc, const StripOptions& o) : StripExtents(g), H(Hc), opt(o) {
@@ -123,116 +149,138 @@ StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>*
   }
   int nb = 0;
   const std::vector<int> band = bands(delta, &nb);
-  const std::vector<double> a = extents(delta, band, nb);
+  std::vector<double> a = extents(delta, band, nb);
   res.n_bands = nb;
 
+  // The interpenetrated strips (g < delta): those with a positive extent carry load; the others
+  // are checked for the interpenetration the loaded strips leave at their centres (widening).
   std::vector<int> cand;
+  bool any_extent = false;
   for (int i = 0; i < n; ++i)
-    if (a[i] > 0.0) cand.push_back(i);
+    if (band[i] >= 0) { cand.push_back(i); any_extent = any_extent || a[i] > 0.0; }
   const int m = static_cast<int>(cand.size());
-  if (m == 0) {
+  if (!any_extent) {
     res.status = StripStatus::NoContact;
     res.message = "no strip has a positive extent";
     return res;
   }
-  // Elastic influence matrix among candidates (unit amplitude).
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(m, m);
-  std::vector<double> h;
-  for (int jj = 0; jj < m; ++jj) {
-    const int j = cand[jj];
-    const double aj = a[j];
-    if (same_xc && opt.coupling) {
-      // K_ij = H a_j [g((j − i + ½) ds / a_j) − g((j − i − ½) ds / a_j)] (strip_kernel.hpp) with
-      // g odd: with h_k = g((k + ½) ds / a_j), K_ij = H a_j (h_d − h_{d−1}), d = |i − j| ≥ 1, and
-      // 2 H a_j h_0 on the diagonal. One kernel lookup per distance instead of two per entry.
-      const int dmax = std::max(j - cand.front(), cand.back() - j);
-      h.resize(static_cast<std::size_t>(dmax) + 1);
-      for (int k = 0; k <= dmax; ++k) h[k] = strip_kernel_g((k + 0.5) * geo.ds / aj);
-      for (int ii = 0; ii < m; ++ii) {
-        const int d = std::abs(cand[ii] - j);
-        K(ii, jj) = H * aj * (d == 0 ? 2.0 * h[0] : h[d] - h[d - 1]);
-      }
-    } else {
-      for (int ii = 0; ii < m; ++ii)
-        if (opt.coupling || ii == jj) K(ii, jj) = K_elastic(cand[ii], j, aj);
-    }
-  }
-
-  // Plastic bookkeeping. A capped strip keeps the ELASTIC amplitude q_j at
-  // which it was capped and is lengthened to a'_j = a_j (pi/2)/Phi(r_j),
-  // r_j = p_lim/q_j; its pressure is min(q_j sqrt(1 - ((x-c)/a'_j)^2), p_lim):
-  // flat top at p_lim, load q_j a'_j Phi(r_j) ds = (pi/2) q_j a_j ds (the
-  // elastic strip's load). Its displacement equation is dropped.
-  std::vector<char> capped(m, 0);
-  std::vector<double> q(m, 0.0), aeff(m, 0.0), rcap(m, 1.0);
-  Eigen::MatrixXd Ucap = Eigen::MatrixXd::Zero(m, m);  // column j: displacement from capped strip j
-  for (int ii = 0; ii < m; ++ii) aeff[ii] = a[cand[ii]];
-
-  // The starting active set: the strips of a previous solve that are still candidates (warm
-  // start: along an approach iteration the set changes by a few strips), else every candidate.
+  std::vector<char> capped;
+  std::vector<double> q, aeff, rcap;
   std::vector<char> start(m, 1);
-  if (warm && !warm->empty()) {
-    std::fill(start.begin(), start.end(), 0);
-    int found = 0;
-    for (int ii = 0, w = 0; ii < m; ++ii) {
-      while (w < static_cast<int>(warm->size()) && (*warm)[w] < cand[ii]) ++w;
-      if (w < static_cast<int>(warm->size()) && (*warm)[w] == cand[ii]) { start[ii] = 1; ++found; }
-    }
-    if (found == 0) std::fill(start.begin(), start.end(), 1);
-  }
-
   bool settled = false;
   bool as_ok = true;
-  std::vector<int> act, E;
-  for (int pass = 0; pass < opt.max_active_set && !settled; ++pass) {
-    // The elastic strips E of this pass (each plastic pass drops the newly capped ones) and
-    // their equations K_EE q_E = delta - g - u_cap, solved for q >= 0 from the previous pass's
-    // active set.
-    E.clear();
-    for (int ii = 0; ii < m; ++ii)
-      if (!capped[ii]) E.push_back(ii);
-    const int e = static_cast<int>(E.size());
-    Eigen::VectorXd ucap = Eigen::VectorXd::Zero(m);
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(m, m);
+  std::vector<double> a_built(m, 0.0);  // the extent each column of K was built for
+  for (int widen = 0;; ++widen) {
+    // Elastic influence matrix among the candidates (unit amplitude): the columns whose extent
+    // changed (all of them on the first pass).
     for (int jj = 0; jj < m; ++jj)
-      if (capped[jj]) ucap += Ucap.col(jj);
-    Eigen::MatrixXd KE(e, e);
-    Eigen::VectorXd rhs(e), qE = Eigen::VectorXd::Zero(e);
-    std::vector<char> in_act(e);
-    for (int c = 0; c < e; ++c) {
-      for (int r = 0; r < e; ++r) KE(r, c) = K(E[r], E[c]);
-      rhs(c) = delta - geo.g[cand[E[c]]] - ucap(E[c]);
-      in_act[c] = start[E[c]];
+      if (a_built[jj] != a[cand[jj]]) {
+        elastic_column(*this, cand, jj, a[cand[jj]], K);
+        a_built[jj] = a[cand[jj]];
+      }
+
+    // Plastic bookkeeping. A capped strip keeps the ELASTIC amplitude q_j at
+    // which it was capped and is lengthened to a'_j = a_j (pi/2)/Phi(r_j),
+    // r_j = p_lim/q_j; its pressure is min(q_j sqrt(1 - ((x-c)/a'_j)^2), p_lim):
+    // flat top at p_lim, load q_j a'_j Phi(r_j) ds = (pi/2) q_j a_j ds (the
+    // elastic strip's load). Its displacement equation is dropped.
+    capped.assign(m, 0);
+    q.assign(m, 0.0);
+    aeff.assign(m, 0.0);
+    rcap.assign(m, 1.0);
+    Eigen::MatrixXd Ucap = Eigen::MatrixXd::Zero(m, m);  // column j: displacement from capped strip j
+    for (int ii = 0; ii < m; ++ii) aeff[ii] = a[cand[ii]];
+
+    // The starting active set: the strips of a previous solve that are still candidates (warm
+    // start: along an approach iteration the set changes by a few strips), else every candidate.
+    if (widen == 0 && warm && !warm->empty()) {
+      std::fill(start.begin(), start.end(), 0);
+      int found = 0;
+      for (int ii = 0, w = 0; ii < m; ++ii) {
+        while (w < static_cast<int>(warm->size()) && (*warm)[w] < cand[ii]) ++w;
+        if (w < static_cast<int>(warm->size()) && (*warm)[w] == cand[ii]) { start[ii] = 1; ++found; }
+      }
+      if (found == 0) std::fill(start.begin(), start.end(), 1);
     }
-    as_ok = e == 0 || solve_active_set(KE, rhs, 1e-9 * (delta - gmin), opt.max_active_set, in_act, qE);
-    if (!as_ok) break;
-    act.clear();
-    for (int c = 0; c < e; ++c) {
-      q[E[c]] = qE(c);
-      if (in_act[c]) act.push_back(E[c]);
-    }
-    std::fill(start.begin(), start.end(), 0);
-    for (int ii : act) start[ii] = 1;
-    // Newly capped strips.
-    bool any = false;
-    if (std::isfinite(p_lim)) {
-      for (int ii : act) {
-        if (q[ii] > p_lim) {
-          capped[ii] = 1;
-          any = true;
-          rcap[ii] = p_lim / q[ii];
-          aeff[ii] = a[cand[ii]] * (0.5 * kPi) / Phi(rcap[ii]);
-          const int j = cand[ii];
-          for (int r = 0; r < m; ++r) {
-            if (!opt.coupling && r != ii) continue;
-            const int i = cand[r];
-            Ucap(r, ii) = H * q[ii] *
-                          influence(geo.xc[i] - geo.xc[j], aeff[ii], geo.s[j] - 0.5 * geo.ds - geo.s[i],
-                                    geo.s[j] + 0.5 * geo.ds - geo.s[i], rcap[ii], gx, gw);
+
+    settled = false;
+    as_ok = true;
+    std::vector<int> act, E;
+    for (int pass = 0; pass < opt.max_active_set && !settled; ++pass) {
+      // The elastic strips E of this pass (each plastic pass drops the newly capped ones) and
+      // their equations K_EE q_E = delta - g - u_cap, solved for q >= 0 from the previous pass's
+      // active set.
+      E.clear();
+      for (int ii = 0; ii < m; ++ii)
+        if (!capped[ii] && a[cand[ii]] > 0.0) E.push_back(ii);
+      const int e = static_cast<int>(E.size());
+      Eigen::VectorXd ucap = Eigen::VectorXd::Zero(m);
+      for (int jj = 0; jj < m; ++jj)
+        if (capped[jj]) ucap += Ucap.col(jj);
+      Eigen::MatrixXd KE(e, e);
+      Eigen::VectorXd rhs(e), qE = Eigen::VectorXd::Zero(e);
+      std::vector<char> in_act(e);
+      for (int c = 0; c < e; ++c) {
+        for (int r = 0; r < e; ++r) KE(r, c) = K(E[r], E[c]);
+        rhs(c) = delta - geo.g[cand[E[c]]] - ucap(E[c]);
+        in_act[c] = start[E[c]];
+      }
+      as_ok = e == 0 || solve_active_set(KE, rhs, 1e-9 * (delta - gmin), opt.max_active_set, in_act, qE);
+      if (!as_ok) break;
+      act.clear();
+      for (int c = 0; c < e; ++c) {
+        q[E[c]] = qE(c);
+        if (in_act[c]) act.push_back(E[c]);
+      }
+      std::fill(start.begin(), start.end(), 0);
+      for (int ii : act) start[ii] = 1;
+      // Newly capped strips.
+      bool any = false;
+      if (std::isfinite(p_lim)) {
+        for (int ii : act) {
+          if (q[ii] > p_lim) {
+            capped[ii] = 1;
+            any = true;
+            rcap[ii] = p_lim / q[ii];
+            aeff[ii] = a[cand[ii]] * (0.5 * kPi) / Phi(rcap[ii]);
+            const int j = cand[ii];
+            for (int r = 0; r < m; ++r) {
+              if (!opt.coupling && r != ii) continue;
+              const int i = cand[r];
+              Ucap(r, ii) = H * q[ii] *
+                            influence(geo.xc[i] - geo.xc[j], aeff[ii], geo.s[j] - 0.5 * geo.ds - geo.s[i],
+                                      geo.s[j] + 0.5 * geo.ds - geo.s[i], rcap[ii], gx, gw);
+            }
           }
         }
       }
+      if (!any) settled = true;
     }
-    if (!any) settled = true;
+    if (!as_ok || !settled || widen >= kMaxWiden) break;
+    // Widening (the remedy of docs/method.md §9 item 7 for thin tails). The interpenetration the
+    // other strips leave at a strip's centre, r_i = delta − g_i − sum_{j≠i} K_ij q_j, is what its
+    // own pressure must take up; the strip is given at least the length over which that residual
+    // interpenetration exists, a_i ≥ sqrt(r_i / A_i). Inside a patch r_i is the strip's own
+    // displacement, far below A_i a_i²; at a tail whose extent rule gave a strip too short a
+    // length it is not, and without this the amplitude there grows like 1/(a ln(1/a)) and the
+    // load jumps when a strip enters (docs/strips.md "Load jumps").
+    bool widened = false;
+    for (int ii = 0; ii < m; ++ii) {
+      const int i = cand[ii];
+      if (capped[ii]) continue;
+      double u = 0.0;
+      for (int jj = 0; jj < m; ++jj) {
+        if (jj == ii) continue;
+        u += capped[jj] ? Ucap(ii, jj) : K(ii, jj) * q[jj];
+      }
+      const double r = delta - geo.g[i] - u;
+      if (!(r > 0.0)) continue;
+      const double aw = std::sqrt(r / geo.A[i]);
+      if (aw > a[i] * (1.0 + kWidenRtol)) { a[i] = aw; widened = true; }
+    }
+    if (!widened) break;
+    for (int ii = 0; ii < m; ++ii) start[ii] = q[ii] > 0.0 || capped[ii];
   }
 
   res.status = StripStatus::Ok;

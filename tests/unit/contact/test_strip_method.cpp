@@ -1,9 +1,10 @@
 // The strip method (docs/method.md §9) as a method of runs, against CONTACT's exact results on the
 // Manchester pair (tests/data/contact, Q = 50 kN) and against this project's half-space solver.
 // Tolerances of issue 12: single-region contact pmax ±5 %, area ±10 %, approach ±3 %; two regions
-// (gauge shoulder, t_Y = 5 mm) ±10 %, ±15 %, ±5 %. Two cases miss them and are held to their
+// (gauge shoulder, t_Y = 5 mm) ±10 %, ±15 %, ±5 %. One case misses them and is held to its
 // measured deviation instead, so that a change for the worse is caught (docs/strips.md explains):
-// t_Y = 0 mm (wide conformal tread patch: pmax −8.5 %) and t_Y = 2 mm (area −12 %).
+// t_Y = 0 mm (wide conformal tread patch: pmax −8.5 %). (t_Y = 2 mm missed the area by −12 %
+// until the tail strips were widened, docs/method.md §9 item 7; now −0.5 %.)
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
@@ -58,7 +59,6 @@ TEST_CASE("strip method against CONTACT on the Manchester sweep at Q = 50 kN", "
     double tol_p = two_regions ? 0.10 : 0.05, tol_a = two_regions ? 0.15 : 0.10;
     const double tol_z = two_regions ? 0.05 : 0.03;
     if (tY == 0) tol_p = 0.09;   // known miss: measured −8.5 %
-    if (tY == 2) tol_a = 0.13;   // known miss: measured −12 %
     CHECK(r.pmax == Approx(pmax).epsilon(tol_p));
     CHECK(r.area == Approx(area).epsilon(tol_a));
     CHECK(r.approach == Approx(dz).epsilon(tol_z));
@@ -182,9 +182,11 @@ TEST_CASE("auto keeps the multi-Hertzian answer where it is valid and hands the 
   CHECK(d.method == mh::Method::Strips);
   REQUIRE(!d.warnings.empty());
   CHECK(d.warnings[0].rfind("auto:strips:ellipse 4 not Hertzian", 0) == 0);
-  // t_Y = 0.5 mm, Q = 10 kN: the strip method cannot meet the load (a jump of N(δ), test below),
-  // so auto falls back to the half-space method and says both steps.
-  const mh::CaseResult e = mh::solve_method(F.pg.geo, F.cf.material, 0.5e-3, 10e3, mo);
+  // A strip solve that does not converge (here made so: two approach iterations allowed) falls
+  // back to the half-space method, and the warnings say both steps.
+  mh::MethodOptions starved = mo;
+  starved.strips.strips.max_iterations = 2;
+  const mh::CaseResult e = mh::solve_method(F.pg.geo, F.cf.material, 0.5e-3, 10e3, starved);
   CHECK(e.status == mh::CaseStatus::Ok);
   CHECK(e.method == mh::Method::HalfSpace);
   REQUIRE(e.warnings.size() >= 2);
@@ -193,24 +195,35 @@ TEST_CASE("auto keeps the multi-Hertzian answer where it is valid and hands the 
   CHECK(e.Fz == Approx(10e3).epsilon(1e-4));
 }
 
-TEST_CASE("a strip case that does not converge keeps its closest iterate", "[strips]") {
-  // Manchester pair, t_Y = 0.5 mm, Q = 10 kN: the patch's N(δ) jumps across the target load
-  // where a strip enters the patch (docs/strips.md, "Load jumps"), so the load cannot be met
-  // exactly. The row is not_converged and says so; it keeps the closest iterate (measured: force
-  // balance to 7e-8, the entering strip's amplitude inflated and flagged strip_outlier) instead
-  // of zeros (README "Failed rows": a not_converged row keeps its last iterate).
+TEST_CASE("a strip entering the patch takes up its load from zero", "[strips]") {
+  // Manchester pair, t_Y = 0.5 mm, Q = 10 kN. Before the tail strips were widened (docs/method.md
+  // §9 item 7), a strip entering the patch got a vanishing extent but the full interpenetration
+  // as its collocation right-hand side: amplitude 1.3e7 MPa, N(δ) jumping across the target load,
+  // the case not_converged (docs/strips.md, "Load jumps"). Reference: this project's half-space
+  // solution of the case, pmax 627.1 MPa, area 47.36 mm² (tolerances of a single region).
   const Fixture& F = manchester();
   const mh::CaseResult r = mh::solve_method(F.pg.geo, F.cf.material, 0.5e-3, 10e3, F.cf.method_options());
+  REQUIRE(r.status == mh::CaseStatus::Ok);
+  CHECK(r.Fz == Approx(10e3).epsilon(1e-6));
+  for (const std::string& w : r.warnings) CHECK(w.rfind("strip_outlier:", 0) != 0);
+  CHECK(r.pmax == Approx(627.1e6).epsilon(0.05));
+  CHECK(r.area == Approx(47.36e-6).epsilon(0.10));
+}
+
+TEST_CASE("a strip case that does not converge keeps its closest iterate", "[strips]") {
+  // Two approach iterations are not enough for the load control of this case: the row is
+  // not_converged, says why, and keeps the closest iterate (README "Failed rows": a
+  // not_converged row keeps its last iterate) instead of zeros.
+  const Fixture& F = manchester();
+  mh::MethodOptions mo = F.cf.method_options();
+  mo.strips.strips.max_iterations = 2;
+  const mh::CaseResult r = mh::solve_method(F.pg.geo, F.cf.material, 0.5e-3, 10e3, mo);
   REQUIRE(r.status == mh::CaseStatus::NotConverged);
-  CHECK(r.message.find("jumps across the target") != std::string::npos);
+  CHECK(r.message.find("load not reached within max_iterations") != std::string::npos);
   REQUIRE(r.n_contacts >= 1);
-  CHECK(r.Fz == Approx(10e3).epsilon(0.01));
-  CHECK(std::fabs(r.residual) < 0.01);
+  CHECK(r.Fz == Approx(10e3).epsilon(0.2));
   CHECK(r.pmax > 0);
   CHECK(r.area > 0);
-  bool outlier = false;
-  for (const std::string& w : r.warnings) outlier = outlier || w.rfind("strip_outlier:", 0) == 0;
-  CHECK(outlier);
 }
 
 TEST_CASE("strips in the plastic model: strongly capped flange contacts settle", "[strips]") {

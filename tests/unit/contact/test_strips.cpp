@@ -416,18 +416,22 @@ TEST_CASE("outlier flag", "[strips]") {
   const HertzRef h = hertz_ref(1.0 / (2.0 * R), 1.0 / (2.0 * R), N, kEstar);
   const double delta = h.delta;
   {
-    // Degenerate tail: with ds = 2b/30 strip centres fall exactly on the tips
-    // y = +-b, where the Hertz extent is ~0 (round-off) but delta - g > 0.
+    // Degenerate tail: with ds = 2b/30 strip centres fall exactly on the tips y = +-b, where the
+    // Hertz extent is ~0 (round-off) but delta - g > 0. Without widening (docs/method.md §9
+    // item 7) the tip strips took that interpenetration with a vanishing length: amplitudes
+    // far above their neighbours', flagged. Widened to the length of the interpenetration the
+    // other strips leave there, they are not outliers and the Hertz answer holds (Johnson §4.2).
     const double ds = 2.0 * h.b / 30;
     const auto geo = ellipse_geometry(1.0 / (2.0 * R), 1.0 / (2.0 * R), ds, 2 * (int)(1.6 * h.b / ds) + 1);
     const auto r = mh::solve_strips_approach(geo, kH, delta, INFINITY);
     REQUIRE(r.status == mh::StripStatus::Ok);
-    REQUIRE(r.worst_outlier >= 0);
-    const auto& w = r.strips[r.worst_outlier];
-    std::printf("  outlier (strip at the tip): %d flagged, worst s/b = %.6f, a = %.3g m, q = %.4g Pa (p0 %.4g)\n",
-                r.n_outliers, w.s / h.b, w.a, w.q, h.p0);
-    CHECK(r.n_outliers >= 1);
-    CHECK(std::fabs(std::fabs(w.s) / h.b - 1.0) < 1e-9);
+    bool tip = false;
+    for (const auto& st : r.strips) tip = tip || std::fabs(std::fabs(st.s) / h.b - 1.0) < 1e-9;
+    std::printf("  strips on the tips: loaded %d, outliers %d, pmax/p0 = %.4f, N/N_Hertz = %.4f\n", tip ? 1 : 0,
+                r.n_outliers, r.pmax / h.p0, r.N / N);
+    CHECK(r.n_outliers == 0);
+    CHECK(r.pmax == Approx(h.p0).epsilon(0.01));
+    CHECK(r.N == Approx(N).epsilon(0.02));
   }
   const double ds = 2.0 * h.b / 30.5;
   auto geo = ellipse_geometry(1.0 / (2.0 * R), 1.0 / (2.0 * R), ds, 2 * (int)(1.6 * h.b / ds) + 1);
