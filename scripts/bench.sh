@@ -12,20 +12,28 @@ qstep=$(awk -v n="$nq" 'BEGIN{printf "%.10g", 140/(n-1)}')
 sed -e "s|\"sweep\": .*|\"sweep\": {\"tY_mm\": {\"from\": -6, \"to\": 10, \"step\": $step}, \"Q_kN\": {\"from\": 10, \"to\": 150, \"step\": $qstep}}|" \
     -e "s|\"\\.\\./profiles/|\"$PWD/profiles/|g" cases/manchester.json > "$tmp/big.json"
 ncases=$((ny * nq))
-run() {  # $1 = threads; prints the median wall seconds and the median peak RSS [KB] of 3 runs
-  : > "$tmp/times"
-  for r in 1 2 3; do
-    /usr/bin/time -f "%e %M" -o "$tmp/time" ./build/mhcontact run "$tmp/big.json" -o "$tmp/out" --format csv --threads "$1" -q || true
-    cat "$tmp/time" >> "$tmp/times"
-  done
-  echo "$(cut -d' ' -f1 "$tmp/times" | sort -g | sed -n 2p) $(cut -d' ' -f2 "$tmp/times" | sort -g | sed -n 2p)"
+# One thread and all cores alternately, 5 runs each (the machine is shared: alternating puts a
+# slow spell on both), median wall time and peak RSS [KB] of each.
+# fresh: into a new directory; rerun: replacing the previous run's 400 MB set, whose removal at
+# the end (~0.1 s of kernel time, serial) is part of the time.
+once() {  # $1 = threads, $2 = fresh|rerun, $3 = file to append "wall rss" to
+  if [ "$2" = fresh ]; then rm -rf "$tmp/out"; sync; sleep 0.2; fi
+  /usr/bin/time -f "%e %M" -o "$tmp/time" ./build/mhcontact run "$tmp/big.json" -o "$tmp/out" --format csv --threads "$1" -q || true
+  cat "$tmp/time" >> "$3"
 }
-read -r t1 m1 < <(run 1)
-read -r tn mn < <(run 0)
-echo "end-to-end run, $ncases cases to CSV, median of 3:"
-awk -v t="$t1" -v m="$m1" -v n="$ncases" 'BEGIN{printf "  --threads 1:      %.2f s wall, %.0f cases/s, peak RSS %.0f MB\n", t, n/t, m/1024}'
-awk -v t="$tn" -v m="$mn" -v n="$ncases" -v c="$(nproc)" 'BEGIN{printf "  all %d cores:     %.2f s wall, %.0f cases/s, peak RSS %.0f MB\n", c, t, n/t, m/1024}'
-awk -v a="$t1" -v b="$tn" 'BEGIN{printf "  speed-up:         %.2f\n", a/b}'
+median() { sort -g | sed -n 3p; }
+for mode in fresh rerun; do
+  : > "$tmp/t1"; : > "$tmp/tn"
+  for r in 1 2 3 4 5; do once 1 $mode "$tmp/t1"; once 0 $mode "$tmp/tn"; done
+  t1=$(cut -d' ' -f1 "$tmp/t1" | median); m1=$(cut -d' ' -f2 "$tmp/t1" | median)
+  tn=$(cut -d' ' -f1 "$tmp/tn" | median); mn=$(cut -d' ' -f2 "$tmp/tn" | median)
+  echo "end-to-end run, $ncases cases to CSV, median of 5, $mode output directory:"
+  awk -v t="$t1" -v m="$m1" -v n="$ncases" 'BEGIN{printf "  --threads 1:      %.2f s wall, %.0f cases/s, peak RSS %.0f MB\n", t, n/t, m/1024}'
+  awk -v t="$tn" -v m="$mn" -v n="$ncases" -v c="$(nproc)" 'BEGIN{printf "  all %d cores:     %.2f s wall, %.0f cases/s, peak RSS %.0f MB\n", c, t, n/t, m/1024}'
+  awk -v a="$t1" -v b="$tn" 'BEGIN{printf "  speed-up:         %.2f\n", a/b}'
+  echo "  all runs [s], one thread: $(cut -d' ' -f1 "$tmp/t1" | sort -g | tr '\n' ' ')"
+  echo "  all runs [s], all cores:  $(cut -d' ' -f1 "$tmp/tn" | sort -g | tr '\n' ' ')"
+done
 ls -la "$tmp/out" | awk 'NR>1{print "  " $5 " bytes  " $9}'
 # The grid methods (half-space, strips) on the CONTACT benchmark sweep (median and worst per case).
 ./build/mhcontact_bench_grid . 3
