@@ -24,6 +24,7 @@ namespace {
 constexpr double kPi = units::pi;
 constexpr int kMaxWiden = 12;         // widening passes per approach (docs/method.md §9 item 7; 7 at most measured on the Manchester sweeps)
 constexpr double kWidenRtol = 1e-6;   // a strip is widened when it gains more than this (relative)
+constexpr double kPenetrationRtol = 1e-9;  // an unloaded strip counts as penetrated beyond this × (delta − g_min)
 
 /// Phi(r) = r sqrt(1 - r^2) + asin r: load of a capped semi-ellipse
 /// min(q sqrt(1-t^2), r q) over t in [-1, 1] is q a Phi(r); Phi(1) = pi/2.
@@ -226,7 +227,7 @@ StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>*
         rhs(c) = delta - geo.g[cand[E[c]]] - ucap(E[c]);
         in_act[c] = start[E[c]];
       }
-      as_ok = e == 0 || solve_active_set(KE, rhs, 1e-9 * (delta - gmin), opt.max_active_set, in_act, qE);
+      as_ok = e == 0 || solve_active_set(KE, rhs, kPenetrationRtol * (delta - gmin), opt.max_active_set, in_act, qE);
       if (!as_ok) break;
       act.clear();
       for (int c = 0; c < e; ++c) {

@@ -1,9 +1,11 @@
 // Collocation solve of the coupled strips at a fixed approach (docs/method.md §9, "Algorithm"
 // items 4–7): amplitudes from the displacement condition at the strip centres,
 // sum_j K_ij q_j = delta - h(c_i, s_i), with the full influence matrix (contact/strip_influence.hpp,
-// contact/strip_kernel.hpp), an active set for q >= 0, the plastic cap at p_lim (capped strips
-// keep their elastic amplitude, drop their displacement equation and are lengthened), the load
-// and the outlier flag. The strip extents come from contact/strip_extents.hpp; load control on
+// contact/strip_kernel.hpp), an active set for q >= 0 (a complementarity problem, one
+// factorisation per approach), the plastic cap at p_lim (capped strips keep their elastic
+// amplitude, drop their displacement equation and are lengthened), the widening of strips too
+// short for the interpenetration the others leave at their centres (item 7), the load and the
+// outlier flag. The strip extents come from contact/strip_extents.hpp; load control on
 // the approach is in strips.cpp. Accuracy and cost: docs/strips.md.
 //
 // Internal to the strip solver (contact/strips.hpp): namespace strips_detail.
@@ -33,7 +35,6 @@ struct Solver : StripExtents {
   /// load in a previous solve of this geometry, as the starting active set; null or empty: every
   /// strip with a positive extent.
   StripResult evaluate(double delta, double p_lim, const std::vector<int>* warm = nullptr) const;
-
 };
 
 }  // namespace strips_detail

@@ -8,7 +8,9 @@
 // ANALYN-type estimate (local Hertz solution per strip; Sichani et al. 2014).
 // Amplitudes follow from collocation at the strip centres with the full
 // Boussinesq influence matrix (Johnson, Contact Mechanics §3.2), an active set
-// for q >= 0, an optional plastic cap p_lim, and load control on the approach.
+// for q >= 0, an optional plastic cap p_lim, and load control on the approach;
+// strips too short for the interpenetration the others leave at their centres are
+// widened (docs/method.md §9 item 7).
 //
 // Interpretation used for the extent estimates: within a lateral band the
 // approach is measured from the band's deepest gap g0 (delta_b = delta - g0,
