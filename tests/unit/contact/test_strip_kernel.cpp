@@ -3,8 +3,11 @@
 // derivative and of the table), and its derivative against the integral it stands for.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <algorithm>
 #include <random>
+#include <vector>
 
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 
 #include "contact/strip_kernel.hpp"
@@ -52,4 +55,119 @@ TEST_CASE("strip kernel derivative: complete elliptic integrals against quadratu
   // Limits: 2 (ln(4/r) − 1) for small r, π/(2r) for large r.
   REQUIRE(mh::strip_kernel_dg(1e-9) == Approx(2 * (std::log(4e9) - 1)).epsilon(1e-12));
   REQUIRE(mh::strip_kernel_dg(1e8) == Approx(M_PI / 2e8).epsilon(1e-12));
+}
+
+// ---- Off the centre line: G(t, r) and the drop E(t, r) = g(r) − G(t, r). ----
+
+namespace {
+struct TR {
+  double t, r;
+};
+double G_def(double tau, void* p) {
+  const TR* q = static_cast<TR*>(p);
+  return std::sqrt(1 - tau * tau) * std::asinh(q->r / std::fabs(tau - q->t));
+}
+/// G(t, r) by GSL QAGP with breakpoints at the kernel's peak (τ = t) and at distances r, 10 r, …
+/// from it and from the strip's end τ = 1, where the integrand changes on the scale r: an
+/// independent reference (no change of variable, no closed-form part).
+double G_reference(double t, double r) {
+  std::vector<double> pts = {-1.0, 1.0};
+  for (double c : {t, 1.0})
+    for (double k : {0.0, 1.0, 10.0, 100.0, 1000.0})
+      for (double sgn : {-1.0, 1.0}) {
+        const double p = c + sgn * k * r;
+        if (p > -1 && p < 1) pts.push_back(p);
+      }
+  std::sort(pts.begin(), pts.end());
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  gsl_integration_workspace* w = gsl_integration_workspace_alloc(4000);
+  TR p{t, r};
+  gsl_function F{G_def, &p};
+  double res = 0, err = 0;
+  gsl_set_error_handler_off();
+  gsl_integration_qagp(&F, pts.data(), pts.size(), 0.0, 1e-12, 4000, w, &res, &err);
+  gsl_integration_workspace_free(w);
+  return res;
+}
+}  // namespace
+
+TEST_CASE("off-centre strip kernel G(t, r): quadrature against adaptive quadrature of its definition",
+          "[strips][kernel]") {
+  // On the strip (t < 1), at its end (t = 1, where G has a boundary layer of width r), just
+  // beyond it and far from it; r from the narrowest strips at their own end to far strips.
+  double worst = 0;
+  for (double t : {0.0, 0.3, 0.9, 0.99, 0.99999, 1.0, 1.00001, 1.001, 1.3, 2.0, 9.0, 100.0})
+    for (double r : {1.5e-5, 1e-3, 0.01, 0.05, 0.3, 1.0, 10.0, 1000.0}) {
+      const double ref = G_reference(t, r), got = mh::strip_kernel_G_quadrature(t, r).G;
+      INFO("t = " << t << ", r = " << r << ": " << got << " against " << ref);
+      // The closed-form logarithmic part leaves a cancellation of O(1) terms for G ~ r.
+      REQUIRE(std::fabs(got - ref) <= 1e-8 * std::fabs(ref) + 1e-9);
+      worst = std::max(worst, std::fabs(got - ref) / std::fabs(ref));
+    }
+  std::printf("  off-centre kernel: worst relative difference from adaptive quadrature %.2e\n", worst);
+  // On the centre line G is the tabulated g.
+  for (double r : {1e-4, 0.02, 1.0, 300.0})
+    CHECK(mh::strip_kernel_G_quadrature(0.0, r).G == Approx(mh::strip_kernel_g(r)).epsilon(1e-8).margin(1e-9));
+}
+
+TEST_CASE("off-centre strip kernel: derivatives against central differences", "[strips][kernel]") {
+  // The table's Hermite slopes are these derivatives; a wrong one shows as a cubic error.
+  for (double t : {0.3, 0.99, 1.01, 2.0})
+    for (double r : {0.01, 0.3, 3.0}) {
+      INFO("t = " << t << ", r = " << r);
+      const auto v = mh::strip_kernel_G_quadrature(t, r);
+      const double hr = 1e-5 * r, ht = 1e-6;
+      auto G = [](double tt, double rr) { return mh::strip_kernel_G_quadrature(tt, rr); };
+      CHECK(v.G_r == Approx((G(t, r + hr).G - G(t, r - hr).G) / (2 * hr)).epsilon(1e-6));
+      CHECK(v.G_t == Approx((G(t + ht, r).G - G(t - ht, r).G) / (2 * ht)).epsilon(1e-5));
+      CHECK(v.G_tr == Approx((G(t + ht, r).G_r - G(t - ht, r).G_r) / (2 * ht)).epsilon(1e-5));
+    }
+}
+
+TEST_CASE("strip kernel drop E(t, r): table against quadrature", "[strips][kernel]") {
+  // What the strip solver needs: the drop across one strip, E(t, e2/a) − E(t, e1/a), for a strip
+  // of half-length a whose edges lie e1 = (k − ½) ds, e2 = (k + ½) ds from the point; measured
+  // relative to the centre-line value of the same strip, g(e2/a) − g(e1/a) (header: within 3e-5).
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> U(0, 1);
+  double worst = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const double t = i % 3 == 0 ? 12 * U(rng) : (i % 3 == 1 ? 1 + (U(rng) - 0.5) * std::pow(10, -7 * U(rng))
+                                                            : std::pow(10, -4 * U(rng)));
+    const double a = 0.3 + 10 * U(rng), ds = 0.2;  // [mm]
+    const int k = i % 25 - 3;
+    const double r1 = (k - 0.5) * ds / a, r2 = (k + 0.5) * ds / a;
+    auto E_quad = [&](double r) {
+      const double s = r < 0 ? -1 : 1;
+      return s * (mh::strip_kernel_g(std::fabs(r)) - mh::strip_kernel_G_quadrature(t, std::fabs(r)).G);
+    };
+    const double got = mh::strip_kernel_drop(t, r2) - mh::strip_kernel_drop(t, r1);
+    const double ref = E_quad(r2) - E_quad(r1);
+    const double scale = std::fabs(mh::strip_kernel_g(r2) - mh::strip_kernel_g(r1));
+    INFO("t = " << t << ", a = " << a << " mm, k = " << k);
+    REQUIRE(std::fabs(got - ref) <= 5e-5 * scale);
+    worst = std::max(worst, std::fabs(got - ref) / scale);
+    // The prepared form is the same function.
+    const auto R1 = mh::strip_kernel_drop_prepare(r1), R2 = mh::strip_kernel_drop_prepare(r2);
+    REQUIRE(mh::strip_kernel_drop_diff(R2, R1, t) == Approx(got).margin(1e-15 * scale + 1e-300));
+  }
+  std::printf("  strip kernel drop: worst difference from quadrature %.2e of the centre-line value\n", worst);
+}
+
+TEST_CASE("strip kernel drop E(t, r): symmetries and limits", "[strips][kernel]") {
+  for (double r : {1e-6, 0.01, 0.7, 50.0, 1e5}) {
+    INFO("r = " << r);
+    CHECK(mh::strip_kernel_drop(0.0, r) == 0.0);                      // on the centre line
+    CHECK(mh::strip_kernel_drop(0.6, -r) == -mh::strip_kernel_drop(0.6, r));   // odd in r
+    CHECK(mh::strip_kernel_drop(-0.6, r) == mh::strip_kernel_drop(0.6, r));    // even in t
+  }
+  CHECK(mh::strip_kernel_drop(0.5, 0.0) == 0.0);
+  // Far lateral distance: E → L(t) − L(0) = (π/2) t² on the strip (the logarithmic potential of
+  // the semicircle density), (π/2)(ln t − 1/(8t²) + ½ + ln 2) … beyond it, within r⁻².
+  CHECK(mh::strip_kernel_drop(0.5, 1e5) == Approx(M_PI / 2 * 0.25).epsilon(1e-8));
+  CHECK(mh::strip_kernel_drop(0.5, 3000.0) == Approx(M_PI / 2 * 0.25).epsilon(1e-6));
+  // Far along x (t beyond the table): continuous with the table at its end, within the table's
+  // interpolation error there (3e-7 of E).
+  CHECK(mh::strip_kernel_drop(129.0 * (1 + 1e-12), 0.4) == Approx(mh::strip_kernel_drop(129.0 * (1 - 1e-12), 0.4)).epsilon(1e-6));
+  CHECK(std::isnan(mh::strip_kernel_drop(NAN, 0.1)));
 }
