@@ -67,6 +67,11 @@ struct PatchResult {
   double capped_load = 0;   ///< [N] load carried by those elements
   int n_elements = 0;       ///< elements in contact
   int iterations = 0;       ///< solver iterations summed over the outer loop
+  /// Strip method: the end-gap error of the estimated strip extents (StripOptions::end_gap_tol),
+  /// and whether the extents were refined to close the gap at every strip end. NaN / false for
+  /// the other methods.
+  double end_gap_error = NAN;
+  bool refined = false;
   // Pressure on the patch grid (for --pressure-grid): nx × ns values, x fastest, element centres
   // at x0 + i dx, s0 + j ds (plane coordinates relative to the reference point).
   int nx = 0, ns = 0;

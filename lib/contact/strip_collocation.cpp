@@ -26,13 +26,6 @@ constexpr int kMaxWiden = 12;         // widening passes per approach (docs/meth
 constexpr double kWidenRtol = 1e-6;   // a strip is widened when it gains more than this (relative)
 constexpr double kPenetrationRtol = 1e-9;  // an unloaded strip counts as penetrated beyond this × (delta − g_min)
 
-/// Phi(r) = r sqrt(1 - r^2) + asin r: load of a capped semi-ellipse
-/// min(q sqrt(1-t^2), r q) over t in [-1, 1] is q a Phi(r); Phi(1) = pi/2.
-double Phi(double r) {
-  if (r >= 1.0) return 0.5 * kPi;
-  return r * std::sqrt(1.0 - r * r) + std::asin(r);
-}
-
 /// The amplitudes q >= 0 of the strips E with K q = rhs where q > 0 and K q >= rhs where q = 0
 /// (no strip penetrated; a linear complementarity problem), by an active set: solve on the
 /// active strips, drop those with q < 0; once none is negative, add back every inactive strip
@@ -42,10 +35,10 @@ double Phi(double r) {
 /// (K⁻¹)_RR mu = −(K⁻¹ z)_R: a |R|×|R| system and one back-substitution per strip of R (the
 /// capacitance matrix method); (K q)_R = mu is the displacement the add-back test needs.
 /// A large R (over a third of E) is solved directly on the active strips instead.
-bool solve_active_set(const Eigen::MatrixXd& K, const Eigen::VectorXd& rhs, double tol, int max_iter,
-                      std::vector<char>& in_act, Eigen::VectorXd& q) {
+bool solve_active_set(const Eigen::MatrixXd& K, const Eigen::PartialPivLU<Eigen::MatrixXd>& lu,
+                      const Eigen::VectorXd& rhs, double tol, int max_iter, std::vector<char>& in_act,
+                      Eigen::VectorXd& q) {
   const int e = static_cast<int>(K.rows());
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(K);
   std::vector<Eigen::VectorXd> col(static_cast<std::size_t>(e));  // K⁻¹ e_r, when r is first inactive
   std::vector<int> R, A;
   Eigen::VectorXd KqR;
@@ -126,9 +119,15 @@ void elastic_column(const Solver& S, const std::vector<int>& cand, int jj, doubl
 
 }  // namespace
 
+double Phi(double r) {
+  if (r >= 1.0) return 0.5 * kPi;
+  return r * std::sqrt(1.0 - r * r) + std::asin(r);
+}
+
 Solver::Solver(const StripGeometry& g, double Hc, const StripOptions& o) : StripExtents(g), H(Hc), opt(o) {
   gauss_legendre(opt.gauss_points / 2, &gx, &gw);
   for (double x : geo.xc) same_xc = same_xc && x == geo.xc.front();
+  for (int k = -n; k <= n + 1; ++k) log2_edge.push_back(std::log2(std::fabs((k - 0.5) * geo.ds)));
 }
 
 double Solver::K_elastic(int i, int j, double aj) const {
@@ -137,6 +136,101 @@ double Solver::K_elastic(int i, int j, double aj) const {
     return H * aj * (strip_kernel_g(e2 / aj) - strip_kernel_g(e1 / aj));
   return H * influence(geo.xc[i] - geo.xc[j], aj, geo.s[j] - 0.5 * geo.ds - geo.s[i],
                        geo.s[j] + 0.5 * geo.ds - geo.s[i], 1.0, gx, gw);
+}
+
+double Solver::K_end(int i, double ai, int j, double aj, double rcap) const {
+  if (!(aj > 0.0)) return 0.0;
+  const double e1 = geo.s[j] - 0.5 * geo.ds - geo.s[i], e2 = e1 + geo.ds;
+  if (same_xc && rcap >= 1.0)  // the centre-line kernel less its drop to the end (strip_kernel.hpp)
+    return H * aj * (strip_kernel_g(e2 / aj) - strip_kernel_g(e1 / aj) -
+                     (strip_kernel_drop(ai / aj, e2 / aj) - strip_kernel_drop(ai / aj, e1 / aj)));
+  const double X = geo.xc[i] - geo.xc[j];
+  return 0.5 * H * (influence(X + ai, aj, e1, e2, rcap, gx, gw) + influence(X - ai, aj, e1, e2, rcap, gx, gw));
+}
+
+void Solver::build_K(Collocation& c, std::vector<double>& built) const {
+  const int m = static_cast<int>(c.cand.size());
+  if (c.K.rows() != m || static_cast<int>(built.size()) != m) {
+    c.K = Eigen::MatrixXd::Zero(m, m);
+    built.assign(m, -1.0);
+  }
+  for (int jj = 0; jj < m; ++jj)
+    if (built[jj] != c.a[jj]) {
+      elastic_column(*this, c.cand, jj, c.a[jj], c.K);
+      built[jj] = c.a[jj];
+      c.lu_of.clear();
+    }
+}
+
+void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<char>& start) const {
+  const int m = static_cast<int>(c.cand.size());
+  // Plastic bookkeeping. A capped strip keeps the ELASTIC amplitude q_j at
+  // which it was capped and is lengthened to a'_j = a_j (pi/2)/Phi(r_j),
+  // r_j = p_lim/q_j; its pressure is min(q_j sqrt(1 - ((x-c)/a'_j)^2), p_lim):
+  // flat top at p_lim, load q_j a'_j Phi(r_j) ds = (pi/2) q_j a_j ds (the
+  // elastic strip's load). Its displacement equation is dropped.
+  c.capped.assign(m, 0);
+  c.q.assign(m, 0.0);
+  c.aeff = c.a;
+  c.rcap.assign(m, 1.0);
+  if (std::isfinite(p_lim)) c.Ucap = Eigen::MatrixXd::Zero(m, m);  // column j: displacement from capped strip j
+  c.settled = false;
+  c.as_ok = true;
+  std::vector<int> act, E;
+  for (int pass = 0; pass < opt.max_active_set && !c.settled; ++pass) {
+    // The elastic strips E of this pass (each plastic pass drops the newly capped ones) and
+    // their equations K_EE q_E = delta - g - u_cap, solved for q >= 0 from the previous pass's
+    // active set.
+    E.clear();
+    for (int ii = 0; ii < m; ++ii)
+      if (!c.capped[ii] && c.a[ii] > 0.0) E.push_back(ii);
+    const int e = static_cast<int>(E.size());
+    Eigen::VectorXd ucap = Eigen::VectorXd::Zero(m);
+    for (int jj = 0; jj < m; ++jj)
+      if (c.capped[jj]) ucap += c.Ucap.col(jj);
+    Eigen::MatrixXd KE(e, e);
+    Eigen::VectorXd rhs(e), qE = Eigen::VectorXd::Zero(e);
+    std::vector<char> in_act(e);
+    for (int cc = 0; cc < e; ++cc) {
+      for (int r = 0; r < e; ++r) KE(r, cc) = c.K(E[r], E[cc]);
+      rhs(cc) = delta - geo.g[c.cand[E[cc]]] - ucap(E[cc]);
+      in_act[cc] = start[E[cc]];
+    }
+    if (e > 0 && c.lu_of != E) {
+      c.lu.compute(KE);
+      c.lu_of = E;
+    }
+    c.as_ok = e == 0 || solve_active_set(KE, c.lu, rhs, kPenetrationRtol * (delta - gmin), opt.max_active_set, in_act, qE);
+    if (!c.as_ok) break;
+    act.clear();
+    for (int cc = 0; cc < e; ++cc) {
+      c.q[E[cc]] = qE(cc);
+      if (in_act[cc]) act.push_back(E[cc]);
+    }
+    std::fill(start.begin(), start.end(), 0);
+    for (int ii : act) start[ii] = 1;
+    // Newly capped strips.
+    bool any = false;
+    if (std::isfinite(p_lim)) {
+      for (int ii : act) {
+        if (c.q[ii] > p_lim) {
+          c.capped[ii] = 1;
+          any = true;
+          c.rcap[ii] = p_lim / c.q[ii];
+          c.aeff[ii] = c.a[ii] * (0.5 * kPi) / Phi(c.rcap[ii]);
+          const int j = c.cand[ii];
+          for (int r = 0; r < m; ++r) {
+            if (!opt.coupling && r != ii) continue;
+            const int i = c.cand[r];
+            c.Ucap(r, ii) = H * c.q[ii] *
+                            influence(geo.xc[i] - geo.xc[j], c.aeff[ii], geo.s[j] - 0.5 * geo.ds - geo.s[i],
+                                      geo.s[j] + 0.5 * geo.ds - geo.s[i], c.rcap[ii], gx, gw);
+          }
+        }
+      }
+    }
+    if (!any) c.settled = true;
+  }
 }
 
 /// Solve at fixed approach.
@@ -151,114 +245,40 @@ StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>*
   int nb = 0;
   const std::vector<int> band = bands(delta, &nb);
   std::vector<double> a = extents(delta, band, nb);
-  res.n_bands = nb;
 
   // The interpenetrated strips (g < delta): those with a positive extent carry load; the others
   // are checked for the interpenetration the loaded strips leave at their centres (widening).
-  std::vector<int> cand;
+  Collocation c;
   bool any_extent = false;
   for (int i = 0; i < n; ++i)
-    if (band[i] >= 0) { cand.push_back(i); any_extent = any_extent || a[i] > 0.0; }
-  const int m = static_cast<int>(cand.size());
+    if (band[i] >= 0) { c.cand.push_back(i); any_extent = any_extent || a[i] > 0.0; }
+  const int m = static_cast<int>(c.cand.size());
   if (!any_extent) {
     res.status = StripStatus::NoContact;
     res.message = "no strip has a positive extent";
     return res;
   }
-  std::vector<char> capped;
-  std::vector<double> q, aeff, rcap;
   std::vector<char> start(m, 1);
-  bool settled = false;
-  bool as_ok = true;
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(m, m);
-  std::vector<double> a_built(m, 0.0);  // the extent each column of K was built for
+  std::vector<double> built;  // the extent each column of K was built for
+  c.a.resize(m);
   for (int widen = 0;; ++widen) {
+    for (int ii = 0; ii < m; ++ii) c.a[ii] = a[c.cand[ii]];
     // Elastic influence matrix among the candidates (unit amplitude): the columns whose extent
     // changed (all of them on the first pass).
-    for (int jj = 0; jj < m; ++jj)
-      if (a_built[jj] != a[cand[jj]]) {
-        elastic_column(*this, cand, jj, a[cand[jj]], K);
-        a_built[jj] = a[cand[jj]];
-      }
-
-    // Plastic bookkeeping. A capped strip keeps the ELASTIC amplitude q_j at
-    // which it was capped and is lengthened to a'_j = a_j (pi/2)/Phi(r_j),
-    // r_j = p_lim/q_j; its pressure is min(q_j sqrt(1 - ((x-c)/a'_j)^2), p_lim):
-    // flat top at p_lim, load q_j a'_j Phi(r_j) ds = (pi/2) q_j a_j ds (the
-    // elastic strip's load). Its displacement equation is dropped.
-    capped.assign(m, 0);
-    q.assign(m, 0.0);
-    aeff.assign(m, 0.0);
-    rcap.assign(m, 1.0);
-    Eigen::MatrixXd Ucap = Eigen::MatrixXd::Zero(m, m);  // column j: displacement from capped strip j
-    for (int ii = 0; ii < m; ++ii) aeff[ii] = a[cand[ii]];
-
+    build_K(c, built);
     // The starting active set: the strips of a previous solve that are still candidates (warm
     // start: along an approach iteration the set changes by a few strips), else every candidate.
     if (widen == 0 && warm && !warm->empty()) {
       std::fill(start.begin(), start.end(), 0);
       int found = 0;
       for (int ii = 0, w = 0; ii < m; ++ii) {
-        while (w < static_cast<int>(warm->size()) && (*warm)[w] < cand[ii]) ++w;
-        if (w < static_cast<int>(warm->size()) && (*warm)[w] == cand[ii]) { start[ii] = 1; ++found; }
+        while (w < static_cast<int>(warm->size()) && (*warm)[w] < c.cand[ii]) ++w;
+        if (w < static_cast<int>(warm->size()) && (*warm)[w] == c.cand[ii]) { start[ii] = 1; ++found; }
       }
       if (found == 0) std::fill(start.begin(), start.end(), 1);
     }
-
-    settled = false;
-    as_ok = true;
-    std::vector<int> act, E;
-    for (int pass = 0; pass < opt.max_active_set && !settled; ++pass) {
-      // The elastic strips E of this pass (each plastic pass drops the newly capped ones) and
-      // their equations K_EE q_E = delta - g - u_cap, solved for q >= 0 from the previous pass's
-      // active set.
-      E.clear();
-      for (int ii = 0; ii < m; ++ii)
-        if (!capped[ii] && a[cand[ii]] > 0.0) E.push_back(ii);
-      const int e = static_cast<int>(E.size());
-      Eigen::VectorXd ucap = Eigen::VectorXd::Zero(m);
-      for (int jj = 0; jj < m; ++jj)
-        if (capped[jj]) ucap += Ucap.col(jj);
-      Eigen::MatrixXd KE(e, e);
-      Eigen::VectorXd rhs(e), qE = Eigen::VectorXd::Zero(e);
-      std::vector<char> in_act(e);
-      for (int c = 0; c < e; ++c) {
-        for (int r = 0; r < e; ++r) KE(r, c) = K(E[r], E[c]);
-        rhs(c) = delta - geo.g[cand[E[c]]] - ucap(E[c]);
-        in_act[c] = start[E[c]];
-      }
-      as_ok = e == 0 || solve_active_set(KE, rhs, kPenetrationRtol * (delta - gmin), opt.max_active_set, in_act, qE);
-      if (!as_ok) break;
-      act.clear();
-      for (int c = 0; c < e; ++c) {
-        q[E[c]] = qE(c);
-        if (in_act[c]) act.push_back(E[c]);
-      }
-      std::fill(start.begin(), start.end(), 0);
-      for (int ii : act) start[ii] = 1;
-      // Newly capped strips.
-      bool any = false;
-      if (std::isfinite(p_lim)) {
-        for (int ii : act) {
-          if (q[ii] > p_lim) {
-            capped[ii] = 1;
-            any = true;
-            rcap[ii] = p_lim / q[ii];
-            aeff[ii] = a[cand[ii]] * (0.5 * kPi) / Phi(rcap[ii]);
-            const int j = cand[ii];
-            for (int r = 0; r < m; ++r) {
-              if (!opt.coupling && r != ii) continue;
-              const int i = cand[r];
-              Ucap(r, ii) = H * q[ii] *
-                            influence(geo.xc[i] - geo.xc[j], aeff[ii], geo.s[j] - 0.5 * geo.ds - geo.s[i],
-                                      geo.s[j] + 0.5 * geo.ds - geo.s[i], rcap[ii], gx, gw);
-            }
-          }
-        }
-      }
-      if (!any) settled = true;
-    }
-    if (!as_ok || !settled || widen >= kMaxWiden) break;
+    collocate(delta, p_lim, c, start);
+    if (!c.as_ok || !c.settled || widen >= kMaxWiden) break;
     // Widening (the remedy of docs/method.md §9 item 7 for thin tails). The interpenetration the
     // other strips leave at a strip's centre, r_i = delta − g_i − sum_{j≠i} K_ij q_j, is what its
     // own pressure must take up; the strip is given at least the length over which that residual
@@ -268,12 +288,12 @@ StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>*
     // load jumps when a strip enters (docs/strips.md "Load jumps").
     bool widened = false;
     for (int ii = 0; ii < m; ++ii) {
-      const int i = cand[ii];
-      if (capped[ii]) continue;
+      const int i = c.cand[ii];
+      if (c.capped[ii]) continue;
       double u = 0.0;
       for (int jj = 0; jj < m; ++jj) {
         if (jj == ii) continue;
-        u += capped[jj] ? Ucap(ii, jj) : K(ii, jj) * q[jj];
+        u += c.capped[jj] ? c.Ucap(ii, jj) : c.K(ii, jj) * c.q[jj];
       }
       const double r = delta - geo.g[i] - u;
       if (!(r > 0.0)) continue;
@@ -281,30 +301,41 @@ StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>*
       if (aw > a[i] * (1.0 + kWidenRtol)) { a[i] = aw; widened = true; }
     }
     if (!widened) break;
-    for (int ii = 0; ii < m; ++ii) start[ii] = q[ii] > 0.0 || capped[ii];
+    for (int ii = 0; ii < m; ++ii) start[ii] = c.q[ii] > 0.0 || c.capped[ii];
   }
+  res = assemble(delta, p_lim, c);
+  res.n_bands = nb;
+  return res;
+}
 
+StripResult Solver::assemble(double delta, double p_lim, const Collocation& c) const {
+  StripResult res;
+  res.delta = delta;
+  int nb = 0;
+  const std::vector<int> band = bands(delta, &nb);
+  res.n_bands = nb;
   res.status = StripStatus::Ok;
-  if (!as_ok || !settled) {
+  if (!c.as_ok || !c.settled) {
     res.status = StripStatus::NotConverged;
-    res.message = !as_ok ? "active set (q >= 0) did not settle within max_active_set passes"
-                         : "plastic set did not settle within max_active_set passes";
+    res.message = !c.as_ok ? "active set (q >= 0) did not settle within max_active_set passes"
+                           : "plastic set did not settle within max_active_set passes";
   }
+  const int m = static_cast<int>(c.cand.size());
   double qmax = 0.0;
   for (int ii = 0; ii < m; ++ii) {
-    if (!(q[ii] > 0.0)) continue;
+    if (!(c.q[ii] > 0.0)) continue;
     StripState st;
-    st.index = cand[ii];
-    st.s = geo.s[cand[ii]];
-    st.c = geo.xc[cand[ii]];
-    st.a = aeff[ii];
-    st.q = q[ii];
-    st.plastic = capped[ii] != 0;
-    st.band = band[cand[ii]];
-    st.load = (st.plastic ? q[ii] * aeff[ii] * Phi(rcap[ii]) : 0.5 * kPi * q[ii] * aeff[ii]) * geo.ds;
+    st.index = c.cand[ii];
+    st.s = geo.s[st.index];
+    st.c = geo.xc[st.index];
+    st.a = c.aeff[ii];
+    st.q = c.q[ii];
+    st.plastic = c.capped[ii] != 0;
+    st.band = std::max(band[st.index], 0);
+    st.load = (st.plastic ? c.q[ii] * c.aeff[ii] * Phi(c.rcap[ii]) : 0.5 * kPi * c.q[ii] * c.aeff[ii]) * geo.ds;
     res.N += st.load;
     res.area += 2.0 * st.a * geo.ds;
-    qmax = std::max(qmax, q[ii]);
+    qmax = std::max(qmax, c.q[ii]);
     res.strips.push_back(st);
   }
   res.pmax = std::min(qmax, p_lim);

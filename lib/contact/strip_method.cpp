@@ -50,13 +50,11 @@ class StripPatch : public PatchSolver {
   }
   double at_approach(double delta) override {
     last = solver().at_approach(delta, &warm_);
-    warm_ = loaded_strips(last);
     evaluations += 1 + last.iterations;
     return last.status == StripStatus::Ok ? last.N : 0.0;
   }
   double at_load(double N) override {
     last = solver().at_load(N, &warm_, delta_start_);
-    warm_ = loaded_strips(last);
     evaluations += 1 + last.iterations;
     return last.delta;
   }
@@ -69,13 +67,51 @@ class StripPatch : public PatchSolver {
     if (o->last.status == StripStatus::Ok)
       delta_start_ = o->last.delta - *std::min_element(o->geo.g.begin(), o->geo.g.end()) +
                      *std::min_element(geo.g.begin(), geo.g.end());
-    warm_.clear();
+    warm_ = StripWarmStart();
     const double c = std::cos(P.gamma), n = static_cast<double>(geo.s.size());
     for (const StripState& st : o->last.strips) {
       const double y = o->P.y_ref + st.s * std::cos(o->P.gamma);
       const double j = std::round(((y - P.y_ref) / c - geo.s.front()) / geo.ds);
-      if (j >= 0 && j < n && (warm_.empty() || warm_.back() < static_cast<int>(j))) warm_.push_back(static_cast<int>(j));
+      if (!(j >= 0 && j < n) || (!warm_.loaded.empty() && warm_.loaded.back() >= static_cast<int>(j))) continue;
+      warm_.loaded.push_back(static_cast<int>(j));
     }
+    // The decision to refine the extents stays with the patch. Its last refined strips start the
+    // next refinement: extents and amplitudes interpolated at this plane's strip centres (by rail
+    // y), which keeps the start as close as the previous answer (nearest strips alone would put
+    // tail strips a fraction of a strip off, and cost passes).
+    warm_.end_gap = o->warm_.end_gap;
+    warm_.end_gap_error = o->warm_.end_gap_error;
+    const auto& old = o->last.strips;
+    if (warm_.end_gap == 1 && o->last.refined && !old.empty()) {
+      for (int j = 0; j < static_cast<int>(n); ++j) {
+        const double y = P.y_ref + geo.s[j] * c;
+        const double so = (y - o->P.y_ref) / std::cos(o->P.gamma);  // on the previous plane
+        auto hi = std::lower_bound(old.begin(), old.end(), so, [](const StripState& a, double v) { return a.s < v; });
+        // Beyond the first or last loaded strip by less than a strip width: that strip's values
+        // (a tail strip must not be lost: the refinement keeps a strip only if it starts loaded).
+        if (hi == old.begin() || hi == old.end()) {
+          const StripState& e = hi == old.begin() ? old.front() : old.back();
+          if (!(std::fabs(so - e.s) < o->geo.ds)) continue;
+          StripState st = e;
+          st.index = j;
+          st.s = geo.s[j];
+          warm_.previous.strips.push_back(st);
+          continue;
+        }
+        const StripState& a = *(hi - 1);
+        const StripState& b = *hi;
+        if (b.index != a.index + 1) continue;  // not across a gap between bands
+        const double w = (so - a.s) / (b.s - a.s);
+        StripState st = w < 0.5 ? a : b;
+        st.index = j;
+        st.s = geo.s[j];
+        st.a = (1 - w) * a.a + w * b.a;
+        st.q = (1 - w) * a.q + w * b.q;
+        st.plastic = a.plastic && b.plastic;
+        warm_.previous.strips.push_back(st);
+      }
+    }
+    warm_.previous.delta = delta_start_;
   }
   bool failed() const override { return last.status == StripStatus::NotConverged || last.status == StripStatus::InvalidInput; }
   std::string why() const override { return "strip solver: " + last.message; }
@@ -93,7 +129,7 @@ class StripPatch : public PatchSolver {
  private:
   double H_, p_lim_;
   StripOptions opt_;
-  std::vector<int> warm_;  ///< the strips that carried load in this patch's last solve
+  StripWarmStart warm_;  ///< the loaded strips of this patch's last solve, and its extents' refinement
   double delta_start_ = NAN;  ///< the first approach of load control (from the previous placement)
   std::unique_ptr<StripSolver> solver_;
   const StripSolver& solver() {
@@ -137,6 +173,8 @@ CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, dou
     pr.r_roll = gap.rolling_radius(k.P.y_ref);
     pr.gamma = k.P.gamma;
     pr.iterations = S.iterations;
+    pr.end_gap_error = S.end_gap_error;
+    pr.refined = S.refined;
     pr.N = S.N;
     pr.pmax = S.pmax;
     pr.area = S.area;

@@ -90,6 +90,8 @@ bool StripOptions::valid(std::string* why) const {
     os << "max_active_set = " << max_active_set << ": must be >= 1";
   } else if (!(outlier_factor > 1.0) || !std::isfinite(outlier_factor)) {
     os << "outlier_factor = " << outlier_factor << ": must be > 1 and finite";
+  } else if (!(end_gap_tol >= 0.0) || !std::isfinite(end_gap_tol)) {
+    os << "end_gap_tol = " << end_gap_tol << ": must be >= 0 and finite";
   } else {
     return true;
   }
@@ -103,33 +105,100 @@ StripSolver::StripSolver(const StripGeometry& geo, double H, double p_lim, const
 
 StripSolver::~StripSolver() = default;
 
-StripResult StripSolver::at_approach(double delta, const std::vector<int>* warm) const {
+namespace {
+
+/// The estimate's check against the end-gap condition, and the refinement it calls for
+/// (StripOptions::end_gap_tol), decided once per patch through `warm`.
+StripResult checked(const Solver& S, StripResult r, bool load_given, double target, double p_lim, StripWarmStart* warm) {
+  if (r.status != StripStatus::Ok) return r;
+  if (warm && warm->end_gap >= 0) {  // decided at this patch's first solve
+    r.end_gap_error = warm->end_gap_error;
+    if (warm->end_gap == 0) return r;
+  } else {
+    // A capped strip's length follows from its load (§9 item 6), not from its end gap: a patch
+    // whose estimate caps any strip keeps the estimate (its error is still reported).
+    bool any_capped = false;
+    for (const StripState& st : r.strips) any_capped = any_capped || st.plastic;
+    r.end_gap_error = S.end_gap_error(r, p_lim);
+    const bool refine = r.end_gap_error > S.opt.end_gap_tol && !any_capped;
+    if (warm) {
+      warm->end_gap = refine ? 1 : 0;
+      warm->end_gap_error = r.end_gap_error;
+    }
+    if (!refine) return r;
+  }
+  const int before = r.iterations;
+  const double err = r.end_gap_error;
+  StripResult f = S.refine(load_given, target, p_lim, r);
+  f.iterations += before;
+  f.end_gap_error = err;
+  f.refined = true;
+  return f;
+}
+
+void remember(const StripResult& r, StripWarmStart* warm) {
+  if (!warm) return;
+  warm->loaded = loaded_strips(r);
+  if (r.refined && r.status == StripStatus::Ok) warm->previous = r;
+}
+
+}  // namespace
+
+StripResult StripSolver::at_approach(double delta, StripWarmStart* warm) const {
   if (!s_ || !std::isfinite(delta)) {
     StripResult r;
     r.status = StripStatus::InvalidInput;
     r.message = !s_ ? why_ : "delta must be finite";
     return r;
   }
-  return s_->evaluate(delta, p_lim_, warm);
+  StripResult r;
+  if (warm && warm->end_gap == 1 && !warm->previous.strips.empty()) {
+    r = s_->refine(false, delta, p_lim_, warm->previous);  // from the last refined extents
+    r.refined = true;
+    r.end_gap_error = warm->end_gap_error;
+  } else {
+    r = checked(*s_, s_->evaluate(delta, p_lim_, warm ? &warm->loaded : nullptr), false, delta, p_lim_, warm);
+  }
+  remember(r, warm);
+  return r;
 }
 
 StripResult solve_strips_approach(const StripGeometry& geo, double H, double delta, double p_lim,
                                   const StripOptions& opt, const std::vector<int>* warm) {
-  return StripSolver(geo, H, p_lim, opt).at_approach(delta, warm);
+  StripWarmStart w;
+  if (warm) w.loaded = *warm;
+  return StripSolver(geo, H, p_lim, opt).at_approach(delta, &w);
 }
 
 StripResult solve_strips_load(const StripGeometry& geo, double H, double Nt, double p_lim,
                               const StripOptions& opt, const std::vector<int>* warm) {
-  return StripSolver(geo, H, p_lim, opt).at_load(Nt, warm);
+  StripWarmStart w;
+  if (warm) w.loaded = *warm;
+  return StripSolver(geo, H, p_lim, opt).at_load(Nt, &w);
 }
 
-StripResult StripSolver::at_load(double Nt, const std::vector<int>* warm_start, double delta_start) const {
+StripResult StripSolver::at_load(double Nt, StripWarmStart* warm, double delta_start) const {
   if (!s_ || !(Nt > 0.0) || !std::isfinite(Nt)) {
     StripResult r;
     r.status = StripStatus::InvalidInput;
     r.message = !s_ ? why_ : "N must be positive and finite";
     return r;
   }
+  StripResult r;
+  if (warm && warm->end_gap == 1 && !warm->previous.strips.empty()) {
+    StripResult start = warm->previous;
+    if (delta_start > s_->gmin && std::isfinite(delta_start)) start.delta = delta_start;
+    r = s_->refine(true, Nt, p_lim_, start);
+    r.refined = true;
+    r.end_gap_error = warm->end_gap_error;
+  } else {
+    r = checked(*s_, estimate_at_load(Nt, warm ? &warm->loaded : nullptr, delta_start), true, Nt, p_lim_, warm);
+  }
+  remember(r, warm);
+  return r;
+}
+
+StripResult StripSolver::estimate_at_load(double Nt, const std::vector<int>* warm_start, double delta_start) const {
   const Solver& S = *s_;
   const StripGeometry& geo = S.geo;
   const double H = S.H, p_lim = p_lim_;

@@ -64,6 +64,15 @@ struct StripOptions {
   /// Elastic coupling between strips. false keeps only the diagonal of K
   /// (each strip sees only its own pressure) — for diagnostics and tests.
   bool coupling = true;
+  /// The strip extents: first estimated from the rigid gap (KPEC- and ANALYN-type rules, widened
+  /// tails), then checked against the contact condition at the strip ends — the deformed gap
+  /// must close there (docs/method.md §9 item 3). When the estimate's end-gap error (the
+  /// load-weighted mean relative error of a² it implies, StripResult::end_gap_error) exceeds
+  /// end_gap_tol, the extents are refined until the gap closes at every end. Default 0.05: an
+  /// extent error of about 2.5 % is kept (half of the ±5 % peak-pressure budget of a single
+  /// patch); 0 refines every patch (the most accurate, several times the cost); a large value
+  /// (1e9) keeps every estimate. The decision is taken once per patch (StripWarmStart).
+  double end_gap_tol = 0.05;
 
   /// Ceres-style check: false and a message naming field, value and rule.
   bool valid(std::string* why) const;
@@ -92,9 +101,23 @@ struct StripResult {
   double pmax = 0.0;      ///< [Pa] min(max q, p_lim)
   double area = 0.0;      ///< [m^2] sum 2 a_i ds over loaded strips (with plastic lengthening)
   int n_bands = 0;        ///< lateral bands found at the final delta
+  double end_gap_error = NAN;  ///< the estimate's end-gap error (StripOptions::end_gap_tol), NaN if not checked
+  bool refined = false;   ///< the extents close the end gap (refined), else the estimate
   int n_outliers = 0;     ///< strips flagged by outlier_factor
   int worst_outlier = -1; ///< index into `strips` of the worst outlier, -1 if none
   std::vector<StripState> strips;  ///< loaded strips only, in increasing s
+};
+
+/// What one solve of a geometry hands to the next solve of the same geometry (another approach,
+/// another load, or the same patch on the next plane): its loaded strips as the first active
+/// set, and whether this patch's extents are refined, with the last refined solution as the
+/// start of the next refinement. The decision to refine is taken once, at the first solve, so
+/// that N(δ) stays one smooth function along an approach iteration.
+struct StripWarmStart {
+  std::vector<int> loaded;  ///< geometry indices (increasing) of the strips that carried load
+  int end_gap = -1;         ///< -1 not decided yet, 0 the estimate is kept, 1 refined extents
+  double end_gap_error = NAN;  ///< the estimate's end-gap error the decision was taken on
+  StripResult previous;     ///< the last refined solution (end_gap == 1), in this geometry's indices
 };
 
 /// Approach given. `warm`: geometry indices (increasing) of the strips expected to carry load,
@@ -121,12 +144,14 @@ class StripSolver {
   ~StripSolver();
   StripSolver(const StripSolver&) = delete;
   StripSolver& operator=(const StripSolver&) = delete;
-  StripResult at_approach(double delta, const std::vector<int>* warm = nullptr) const;
+  StripResult at_approach(double delta, StripWarmStart* warm = nullptr) const;
   /// `delta_start`: the first approach tried (e.g. a previous solve's), if above the minimum gap;
   /// else the Hertz approach of the deepest row.
-  StripResult at_load(double N, const std::vector<int>* warm = nullptr, double delta_start = NAN) const;
+  StripResult at_load(double N, StripWarmStart* warm = nullptr, double delta_start = NAN) const;
 
  private:
+  /// Load control with the estimated extents (a safeguarded secant on the approach).
+  StripResult estimate_at_load(double N, const std::vector<int>* warm, double delta_start) const;
   std::unique_ptr<strips_detail::Solver> s_;  ///< null: invalid input (why_)
   std::string why_;
   double p_lim_;

@@ -201,22 +201,31 @@ TEST_CASE("Hertz sphere: p0, semi-axes, approach (Johnson §4.2)", "[strips]") {
   const double ds = 2.0 * h.b / (across + 0.5);
   const int n = 2 * (int)(1.6 * h.b / ds) + 1;  // covers the interpenetration (sqrt(2) b) with margin
   const auto geo = ellipse_geometry(1.0 / (2.0 * R), 1.0 / (2.0 * R), ds, n);
-  const auto r = mh::solve_strips_load(geo, kH, N, INFINITY);
-  REQUIRE(r.status == mh::StripStatus::Ok);
-  const Measured m = measure(r, h.b);
-  std::printf("  sphere: p0 %.5g (ref %.5g, %+.3f%%)  a %.5g (ref %.5g, %+.3f%%)  b %.5g (%+.3f%%)  "
-              "delta %.5g (ref %.5g, %+.3f%%)  area/(pi ab) %.4f  iters %d  strips %zu\n",
-              m.p0, h.p0, 100 * (m.p0 / h.p0 - 1), m.a, h.a, 100 * (m.a / h.a - 1), m.b, 100 * (m.b / h.b - 1),
-              r.delta, h.delta, 100 * (r.delta / h.delta - 1), r.area / (kPi * h.a * h.b), r.iterations,
-              r.strips.size());
-  CHECK(std::fabs(r.N / N - 1.0) <= 1e-8);
-  CHECK(std::fabs(m.p0 / h.p0 - 1.0) < 0.01);
-  CHECK(std::fabs(m.a / h.a - 1.0) < 0.02);
-  CHECK(std::fabs(m.b / h.b - 1.0) < 0.02);
-  CHECK(std::fabs(r.delta / h.delta - 1.0) < 0.01);
-  CHECK(r.n_outliers == 0);
-  CHECK(r.n_bands == 1);
-  CHECK(r.iterations <= 8);
+  // The default (the estimate, kept: its end gap closes within end_gap_tol) and the extents
+  // refined until the gap closes at every end (end_gap_tol = 0): Hertz is exact for both.
+  for (const double tol : {0.05, 0.0}) {
+    mh::StripOptions opt;
+    opt.end_gap_tol = tol;
+    const auto r = mh::solve_strips_load(geo, kH, N, INFINITY, opt);
+    REQUIRE(r.status == mh::StripStatus::Ok);
+    const Measured m = measure(r, h.b);
+    std::printf("  sphere (end_gap_tol %g): p0 %.5g (ref %.5g, %+.3f%%)  a %.5g (ref %.5g, %+.3f%%)  b %.5g (%+.3f%%)  "
+                "delta %.5g (ref %.5g, %+.3f%%)  area/(pi ab) %.4f  end-gap error %.4f  iters %d  strips %zu\n",
+                tol, m.p0, h.p0, 100 * (m.p0 / h.p0 - 1), m.a, h.a, 100 * (m.a / h.a - 1), m.b, 100 * (m.b / h.b - 1),
+                r.delta, h.delta, 100 * (r.delta / h.delta - 1), r.area / (kPi * h.a * h.b), r.end_gap_error,
+                r.iterations, r.strips.size());
+    INFO("end_gap_tol " << tol);
+    CHECK(r.refined == (tol == 0.0));
+    CHECK(r.end_gap_error < 0.05);  // the estimate is right for Hertz
+    CHECK(std::fabs(r.N / N - 1.0) <= 1e-8);
+    CHECK(std::fabs(m.p0 / h.p0 - 1.0) < 0.01);
+    CHECK(std::fabs(m.a / h.a - 1.0) < 0.02);
+    CHECK(std::fabs(m.b / h.b - 1.0) < 0.02);
+    CHECK(std::fabs(r.delta / h.delta - 1.0) < 0.01);
+    CHECK(r.n_outliers == 0);
+    CHECK(r.n_bands == 1);
+    if (tol > 0) CHECK(r.iterations <= 8);
+  }
 }
 
 TEST_CASE("Hertz ellipses lambda = A/B in {0.1, 0.5, 2, 10} (Johnson §4.2)", "[strips]") {
@@ -230,17 +239,22 @@ TEST_CASE("Hertz ellipses lambda = A/B in {0.1, 0.5, 2, 10} (Johnson §4.2)", "[
     const double ds = 2.0 * h.b / (across + 0.5);
     const int n = 2 * (int)(2.0 * h.b / ds) + 1;
     const auto geo = ellipse_geometry(A, B, ds, n);
-    const auto r = mh::solve_strips_load(geo, kH, N, INFINITY);
-    REQUIRE(r.status == mh::StripStatus::Ok);
-    const Measured m = measure(r, h.b);
-    std::printf("  lambda %4.1f: p0 %+.3f%%  a %+.3f%%  b %+.3f%%  delta %+.3f%%  (a/b ref %.4f)  iters %d\n",
-                lambda, 100 * (m.p0 / h.p0 - 1), 100 * (m.a / h.a - 1), 100 * (m.b / h.b - 1),
-                100 * (r.delta / h.delta - 1), h.a / h.b, r.iterations);
-    INFO("lambda " << lambda);
-    CHECK(std::fabs(m.p0 / h.p0 - 1.0) < 0.01);
-    CHECK(std::fabs(m.a / h.a - 1.0) < 0.02);
-    CHECK(std::fabs(m.b / h.b - 1.0) < 0.02);
-    CHECK(r.n_outliers == 0);
+    for (const double tol : {0.05, 0.0}) {  // as for the sphere: estimate and refined extents
+      mh::StripOptions opt;
+      opt.end_gap_tol = tol;
+      const auto r = mh::solve_strips_load(geo, kH, N, INFINITY, opt);
+      REQUIRE(r.status == mh::StripStatus::Ok);
+      const Measured m = measure(r, h.b);
+      std::printf("  lambda %4.1f (end_gap_tol %g): p0 %+.3f%%  a %+.3f%%  b %+.3f%%  delta %+.3f%%  (a/b ref %.4f)  "
+                  "end-gap error %.4f  iters %d\n",
+                  lambda, tol, 100 * (m.p0 / h.p0 - 1), 100 * (m.a / h.a - 1), 100 * (m.b / h.b - 1),
+                  100 * (r.delta / h.delta - 1), h.a / h.b, r.end_gap_error, r.iterations);
+      INFO("lambda " << lambda << ", end_gap_tol " << tol);
+      CHECK(std::fabs(m.p0 / h.p0 - 1.0) < 0.01);
+      CHECK(std::fabs(m.a / h.a - 1.0) < 0.02);
+      CHECK(std::fabs(m.b / h.b - 1.0) < 0.02);
+      CHECK(r.n_outliers == 0);
+    }
   }
 }
 
@@ -403,11 +417,17 @@ TEST_CASE("active set: the answer does not depend on the starting set", "[strips
     }
     // Load control from a start far from the answer reaches the same load.
     const mh::StripSolver S(geo, kH, p_lim);
-    const auto a = S.at_load(cold.N), b = S.at_load(cold.N, &one, 1.5 * delta);
+    mh::StripWarmStart w;
+    w.loaded = one;
+    const auto a = S.at_load(cold.N), b = S.at_load(cold.N, &w, 1.5 * delta);
     REQUIRE(a.status == mh::StripStatus::Ok);
     REQUIRE(b.status == mh::StripStatus::Ok);
     CHECK(b.delta == Approx(a.delta).epsilon(1e-7));
-    CHECK(b.delta == Approx(delta).epsilon(1e-6));
+    // The elastic patch's estimate misses the end gap and is refined (a capped patch keeps its
+    // estimate); refined extents settle to 1e-4 of their sum with the load given, 1e-6 with the
+    // approach given: the two approaches agree to about 1e-5.
+    CHECK(a.refined == std::isinf(p_lim));
+    CHECK(b.delta == Approx(delta).epsilon(2e-5));
   }
 }
 
