@@ -259,12 +259,17 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   // strip method options (docs/method.md §9)
   if (j.contains("strips")) {
     const json& h = j.at("strips");
-    c.only_keys(h, "/strips", {"ds_mm", "d_comb_mm", "force_rtol", "gauss_points", "outlier_factor"});
+    c.only_keys(h, "/strips", {"ds_mm", "d_comb_mm", "force_rtol", "gauss_points", "outlier_factor", "end_gap_tol"});
     StripMethodOptions& o = cf.strips;
     if (h.contains("ds_mm")) o.ds = c.positive(h, "/strips", "ds_mm") * units::mm;
     if (h.contains("d_comb_mm")) o.d_comb = c.number(h, "/strips", "d_comb_mm") * units::mm;
     if (h.contains("force_rtol")) o.force_rtol = c.positive(h, "/strips", "force_rtol");
     if (h.contains("outlier_factor")) o.strips.outlier_factor = c.positive(h, "/strips", "outlier_factor");
+    if (h.contains("end_gap_tol")) {
+      o.strips.end_gap_tol = c.number(h, "/strips", "end_gap_tol");
+      if (!(o.strips.end_gap_tol >= 0))
+        c.fail("/strips/end_gap_tol", &h.at("end_gap_tol"), "must be >= 0 (0 refines every patch's strip extents)");
+    }
     if (h.contains("gauss_points")) {
       const long long g = c.integer(h, "/strips", "gauss_points", 2, 256, "must be an even integer in [2, 256]");
       if (g % 2 != 0) c.fail("/strips/gauss_points", &h.at("gauss_points"), "must be an even integer in [2, 256]");
@@ -348,7 +353,7 @@ nlohmann::json CaseFile::resolved_json() const {
   if (method == Method::Strips || method == Method::Auto)
     j["strips"] = {{"ds_mm", strips.ds * units::per_mm}, {"d_comb_mm", strips.d_comb * units::per_mm},
                    {"force_rtol", strips.force_rtol}, {"gauss_points", strips.strips.gauss_points},
-                   {"outlier_factor", strips.strips.outlier_factor}};
+                   {"outlier_factor", strips.strips.outlier_factor}, {"end_gap_tol", strips.strips.end_gap_tol}};
   j["solver"] = {{"rtol", solver.rtol}, {"max_iterations", solver.max_iterations},
                  {"exact_coefficients", solver.exact_coefficients}};
   j["case_order"] = cases.empty() ? "sweep: tY_mm outer, Q_kN inner" : "as listed";

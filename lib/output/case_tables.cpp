@@ -258,6 +258,12 @@ void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; num(s, P.s_centroid * units::per_mm);
     s += ','; append_number(s, static_cast<long long>(P.n_elements));
     s += ','; append_number(s, static_cast<long long>(P.iterations));
+    // Strip method: which extents the patch kept, and the estimate's end-gap error (empty for the
+    // half-space method).
+    s += ',';
+    if (std::isfinite(P.end_gap_error)) s += P.refined ? "end_gap" : "estimate";
+    s += ',';
+    if (std::isfinite(P.end_gap_error)) num(s, P.end_gap_error);
     if (plastic) {
       s += ','; num(s, P.plastic_area * units::per_mm2);
       s += ','; num(s, P.capped_load / units::kN);
@@ -308,7 +314,8 @@ std::string strips_csv_header() { return "case,tY_mm,Q_kN,patch,s_mm,y_rail_mm,x
 
 std::string patches_csv_header(bool plastic) {
   std::string s = "case,tY_mm,Q_kN,patch,y_rail_mm,z_rail_mm,y_wheel_mm,gamma_deg,N_kN,pmax_MPa,area_mm2,"
-                  "length_x_mm,width_s_mm,approach_mm,x_centroid_mm,s_centroid_mm,n_elements,iterations";
+                  "length_x_mm,width_s_mm,approach_mm,x_centroid_mm,s_centroid_mm,n_elements,iterations,extents,"
+                  "end_gap_error";
   if (plastic) s += ",plastic_area_mm2,capped_load_kN";
   return s + "\n";
 }

@@ -15,7 +15,7 @@ extract() {  # results.json -> its inputs as a case file beside it
 }
 for c in manchester manchester-plastic s1002-60e1; do
   "$bin" run "$src/cases/$c.json" -o "$tmp/$c" -q || fail "$c"
-  grep -q '"schema": "mhcontact.results/3"' "$tmp/$c/results.json" || fail "$c: schema version"
+  grep -q '"schema": "mhcontact.results/4"' "$tmp/$c/results.json" || fail "$c: schema version"
   extract "$tmp/$c/results.json" "$tmp/$c/inputs.json"
   (cd "$tmp" && "$bin" run "$c/inputs.json" -o "re_$c" -q) || fail "$c: the inputs of results.json do not run"
   for t in cases.csv ellipses.csv geometry.csv; do cmp -s "$tmp/$c/$t" "$tmp/re_$c/$t" || fail "$c: rerunning the inputs gives another $t"; done
@@ -75,9 +75,20 @@ grep -q "^1,missing,$tmp/no_such.prw," "$tmp/batch/pairs.csv" || fail "pairs.csv
 # Every column of every table is documented in the README (as `name`).
 "$bin" run "$src/cases/manchester-plastic.json" -o "$tmp/p" --pressure-grid 3 -q
 "$bin" geometry "$src/cases/manchester.json" -o "$tmp/g" -q
-for f in "$tmp/p/cases.csv" "$tmp/p/ellipses.csv" "$tmp/p/geometry.csv" "$tmp/p/pressure.csv" "$tmp/g/caf.csv" "$tmp/batch/pairs.csv" "$tmp/batch/geometry.csv"; do
+"$bin" run "$src/cases/manchester-strips.json" -o "$tmp/st" --strips -q || fail "strip run"
+for f in "$tmp/p/cases.csv" "$tmp/p/ellipses.csv" "$tmp/p/geometry.csv" "$tmp/p/pressure.csv" "$tmp/g/caf.csv" "$tmp/batch/pairs.csv" "$tmp/batch/geometry.csv" "$tmp/st/patches.csv" "$tmp/st/strips.csv"; do
   for col in $(head -1 "$f" | tr ',' ' '); do
     grep -q "\`$col\`\|[,\`]$col[,\`]" "$src/README.md" || fail "README does not document column $col of $(basename "$f")"
   done
 done
+# patches.csv of the strip method says per patch which extents it kept (the estimate, or refined
+# until the end gap closes) and the estimate's end-gap error; the half-space method leaves both empty.
+python3 - "$tmp/st/patches.csv" <<'PY' || fail "patches.csv: extents / end_gap_error"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert rows and all(r["extents"] in ("estimate", "end_gap") for r in rows), {r["extents"] for r in rows}
+assert all(float(r["end_gap_error"]) >= 0 for r in rows)
+assert all((r["extents"] == "end_gap") == (float(r["end_gap_error"]) > 0.05) for r in rows)
+assert any(r["extents"] == "end_gap" for r in rows) and any(r["extents"] == "estimate" for r in rows)
+PY
 exit $fails
