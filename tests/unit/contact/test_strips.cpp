@@ -192,6 +192,16 @@ TEST_CASE("strip influence matches brute-force 2-D quadrature", "[strips]") {
   }
 }
 
+namespace {
+/// Load control, elastic, with the given end_gap_tol: 0.05 (the default: the estimated extents,
+/// kept where their end gap closes within it) or 0 (the extents refined on every patch).
+mh::StripResult solve_with_end_gap_tol(const mh::StripGeometry& geo, double N, double tol) {
+  mh::StripOptions opt;
+  opt.end_gap_tol = tol;
+  return mh::solve_strips_load(geo, kH, N, INFINITY, opt);
+}
+}  // namespace
+
 TEST_CASE("Hertz sphere: p0, semi-axes, approach (Johnson §4.2)", "[strips]") {
   const double R = 0.3, N = 50e3;
   const HertzRef h = hertz_ref(1.0 / (2.0 * R), 1.0 / (2.0 * R), N, kEstar);
@@ -204,9 +214,7 @@ TEST_CASE("Hertz sphere: p0, semi-axes, approach (Johnson §4.2)", "[strips]") {
   // The default (the estimate, kept: its end gap closes within end_gap_tol) and the extents
   // refined until the gap closes at every end (end_gap_tol = 0): Hertz is exact for both.
   for (const double tol : {0.05, 0.0}) {
-    mh::StripOptions opt;
-    opt.end_gap_tol = tol;
-    const auto r = mh::solve_strips_load(geo, kH, N, INFINITY, opt);
+    const auto r = solve_with_end_gap_tol(geo, N, tol);
     REQUIRE(r.status == mh::StripStatus::Ok);
     const Measured m = measure(r, h.b);
     std::printf("  sphere (end_gap_tol %g): p0 %.5g (ref %.5g, %+.3f%%)  a %.5g (ref %.5g, %+.3f%%)  b %.5g (%+.3f%%)  "
@@ -240,9 +248,7 @@ TEST_CASE("Hertz ellipses lambda = A/B in {0.1, 0.5, 2, 10} (Johnson §4.2)", "[
     const int n = 2 * (int)(2.0 * h.b / ds) + 1;
     const auto geo = ellipse_geometry(A, B, ds, n);
     for (const double tol : {0.05, 0.0}) {  // as for the sphere: estimate and refined extents
-      mh::StripOptions opt;
-      opt.end_gap_tol = tol;
-      const auto r = mh::solve_strips_load(geo, kH, N, INFINITY, opt);
+      const auto r = solve_with_end_gap_tol(geo, N, tol);
       REQUIRE(r.status == mh::StripStatus::Ok);
       const Measured m = measure(r, h.b);
       std::printf("  lambda %4.1f (end_gap_tol %g): p0 %+.3f%%  a %+.3f%%  b %+.3f%%  delta %+.3f%%  (a/b ref %.4f)  "
