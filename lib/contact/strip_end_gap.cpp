@@ -13,8 +13,8 @@
 // The extents and the amplitudes are found together: the extents are a fixed point
 // a ↦ sqrt((δ − g − u_end(a, q(a))) / A), q(a) the collocation at those extents, iterated from
 // the estimate with Anderson acceleration (Walker & Ni, SIAM J. Numer. Anal. 49 (2011) 1715–1735;
-// the plain iteration contracts by only about 0.75 per pass at a patch's tail, where a short strip
-// and its neighbours adjust to each other). With the load given, each pass also solves for the
+// the plain iteration contracts by only about 0.75–0.85 per pass at a strip shorter than its
+// neighbours: its end lies where they keep the surfaces together, and the condition barely moves it). With the load given, each pass also solves for the
 // approach at its extents (N is piecewise linear in δ at fixed extents: a secant on one
 // factorisation), so that every pass carries the load exactly.
 #include "contact/strip_collocation.hpp"
@@ -50,10 +50,6 @@ double load(const Collocation& c, double ds) {
     if (c.q[ii] > 0) N += 0.5 * kPi * c.q[ii] * c.a[ii] * ds;
   return N;
 }
-
-}  // namespace
-
-namespace {
 
 /// A loaded strip as a source of displacement: geometry index, half-length as loaded, amplitude,
 /// flat top (rcap < 1: capped at p_lim = rcap q).
@@ -93,14 +89,12 @@ void drops(const Solver& S, const std::vector<int>& field, const std::vector<dou
   }
 }
 
-}  // namespace
-
 /// The end-gap extents of a collocation's strips (per geometry strip, zero outside the contact):
-/// loaded elastic strips from A a² = δ − g − u_end at their ends; capped strips the same at their
-/// lengthened end, then shortened back by Φ(r)/(π/2) (their load rule, §9 item 6); unloaded
-/// strips the length over which their centre is still interpenetrated (zero when it is not: the
-/// widening rule of item 7, the limit of the end rule for a strip entering the patch).
-static void end_extents(const Solver& S, double delta, const Collocation& c, std::vector<double>& anew) {
+/// loaded elastic strips from A a² = δ − g − u_end at their ends; capped strips keep theirs (the
+/// plastic law sets a capped strip's length from its load, §9 item 6); unloaded strips the length
+/// over which their centre is still interpenetrated (zero when it is not: the widening rule of
+/// item 7, the limit of the end rule for a strip entering the patch).
+void end_extents(const Solver& S, double delta, const Collocation& c, std::vector<double>& anew) {
   const StripGeometry& geo = S.geo;
   const int m = static_cast<int>(c.cand.size());
   std::fill(anew.begin(), anew.end(), 0.0);
@@ -119,21 +113,22 @@ static void end_extents(const Solver& S, double delta, const Collocation& c, std
   std::vector<int> field;
   std::vector<double> end, D;
   for (int ii = 0; ii < m; ++ii)
-    if (c.q[ii] > 0) { field.push_back(c.cand[ii]); end.push_back(c.aeff[ii]); }
+    if (c.q[ii] > 0 && !c.capped[ii]) { field.push_back(c.cand[ii]); end.push_back(c.a[ii]); }
   drops(S, field, end, src, D);
   for (int ii = 0, k = 0; ii < m; ++ii) {
     const int i = c.cand[ii];
-    const bool loaded = c.q[ii] > 0;
-    const double drop = loaded ? D[k++] : 0.0;
-    if (!(geo.g[i] < delta)) continue;
-    if (c.capped[ii]) {  // the plastic law sets its length from its load (§9 item 6): kept
+    if (c.capped[ii]) {  // kept
       anew[i] = c.a[ii];
       continue;
     }
+    const double drop = c.q[ii] > 0 ? D[k++] : 0.0;  // none for an unloaded strip: its centre decides
+    if (!(geo.g[i] < delta)) continue;
     const double pen = delta - geo.g[i] - u(ii) + drop;
     anew[i] = pen > 0 ? std::sqrt(pen / geo.A[i]) : 0.0;
   }
 }
+
+}  // namespace
 
 double Solver::end_gap_error(const StripResult& r, double p_lim) const {
   std::vector<int> field;
