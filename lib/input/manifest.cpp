@@ -17,7 +17,8 @@ bool is_manifest(const json& j) {
 
 namespace {
 
-const std::vector<std::string> kCommonKeys = {"track", "geometry", "material", "model", "sweep", "cases", "solver"};
+const std::vector<std::string> kCommonKeys = {"track", "geometry", "material", "model", "method", "half_space", "strips",
+                                               "sweep", "cases", "solver"};
 
 std::string label(const json& spec) {
   if (spec.is_string()) return std::filesystem::path(spec.get<std::string>()).filename().string();
@@ -67,11 +68,13 @@ Manifest parse_manifest(const json& j, const std::string& path) {
   };
   if (!j.is_object()) fail("/", &j, "must be an object");
   static const std::vector<std::string> allowed = {"pairs", "wheels", "rails", "inclination", "nominal_radius_mm", "track",
-                                                   "geometry", "material", "model", "sweep", "cases", "solver", "comment"};
+                                                   "geometry", "material", "model", "method", "half_space", "strips",
+                                                   "sweep", "cases", "solver", "comment"};
   for (auto it = j.begin(); it != j.end(); ++it)
     if (std::find(allowed.begin(), allowed.end(), it.key()) == allowed.end())
       fail("/" + it.key(), nullptr, "unknown key in a manifest",
-           "allowed: pairs, wheels, rails, inclination, nominal_radius_mm, track, geometry, material, model, sweep, cases, solver, comment");
+           "allowed: pairs, wheels, rails, inclination, nominal_radius_mm, track, geometry, material, model, method, "
+           "half_space, strips, sweep, cases, solver, comment");
   if (!j.contains("inclination"))
     fail("/inclination", nullptr, "required: \"as-is\", \"none\", \"1:40\" or \"1:20\", for every rail of the batch");
   if (j.contains("pairs") && (j.contains("wheels") || j.contains("rails")))

@@ -1,5 +1,5 @@
 #pragma once
-// Batch manifests: one sweep, material and model over many wheel–rail profile pairs (a fleet of
+// Batch manifests: one sweep, material, model and method over many wheel–rail profile pairs (a fleet of
 // measured wheels × rail sections). Geometry is built once per pair; a pair whose profiles
 // cannot be read or placed is reported in its rows and the batch goes on.
 //
@@ -8,7 +8,9 @@
 //     "wheels": [PROFILE or "glob/*.whl", ...], "rails": [...],          // every wheel × every rail
 //     "inclination": "as-is" | "none" | "1:40" | "1:20",                 // required, for all rails
 //     "nominal_radius_mm": 460, "track": {...}, "geometry": {...}, "material": {...},
-//     "model": "elastic", "sweep": {...} | "cases": [...], "solver": {...}, "comment": "..."
+//     "model": "elastic", "method": "multi-hertzian" | "strips" | "half-space" | "auto",
+//     "half_space": {...}, "strips": {...},                              // the method's options
+//     "sweep": {...} | "cases": [...], "solver": {...}, "comment": "..."
 //   }
 // PROFILE is what a case file accepts under wheel.profile / rail.profile; a string with * ? or [
 // is a glob, relative to the manifest, expanded in sorted order (no match is an error).
