@@ -67,6 +67,8 @@ void drops(const Solver& S, const std::vector<int>& field, const std::vector<dou
   D.assign(nf, 0.0);
   if (nf == 0) return;
   std::vector<StripDropR> R;
+  std::vector<int> kk(nf);
+  std::vector<double> t(nf);
   for (const Source& sj : src) {
     if (!(sj.a > 0) || !(sj.q > 0)) continue;
     if (sj.rcap < 1.0 || !S.same_xc) {
@@ -81,11 +83,11 @@ void drops(const Solver& S, const std::vector<int>& field, const std::vector<dou
     const double la = std::log2(sj.a);
     for (int k = kmin; k <= kmax + 1; ++k)
       R[k - kmin] = strip_kernel_drop_prepare((k - 0.5) * geo.ds / sj.a, S.log2_edge[k + S.n] - la);
-    const double f = S.H * sj.q * sj.a;
-    for (int kk = 0; kk < nf; ++kk) {
-      const int k = sj.j - field[kk] - kmin;
-      D[kk] += f * strip_kernel_drop_diff(R[k + 1], R[k], end[kk] / sj.a);
+    for (int i = 0; i < nf; ++i) {
+      kk[i] = sj.j - field[i] - kmin;
+      t[i] = end[i] / sj.a;
     }
+    strip_kernel_drop_diffs(R.data(), kk.data(), t.data(), nf, S.H * sj.q * sj.a, D.data());
   }
 }
 

@@ -351,6 +351,23 @@ double strip_kernel_drop_diff(const StripDropR& R2, const StripDropR& R1, double
   return R2.sign * drop_unsigned(R2, t, ti, bu) - R1.sign * drop_unsigned(R1, t, ti, bu);
 }
 
+void strip_kernel_drop_diffs(const StripDropR* R, const int* k, const double* t, int n, double f, double* out) {
+  const DropTable& T = drop_table();
+  for (int i = 0; i < n; ++i) {
+    const StripDropR& R1 = R[k[i]];
+    const StripDropR& R2 = R[k[i] + 1];
+    const double ti = std::fabs(t[i]);
+    if (ti > 0 && ti <= kTmax && R1.kind == StripDropR::Table && R2.kind == StripDropR::Table) {
+      int c;
+      double bu[4];
+      T.t_basis(ti, &c, bu);
+      out[i] += f * (R2.sign * T.eval(c, bu, R2.j, R2.bw) - R1.sign * T.eval(c, bu, R1.j, R1.bw));
+    } else {
+      out[i] += f * strip_kernel_drop_diff(R2, R1, ti);
+    }
+  }
+}
+
 double strip_kernel_drop(double t, double r) {
   return strip_kernel_drop(strip_kernel_drop_prepare(r), t);
 }

@@ -71,5 +71,7 @@ StripDropR strip_kernel_drop_prepare(double r, double log2_abs_r);
 double strip_kernel_drop(const StripDropR& R, double t);
 /// E(t, R2.r) − E(t, R1.r): the drop across one strip's width, with the t half shared.
 double strip_kernel_drop_diff(const StripDropR& R2, const StripDropR& R1, double t);
+/// The same for one strip seen from n points: out[i] += f (E(t[i], R[k[i] + 1].r) − E(t[i], R[k[i]].r)).
+void strip_kernel_drop_diffs(const StripDropR* R, const int* k, const double* t, int n, double f, double* out);
 
 }  // namespace mh

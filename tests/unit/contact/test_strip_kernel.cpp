@@ -150,6 +150,11 @@ TEST_CASE("strip kernel drop E(t, r): table against quadrature", "[strips][kerne
     // The prepared form is the same function.
     const auto R1 = mh::strip_kernel_drop_prepare(r1), R2 = mh::strip_kernel_drop_prepare(r2);
     REQUIRE(mh::strip_kernel_drop_diff(R2, R1, t) == Approx(got).margin(1e-15 * scale + 1e-300));
+    const mh::StripDropR RR[2] = {R1, R2};
+    const int k0 = 0;
+    double acc = 1.0;  // accumulated into, scaled by f = 2
+    mh::strip_kernel_drop_diffs(RR, &k0, &t, 1, 2.0, &acc);
+    REQUIRE(acc == Approx(1.0 + 2.0 * got).margin(1e-14 * scale + 1e-300));
   }
   std::printf("  strip kernel drop: worst difference from quadrature %.2e of the centre-line value\n", worst);
 }
