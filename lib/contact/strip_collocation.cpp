@@ -141,9 +141,6 @@ double Solver::K_elastic(int i, int j, double aj) const {
 double Solver::K_end(int i, double ai, int j, double aj, double rcap) const {
   if (!(aj > 0.0)) return 0.0;
   const double e1 = geo.s[j] - 0.5 * geo.ds - geo.s[i], e2 = e1 + geo.ds;
-  if (same_xc && rcap >= 1.0)  // the centre-line kernel less its drop to the end (strip_kernel.hpp)
-    return H * aj * (strip_kernel_g(e2 / aj) - strip_kernel_g(e1 / aj) -
-                     (strip_kernel_drop(ai / aj, e2 / aj) - strip_kernel_drop(ai / aj, e1 / aj)));
   const double X = geo.xc[i] - geo.xc[j];
   return 0.5 * H * (influence(X + ai, aj, e1, e2, rcap, gx, gw) + influence(X - ai, aj, e1, e2, rcap, gx, gw));
 }
@@ -303,9 +300,7 @@ StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>*
     if (!widened) break;
     for (int ii = 0; ii < m; ++ii) start[ii] = c.q[ii] > 0.0 || c.capped[ii];
   }
-  res = assemble(delta, p_lim, c);
-  res.n_bands = nb;
-  return res;
+  return assemble(delta, p_lim, c);
 }
 
 StripResult Solver::assemble(double delta, double p_lim, const Collocation& c) const {

@@ -59,7 +59,8 @@ struct Solver : StripExtents {
   /// Influence coefficient K_ij of an uncapped strip j of half-length aj at the centre of strip i.
   double K_elastic(int i, int j, double aj) const;
   /// Displacement at the ends of strip i (half-length ai, mean of x = c_i ± ai) from strip j of
-  /// half-length aj and unit amplitude, flat-topped at rcap (< 1) [m/Pa].
+  /// half-length aj and unit amplitude, flat-topped at rcap (< 1), by quadrature [m/Pa]: for
+  /// capped strips and unequal row centres (the elastic, no-yaw case reads the tabulated drop).
   double K_end(int i, double ai, int j, double aj, double rcap) const;
 
   /// Build c.K for c.a (the columns whose extent differs from `built`, all when it is empty).

@@ -21,6 +21,11 @@ static_assert((kPerBinade & (kPerBinade - 1)) == 0, "kPerBinade must be a power 
 // Small r: g(r) = 2r ln(4/r) + O(r³ ln r) (from g'(r) = 2 (ln(4/r) − 1) + O(r² ln r)).
 double g_small(double r) { return 2.0 * r * std::log(4.0 / r); }
 
+// 8-point Gauss–Legendre on [−1, 1] (the positive half): the 1-D table's integral of g' and the
+// panels of the off-centre quadrature.
+constexpr double kGx[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+constexpr double kGw[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+
 struct Table {
   // Per interval i (binade E = kEmin + i / kPerBinade, r from 2^E (1 + j/kPerBinade), j = i mod
   // kPerBinade): g at both ends and g' at both ends times the interval's width, for the Hermite
@@ -31,16 +36,13 @@ struct Table {
   Table() {
     const int n = (kEmax - kEmin) * kPerBinade;
     iv.resize(n);
-    // 8-point Gauss–Legendre on [−1, 1].
-    static const double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-    static const double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
     double r0 = std::ldexp(1.0, kEmin), g0 = g_small(r0), dg0 = strip_kernel_dg(r0);
     for (int i = 0; i < n; ++i) {
       const int E = kEmin + i / kPerBinade;
       const double h = std::ldexp(1.0, E) / kPerBinade, r1 = r0 + h, mid = r0 + 0.5 * h;
       double acc = 0;
       for (int k = 0; k < 4; ++k)
-        acc += w[k] * (strip_kernel_dg(mid - 0.5 * h * x[k]) + strip_kernel_dg(mid + 0.5 * h * x[k]));
+        acc += kGw[k] * (strip_kernel_dg(mid - 0.5 * h * kGx[k]) + strip_kernel_dg(mid + 0.5 * h * kGx[k]));
       const double g1 = g0 + 0.5 * h * acc, dg1 = strip_kernel_dg(r1);
       iv[i] = {g0, g1, dg0 * h, dg1 * h};
       r0 = r1;
@@ -107,10 +109,6 @@ void log_potential(double t, double* L, double* dL) {
   *L = c * (t * t - 0.5 - std::log(2.0) - t * s + std::log(t + s));
   *dL = c * (2 * t - s - t * t / s + 1 / s);
 }
-
-// 8-point Gauss–Legendre on [−1, 1] (the positive half).
-constexpr double kGx[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-constexpr double kGw[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
 
 // The table of E(t, r) (header): t nodes graded towards t = 1, r nodes uniform in ln r.
 constexpr int kPt = 4;               // cells per binade of |1 − t|
@@ -337,12 +335,14 @@ double strip_kernel_drop(const StripDropR& R, double t) {
   return R.sign * drop_unsigned(R, t, ti, bu);
 }
 
-double strip_kernel_drop_diff(const StripDropR& R2, const StripDropR& R1, double t) {
+namespace {
+
+/// E(t, R2.r) − E(t, R1.r) with the table T, the t half of the interpolation shared.
+double drop_diff(const DropTable& T, const StripDropR& R2, const StripDropR& R1, double t) {
   t = std::fabs(t);
   if (std::isnan(t)) return NAN;
   int ti = 0;
   double bu[4] = {0, 0, 0, 0};
-  const DropTable& T = drop_table();
   if (t <= kTmax) {
     T.t_basis(t, &ti, bu);
     if (R2.kind == StripDropR::Table && R1.kind == StripDropR::Table && t > 0)  // the common case
@@ -351,21 +351,15 @@ double strip_kernel_drop_diff(const StripDropR& R2, const StripDropR& R1, double
   return R2.sign * drop_unsigned(R2, t, ti, bu) - R1.sign * drop_unsigned(R1, t, ti, bu);
 }
 
+}  // namespace
+
+double strip_kernel_drop_diff(const StripDropR& R2, const StripDropR& R1, double t) {
+  return drop_diff(drop_table(), R2, R1, t);
+}
+
 void strip_kernel_drop_diffs(const StripDropR* R, const int* k, const double* t, int n, double f, double* out) {
-  const DropTable& T = drop_table();
-  for (int i = 0; i < n; ++i) {
-    const StripDropR& R1 = R[k[i]];
-    const StripDropR& R2 = R[k[i] + 1];
-    const double ti = std::fabs(t[i]);
-    if (ti > 0 && ti <= kTmax && R1.kind == StripDropR::Table && R2.kind == StripDropR::Table) {
-      int c;
-      double bu[4];
-      T.t_basis(ti, &c, bu);
-      out[i] += f * (R2.sign * T.eval(c, bu, R2.j, R2.bw) - R1.sign * T.eval(c, bu, R1.j, R1.bw));
-    } else {
-      out[i] += f * strip_kernel_drop_diff(R2, R1, ti);
-    }
-  }
+  const DropTable& T = drop_table();  // once, not per point
+  for (int i = 0; i < n; ++i) out[i] += f * drop_diff(T, R[k[i] + 1], R[k[i]], t[i]);
 }
 
 double strip_kernel_drop(double t, double r) {

@@ -19,16 +19,16 @@
 // Off the centre line, the strip solver needs the displacement at the ends of the strips (their
 // extents follow from a closed deformed gap there, §9 item 3). It uses the drop of the kernel from
 // the centre line, E(t, r) = g(r) − G(t, r), a function of two variables, tabulated once per
-// process (about 20 ms) and read by bicubic Hermite interpolation:
+// process (about 25 ms) and read by bicubic Hermite interpolation:
 //   - in t, cells graded towards the strip's end t = 1, where G has a boundary layer of width r
 //     and a (1 − t)^{3/2} singularity: 4 cells per binade of |1 − t| from 2^-22 to 1 inside the
 //     strip and to 128 beyond it (t ≤ 129);
 //   - in v = ln r, 4 cells per binade from r = 2^-16 to 2^12.
 // Node values and their derivatives (∂t, ∂r, ∂t∂r) come from strip_kernel_G_quadrature. The
 // subtraction of g makes E bounded at large r (E → L(t) − L(0), L below), so that the difference
-// E(t, r2) − E(t, r1) of two close lateral edges keeps its digits: measured within 3e-5 of
-// quadrature relative to the centre-line value g(r2) − g(r1), over t in [0, 9] and strips 1 to
-// 20 widths away. Outside the table: t > 129 by Gauss–Chebyshev quadrature of G (analytic on the
+// E(t, r2) − E(t, r1) of two close lateral edges keeps its digits: measured within 2.2e-5 of
+// quadrature relative to the centre-line value g(r2) − g(r1), over t in [0, 12] and strips from
+// the point's own to 21 widths away (test_strip_kernel.cpp). Outside the table: t > 129 by Gauss–Chebyshev quadrature of G (analytic on the
 // strip there), r > 2^12 by the limit L(t) − L(0) (error below r⁻² ≈ 6e-8), r < 2^-16 by
 // quadrature.
 
