@@ -70,6 +70,35 @@ TEST_CASE("strip method against CONTACT on the Manchester sweep at Q = 50 kN", "
   }
 }
 
+TEST_CASE("small flange patches: strips against a converged half-space reference", "[strips]") {
+  // Manchester pair, Q = 10 kN, t_Y = 8 and 8.5 mm: flange patches 13-16 mm² across 8-12 strips of
+  // 0.2 mm. Against the half-space solver on its 0.2 mm grid the strip areas look 8.5 % low, but
+  // that reference is not converged: the element-count area of a grid solution falls as the grid is
+  // refined (17.04, 16.46, 16.10, 15.88 mm² at 0.2, 0.1, 0.05, 0.025 mm for t_Y = 8 mm) and the
+  // strips (15.58 mm² at 0.2 mm, 15.98 at 0.05 mm) sit at its limit. Reference: the half-space
+  // solver at dx = ds = 0.025 mm (64 times the elements). Measured: strips area -1.9 % and
+  // +3.3 %, pmax +0.2 % and +0.9 %, approach -1.0 % and -0.0 % (docs/strips.md).
+  const Fixture& F = manchester();
+  mh::HalfSpaceOptions fine;
+  fine.dx = fine.ds = 0.025e-3;
+  const mh::HalfSpaceOptions coarse;  // 0.2 mm, the default grid
+  for (double tY : {8.0, 8.5}) {
+    INFO("t_Y = " << tY << " mm");
+    const mh::CaseResult ref = mh::solve_half_space(F.pg.geo, F.cf.material, tY * 1e-3, 10e3, fine);
+    const mh::CaseResult hs = mh::solve_half_space(F.pg.geo, F.cf.material, tY * 1e-3, 10e3, coarse);
+    const mh::CaseResult st = mh::solve_strip_method(F.pg.geo, F.cf.material, tY * 1e-3, 10e3, F.cf.strips);
+    REQUIRE(ref.status == mh::CaseStatus::Ok);
+    REQUIRE(hs.status == mh::CaseStatus::Ok);
+    REQUIRE(st.status == mh::CaseStatus::Ok);
+    CHECK(st.area == Approx(ref.area).epsilon(0.04));
+    CHECK(st.pmax == Approx(ref.pmax).epsilon(0.02));
+    CHECK(st.approach == Approx(ref.approach).epsilon(0.02));
+    // The coarse reference's area is the larger by 7-13 %: the 8.5 % of the 99-case comparison
+    // (docs/strips.md) is the reference's grid, not the strips'.
+    CHECK(hs.area > 1.05 * ref.area);
+  }
+}
+
 TEST_CASE("strip method against the half-space solver on S1002 / 60E1 1:40", "[strips]") {
   mh::CaseFile cf = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/s1002-60e1.json", true);
   const mh::PairGeometry pg = mh::build_pair_geometry(cf);
