@@ -81,35 +81,11 @@ class StripPatch : public PatchSolver {
     // tail strips a fraction of a strip off, and cost passes).
     warm_.end_gap = o->warm_.end_gap;
     warm_.end_gap_error = o->warm_.end_gap_error;
-    const auto& old = o->last.strips;
-    if (warm_.end_gap == 1 && o->last.refined && !old.empty()) {
-      for (int j = 0; j < static_cast<int>(n); ++j) {
-        const double y = P.y_ref + geo.s[j] * c;
-        const double so = (y - o->P.y_ref) / std::cos(o->P.gamma);  // on the previous plane
-        auto hi = std::lower_bound(old.begin(), old.end(), so, [](const StripState& a, double v) { return a.s < v; });
-        // Beyond the first or last loaded strip by less than a strip width: that strip's values
-        // (a tail strip must not be lost: the refinement keeps a strip only if it starts loaded).
-        if (hi == old.begin() || hi == old.end()) {
-          const StripState& e = hi == old.begin() ? old.front() : old.back();
-          if (!(std::fabs(so - e.s) < o->geo.ds)) continue;
-          StripState st = e;
-          st.index = j;
-          st.s = geo.s[j];
-          warm_.previous.strips.push_back(st);
-          continue;
-        }
-        const StripState& a = *(hi - 1);
-        const StripState& b = *hi;
-        if (b.index != a.index + 1) continue;  // not across a gap between bands
-        const double w = (so - a.s) / (b.s - a.s);
-        StripState st = w < 0.5 ? a : b;
-        st.index = j;
-        st.s = geo.s[j];
-        st.a = (1 - w) * a.a + w * b.a;
-        st.q = (1 - w) * a.q + w * b.q;
-        st.plastic = a.plastic && b.plastic;
-        warm_.previous.strips.push_back(st);
-      }
+    if (warm_.end_gap == 1 && o->last.refined && !o->last.strips.empty()) {
+      std::vector<double> s_old(geo.s.size());
+      for (std::size_t j = 0; j < geo.s.size(); ++j)
+        s_old[j] = (P.y_ref + geo.s[j] * c - o->P.y_ref) / std::cos(o->P.gamma);  // same rail y
+      warm_.previous.strips = map_strips(o->last.strips, o->geo.ds, s_old, geo.s);
     }
     warm_.previous.delta = delta_start_;
   }

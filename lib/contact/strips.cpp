@@ -78,6 +78,40 @@ std::vector<int> loaded_strips(const StripResult& r) {
   return v;
 }
 
+std::vector<StripState> map_strips(const std::vector<StripState>& old, double ds_old,
+                                   const std::vector<double>& s_old, const std::vector<double>& s_new) {
+  std::vector<StripState> out;
+  if (old.empty()) return out;
+  for (std::size_t j = 0; j < s_old.size() && j < s_new.size(); ++j) {
+    const double so = s_old[j];
+    auto hi = std::lower_bound(old.begin(), old.end(), so, [](const StripState& a, double v) { return a.s < v; });
+    StripState st;
+    if (hi == old.begin() || hi == old.end()) {
+      const StripState& e = hi == old.begin() ? old.front() : old.back();
+      if (!(std::fabs(so - e.s) < ds_old)) continue;
+      st = e;
+    } else {
+      const StripState& a = *(hi - 1);
+      const StripState& b = *hi;
+      if (b.index != a.index + 1) {  // a gap between bands (two strips wide at least): its tails
+        if (so - a.s < ds_old) st = a;
+        else if (b.s - so < ds_old) st = b;
+        else continue;
+      } else {
+        const double w = (so - a.s) / (b.s - a.s);
+        st = w < 0.5 ? a : b;
+        st.a = (1 - w) * a.a + w * b.a;
+        st.q = (1 - w) * a.q + w * b.q;
+        st.plastic = a.plastic && b.plastic;
+      }
+    }
+    st.index = static_cast<int>(j);
+    st.s = s_new[j];
+    out.push_back(st);
+  }
+  return out;
+}
+
 bool StripOptions::valid(std::string* why) const {
   std::ostringstream os;
   if (gauss_points < 2 || gauss_points % 2 != 0) {

@@ -160,6 +160,18 @@ class StripSolver {
 /// The geometry indices of a result's loaded strips (increasing): a warm start's active set.
 std::vector<int> loaded_strips(const StripResult& r);
 
+/// A solution's strips carried onto another strip geometry of the same patch (the patch on a
+/// new placement of its plane): the start of the next refinement of the extents
+/// (StripWarmStart::previous). New strip j has its centre at `s_new[j]`, which is `s_old[j]` in
+/// the old geometry's coordinate (the same rail y). Its half-length and amplitude are
+/// interpolated linearly between the two old loaded strips around it, never across a gap
+/// between bands (non-adjacent old indices); a new strip beyond the end of a band by less than
+/// `ds_old` takes its end strip's values, so that a tail strip is not lost (the refinement keeps
+/// a strip only if it starts with an extent). `old` in increasing s; the
+/// result in increasing new index, index and s of the new geometry.
+std::vector<StripState> map_strips(const std::vector<StripState>& old, double ds_old,
+                                   const std::vector<double>& s_old, const std::vector<double>& s_new);
+
 namespace strips_detail {
 /// Integral over one strip of f(t)/r, f(t) = min(sqrt(1 - t^2), r_cap),
 /// t = (xi - c_j)/a_j, for a point at x-offset X0 = x_i - c_j and lateral
