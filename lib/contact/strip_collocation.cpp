@@ -165,7 +165,12 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
   // which it was capped and is lengthened to a'_j = a_j (pi/2)/Phi(r_j),
   // r_j = p_lim/q_j; its pressure is min(q_j sqrt(1 - ((x-c)/a'_j)^2), p_lim):
   // flat top at p_lim, load q_j a'_j Phi(r_j) ds = (pi/2) q_j a_j ds (the
-  // elastic strip's load). Its displacement equation is dropped.
+  // elastic strip's load). Its displacement equation is dropped. The length
+  // never exceeds the strip's overlap, a'_j <= sqrt((delta - g_j)/A_j): the
+  // displacements are compressive, so the surfaces touch only where they
+  // interpenetrate rigidly (docs/method.md §9 item 6). A strip held there
+  // carries q_j a'_j Phi(r_j) ds, less than its elastic load; the approach
+  // rises until the patch carries its load, as in the rigid-plastic limit.
   c.capped.assign(m, 0);
   c.q.assign(m, 0.0);
   c.aeff = c.a;
@@ -214,8 +219,10 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
           c.capped[ii] = 1;
           any = true;
           c.rcap[ii] = p_lim / c.q[ii];
-          c.aeff[ii] = c.a[ii] * (0.5 * kPi) / Phi(c.rcap[ii]);
           const int j = c.cand[ii];
+          const double pen = delta - geo.g[j];
+          c.aeff[ii] = std::min(c.a[ii] * (0.5 * kPi) / Phi(c.rcap[ii]), std::sqrt(std::max(pen, 0.0) / geo.A[j]));
+          c.aeff[ii] = std::max(c.aeff[ii], c.a[ii]);  // never shorter than its elastic extent
           for (int r = 0; r < m; ++r) {
             if (!opt.coupling && r != ii) continue;
             const int i = c.cand[r];
@@ -338,10 +345,14 @@ StripResult Solver::assemble(double delta, double p_lim, const Collocation& c) c
     res.status = StripStatus::NoContact;
     res.message = "all amplitudes non-positive";
   }
-  // Outliers: amplitude above every neighbour's (same band, adjacent strip)
+  // Outliers: peak pressure above every neighbour's (same band, adjacent strip)
   // by more than outlier_factor — the thin-tail failure mode of short strips.
+  // The peak of a capped strip is p_lim, not its elastic amplitude: the
+  // amplitude of a strongly capped strip sets neither its pressure nor, held
+  // at its overlap, much of its load.
   double worst = 0.0;
   const int L = static_cast<int>(res.strips.size());
+  auto peak = [&](int k) { return std::min(res.strips[k].q, p_lim); };
   for (int k = 0; k < L; ++k) {
     double qn = -1.0;
     for (int d : {-1, 1}) {
@@ -349,12 +360,12 @@ StripResult Solver::assemble(double delta, double p_lim, const Collocation& c) c
       if (o < 0 || o >= L) continue;
       if (res.strips[o].band != res.strips[k].band || std::abs(res.strips[o].index - res.strips[k].index) != 1)
         continue;
-      qn = std::max(qn, res.strips[o].q);
+      qn = std::max(qn, peak(o));
     }
     if (qn < 0.0) continue;
-    if (res.strips[k].q > opt.outlier_factor * qn) {
+    if (peak(k) > opt.outlier_factor * qn) {
       ++res.n_outliers;
-      const double ratio = res.strips[k].q / std::max(qn, std::numeric_limits<double>::min());
+      const double ratio = peak(k) / std::max(qn, std::numeric_limits<double>::min());
       if (ratio > worst) { worst = ratio; res.worst_outlier = k; }
     }
   }

@@ -3,7 +3,8 @@
 // sum_j K_ij q_j = delta - h(c_i, s_i), with the full influence matrix (contact/strip_influence.hpp,
 // contact/strip_kernel.hpp), an active set for q >= 0 (a complementarity problem, one
 // factorisation per set of extents), the plastic cap at p_lim (capped strips keep their elastic
-// amplitude, drop their displacement equation and are lengthened), the load and the outlier flag.
+// amplitude, drop their displacement equation and are lengthened, within their overlap), the
+// load and the outlier flag.
 //
 // Two ways to the strip extents:
 //  - the estimate (evaluate): the rigid-geometry rules of contact/strip_extents.hpp, with strips
@@ -36,7 +37,7 @@ struct Collocation {
   std::vector<double> a;        ///< [m] their extents (for capped strips: before lengthening)
   Eigen::MatrixXd K;            ///< elastic influence among cand, unit amplitude [m/Pa]; zero column for a = 0
   std::vector<double> q;        ///< [Pa] amplitudes (capped strips: the elastic amplitude at capping)
-  std::vector<double> aeff;     ///< [m] extents as loaded (capped strips lengthened)
+  std::vector<double> aeff;     ///< [m] extents as loaded (capped strips lengthened, at most to their overlap)
   std::vector<double> rcap;     ///< p_lim / q for capped strips, 1 otherwise
   std::vector<char> capped;     ///< flat-topped at p_lim
   Eigen::MatrixXd Ucap;         ///< [m] column jj: displacement at the centres from capped strip jj

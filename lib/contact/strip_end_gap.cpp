@@ -45,12 +45,12 @@ constexpr double kAreaRtolApproach = 1e-6; // … tighter with the approach give
                                            //   force balance across patches (contact/patch_driver.hpp)
 constexpr int kMaxLoadSteps = 40;          // secant steps on the approach at fixed extents
 
-/// The load of a collocation [N]: (π/2) q_i a_i ds per strip (capped strips keep the load of
-/// their elastic semi-ellipse, §9 item 6).
+/// The load of a collocation [N]: (π/2) q_i a_i ds per elastic strip, q_i a'_i Φ(r_i) ds per
+/// capped one (§9 item 6: its elastic load unless its overlap holds it shorter).
 double load(const Collocation& c, double ds) {
   double N = 0;
   for (std::size_t ii = 0; ii < c.cand.size(); ++ii)
-    if (c.q[ii] > 0) N += 0.5 * kPi * c.q[ii] * c.a[ii] * ds;
+    if (c.q[ii] > 0) N += (c.capped[ii] ? c.q[ii] * c.aeff[ii] * Phi(c.rcap[ii]) : 0.5 * kPi * c.q[ii] * c.a[ii]) * ds;
   return N;
 }
 

@@ -181,12 +181,13 @@ CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, dou
     r.pmax = std::max(r.pmax, pr.pmax);
     r.area += pr.area;
     if (S.n_outliers > 0 && S.worst_outlier >= 0) {
-      // The known failure mode (§9.7): a strip whose amplitude stands far above its neighbours'.
+      // The known failure mode (§9.7): a strip whose peak pressure stands far above its
+      // neighbours' (q_MPa: that peak, min(amplitude, p_lim)).
       const StripState& w = S.strips[static_cast<std::size_t>(S.worst_outlier)];
       r.warnings.push_back("strip_outlier:patch=" + std::to_string(r.patches.size() + 1) + ":strips=" +
                            std::to_string(S.n_outliers) + ":y_rail_mm=" +
                            format_number(std::round((k.P.y_ref + w.s * std::cos(k.P.gamma)) * 1e6) / 1e3) +
-                           ":q_MPa=" + format_number(std::round(w.q / 1e3) / 1e3));
+                           ":q_MPa=" + format_number(std::round(std::min(w.q, p_lim) / 1e3) / 1e3));
     }
     r.patches.push_back(std::move(pr));
   }

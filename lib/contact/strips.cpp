@@ -149,12 +149,10 @@ StripResult checked(const Solver& S, StripResult r, bool load_given, double targ
     r.end_gap_error = warm->end_gap_error;
     if (warm->end_gap == 0) return r;
   } else {
-    // A capped strip's length follows from its load (§9 item 6), not from its end gap: a patch
-    // whose estimate caps any strip keeps the estimate (its error is still reported).
-    bool any_capped = false;
-    for (const StripState& st : r.strips) any_capped = any_capped || st.plastic;
+    // The error is that of the elastic strips; a capped strip's length follows from its load and
+    // its overlap (§9 item 6), and it keeps that length through the refinement.
     r.end_gap_error = S.end_gap_error(r, p_lim);
-    const bool refine = r.end_gap_error > S.opt.end_gap_tol && !any_capped;
+    const bool refine = r.end_gap_error > S.opt.end_gap_tol;
     if (warm) {
       warm->end_gap = refine ? 1 : 0;
       warm->end_gap_error = r.end_gap_error;

@@ -270,9 +270,10 @@ TEST_CASE("a strip case that does not converge keeps its closest iterate", "[str
 TEST_CASE("strips in the plastic model: strongly capped flange contacts settle", "[strips]") {
   // Manchester pair, Q = 100 kN, p_lim = 900 MPa (cases/manchester-plastic.json), t_Y = 7 and
   // 8.5 mm: the strip method used to start from the multi-Hertzian plastic approach (2.7 mm at
-  // 7 mm), placed its plane across the whole profile and never settled. Against the plastic
-  // half-space solution (measured: area +12.0 % and +2.0 %): ok, the load carried, the cap held,
-  // the total area within 15 % (issue 12's two-region tolerance).
+  // 7 mm), placed its plane across the whole profile and never settled. Then its capped strips
+  // reached beyond their overlap (area +13 %, approach −38 % and −66 %; docs/strips.md). Against
+  // the plastic half-space solution (measured: area +2.0 % and −0.1 %, approach −1.2 % and
+  // +2.2 %): ok, the load carried, the cap held, area and approach within 5 %.
   const mh::CaseFile cf = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/manchester-plastic.json", true);
   const mh::PairGeometry pg = mh::build_pair_geometry(cf);
   mh::MethodOptions mo = cf.method_options();
@@ -287,7 +288,8 @@ TEST_CASE("strips in the plastic model: strongly capped flange contacts settle",
     mo.method = mh::Method::HalfSpace;
     const mh::CaseResult h = mh::solve_method(pg.geo, cf.material, tY, 100e3, mo);
     REQUIRE(h.status == mh::CaseStatus::Ok);
-    CHECK(r.area == Approx(h.area).epsilon(0.15));
+    CHECK(r.area == Approx(h.area).epsilon(0.05));
+    CHECK(r.approach == Approx(h.approach).epsilon(0.05));
     // auto hands the plastic flange patch at 7 mm (it fails the Hertz validity test) to the strip
     // method; at 8.5 mm the multi-Hertzian ellipse passes it and is kept.
     mo.method = mh::Method::Auto;
