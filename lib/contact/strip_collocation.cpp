@@ -142,6 +142,7 @@ double Solver::K_end(int i, double ai, int j, double aj, double rcap) const {
   if (!(aj > 0.0)) return 0.0;
   const double e1 = geo.s[j] - 0.5 * geo.ds - geo.s[i], e2 = e1 + geo.ds;
   const double X = geo.xc[i] - geo.xc[j];
+  if (ai == 0.0) return H * influence(X, aj, e1, e2, rcap, gx, gw);  // the centre: one quadrature, not two
   return 0.5 * H * (influence(X + ai, aj, e1, e2, rcap, gx, gw) + influence(X - ai, aj, e1, e2, rcap, gx, gw));
 }
 
