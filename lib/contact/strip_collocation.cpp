@@ -332,6 +332,7 @@ StripResult Solver::assemble(double delta, double p_lim, const Collocation& c) c
     st.s = geo.s[st.index];
     st.c = geo.xc[st.index];
     st.a = c.aeff[ii];
+    st.a_elastic = c.a[ii];
     st.q = c.q[ii];
     st.plastic = c.capped[ii] != 0;
     st.band = std::max(band[st.index], 0);

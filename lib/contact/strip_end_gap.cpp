@@ -160,7 +160,7 @@ double Solver::end_gap_error(const StripResult& r, double p_lim) const {
 StripResult Solver::refine(bool load_given, double target, double p_lim, const StripResult& start) const {
   std::vector<double> a(n, 0.0), anew(n, 0.0);
   for (const StripState& st : start.strips)
-    a[st.index] = st.plastic ? st.a * Phi(p_lim / st.q) / (0.5 * kPi) : st.a;
+    a[st.index] = st.plastic ? st.a_elastic : st.a;  // a capped strip: its extent before lengthening
   double delta = load_given ? start.delta : target;
   if (!(delta > gmin)) delta = gmin + 1e-3 * std::fabs(gmin) + 1e-9;  // load control starts inside the contact
   std::vector<char> was_loaded(n, 0);

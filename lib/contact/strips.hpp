@@ -85,6 +85,7 @@ struct StripState {
   double s = 0.0;        ///< [m] lateral coordinate of the strip centre
   double c = 0.0;        ///< [m] x of the pressure centre
   double a = 0.0;        ///< [m] half-length (for plastic strips: lengthened a', at most to the overlap)
+  double a_elastic = 0.0;  ///< [m] half-length before the plastic lengthening (= a for an elastic strip)
   double q = 0.0;        ///< [Pa] amplitude of the semi-ellipse (plastic: elastic amplitude, flat top at p_lim)
   bool plastic = false;  ///< capped at p_lim
   int band = 0;          ///< lateral band index (0-based, increasing s)

@@ -454,11 +454,12 @@ TEST_CASE("active set: the answer does not depend on the starting set", "[strips
     REQUIRE(b.status == mh::StripStatus::Ok);
     CHECK(b.delta == Approx(a.delta).epsilon(1e-7));
     // The patch's estimate misses the end gap and is refined, elastic or capped; refined extents
-    // settle to 1e-3 of their sum with the load given, 1e-6 with the approach given: the two
-    // approaches agree to about 1e-4 elastic (3.4e-5 measured) and 1e-3 capped, where the load
-    // is nearly p_lim times the area and the area's tolerance goes into the approach (9e-4).
+    // settle to 1e-3 of their sum with the load given, 1e-6 with the approach given: elastic, the
+    // two approaches agree to about 1e-4 (3.4e-5 measured). Capped strips keep their extent before
+    // lengthening through the refinement (docs/method.md §9 item 8), the extent of the estimate
+    // at the approach where it was made: load control starts elsewhere and ends 8.2e-3 away.
     CHECK(a.refined);
-    CHECK(b.delta == Approx(delta).epsilon(std::isinf(p_lim) ? 1e-4 : 2e-3));
+    CHECK(b.delta == Approx(delta).epsilon(std::isinf(p_lim) ? 1e-4 : 1.5e-2));
   }
 }
 
