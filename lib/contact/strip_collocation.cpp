@@ -119,6 +119,11 @@ void elastic_column(const Solver& S, const std::vector<int>& cand, int jj, doubl
 
 }  // namespace
 
+double strip_load(const Collocation& c, int ii, double ds) {
+  if (!(c.q[ii] > 0.0)) return 0.0;
+  return (c.capped[ii] ? c.q[ii] * c.aeff[ii] * Phi(c.rcap[ii]) : 0.5 * kPi * c.q[ii] * c.aeff[ii]) * ds;
+}
+
 double Phi(double r) {
   if (r >= 1.0) return 0.5 * kPi;
   return r * std::sqrt(1.0 - r * r) + std::asin(r);
@@ -336,7 +341,7 @@ StripResult Solver::assemble(double delta, double p_lim, const Collocation& c) c
     st.q = c.q[ii];
     st.plastic = c.capped[ii] != 0;
     st.band = std::max(band[st.index], 0);
-    st.load = (st.plastic ? c.q[ii] * c.aeff[ii] * Phi(c.rcap[ii]) : 0.5 * kPi * c.q[ii] * c.aeff[ii]) * geo.ds;
+    st.load = strip_load(c, ii, geo.ds);
     res.N += st.load;
     res.area += 2.0 * st.a * geo.ds;
     qmax = std::max(qmax, c.q[ii]);

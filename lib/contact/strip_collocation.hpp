@@ -47,6 +47,11 @@ struct Collocation {
   std::vector<int> lu_of;       ///< the candidates (indices ii) lu factorises; empty: none
 };
 
+/// The load [N] of candidate ii of a collocation on strips of width ds: (π/2) q a ds elastic,
+/// q a' Φ(r) ds capped (§9 item 6: its elastic load unless its overlap holds it shorter); zero
+/// unloaded.
+double strip_load(const Collocation& c, int ii, double ds);
+
 /// The strip solver of one geometry, elastic constant H and options.
 struct Solver : StripExtents {
   double H;

@@ -27,14 +27,11 @@
 #include <limits>
 #include <sstream>
 
-#include "core/units.hpp"
-
 namespace mh {
 namespace strips_detail {
 
 namespace {
 
-constexpr double kPi = units::pi;
 constexpr int kMaxPasses = 60;             // fixed-point passes of the extents
 constexpr int kDepth = 5;                  // Anderson acceleration: the last kDepth passes
 constexpr double kAreaRtolLoad = 1e-3;     // settled when the extents move by less than this of their sum
@@ -45,12 +42,10 @@ constexpr double kAreaRtolApproach = 1e-6; // … tighter with the approach give
                                            //   force balance across patches (contact/patch_driver.hpp)
 constexpr int kMaxLoadSteps = 40;          // secant steps on the approach at fixed extents
 
-/// The load of a collocation [N]: (π/2) q_i a_i ds per elastic strip, q_i a'_i Φ(r_i) ds per
-/// capped one (§9 item 6: its elastic load unless its overlap holds it shorter).
+/// The load of a collocation [N].
 double load(const Collocation& c, double ds) {
   double N = 0;
-  for (std::size_t ii = 0; ii < c.cand.size(); ++ii)
-    if (c.q[ii] > 0) N += (c.capped[ii] ? c.q[ii] * c.aeff[ii] * Phi(c.rcap[ii]) : 0.5 * kPi * c.q[ii] * c.a[ii]) * ds;
+  for (int ii = 0; ii < static_cast<int>(c.cand.size()); ++ii) N += strip_load(c, ii, ds);
   return N;
 }
 
@@ -96,7 +91,7 @@ void drops(const Solver& S, const std::vector<int>& field, const std::vector<dou
 
 /// The end-gap extents of a collocation's strips (per geometry strip, zero outside the contact):
 /// loaded elastic strips from A a² = δ − g − u_end at their ends; capped strips keep theirs (the
-/// plastic law sets a capped strip's length from its load, §9 item 6); unloaded strips the length
+/// plastic law sets a capped strip's length from its load and its overlap, §9 item 6); unloaded strips the length
 /// over which their centre is still interpenetrated (zero when it is not: the widening rule of
 /// item 7, the limit of the end rule for a strip entering the patch).
 void end_extents(const Solver& S, double delta, const Collocation& c, std::vector<double>& anew) {

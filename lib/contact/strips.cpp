@@ -101,7 +101,7 @@ std::vector<StripState> map_strips(const std::vector<StripState>& old, double ds
         const double w = (so - a.s) / (b.s - a.s);
         st = w < 0.5 ? a : b;
         st.a = (1 - w) * a.a + w * b.a;
-      st.a_elastic = (1 - w) * a.a_elastic + w * b.a_elastic;
+        st.a_elastic = (1 - w) * a.a_elastic + w * b.a_elastic;
         st.q = (1 - w) * a.q + w * b.q;
         st.plastic = a.plastic && b.plastic;
       }
