@@ -10,7 +10,7 @@
 #include "input/case_file.hpp"
 #include "geometry/contact_geometry.hpp"
 #include "jobs/run.hpp"
-#include "contact/multi_hertz.hpp"
+#include "contact/multi_hertz/multi_hertz.hpp"
 
 using namespace mh;
 using clk = std::chrono::steady_clock;
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
       for (int i = 0; i < n; ++i) {
         const double tY = (-6.0 + 16.0 * (i % 1000) / 999.0) * 1e-3;
         const double Q = (10.0 + 140.0 * (i / 1000) / 199.0) * 1e3;
-        const CaseResult res = solve_case(G, m, tY, Q);
+        const CaseResult res = solve_multi_hertz(G, m, tY, Q);
         sink += res.dz;
       }
       const double ns = std::chrono::duration<double, std::nano>(clk::now() - t0).count() / n;

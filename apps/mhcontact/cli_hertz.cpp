@@ -10,7 +10,7 @@
 #include <string>
 
 #include "cli.hpp"
-#include "contact/ellipse_law.hpp"
+#include "contact/ellipse/ellipse_law.hpp"
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
 #include "core/plausible.hpp"

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "contact/half_space.hpp"
+#include "contact/half_space/half_space_method.hpp"
 #include "contact/solve.hpp"
-#include "contact/strip_method.hpp"
+#include "contact/strips/strip_method.hpp"
 #include "input/case_file.hpp"
 #include "jobs/run.hpp"
 #include "output/csv_table.hpp"
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
     mh::CaseResult r;
     for (int k = 0; k < repeats; ++k) {
       const auto t0 = std::chrono::steady_clock::now();
-      r = mh::solve_method(pg.geo, cs.material, t * 1e-3, 50e3, mo);
+      r = mh::solve_contact(pg.geo, cs.material, t * 1e-3, 50e3, mo);
       best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * 1e3);
     }
     by_strips += r.method == mh::Method::Strips;
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
           const auto t0 = std::chrono::steady_clock::now();
           rs = mh::solve_strip_method(pg.geo, cs.material, tY, Q, cs.strips);
           const auto t1 = std::chrono::steady_clock::now();
-          ra = mh::solve_method(pg.geo, cs.material, tY, Q, mo);
+          ra = mh::solve_contact(pg.geo, cs.material, tY, Q, mo);
           const auto t2 = std::chrono::steady_clock::now();
           bs = std::min(bs, std::chrono::duration<double>(t1 - t0).count() * 1e3);
           ba = std::min(ba, std::chrono::duration<double>(t2 - t1).count() * 1e3);

@@ -7,8 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "contact/ellipse_law.hpp"
-#include "contact/hertz_validity.hpp"
+#include "contact/ellipse/ellipse_law.hpp"
+#include "contact/options.hpp"
+#include "contact/ellipse/hertz_validity.hpp"
 #include "geometry/contact_geometry.hpp"
 
 namespace mh {
@@ -17,11 +18,6 @@ namespace mh {
 enum class CaseStatus { Ok, NoContact, OutOfRange, NotConverged };
 const char* to_string(CaseStatus s);
 
-/// The solution method of a case (case file "method"). Auto chooses per case (docs/method.md).
-enum class Method { MultiHertzian, HalfSpace, Strips, Auto };
-const char* to_string(Method m);
-/// "multi-hertzian", "half-space", "strips", "auto"; throws std::invalid_argument otherwise.
-Method parse_method(const std::string& s);
 
 /// One loaded ellipse of a multi-Hertzian solution.
 struct LoadedEllipse {

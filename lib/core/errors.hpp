@@ -1,5 +1,5 @@
 #pragma once
-// Error channels (style.md habit 6):
+// Error channels:
 //  - assertions for bugs;
 //  - InputError for bad input: carries where (file and line, or JSON path), the offending value,
 //    the rule it breaks and, where possible, the fix;

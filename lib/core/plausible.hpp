@@ -1,5 +1,5 @@
 #pragma once
-// Plausible ranges of the physical inputs (issue #10 item 4): one table, applied alike by the
+// Plausible ranges of the physical inputs: one table, applied alike by the
 // case file, the manifest (through the case-file rules) and every subcommand. A value outside
 // its range is refused with a hint at the likely unit mistake (newtons typed as kN, MPa typed as
 // GPa, ...). The table is stated in README "Plausible ranges" and docs/method.md §1.

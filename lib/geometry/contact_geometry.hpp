@@ -62,7 +62,7 @@ struct GeometryOptions {
   /// ... and a wheel has a flange when its lowest point lies on the gauge side (y < 0) at least
   /// this far below its height at the taping line (default 10 mm, profiles.md §5).
   double flange_min_height = 10e-3;  ///< [m]
-  CurveOptions curve;          ///< smoothing of both profiles (profile_curve.hpp)
+  CurveOptions curve;          ///< smoothing of both profiles (profile/curve.hpp)
   /// Measured or exact, per profile (case file geometry.noise; profiles.md "Measured or exact");
   /// each overrides curve.noise for its profile. Default auto: decided from the data.
   ProfileNoise wheel_noise = ProfileNoise::Auto, rail_noise = ProfileNoise::Auto;
@@ -124,7 +124,7 @@ class ContactGeometry {
   bool has_flange = false;
   double flange_gamma_max = 0, flange_y_steepest = 0;
   double rail_gauge_y = 0;               ///< [m] gauge point of the rail (rail frame); explicit positioning: the gauge point if the rail has one, else 0
-  double wheel_window = 0, rail_window = 0;  ///< [m] curvature fit windows used (profile_curve.hpp)
+  double wheel_window = 0, rail_window = 0;  ///< [m] curvature fit windows used (profile/curve.hpp)
   /// The smooth profiles the tables were built from, kept for the 3-D gap of the grid methods
   /// (geometry/gap.hpp): wheel in its own frame, rail with its inclination.
   std::shared_ptr<const ProfileCurve> wheel_curve, rail_curve;
@@ -133,7 +133,7 @@ class ContactGeometry {
   /// Curvature samples of both profiles every kappa_dy over each profile's width, in the
   /// solver's signs: rail_k gives 1/R_rxx at y_r, wheel_k 1/R_wxx at y_w, with the gap they give
   /// along the patch (geometry/curvature_samples.hpp). Used by the Hertz validity test over the
-  /// patch width (contact/hertz_validity.hpp).
+  /// patch width (contact/ellipse/hertz_validity.hpp).
   double kappa_dy = 0.05e-3;
   CurvatureSamples rail_k, wheel_k;
   bool has_curvature_samples() const { return !rail_k.empty() && !wheel_k.empty(); }
@@ -152,7 +152,7 @@ class ContactGeometry {
   /// the smallest separation (the ellipse whose t_Y interval between the jumps holds t on ties).
   /// Interpolating the separations, which are smooth in t_Y, instead of the gaps, which have a
   /// kink at every jump, keeps the load sharing near a jump independent of the grid step
-  /// (issue #10 item 1). Precondition: covers(t).
+  ///. Precondition: covers(t).
   void candidates_at(double t, CandidateGeom* out, int* main) const;
 
   /// The candidates at t evaluated from the profiles themselves (no interpolation): the main

@@ -9,11 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/contact_geometry.hpp"
-#include "contact/ellipse_law.hpp"
 #include "profile/profile.hpp"
 #include "profile/read.hpp"
-#include "contact/multi_hertz.hpp"
-#include "contact/solve.hpp"
+#include "contact/options.hpp"
 
 namespace mh {
 
@@ -71,10 +69,10 @@ struct CaseFile {
   Material material;
   Model model = Model::Elastic;
   Method method = Method::MultiHertzian;  ///< "method" (default multi-hertzian)
-  SolverOptions solver;                   ///< "solver": the multi-Hertzian iteration
+  MultiHertzOptions solver;                   ///< "solver": the multi-Hertzian iteration
   HalfSpaceOptions half_space;            ///< "half_space": grid and tolerances of the half-space method
   StripMethodOptions strips;              ///< "strips": strip width and tolerances of the strip method
-  /// The options of the case's method, for solve_method().
+  /// The options of the case's method, for solve_contact().
   MethodOptions method_options() const { return {method, solver, half_space, strips}; }
   /// Either a cartesian sweep (t_Y outer, Q inner: case i has tY[i / nQ], Q[i % nQ]) ...
   SweepAxis sweep_tY_mm, sweep_Q_kN;  ///< as given, in mm and kN

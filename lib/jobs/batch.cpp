@@ -141,7 +141,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     if (pg) {
       if (!opt.quiet) warn_profiles(*pg, err);
       if (!pg->cant.warnings.empty()) ++cant_warned;
-      // Each pair can be inspected on its own (issue #14 item 4): its profiles, CAF and potential
+      // Each pair can be inspected on its own: its profiles, CAF and potential
       // ellipses, as `mhcontact geometry` writes them for one pair.
       write_pair_geometry(cf, *pg, rd, "pairs/" + std::to_string(k) + "/", opt.out_dir);
       Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fpa ? &fpa->stream() : nullptr,

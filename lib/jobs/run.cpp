@@ -60,7 +60,7 @@ PairGeometry build_pair_geometry(const CaseFile& cf) {
   PairGeometry pg;
   pg.wheel = load_profile(cf.wheel, ProfileKind::Wheel);
   pg.rail = load_profile(cf.rail, ProfileKind::Rail, cf.inclination);
-  // Conventions that can be checked are checked (issue #10 item 9): a cant applied twice, a
+  // Conventions that can be checked are checked: a cant applied twice, a
   // mirrored canted rail (profiles.md "Cant checks").
   pg.cant = check_rail_cant(pg.rail, cf.inclination);
   for (const auto& w : pg.cant.warnings) pg.rail.warnings.push_back(w);
@@ -274,7 +274,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     err << "mhcontact run: " << n << " cases";
     if (opt.shard_count > 1) err << " (shard " << opt.shard_index << "/" << opt.shard_count << ": cases " << first << " .. " << end - 1 << ")";
     for (const auto& [k, v] : by_status) err << ", " << k << " " << v;
-    // Warnings reach the user (issue #10 item 3): cases with each kind of warning.
+    // Warnings reach the user: cases with each kind of warning.
     for (const auto& [k, v] : counts.warnings) err << ", " << v << " with " << k;
     err << "; " << G.n_ellipses() << " potential ellipses; " << format_number(std::round(secs * 1e3) / 1e3) << " s";
     if (!to_stdout) err << "; outputs in " << opt.out_dir;

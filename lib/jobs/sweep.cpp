@@ -310,7 +310,7 @@ class Writer {
 void write_geometry(const CaseFile& cf, const ContactGeometry& G, std::uint64_t first, std::uint64_t end,
                     std::ostream* csv, const std::string& prefix, JsonObjectStream* json) {
   if (!csv && !json) return;
-  const SolverOptions so = cf.method_options().multi_hertzian;
+  const MultiHertzOptions so = cf.method_options().multi_hertzian;
   std::unordered_set<std::string> seen;  // t_Y as written in the tables
   std::vector<CandidateEllipse> cands;
   std::vector<std::string> records;
@@ -399,7 +399,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
         const CasePoint cp = cf.case_at(c0 + i);
         try {
           if (g_case_hook) g_case_hook(c0 + i);
-          const CaseResult r = solve_method(G, cf.material, cp.tY, cp.Q, mo);
+          const CaseResult r = solve_contact(G, cf.material, cp.tY, cp.Q, mo);
           S.status[i] = r.status;
           auto& kinds = S.warning_kinds[i];
           kinds.clear();

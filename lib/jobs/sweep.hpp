@@ -54,7 +54,7 @@ struct RunOptions {
   bool strips = false;
   /// Write pressure.csv even when its estimated size is above kPressureLimitBytes (--force).
   bool force = false;
-  bool fail_on_warning = false;  ///< exit 1 when any case has a warning (for CI), issue #10 item 3
+  bool fail_on_warning = false;  ///< exit 1 when any case has a warning (for CI)
   /// Significant digits of the numbers in the tables (--digits N), 0 = shortest round-trip (--digits max).
   int digits = 10;
 };
@@ -103,7 +103,7 @@ struct SweepCounts {
   }
 };
 
-/// geometry.csv and results.json's "geometry" records (issue #14 item 3): for each distinct t_Y of
+/// geometry.csv and results.json's "geometry" records: for each distinct t_Y of
 /// the cases [first, end) of `cf` that lies inside `G` (distinct as written in the tables), in
 /// order of first appearance, every potential ellipse of G as a candidate there
 /// (format_geometry()). CSV rows go to `csv` (each preceded by `prefix`), JSON records to `json`

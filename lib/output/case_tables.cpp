@@ -30,7 +30,7 @@ const Col kEllipseCols[] = {
     {"pmean_MPa", [](const LoadedEllipse& e) { return e.s.p_mean / units::MPa; }},
     {"approach_mm", [](const LoadedEllipse& e) { return e.s.approach * units::per_mm; }},
 };
-// geometry.csv (issue #14 item 3): one potential ellipse as a candidate at one t_Y, the same for
+// geometry.csv: one potential ellipse as a candidate at one t_Y, the same for
 // every Q. `hertz`: the value exists only for a candidate with a Hertz ellipse (empty in CSV,
 // null in JSON otherwise).
 struct GeoCol { const char* name; double (*get)(const CandidateEllipse&); bool hertz = false; };
@@ -67,7 +67,7 @@ const Col kTailCols[] = {
     {"gap_error", [](const LoadedEllipse& e) { return e.validity.gap_error; }},
     {"gap_mean_error", [](const LoadedEllipse& e) { return e.validity.gap_mean_error; }},
 };
-// Plastic mode only, appended after kTailCols (issue #10 item 5): the elastic and the plastic
+// Plastic mode only, appended after kTailCols: the elastic and the plastic
 // patch side by side.
 const Col kPlasticTailCols[] = {
     {"p0_el_MPa", [](const LoadedEllipse& e) { return e.s.p0_el / units::MPa; }},
@@ -75,7 +75,7 @@ const Col kPlasticTailCols[] = {
     {"area_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a * e.s.b * units::per_mm2; }},
     {"area_el_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a_el * e.s.b_el * units::per_mm2; }},
 };
-// Appended last (issue #14 item 3): the patch area (elastic mode only: the plastic tail already
+// Appended last: the patch area (elastic mode only: the plastic tail already
 // has area_mm2).
 const Col kAreaCol = {"area_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a * e.s.b * units::per_mm2; }};
 

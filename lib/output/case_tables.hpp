@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "contact/multi_hertz.hpp"
+#include "contact/multi_hertz/multi_hertz.hpp"
 #include "input/case_file.hpp"
 
 namespace mh {
@@ -20,7 +20,7 @@ struct Formatted {
 /// and/or f.json (its record in results.json's "cases" array: one line of JSON). `status_text`
 /// overrides the solver's status (a batch's `invalid_pair`); default: to_string(r.status).
 /// True for a row without a solution (out_of_range, no_contact, or a status_text such as
-/// invalid_pair): its result fields are written empty in CSV and null in JSON (issue #10 item 8).
+/// invalid_pair): its result fields are written empty in CSV and null in JSON.
 bool is_failed_row(const CaseResult& r, const char* status_text = nullptr);
 
 void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
@@ -54,7 +54,7 @@ std::string patch_pressure_csv_header();
 std::string cases_csv_header();
 std::string ellipses_csv_header(bool plastic);
 
-/// geometry.csv (issue #14 item 3): what ellipses.csv would repeat for every Q, once per (t_Y,
+/// geometry.csv: what ellipses.csv would repeat for every Q, once per (t_Y,
 /// potential ellipse). Its header, and the rows of the candidates `cands` at the case t_Y `tY_mm`
 /// (as given: written exactly as in ellipses.csv, so the tables join on the text of tY_mm and
 /// ellipse) into `csv`, and/or one JSON record per candidate (results.json "geometry") into `json`.

@@ -23,7 +23,7 @@ const char* to_string(ProfileFormat f);
 ///    (rail: the upper envelope, wheel: the lower one), with a warning saying how many points
 ///    went and where; still rejected: a fold deeper than kMaxFold_mm, folds over more than
 ///    kMaxFoldFraction of the width, a gap wider than kMaxBridge_mm left by the clean-up.
-///  Strict: duplicates and jitter dropped, any larger backward step rejected (before issue #13).
+///  Strict: duplicates and jitter dropped, any larger backward step rejected.
 ///  Off: nothing dropped where contact can happen; any step that does not advance y is rejected.
 enum class ProfileCleanup { Envelope, Strict, Off };
 /// "envelope", "strict", "off"; std::invalid_argument otherwise.

@@ -123,7 +123,7 @@ struct Section {
   }
 
   /// Radius [mm] with the paper's sign (method.md §1) for a wheel (material above: R = 1/kappa)
-  /// or a rail (material below: R = −1/kappa); kappa = z''/(1 + z'²)^(3/2) (profile_curve.hpp).
+  /// or a rail (material below: R = −1/kappa); kappa = z''/(1 + z'²)^(3/2) (profile/curve.hpp).
   double radius(double y, bool wheel) const {
     if (type == Type::Line) return kInf;
     if (type == Type::Arc) return wheel ? -sgn * R : sgn * R;  // kappa = −sgn/R exactly

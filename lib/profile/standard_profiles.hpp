@@ -66,7 +66,7 @@ double standard_profile_z(const std::string& name, double y, double* dz = nullpt
 /// R80, R13 arcs give +0.300, +0.080, +0.013; the flanks +infinity. S1002: circle sections give
 /// their radius (D: −0.013, throat; F: +0.020; G: +0.012, flange tip; H: +0.0205), the straight
 /// sections A and E +infinity, and the polynomial sections B and C the analytic curvature of the
-/// polynomial, R = (1 + z'²)^(3/2) / z'' with the wheel's sign (1/R_wxx = +kappa, profile_curve.hpp).
+/// polynomial, R = (1 + z'²)^(3/2) / z'' with the wheel's sign (1/R_wxx = +kappa, profile/curve.hpp).
 /// At a breakpoint: the section on the right (side = +1) or on the left (side = −1).
 double standard_profile_radius(const std::string& name, double y, int side = +1);
 

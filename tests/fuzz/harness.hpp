@@ -27,7 +27,7 @@
 #include "input/manifest.hpp"
 #include "profile/curve.hpp"
 #include "profile/read.hpp"
-#include "contact/multi_hertz.hpp"
+#include "contact/multi_hertz/multi_hertz.hpp"
 #include "core/plausible.hpp"
 
 namespace mh::fuzz {

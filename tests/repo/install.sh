@@ -5,7 +5,7 @@ set -euo pipefail
 src=$1; build=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 cmake --install "$build" --prefix "$tmp/p" >/dev/null
-for f in bin/mhcontact lib/libmhcontact_core.a lib/libmhcontact_io.a include/mhcontact/contact/hertz.hpp \
+for f in bin/mhcontact lib/libmhcontact_core.a lib/libmhcontact_io.a include/mhcontact/contact/ellipse/hertz.hpp \
          include/mhcontact/profile/read.hpp share/mhcontact/profiles/S1002.csv; do
   [ -e "$tmp/p/$f" ] || { echo "install: $f missing"; exit 1; }
 done

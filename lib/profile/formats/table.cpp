@@ -91,7 +91,7 @@ std::string write_table(const Profile& p, char sep, bool gensys) {
   else s = std::string("y_mm") + sep + "z_mm\n";
   const double f = gensys ? -1e3 : 1e3;
   for (std::size_t k = 0; k < p.size(); ++k) {
-    append_number(s, p.y[k] * f);  // as before issue #13 (csv): no "+ 0.0", the bytes unchanged
+    append_number(s, p.y[k] * f);  // no "+ 0.0": the bytes of the csv format kept
     s += sep;
     append_number(s, p.z[k] * f);
     s += '\n';

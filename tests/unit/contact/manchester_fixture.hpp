@@ -3,7 +3,7 @@
 // standard track; tests/data/profiles/README.md) and steel, for the multi-Hertzian tests.
 #include <string>
 
-#include "contact/hertz.hpp"
+#include "contact/ellipse/hertz.hpp"
 #include "geometry/contact_geometry.hpp"
 #include "profile/read.hpp"
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "contact/half_space.hpp"
+#include "contact/half_space/half_space_method.hpp"
 #include "input/case_file.hpp"
 #include "jobs/run.hpp"
 #include "output/csv_table.hpp"

@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
-#include "contact/ellipse_law.hpp"
+#include "contact/ellipse/ellipse_law.hpp"
 #include "core/numfmt.hpp"
 
 using namespace mh;

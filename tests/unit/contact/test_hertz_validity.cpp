@@ -1,9 +1,9 @@
-// Hertz validity of a loaded ellipse (contact/hertz_validity.hpp, docs/method.md §4; issue #10 item 2).
+// Hertz validity of a loaded ellipse (contact/ellipse/hertz_validity.hpp, docs/method.md §4; issue #10 item 2).
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "contact/hertz_validity.hpp"
-#include "contact/multi_hertz.hpp"
+#include "contact/ellipse/hertz_validity.hpp"
+#include "contact/multi_hertz/multi_hertz.hpp"
 #include "geometry/contact_geometry.hpp"
 #include "profile/read.hpp"
 #include "manchester_fixture.hpp"
@@ -52,7 +52,7 @@ TEST_CASE("hertz_validity: circular profiles are Hertzian, gap error ~0", "[solv
                                            read("circ_r100.prr", ProfileKind::Rail, false),
                                            TrackSetup{}, GeometryOptions{});
   Material mat;
-  const CaseResult r = solve_case(G, mat, 0.0, 100e3);
+  const CaseResult r = solve_multi_hertz(G, mat, 0.0, 100e3);
   REQUIRE(r.status == CaseStatus::Ok);
   REQUIRE(r.loaded.size() == 1);
   CAPTURE(r.loaded[0].validity.gap_error, r.loaded[0].validity.b_over_R);
@@ -68,7 +68,7 @@ TEST_CASE("Manchester t_Y = 6.6 mm, Q = 100 kN: the 290 mm ellipse is flagged, n
                                            read("MBench_UIC60_v3.prr", ProfileKind::Rail),
                                            TrackSetup{}, GeometryOptions{});
   Material mat;
-  const CaseResult r = solve_case(G, mat, 6.6e-3, 100e3);
+  const CaseResult r = solve_multi_hertz(G, mat, 6.6e-3, 100e3);
   REQUIRE(r.status == CaseStatus::Ok);
   int flagged = 0;
   for (const LoadedEllipse& L : r.loaded) {
@@ -95,7 +95,7 @@ TEST_CASE("the edge gaps are taken along the patch, which is inclined by the con
   // section) and measured gap_error 0.43 on a patch that lies wholly on the arc.
   const ContactGeometry& G = manchester();
   const Material mat = steel();
-  const CaseResult r = solve_case(G, mat, 7e-3, 50e3);
+  const CaseResult r = solve_multi_hertz(G, mat, 7e-3, 50e3);
   REQUIRE(r.status == CaseStatus::Ok);
   REQUIRE(r.loaded.size() == 1);
   const LoadedEllipse& L = r.loaded[0];
@@ -116,7 +116,7 @@ TEST_CASE("the mean edge-gap error flags the patches where the multi-Hertzian an
   const Material mat = steel();
   for (int t = -6; t <= 10; ++t) {
     CAPTURE(t);
-    const CaseResult r = solve_case(G, mat, t * 1e-3, 50e3);
+    const CaseResult r = solve_multi_hertz(G, mat, t * 1e-3, 50e3);
     REQUIRE(r.status == CaseStatus::Ok);
     bool all_valid = true;
     for (const LoadedEllipse& L : r.loaded) all_valid = all_valid && L.validity.valid;

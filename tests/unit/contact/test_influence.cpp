@@ -1,5 +1,5 @@
 // Tests of the half-space influence coefficients and their DC-FFT convolution
-// (lib/contact/influence.hpp).
+// (lib/contact/half_space/influence.hpp).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "contact/influence.hpp"
+#include "contact/half_space/influence.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include "geometry/contact_geometry.hpp"
 #include "profile/read.hpp"
 #include "manchester_fixture.hpp"
-#include "contact/multi_hertz.hpp"
+#include "contact/multi_hertz/multi_hertz.hpp"
 
 using namespace mh;
 
@@ -30,7 +30,7 @@ TEST_CASE("circular profiles: one ellipse equal to closed-form Hertz", "[solver]
   const Material mat = steel();
   for (double tY : {-8e-3, 0.0, 7.3e-3}) {
     for (double Q : {10e3, 100e3}) {
-      const CaseResult r = solve_case(G, mat, tY, Q);
+      const CaseResult r = solve_multi_hertz(G, mat, tY, Q);
       REQUIRE(r.status == CaseStatus::Ok);
       REQUIRE(r.loaded.size() == 1);
       const LoadedEllipse& e = r.loaded[0];
@@ -59,7 +59,7 @@ TEST_CASE("Manchester pair, t_Y −6 … 10 mm, Q 10/50/100 kN: all ok, equilibr
   for (int i = 0; i <= 32; ++i) {
     const double tY = (-6.0 + 0.5 * i) * 1e-3;
     for (double Q : {10e3, 50e3, 100e3}) {
-      const CaseResult r = solve_case(G, mat, tY, Q);
+      const CaseResult r = solve_multi_hertz(G, mat, tY, Q);
       CAPTURE(tY, Q, r.message);
       REQUIRE(r.status == CaseStatus::Ok);
       REQUIRE(std::fabs(r.Fz - Q) <= 1e-9 * Q);
@@ -90,7 +90,7 @@ TEST_CASE("a second ellipse comes into contact continuously as Q grows", "[solve
   bool joined = false, alone_first = false;
   for (int i = 1; i <= 2000; ++i) {
     const double Q = 100.0 * i;  // 0.1 … 200 kN
-    const CaseResult r = solve_case(G, mat, -0.5e-3, Q);
+    const CaseResult r = solve_multi_hertz(G, mat, -0.5e-3, Q);
     REQUIRE(r.status == CaseStatus::Ok);
     double N1 = 0, N2 = 0;
     for (const auto& e : r.loaded) (e.ellipse == 1 ? N1 : N2) = e.s.N;
@@ -112,22 +112,22 @@ TEST_CASE("edges: 1 N to 1 MN, ellipse boundaries, outside the table, bad Q", "[
   const Material mat = steel();
   for (double Q : {1.0, 1e3, 1e6}) {
     for (double tY : {-6e-3, 0.0, 5e-3, 9e-3}) {
-      const CaseResult r = solve_case(G, mat, tY, Q);
+      const CaseResult r = solve_multi_hertz(G, mat, tY, Q);
       CAPTURE(Q, tY);
       REQUIRE(r.status == CaseStatus::Ok);
       REQUIRE(r.Fz == Approx(Q).epsilon(1e-9));
     }
   }
   for (const PotentialEllipse& P : G.ellipses) {
-    const CaseResult r = solve_case(G, mat, P.tY_min, 50e3);
+    const CaseResult r = solve_multi_hertz(G, mat, P.tY_min, 50e3);
     REQUIRE(r.status == CaseStatus::Ok);
     REQUIRE(r.Fz == Approx(50e3).epsilon(1e-9));
   }
-  const CaseResult out = solve_case(G, mat, 20e-3, 50e3);
+  const CaseResult out = solve_multi_hertz(G, mat, 20e-3, 50e3);
   REQUIRE(out.status == CaseStatus::OutOfRange);
   REQUIRE_THAT(out.message, Catch::Contains("outside the geometry table"));
-  REQUIRE(solve_case(G, mat, 0.0, 0.0).status == CaseStatus::NoContact);
-  REQUIRE(solve_case(G, mat, 0.0, NAN).status == CaseStatus::NoContact);
+  REQUIRE(solve_multi_hertz(G, mat, 0.0, 0.0).status == CaseStatus::NoContact);
+  REQUIRE(solve_multi_hertz(G, mat, 0.0, NAN).status == CaseStatus::NoContact);
 }
 
 namespace {
@@ -152,7 +152,7 @@ TEST_CASE("non-Hertzian candidates (B <= 0) are excluded and flagged when they w
   const Material mat = steel();
   // Second candidate conformal: wheel concave R 12 mm on the rail's R 13 corner: B < 0.
   const ContactGeometry near = two_candidates(-1 / 0.012, 1e-6);
-  const CaseResult r = solve_case(near, mat, 0.5e-3, 100e3);
+  const CaseResult r = solve_multi_hertz(near, mat, 0.5e-3, 100e3);
   REQUIRE(r.status == CaseStatus::Ok);
   REQUIRE(r.loaded.size() == 1);
   REQUIRE(r.loaded[0].ellipse == 1);
@@ -160,16 +160,16 @@ TEST_CASE("non-Hertzian candidates (B <= 0) are excluded and flagged when they w
   REQUIRE(r.warnings[0] == "non_hertzian_excluded:ellipse=2");
   REQUIRE(r.Fz == Approx(100e3).epsilon(1e-12));
   // Far away (1 mm gap) it would not touch: no warning.
-  const CaseResult far = solve_case(two_candidates(-1 / 0.012, 1e-3), mat, 0.5e-3, 100e3);
+  const CaseResult far = solve_multi_hertz(two_candidates(-1 / 0.012, 1e-3), mat, 0.5e-3, 100e3);
   REQUIRE(far.warnings.empty());
   // Regression: a nearly conformal candidate (B > 0 but λ = A/B beyond the Hertz range) threw
   // from make_ellipse_law inside a worker thread and aborted the whole run. Now it is excluded
   // like B <= 0, and flagged.
-  const CaseResult tiny = solve_case(two_candidates(-1 / 0.013 + 1e-11, 1e-6), mat, 0.5e-3, 100e3);
+  const CaseResult tiny = solve_multi_hertz(two_candidates(-1 / 0.013 + 1e-11, 1e-6), mat, 0.5e-3, 100e3);
   REQUIRE(tiny.status == CaseStatus::Ok);
   REQUIRE(tiny.warnings == std::vector<std::string>{"non_hertzian_excluded:ellipse=2"});
   // Hertzian second candidate (convex wheel): loaded, equilibrium with two ellipses.
-  const CaseResult both = solve_case(two_candidates(1 / 0.020, 1e-6), mat, 0.5e-3, 100e3);
+  const CaseResult both = solve_multi_hertz(two_candidates(1 / 0.020, 1e-6), mat, 0.5e-3, 100e3);
   REQUIRE(both.loaded.size() == 2);
   REQUIRE(both.Fz == Approx(100e3).epsilon(1e-12));
 }
@@ -188,7 +188,7 @@ TEST_CASE("load sharing next to a jump does not depend on the t_Y grid (issue #1
     o.tY_step = step_mm * 1e-3;
     const ContactGeometry G = build_geometry(W, R, TrackSetup{}, o);
     std::vector<CaseResult> out;
-    for (double t : tY_mm) out.push_back(solve_case(G, mat, t * 1e-3, 100e3));
+    for (double t : tY_mm) out.push_back(solve_multi_hertz(G, mat, t * 1e-3, 100e3));
     return out;
   };
   const std::vector<CaseResult> ref = forces(0.005);
@@ -213,11 +213,11 @@ TEST_CASE("candidate_ellipses: the load-independent part of every loaded ellipse
   std::vector<CandidateEllipse> cands;
   int loaded = 0;
   for (double tY : {-6e-3, -0.25e-3, 0.5e-3, 5e-3, 7.5e-3}) {
-    candidate_ellipses(G, mat, tY, SolverOptions{}, cands);
+    candidate_ellipses(G, mat, tY, MultiHertzOptions{}, cands);
     REQUIRE(cands.size() == G.n_ellipses());
     for (std::size_t e = 0; e < cands.size(); ++e) REQUIRE(cands[e].ellipse == static_cast<int>(e) + 1);
     for (double Q : {10e3, 100e3, 300e3}) {
-      const CaseResult r = solve_case(G, mat, tY, Q);
+      const CaseResult r = solve_multi_hertz(G, mat, tY, Q);
       REQUIRE(r.status == CaseStatus::Ok);
       for (const LoadedEllipse& L : r.loaded) {
         CAPTURE(tY, Q, L.ellipse);

@@ -1,4 +1,4 @@
-// Tests of the constrained CG normal contact solver (lib/contact/normal_cg.hpp) against Hertz.
+// Tests of the constrained CG normal contact solver (lib/contact/half_space/normal_cg.hpp) against Hertz.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "contact/normal_cg.hpp"
+#include "contact/half_space/normal_cg.hpp"
 
 namespace {
 

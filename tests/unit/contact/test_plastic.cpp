@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contact/ellipse_law.hpp"
+#include "contact/ellipse/ellipse_law.hpp"
 
 using namespace mh;
 

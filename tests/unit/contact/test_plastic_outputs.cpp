@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "contact/ellipse_law.hpp"
+#include "contact/ellipse/ellipse_law.hpp"
 #include "output/case_tables.hpp"
 
 using namespace mh;

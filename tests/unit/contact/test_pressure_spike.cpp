@@ -1,4 +1,4 @@
-// A peak pressure on a single element is reported (contact/pressure_spike.hpp): never on a smooth
+// A peak pressure on a single element is reported (contact/grid/pressure_spike.hpp): never on a smooth
 // Hertz pressure, always on an isolated or towering element, and on the measured pair where the
 // half-space solution puts the load on one or two elements of a measured gauge corner
 // (docs/strips.md, "Measured pairs").
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "contact/half_space.hpp"
-#include "contact/pressure_spike.hpp"
+#include "contact/half_space/half_space_method.hpp"
+#include "contact/grid/pressure_spike.hpp"
 #include "input/case_file.hpp"
 #include "jobs/run.hpp"
 

@@ -1,4 +1,4 @@
-// The strip kernel g(r) = ∫_{-1}^{1} sqrt(1 − t²) asinh(r/|t|) dt (contact/strip_kernel.hpp)
+// The strip kernel g(r) = ∫_{-1}^{1} sqrt(1 − t²) asinh(r/|t|) dt (contact/strips/strip_kernel.hpp)
 // against adaptive quadrature of its definition (GSL QAGS, independent of the elliptic-integral
 // derivative and of the table), and its derivative against the integral it stands for.
 #include <catch2/catch.hpp>
@@ -10,7 +10,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 
-#include "contact/strip_kernel.hpp"
+#include "contact/strips/strip_kernel.hpp"
 
 namespace {
 double qags(double (*f)(double, void*), double r) {

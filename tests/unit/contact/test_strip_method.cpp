@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "contact/half_space.hpp"
+#include "contact/half_space/half_space_method.hpp"
 #include "contact/solve.hpp"
-#include "contact/strip_method.hpp"
+#include "contact/strips/strip_method.hpp"
 #include "input/case_file.hpp"
 #include "jobs/run.hpp"
 #include "output/csv_table.hpp"
@@ -201,9 +201,9 @@ TEST_CASE("auto keeps the multi-Hertzian answer where it is valid and hands the 
   mo.method = mh::Method::Auto;
   // t_Y = -4: one smooth tread ellipse; t_Y = 5: tread and gauge-corner contacts 6.5 mm apart at
   // their edges interact; t_Y = 0: the tread ellipse fails the Hertz validity test.
-  const mh::CaseResult a = mh::solve_method(F.pg.geo, F.cf.material, -4e-3, 50e3, mo);
+  const mh::CaseResult a = mh::solve_contact(F.pg.geo, F.cf.material, -4e-3, 50e3, mo);
   CHECK(a.method == mh::Method::MultiHertzian);
-  const mh::CaseResult b = mh::solve_method(F.pg.geo, F.cf.material, 5e-3, 50e3, mo);
+  const mh::CaseResult b = mh::solve_contact(F.pg.geo, F.cf.material, 5e-3, 50e3, mo);
   CHECK(b.method == mh::Method::Strips);
   REQUIRE(!b.warnings.empty());
   // Ellipse 3 (gauge corner) also fails the mean edge-gap test (0.114 > 0.1), which is checked
@@ -211,15 +211,15 @@ TEST_CASE("auto keeps the multi-Hertzian answer where it is valid and hands the 
   CHECK(b.warnings[0].rfind("auto:strips:ellipse 3 not Hertzian", 0) == 0);
   mh::MethodOptions lax = mo;
   lax.multi_hertzian.validity.max_gap_mean_error = 1.0;
-  const mh::CaseResult bi = mh::solve_method(F.pg.geo, F.cf.material, 5e-3, 50e3, lax);
+  const mh::CaseResult bi = mh::solve_contact(F.pg.geo, F.cf.material, 5e-3, 50e3, lax);
   CHECK(bi.method == mh::Method::Strips);
   REQUIRE(!bi.warnings.empty());
   CHECK(bi.warnings[0].rfind("auto:strips:ellipses 2 and 3 interact", 0) == 0);
-  const mh::CaseResult c = mh::solve_method(F.pg.geo, F.cf.material, 0.0, 50e3, mo);
+  const mh::CaseResult c = mh::solve_contact(F.pg.geo, F.cf.material, 0.0, 50e3, mo);
   CHECK(c.method == mh::Method::Strips);
   // t_Y = 8: the flange patch reaches the end of the wheel's R13 arc (multi-Hertzian pmax +22 %
   // against CONTACT): handed over by the mean edge-gap test.
-  const mh::CaseResult d = mh::solve_method(F.pg.geo, F.cf.material, 8e-3, 50e3, mo);
+  const mh::CaseResult d = mh::solve_contact(F.pg.geo, F.cf.material, 8e-3, 50e3, mo);
   CHECK(d.method == mh::Method::Strips);
   REQUIRE(!d.warnings.empty());
   CHECK(d.warnings[0].rfind("auto:strips:ellipse 4 not Hertzian", 0) == 0);
@@ -227,7 +227,7 @@ TEST_CASE("auto keeps the multi-Hertzian answer where it is valid and hands the 
   // back to the half-space method, and the warnings say both steps.
   mh::MethodOptions starved = mo;
   starved.strips.strips.max_iterations = 2;
-  const mh::CaseResult e = mh::solve_method(F.pg.geo, F.cf.material, 0.5e-3, 10e3, starved);
+  const mh::CaseResult e = mh::solve_contact(F.pg.geo, F.cf.material, 0.5e-3, 10e3, starved);
   CHECK(e.status == mh::CaseStatus::Ok);
   CHECK(e.method == mh::Method::HalfSpace);
   REQUIRE(e.warnings.size() >= 2);
@@ -243,7 +243,7 @@ TEST_CASE("a strip entering the patch takes up its load from zero", "[strips]") 
   // the case not_converged (docs/strips.md, "Load jumps"). Reference: this project's half-space
   // solution of the case, pmax 627.1 MPa, area 47.36 mm² (tolerances of a single region).
   const Fixture& F = manchester();
-  const mh::CaseResult r = mh::solve_method(F.pg.geo, F.cf.material, 0.5e-3, 10e3, F.cf.method_options());
+  const mh::CaseResult r = mh::solve_contact(F.pg.geo, F.cf.material, 0.5e-3, 10e3, F.cf.method_options());
   REQUIRE(r.status == mh::CaseStatus::Ok);
   CHECK(r.Fz == Approx(10e3).epsilon(1e-6));
   for (const std::string& w : r.warnings) CHECK(w.rfind("strip_outlier:", 0) != 0);
@@ -258,7 +258,7 @@ TEST_CASE("a strip case that does not converge keeps its closest iterate", "[str
   const Fixture& F = manchester();
   mh::MethodOptions mo = F.cf.method_options();
   mo.strips.strips.max_iterations = 2;
-  const mh::CaseResult r = mh::solve_method(F.pg.geo, F.cf.material, 0.5e-3, 10e3, mo);
+  const mh::CaseResult r = mh::solve_contact(F.pg.geo, F.cf.material, 0.5e-3, 10e3, mo);
   REQUIRE(r.status == mh::CaseStatus::NotConverged);
   CHECK(r.message.find("load not reached within max_iterations") != std::string::npos);
   REQUIRE(r.n_contacts >= 1);
@@ -282,21 +282,21 @@ TEST_CASE("strips in the plastic model: strongly capped flange contacts settle",
   for (double tY : {7e-3, 8.5e-3}) {
     CAPTURE(tY);
     mo.method = mh::Method::Strips;
-    const mh::CaseResult r = mh::solve_method(pg.geo, cf.material, tY, 100e3, mo);
+    const mh::CaseResult r = mh::solve_contact(pg.geo, cf.material, tY, 100e3, mo);
     INFO(r.message);
     REQUIRE(r.status == mh::CaseStatus::Ok);
     CHECK(r.Fz == Approx(100e3).epsilon(1e-4));
     CHECK(r.pmax <= cf.material.p_lim * (1 + 1e-9));
 
     mo.method = mh::Method::HalfSpace;
-    const mh::CaseResult h = mh::solve_method(pg.geo, cf.material, tY, 100e3, mo);
+    const mh::CaseResult h = mh::solve_contact(pg.geo, cf.material, tY, 100e3, mo);
     REQUIRE(h.status == mh::CaseStatus::Ok);
     CHECK(r.area == Approx(h.area).epsilon(0.05));
     CHECK(r.approach == Approx(h.approach).epsilon(0.12));
     // auto hands the plastic flange patch at 7 mm (it fails the Hertz validity test) to the strip
     // method; at 8.5 mm the multi-Hertzian ellipse passes it and is kept.
     mo.method = mh::Method::Auto;
-    const mh::CaseResult a = mh::solve_method(pg.geo, cf.material, tY, 100e3, mo);
+    const mh::CaseResult a = mh::solve_contact(pg.geo, cf.material, tY, 100e3, mo);
     CHECK(a.status == mh::CaseStatus::Ok);
     CHECK(a.method == (tY < 8e-3 ? mh::Method::Strips : mh::Method::MultiHertzian));
   }
@@ -306,7 +306,7 @@ TEST_CASE("strips in the plastic model: strongly capped flange contacts settle",
   // extent before lengthening (StripState::a_elastic). Interior strips: at least half as long as
   // the shorter neighbour (measured: smooth, 14.6 ... 33.1 ... 19.2 mm).
   mo.method = mh::Method::Strips;
-  const mh::CaseResult r9 = mh::solve_method(pg.geo, cf.material, 9e-3, 100e3, mo);
+  const mh::CaseResult r9 = mh::solve_contact(pg.geo, cf.material, 9e-3, 100e3, mo);
   REQUIRE(r9.status == mh::CaseStatus::Ok);
   REQUIRE(r9.patches.size() == 1);
   // The capped strips' elastic amplitudes differ from their neighbours' by more than the outlier

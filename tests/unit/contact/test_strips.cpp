@@ -1,7 +1,9 @@
 // Tests of the semi-Hertzian strip solver (lib/contact/strips.*).
 // Reference values: closed-form Hertz (Johnson, Contact Mechanics §3.6 / §4.2),
 // computed here independently of the library (own AGM, own axis-ratio solve).
-#include "contact/strips.hpp"
+#include "contact/strips/strip_patch.hpp"
+#include "contact/strips/strip_extents.hpp"
+#include "contact/strips/strip_influence.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -46,8 +46,8 @@ TEST_CASE("flange climb is flagged once the contact passes the steepest flange p
   REQUIRE(c.flange_climb);
   // The case says so, whatever the method.
   MethodOptions mo;
-  REQUIRE(warned(solve_method(G, Material{}, 12e-3, 50e3, mo), "flange_climb"));
-  REQUIRE_FALSE(warned(solve_method(G, Material{}, 0.0, 50e3, mo), "flange_climb"));
+  REQUIRE(warned(solve_contact(G, Material{}, 12e-3, 50e3, mo), "flange_climb"));
+  REQUIRE_FALSE(warned(solve_contact(G, Material{}, 0.0, 50e3, mo), "flange_climb"));
 }
 
 TEST_CASE("a contact at the cut end of a wheel profile is flagged off_profile", "[geometry][off_profile]") {
@@ -63,21 +63,21 @@ TEST_CASE("a contact at the cut end of a wheel profile is flagged off_profile", 
   REQUIRE_FALSE(main_at(Gf, -10e-3).off_profile);
   REQUIRE(main_at(Gc, -10e-3).off_profile);
   MethodOptions mo;
-  REQUIRE(warned(solve_method(Gc, Material{}, -10e-3, 50e3, mo), "off_profile"));
-  REQUIRE_FALSE(warned(solve_method(Gf, Material{}, -10e-3, 50e3, mo), "off_profile"));
-  REQUIRE_FALSE(warned(solve_method(Gf, Material{}, 0.0, 50e3, mo), "off_profile"));
+  REQUIRE(warned(solve_contact(Gc, Material{}, -10e-3, 50e3, mo), "off_profile"));
+  REQUIRE_FALSE(warned(solve_contact(Gf, Material{}, -10e-3, 50e3, mo), "off_profile"));
+  REQUIRE_FALSE(warned(solve_contact(Gf, Material{}, 0.0, 50e3, mo), "off_profile"));
   // The grid methods check their patches' lateral extent against the profiles' ends (issue #10).
   for (Method m : {Method::Strips, Method::HalfSpace}) {
     CAPTURE(to_string(m));
     MethodOptions g;
     g.method = m;
-    const CaseResult rc = solve_method(Gc, Material{}, -10e-3, 50e3, g);
+    const CaseResult rc = solve_contact(Gc, Material{}, -10e-3, 50e3, g);
     // The patch runs into the cut edge: the grid solvers report not_converged ("edge reached"),
     // and the row now also says why the geometry there cannot be trusted.
     INFO(rc.message);
     REQUIRE(rc.patches.size() == 1);
     REQUIRE(warned(rc, "off_profile:patch=1"));
-    REQUIRE_FALSE(warned(solve_method(Gf, Material{}, -10e-3, 50e3, g), "off_profile"));
-    REQUIRE_FALSE(warned(solve_method(Gf, Material{}, 0.0, 50e3, g), "off_profile"));
+    REQUIRE_FALSE(warned(solve_contact(Gf, Material{}, -10e-3, 50e3, g), "off_profile"));
+    REQUIRE_FALSE(warned(solve_contact(Gf, Material{}, 0.0, 50e3, g), "off_profile"));
   }
 }

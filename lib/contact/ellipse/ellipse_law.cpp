@@ -1,0 +1,83 @@
+// The force law of one ellipse, elastic (eq. 8) and plastic (method.md §5), and its outputs.
+#include "contact/ellipse/ellipse_law.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "core/numfmt.hpp"
+#include "core/units.hpp"
+
+namespace mh {
+
+EllipseLaw make_ellipse_law(double A, double B, const Material& mat, bool exact) {
+  if (!(B > 0) || !std::isfinite(B))
+    throw std::invalid_argument("B = " + format_number(B) +
+                                " 1/m: the lateral curvature sum B = (1/R_wxx + 1/R_rxx)/2 must be > 0 and finite "
+                                "for a Hertzian ellipse (B <= 0: conformal or diverging profiles across the contact)");
+  if (!(A > 0) || !std::isfinite(A))
+    throw std::invalid_argument("A = " + format_number(A) +
+                                " 1/m: the rolling-direction curvature sum A = 1/(2 R_wyy) must be > 0 and finite "
+                                "(A = 0 is a line contact, A < 0 a concave wheel in the rolling direction)");
+  std::string why;
+  if (!mat.valid(&why)) throw std::invalid_argument(why);
+  const double lambda = A / B;
+  EllipseLaw L;
+  L.A = A;
+  L.B = B;
+  L.c = exact ? hertz_coefficients_exact(lambda) : hertz_coefficients(lambda);
+  L.E_star = mat.E_star();
+  const double n3 = L.c.n * L.c.n * L.c.n;
+  L.k_e = (2.0 / 3.0) * (1.0 + lambda) / n3 * L.E_star / std::sqrt(B);  // (eq. 8)
+  L.p_lim = mat.p_lim;
+  const PlasticBranch p = plastic_branch(L.c.m, L.c.n, B, L.k_e, mat.p_lim);  // method.md §5
+  L.h_y = p.h_y;
+  L.k_p = p.k_p;
+  L.N_y = p.N_y;
+  return L;
+}
+
+EllipseState ellipse_state(const EllipseLaw& L, double h0) {
+  using units::pi;
+  if (std::isnan(h0) || std::isinf(h0))
+    throw std::invalid_argument("ellipse_state: h0 = " + format_number(h0) + " m must be finite");
+  EllipseState s;
+  if (!(h0 > 0)) return s;
+  s.h0 = h0;
+  s.N = L.force(h0);
+  // The patch is the intersection ellipse A x² + B y² = h0 of the interpenetrated surfaces,
+  // scaled to the Hertz shape: b = √(h0/B) (eq. 6), a = (m/n) b (eq. 4). Elastic: exactly Hertz.
+  s.b = std::sqrt(h0 / L.B);
+  s.a = (L.c.m / L.c.n) * s.b;
+  const double area = pi * s.a * s.b;
+  const double N_hertz = L.k_e * h0 * std::sqrt(h0);  // Hertz load of this patch (eq. 8)
+  s.p0 = 1.5 * N_hertz / area;                        // p0 = 3N/(2πab)
+  s.p_mean = s.N / area;
+  const double C = s.b / L.c.n;                       // b = n C (eq. 3)
+  s.approach = L.c.rho * C * C * (L.A + L.B);         // δ = ρ C² (A+B) (method.md §2)
+  s.plastic = h0 > L.h_y;
+  s.p_max = std::min(s.p0, L.p_lim);
+  if (s.plastic) {
+    const double q = plateau_fraction(s.p0, L.p_lim);  // √(1 − s²) (method.md §5)
+    s.plateau_a = s.a * q;
+    s.plateau_b = s.b * q;
+    // Elastic Hertz ellipse at the same load: h0_el = (N/k_e)^(2/3) (eq. 8), then eq. 6.
+    const double q_el = s.N / L.k_e;
+    const double h0_el = std::cbrt(q_el * q_el);
+    s.b_el = std::sqrt(h0_el / L.B);
+    s.a_el = (L.c.m / L.c.n) * s.b_el;
+    s.area_ratio = (s.a * s.b) / (s.a_el * s.b_el);
+  } else {
+    s.a_el = s.a;
+    s.b_el = s.b;
+    s.area_ratio = 1.0;
+  }
+  s.p0_el = 1.5 * s.N / (pi * s.a_el * s.b_el);
+  return s;
+}
+
+EllipseState ellipse_state_for_force(const EllipseLaw& law, double N) {
+  return ellipse_state(law, law.h0_for_force(N));
+}
+
+}  // namespace mh

@@ -1,0 +1,95 @@
+#pragma once
+// The force law of one Hertzian ellipse of the multi-Hertzian solver (eqs. 6–8, method.md §2) and
+// its plastic variant (method.md §5), plus the outputs of one loaded ellipse. SI throughout.
+//
+// Convention: h0 is the virtual interpenetration of eq. 6 (h0 = b² B), NOT the true Hertz approach
+// δ = ρ C² (A+B) (for a circular contact h0 = δ/2). Both are reported, under different names.
+#include <cmath>
+#include <stdexcept>
+
+#include "contact/ellipse/hertz.hpp"
+#include "contact/ellipse/plastic.hpp"
+
+namespace mh {
+
+/// Everything about one ellipse that does not depend on the load.
+struct EllipseLaw {
+  double A = 0, B = 0;        ///< [1/m] curvature sums along x and y (eq. 1)
+  HertzCoefficients c;        ///< m, n, ρ of λ = A/B
+  double E_star = 0;          ///< [Pa] E/(1−ν²)
+  double k_e = 0;             ///< [N/m^1.5] elastic stiffness (eq. 8)
+  double p_lim = INFINITY;    ///< [Pa] limit pressure; INFINITY = elastic
+  double h_y = INFINITY;      ///< [m] h0 at which the Hertz peak reaches p_lim (method.md §5)
+  double k_p = 0;             ///< [N/m] plastic stiffness dN/dh0 above h_y (method.md §5)
+  double N_y = INFINITY;      ///< [N] load at h_y, (2/3) k_p h_y
+
+  /// N(h0) [N] and, if dN_dh0 is given, dN/dh0 [N/m] at virtual penetration h0 [m]; both 0 for
+  /// h0 ≤ 0 (and NaN h0). N = k_e h0^(3/2) (eq. 8) up to h_y, N = k_p (h0 − h_y/3) above
+  /// (method.md §5). C¹ at h_y. Inline, allocation-free, no GSL: the solver's inner loop.
+  double force(double h0, double* dN_dh0 = nullptr) const {
+    if (!(h0 > 0)) {
+      if (dN_dh0) *dN_dh0 = 0;
+      return 0;
+    }
+    if (h0 <= h_y) {
+      const double r = std::sqrt(h0);
+      if (dN_dh0) *dN_dh0 = 1.5 * k_e * r;
+      return k_e * h0 * r;
+    }
+    if (dN_dh0) *dN_dh0 = k_p;
+    return k_p * (h0 - h_y / 3.0);
+  }
+
+  /// The h0 [m] that carries the load N [N] (inverse of force()), closed form in both regimes:
+  /// (N/k_e)^(2/3) up to N_y, N/k_p + h_y/3 above. 0 for N = 0. Throws std::invalid_argument
+  /// for N < 0 or NaN.
+  double h0_for_force(double N) const {
+    if (!(N >= 0)) throw std::invalid_argument("h0_for_force: the normal load N must be >= 0 N");
+    if (N == 0) return 0;
+    if (N <= N_y) {
+      const double q = N / k_e;
+      return std::cbrt(q * q);
+    }
+    return N / k_p + h_y / 3.0;
+  }
+
+  bool is_plastic_law() const { return std::isfinite(p_lim); }
+};
+
+/// Build the law of an ellipse with curvature sums A, B [1/m] (eq. 1) for `mat`: λ = A/B, m, n, ρ
+/// (fast path, or the exact GSL path when `exact`), k_e (eq. 8), and with a finite mat.p_lim the
+/// plastic branch (method.md §5). Throws std::invalid_argument with the rule for a
+/// non-Hertzian or invalid input: B ≤ 0 (conformal or diverging profiles across the contact),
+/// A ≤ 0 (A < 0 is a concave rolling direction, A = 0 a line contact), A/B outside
+/// [kLambdaMinExact, kLambdaMaxExact], non-finite A or B, and an invalid material
+/// (Material::is_valid).
+EllipseLaw make_ellipse_law(double A, double B, const Material& mat, bool exact = false);
+
+/// One loaded ellipse at virtual penetration h0 (all SI). For h0 ≤ 0 everything is 0 (area_ratio 1).
+struct EllipseState {
+  double h0 = 0;          ///< [m] virtual penetration (eq. 6), not the true approach
+  double N = 0;           ///< [N] normal force, force(h0)
+  double a = 0, b = 0;    ///< [m] semi-axes along x (rolling) and y (lateral): b = √(h0/B),
+                          ///<     a = (m/n) b; in the plastic regime this is the plastic patch
+  double p0 = 0;          ///< [Pa] Hertz peak pressure of this patch, 3 k_e h0^(3/2) / (2π a b)
+                          ///<     (uncapped: above p_lim in the plastic regime)
+  double p_mean = 0;      ///< [Pa] N / (π a b)
+  double approach = 0;    ///< [m] true Hertz approach δ = ρ C² (A+B) with C = b/n (= 2 h0 for a
+                          ///<     sphere); in the plastic regime that of the patch (Thornton's δ)
+  bool plastic = false;   ///< h0 > h_y (p0 > p_lim)
+  double p_max = 0;       ///< [Pa] min(p0, p_lim), the largest pressure actually carried
+  double plateau_a = 0, plateau_b = 0;  ///< [m] semi-axes a√(1−s²), b√(1−s²) where p = p_lim; 0 if elastic
+  double a_el = 0, b_el = 0;            ///< [m] elastic Hertz semi-axes at the same load N
+  double area_ratio = 1;                ///< [-] a b / (a_el b_el); 1 if elastic
+  double p0_el = 0;                     ///< [Pa] elastic Hertz peak at the same load N, 3N/(2π a_el b_el)
+                                        ///<     (= p0 if elastic; below p0 in the plastic regime)
+};
+
+/// The state of the ellipse of `law` at virtual penetration h0 [m]. Throws std::invalid_argument
+/// for NaN or infinite h0.
+EllipseState ellipse_state(const EllipseLaw& law, double h0);
+
+/// The state at load N [N] (ellipse_state(law, law.h0_for_force(N))).
+EllipseState ellipse_state_for_force(const EllipseLaw& law, double N);
+
+}  // namespace mh

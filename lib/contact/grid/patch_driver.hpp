@@ -1,0 +1,111 @@
+#pragma once
+// The case loop shared by the grid methods (half-space §8, strips §9 of docs/method.md): place the
+// contact patches and their planes (geometry/contact_patches.hpp), let a method-specific solver
+// work on each patch, and close the vertical force balance Σ_k N_k cos γ_k = Q (eq. 10) with one
+// rigid vertical approach δz shared by all patches (δ_k = δz cos γ_k, eq. 11). Patches are placed
+// again when the contact outgrows what was set up, or when the solution's approach differs from
+// the approach the planes were placed for by more than ref_rtol.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/case_result.hpp"
+#include "contact/ellipse/hertz.hpp"
+#include "geometry/contact_patches.hpp"
+
+namespace mh {
+
+/// One patch's solver. Its gap is the undeformed normal gap with the wheel at the approach the
+/// patch was set up for (dz_ref), shifted so that δ = dz cos γ reproduces it at dz = dz_ref.
+class PatchSolver {
+ public:
+  virtual ~PatchSolver() = default;
+  /// Approach control: solve at normal approach δ [m]; returns the patch's normal force [N].
+  virtual double at_approach(double delta) = 0;
+  /// Load control: solve for normal force N [N]; returns the normal approach δ [m].
+  virtual double at_load(double N) = 0;
+  /// The last solve did not converge (message in why()).
+  virtual bool failed() const = 0;
+  virtual std::string why() const = 0;
+  /// The last solution reaches the edge of what was set up (grid or strips): set up larger.
+  virtual bool outgrown() const = 0;
+  /// Take the solution of `previous` (the same patch at the previous placement, possibly another
+  /// plane or grid) as the initial guess of the next solve. Default: nothing (a cold start).
+  virtual void warm_start_from(const PatchSolver& previous) { (void)previous; }
+};
+
+/// Builds the solver of one patch (region, plane) for the wheel at vertical approach dz_ref.
+/// Returns nullptr and sets *why when the patch cannot be set up (e.g. too many elements).
+using PatchSolverFactory =
+    std::function<std::unique_ptr<PatchSolver>(const PatchRegion& region, double dz_ref, std::string* why)>;
+
+struct PatchDriverOptions {
+  double d_comb = 8e-3;     ///< [m] regions closer than this are one patch
+  double margin = 1.25;     ///< patches cover the interpenetration at margin × the approach
+  double ref_rtol = 0.02;   ///< re-place the planes when the approach moved by more than this (relative)
+  double force_rtol = 1e-7; ///< |Σ N_k cos γ_k − Q| ≤ force_rtol·Q with several patches
+  int max_outer = 60;       ///< approach iterations with several patches
+  int max_passes = 7;       ///< placements of the patches
+};
+
+struct PatchDriverResult {
+  CaseStatus status = CaseStatus::Ok;
+  std::string message;
+  double dz = 0;            ///< [m] the rigid vertical approach of the solution
+  int evaluations = 0;      ///< patch solves (all passes)
+  int passes = 0;           ///< placements of the patches
+  std::vector<PatchRegion> regions;                   ///< of the final placement
+  std::vector<std::unique_ptr<PatchSolver>> solvers;  ///< their solvers, holding the solution at dz
+};
+
+/// The driver options from a grid method's options (they share the fields d_comb, margin,
+/// ref_rtol, force_rtol, max_outer), with max_passes placements of the patches.
+template <class MethodOptions>
+PatchDriverOptions patch_driver_options(const MethodOptions& o, int max_passes) {
+  PatchDriverOptions d;
+  d.d_comb = o.d_comb;
+  d.margin = o.margin;
+  d.ref_rtol = o.ref_rtol;
+  d.force_rtol = o.force_rtol;
+  d.max_outer = o.max_outer;
+  d.max_passes = max_passes;
+  return d;
+}
+
+/// The start of a grid method's case: the elastic multi-Hertzian solution of the same case (below
+/// a microsecond; elastic even in the plastic model, whose "approach", Thornton's δ of the grown
+/// ellipse, overestimates the capped approach 3–5 times in flange contact). Its approach is the
+/// first estimate of the grid's, and its geometric warnings (flange_climb) are the case's.
+struct GridStart {
+  GridStart() = default;
+  GridStart(const GridStart&) = delete;
+  GridStart& operator=(const GridStart&) = delete;
+  CaseResult own;                  ///< the elastic multi-Hertzian solution, when the caller gave none
+  const CaseResult* mh = nullptr;  ///< the elastic multi-Hertzian solution used (the caller's or own)
+  double dz = 0.05e-3;             ///< [m] first estimate of the vertical approach (0.05 mm without one)
+};
+
+/// What every grid method does before solving a case: refuse Q ≤ 0 (`no_contact`) and a t_Y outside
+/// the geometry (`out_of_range`), with r's status and message set (returns false); else fill *gs
+/// from `elastic_mh` (the elastic multi-Hertzian solution of this case, e.g. the one `auto` already
+/// has; null: solved here) and return true.
+bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, double Q, const CaseResult* elastic_mh,
+                     CaseResult& r, GridStart* gs);
+
+/// What every grid method does after solving a case: the start's flange_climb warning, then
+/// `off_profile:patch=K` for each patch whose contact reaches the end of either profile (method.md
+/// §3.7: it stands on extrapolated geometry).
+void finish_grid_case(const ContactGeometry& G, double tY, const GridStart& gs, CaseResult& r);
+
+/// [m] the vertical approach at which p_lim [Pa] times the horizontal projection of the rigid
+/// interpenetration equals Q [N]: a lower bound of the capped approach (contact needs g + u ≤ δ
+/// with u ≥ 0, and the vertical force is at most p_lim times the projected contact area), found
+/// by bisection to 1e-4 relative.
+double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim);
+
+/// Solve for the load Q [N], starting from the approach estimate dz_est [m] (> 0).
+PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,
+                                const PatchSolverFactory& make);
+
+}  // namespace mh

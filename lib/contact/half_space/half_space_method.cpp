@@ -1,0 +1,231 @@
+#include "contact/half_space/half_space_method.hpp"
+
+#include "contact/grid/pressure_spike.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "contact/half_space/influence.hpp"
+#include "contact/grid/patch_driver.hpp"
+#include "contact/multi_hertz/multi_hertz.hpp"
+#include "core/numfmt.hpp"
+#include "geometry/gap.hpp"
+
+namespace mh {
+
+
+namespace {
+
+constexpr long kMaxElements = 4'000'000;  // one patch grid larger than this is refused (memory)
+
+// One patch on the half-space: its grid in the patch plane, the undeformed normal gap, the
+// influence operator and the pressures.
+class HalfSpacePatch : public PatchSolver {
+ public:
+  HalfSpacePatch(const WheelRailGap& gap, const PatchRegion& R, double dz_ref, const HalfSpaceOptions& opt,
+                 double H, double p_lim)
+      : P(R.P), dx(opt.dx), ds(opt.ds), p_lim_(p_lim), cg_(opt.cg) {
+    const double c = std::cos(P.gamma);
+    // x symmetric about 0 (no yaw); s over the region's extent in the plane; 3 elements of room.
+    const double sa = R.s_a - 3 * ds, sb = R.s_b + 3 * ds;
+    nx = 2 * static_cast<int>(std::ceil((R.x_half + 3 * dx) / dx));
+    ns = std::max(1, static_cast<int>(std::ceil((sb - sa) / ds)));
+    x0 = -(nx / 2 - 0.5) * dx;
+    s0 = 0.5 * (sa + sb) - (ns - 1) * 0.5 * ds;
+    if (static_cast<long>(nx) * ns > kMaxElements) return;  // refused by the factory
+    h.assign(static_cast<std::size_t>(nx) * ns, 0.0);
+    h_min = INFINITY;
+    for (int j = 0; j < ns; ++j) {
+      const double s = s0 + j * ds;
+      for (int i = nx / 2; i < nx; ++i) {  // h is even in x: compute x > 0, mirror
+        // The gap with the wheel lowered vertically by dz_ref, shifted back by the normal approach
+        // dz_ref cos γ: δ = dz cos γ reproduces it exactly at dz = dz_ref, to first order nearby.
+        const double v = normal_gap(gap, P, x0 + i * dx, s, dz_ref) + dz_ref * c;
+        h[static_cast<std::size_t>(i + nx * j)] = v;
+        h[static_cast<std::size_t>(nx - 1 - i + nx * j)] = v;
+        h_min = std::min(h_min, v);
+      }
+    }
+    p.assign(h.size(), 0.0);
+    C = std::make_unique<InfluenceGrid>(nx, ns, dx, ds, H);
+  }
+  bool ok() const { return C != nullptr; }
+  double at_approach(double delta) override {
+    last = solve_normal_approach(*C, h.data(), delta, p_lim_, p.data(), cg_);
+    iterations += last.iterations;
+    return last.N;
+  }
+  double at_load(double N) override {
+    last = solve_normal_load(*C, h.data(), N, p_lim_, p.data(), cg_);
+    iterations += last.iterations;
+    return last.delta;
+  }
+  /// The previous placement's pressures at the same rail point: element (x, s) here is rail
+  /// y = y_ref + s cos γ, i.e. s' = (y − y'_ref)/cos γ' there; nearest element, 0 outside its grid.
+  /// Only a capped solution is carried over (the capped load control then starts from it instead
+  /// of solving elastically first); an elastic one is rebuilt from a cold start, as before.
+  void warm_start_from(const PatchSolver& previous) override {
+    const auto* q = dynamic_cast<const HalfSpacePatch*>(&previous);
+    if (!q || !std::isfinite(p_lim_) || q->last.status != GridStatus::Ok || q->last.n_plastic == 0) return;
+    for (int j = 0; j < ns; ++j) {
+      const double y = P.y_ref + (s0 + j * ds) * std::cos(P.gamma);
+      const int jq = static_cast<int>(std::lround(((y - q->P.y_ref) / std::cos(q->P.gamma) - q->s0) / q->ds));
+      if (jq < 0 || jq >= q->ns) continue;
+      for (int i = 0; i < nx; ++i) {
+        const int iq = static_cast<int>(std::lround((x0 + i * dx - q->x0) / q->dx));
+        if (iq < 0 || iq >= q->nx) continue;
+        p[static_cast<std::size_t>(i + nx * j)] = q->p[static_cast<std::size_t>(iq + q->nx * jq)];
+      }
+    }
+  }
+  bool failed() const override { return last.status == GridStatus::NotConverged; }
+  std::string why() const override { return "the half-space solver did not converge on a patch grid"; }
+  bool outgrown() const override {  // pressure on the grid's edge
+    for (int i = 0; i < nx; ++i)
+      if (p[static_cast<std::size_t>(i)] > 0 || p[static_cast<std::size_t>(i + nx * (ns - 1))] > 0) return true;
+    for (int j = 0; j < ns; ++j)
+      if (p[static_cast<std::size_t>(nx * j)] > 0 || p[static_cast<std::size_t>(nx - 1 + nx * j)] > 0) return true;
+    return false;
+  }
+
+  PatchPlane P;
+  double dx, ds;
+  int nx = 0, ns = 0;
+  double x0 = 0, s0 = 0, h_min = 0;
+  std::vector<double> h, p;
+  std::unique_ptr<InfluenceGrid> C;
+  NormalCGResult last;
+  int iterations = 0;
+
+ private:
+  double p_lim_;
+  NormalCGOptions cg_;
+};
+
+}  // namespace
+
+namespace {
+
+// The case after begin_grid_case (r holds its method; gs the start).
+CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double tY, double Q, const HalfSpaceOptions& opt,
+                           const GridStart& gs, CaseResult r) {
+  double dz_est = gs.dz;
+  if (std::isfinite(mat.p_lim)) {
+    // Plastic model: when the elastic solution stays below the cap it is the solution of the
+    // capped problem too (it satisfies every condition, and the solution is unique), exactly.
+    Material elastic = mat;
+    elastic.p_lim = INFINITY;
+    CaseResult el = half_space_case(G, elastic, tY, Q, opt, gs, r);
+    if (el.status != CaseStatus::Ok || el.pmax <= mat.p_lim) return el;
+    // The capped approach is at least the elastic one (capping only softens) and at least the
+    // rigid–perfectly-plastic one, where p_lim times the horizontal projection of the
+    // interpenetration carries Q (contact needs g + u ≤ δ with u ≥ 0, and Σ N_k cos γ_k is p_lim
+    // times the projected area of the capped elements). The multi-Hertzian estimate is not used:
+    // its plastic "approach" (Thornton's δ of the grown ellipse) overestimates this approach 3–5
+    // times in flange contact, where the interpenetration at that depth reaches the tread.
+    const WheelRailGap gap0(G, tY);
+    dz_est = std::max(el.approach, rigid_plastic_approach(gap0, Q, mat.p_lim));
+  }
+  const WheelRailGap gap(G, tY);
+  const double H = mat.compliance();
+  const double p_lim = mat.p_lim;
+
+
+  const PatchDriverOptions dopt = patch_driver_options(opt, opt.max_rebuilds + 1);
+  PatchDriverResult D = drive_patches(gap, Q, dz_est, dopt, [&](const PatchRegion& reg, double dz_ref, std::string* why) {
+    auto k = std::make_unique<HalfSpacePatch>(gap, reg, dz_ref, opt, H, p_lim);
+    if (!k->ok()) {
+      *why = "a contact patch would need " + std::to_string(static_cast<long>(k->nx) * k->ns) +
+             " elements (more than " + std::to_string(kMaxElements) + "): use larger dx_mm/ds_mm";
+      return std::unique_ptr<PatchSolver>();
+    }
+    return std::unique_ptr<PatchSolver>(std::move(k));
+  });
+  r.status = D.status;
+  r.message = D.message;
+  const double dz = D.dz;
+  const int outer = D.evaluations;  // patch solves, all placements
+  // Results per patch and for the case.
+  r.approach = dz;
+  r.iterations = outer;
+  int index = 0;
+  for (const auto& solver : D.solvers) {
+    const HalfSpacePatch& k = static_cast<const HalfSpacePatch&>(*solver);
+    PatchResult pr;
+    pr.patch = ++index;
+    pr.y_r = k.P.y_ref;
+    pr.z_r = gap.z_rail(k.P.y_ref);  // the reference point on the rail profile (as CONTACT reports it)
+    pr.y_w = gap.y_wheel(k.P.y_ref);
+    pr.r_roll = gap.rolling_radius(k.P.y_ref);
+    pr.gamma = k.P.gamma;
+    pr.iterations = k.iterations;
+    const double da = k.dx * k.ds;
+    int i0 = k.nx, i1 = -1, j0 = k.ns, j1 = -1;
+    double sp = 0, spx = 0, sps = 0;
+    for (int j = 0; j < k.ns; ++j)
+      for (int i = 0; i < k.nx; ++i) {
+        const double p = k.p[static_cast<std::size_t>(i + k.nx * j)];
+        if (!(p > 0)) continue;
+        ++pr.n_elements;
+        pr.pmax = std::max(pr.pmax, p);
+        if (std::isfinite(p_lim) && p >= p_lim) { pr.plastic_area += da; pr.capped_load += p * da; }
+        sp += p; spx += p * (k.x0 + i * opt.dx); sps += p * (k.s0 + j * opt.ds);
+        i0 = std::min(i0, i); i1 = std::max(i1, i); j0 = std::min(j0, j); j1 = std::max(j1, j);
+      }
+    pr.N = sp * da;
+    pr.area = pr.n_elements * da;
+    if (pr.n_elements > 0) {
+      pr.length_x = (i1 - i0 + 1) * opt.dx;
+      pr.width_s = (j1 - j0 + 1) * opt.ds;
+      pr.s_lo = k.s0 + j0 * opt.ds;
+      pr.s_hi = k.s0 + j1 * opt.ds;
+      pr.x_centroid = spx / sp;
+      pr.s_centroid = sps / sp;
+    }
+    pr.approach = dz * std::cos(k.P.gamma) - k.h_min;
+    if (pr.N <= 0) continue;  // a potential patch that carries nothing is not reported
+    // A peak on a single element is a property of the grid (a corner in the gap), not of the
+    // contact: said in a warning (contact/grid/pressure_spike.hpp).
+    const PressureSpike spike = find_pressure_spike(k.p, k.nx, k.ns);
+    if (spike.found)
+      r.warnings.push_back("pressure_spike:patch=" + std::to_string(r.patches.size() + 1) +
+                           ":y_rail_mm=" + format_number(std::round((k.P.y_ref + (k.s0 + spike.j * opt.ds) * std::cos(k.P.gamma)) * 1e6) / 1e3) +
+                           ":p_MPa=" + format_number(std::round(spike.p / 1e3) / 1e3) +
+                           ":neighbours_MPa=" + format_number(std::round(spike.neighbours / 1e3) / 1e3));
+    if (opt.keep_pressure) {
+      pr.nx = k.nx; pr.ns = k.ns; pr.dx = opt.dx; pr.ds = opt.ds; pr.x0 = k.x0; pr.s0 = k.s0;
+      pr.p = k.p;
+    }
+    r.Fz += pr.N * std::cos(pr.gamma);
+    r.Fy += pr.N * std::sin(pr.gamma);
+    r.pmax = std::max(r.pmax, pr.pmax);
+    r.area += pr.area;
+    r.patches.push_back(std::move(pr));
+  }
+  index = 0;
+  for (auto& pr : r.patches) pr.patch = ++index;
+  r.n_contacts = static_cast<int>(r.patches.size());
+  r.residual = (r.Fz - Q) / Q;
+  if (r.status == CaseStatus::Ok && std::fabs(r.residual) > 10 * opt.force_rtol && D.solvers.size() > 1) {
+    r.status = CaseStatus::NotConverged;
+    r.message = "force balance residual " + format_number(r.residual);
+  }
+  return r;
+}
+
+}  // namespace
+
+CaseResult solve_half_space(const ContactGeometry& G, const Material& mat, double tY, double Q,
+                            const HalfSpaceOptions& opt, const CaseResult* elastic_mh) {
+  CaseResult r;
+  r.method = Method::HalfSpace;
+  GridStart gs;
+  if (!begin_grid_case(G, mat, tY, Q, elastic_mh, r, &gs)) return r;
+  r = half_space_case(G, mat, tY, Q, opt, gs, std::move(r));
+  finish_grid_case(G, tY, gs, r);
+  return r;
+}
+
+}  // namespace mh

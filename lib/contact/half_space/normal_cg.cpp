@@ -1,0 +1,351 @@
+// Constrained conjugate-gradient normal contact solver (sources and problem in normal_cg.hpp).
+#include "contact/half_space/normal_cg.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+namespace mh {
+
+
+namespace {
+
+enum class Control { Approach, Load };
+
+constexpr int kMaxLoadSteps = 60;  // capped load control: approach solves on δ (usually 4–8)
+constexpr int kPolishSteps = 50;   // capped load control: final [PK] load-control steps (usually 0–2)
+
+/// The shared CG loop ([PK]). target is δ [m] (Approach) or N [N] (Load); at most max_iterations
+/// CG steps (0: only the initial guess is prepared and measured).
+NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Control control,
+                     double p_lim, double* p, const NormalCGOptions& options, int max_iterations) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  NormalCGResult result;
+  result.status = GridStatus::NotConverged;
+  result.error = nan;
+  const std::size_t n = static_cast<std::size_t>(C.nx()) * static_cast<std::size_t>(C.ny());
+  const double area = C.dx() * C.dy();  // [m²] element area
+  const bool load = control == Control::Load;
+
+  // Invalid input: NotConverged, p untouched.
+  if (!options.valid(nullptr) || !(p_lim > 0) || !std::isfinite(target)) return result;
+  double g_min = inf;
+  for (std::size_t e = 0; e < n; ++e) {
+    if (!std::isfinite(g[e])) return result;
+    g_min = std::min(g_min, g[e]);
+  }
+
+  auto finish = [&](GridStatus status) {
+    double sum = 0;
+    int n_contact = 0, n_plastic = 0;
+    for (std::size_t e = 0; e < n; ++e) {
+      sum += p[e];
+      if (p[e] > 0) ++n_contact;
+      if (p[e] == p_lim) ++n_plastic;
+    }
+    result.status = status;
+    result.N = area * sum;
+    result.n_contact = n_contact;
+    result.n_plastic = n_plastic;
+    return result;
+  };
+
+  // No contact.
+  if ((!load && target <= g_min) || (load && target <= 0)) {
+    std::fill(p, p + n, 0.0);
+    result.delta = load ? g_min : target;
+    result.error = 0;
+    return finish(GridStatus::NoContact);
+  }
+  // Infeasible load: more than every element at the cap can carry.
+  if (load && std::isfinite(p_lim) && target > p_lim * area * static_cast<double>(n)) {
+    result.delta = nan;
+    return finish(GridStatus::NotConverged);
+  }
+
+  // Workspace, allocated once per call.
+  std::vector<double> u(n), h(n), t(n, 0.0), Ct(n);
+  std::vector<unsigned char> in_free(n);
+
+  // Initial guess: clip to [0, p_lim] (non-finite entries → 0).
+  double sum_p = 0;
+  for (std::size_t e = 0; e < n; ++e) {
+    const double pe = std::isfinite(p[e]) ? p[e] : (p[e] == inf ? p_lim : 0.0);
+    p[e] = std::min(std::max(pe, 0.0), p_lim);
+    sum_p += p[e];
+  }
+
+  // [PK] load restoration: scale the free pressures so that dx·dy·Σp = N; with a cap, elements
+  // pushed to p_lim are fixed there and the scaling repeated (each pass caps ≥ 1 more element).
+  // With no element at the cap this is exactly p *= N/P, the elastic path.
+  auto restore_load = [&]() {
+    const double N = target;
+    for (std::size_t pass = 0; pass <= n; ++pass) {
+      double sum_free = 0;
+      std::size_t n_cap = 0, n_zero = 0;
+      for (std::size_t e = 0; e < n; ++e) {
+        if (p[e] == p_lim)
+          ++n_cap;
+        else
+          sum_free += p[e];
+        if (p[e] == 0) ++n_zero;
+      }
+      const double P_cap = n_cap ? area * p_lim * static_cast<double>(n_cap) : 0.0;
+      const double P_free = area * sum_free;
+      if (N <= P_cap) {  // the capped elements alone carry N: scale everything down
+        const double s = N / (P_cap + P_free);
+        for (std::size_t e = 0; e < n; ++e) p[e] *= s;
+        return;
+      }
+      if (!(P_free > 0)) {  // nothing free to scale: spread the deficit over unloaded elements
+        if (n_zero == 0) return;
+        const double q = std::min(p_lim, (N - P_cap) / (area * static_cast<double>(n_zero)));
+        for (std::size_t e = 0; e < n; ++e)
+          if (p[e] == 0) p[e] = q;
+        continue;
+      }
+      const double s = (N - P_cap) / P_free;
+      bool capped = false;
+      for (std::size_t e = 0; e < n; ++e) {
+        if (p[e] == p_lim) continue;
+        p[e] *= s;
+        if (p[e] >= p_lim) {
+          p[e] = p_lim;
+          capped = true;
+        }
+      }
+      if (!capped) return;
+    }
+  };
+
+  if (load) {
+    if (!(sum_p > 0)) std::fill(p, p + n, target / (area * static_cast<double>(n)));  // [PK] §3
+    restore_load();
+  } else if (!(sum_p > 0)) {
+    // Cold start in approach control: shape q = max(δ − g, 0) (rigid interference), scaled by the
+    // least-squares α minimising Σ_S (α (C q)_e − q_e)² over its support S.
+    for (std::size_t e = 0; e < n; ++e) h[e] = std::max(target - g[e], 0.0);
+    C.apply(h.data(), u.data());
+    double num = 0, den = 0;
+    for (std::size_t e = 0; e < n; ++e)
+      if (h[e] > 0) {
+        num += h[e] * u[e];
+        den += u[e] * u[e];
+      }
+    const double alpha = den > 0 ? num / den : 1.0 / C.self_coefficient();
+    for (std::size_t e = 0; e < n; ++e) p[e] = std::min(alpha * h[e], p_lim);
+  }
+
+  double delta = target;  // load control: re-estimated every iteration
+  double G_old = 0;       // Σ_F h² of the previous step
+  bool reset = true;      // conjugacy reset ([PK]: after the contact set gained elements)
+  for (int it = 0;; ++it) {
+    C.apply(p, u.data());
+
+    // Free set and, in load control, δ = mean of g + u over it ([PK]).
+    std::size_t n_free = 0;
+    double sum_gu = 0;
+    for (std::size_t e = 0; e < n; ++e) {
+      in_free[e] = p[e] > 0 && p[e] < p_lim;
+      if (in_free[e]) {
+        ++n_free;
+        sum_gu += g[e] + u[e];
+      }
+    }
+    if (load) {
+      if (n_free > 0) {
+        delta = sum_gu / static_cast<double>(n_free);
+      } else {  // all loaded elements capped: δ where every element touches
+        delta = -inf;
+        for (std::size_t e = 0; e < n; ++e) delta = std::max(delta, g[e] + u[e]);
+      }
+    }
+
+    // Gap, convergence measure ε (NormalCGOptions::tol).
+    double G = 0, violation = 0;
+    for (std::size_t e = 0; e < n; ++e) {
+      h[e] = g[e] + u[e] - delta;
+      if (in_free[e])
+        G += h[e] * h[e];
+      else if (p[e] == 0)
+        violation = std::max(violation, -h[e]);
+      else
+        violation = std::max(violation, h[e]);
+    }
+    const double h_ref = delta - g_min;
+    const double rms = n_free ? std::sqrt(G / static_cast<double>(n_free)) : 0.0;
+    const double error = h_ref > 0 ? std::max(rms, violation) / h_ref : inf;
+    result.error = error;
+    result.iterations = it;
+    result.delta = delta;
+    if (!std::isfinite(G) || !std::isfinite(violation) || std::isnan(error))
+      return finish(GridStatus::NotConverged);  // numerical trouble
+    if (error <= options.tol) return finish(GridStatus::Ok);
+    if (it >= max_iterations) return finish(GridStatus::NotConverged);
+
+    // Conjugate direction on F ([PK]): t = h + β t_old, β = G/G_old unless reset.
+    const double beta = (reset || !(G_old > 0)) ? 0.0 : G / G_old;
+    for (std::size_t e = 0; e < n; ++e) t[e] = in_free[e] ? h[e] + beta * t[e] : 0.0;
+    G_old = G;
+
+    // Step length τ = Σ_F h t / Σ_F (C t − mean_F C t) t ([PK]; no centring in approach control).
+    double tau = 1.0 / C.self_coefficient();  // fallback with F empty: local (Jacobi) scale
+    if (n_free > 0) {
+      C.apply(t.data(), Ct.data());
+      double mean_Ct = 0;
+      if (load) {
+        for (std::size_t e = 0; e < n; ++e)
+          if (in_free[e]) mean_Ct += Ct[e];
+        mean_Ct /= static_cast<double>(n_free);
+      }
+      double num = 0, den = 0;
+      for (std::size_t e = 0; e < n; ++e)
+        if (in_free[e]) {
+          num += h[e] * t[e];
+          den += (Ct[e] - mean_Ct) * t[e];
+        }
+      if (!(den > 0) || !std::isfinite(num) || !std::isfinite(den))
+        return finish(GridStatus::NotConverged);  // C restricted to F must be positive definite
+      tau = num / den;
+    }
+
+    // Step on F, projection onto [0, p_lim]; violators of a bound re-enter F ([PK], mirrored for
+    // the cap), which resets the conjugacy.
+    reset = false;
+    for (std::size_t e = 0; e < n; ++e) {
+      if (in_free[e]) {
+        p[e] = std::min(std::max(p[e] - tau * t[e], 0.0), p_lim);
+      } else if (p[e] == 0) {
+        if (h[e] < 0) {
+          p[e] = std::min(-tau * h[e], p_lim);
+          reset = true;
+        }
+      } else if (h[e] > 0) {  // p[e] == p_lim
+        p[e] = std::max(p_lim - tau * h[e], 0.0);
+        reset = true;
+      }
+    }
+    if (load) restore_load();
+  }
+}
+
+/// Load control with a finite cap (normal_cg.hpp, "Load control with a cap"): the elastic solution
+/// when it stays below p_lim, else a safeguarded secant on δ over capped approach-control solves.
+NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double N, double p_lim,
+                                 double* p, const NormalCGOptions& options) {
+  const std::size_t n = static_cast<std::size_t>(C.nx()) * static_cast<std::size_t>(C.ny());
+  const double area = C.dx() * C.dy();
+  // Invalid input, no load and an infeasible load are answered by the shared loop, untouched.
+  if (!options.valid(nullptr) || !(p_lim > 0) || !std::isfinite(N) || !(N > 0) ||
+      N > p_lim * area * static_cast<double>(n))
+    return solve(C, g, N, Control::Load, p_lim, p, options, options.max_iterations);
+  for (std::size_t e = 0; e < n; ++e)
+    if (!std::isfinite(g[e])) return solve(C, g, N, Control::Load, p_lim, p, options, options.max_iterations);
+
+  // 1. The elastic solution ([PK] load control, p_lim = ∞). If it stays below the cap it is the
+  //    solution of the capped problem too (it satisfies every condition; the solution is unique).
+  //    Skipped when the guess already holds capped elements (a previous capped solution): then δ
+  //    starts from the guess's own approach, the mean of g + C p over its free elements.
+  std::vector<double> guess(p, p + n);
+  bool capped_guess = false;
+  for (std::size_t e = 0; e < n; ++e) capped_guess = capped_guess || p[e] >= p_lim;
+  NormalCGResult el;
+  el.status = GridStatus::NotConverged;
+  double delta_guess = -INFINITY;
+  int used = 0;
+  if (capped_guess) {
+    for (std::size_t e = 0; e < n; ++e) p[e] = std::isfinite(p[e]) ? std::min(std::max(p[e], 0.0), p_lim) : 0.0;
+    std::vector<double> u(n);
+    C.apply(p, u.data());
+    double sum = 0, top = -INFINITY;
+    std::size_t n_free = 0;
+    for (std::size_t e = 0; e < n; ++e) {
+      if (p[e] > 0 && p[e] < p_lim) { sum += g[e] + u[e]; ++n_free; }
+      if (p[e] > 0) top = std::max(top, g[e] + u[e]);
+    }
+    delta_guess = n_free ? sum / static_cast<double>(n_free) : top;
+  } else {
+    el = solve(C, g, N, Control::Load, INFINITY, p, options, options.max_iterations);
+    used = el.iterations;
+    if (el.status != GridStatus::Ok) {
+      std::copy(guess.begin(), guess.end(), p);  // the caller's guess, for the δ-loop below
+    } else if (*std::max_element(p, p + n) <= p_lim) {
+      el.n_plastic = 0;
+      return el;
+    }
+  }
+
+  // 2. δ ↦ N(δ) = dx·dy·Σp of the capped approach-control solution is continuous and
+  //    non-decreasing; the capped δ* is at least
+  //      δ_el (the elastic approach: capping only softens, N_cap(δ) ≤ N_el(δ)), and
+  //      δ_rp (rigid–perfectly-plastic bound: contact needs g + u ≤ δ with u ≥ 0, so g < δ, and
+  //            N(δ) ≤ p_lim·dx·dy·#{g < δ}; δ_rp is the k-th smallest g, k = ⌈N/(p_lim dx dy)⌉).
+  std::vector<double> sorted(g, g + n);
+  const std::size_t k = std::min(n - 1, static_cast<std::size_t>(std::ceil(N / (p_lim * area))));
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k), sorted.end());
+  const double delta_rp = sorted[k];
+  const double g_min = *std::min_element(g, g + n);
+  double delta = delta_rp;
+  if (el.status == GridStatus::Ok) delta = std::max(delta, el.delta);
+  if (std::isfinite(delta_guess)) delta = std::max(delta, delta_guess);
+  for (std::size_t e = 0; e < n; ++e) p[e] = std::min(std::max(p[e], 0.0), p_lim);  // warm start
+
+  // Safeguarded secant (Illinois) on F(δ) = N(δ) − N; stop when |F| ≤ tol·N (the force to the
+  // accuracy the gap has: ε ≤ tol of the interference).
+  NormalCGOptions inner = options;
+  double lo = g_min, F_lo = -N, hi = INFINITY, F_hi = 0;
+  int side = 0;
+  NormalCGResult r;
+  for (int eval = 0; eval < kMaxLoadSteps; ++eval) {
+    inner.max_iterations = std::max(1, options.max_iterations - used);
+    r = solve(C, g, delta, Control::Approach, p_lim, p, inner, inner.max_iterations);
+    used += r.iterations;
+    if (r.status != GridStatus::Ok && r.status != GridStatus::NoContact) break;
+    const double F = r.N - N;
+    if (std::fabs(F) <= options.tol * N) break;
+    if (F < 0) {
+      lo = delta; F_lo = F;
+      if (side == -1) F_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = delta; F_hi = F;
+      if (side == 1) F_lo *= 0.5;
+      side = 1;
+    }
+    if (std::isinf(hi)) {
+      // Not bracketed yet: the interference grown by N/N(δ) (exact for a fully capped contact
+      // on a quadratic gap, whose area grows linearly with the interference), at most doubled.
+      const double grow = r.N > 0 ? std::min(2.0, N / r.N) : 2.0;
+      delta = g_min + (delta - g_min) * std::max(grow, 1.05);
+    } else {
+      delta = (lo * F_hi - hi * F_lo) / (F_hi - F_lo);
+      if (!(delta > lo && delta < hi)) delta = 0.5 * (lo + hi);
+    }
+    if (used >= options.max_iterations) break;
+  }
+  // 3. Exact load and the load-control measure: the shared loop from this solution ([PK] scaling
+  //    of the free pressures, δ = mean of g + u over them), polishing if needed.
+  NormalCGResult fin = solve(C, g, N, Control::Load, p_lim, p, options,
+                             std::max(0, std::min(kPolishSteps, options.max_iterations - used)));
+  fin.iterations += used;
+  return fin;
+}
+
+}  // namespace
+
+NormalCGResult solve_normal_approach(const InfluenceGrid& C, const double* g, double delta,
+                                     double p_lim, double* p, const NormalCGOptions& options) {
+  return solve(C, g, delta, Control::Approach, p_lim, p, options, options.max_iterations);
+}
+
+NormalCGResult solve_normal_load(const InfluenceGrid& C, const double* g, double N, double p_lim,
+                                 double* p, const NormalCGOptions& options) {
+  if (std::isfinite(p_lim)) return solve_capped_load(C, g, N, p_lim, p, options);
+  return solve(C, g, N, Control::Load, p_lim, p, options, options.max_iterations);
+}
+
+}  // namespace mh

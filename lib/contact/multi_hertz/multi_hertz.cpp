@@ -1,0 +1,237 @@
+#include "contact/multi_hertz/multi_hertz.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+#include "core/numfmt.hpp"
+#include "core/units.hpp"
+
+namespace mh {
+
+
+namespace {
+
+struct Cand {
+  int ellipse;
+  CandidateGeom g;
+  double A, B, cg, sg;  // cos γ, sin γ
+  bool hertzian;
+  EllipseLaw law;
+};
+
+std::uint64_t bits(double v) {
+  std::uint64_t u;
+  std::memcpy(&u, &v, sizeof u);
+  return u;
+}
+
+// The law of an ellipse depends only on (A, B, material, exact): the same for every Q at one t_Y,
+// and the sweep runs Q inside t_Y. One slot per potential ellipse remembers the last law built;
+// a hit needs A and B bit-identical, so results are bit-identical with and without the cache.
+struct LawSlot {
+  bool used = false;
+  std::uint64_t A = 0, B = 0;
+  bool hertzian = false;
+  EllipseLaw law;
+};
+struct LawCache {
+  std::uint64_t E = 0, nu = 0, E_rail = 0, nu_rail = 0, p_lim = 0;
+  bool exact = false;
+  std::vector<LawSlot> slots;
+  // Forget every slot when the material or the coefficient path changed.
+  void key(const Material& m, bool ex, std::size_t ne) {
+    const bool same = bits(m.E) == E && bits(m.nu) == nu && bits(m.E_rail) == E_rail &&
+                      bits(m.nu_rail) == nu_rail && bits(m.p_lim) == p_lim && ex == exact;
+    if (!same) {
+      E = bits(m.E); nu = bits(m.nu); E_rail = bits(m.E_rail); nu_rail = bits(m.nu_rail); p_lim = bits(m.p_lim);
+      exact = ex;
+      slots.clear();
+    }
+    if (slots.size() < ne) slots.resize(ne);
+  }
+};
+
+// A and B [1/m] of a candidate (eq. 1).
+void curvature_sums(const CandidateGeom& g, double* A, double* B) {
+  *A = 1.0 / (2.0 * g.R_wyy());                 // (eq. 1)
+  if (g.r_roller > 0) *A += 0.5 * g.k_ryy();    // roller rig: + 1/(2 R_ryy); a straight rail adds nothing
+  *B = 0.5 * (g.k_wxx + g.k_rxx);               // (eq. 1)
+}
+
+bool hertzian_sums(double A, double B) { return B > 0 && A > 0 && std::isfinite(A) && std::isfinite(B); }
+
+}  // namespace
+
+void candidate_ellipses(const ContactGeometry& G, const Material& mat, double tY, const MultiHertzOptions& opt,
+                        std::vector<CandidateEllipse>& out) {
+  const std::size_t ne = G.n_ellipses();
+  std::vector<CandidateGeom> geo(ne);
+  int main = 0;
+  G.candidates_at(tY, geo.data(), &main);
+  out.assign(ne, CandidateEllipse{});
+  for (std::size_t e = 0; e < ne; ++e) {
+    CandidateEllipse& c = out[e];
+    c.ellipse = static_cast<int>(e) + 1;
+    c.g = geo[e];
+    curvature_sums(c.g, &c.A, &c.B);
+    c.hertzian = hertzian_sums(c.A, c.B);
+    if (c.hertzian) {
+      try {
+        c.c = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients).c;
+      } catch (const std::exception&) {
+        c.hertzian = false;  // as solve_multi_hertz: λ beyond the Hertz range, no ellipse
+      }
+    }
+    if (G.rail_curve) c.z_r = G.rail_curve->z(c.g.y_r);
+    if (G.wheel_curve) c.z_w = G.wheel_curve->z(c.g.y_w);
+  }
+}
+
+CaseResult solve_multi_hertz(const ContactGeometry& G, const Material& mat, double tY, double Q,
+                      const MultiHertzOptions& opt) {
+  CaseResult r;
+  if (!(Q > 0) || !std::isfinite(Q)) {
+    r.status = CaseStatus::NoContact;
+    r.message = "Q must be > 0";
+    return r;
+  }
+  if (!G.covers(tY)) {
+    r.status = CaseStatus::OutOfRange;
+    r.message = "t_Y = " + format_number(tY * 1e3) + " mm outside the geometry table [" +
+                format_number(G.tY.front() * 1e3) + ", " + format_number(G.tY.back() * 1e3) + "] mm";
+    return r;
+  }
+  const std::size_t ne = G.n_ellipses();
+  thread_local std::vector<CandidateGeom> geo;
+  thread_local std::vector<Cand> cs;
+  thread_local LawCache cache;
+  cache.key(mat, opt.exact_coefficients, ne);
+  geo.resize(ne);
+  cs.clear();
+  int main = 0;
+  G.candidates_at(tY, geo.data(), &main);
+  // Flange climb (method.md §3.7): the main contact at this t_Y has passed the wheel's steepest
+  // flange point. Geometric, the same for every method: the grid methods copy it from this
+  // solution, their start (contact/grid/patch_driver.hpp).
+  const bool climb = ne > 0 && geo[static_cast<std::size_t>(main)].flange_climb;
+  auto flag_climb = [&] {
+    if (climb) r.warnings.push_back("flange_climb:ellipse=" + std::to_string(main + 1));
+  };
+  for (std::size_t e = 0; e < ne; ++e) {
+    Cand c;
+    c.ellipse = static_cast<int>(e) + 1;
+    c.g = geo[e];
+    curvature_sums(c.g, &c.A, &c.B);
+    c.cg = std::cos(c.g.gamma);
+    c.sg = std::sin(c.g.gamma);
+    c.hertzian = hertzian_sums(c.A, c.B);
+    if (c.hertzian) {
+      LawSlot& slot = cache.slots[e];
+      if (slot.used && slot.A == bits(c.A) && slot.B == bits(c.B)) {
+        c.hertzian = slot.hertzian;
+        c.law = slot.law;
+      } else {
+        try {
+          c.law = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients);
+        } catch (const std::exception&) {
+          c.hertzian = false;  // e.g. λ beyond the Hertz range: nearly conformal, no ellipse
+        }
+        slot.used = true;
+        slot.A = bits(c.A);
+        slot.B = bits(c.B);
+        slot.hertzian = c.hertzian;
+        slot.law = c.law;
+      }
+    }
+    cs.push_back(c);
+  }
+  // Σ N_i cos γ_i and its derivative in δz (eqs. 10–11).
+  auto total = [&](double dz, double* dF) {
+    double F = 0, D = 0;
+    for (const Cand& c : cs) {
+      if (!c.hertzian) continue;
+      const double h = (dz - c.g.gap) * c.cg;
+      if (h <= 0) continue;
+      double dN;
+      F += c.law.force(h, &dN) * c.cg;
+      D += dN * c.cg * c.cg;
+    }
+    if (dF) *dF = D;
+    return F;
+  };
+  // Start: the Hertzian candidate with the smallest gap (the main strip, if Hertzian) carrying Q
+  // alone, in closed form; it bounds δz from above since the others only add force.
+  const Cand* first = nullptr;
+  for (const Cand& c : cs)
+    if (c.hertzian && (!first || c.g.gap < first->g.gap)) first = &c;
+  if (!first) {
+    r.status = CaseStatus::NoContact;
+    r.message = "no Hertzian candidate: every potential ellipse has B <= 0 (conformal) at this t_Y";
+    flag_climb();
+    return r;
+  }
+  double lo = first->g.gap;  // F(lo) = 0 < Q (only candidates with smaller gap could load: none)
+  double hi = first->g.gap + first->law.h0_for_force(Q / first->cg) / first->cg;
+  double dz = hi, dF = 0;
+  double F = total(dz, &dF);
+  int it = 0;
+  const double tol = opt.rtol * Q;
+  while (std::fabs(F - Q) > tol && it < opt.max_iterations) {
+    ++it;
+    if (F > Q) hi = dz; else lo = dz;
+    double next = dF > 0 ? dz - (F - Q) / dF : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // safeguard: stay in the bracket
+    if (next == dz) break;
+    dz = next;
+    F = total(dz, &dF);
+  }
+  r.iterations = it;
+  r.dz = dz;
+  r.residual = (F - Q) / Q;
+  if (std::fabs(F - Q) > tol && std::fabs(r.residual) > 4 * std::numeric_limits<double>::epsilon()) {
+    r.status = CaseStatus::NotConverged;
+    r.message = "equilibrium not reached in " + std::to_string(it) + " iterations (relative residual " +
+                format_number(r.residual) + ")";
+  }
+  for (const Cand& c : cs) {
+    const double h = (dz - c.g.gap) * c.cg;
+    if (h <= 0) continue;
+    // A loaded candidate off the end of a profile (method.md §3.7): its geometry is the end's,
+    // extrapolated; never silent.
+    if (c.g.off_profile) r.warnings.push_back("off_profile:ellipse=" + std::to_string(c.ellipse));
+    if (!c.hertzian) {
+      r.warnings.push_back("non_hertzian_excluded:ellipse=" + std::to_string(c.ellipse));
+      continue;
+    }
+    LoadedEllipse L;
+    L.ellipse = c.ellipse;
+    L.g = c.g;
+    L.A = c.A;
+    L.B = c.B;
+    L.c = c.law.c;
+    L.h_y = c.law.h_y;
+    L.s = ellipse_state(c.law, h);
+    L.validity = hertz_validity(G, c.g, L.s.b, opt.validity);
+    // The contact point on each profile: for plots and checks.
+    if (G.rail_curve) L.z_r = G.rail_curve->z(c.g.y_r);
+    if (G.wheel_curve) L.z_w = G.wheel_curve->z(c.g.y_w);
+    if (!L.validity.valid)
+      r.warnings.push_back("non_hertzian:ellipse=" + std::to_string(c.ellipse) + ":" + L.validity.describe(opt.validity));
+    r.Fz += L.s.N * c.cg;
+    r.Fy += L.s.N * c.sg;
+    // Case summary shared with the grid methods (case_result.hpp).
+    r.pmax = std::max(r.pmax, L.s.p_max);
+    r.area += units::pi * L.s.a * L.s.b;
+    r.approach = std::max(r.approach, L.s.approach / c.cg + c.g.gap);
+    r.loaded.push_back(L);
+  }
+  r.n_contacts = static_cast<int>(r.loaded.size());
+  flag_climb();
+  return r;
+}
+
+}  // namespace mh

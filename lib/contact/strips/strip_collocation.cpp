@@ -1,0 +1,383 @@
+// Collocation solve of the coupled strips at a fixed approach; see strip_collocation.hpp.
+//
+// Sources:
+//  - Johnson, Contact Mechanics (1985) §3.2 (Boussinesq point load, pressure on
+//    a rectangle).
+#include "contact/strips/strip_collocation.hpp"
+
+#include "contact/strips/strip_influence.hpp"
+#include "contact/strips/strip_kernel.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include "core/units.hpp"
+
+namespace mh {
+namespace strips_detail {
+
+namespace {
+
+constexpr double kPi = units::pi;
+constexpr int kMaxWiden = 12;         // widening passes per approach (docs/method.md §9 item 7; 7 at most measured on the Manchester sweeps)
+constexpr double kWidenRtol = 1e-6;   // a strip is widened when it gains more than this (relative)
+constexpr double kPenetrationRtol = 1e-9;  // an unloaded strip counts as penetrated beyond this × (delta − g_min)
+
+/// The amplitudes q >= 0 of the strips E with K q = rhs where q > 0 and K q >= rhs where q = 0
+/// (no strip penetrated; a linear complementarity problem), by an active set: solve on the
+/// active strips, drop those with q < 0; once none is negative, add back every inactive strip
+/// that is penetrated (K q < rhs - tol); repeat until neither happens. `in_act` holds the
+/// starting set (a warm start) and returns the final one. K is factorised once: with R the
+/// inactive strips, q = K⁻¹(z + E_R mu), z = rhs with z_R = 0, and mu from q_R = 0,
+/// (K⁻¹)_RR mu = −(K⁻¹ z)_R: a |R|×|R| system and one back-substitution per strip of R (the
+/// capacitance matrix method); (K q)_R = mu is the displacement the add-back test needs.
+/// A large R (over a third of E) is solved directly on the active strips instead.
+bool solve_active_set(const Eigen::MatrixXd& K, const Eigen::PartialPivLU<Eigen::MatrixXd>& lu,
+                      const Eigen::VectorXd& rhs, double tol, int max_iter, std::vector<char>& in_act,
+                      Eigen::VectorXd& q) {
+  const int e = static_cast<int>(K.rows());
+  std::vector<Eigen::VectorXd> col(static_cast<std::size_t>(e));  // K⁻¹ e_r, when r is first inactive
+  std::vector<int> R, A;
+  Eigen::VectorXd KqR;
+  for (int it = 0; it < max_iter; ++it) {
+    R.clear();
+    A.clear();
+    for (int r = 0; r < e; ++r) (in_act[r] ? A : R).push_back(r);
+    const int nR = static_cast<int>(R.size()), nA = static_cast<int>(A.size());
+    if (nR == 0) {
+      q = lu.solve(rhs);
+    } else if (3 * nR <= e) {
+      Eigen::VectorXd z = rhs;
+      for (int r : R) z(r) = 0.0;
+      const Eigen::VectorXd w = lu.solve(z);
+      Eigen::MatrixXd C(nR, nR);
+      Eigen::VectorXd wR(nR);
+      for (int b = 0; b < nR; ++b) {
+        Eigen::VectorXd& x = col[static_cast<std::size_t>(R[b])];
+        if (x.size() == 0) x = lu.solve(Eigen::VectorXd::Unit(e, R[b]));
+        for (int a = 0; a < nR; ++a) C(a, b) = x(R[a]);
+        wR(b) = w(R[b]);
+      }
+      KqR = -C.partialPivLu().solve(wR);
+      q = w;
+      for (int b = 0; b < nR; ++b) q += col[static_cast<std::size_t>(R[b])] * KqR(b);
+      for (int r : R) q(r) = 0.0;
+    } else {
+      q.setZero(e);
+      if (nA > 0) {
+        Eigen::MatrixXd Kaa(nA, nA);
+        Eigen::VectorXd ra(nA);
+        for (int c = 0; c < nA; ++c) {
+          for (int r = 0; r < nA; ++r) Kaa(r, c) = K(A[r], A[c]);
+          ra(c) = rhs(A[c]);
+        }
+        const Eigen::VectorXd qa = Kaa.partialPivLu().solve(ra);
+        for (int c = 0; c < nA; ++c) q(A[c]) = qa(c);
+      }
+      KqR.setZero(nR);
+      for (int a = 0; a < nR; ++a)
+        for (int c = 0; c < nA; ++c) KqR(a) += K(R[a], A[c]) * q(A[c]);
+    }
+    bool dropped = false;
+    for (int r : A)
+      if (q(r) < 0.0) { in_act[r] = 0; q(r) = 0.0; dropped = true; }
+    if (dropped) continue;
+    bool added = false;
+    for (int a = 0; a < nR; ++a)
+      if (KqR(a) < rhs(R[a]) - tol) { in_act[R[a]] = 1; added = true; }
+    if (!added) return true;
+  }
+  return false;
+}
+
+/// Column jj of the elastic influence matrix among the strips `cand` (unit amplitude), strip
+/// cand[jj] of half-length aj; zero for aj = 0 (a strip without extent carries no load).
+void elastic_column(const Solver& S, const std::vector<int>& cand, int jj, double aj, Eigen::MatrixXd& K) {
+  const int m = static_cast<int>(cand.size()), j = cand[jj];
+  K.col(jj).setZero();
+  if (!(aj > 0.0)) return;
+  if (S.same_xc && S.opt.coupling) {
+    // K_ij = H a_j [g((j − i + ½) ds / a_j) − g((j − i − ½) ds / a_j)] (strip_kernel.hpp) with
+    // g odd: with h_k = g((k + ½) ds / a_j), K_ij = H a_j (h_d − h_{d−1}), d = |i − j| ≥ 1, and
+    // 2 H a_j h_0 on the diagonal. One kernel lookup per distance instead of two per entry.
+    const int dmax = std::max(j - cand.front(), cand.back() - j);
+    thread_local std::vector<double> h;
+    h.resize(static_cast<std::size_t>(dmax) + 1);
+    for (int k = 0; k <= dmax; ++k) h[k] = strip_kernel_g((k + 0.5) * S.geo.ds / aj);
+    for (int ii = 0; ii < m; ++ii) {
+      const int d = std::abs(cand[ii] - j);
+      K(ii, jj) = S.H * aj * (d == 0 ? 2.0 * h[0] : h[d] - h[d - 1]);
+    }
+  } else {
+    for (int ii = 0; ii < m; ++ii)
+      if (S.opt.coupling || ii == jj) K(ii, jj) = S.K_elastic(cand[ii], j, aj);
+  }
+}
+
+}  // namespace
+
+double strip_load(const Collocation& c, int ii, double ds) {
+  if (!(c.q[ii] > 0.0)) return 0.0;
+  return (c.capped[ii] ? c.q[ii] * c.aeff[ii] * Phi(c.rcap[ii]) : 0.5 * kPi * c.q[ii] * c.aeff[ii]) * ds;
+}
+
+double Phi(double r) {
+  if (r >= 1.0) return 0.5 * kPi;
+  return r * std::sqrt(1.0 - r * r) + std::asin(r);
+}
+
+Solver::Solver(const StripGeometry& g, double Hc, const StripOptions& o) : StripExtents(g), H(Hc), opt(o) {
+  gauss_legendre(opt.gauss_points / 2, &gx, &gw);
+  for (double x : geo.xc) same_xc = same_xc && x == geo.xc.front();
+  for (int k = -n; k <= n + 1; ++k) log2_edge.push_back(std::log2(std::fabs((k - 0.5) * geo.ds)));
+}
+
+double Solver::K_elastic(int i, int j, double aj) const {
+  const double e1 = geo.s[j] - 0.5 * geo.ds - geo.s[i], e2 = geo.s[j] + 0.5 * geo.ds - geo.s[i];
+  if (geo.xc[i] == geo.xc[j] && aj > 0.0)  // X0 = 0, uncapped: the tabulated kernel, exact
+    return H * aj * (strip_kernel_g(e2 / aj) - strip_kernel_g(e1 / aj));
+  return H * influence(geo.xc[i] - geo.xc[j], aj, geo.s[j] - 0.5 * geo.ds - geo.s[i],
+                       geo.s[j] + 0.5 * geo.ds - geo.s[i], 1.0, gx, gw);
+}
+
+double Solver::K_end(int i, double ai, int j, double aj, double rcap) const {
+  if (!(aj > 0.0)) return 0.0;
+  const double e1 = geo.s[j] - 0.5 * geo.ds - geo.s[i], e2 = e1 + geo.ds;
+  const double X = geo.xc[i] - geo.xc[j];
+  if (ai == 0.0) return H * influence(X, aj, e1, e2, rcap, gx, gw);  // the centre: one quadrature, not two
+  return 0.5 * H * (influence(X + ai, aj, e1, e2, rcap, gx, gw) + influence(X - ai, aj, e1, e2, rcap, gx, gw));
+}
+
+void Solver::build_K(Collocation& c, std::vector<double>& built) const {
+  const int m = static_cast<int>(c.cand.size());
+  if (c.K.rows() != m || static_cast<int>(built.size()) != m) {
+    c.K = Eigen::MatrixXd::Zero(m, m);
+    built.assign(m, -1.0);
+  }
+  for (int jj = 0; jj < m; ++jj)
+    if (built[jj] != c.a[jj]) {
+      elastic_column(*this, c.cand, jj, c.a[jj], c.K);
+      built[jj] = c.a[jj];
+      c.lu_of.clear();
+    }
+}
+
+void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<char>& start) const {
+  const int m = static_cast<int>(c.cand.size());
+  // Plastic bookkeeping. A capped strip keeps the ELASTIC amplitude q_j at
+  // which it was capped and is lengthened to a'_j = a_j (pi/2)/Phi(r_j),
+  // r_j = p_lim/q_j; its pressure is min(q_j sqrt(1 - ((x-c)/a'_j)^2), p_lim):
+  // flat top at p_lim, load q_j a'_j Phi(r_j) ds = (pi/2) q_j a_j ds (the
+  // elastic strip's load). Its displacement equation is dropped. The length
+  // never exceeds the strip's overlap, a'_j <= sqrt((delta - g_j)/A_j): the
+  // displacements are compressive, so the surfaces touch only where they
+  // interpenetrate rigidly (docs/method.md §9 item 6). A strip held there
+  // carries q_j a'_j Phi(r_j) ds, less than its elastic load; the approach
+  // rises until the patch carries its load, as in the rigid-plastic limit.
+  c.capped.assign(m, 0);
+  c.q.assign(m, 0.0);
+  c.aeff = c.a;
+  c.rcap.assign(m, 1.0);
+  if (std::isfinite(p_lim)) c.Ucap = Eigen::MatrixXd::Zero(m, m);  // column j: displacement from capped strip j
+  c.settled = false;
+  c.as_ok = true;
+  std::vector<int> act, E;
+  for (int pass = 0; pass < opt.max_active_set && !c.settled; ++pass) {
+    // The elastic strips E of this pass (each plastic pass drops the newly capped ones) and
+    // their equations K_EE q_E = delta - g - u_cap, solved for q >= 0 from the previous pass's
+    // active set.
+    E.clear();
+    for (int ii = 0; ii < m; ++ii)
+      if (!c.capped[ii] && c.a[ii] > 0.0) E.push_back(ii);
+    const int e = static_cast<int>(E.size());
+    Eigen::VectorXd ucap = Eigen::VectorXd::Zero(m);
+    for (int jj = 0; jj < m; ++jj)
+      if (c.capped[jj]) ucap += c.Ucap.col(jj);
+    Eigen::MatrixXd KE(e, e);
+    Eigen::VectorXd rhs(e), qE = Eigen::VectorXd::Zero(e);
+    std::vector<char> in_act(e);
+    for (int cc = 0; cc < e; ++cc) {
+      for (int r = 0; r < e; ++r) KE(r, cc) = c.K(E[r], E[cc]);
+      rhs(cc) = delta - geo.g[c.cand[E[cc]]] - ucap(E[cc]);
+      in_act[cc] = start[E[cc]];
+    }
+    if (e > 0 && c.lu_of != E) {
+      c.lu.compute(KE);
+      c.lu_of = E;
+    }
+    c.as_ok = e == 0 || solve_active_set(KE, c.lu, rhs, kPenetrationRtol * (delta - gmin), opt.max_active_set, in_act, qE);
+    if (!c.as_ok) break;
+    act.clear();
+    for (int cc = 0; cc < e; ++cc) {
+      c.q[E[cc]] = qE(cc);
+      if (in_act[cc]) act.push_back(E[cc]);
+    }
+    std::fill(start.begin(), start.end(), 0);
+    for (int ii : act) start[ii] = 1;
+    // Newly capped strips.
+    bool any = false;
+    if (std::isfinite(p_lim)) {
+      for (int ii : act) {
+        if (c.q[ii] > p_lim) {
+          c.capped[ii] = 1;
+          any = true;
+          c.rcap[ii] = p_lim / c.q[ii];
+          const int j = c.cand[ii];
+          const double pen = delta - geo.g[j];
+          c.aeff[ii] = std::min(c.a[ii] * (0.5 * kPi) / Phi(c.rcap[ii]), std::sqrt(std::max(pen, 0.0) / geo.A[j]));
+          c.aeff[ii] = std::max(c.aeff[ii], c.a[ii]);  // never shorter than its elastic extent
+          for (int r = 0; r < m; ++r) {
+            if (!opt.coupling && r != ii) continue;
+            const int i = c.cand[r];
+            c.Ucap(r, ii) = H * c.q[ii] *
+                            influence(geo.xc[i] - geo.xc[j], c.aeff[ii], geo.s[j] - 0.5 * geo.ds - geo.s[i],
+                                      geo.s[j] + 0.5 * geo.ds - geo.s[i], c.rcap[ii], gx, gw);
+          }
+        }
+      }
+    }
+    if (!any) c.settled = true;
+  }
+}
+
+/// Solve at fixed approach.
+StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>* warm) const {
+  StripResult res;
+  res.delta = delta;
+  if (!(delta > gmin)) {
+    res.status = StripStatus::NoContact;
+    res.message = "approach does not exceed the minimum gap";
+    return res;
+  }
+  int nb = 0;
+  const std::vector<int> band = bands(delta, &nb);
+  std::vector<double> a = extents(delta, band, nb);
+
+  // The interpenetrated strips (g < delta): those with a positive extent carry load; the others
+  // are checked for the interpenetration the loaded strips leave at their centres (widening).
+  Collocation c;
+  bool any_extent = false;
+  for (int i = 0; i < n; ++i)
+    if (band[i] >= 0) { c.cand.push_back(i); any_extent = any_extent || a[i] > 0.0; }
+  const int m = static_cast<int>(c.cand.size());
+  if (!any_extent) {
+    res.status = StripStatus::NoContact;
+    res.message = "no strip has a positive extent";
+    return res;
+  }
+  std::vector<char> start(m, 1);
+  std::vector<double> built;  // the extent each column of K was built for
+  c.a.resize(m);
+  for (int widen = 0;; ++widen) {
+    for (int ii = 0; ii < m; ++ii) c.a[ii] = a[c.cand[ii]];
+    // Elastic influence matrix among the candidates (unit amplitude): the columns whose extent
+    // changed (all of them on the first pass).
+    build_K(c, built);
+    // The starting active set: the strips of a previous solve that are still candidates (warm
+    // start: along an approach iteration the set changes by a few strips), else every candidate.
+    if (widen == 0 && warm && !warm->empty()) {
+      std::fill(start.begin(), start.end(), 0);
+      int found = 0;
+      for (int ii = 0, w = 0; ii < m; ++ii) {
+        while (w < static_cast<int>(warm->size()) && (*warm)[w] < c.cand[ii]) ++w;
+        if (w < static_cast<int>(warm->size()) && (*warm)[w] == c.cand[ii]) { start[ii] = 1; ++found; }
+      }
+      if (found == 0) std::fill(start.begin(), start.end(), 1);
+    }
+    collocate(delta, p_lim, c, start);
+    if (!c.as_ok || !c.settled || widen >= kMaxWiden) break;
+    // Widening (the remedy of docs/method.md §9 item 7 for thin tails). The interpenetration the
+    // other strips leave at a strip's centre, r_i = delta − g_i − sum_{j≠i} K_ij q_j, is what its
+    // own pressure must take up; the strip is given at least the length over which that residual
+    // interpenetration exists, a_i ≥ sqrt(r_i / A_i). Inside a patch r_i is the strip's own
+    // displacement, far below A_i a_i²; at a tail whose extent rule gave a strip too short a
+    // length it is not, and without this the amplitude there grows like 1/(a ln(1/a)) and the
+    // load jumps when a strip enters (docs/strips.md "Load jumps").
+    bool widened = false;
+    for (int ii = 0; ii < m; ++ii) {
+      const int i = c.cand[ii];
+      if (c.capped[ii]) continue;
+      double u = 0.0;
+      for (int jj = 0; jj < m; ++jj) {
+        if (jj == ii) continue;
+        u += c.capped[jj] ? c.Ucap(ii, jj) : c.K(ii, jj) * c.q[jj];
+      }
+      const double r = delta - geo.g[i] - u;
+      if (!(r > 0.0)) continue;
+      const double aw = std::sqrt(r / geo.A[i]);
+      if (aw > a[i] * (1.0 + kWidenRtol)) { a[i] = aw; widened = true; }
+    }
+    if (!widened) break;
+    for (int ii = 0; ii < m; ++ii) start[ii] = c.q[ii] > 0.0 || c.capped[ii];
+  }
+  return assemble(delta, p_lim, c);
+}
+
+StripResult Solver::assemble(double delta, double p_lim, const Collocation& c) const {
+  StripResult res;
+  res.delta = delta;
+  int nb = 0;
+  const std::vector<int> band = bands(delta, &nb);
+  res.n_bands = nb;
+  res.status = StripStatus::Ok;
+  if (!c.as_ok || !c.settled) {
+    res.status = StripStatus::NotConverged;
+    res.message = !c.as_ok ? "active set (q >= 0) did not settle within max_active_set passes"
+                           : "plastic set did not settle within max_active_set passes";
+  }
+  const int m = static_cast<int>(c.cand.size());
+  double qmax = 0.0;
+  for (int ii = 0; ii < m; ++ii) {
+    if (!(c.q[ii] > 0.0)) continue;
+    StripState st;
+    st.index = c.cand[ii];
+    st.s = geo.s[st.index];
+    st.c = geo.xc[st.index];
+    st.a = c.aeff[ii];
+    st.a_elastic = c.a[ii];
+    st.q = c.q[ii];
+    st.plastic = c.capped[ii] != 0;
+    st.band = std::max(band[st.index], 0);
+    st.load = strip_load(c, ii, geo.ds);
+    res.N += st.load;
+    res.area += 2.0 * st.a * geo.ds;
+    qmax = std::max(qmax, c.q[ii]);
+    res.strips.push_back(st);
+  }
+  res.pmax = std::min(qmax, p_lim);
+  if (res.strips.empty() && res.status == StripStatus::Ok) {
+    res.status = StripStatus::NoContact;
+    res.message = "all amplitudes non-positive";
+  }
+  // Outliers: peak pressure above every neighbour's (same band, adjacent strip)
+  // by more than outlier_factor — the thin-tail failure mode of short strips.
+  // The peak of a capped strip is p_lim, not its elastic amplitude: the
+  // amplitude of a strongly capped strip sets neither its pressure nor, held
+  // at its overlap, much of its load.
+  double worst = 0.0;
+  const int L = static_cast<int>(res.strips.size());
+  auto peak = [&](int k) { return std::min(res.strips[k].q, p_lim); };
+  for (int k = 0; k < L; ++k) {
+    double qn = -1.0;
+    for (int d : {-1, 1}) {
+      const int o = k + d;
+      if (o < 0 || o >= L) continue;
+      if (res.strips[o].band != res.strips[k].band || std::abs(res.strips[o].index - res.strips[k].index) != 1)
+        continue;
+      qn = std::max(qn, peak(o));
+    }
+    if (qn < 0.0) continue;
+    if (peak(k) > opt.outlier_factor * qn) {
+      ++res.n_outliers;
+      const double ratio = peak(k) / std::max(qn, std::numeric_limits<double>::min());
+      if (ratio > worst) { worst = ratio; res.worst_outlier = k; }
+    }
+  }
+  return res;
+}
+
+}  // namespace strips_detail
+}  // namespace mh

@@ -1,0 +1,259 @@
+// Strip extents from a virtual interpenetration; see strip_extents.hpp.
+//
+// Sources:
+//  - Johnson, Contact Mechanics (1985) §3.6 / §4.2 (Hertz elliptic contact, eq. 3.69-3.71 / 4.2x).
+//  - Kik & Piotrowski 1996; Piotrowski & Kik 2008 (KPEC: equivalent ellipse,
+//    virtual penetration, strip extents from a reduced interpenetration).
+//  - Sichani, Enblom, Berg 2014 (ANALYN: local Hertz solution per strip).
+#include "contact/strips/strip_extents.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include "core/units.hpp"
+
+namespace mh {
+namespace strips_detail {
+
+namespace {
+
+constexpr double kPi = units::pi;
+
+/// Complete elliptic integrals K(m), E(m) of parameter m = e^2 by the
+/// arithmetic–geometric mean (Abramowitz & Stegun 17.6).
+void ellip_KE(double m, double* K, double* E) {
+  double a = 1.0, b = std::sqrt(1.0 - m), c = std::sqrt(m);
+  double pw = 0.5, sum = pw * c * c;
+  for (int it = 0; it < 64 && c > std::numeric_limits<double>::epsilon() * a; ++it) {
+    const double an = 0.5 * (a + b);
+    const double bn = std::sqrt(a * b);
+    c = 0.5 * (a - b);
+    a = an;
+    b = bn;
+    pw *= 2.0;
+    sum += pw * c * c;
+  }
+  *K = kPi / (2.0 * a);
+  *E = *K * (1.0 - sum);
+}
+
+/// Hertz shape for h = A x^2 + B y^2 with A <= B (major axis along x):
+/// axis ratio k = b/a from B/A = (E/k^2 - K)/(K - E), m = 1 - k^2, and the
+/// scale a^2 = delta (K - E)/(A m K) (Johnson §3.6 eq. 3.71: delta = H L,
+/// A = H M, B = H N with L = pi b p0 K, M = pi b p0 (K-E)/(e^2 a^2)).
+/// Returns a/sqrt(delta), b/sqrt(delta).
+void hertz_shape_major_x(double A, double B, double* ka, double* kb) {
+  const double ratio = B / A;
+  // Below this excess over 1 the ellipse is a circle to double precision.
+  constexpr double kCircleTol = 1e-12;
+  if (ratio <= 1.0 + kCircleTol) {
+    *ka = std::sqrt(1.0 / (2.0 * A));  // sphere: a^2 = R delta, A = 1/(2R)
+    *kb = *ka;
+    return;
+  }
+  auto f = [](double k) {
+    double K, E;
+    ellip_KE(1.0 - k * k, &K, &E);
+    return (E / (k * k) - K) / (K - E);
+  };
+  // f decreases from +inf (k -> 0) to 1 (k = 1). Root of
+  // phi(u) = ln f(e^u) - ln(B/A) in u = ln k by the Illinois variant of
+  // regula falsi (smooth in u; ~10 evaluations instead of ~50 for bisection).
+  double lo = 0.5;
+  while (f(lo) < ratio && lo > 1e-300) lo *= 0.5;
+  const double lr = std::log(ratio);
+  double ua = std::log(lo), fa = std::log(f(lo)) - lr;  // fa >= 0
+  double ub = 0.0, fb = -lr;                             // k = 1: f = 1 (limit), fb < 0
+  int side = 0;
+  // Stop when the bracket in ln k is this narrow (double precision).
+  constexpr double kUtol = 1e-15;
+  for (int it = 0; it < 200 && ub - ua > kUtol; ++it) {
+    const double uc = (ua * fb - ub * fa) / (fb - fa);
+    if (!(uc > ua && uc < ub)) break;
+    const double fc = std::log(f(std::exp(uc))) - lr;
+    if (fc == 0.0) { ua = ub = uc; break; }
+    if (fc < 0.0) {
+      ub = uc; fb = fc;
+      if (side == -1) fa *= 0.5;
+      side = -1;
+    } else {
+      ua = uc; fa = fc;
+      if (side == 1) fb *= 0.5;
+      side = 1;
+    }
+  }
+  // the end of the bracket with the smaller residual
+  const double k_root = std::exp(std::fabs(fa) < std::fabs(fb) ? ua : ub);
+  lo = k_root;
+  double hi = k_root;
+  const double k = std::sqrt(lo * hi);
+  const double m = 1.0 - k * k;
+  double K, E;
+  ellip_KE(m, &K, &E);
+  *ka = std::sqrt((K - E) / (A * m * K));
+  *kb = k * *ka;
+}
+
+/// Hertz shape for any A, B > 0: a/sqrt(delta) along x, b/sqrt(delta) along y.
+void hertz_shape(double A, double B, double* ka, double* kb) {
+  if (A <= B) {
+    hertz_shape_major_x(A, B, ka, kb);
+  } else {
+    hertz_shape_major_x(B, A, kb, ka);
+  }
+}
+
+/// Root of the quadratic through (s_k, g_k), k = 0..2, equal to `level` in
+/// [lo, hi] (the interpolant changes sign there by construction); bisection.
+double crossing(const double* sv, const double* gv, double level, double lo, double hi) {
+  auto q = [&](double x) {
+    double r = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      double li = 1.0;
+      for (int j = 0; j < 3; ++j)
+        if (j != i) li *= (x - sv[j]) / (sv[i] - sv[j]);
+      r += li * gv[i];
+    }
+    return r - level;
+  };
+  double flo = q(lo);
+  for (int it = 0; it < 100; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    const double fm = q(mid);
+    if ((fm < 0.0) == (flo < 0.0)) { lo = mid; flo = fm; } else { hi = mid; }
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+StripExtents::StripExtents(const StripGeometry& g) : geo(g), n(static_cast<int>(g.s.size())) {
+  Bloc.assign(n, 0.0);
+  ka.assign(n, 0.0);
+  kb.assign(n, 0.0);
+  const double ds2 = geo.ds * geo.ds;
+  for (int i = 0; i < n; ++i) {
+    // ANALYN (Sichani et al. 2014): B(s) from the second difference of g;
+    // end strips borrow the neighbour's difference.
+    int c = std::min(std::max(i, 1), n - 2);
+    if (n >= 3) Bloc[i] = (geo.g[c + 1] - 2.0 * geo.g[c] + geo.g[c - 1]) / (2.0 * ds2);
+    if (Bloc[i] > 0.0) hertz_shape(geo.A[i], Bloc[i], &ka[i], &kb[i]);
+  }
+  imin = static_cast<int>(std::min_element(geo.g.begin(), geo.g.end()) - geo.g.begin());
+  gmin = geo.g[imin];
+}
+
+/// Bands at approach delta: runs of g < delta split at interior local maxima.
+/// Returns band id per strip (-1 outside), sets nb.
+std::vector<int> StripExtents::bands(double delta, int* nb) const {
+  std::vector<int> band(n, -1);
+  int id = -1;
+  bool in = false;
+  for (int i = 0; i < n; ++i) {
+    if (!(geo.g[i] < delta)) { in = false; continue; }
+    if (!in) { ++id; in = true; band[i] = id; continue; }
+    band[i] = id;
+    // saddle at i-1 (strict local maximum, inside the run): start a new band
+    // at i if i-1 is a maximum; the saddle strip stays with the side whose
+    // neighbour is deeper.
+    if (i >= 2 && band[i - 2] == id && geo.g[i - 1] > geo.g[i - 2] && geo.g[i - 1] > geo.g[i]) {
+      ++id;
+      band[i] = id;
+      if (geo.g[i] < geo.g[i - 2]) band[i - 1] = id;
+    }
+  }
+  *nb = id + 1;
+  return band;
+}
+
+/// Strip half-lengths at approach delta: union of KPEC and ANALYN estimates.
+/// Within a band the approach is measured from the band's deepest gap g0:
+/// delta_b = delta - g0 and g - g0 (identical to the spec for g0 = 0 and
+/// exact for an elliptic patch whose minimum gap is g0).
+std::vector<double> StripExtents::extents(double delta, const std::vector<int>& band, int nb) const {
+  std::vector<double> a(n, 0.0);
+  for (int b = 0; b < nb; ++b) {
+    int first = -1, last = -1;
+    for (int i = 0; i < n; ++i)
+      if (band[i] == b) { if (first < 0) first = i; last = i; }
+    int i0 = first;
+    for (int i = first; i <= last; ++i)
+      if (geo.g[i] < geo.g[i0]) i0 = i;
+    // deepest point: vertex of the parabola through the three rows around i0
+    double s0 = geo.s[i0], g0 = geo.g[i0];
+    if (i0 > 0 && i0 < n - 1) {
+      const double d2 = geo.g[i0 + 1] - 2.0 * geo.g[i0] + geo.g[i0 - 1];
+      if (d2 > 0.0) {
+        const double d1 = 0.5 * (geo.g[i0 + 1] - geo.g[i0 - 1]);
+        const double u = -d1 / d2;  // in strip widths, |u| <= 1/2
+        s0 = geo.s[i0] + u * geo.ds;
+        g0 = geo.g[i0] + 0.5 * d1 * u;
+      }
+    }
+    g0 = std::min(g0, geo.g[i0]);
+    const double db = delta - g0;
+    if (!(db > 0.0)) continue;
+    const double half = 0.5 * db;
+
+    // ---- KPEC-type (Kik & Piotrowski 1996): equivalent ellipse of the band.
+    // Lateral extent of h < delta/2 around i0 within the band.
+    auto edge = [&](int dir) {
+      int k = i0;
+      while (true) {
+        const int nx = k + dir;
+        if (nx < first || nx > last) return geo.s[k] + dir * 0.5 * geo.ds;  // band ends first
+        if (!(geo.g[nx] - g0 < half)) {
+          // crossing between k (inside) and nx (outside); quadratic through
+          // k - dir, k, nx where available
+          const int o = (k - dir >= 0 && k - dir < n) ? k - dir : nx + dir;
+          if (o < 0 || o >= n) {
+            const double t = (half - (geo.g[k] - g0)) / (geo.g[nx] - geo.g[k]);
+            return geo.s[k] + t * (geo.s[nx] - geo.s[k]);
+          }
+          const double sv[3] = {geo.s[o], geo.s[k], geo.s[nx]};
+          const double gv[3] = {geo.g[o] - g0, geo.g[k] - g0, geo.g[nx] - g0};
+          return crossing(sv, gv, half, std::min(geo.s[k], geo.s[nx]), std::max(geo.s[k], geo.s[nx]));
+        }
+        k = nx;
+      }
+    };
+    const double sL = edge(-1), sR = edge(+1);
+    const double w = 0.5 * (sR - sL);
+    const double Ab = geo.A[i0];
+    if (w > 0.0) {
+      const double Bb = half / (w * w);
+      double kA, kB;
+      hertz_shape(Ab, Bb, &kA, &kB);
+      const double ae = kA * std::sqrt(db), be = kB * std::sqrt(db);
+      const double Aa2 = Ab * ae * ae, Bb2 = Bb * be * be;
+      for (int i = first; i <= last; ++i) {
+        const double y = (geo.s[i] - s0) / be;
+        // reduced interpenetration eps(s) delta_b, clipped to [0, delta_b]
+        const double ed = std::min(std::max(Aa2 - (Aa2 - Bb2) * y * y, 0.0), db);
+        const double pen = ed - (geo.g[i] - g0);
+        if (pen > 0.0) a[i] = std::max(a[i], std::sqrt(pen / geo.A[i]));
+      }
+    }
+    // ---- ANALYN-type (Sichani et al. 2014): local Hertz solution per strip,
+    // a_i = a* sqrt(1 - (g_i - g0)/(B b*^2)).
+    for (int i = first; i <= last; ++i) {
+      if (!(Bloc[i] > 0.0)) continue;
+      const double as = ka[i] * std::sqrt(db), bs = kb[i] * std::sqrt(db);
+      const double arg = 1.0 - (geo.g[i] - g0) / (Bloc[i] * bs * bs);
+      if (arg > 0.0) a[i] = std::max(a[i], as * std::sqrt(arg));
+    }
+  }
+  return a;
+}
+
+bool hertz_axes(double A, double B, double delta, double* a, double* b) {
+  if (!(A > 0.0) || !(B > 0.0) || !(delta > 0.0)) return false;
+  double ka, kb;
+  hertz_shape(A, B, &ka, &kb);
+  *a = ka * std::sqrt(delta);
+  *b = kb * std::sqrt(delta);
+  return true;
+}
+
+}  // namespace strips_detail
+}  // namespace mh

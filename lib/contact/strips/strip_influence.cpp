@@ -1,0 +1,138 @@
+// The elastic influence of one strip; see strip_influence.hpp.
+//
+// Sources:
+//  - Johnson, Contact Mechanics (1985) §3.2 (Boussinesq point load, pressure on
+//    a rectangle).
+#include "contact/strips/strip_influence.hpp"
+
+#include "contact/strips/strip_patch.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include "core/units.hpp"
+
+namespace mh {
+namespace strips_detail {
+
+namespace {
+
+constexpr double kPi = units::pi;
+
+int sgn(double v) { return (v > 0.0) - (v < 0.0); }
+
+/// Lateral integral of the Boussinesq kernel across a strip:
+/// F(X) = int_{eta1}^{eta2} d eta / sqrt(X^2 + eta^2) = asinh(eta2/|X|) - asinh(eta1/|X|),
+/// written with logs so that |X| cancels when eta1, eta2 have the same sign.
+double lateral_kernel(double X, double e1, double e2) {
+  // asinh(e/|X|) = sgn(e) [ln(|e| + sqrt(e^2 + X^2)) - ln|X|]; one log per call.
+  const double X2 = X * X;
+  const double n1 = std::fabs(e1) + std::sqrt(e1 * e1 + X2);
+  const double n2 = std::fabs(e2) + std::sqrt(e2 * e2 + X2);
+  const int s1 = sgn(e1), s2 = sgn(e2);
+  if (s1 == s2) return s2 == 0 ? 0.0 : s2 * std::log(n2 / n1);
+  if (s1 == 0) return std::log(n2 / std::fabs(X));     // e1 = 0 < e2
+  if (s2 == 0) return std::log(n1 / std::fabs(X));     // e1 < 0 = e2
+  return std::log(n1 * n2 / X2);                       // e1 < 0 < e2
+}
+
+/// P(X, eta) = int_0^X asinh(eta/|u|) du
+///           = sgn(X) sgn(eta) [ |X| asinh(|eta|/|X|) + |eta| asinh(|X|/|eta|) ].
+double P_rect(double X, double eta) {
+  if (X == 0.0 || eta == 0.0) return 0.0;
+  const double ax = std::fabs(X), ae = std::fabs(eta);
+  return sgn(X) * sgn(eta) * (ax * std::asinh(ae / ax) + ae * std::asinh(ax / ae));
+}
+
+}  // namespace
+
+/// Gauss–Legendre nodes/weights on [-1, 1] (Newton on P_n).
+void gauss_legendre(int n, std::vector<double>* x, std::vector<double>* w) {
+  x->assign(n, 0.0);
+  w->assign(n, 0.0);
+  for (int i = 0; i < (n + 1) / 2; ++i) {
+    double z = std::cos(kPi * (i + 0.75) / (n + 0.5));
+    double dp = 1.0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1.0, p1 = z;
+      for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      if (n == 1) { p1 = z; p0 = 1.0; }
+      dp = n * (z * p1 - p0) / (z * z - 1.0);
+      const double dz = p1 / dp;
+      z -= dz;
+      if (std::fabs(dz) < 1e-15) break;
+    }
+    double p0 = 1.0, p1 = z;
+    for (int k = 2; k <= n; ++k) {
+      const double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+      p0 = p1;
+      p1 = p2;
+    }
+    dp = n * (z * p1 - p0) / (z * z - 1.0);
+    (*x)[i] = -z;
+    (*x)[n - 1 - i] = z;
+    (*w)[i] = (*w)[n - 1 - i] = 2.0 / ((1.0 - z * z) * dp * dp);
+  }
+}
+
+/// Influence integral (see strips_detail::strip_influence) with given nodes.
+/// Singularity subtraction: f = f(t0) + (f - f(t0)); the constant part is the
+/// closed-form rectangle integral of 1/r (Johnson §3.2, uniform pressure on a
+/// rectangle); the remainder vanishes at the singular point and is integrated
+/// by Gauss–Legendre in theta (x = a sin theta) on sub-intervals split at the
+/// point and at the kinks of the capped profile.
+double influence(double X0, double a, double e1, double e2, double rcap,
+                 const std::vector<double>& gx, const std::vector<double>& gw) {
+  if (!(a > 0.0)) return 0.0;
+  auto fcap = [rcap](double t) { return std::min(std::sqrt(std::max(0.0, 1.0 - t * t)), rcap); };
+  const double t0 = X0 / a;
+  const bool inside = std::fabs(t0) < 1.0;
+  const double f0 = inside ? fcap(t0) : 0.0;
+
+  double total = 0.0;
+  if (f0 != 0.0) {
+    const double X1 = -a - X0, X2 = a - X0;
+    const double R = P_rect(X2, e2) - P_rect(X1, e2) - P_rect(X2, e1) + P_rect(X1, e1);
+    total += f0 * R;
+  }
+  // X0 = 0: F depends on |X| = a |sin theta| and f is even, so the
+  // integrand is even in theta: integrate [0, pi/2] and double.
+  const bool even = X0 == 0.0;
+  double br[5];
+  int nb = 0;
+  br[nb++] = even ? 0.0 : -0.5 * kPi;
+  br[nb++] = 0.5 * kPi;
+  if (inside && !even) br[nb++] = std::asin(t0);
+  if (rcap < 1.0) {
+    const double th = std::asin(std::sqrt(1.0 - rcap * rcap));
+    if (!even) br[nb++] = -th;
+    br[nb++] = th;
+  }
+  std::sort(br, br + nb);
+  for (int k = 0; k + 1 < nb; ++k) {
+    const double lo = br[k], hi = br[k + 1];
+    if (!(hi > lo)) continue;
+    const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+    double acc = 0.0;
+    for (std::size_t n = 0; n < gx.size(); ++n) {
+      const double th = mid + half * gx[n];
+      const double t = std::sin(th);
+      const double X = a * t - X0;
+      acc += gw[n] * (fcap(t) - f0) * lateral_kernel(X, e1, e2) * a * std::cos(th);
+    }
+    total += acc * half * (even ? 2.0 : 1.0);
+  }
+  return total;
+}
+
+double strip_influence(double X0, double a, double eta1, double eta2, double r_cap, int gauss_points) {
+  std::vector<double> gx, gw;
+  gauss_legendre(std::max(1, gauss_points / 2), &gx, &gw);
+  return influence(X0, a, eta1, eta2, r_cap, gx, gw);
+}
+
+}  // namespace strips_detail
+}  // namespace mh

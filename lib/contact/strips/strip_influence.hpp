@@ -1,0 +1,36 @@
+// The elastic influence of one strip (docs/method.md §9, "Algorithm" item 4): the normal
+// displacement at a collocation point from a semi-elliptic (optionally capped) pressure of unit
+// amplitude on strip j. Across the strip width the Boussinesq 1/r kernel (Johnson, Contact
+// Mechanics §3.2) integrates in closed form; along x the singular part is subtracted (uniform
+// pressure on a rectangle, Johnson §3.2) and the remainder integrated by Gauss–Legendre in theta
+// (x = c + a sin theta). Centre-line entries of uncapped strips use the tabulated kernel instead
+// (contact/strips/strip_kernel.hpp).
+//
+// Internal to the strip solver (contact/strips/strip_patch.hpp): namespace strips_detail.
+#pragma once
+
+#include <vector>
+
+namespace mh {
+namespace strips_detail {
+
+/// Gauss–Legendre nodes/weights on [-1, 1] (Newton on P_n).
+void gauss_legendre(int n, std::vector<double>* x, std::vector<double>* w);
+
+/// Influence integral (see strips_detail::strip_influence) with given nodes.
+/// Singularity subtraction: f = f(t0) + (f - f(t0)); the constant part is the
+/// closed-form rectangle integral of 1/r (Johnson §3.2, uniform pressure on a
+/// rectangle); the remainder vanishes at the singular point and is integrated
+/// by Gauss–Legendre in theta (x = a sin theta) on sub-intervals split at the
+/// point and at the kinks of the capped profile.
+double influence(double X0, double a, double e1, double e2, double rcap,
+                 const std::vector<double>& gx, const std::vector<double>& gw);
+
+/// Integral over one strip of f(t)/r, f(t) = min(sqrt(1 - t^2), r_cap),
+/// t = (xi - c_j)/a_j, for a point at x-offset X0 = x_i - c_j and lateral
+/// offsets eta1 < eta2 of the strip edges from the point (eta = s_j +- ds/2 - s_i).
+/// r_cap >= 1: plain semi-ellipse. Unit [m] (multiply by H q_j for the displacement).
+double strip_influence(double X0, double a, double eta1, double eta2, double r_cap, int gauss_points);
+
+}  // namespace strips_detail
+}  // namespace mh

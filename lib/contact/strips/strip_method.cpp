@@ -1,0 +1,208 @@
+#include "contact/strips/strip_method.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "contact/multi_hertz/multi_hertz.hpp"
+#include "contact/grid/patch_driver.hpp"
+#include "core/numfmt.hpp"
+#include "geometry/gap.hpp"
+
+namespace mh {
+
+
+namespace {
+
+// One patch as strips: the minimum gap g(s) of each lateral row and its parabola along x.
+class StripPatch : public PatchSolver {
+ public:
+  StripPatch(const WheelRailGap& gap, const PatchRegion& R, double dz_ref, const StripMethodOptions& opt,
+             double H, double p_lim)
+      : P(R.P), H_(H), p_lim_(p_lim), opt_(opt.strips) {
+    const double c = std::cos(P.gamma), ds = opt.ds;
+    const double sa = R.s_a - 3 * ds, sb = R.s_b + 3 * ds;
+    const int n = std::max(1, static_cast<int>(std::ceil((sb - sa) / ds)));
+    const double s0 = 0.5 * (sa + sb) - (n - 1) * 0.5 * ds;
+    const double X = opt.x_curvature_step;
+    geo.ds = ds;
+    for (int j = 0; j < n; ++j) {
+      const double s = s0 + j * ds;
+      // As for the half-space grid: the gap with the wheel at dz_ref, shifted by dz_ref cos γ.
+      const double g0 = normal_gap(gap, P, 0, s, dz_ref) + dz_ref * c;
+      const double gX = normal_gap(gap, P, X, s, dz_ref) + dz_ref * c;
+      geo.s.push_back(s);
+      geo.g.push_back(g0);
+      geo.A.push_back(std::max((gX - g0) / (X * X), 1e-12));  // h(x, s) ≈ g(s) + A(s) x² (no yaw)
+      geo.xc.push_back(0.0);
+    }
+  }
+  double at_approach(double delta) override {
+    last = solver().at_approach(delta, &warm_);
+    evaluations += 1 + last.iterations;
+    return last.status == StripStatus::Ok ? last.N : 0.0;
+  }
+  double at_load(double N) override {
+    last = solver().at_load(N, &warm_, delta_start_);
+    evaluations += 1 + last.iterations;
+    return last.delta;
+  }
+  /// The loaded strips of the same patch at the previous placement, mapped by rail y onto this
+  /// plane's strips: the first active set (strips.hpp: the cost changes, not the answer).
+  void warm_start_from(const PatchSolver& previous) override {
+    const auto* o = dynamic_cast<const StripPatch*>(&previous);
+    if (!o) return;
+    // The same interpenetration depth below the deepest row as the previous placement's answer.
+    if (o->last.status == StripStatus::Ok)
+      delta_start_ = o->last.delta - *std::min_element(o->geo.g.begin(), o->geo.g.end()) +
+                     *std::min_element(geo.g.begin(), geo.g.end());
+    warm_ = StripWarmStart();
+    const double c = std::cos(P.gamma), n = static_cast<double>(geo.s.size());
+    for (const StripState& st : o->last.strips) {
+      const double y = o->P.y_ref + st.s * std::cos(o->P.gamma);
+      const double j = std::round(((y - P.y_ref) / c - geo.s.front()) / geo.ds);
+      if (!(j >= 0 && j < n) || (!warm_.loaded.empty() && warm_.loaded.back() >= static_cast<int>(j))) continue;
+      warm_.loaded.push_back(static_cast<int>(j));
+    }
+    // The decision to refine the extents stays with the patch. Its last refined strips start the
+    // next refinement: extents and amplitudes interpolated at this plane's strip centres (by rail
+    // y), which keeps the start as close as the previous answer (nearest strips alone would put
+    // tail strips a fraction of a strip off, and cost passes).
+    warm_.end_gap = o->warm_.end_gap;
+    warm_.end_gap_error = o->warm_.end_gap_error;
+    if (warm_.end_gap == 1 && o->last.refined && !o->last.strips.empty()) {
+      std::vector<double> s_old(geo.s.size());
+      for (std::size_t j = 0; j < geo.s.size(); ++j)
+        s_old[j] = (P.y_ref + geo.s[j] * c - o->P.y_ref) / std::cos(o->P.gamma);  // same rail y
+      warm_.previous.strips = map_strips(o->last.strips, o->geo.ds, s_old, geo.s);
+    }
+    warm_.previous.delta = delta_start_;
+  }
+  bool failed() const override { return last.status == StripStatus::NotConverged || last.status == StripStatus::InvalidInput; }
+  std::string why() const override { return "strip solver: " + last.message; }
+  bool outgrown() const override {  // the first or last strip carries load
+    for (const auto& st : last.strips)
+      if (st.index == 0 || st.index + 1 == static_cast<int>(geo.s.size())) return true;
+    return false;
+  }
+
+  PatchPlane P;
+  StripGeometry geo;
+  StripResult last;
+  int evaluations = 0;
+
+ private:
+  double H_, p_lim_;
+  StripOptions opt_;
+  StripWarmStart warm_;  ///< the loaded strips of this patch's last solve, and its extents' refinement
+  double delta_start_ = NAN;  ///< the first approach of load control (from the previous placement)
+  std::unique_ptr<StripSolver> solver_;
+  const StripSolver& solver() {
+    if (!solver_) solver_ = std::make_unique<StripSolver>(geo, H_, p_lim_, opt_);
+    return *solver_;
+  }
+};
+
+}  // namespace
+
+namespace {
+
+// The case after begin_grid_case (r holds its method; gs the start).
+CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, double Q, const StripMethodOptions& opt,
+                      const GridStart& gs, CaseResult r) {
+  double dz_est = gs.dz;
+  const WheelRailGap gap(G, tY);
+  // Plastic model: the capped approach is at least the elastic one and at least the rigid–
+  // perfectly-plastic one (as for the half-space method).
+  if (std::isfinite(mat.p_lim)) dz_est = std::max(dz_est, rigid_plastic_approach(gap, Q, mat.p_lim));
+  const double H = mat.compliance(), p_lim = mat.p_lim;
+  const PatchDriverOptions dopt = patch_driver_options(opt, opt.max_passes);
+  PatchDriverResult D = drive_patches(gap, Q, dz_est, dopt, [&](const PatchRegion& reg, double dz_ref, std::string*) {
+    return std::unique_ptr<PatchSolver>(std::make_unique<StripPatch>(gap, reg, dz_ref, opt, H, p_lim));
+  });
+  r.status = D.status;
+  r.message = D.message;
+  r.approach = D.dz;
+  int evaluations = 0;
+  for (const auto& solver : D.solvers) {
+    const StripPatch& k = static_cast<const StripPatch&>(*solver);
+    evaluations += k.evaluations;
+    const StripResult& S = k.last;
+    // A patch solve that did not converge keeps its last (closest) iterate, as every
+    // not_converged row does (README "Failed rows"); the case's status and message say why.
+    if ((S.status != StripStatus::Ok && S.status != StripStatus::NotConverged) || S.N <= 0) continue;
+    PatchResult pr;
+    pr.y_r = k.P.y_ref;
+    pr.z_r = gap.z_rail(k.P.y_ref);
+    pr.y_w = gap.y_wheel(k.P.y_ref);
+    pr.r_roll = gap.rolling_radius(k.P.y_ref);
+    pr.gamma = k.P.gamma;
+    pr.iterations = S.iterations;
+    pr.end_gap_error = S.end_gap_error;
+    pr.refined = S.refined;
+    pr.N = S.N;
+    pr.pmax = S.pmax;
+    pr.area = S.area;
+    pr.approach = D.dz * std::cos(k.P.gamma) - *std::min_element(k.geo.g.begin(), k.geo.g.end());
+    double s_lo = INFINITY, s_hi = -INFINITY, ls = 0, lc = 0;
+    for (const StripState& st : S.strips) {
+      pr.length_x = std::max(pr.length_x, 2 * st.a);
+      s_lo = std::min(s_lo, st.s);
+      s_hi = std::max(s_hi, st.s);
+      ls += st.load * st.s;
+      lc += st.load * st.c;
+      ++pr.n_elements;
+      if (st.plastic) {
+        // Flat top at p_lim where q √(1 − t²) ≥ p_lim: |t| ≤ √(1 − r²), r = p_lim / q (§9.6).
+        const double rr = p_lim / st.q, half = st.a * std::sqrt(std::max(0.0, 1 - rr * rr));
+        pr.plastic_area += 2 * half * k.geo.ds;
+        pr.capped_load += 2 * half * k.geo.ds * p_lim;
+      }
+      if (opt.keep_strips)
+        pr.strips.push_back({st.s, k.P.y_ref + st.s * std::cos(k.P.gamma), st.c, st.a, st.q, st.plastic});
+    }
+    pr.width_s = S.strips.empty() ? 0 : s_hi - s_lo + k.geo.ds;
+    if (!S.strips.empty()) { pr.s_lo = s_lo; pr.s_hi = s_hi; }
+    pr.s_centroid = S.N > 0 ? ls / S.N : 0;
+    pr.x_centroid = S.N > 0 ? lc / S.N : 0;
+    r.Fz += pr.N * std::cos(pr.gamma);
+    r.Fy += pr.N * std::sin(pr.gamma);
+    r.pmax = std::max(r.pmax, pr.pmax);
+    r.area += pr.area;
+    if (S.n_outliers > 0 && S.worst_outlier >= 0) {
+      // The known failure mode (§9.7): a strip whose peak pressure stands far above its
+      // neighbours' (q_MPa: that peak, min(amplitude, p_lim)).
+      const StripState& w = S.strips[static_cast<std::size_t>(S.worst_outlier)];
+      r.warnings.push_back("strip_outlier:patch=" + std::to_string(r.patches.size() + 1) + ":strips=" +
+                           std::to_string(S.n_outliers) + ":y_rail_mm=" +
+                           format_number(std::round((k.P.y_ref + w.s * std::cos(k.P.gamma)) * 1e6) / 1e3) +
+                           ":q_MPa=" + format_number(std::round(std::min(w.q, p_lim) / 1e3) / 1e3));
+    }
+    r.patches.push_back(std::move(pr));
+  }
+  int index = 0;
+  for (auto& pr : r.patches) pr.patch = ++index;
+  r.n_contacts = static_cast<int>(r.patches.size());
+  r.iterations = evaluations;
+  r.residual = (r.Fz - Q) / Q;
+  if (r.status == CaseStatus::Ok && std::fabs(r.residual) > 1e-5) {
+    r.status = CaseStatus::NotConverged;
+    r.message = "force balance residual " + format_number(r.residual);
+  }
+  return r;
+}
+
+}  // namespace
+
+CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, double tY, double Q,
+                              const StripMethodOptions& opt, const CaseResult* elastic_mh) {
+  CaseResult r;
+  r.method = Method::Strips;
+  GridStart gs;
+  if (!begin_grid_case(G, mat, tY, Q, elastic_mh, r, &gs)) return r;
+  r = strip_case(G, mat, tY, Q, opt, gs, std::move(r));
+  finish_grid_case(G, tY, gs, r);
+  return r;
+}
+
+}  // namespace mh
