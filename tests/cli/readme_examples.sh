@@ -1,67 +1,177 @@
 #!/usr/bin/env bash
-# Every command example of README.md, run as written (in a scratch copy of the repository's
-# cases/, profiles/, scripts/ and tests/ref/, with build/mhcontact pointing at the binary under test).
+# Every command example of README.md and of the docs pages (the ```sh blocks of docs/*.md), run
+# as written, in a scratch copy of the repository's cases/, profiles/, scripts/, tests/ref/ and
+# tests/data/contact/
+# with build/mhcontact pointing at the binary under test. Each block below names the page it
+# comes from; the last block checks that no ```sh command of those pages is missing here, and
+# that the outputs the README shows are what the commands print.
 set -euo pipefail
 bin=$1; src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-mkdir -p "$tmp/build" "$tmp/tests"
+self=$(cd "$(dirname "$0")" && pwd)/$(basename "$0")
+mkdir -p "$tmp/build" "$tmp/tests" "$tmp/expect"
 cp -r "$src/cases" "$src/profiles" "$src/scripts" "$tmp/"
 cp -r "$src/tests/ref" "$tmp/tests/"
+mkdir -p "$tmp/tests/data" && cp -r "$src/tests/data/contact" "$tmp/tests/data/"
 ln -s "$bin" "$tmp/build/mhcontact"
+# The binary is already built: the quick start's build step (scripts/build.sh, which CI runs
+# through scripts/test.sh) is a no-op in the scratch copy.
+printf '#!/usr/bin/env bash\nexit 0\n' > "$tmp/scripts/build.sh"
 cd "$tmp"
-py=/usr/bin/python3; [ -x "$py" ] || py=python3
 export MPLBACKEND=Agg
+have_mpl() { "$1" -c 'import matplotlib' 2>/dev/null; }
+# The fenced block that follows the ```sh block holding the command line $2 in page $1: the
+# output the page shows for it.
+shown_output() {
+  awk -v cmd="$2" '
+    state == 0 && $0 == cmd { state = 1; next }
+    state == 1 && /^```/ { state = 2; next }
+    state == 2 && /^```/ { state = 3; next }
+    state == 3 && /^```/ { exit }
+    state == 3 { print }' "$src/$1"
+}
 set -x
-# Commands
-./build/mhcontact run cases/manchester.json -o out/manchester
+
+# --- README.md, "Quick start" (the second command, bash scripts/test.sh, is what CI runs) ------
+bash scripts/quickstart.sh
+test -s out/manchester/cases.csv
+
+# --- README.md, "A worked example"; docs/cli.md, "run" ----------------------------------------
+./build/mhcontact run cases/manchester.json -o out/manchester 2> "$tmp/run.err"
+for f in cases.csv ellipses.csv geometry.csv results.json profiles.csv run.json; do test -s "out/manchester/$f"; done
+grep -E '^(case|26|68|86),' out/manchester/cases.csv | cut -d, -f2-4,10,13-15 > "$tmp/cases.txt"
+grep -E '^(case|68),' out/manchester/ellipses.csv | cut -d, -f4,6-9 > "$tmp/ellipses.txt"
+# The outputs the README shows are the commands' outputs (the run's time masked).
+shown_output README.md "./build/mhcontact run cases/manchester.json -o out/manchester" | sed 's/; [0-9.]* s;/; T s;/' > "$tmp/expect/run.err"
+tail -n 1 "$tmp/run.err" | sed 's/; [0-9.]* s;/; T s;/' | diff "$tmp/expect/run.err" -
+shown_output README.md "grep -E '^(case|26|68|86),' out/manchester/cases.csv | cut -d, -f2-4,10,13-15" | diff - "$tmp/cases.txt"
+shown_output README.md "grep -E '^(case|68),' out/manchester/ellipses.csv | cut -d, -f4,6-9" | diff - "$tmp/ellipses.txt"
+test -s "$tmp/cases.txt" && test -s "$tmp/ellipses.txt"
+
+# --- README.md, "Commands"; docs/cli.md, "run", "geometry", "hertz", "diff"; docs/plots.md -----
 ./build/mhcontact run cases/manchester-plastic.json -o out/mp --pressure-grid 21
-./build/mhcontact geometry cases/manchester.json -o out/geo
-# The half-space method
-./build/mhcontact run cases/manchester-halfspace.json -o out/manchester-halfspace
-./build/mhcontact run cases/manchester-halfspace.json -o out/hs-flange --pressure-grid 2 --pressure-cases 13-14
-test "$(cut -d, -f1 out/hs-flange/pressure.csv | tail -n +2 | sort -u | tr '\n' ' ')" = "13 14 "
-test "$(wc -l < out/manchester-halfspace/patches.csv)" -eq 18
 ./build/mhcontact run cases/manchester-strips.json -o out/manchester-strips --strips
 test -s out/manchester-strips/strips.csv
-if "$py" -c 'import matplotlib' 2>/dev/null; then
-  "$py" scripts/compare_methods.py cases/manchester-halfspace.json -o out/compare.png
+./build/mhcontact geometry cases/manchester.json -o out/geo
+./build/mhcontact hertz --R-wyy 460 --R-rxx 300 --N 100 --E 210 --nu 0.3 | grep -q "^a = 7.16"
+./build/mhcontact diff tests/ref/manchester/cases.csv out/manchester/cases.csv --rtol 1e-7 --atol 1e-9
+./build/mhcontact profile info profiles/MBench_UIC60_v3.prr
+./build/mhcontact profile generate 60E1 --inclination 1:40 -o 60E1_1-40.csv
+cmp 60E1_1-40.csv profiles/60E1_1-40.csv
+bash scripts/run_sharded.sh cases/manchester.json out/study 8 2
+cmp out/study/cases.csv out/manchester/cases.csv
+if have_mpl /usr/bin/python3; then
+  /usr/bin/python3 scripts/plot_pressure.py out/mp --case 23
+  test -s out/mp/pressure_case_23.png
+fi
+
+# --- docs/cli.md, "run", "hertz", "diff" ------------------------------------------------------
+./build/mhcontact run cases/manchester-halfspace.json -o out/hs-flange --pressure-grid 2 --pressure-cases 13-14
+test "$(cut -d, -f1 out/hs-flange/pressure.csv | tail -n +2 | sort -u | tr '\n' ' ')" = "13 14 "
+./build/mhcontact hertz --R-wyy 460 --R-rxx 300 --N 100 --E 210 --nu 0.3 --p-lim 800 --json | grep -q '"a_mm": 7.748'
+./build/mhcontact hertz --A 0.001 --B 0.002 --N 10 --E 210 --nu 0.28 --json
+./build/mhcontact run cases/manchester.json -o out/manchester --format csv -q
+./build/mhcontact diff tests/ref/manchester/ellipses.csv out/manchester/ellipses.csv --column-tol p0_MPa=0.5
+
+# --- docs/methods.md, "Half-space", "Strips", "Comparing the methods" --------------------------
+./build/mhcontact run cases/manchester-halfspace.json -o out/manchester-halfspace
+test "$(wc -l < out/manchester-halfspace/patches.csv)" -eq 18
+./build/mhcontact run cases/manchester-strips.json -o out/manchester-strips --strips
+if have_mpl /usr/bin/python3; then
+  /usr/bin/python3 scripts/compare_methods.py cases/manchester-halfspace.json -o out/compare.png
   test -s out/compare.png
 fi
-# Profiles
+
+# --- docs/strips.md, "Three methods against CONTACT" ------------------------------------------
+if have_mpl /usr/bin/python3; then
+  /usr/bin/python3 scripts/compare_methods.py cases/manchester-halfspace.json \
+    --methods multi-hertzian,strips,half-space,auto \
+    --reference tests/data/contact/contact_mbench_right_q50_dx0.2.csv -o compare.png --table compare.csv
+  test -s compare.csv
+fi
+
+# --- docs/profiles.md, "8. The profile commands" ----------------------------------------------
 ./build/mhcontact profile info profiles/MBench_S1002_v3.prw
 ./build/mhcontact profile info profiles/MBench_UIC60_v3.prr --json
 ./build/mhcontact profile convert profiles/MBench_S1002_v3.prw -o s1002.csv
 ./build/mhcontact profile generate S1002 -o S1002.csv
-./build/mhcontact profile generate 60E1 --inclination 1:40 -o 60E1_1-40.csv
 cmp S1002.csv profiles/S1002.csv
-cmp 60E1_1-40.csv profiles/60E1_1-40.csv
-# hertz
-./build/mhcontact hertz --R-wyy 460 --R-rxx 300 --N 100 --E 210 --nu 0.3 | grep -q "^a = 7.16"
-./build/mhcontact hertz --R-wyy 460 --R-rxx 300 --N 100 --E 210 --nu 0.3 --p-lim 800 --json | grep -q '"a_mm": 7.748'
-./build/mhcontact hertz --A 0.001 --B 0.002 --N 10 --E 210 --nu 0.28 --json
-# diff
-./build/mhcontact run cases/manchester.json -o out/manchester --format csv -q
-./build/mhcontact diff tests/ref/manchester/cases.csv out/manchester/cases.csv --rtol 1e-7 --atol 1e-9
-./build/mhcontact diff tests/ref/manchester/ellipses.csv out/manchester/ellipses.csv --column-tol p0_MPa=0.5
-# Fleets and shards
+
+# --- docs/batch-and-shards.md (the Slurm lines are tested by tests/cli/sharded_scripts.sh, with
+# the array task number set by hand) ------------------------------------------------------------
 ./build/mhcontact run cases/fleet.json -o out/fleet
-bash scripts/run_sharded.sh cases/manchester.json out/study 8 2
-cmp out/study/cases.csv out/manchester/cases.csv
 if command -v parallel >/dev/null && parallel --version 2>/dev/null | grep -q "GNU parallel"; then
   parallel ./build/mhcontact run cases/manchester.json -o out/par.shards/shard{} --shard {}/8 -q ::: 1 2 3 4 5 6 7 8
   ./build/mhcontact merge out/par.shards/shard* -o out/par
+  cmp out/par/cases.csv out/manchester/cases.csv
 fi
-# Plots
-"$py" scripts/plot_geometry.py out/geo --tY 5
-"$py" scripts/plot_pressure.py out/mp --case 23
-test -s out/geo/geometry_caf.png && test -s out/geo/geometry_profiles.png && test -s out/mp/pressure_case_23.png
-./build/mhcontact run cases/manchester-halfspace.json -o out/hs --pressure-grid 2
-"$py" scripts/plot_pressure.py out/hs --case 13
-test -s out/hs/pressure_case_13.png
-# Exit codes: a failing case gives 1, bad input 2, CLI syntax >= 100
+
+# --- docs/plots.md --------------------------------------------------------------------------
+if have_mpl /usr/bin/python3; then
+  /usr/bin/python3 scripts/plot_geometry.py out/geo --tY 5
+  test -s out/geo/geometry_caf.png && test -s out/geo/geometry_profiles.png
+  ./build/mhcontact run cases/manchester-halfspace.json -o out/hs --pressure-grid 2
+  /usr/bin/python3 scripts/plot_pressure.py out/hs --case 13
+  test -s out/hs/pressure_case_13.png
+  /usr/bin/python3 scripts/plot_pressure.py out/fleet --pair 0 --case 23
+  /usr/bin/python3 scripts/plot_geometry.py out/fleet --pair 1
+  test -s out/fleet/pressure_case_23_pair_0.png && test -s out/fleet/geometry_pair_1_caf.png
+fi
+
+# --- docs/cli.md, "Exit codes": a failing case gives 1, bad input 2, CLI syntax >= 100 --------
 set +e
 ./build/mhcontact run /nonexistent.json -o out/x 2>/dev/null; test $? -eq 2 || exit 1
 ./build/mhcontact run --no-such-option 2>/dev/null; rc=$?; test $rc -ge 100 || exit 1
 ./build/mhcontact --version | grep -q "^mhcontact " || exit 1
 set -e
+set +x
+
+# --- The shipped case files shown in the pages are the files (their "comment" aside) -----------
+python3 - "$src" <<'PY'
+import json, os, re, sys
+src = sys.argv[1]
+for page in ["README.md"] + ["docs/" + f for f in sorted(os.listdir(os.path.join(src, "docs"))) if f.endswith(".md")]:
+    text = open(os.path.join(src, page), encoding="utf-8").read()
+    for m in re.finditer(r"`(cases/[\w.-]+\.json)`:\s*\n\s*\n```json\n(.*?)\n```", text, re.S):
+        shown = json.loads(m.group(2))
+        actual = json.load(open(os.path.join(src, m.group(1)), encoding="utf-8"))
+        shown.pop("comment", None); actual.pop("comment", None)
+        if shown != actual:
+            sys.exit(f"readme_examples: {page} shows {m.group(1)} otherwise than the file")
+PY
+
+# --- Every command of a ```sh block of README.md and docs/*.md is run above ---------------------
+# (continuation lines joined, trailing comments dropped; a command counts as run when a line of
+# this script is the command, possibly followed by a redirection or a pipe). Not run here:
+# bash scripts/test.sh (it is what CI runs, and runs this test), the Slurm lines (see above),
+# bash scripts/fuzz.sh (run by scripts/test.sh for 10 s a target; the docs show longer runs),
+# the callgrind command of docs/performance.md (a template with CASE.json and OUT), and the
+# plastic comparison that regenerates a table of docs/half_space.md (13 s of CPU for the capped
+# half-space solves of 33 cases, several times that under the sanitizers; run it by hand when
+# that table is updated).
+exempt='^(bash scripts/test\.sh|sbatch |bash scripts/fuzz\.sh |valgrind |/usr/bin/python3 scripts/compare_methods\.py cases/manchester-plastic\.json )'
+commands() {  # the command lines of the ```sh blocks of file $1
+  awk '/^```sh/ { b = 1; next } /^```/ { b = 0 } b' "$1" | join_lines
+}
+join_lines() {  # join "\" continuations, drop comments and leading/trailing blanks
+  awk '{ line = line $0 } /\\$/ { sub(/\\$/, "", line); next } { print line; line = "" }' |
+    sed -E 's/[[:space:]]+# .*$//; s/^[[:space:]]+//; s/[[:space:]]+$//; s/[[:space:]]+/ /g' | grep -v -e '^#' -e '^$' || true
+}
+join_lines < "$self" > "$tmp/script_lines"
+missing=0
+for page in "$src/README.md" "$src"/docs/*.md; do
+  while IFS= read -r cmd; do
+    [[ $cmd =~ $exempt ]] && continue
+    if ! awk -v c="$cmd" '
+        substr($0, 1, length(c)) == c {
+          rest = substr($0, length(c) + 1)
+          if (rest == "" || rest ~ /^ *(\||>|2>|&&|;)/) { found = 1; exit }
+        }
+        END { exit !found }' "$tmp/script_lines"; then
+      echo "readme_examples: $(basename "$page") shows a command this test does not run: $cmd"
+      missing=1
+    fi
+  done < <(commands "$page")
+done
+test $missing -eq 0
 echo "readme_examples: OK"

@@ -2,7 +2,7 @@
 # A schema a script can trust: the resolved inputs in results.json are a valid case file whose
 # paths resolve from the output directory (rerunning them reproduces the tables byte for byte);
 # batch summaries count failures as single runs do; every column of every table is documented
-# in the README; curvature sums use the unit name of `hertz` (A_per_mm); ellipses.csv carries what
+# in docs/outputs.md; curvature sums use the unit name of `hertz` (A_per_mm); ellipses.csv carries what
 # depends on the load and joins geometry.csv (once per t_Y and ellipse) on (tY_mm, ellipse), as
 # results.json's "geometry" records join its case records.
 set -uo pipefail
@@ -72,13 +72,13 @@ s = json.load(open(sys.argv[1]))["summary"]
 assert s["failed"] == 2 and s["invalid_pairs"] == 1, s
 PY
 grep -q "^1,missing,$tmp/no_such.prw," "$tmp/batch/pairs.csv" || fail "pairs.csv: the source of an invalid pair is not a plain path: $(sed -n 3p "$tmp/batch/pairs.csv")"
-# Every column of every table is documented in the README (as `name`).
+# Every column of every table is documented in docs/outputs.md (as `name`), the page of the tables.
 "$bin" run "$src/cases/manchester-plastic.json" -o "$tmp/p" --pressure-grid 3 -q
 "$bin" geometry "$src/cases/manchester.json" -o "$tmp/g" -q
 "$bin" run "$src/cases/manchester-strips.json" -o "$tmp/st" --strips -q || fail "strip run"
 for f in "$tmp/p/cases.csv" "$tmp/p/ellipses.csv" "$tmp/p/geometry.csv" "$tmp/p/pressure.csv" "$tmp/g/caf.csv" "$tmp/batch/pairs.csv" "$tmp/batch/geometry.csv" "$tmp/st/patches.csv" "$tmp/st/strips.csv"; do
   for col in $(head -1 "$f" | tr ',' ' '); do
-    grep -q "\`$col\`\|[,\`]$col[,\`]" "$src/README.md" || fail "README does not document column $col of $(basename "$f")"
+    grep -q "\`$col\`\|[,\`]$col[,\`]" "$src/docs/outputs.md" || fail "docs/outputs.md does not document column $col of $(basename "$f")"
   done
 done
 # patches.csv of the strip method says per patch which extents it kept (the estimate, or refined
