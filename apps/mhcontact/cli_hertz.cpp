@@ -76,8 +76,10 @@ void run_hertz(const HertzCliOptions& o, CliContext& ctx) {
       plausible_or_bad(opt, std::fabs(R_mm), plausible::kProfileRadius_mm);
       return 1.0 / (R_mm * units::mm);
     };
-    A = 1.0 / (2.0 * o.R_wyy_mm * units::mm);                            // (eq. 1)
-    B = 0.5 * (curv(o.R_wxx_mm, "--R-wxx") + curv(o.R_rxx_mm, "--R-rxx"));  // (eq. 1)
+    const CurvatureSums s = curvature_sums(o.R_wyy_mm * units::mm, 0.0, curv(o.R_wxx_mm, "--R-wxx"),
+                                           curv(o.R_rxx_mm, "--R-rxx"));  // (eq. 1)
+    A = s.A;
+    B = s.B;
     if (!(B > 0))
       throw InputError("hertz --R-wxx/--R-rxx", "B = " + format_number(B * units::mm) + " 1/mm",
                        "B = (1/R_wxx + 1/R_rxx)/2 must be > 0",

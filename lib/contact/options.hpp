@@ -59,8 +59,8 @@ struct HertzValidityOptions {
 
 struct MultiHertzOptions {
   double rtol = 1e-12;     ///< converged when |Σ N_i cos γ_i − Q| ≤ rtol·Q (default 1e-12)
-  int max_iterations = 60; ///< safeguarded Newton iterations before `not_converged` (default 60)
-  bool exact_coefficients = false;  ///< Hertz m, n, ρ from GSL instead of the fast table (default: table)
+  int max_iterations = 60; ///< Newton iterations (evaluations of eq. 10) before `not_converged` (default 60)
+  bool exact_coefficients = false;  ///< Hertz m, n, ρ by the exact solve instead of the fast table (default: table)
   HertzValidityOptions validity;    ///< limits of the per-ellipse Hertz validity test (hertz_validity.hpp)
   bool valid(std::string* why) const;
 };

@@ -25,7 +25,7 @@ struct EllipseLaw {
 
   /// N(h0) [N] and, if dN_dh0 is given, dN/dh0 [N/m] at virtual penetration h0 [m]; both 0 for
   /// h0 ≤ 0 (and NaN h0). N = k_e h0^(3/2) (eq. 8) up to h_y, N = k_p (h0 − h_y/3) above
-  /// (method.md §5). C¹ at h_y. Inline, allocation-free, no GSL: the solver's inner loop.
+  /// (method.md §5). C¹ at h_y. Inline, allocation-free: the solver's inner loop.
   double force(double h0, double* dN_dh0 = nullptr) const {
     if (!(h0 > 0)) {
       if (dN_dh0) *dN_dh0 = 0;
@@ -57,7 +57,7 @@ struct EllipseLaw {
 };
 
 /// Build the law of an ellipse with curvature sums A, B [1/m] (eq. 1) for `mat`: λ = A/B, m, n, ρ
-/// (fast path, or the exact GSL path when `exact`), k_e (eq. 8), and with a finite mat.p_lim the
+/// (fast path, or the exact path when `exact`), k_e (eq. 8), and with a finite mat.p_lim the
 /// plastic branch (method.md §5). Throws std::invalid_argument with the rule for a
 /// non-Hertzian or invalid input: B ≤ 0 (conformal or diverging profiles across the contact),
 /// A ≤ 0 (A < 0 is a concave rolling direction, A = 0 a line contact), A/B outside

@@ -1,19 +1,19 @@
-// Hertz coefficients m, n, ρ of λ = A/B (method.md §2): the exact path from GSL's complete
-// elliptic integrals in Carlson form, and the fast tabulated path.
+// Hertz coefficients m, n, ρ of λ = A/B (method.md §2): the exact path from complete elliptic
+// integrals in Carlson form (Boost.Math), and the fast tabulated path.
 #include "contact/ellipse/hertz.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
-#include <gsl/gsl_sf_ellint.h>
-
+#include <algorithm>
 #include <array>
 #include <cfloat>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <boost/math/special_functions/ellint_rd.hpp>
+#include <boost/math/special_functions/ellint_rf.hpp>
+
 #include "core/numfmt.hpp"
+#include "core/roots.hpp"
 #include "core/units.hpp"
 
 namespace mh {
@@ -25,15 +25,10 @@ using units::pi;
 
 /// Options of the exact solve for g (documented defaults).
 struct ExactSolveOptions {
-  int max_iterations = 200;              ///< Brent iterations in ln g (it converges in ~10–40)
+  int max_iterations = 200;              ///< TOMS 748 iterations in ln g (it converges in ~10–20)
   double rel_tolerance = 4 * DBL_EPSILON;  ///< on ln g, relative
   double abs_tolerance = 1e-300;         ///< on ln g, absolute (ln g → 0 as λ → 1)
 };
-
-void check_gsl(int status, const char* what) {
-  if (status != GSL_SUCCESS)
-    throw std::runtime_error(std::string("GSL ") + what + " failed: " + gsl_strerror(status));
-}
 
 /// Carlson integrals R_F(0, y, 1) = K and R_D(0, y, 1) for y = g² = 1 − e² (complementary
 /// parameter): K = R_F, K − E = (e²/3) R_D (DLMF 19.25.1). No modulus round trip.
@@ -41,10 +36,7 @@ struct Carlson {
   double RF, RD;
 };
 Carlson carlson(double y) {
-  gsl_sf_result rf, rd;
-  check_gsl(gsl_sf_ellint_RF_e(0.0, y, 1.0, GSL_PREC_DOUBLE, &rf), "ellint_RF");
-  check_gsl(gsl_sf_ellint_RD_e(0.0, y, 1.0, GSL_PREC_DOUBLE, &rd), "ellint_RD");
-  return {rf.val, rd.val};
+  return {boost::math::ellint_rf(0.0, y, 1.0), boost::math::ellint_rd(0.0, y, 1.0)};
 }
 
 /// B/A as a function of g (A ≤ B): (E/g² − K)/(K − E) = (3 R_F/R_D − 1)/g² (the factor e² of
@@ -54,13 +46,8 @@ double ratio_of_g(double g) {
   return (3.0 * c.RF / c.RD - 1.0) / (g * g);
 }
 
-struct RootParams {
-  double log_target;  // ln(B/A) = −ln λ ≥ 0
-};
-double root_fn(double t, void* p) {  // t = ln g
-  const double g = std::exp(t);
-  return std::log(ratio_of_g(g)) - static_cast<RootParams*>(p)->log_target;
-}
+/// ln(B/A)(g) − ln(B/A)_target in t = ln g: decreasing, smooth, with its root at the g of λ.
+double root_fn(double t, double log_target) { return std::log(ratio_of_g(std::exp(t))) - log_target; }
 
 /// m, n, ρ for λ ≤ 1 (a is the major axis, m ≥ n).
 HertzCoefficients coefficients_le1(double lambda) {
@@ -68,33 +55,24 @@ HertzCoefficients coefficients_le1(double lambda) {
   HertzCoefficients c;
   c.lambda = lambda;
   if (lambda == 1.0) return c;  // circle: exactly 1, 1, 1
-  RootParams par{-std::log(lambda)};
-  gsl_function F{&root_fn, &par};
+  const double log_target = -std::log(lambda);
+  auto f = [&](double t) { return root_fn(t, log_target); };
   // Bracket: f(0) = −ln(1/λ) < 0; f decreases with t; step the lower end down until f > 0
   // (B/A ≈ 1/(g² (ln(4/g) − 1)) for small g, so g ≈ √λ is within a few decades).
-  double hi = 0.0;
-  if (!(root_fn(hi, &par) < 0)) return c;  // λ within rounding of 1
-  double lo = 0.5 * std::log(lambda);
-  for (int k = 0; root_fn(lo, &par) <= 0; ++k) {
+  double hi = 0.0, f_hi = f(hi);
+  if (!(f_hi < 0)) return c;  // λ within rounding of 1
+  double lo = 0.5 * std::log(lambda), f_lo = f(lo);
+  for (int k = 0; f_lo <= 0; ++k) {
     if (k > 60) throw std::runtime_error("hertz_coefficients_exact: no bracket for lambda = " + format_number(lambda));
     hi = lo;
+    f_hi = f_lo;
     lo -= 2.0;
+    f_lo = f(lo);
   }
-  std::unique_ptr<gsl_root_fsolver, void (*)(gsl_root_fsolver*)> s(
-      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
-  if (!s) throw std::runtime_error("GSL root solver allocation failed");
-  check_gsl(gsl_root_fsolver_set(s.get(), &F, lo, hi), "root_fsolver_set");
-  double t = 0.5 * (lo + hi);
-  int status = GSL_CONTINUE;
-  for (int it = 0; it < opt.max_iterations && status == GSL_CONTINUE; ++it) {
-    check_gsl(gsl_root_fsolver_iterate(s.get()), "root_fsolver_iterate");
-    t = gsl_root_fsolver_root(s.get());
-    const double a = gsl_root_fsolver_x_lower(s.get()), b = gsl_root_fsolver_x_upper(s.get());
-    status = gsl_root_test_interval(a, b, opt.abs_tolerance, opt.rel_tolerance);
-    if (status != GSL_SUCCESS && status != GSL_CONTINUE) check_gsl(status, "root_test_interval");
-  }
-  if (status != GSL_SUCCESS)
+  const RootResult root = bracketed_root(f, lo, hi, f_lo, f_hi, {opt.abs_tolerance, opt.rel_tolerance, opt.max_iterations});
+  if (!root.converged)
     throw std::runtime_error("hertz_coefficients_exact: no convergence for lambda = " + format_number(lambda));
+  const double t = root.x;
   const double g = std::exp(t);
   if (!(g < 1.0)) return c;
   const double y = g * g;
@@ -138,7 +116,6 @@ struct SplineTable {
   // Per node: value and second derivative of ln m, ln n, ln ρ.
   std::vector<std::array<double, 3>> y, y2;
   SplineTable() {
-    gsl_set_error_handler_off();
     const int n = kTableIntervals + 1;
     y.resize(n);
     y2.assign(n, {0.0, 0.0, 0.0});
@@ -194,7 +171,6 @@ HertzCoefficients fast_le1(double lambda, double x) {
 
 HertzCoefficients hertz_coefficients_exact(double lambda) {
   check_lambda(lambda, kLambdaMinExact, kLambdaMaxExact);
-  gsl_set_error_handler_off();
   if (lambda <= 1.0) return coefficients_le1(lambda);
   return swapped(coefficients_le1(1.0 / lambda), lambda);
 }
@@ -205,6 +181,13 @@ HertzCoefficients hertz_coefficients(double lambda) {
   if (lambda == 1.0) return HertzCoefficients{};
   if (lambda < 1.0) return fast_le1(lambda, std::log(lambda));
   return swapped(fast_le1(1.0 / lambda, -std::log(lambda)), lambda);
+}
+
+HertzShape hertz_shape(double A, double B) {
+  const double lambda = std::min(std::max(A / B, kLambdaMinExact), kLambdaMaxExact);
+  const HertzCoefficients c = hertz_coefficients(lambda);
+  const double s = 1.0 / std::sqrt(c.rho * (A + B));
+  return {c.m * s, c.n * s};
 }
 
 double hertz_C(double N, double A, double B, double E_star) {

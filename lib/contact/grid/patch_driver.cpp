@@ -5,6 +5,7 @@
 
 #include "contact/multi_hertz/multi_hertz.hpp"
 #include "core/numfmt.hpp"
+#include "core/roots.hpp"
 
 namespace mh {
 
@@ -48,13 +49,18 @@ void finish_grid_case(const ContactGeometry& G, double tY, const GridStart& gs, 
 
 double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim) {
   constexpr double kStep = 0.02e-3;  // [m] as find_patch_regions samples g(y)
-  double lo = 0, hi = 0.05e-3;
-  while (p_lim * gap.projected_interpenetration_area(hi, kStep) < Q && hi < 0.1) { lo = hi; hi *= 2; }
-  while (hi - lo > 1e-4 * hi) {
-    const double mid = 0.5 * (lo + hi);
-    (p_lim * gap.projected_interpenetration_area(mid, kStep) < Q ? lo : hi) = mid;
+  auto F = [&](double z) { return p_lim * gap.projected_interpenetration_area(z, kStep) - Q; };
+  double lo = 0, hi = 0.05e-3, F_lo = -Q, F_hi = F(hi);
+  while (F_hi < 0 && hi < 0.1) {
+    lo = hi;
+    F_lo = F_hi;
+    hi *= 2;
+    F_hi = F(hi);
   }
-  return hi;
+  if (F_hi < 0) return hi;
+  RootTolerance tol;
+  tol.rel = 1e-4;
+  return bracketed_root(F, lo, hi, F_lo, F_hi, tol).x;
 }
 
 PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,
@@ -117,29 +123,35 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
       dz = R.solvers[0]->at_load(Q / c) / c;  // load control inside the one patch
       ++R.evaluations;
     } else {
-      // Bracketed secant (Illinois) on δz from the estimate.
+      // Bracket δz from the estimate, then TOMS 748 (core/roots.hpp); every patch solver holds
+      // the solution at the last δz evaluated, so the root is evaluated last.
       int outer = 0;
-      double lo = 0, Flo = -Q, hi = dz_ref, Fhi = force(hi);
+      double lo = 0, Flo = -Q, hi = dz_ref, Fhi = force(hi), last = hi;
       ++outer;
       while (Fhi < 0 && outer < opt.max_outer) {
         lo = hi; Flo = Fhi;
         hi *= 1.5;
         Fhi = force(hi);
+        last = hi;
         ++outer;
       }
-      int side = 0;
-      dz = hi;
-      double Fz = Fhi;
-      while (std::fabs(Fz) > opt.force_rtol * Q && outer < opt.max_outer && hi - lo > 1e-15) {
-        double z = (lo * Fhi - hi * Flo) / (Fhi - Flo);
-        if (!(z > lo && z < hi)) z = 0.5 * (lo + hi);
-        Fz = force(z);
-        ++outer;
-        dz = z;
-        if (Fz > 0) { hi = z; Fhi = Fz; if (side == 1) Flo *= 0.5; side = 1; }
-        else { lo = z; Flo = Fz; if (side == -1) Fhi *= 0.5; side = -1; }
+      RootResult root;
+      root.x = hi;
+      root.f = Fhi;
+      if (Fhi >= 0 && std::fabs(Fhi) > opt.force_rtol * Q && outer < opt.max_outer) {
+        RootTolerance tol;
+        tol.abs = 1e-15;
+        tol.rel = 0;
+        tol.f_abs = opt.force_rtol * Q;
+        tol.max_iterations = opt.max_outer - outer;
+        root = bracketed_root([&](double z) { last = z; ++outer; return force(z); }, lo, hi, Flo, Fhi, tol);
+        if (root.x != last) {
+          root.f = force(root.x);
+          ++outer;
+        }
       }
-      if (std::fabs(Fz) > opt.force_rtol * Q) {
+      dz = root.x;
+      if (std::fabs(root.f) > opt.force_rtol * Q) {
         R.status = CaseStatus::NotConverged;
         R.message = "force balance not reached in " + std::to_string(outer) + " iterations on the approach";
       }

@@ -12,11 +12,6 @@
 
 namespace mh {
 
-double combined_compliance(double E_w, double nu_w, double E_r, double nu_r) {
-  constexpr double pi = units::pi;
-  return (1.0 - nu_w * nu_w) / (pi * E_w) + (1.0 - nu_r * nu_r) / (pi * E_r);
-}
-
 namespace {
 
 /// F(u, v) = ∫₀ᵘ∫₀ᵛ dξ dη / √(ξ²+η²) = u asinh(v/|u|) + v asinh(u/|v|) (influence.hpp); the term

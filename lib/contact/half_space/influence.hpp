@@ -20,11 +20,6 @@
 
 namespace mh {
 
-/// Combined compliance of two elastic bodies [1/Pa]: H = (1−ν_w²)/(π E_w) + (1−ν_r²)/(π E_r)
-/// ([J] §3.2 point load, summed over both bodies). Johnson's composite modulus is E* = 1/(π H)
-/// ([J] §4.2: 1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂). No validation: callers pass E > 0, 0 ≤ ν < 0.5.
-double combined_compliance(double E_w, double nu_w, double E_r, double nu_r);
-
 /// ∫∫ over the rectangle |ξ| ≤ a, |η| ≤ b of dξ dη / √((x−ξ)² + (y−η)²)  [m]  ([L], [J] eq. 3.96).
 /// Times the combined compliance H and a uniform pressure p it is the normal surface displacement
 /// at (x, y) ([J] §3.2 point load integrated over the rectangle).

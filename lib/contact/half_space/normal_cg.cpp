@@ -1,6 +1,8 @@
 // Constrained conjugate-gradient normal contact solver (sources and problem in normal_cg.hpp).
 #include "contact/half_space/normal_cg.hpp"
 
+#include "core/roots.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -234,7 +236,7 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
 }
 
 /// Load control with a finite cap (normal_cg.hpp, "Load control with a cap"): the elastic solution
-/// when it stays below p_lim, else a safeguarded secant on δ over capped approach-control solves.
+/// when it stays below p_lim, else a root in δ of N(δ) = N over capped approach-control solves.
 NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double N, double p_lim,
                                  double* p, const NormalCGOptions& options) {
   const std::size_t n = static_cast<std::size_t>(C.nx()) * static_cast<std::size_t>(C.ny());
@@ -294,38 +296,40 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
   if (std::isfinite(delta_guess)) delta = std::max(delta, delta_guess);
   for (std::size_t e = 0; e < n; ++e) p[e] = std::min(std::max(p[e], 0.0), p_lim);  // warm start
 
-  // Safeguarded secant (Illinois) on F(δ) = N(δ) − N; stop when |F| ≤ tol·N (the force to the
-  // accuracy the gap has: ε ≤ tol of the interference).
+  // F(δ) = N(δ) − N by capped approach-control solves, warm-started from the last; stop when
+  // |F| ≤ tol·N (the force to the accuracy the gap has: ε ≤ tol of the interference), when a
+  // solve fails or when the iteration budget is spent (`stop`: F is then reported as 0 so that
+  // the root finder ends there). Bracket first, then TOMS 748 (core/roots.hpp).
   NormalCGOptions inner = options;
-  double lo = g_min, F_lo = -N, hi = INFINITY, F_hi = 0;
-  int side = 0;
   NormalCGResult r;
-  for (int eval = 0; eval < kMaxLoadSteps; ++eval) {
+  int evals = 0;
+  bool stop = false;
+  auto F = [&](double d) {
+    if (stop) return 0.0;
     inner.max_iterations = std::max(1, options.max_iterations - used);
-    r = solve(C, g, delta, Control::Approach, p_lim, p, inner, inner.max_iterations);
+    r = solve(C, g, d, Control::Approach, p_lim, p, inner, inner.max_iterations);
     used += r.iterations;
-    if (r.status != GridStatus::Ok && r.status != GridStatus::NoContact) break;
-    const double F = r.N - N;
-    if (std::fabs(F) <= options.tol * N) break;
-    if (F < 0) {
-      lo = delta; F_lo = F;
-      if (side == -1) F_hi *= 0.5;
-      side = -1;
-    } else {
-      hi = delta; F_hi = F;
-      if (side == 1) F_lo *= 0.5;
-      side = 1;
-    }
-    if (std::isinf(hi)) {
-      // Not bracketed yet: the interference grown by N/N(δ) (exact for a fully capped contact
-      // on a quadratic gap, whose area grows linearly with the interference), at most doubled.
-      const double grow = r.N > 0 ? std::min(2.0, N / r.N) : 2.0;
-      delta = g_min + (delta - g_min) * std::max(grow, 1.05);
-    } else {
-      delta = (lo * F_hi - hi * F_lo) / (F_hi - F_lo);
-      if (!(delta > lo && delta < hi)) delta = 0.5 * (lo + hi);
-    }
-    if (used >= options.max_iterations) break;
+    ++evals;
+    const double f = r.N - N;
+    stop = (r.status != GridStatus::Ok && r.status != GridStatus::NoContact) || std::fabs(f) <= options.tol * N ||
+           used >= options.max_iterations || evals >= kMaxLoadSteps;
+    return stop ? 0.0 : f;
+  };
+  double lo = g_min, F_lo = -N, F_d = F(delta);
+  while (!stop && F_d < 0) {
+    // Not bracketed yet: the interference grown by N/N(δ) (exact for a fully capped contact
+    // on a quadratic gap, whose area grows linearly with the interference), at most doubled.
+    lo = delta;
+    F_lo = F_d;
+    const double grow = r.N > 0 ? std::min(2.0, N / r.N) : 2.0;
+    delta = g_min + (delta - g_min) * std::max(grow, 1.05);
+    F_d = F(delta);
+  }
+  if (!stop) {
+    RootTolerance tol;
+    tol.rel = 0;
+    tol.max_iterations = kMaxLoadSteps;
+    bracketed_root(F, lo, delta, F_lo, F_d, tol);
   }
   // 3. Exact load and the load-control measure: the shared loop from this solution ([PK] scaling
   //    of the free pressures, δ = mean of g + u over them), polishing if needed.

@@ -1,6 +1,7 @@
 #include "contact/multi_hertz/multi_hertz.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -8,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/numfmt.hpp"
+#include "core/roots.hpp"
 #include "core/units.hpp"
 
 namespace mh {
@@ -57,12 +59,21 @@ struct LawCache {
 
 // A and B [1/m] of a candidate (eq. 1).
 void curvature_sums(const CandidateGeom& g, double* A, double* B) {
-  *A = 1.0 / (2.0 * g.R_wyy());                 // (eq. 1)
-  if (g.r_roller > 0) *A += 0.5 * g.k_ryy();    // roller rig: + 1/(2 R_ryy); a straight rail adds nothing
-  *B = 0.5 * (g.k_wxx + g.k_rxx);               // (eq. 1)
+  // Roller rig: + 1/(2 R_ryy) in A; a straight rail adds nothing.
+  const CurvatureSums s = mh::curvature_sums(g.R_wyy(), g.r_roller > 0 ? g.k_ryy() : 0.0, g.k_wxx, g.k_rxx);
+  *A = s.A;
+  *B = s.B;
 }
 
-bool hertzian_sums(double A, double B) { return B > 0 && A > 0 && std::isfinite(A) && std::isfinite(B); }
+// A candidate has a Hertz ellipse when both curvature sums are positive and finite and λ = A/B is
+// within the range of the Hertz coefficients (hertz.hpp): beyond it the contact is nearly
+// conformal, not an ellipse. Any other failure to build a law (an invalid material) is a bug of
+// the caller and propagates as an exception: an internal error, never "non-Hertzian".
+bool hertzian_sums(double A, double B) {
+  if (!(B > 0 && A > 0 && std::isfinite(A) && std::isfinite(B))) return false;
+  const double lambda = A / B;
+  return lambda >= kLambdaMinExact && lambda <= kLambdaMaxExact;
+}
 
 }  // namespace
 
@@ -79,13 +90,7 @@ void candidate_ellipses(const ContactGeometry& G, const Material& mat, double tY
     c.g = geo[e];
     curvature_sums(c.g, &c.A, &c.B);
     c.hertzian = hertzian_sums(c.A, c.B);
-    if (c.hertzian) {
-      try {
-        c.c = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients).c;
-      } catch (const std::exception&) {
-        c.hertzian = false;  // as solve_multi_hertz: λ beyond the Hertz range, no ellipse
-      }
-    }
+    if (c.hertzian) c.c = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients).c;
     if (G.rail_curve) c.z_r = G.rail_curve->z(c.g.y_r);
     if (G.wheel_curve) c.z_w = G.wheel_curve->z(c.g.y_w);
   }
@@ -135,11 +140,7 @@ CaseResult solve_multi_hertz(const ContactGeometry& G, const Material& mat, doub
         c.hertzian = slot.hertzian;
         c.law = slot.law;
       } else {
-        try {
-          c.law = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients);
-        } catch (const std::exception&) {
-          c.hertzian = false;  // e.g. λ beyond the Hertz range: nearly conformal, no ellipse
-        }
+        c.law = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients);
         slot.used = true;
         slot.A = bits(c.A);
         slot.B = bits(c.B);
@@ -174,27 +175,28 @@ CaseResult solve_multi_hertz(const ContactGeometry& G, const Material& mat, doub
     flag_climb();
     return r;
   }
-  double lo = first->g.gap;  // F(lo) = 0 < Q (only candidates with smaller gap could load: none)
-  double hi = first->g.gap + first->law.h0_for_force(Q / first->cg) / first->cg;
-  double dz = hi, dF = 0;
-  double F = total(dz, &dF);
-  int it = 0;
-  const double tol = opt.rtol * Q;
-  while (std::fabs(F - Q) > tol && it < opt.max_iterations) {
-    ++it;
-    if (F > Q) hi = dz; else lo = dz;
-    double next = dF > 0 ? dz - (F - Q) / dF : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // safeguard: stay in the bracket
-    if (next == dz) break;
-    dz = next;
-    F = total(dz, &dF);
-  }
-  r.iterations = it;
+  // Eq. 10 by Newton's method in δz, kept inside the bracket [lo, hi] (core/roots.hpp): F is
+  // increasing and piecewise smooth (a candidate enters with zero force and zero slope).
+  const double lo = first->g.gap;  // F(lo) = 0 < Q (only candidates with smaller gap could load: none)
+  const double hi = first->g.gap + first->law.h0_for_force(Q / first->cg) / first->cg;
+  RootTolerance tol;
+  tol.rel = DBL_EPSILON;
+  tol.max_iterations = opt.max_iterations;
+  tol.f_abs = opt.rtol * Q;
+  const RootResult root = newton_root(
+      [&](double z) {
+        double dF = 0;
+        const double F = total(z, &dF);
+        return std::pair<double, double>(F - Q, dF);
+      },
+      hi, lo, hi, tol);
+  const double dz = root.x;
+  r.iterations = root.iterations - 1;  // Newton steps after the start at hi
   r.dz = dz;
-  r.residual = (F - Q) / Q;
-  if (std::fabs(F - Q) > tol && std::fabs(r.residual) > 4 * std::numeric_limits<double>::epsilon()) {
+  r.residual = root.f / Q;
+  if (std::fabs(root.f) > tol.f_abs && std::fabs(r.residual) > 4 * std::numeric_limits<double>::epsilon()) {
     r.status = CaseStatus::NotConverged;
-    r.message = "equilibrium not reached in " + std::to_string(it) + " iterations (relative residual " +
+    r.message = "equilibrium not reached in " + std::to_string(root.iterations) + " iterations (relative residual " +
                 format_number(r.residual) + ")";
   }
   for (const Cand& c : cs) {

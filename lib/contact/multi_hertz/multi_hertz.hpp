@@ -22,9 +22,11 @@ namespace mh {
 /// candidate would have been loaded (h0 > 0 at the solution) the case carries a warning
 /// "non_hertzian_excluded:ellipse=K". Every loaded ellipse is checked against the Hertz
 /// assumptions (hertz_validity.hpp); one that fails keeps its result, has validity.valid = false
-/// and adds the warning "non_hertzian:ellipse=K:<limit>=<value>><max>" (never a silent ok). Q ≤ 0 or not finite gives `no_contact` with a message.
+/// and adds the warning "non_hertzian:ellipse=K:<limit>=<value>><max>" (never a silent ok). Q ≤ 0
+/// or not finite gives `no_contact` with a message. Precondition: mat.valid() (an invalid
+/// material is a bug of the caller: std::invalid_argument).
 CaseResult solve_multi_hertz(const ContactGeometry& G, const Material& mat, double tY, double Q,
-                      const MultiHertzOptions& opt = {});
+                             const MultiHertzOptions& opt = {});
 
 /// One potential ellipse as a candidate at one t_Y: everything about it that does not depend on
 /// the load Q (geometry.csv). The values are those solve_multi_hertz() uses and copies

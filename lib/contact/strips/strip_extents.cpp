@@ -1,7 +1,7 @@
 // Strip extents from a virtual interpenetration; see strip_extents.hpp.
 //
 // Sources:
-//  - Johnson, Contact Mechanics (1985) §3.6 / §4.2 (Hertz elliptic contact, eq. 3.69-3.71 / 4.2x).
+//  - Johnson, Contact Mechanics (1985) §4.2 (Hertz elliptic contact: contact/ellipse/hertz.hpp).
 //  - Kik & Piotrowski 1996; Piotrowski & Kik 2008 (KPEC: equivalent ellipse,
 //    virtual penetration, strip extents from a reduced interpenetration).
 //  - Sichani, Enblom, Berg 2014 (ANALYN: local Hertz solution per strip).
@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include "contact/ellipse/hertz.hpp"
+#include "core/roots.hpp"
 #include "core/units.hpp"
 
 namespace mh {
@@ -17,94 +19,17 @@ namespace strips_detail {
 
 namespace {
 
-constexpr double kPi = units::pi;
 
-/// Complete elliptic integrals K(m), E(m) of parameter m = e^2 by the
-/// arithmetic–geometric mean (Abramowitz & Stegun 17.6).
-void ellip_KE(double m, double* K, double* E) {
-  double a = 1.0, b = std::sqrt(1.0 - m), c = std::sqrt(m);
-  double pw = 0.5, sum = pw * c * c;
-  for (int it = 0; it < 64 && c > std::numeric_limits<double>::epsilon() * a; ++it) {
-    const double an = 0.5 * (a + b);
-    const double bn = std::sqrt(a * b);
-    c = 0.5 * (a - b);
-    a = an;
-    b = bn;
-    pw *= 2.0;
-    sum += pw * c * c;
-  }
-  *K = kPi / (2.0 * a);
-  *E = *K * (1.0 - sum);
-}
-
-/// Hertz shape for h = A x^2 + B y^2 with A <= B (major axis along x):
-/// axis ratio k = b/a from B/A = (E/k^2 - K)/(K - E), m = 1 - k^2, and the
-/// scale a^2 = delta (K - E)/(A m K) (Johnson §3.6 eq. 3.71: delta = H L,
-/// A = H M, B = H N with L = pi b p0 K, M = pi b p0 (K-E)/(e^2 a^2)).
-/// Returns a/sqrt(delta), b/sqrt(delta).
-void hertz_shape_major_x(double A, double B, double* ka, double* kb) {
-  const double ratio = B / A;
-  // Below this excess over 1 the ellipse is a circle to double precision.
-  constexpr double kCircleTol = 1e-12;
-  if (ratio <= 1.0 + kCircleTol) {
-    *ka = std::sqrt(1.0 / (2.0 * A));  // sphere: a^2 = R delta, A = 1/(2R)
-    *kb = *ka;
-    return;
-  }
-  auto f = [](double k) {
-    double K, E;
-    ellip_KE(1.0 - k * k, &K, &E);
-    return (E / (k * k) - K) / (K - E);
-  };
-  // f decreases from +inf (k -> 0) to 1 (k = 1). Root of
-  // phi(u) = ln f(e^u) - ln(B/A) in u = ln k by the Illinois variant of
-  // regula falsi (smooth in u; ~10 evaluations instead of ~50 for bisection).
-  double lo = 0.5;
-  while (f(lo) < ratio && lo > 1e-300) lo *= 0.5;
-  const double lr = std::log(ratio);
-  double ua = std::log(lo), fa = std::log(f(lo)) - lr;  // fa >= 0
-  double ub = 0.0, fb = -lr;                             // k = 1: f = 1 (limit), fb < 0
-  int side = 0;
-  // Stop when the bracket in ln k is this narrow (double precision).
-  constexpr double kUtol = 1e-15;
-  for (int it = 0; it < 200 && ub - ua > kUtol; ++it) {
-    const double uc = (ua * fb - ub * fa) / (fb - fa);
-    if (!(uc > ua && uc < ub)) break;
-    const double fc = std::log(f(std::exp(uc))) - lr;
-    if (fc == 0.0) { ua = ub = uc; break; }
-    if (fc < 0.0) {
-      ub = uc; fb = fc;
-      if (side == -1) fa *= 0.5;
-      side = -1;
-    } else {
-      ua = uc; fa = fc;
-      if (side == 1) fb *= 0.5;
-      side = 1;
-    }
-  }
-  // the end of the bracket with the smaller residual
-  const double k_root = std::exp(std::fabs(fa) < std::fabs(fb) ? ua : ub);
-  lo = k_root;
-  double hi = k_root;
-  const double k = std::sqrt(lo * hi);
-  const double m = 1.0 - k * k;
-  double K, E;
-  ellip_KE(m, &K, &E);
-  *ka = std::sqrt((K - E) / (A * m * K));
-  *kb = k * *ka;
-}
-
-/// Hertz shape for any A, B > 0: a/sqrt(delta) along x, b/sqrt(delta) along y.
+/// Hertz shape for h = A x^2 + B y^2, A, B > 0: a/sqrt(delta) along x, b/sqrt(delta) along y
+/// (the project's one Hertz, contact/ellipse/hertz.hpp).
 void hertz_shape(double A, double B, double* ka, double* kb) {
-  if (A <= B) {
-    hertz_shape_major_x(A, B, ka, kb);
-  } else {
-    hertz_shape_major_x(B, A, kb, ka);
-  }
+  const HertzShape h = mh::hertz_shape(A, B);
+  *ka = h.ka;
+  *kb = h.kb;
 }
 
 /// Root of the quadratic through (s_k, g_k), k = 0..2, equal to `level` in
-/// [lo, hi] (the interpolant changes sign there by construction); bisection.
+/// [lo, hi] (the interpolant changes sign there by construction).
 double crossing(const double* sv, const double* gv, double level, double lo, double hi) {
   auto q = [&](double x) {
     double r = 0.0;
@@ -116,13 +41,7 @@ double crossing(const double* sv, const double* gv, double level, double lo, dou
     }
     return r - level;
   };
-  double flo = q(lo);
-  for (int it = 0; it < 100; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    const double fm = q(mid);
-    if ((fm < 0.0) == (flo < 0.0)) { lo = mid; flo = fm; } else { hi = mid; }
-  }
-  return 0.5 * (lo + hi);
+  return bracketed_root(q, lo, hi, q(lo), q(hi)).x;
 }
 
 }  // namespace

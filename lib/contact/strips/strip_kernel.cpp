@@ -6,7 +6,7 @@
 #include <cstring>
 #include <vector>
 
-#include <gsl/gsl_sf_ellint.h>
+#include <boost/math/special_functions/ellint_rd.hpp>
 
 #include "core/units.hpp"
 
@@ -65,7 +65,7 @@ double strip_kernel_dg(double r) {
   // directly: 1 − k² would lose its digits for small r, where K and D grow like ln(4/k').
   r = std::fabs(r);
   const double s2 = 1.0 + r * r;
-  return 2.0 * gsl_sf_ellint_RD(0.0, r * r / s2, 1.0, GSL_PREC_DOUBLE) / (3.0 * std::sqrt(s2));
+  return 2.0 * boost::math::ellint_rd(0.0, r * r / s2, 1.0) / (3.0 * std::sqrt(s2));
 }
 
 double strip_kernel_g(double r) {

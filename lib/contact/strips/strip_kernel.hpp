@@ -36,7 +36,7 @@ namespace mh {
 
 /// g(r) above [-].
 double strip_kernel_g(double r);
-/// g'(r) = 2 D(k)/sqrt(1 + r²), k = 1/sqrt(1 + r²), evaluated directly (GSL, Carlson's R_D) [-].
+/// g'(r) = 2 D(k)/sqrt(1 + r²), k = 1/sqrt(1 + r²), evaluated directly (Carlson's R_D, Boost.Math) [-].
 double strip_kernel_dg(double r);
 
 /// G(t, r) and its derivatives, t ≥ 0, r > 0.

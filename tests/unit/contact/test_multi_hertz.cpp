@@ -21,7 +21,7 @@ using testing::steel;
 }  // namespace
 
 TEST_CASE("circular profiles: one ellipse equal to closed-form Hertz", "[solver]") {
-  // Source: Hertz with exact coefficients (GSL) for R_wxx = 50 mm, R_rxx = 100 mm (the circ_*
+  // Source: Hertz with exact coefficients for R_wxx = 50 mm, R_rxx = 100 mm (the circ_*
   // files, exact to 5e−7 mm) and R_wyy = r/cos γ; N = Q / cos γ. Tolerance 0.5 % (issue 3);
   // measured agreement is ~1e−4 (the fitted radii).
   const ContactGeometry G = build_geometry(read("circ_r50.prw", ProfileKind::Wheel, false),

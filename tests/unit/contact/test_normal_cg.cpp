@@ -15,7 +15,7 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 
 // Steel on steel: E = 210 GPa, ν = 0.28 for wheel and rail.
-const double H = mh::combined_compliance(210e9, 0.28, 210e9, 0.28);  // [1/Pa]
+const double H = 2 * (1 - 0.28 * 0.28) / (3.14159265358979323846 * 210e9);  // [1/Pa] two steel bodies (Johnson §3.2)
 const double E_star = 1.0 / (pi * H);  // Johnson's composite modulus, 1/E* = π H (influence.hpp)
 
 /// Grid of nx × ny elements of dx × dy centred on the origin, gap g = A x² + B y² at the centres.

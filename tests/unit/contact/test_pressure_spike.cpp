@@ -61,7 +61,9 @@ TEST_CASE("pressure spike: the half-space case with a single-element peak warns"
   // The flange on a corner of the measured gauge face: the load ends on one or two elements and
   // the placement does not settle; whatever the status, the row says why its peak is meaningless.
   const mh::CaseResult spike = mh::solve_half_space(pg.geo, cf.material, 11.5e-3, 50e3, cf.half_space);
-  CHECK(spike.pmax > 100e9);  // the singular element
+  // The singular element: tens of GPa or more (70.6 GPa with its placement settled, 1.2e6 MPa
+  // when it does not settle), where a steel contact stays below about 10 GPa.
+  CHECK(spike.pmax > 20e9);
   REQUIRE(spike.warnings.size() == 1);
   CHECK(spike.warnings[0].rfind("pressure_spike:patch=1:", 0) == 0);
   const mh::CaseResult smooth = mh::solve_half_space(pg.geo, cf.material, 2e-3, 50e3, cf.half_space);

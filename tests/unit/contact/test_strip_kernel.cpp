@@ -1,5 +1,5 @@
 // The strip kernel g(r) = ∫_{-1}^{1} sqrt(1 − t²) asinh(r/|t|) dt (contact/strips/strip_kernel.hpp)
-// against adaptive quadrature of its definition (GSL QAGS, independent of the elliptic-integral
+// against adaptive quadrature of its definition (tanh-sinh quadrature, independent of the elliptic-integral
 // derivative and of the table), and its derivative against the integral it stands for.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -7,19 +7,18 @@
 #include <random>
 #include <vector>
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_integration.h>
+#include "support/quadrature.hpp"
 
 #include "contact/strips/strip_kernel.hpp"
 
 namespace {
+// ∫_{-1}^{1} f(t, r) dt by adaptive quadrature (tests/support/quadrature.hpp), split where the
+// integrand changes on the scale r (the integrands are even in t).
 double qags(double (*f)(double, void*), double r) {
-  gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
-  gsl_function F{f, &r};
-  double res = 0, err = 0;
-  gsl_integration_qags(&F, 0.0, 1.0, 0.0, 1e-13, 1000, w, &res, &err);
-  gsl_integration_workspace_free(w);
-  return 2.0 * res;  // the integrands are even in t
+  std::vector<double> pts = {0.0, 1.0};
+  for (double k : {1.0, 10.0, 100.0})
+    if (k * r < 1) pts.push_back(k * r);
+  return 2.0 * mh_test::integrate_pieces([&](double t) { return f(t, &r); }, pts);
 }
 double g_def(double t, void* p) { return std::sqrt(1 - t * t) * std::asinh(*static_cast<double*>(p) / t); }
 double dg_def(double t, void* p) {
@@ -67,7 +66,7 @@ double G_def(double tau, void* p) {
   const TR* q = static_cast<TR*>(p);
   return std::sqrt(1 - tau * tau) * std::asinh(q->r / std::fabs(tau - q->t));
 }
-/// G(t, r) by GSL QAGP with breakpoints at the kernel's peak (τ = t) and at distances r, 10 r, …
+/// G(t, r) by adaptive quadrature with breakpoints at the kernel's peak (τ = t) and at distances r, 10 r, …
 /// from it and from the strip's end τ = 1, where the integrand changes on the scale r: an
 /// independent reference (no change of variable, no closed-form part).
 double G_reference(double t, double r) {
@@ -78,16 +77,8 @@ double G_reference(double t, double r) {
         const double p = c + sgn * k * r;
         if (p > -1 && p < 1) pts.push_back(p);
       }
-  std::sort(pts.begin(), pts.end());
-  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-  gsl_integration_workspace* w = gsl_integration_workspace_alloc(4000);
   TR p{t, r};
-  gsl_function F{G_def, &p};
-  double res = 0, err = 0;
-  gsl_set_error_handler_off();
-  gsl_integration_qagp(&F, pts.data(), pts.size(), 0.0, 1e-12, 4000, w, &res, &err);
-  gsl_integration_workspace_free(w);
-  return res;
+  return mh_test::integrate_pieces([&](double tau) { return G_def(tau, &p); }, pts, 1e-12);
 }
 }  // namespace
 
