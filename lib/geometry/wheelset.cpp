@@ -83,11 +83,7 @@ Wheelset::Wheelset(const Profile& wheel_left, const Profile& wheel_right, const 
     S.R = rc[k];
     S.s = k == 0 ? -1.0 : 1.0;
     S.R0 = k == 0 ? P.nominal_radius_left : P.nominal_radius_right;
-    if (!S.W->contains(0.0))
-      throw InputError(wheels[k]->source, "y = " + mm_text(S.W->y_min()) + " … " + mm_text(S.W->y_max()) + " mm",
-                       "the wheel profile does not reach its taping line (y = 0), where the nominal radius is given",
-                       "check the profile's origin (taping line 70 mm from the flange back) and mirror options");
-    S.zw0 = S.W->z(0.0);
+    set_wheel(S, wc[k], *wheels[k]);
     S.a = P.flange_back_distance / 2 - P.flange_back_position;
     const RailLandmarks L = rail_landmarks(*rails[k], P.gauge_height);
     if (L.has_gauge) gauge_y[k] = L.y_gauge;
@@ -103,11 +99,7 @@ Wheelset::Wheelset(const Profile& wheel_left, const Profile& wheel_right, const 
     }
     a_[k] = S.a;
     c_[k] = S.c;
-    S.yw_min = S.W->y_min(), S.yw_max = S.W->y_max();
     S.yr_min = S.R->y_min(), S.yr_max = S.R->y_max();
-    const std::size_t nw = static_cast<std::size_t>(std::floor((S.yw_max - S.yw_min) / opt.scan_step)) + 1;
-    S.zw_scan.resize(nw);
-    for (std::size_t i = 0; i < nw; ++i) S.zw_scan[i] = S.W->z(S.yw_min + opt.scan_step * static_cast<double>(i));
     S.rail_step = std::min(opt.curve.grid_step, opt.scan_step);
     const std::size_t nr = static_cast<std::size_t>(std::ceil((S.yr_max - S.yr_min) / S.rail_step)) + 1;
     S.zr_table.resize(std::max<std::size_t>(nr, 2));
@@ -115,6 +107,26 @@ Wheelset::Wheelset(const Profile& wheel_left, const Profile& wheel_right, const 
       S.zr_table[i] = S.R->z(std::min(S.yr_min + S.rail_step * static_cast<double>(i), S.yr_max));
   }
   measured_gauge_ = (c_[0] + gauge_y[0]) + (c_[1] + gauge_y[1]);
+}
+
+void Wheelset::set_wheel(Side& S, std::shared_ptr<const ProfileCurve> W, const Profile& wheel) {
+  S.W = std::move(W);
+  if (!S.W->contains(0.0))
+    throw InputError(wheel.source, "y = " + mm_text(S.W->y_min()) + " … " + mm_text(S.W->y_max()) + " mm",
+                     "the wheel profile does not reach its taping line (y = 0), where the nominal radius is given",
+                     "check the profile's origin (taping line 70 mm from the flange back) and mirror options");
+  S.zw0 = S.W->z(0.0);
+  S.yw_min = S.W->y_min(), S.yw_max = S.W->y_max();
+  const std::size_t nw = static_cast<std::size_t>(std::floor((S.yw_max - S.yw_min) / opt_.scan_step)) + 1;
+  S.zw_scan.resize(nw);
+  for (std::size_t i = 0; i < nw; ++i) S.zw_scan[i] = S.W->z(S.yw_min + opt_.scan_step * static_cast<double>(i));
+}
+
+Wheelset::Wheelset(const Wheelset& track, const Profile& wheel_left, const Profile& wheel_right) : Wheelset(track) {
+  auto wl = std::make_shared<const ProfileCurve>(wheel_left, opt_.curve);
+  auto wr = &wheel_right == &wheel_left ? wl : std::make_shared<const ProfileCurve>(wheel_right, opt_.curve);
+  set_wheel(side_[0], wl, wheel_left);
+  set_wheel(side_[1], wr, wheel_right);
 }
 
 WheelContact Wheelset::contact(const Side& S, double y, double phi, bool* found) const {

@@ -124,6 +124,10 @@ class Wheelset {
   Wheelset(const Profile& wheel_left, const Profile& wheel_right, const Profile& rail_left, const Profile& rail_right,
            const WheelsetPlacement& placement, const WheelsetOptions& opt = {});
 
+  /// Other wheels on the same rails, placement and options as `track` (a fleet: the rails are
+  /// smoothed and placed once). Throws InputError as above for the wheels.
+  Wheelset(const Wheelset& track, const Profile& wheel_left, const Profile& wheel_right);
+
   /// The contact state at lateral displacement y [m].
   WheelsetState at(double y) const;
   /// States at every y of `ys` [m], increasing; marks the jumps of the contact point between
@@ -158,6 +162,7 @@ class Wheelset {
   double measured_gauge_ = 0;
   WheelsetOptions opt_;
 
+  void set_wheel(Side& S, std::shared_ptr<const ProfileCurve> W, const Profile& wheel);
   /// Contact of one wheel with the wheelset at displacement y and roll phi.
   WheelContact contact(const Side& S, double y, double phi, bool* found) const;
 };
