@@ -170,7 +170,7 @@ TEST_CASE("EN 15302 wheel A on rail A: Δr and tan γe reproduce the standard's 
   WARN("EN 15302 tan γe: worst deviation " << worst);
 }
 
-TEST_CASE("placement by gauge equals the absolute placement it implies; one profile mirrored", "[wheelset]") {
+TEST_CASE("placement by gauge equals the absolute placement it implies, one profile mirrored", "[wheelset]") {
   const Profile w = mh::make_standard_profile("EN15302-wheel-A");
   const Profile r = mh::make_standard_profile("EN15302-rail-A");
   const mh::Wheelset ref(w, w, r, r, en15302_placement());
@@ -190,7 +190,7 @@ TEST_CASE("placement by gauge equals the absolute placement it implies; one prof
   CHECK(std::fabs(s.at(3 * mm).delta_r() - ref.at(3 * mm).delta_r()) > 0.01 * mm);
 }
 
-TEST_CASE("solved roll: both wheels touch at one axle height; none and solved agree at y = 0", "[wheelset][roll]") {
+TEST_CASE("solved roll: both wheels touch at one axle height, none and solved agree at y = 0", "[wheelset][roll]") {
   const Profile w = mh::make_standard_profile("EN15302-wheel-A");
   const Profile r = mh::make_standard_profile("EN15302-rail-A");
   mh::WheelsetOptions o;
