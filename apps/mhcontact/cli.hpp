@@ -33,5 +33,6 @@ void add_diff_command(CLI::App& app, CliContext& ctx);               // diff
 void add_geometry_command(CLI::App& app, CliContext& ctx);           // geometry
 void add_run_command(CLI::App& app, CliContext& ctx);                // run
 void add_merge_command(CLI::App& app, CliContext& ctx);              // merge
+void add_wheelset_command(CLI::App& app, CliContext& ctx);           // wheelset
 
 }  // namespace mh

@@ -22,7 +22,8 @@ bool is_mhcontact_output_name(const std::string& name) {
   static const char* const kNames[] = {"cases.csv", "ellipses.csv", "results.json", "pressure.csv", "profiles.csv",
                                        "pairs.csv", "shard.json", "run.json", "caf.csv", "geometry.json",
                                        "geometry.csv", "patches.csv", "pair_profiles.csv", "pair_caf.csv",
-                                       "pair_ellipses.csv"};
+                                       "pair_ellipses.csv", "wheelset.csv", "conicity.csv", "summary.json",
+                                       "fleet.csv", "wheelset_delta_r.png", "wheelset_conicity.png", "wheelset_fleet.png"};
   for (const char* n : kNames)
     if (name == n) return true;
   if (name.find(".tmp.") != std::string::npos) return true;  // an OutputFile temporary left by a hard kill

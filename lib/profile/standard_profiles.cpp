@@ -159,8 +159,10 @@ struct Definition {
   std::string name;
   ProfileKind kind = ProfileKind::Unknown;
   std::vector<Section> sections;  ///< ascending in y, contiguous
-  double gauge_flank_end = -kInf; ///< rails: y [mm] where the gauge flank meets R13 (−yt)
-  double flank_n = 0;             ///< rails: flank 1 : n to the vertical
+  double gauge_flank_end = -kInf; ///< rails: y [mm] where the gauge flank meets the last arc (−yt)
+  double flank_n = 0;             ///< rails: flank 1 : n to the vertical (0: no flank)
+  /// Defined already canted (EN 15302 rail A): no further inclination may be applied.
+  bool canted = false;
 };
 
 Section poly(char label, double y0, double y1, std::vector<double> c) {
@@ -223,38 +225,56 @@ Definition s1002() {
 }
 
 RailHeadDefinition rail_definition_mm(const std::string& name) {
+  // EN 13674-1 heads (profiles.md "Rail 60E1"; rails-en13674.md for 60E2 and 49E1: the
+  // EN 13674-1:2017 profiles as transcribed in rohrbecka/EN13674, P60E2.swift, P49E1.swift).
+  // Junctions are given as |y| = w/2 of the published junction widths w.
   RailHeadDefinition d;
-  d.R1 = 300, d.R2 = 80, d.R3 = 13, d.flank_n = 20, d.depth = 20;
-  if (name == "60E1") d.y12 = 10.228, d.y23 = 26.0265;      // EN 13674-1 (profiles.md)
-  else if (name == "54E1") d.y12 = 10.012, d.y23 = 24.8635; // EN 13674-1 (profiles.md)
+  d.flank_n = 20, d.depth = 20;
+  if (name == "60E1") d.R = {300, 80, 13}, d.y_junction = {10.228, 26.0265};
+  else if (name == "54E1") d.R = {300, 80, 13}, d.y_junction = {10.012, 24.8635};
+  else if (name == "60E2") d.R = {200, 70, 16, 8}, d.y_junction = {23.778 / 2, 48.913 / 2, 70.774 / 2};
+  else if (name == "49E1") d.R = {300, 80, 13}, d.y_junction = {15.267 / 2, 46.835 / 2}, d.flank_n = 17.2;
   else throw std::logic_error("rail_definition_mm: " + name);
   return d;
 }
 
 /// The construction is homogeneous in length: the same code serves metres and millimetres.
+/// Arc 0 is centred on (0, −R0) through the crown top; at each junction the next centre lies on
+/// the current radius through the junction, R_k − R_{k+1} from the current centre (internal
+/// tangency); the last arc ends where its tangent is the flank, 1 : flank_n to the vertical.
+/// (The operations are those of the former three-arc construction, in the same order, so the
+/// 60E1 and 54E1 nodes are bit for bit what they were.)
 RailHeadConstruction construct(const RailHeadDefinition& d) {
+  if (d.R.empty() || d.y_junction.size() + 1 != d.R.size())
+    throw std::logic_error("construct_rail_head: need one junction fewer than radii");
   RailHeadConstruction c;
-  // R1: centre (0, −R1) through the crown top (0, 0).
-  c.z12 = -d.R1 + std::sqrt(d.R1 * d.R1 - d.y12 * d.y12);
-  // Internal tangency at y12: the R2 centre lies on the R1 radius through the junction,
-  // R1 − R2 from the R1 centre.
-  c.yc2 = (d.R1 - d.R2) * d.y12 / d.R1;
-  c.zc2 = -d.R1 + (d.R1 - d.R2) * (c.z12 + d.R1) / d.R1;
-  const double u2 = d.y23 - c.yc2;
-  c.z23 = c.zc2 + std::sqrt(d.R2 * d.R2 - u2 * u2);
-  c.yc3 = c.yc2 + (d.R2 - d.R3) * u2 / d.R2;
-  c.zc3 = c.zc2 + (d.R2 - d.R3) * (c.z23 - c.zc2) / d.R2;
-  // The flank (direction (1, −n) on the field side) touches R3 where R3's outward normal is
-  // (n, 1)/√(1 + n²).
+  RailArc a;
+  a.R = d.R[0], a.yc = 0, a.zc = -d.R[0], a.y0 = 0, a.z0 = 0;
+  for (std::size_t k = 0; k + 1 < d.R.size(); ++k) {
+    const double u = d.y_junction[k] - a.yc;
+    a.y1 = d.y_junction[k];
+    a.z1 = a.zc + std::sqrt(a.R * a.R - u * u);
+    c.arcs.push_back(a);
+    RailArc b;
+    b.R = d.R[k + 1];
+    b.yc = a.yc + (a.R - b.R) * u / a.R;
+    b.zc = a.zc + (a.R - b.R) * (a.z1 - a.zc) / a.R;
+    b.y0 = a.y1, b.z0 = a.z1;
+    a = b;
+  }
+  // The flank (direction (1, −n) on the field side) touches the last arc where its outward
+  // normal is (n, 1)/√(1 + n²).
   const double h = std::sqrt(1 + d.flank_n * d.flank_n);
-  c.yt = c.yc3 + d.R3 * d.flank_n / h;
-  c.zt = c.zc3 + d.R3 / h;
+  a.y1 = a.yc + a.R * d.flank_n / h;
+  a.z1 = a.zc + a.R / h;
+  c.arcs.push_back(a);
+  c.yt = a.y1, c.zt = a.z1;
   c.z_end = -d.depth;
   c.y_end = c.yt + (c.zt - c.z_end) / d.flank_n;
   return c;
 }
 
-/// Rail head sections [mm], gauge flank to field flank.
+/// Rail head sections [mm], gauge flank to field flank; arcs labelled '1', '2', ... from the crown.
 Definition rail(const std::string& name) {
   const RailHeadDefinition r = rail_definition_mm(name);
   const RailHeadConstruction c = construct(r);
@@ -263,15 +283,62 @@ Definition rail(const std::string& name) {
   d.kind = ProfileKind::Rail;
   d.flank_n = r.flank_n;
   d.gauge_flank_end = -c.yt;
+  const std::size_t n = c.arcs.size();
+  auto label = [](std::size_t k) { return static_cast<char>('1' + k); };
   d.sections.push_back(line('f', -c.y_end, -c.yt, -c.yt, c.zt, r.flank_n));
-  d.sections.push_back(arc('3', -c.yt, -r.y23, -c.yc3, c.zc3, r.R3, +1));
-  d.sections.push_back(arc('2', -r.y23, -r.y12, -c.yc2, c.zc2, r.R2, +1));
-  d.sections.push_back(arc('1', -r.y12, 0, 0, -r.R1, r.R1, +1));  // split at the crown top
-  d.sections.push_back(arc('1', 0, r.y12, 0, -r.R1, r.R1, +1));
-  d.sections.back().split = true;
-  d.sections.push_back(arc('2', r.y12, r.y23, c.yc2, c.zc2, r.R2, +1));
-  d.sections.push_back(arc('3', r.y23, c.yt, c.yc3, c.zc3, r.R3, +1));
+  for (std::size_t k = n; k-- > 0;) {
+    const RailArc& a = c.arcs[k];
+    d.sections.push_back(arc(label(k), -a.y1, -a.y0, -a.yc, a.zc, a.R, +1));  // the crown arc ends at the top
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const RailArc& a = c.arcs[k];
+    d.sections.push_back(arc(label(k), a.y0, a.y1, a.yc, a.zc, a.R, +1));
+    if (k == 0) d.sections.back().split = true;  // split at the crown top
+  }
   d.sections.push_back(line('f', c.yt, c.y_end, c.yt, c.zt, -r.flank_n));
+  return d;
+}
+
+/// EN 15302:2021 reference wheel A (appendix I, as transcribed in rohrbecka/EN15302; the table
+/// in tests/data/en15302/README.md): r(y) [mm] = increase of radius over the taping line, y
+/// from the taping line, flange at negative y; canonical z = −r(y). Split at the flange tip
+/// (y = −55, the top of the R12 arc) and the taping line (y = 0) to make them nodes.
+Definition en15302_wheel_a() {
+  Definition d;
+  d.name = "EN15302-wheel-A";
+  d.kind = ProfileKind::Wheel;
+  auto& S = d.sections;
+  S.push_back(arc('a', -70, -62.7647, -49.5, -9.51926, 20.5, -1));
+  S.push_back(arc('b', -62.7647, -55, -55, -16.00065, 12, -1));
+  S.push_back(arc('b', -55, -49.6625, -55, -16.00065, 12, -1));
+  S.back().split = true;
+  S.push_back(arc('c', -49.6625, -39.7645, -58.5583, -8.83556, 20, -1));
+  S.push_back(line('d', -39.7645, -38.7372, 0, 93.57685, 2.7475));
+  S.push_back(arc('e', -38.7372, -29.4591, -25.5816, -17.64215, 14, +1));
+  S.push_back(arc('f', -29.4591, -10.8749, -2.6594, -97.16493, 96.76055, +1));
+  S.push_back(arc('g', -10.8749, 0, 18.4173, -344.50806, 345, +1));
+  S.push_back(arc('g', 0, 18.4173, 18.4173, -344.50806, 345, +1));
+  S.back().split = true;
+  S.push_back(line('h', 18.4173, 30, 0, 0.49194, 0));
+  S.push_back(line('i', 30, 60, 0, -1.50804, 0.066666));
+  S.push_back(line('j', 60, 65, 0, -57.50808, 1));
+  return d;
+}
+
+/// EN 15302:2021 reference rail A (appendix I, as transcribed in rohrbecka/EN15302): a UIC60
+/// head ALREADY CANTED 1:20 as defined (it takes no inclination), d(y) [mm] = depth below the
+/// reference, local y towards the field side; canonical z = −d(y).
+Definition en15302_rail_a() {
+  Definition d;
+  d.name = "EN15302-rail-A";
+  d.kind = ProfileKind::Rail;
+  d.canted = true;
+  auto& S = d.sections;
+  S.push_back(arc('1', -32.6340, -23.2401, -19.63949, -15.899044, 13, +1));
+  S.push_back(arc('2', -23.2401, -7.8749, -1.0825, -80.277908, 80, +1));
+  S.push_back(arc('3', -7.8749, 13.0989, 17.5966, -299.48349, 300, +1));
+  S.push_back(arc('4', 13.0989, 28.6709, 14.29829, -79.508225, 80, +1));
+  S.push_back(arc('5', 28.6709, 39.2705, 26.33535, -13.598369, 13, +1));
   return d;
 }
 
@@ -282,7 +349,8 @@ std::string valid_names_text() {
 }
 
 const Definition& definition(const std::string& name) {
-  static const Definition defs[] = {s1002(), rail("60E1"), rail("54E1")};
+  static const Definition defs[] = {s1002(),         rail("60E1"),       rail("54E1"), rail("60E2"),
+                                    rail("49E1"),    en15302_wheel_a(),  en15302_rail_a()};
   for (const auto& d : defs)
     if (d.name == name) return d;
   throw InputError("standard profile", "\"" + name + "\"", "unknown standard profile name",
@@ -309,7 +377,8 @@ const Section& section_at(const Definition& d, double y_mm, int side, double y_m
 }  // namespace
 
 const std::vector<std::string>& standard_profile_names() {
-  static const std::vector<std::string> names = {"S1002", "60E1", "54E1"};
+  static const std::vector<std::string> names = {"S1002", "60E1", "54E1", "60E2", "49E1", "EN15302-wheel-A",
+                                                 "EN15302-rail-A"};
   return names;
 }
 
@@ -324,13 +393,16 @@ Profile make_standard_profile(const std::string& name, Inclination incl, double 
   const bool wheel = d.kind == ProfileKind::Wheel;
   if (wheel && inclination_angle(incl) != 0.0)
     throw InputError("standard profile " + name, to_string(incl),
-                     "a wheel profile has no inclination", "use inclination none for S1002");
+                     "a wheel profile has no inclination", "use inclination none for " + name);
+  if (d.canted && inclination_angle(incl) != 0.0)
+    throw InputError("standard profile " + name, to_string(incl), "this rail is defined already canted (1:20)",
+                     "use inclination none (or as-is): it is never applied twice");
   const double angle = inclination_angle(incl);
 
   // A flank that the rotation makes vertical is not a function z(y): leave it out (1:20, gauge
   // side; the field flank turns away from the vertical).
   const bool drop_gauge_flank =
-      !wheel && std::atan(d.flank_n) + angle >= units::pi / 2 - kVerticalFlankMargin;
+      !wheel && d.flank_n > 0 && std::atan(d.flank_n) + angle >= units::pi / 2 - kVerticalFlankMargin;
 
   const double step_mm = step / units::mm;
   std::vector<double> ys, zs;
@@ -348,7 +420,7 @@ Profile make_standard_profile(const std::string& name, Inclination incl, double 
   if (angle != 0) p.source += " inclined " + to_string(incl);
   if (drop_gauge_flank)
     p.warnings.push_back(std::string("gauge-side flank left out: it is vertical at ") + to_string(incl) +
-                         "; the profile ends at the R13/flank tangency point");
+                         "; the profile ends at the R" + format_number(d.sections[1].R) + "/flank tangency point");
   p.y.resize(ys.size());
   p.z.resize(zs.size());
   for (std::size_t i = 0; i < ys.size(); ++i) {
@@ -390,12 +462,13 @@ double standard_profile_radius(const std::string& name, double y, int side) {
 }
 
 RailHeadDefinition rail_head_definition(const std::string& name) {
-  if (standard_profile_kind(name) != ProfileKind::Rail)
-    throw InputError("standard profile", "\"" + name + "\"", "not a rail",
-                     "rails: 60E1, 54E1");
+  if (standard_profile_kind(name) != ProfileKind::Rail || definition(name).canted)
+    throw InputError("standard profile", "\"" + name + "\"", "not a rail head built from tangent arcs",
+                     "rail heads: 60E1, 54E1, 60E2, 49E1");
   RailHeadDefinition d = rail_definition_mm(name);
-  d.R1 *= units::mm, d.R2 *= units::mm, d.R3 *= units::mm;
-  d.y12 *= units::mm, d.y23 *= units::mm, d.depth *= units::mm;
+  for (double& R : d.R) R *= units::mm;
+  for (double& y : d.y_junction) y *= units::mm;
+  d.depth *= units::mm;
   return d;
 }
 

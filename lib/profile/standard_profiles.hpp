@@ -2,7 +2,13 @@
 // Standard wheel and rail profiles generated from their definitions (profiles.md):
 //   "S1002" wheel, EN 13715, piecewise sections A–H;
 //   "60E1"  rail,  EN 13674-1 (UIC 60) head: R300, R80, R13, 1:20 flank;
-//   "54E1"  rail,  EN 13674-1 (UIC 54) head: R300, R80, R13, 1:20 flank.
+//   "54E1"  rail,  EN 13674-1 (UIC 54) head: R300, R80, R13, 1:20 flank;
+//   "60E2"  rail,  EN 13674-1:2017 head: R200, R70, R16, R8, 1:20 flank;
+//   "49E1"  rail,  EN 13674-1:2017 head: R300, R80, R13, 1:17.2 flank
+//           (60E2 and 49E1: EN 13674-1:2017, transcribed from one public source, rohrbecka/EN13674);
+//   "EN15302-wheel-A", "EN15302-rail-A": the EN 15302:2021 reference wheel A and rail A
+//           (appendix I, as transcribed in rohrbecka/EN15302; rail A is defined canted 1:20 and
+//           takes no further inclination) for the equivalent-conicity reference tables.
 // Results are mh::Profile objects in the canonical frame of profile.hpp (y to the field side,
 // z up, metres):
 //   wheel: y = S (lateral coordinate from the taping line, flange at negative y), z = −F(S);
@@ -27,22 +33,24 @@
 
 namespace mh {
 
-/// The names make_standard_profile accepts: "S1002", "60E1", "54E1".
+/// The names make_standard_profile accepts: "S1002", "60E1", "54E1", "60E2", "49E1",
+/// "EN15302-wheel-A", "EN15302-rail-A".
 const std::vector<std::string>& standard_profile_names();
 
-/// Is `name` a wheel ("S1002") or a rail ("60E1", "54E1")? Throws InputError for unknown names.
+/// Is `name` a wheel ("S1002", "EN15302-wheel-A") or a rail? Throws InputError for unknown names.
 ProfileKind standard_profile_kind(const std::string& name);
 
 /// Generate a standard profile.
-///   name: "S1002", "60E1" or "54E1" (InputError listing the valid names otherwise);
+///   name: one of standard_profile_names() (InputError listing the valid names otherwise);
 ///   incl: rails: None (vertical, also for AsIs), In40 or In20, applied about the crown top with
-///         rotate_towards_track_centre (profile.hpp); wheels: None or AsIs only (InputError for
-///         1:40 / 1:20: a wheel has no inclination);
+///         rotate_towards_track_centre (profile.hpp); wheels and the already canted EN15302-rail-A:
+///         None or AsIs only (InputError otherwise: never applied twice);
 ///   step: [m] largest distance between nodes along the profile (default 0.1 mm; allowed
 ///         1 µm … 5 mm, InputError otherwise).
 /// At 1:20 the gauge-side 1:20 flank becomes exactly vertical and is not a function z(y): the
-/// generated rail then ends at the R13/flank tangency point on the gauge side (vertical tangent
-/// there), and `warnings` says so. The field-side flank is kept in every case.
+/// generated rail then ends at the last arc's (R13, 60E2: R8) flank tangency point on the gauge
+/// side (vertical tangent there), and `warnings` says so. The field-side flank is kept in every
+/// case. (49E1's 1:17.2 flank stays 0.47° short of vertical at 1:20 and is kept.)
 Profile make_standard_profile(const std::string& name, Inclination incl = Inclination::None,
                               double step = 0.1e-3);
 
@@ -51,8 +59,9 @@ Profile make_standard_profile(const std::string& name, Inclination incl = Inclin
 /// generated profile.
 std::vector<double> standard_profile_breakpoints(const std::string& name);
 
-/// y range [m] of the definition (before inclination): S1002 −70 … +60 mm; rails to 20 mm below
-/// the crown top on both flanks.
+/// y range [m] of the definition (before inclination): S1002 −70 … +60 mm; EN15302-wheel-A
+/// −70 … +65 mm; rails to 20 mm below the crown top on both flanks; EN15302-rail-A
+/// −32.634 … 39.2705 mm (its published range).
 std::pair<double, double> standard_profile_range(const std::string& name);
 
 /// The definition's height z(y) [m] in the canonical frame (before inclination) and, if `dz` is
@@ -70,34 +79,38 @@ double standard_profile_z(const std::string& name, double y, double* dz = nullpt
 /// At a breakpoint: the section on the right (side = +1) or on the left (side = −1).
 double standard_profile_radius(const std::string& name, double y, int side = +1);
 
-/// A rail head built from its definition (profiles.md "Rail 60E1"): arcs R1 (centre (0, −R1),
-/// through the crown top) out to |y| = y12, R2 out to |y| = y23, each tangent to the previous one
-/// (internal tangency: the centre lies on the previous arc's normal at the junction), then R3 until
-/// its tangent is the flank, inclined 1 : flank_n to the vertical, which runs down to `depth`
-/// below the crown top. All lengths [m].
+/// A rail head built from its definition (rails-en13674.md "Construction"; docs/profiles.md):
+/// upright, origin at the crown top, a chain of circular arcs, each tangent to the previous one
+/// (internal tangency: the new centre lies on the previous radius through the junction, at
+/// R_k − R_{k+1} from the previous centre). Arc 0 is centred on (0, −R[0]); arc k ends at
+/// |y| = y_junction[k]; the last arc ends where its tangent reaches the flank, inclined
+/// 1 : flank_n to the vertical, which runs down to `depth` below the crown top (the fillet and the
+/// under-head line lie lower, 35–40 mm below the top, out of reach of a wheel). Lengths [m].
 struct RailHeadDefinition {
-  double R1 = 0.300;         ///< [m] crown radius
-  double R2 = 0.080;         ///< [m] second radius
-  double R3 = 0.013;         ///< [m] gauge corner radius
-  double y12 = 0;            ///< [m] |y| of the R1/R2 junction (60E1: 10.228 mm, 54E1: 10.012 mm)
-  double y23 = 0;            ///< [m] |y| of the R2/R3 junction (60E1: 26.0265 mm, 54E1: 24.8635 mm)
-  double flank_n = 20.0;     ///< flank inclination 1 : flank_n to the vertical (1:20)
-  double depth = 0.020;      ///< [m] the flank ends this far below the crown top (default 20 mm)
+  std::vector<double> R;           ///< [m] radii from the crown outwards (60E1: 300, 80, 13 mm)
+  std::vector<double> y_junction;  ///< [m] |y| of the junction of arc k and k+1 (60E1: 10.228, 26.0265 mm)
+  double flank_n = 20.0;           ///< flank inclination 1 : flank_n to the vertical (1:20; 49E1 1:17.2)
+  double depth = 0.020;            ///< [m] the flank ends this far below the crown top (default 20 mm)
 };
 
-/// The derived construction, field side (the gauge side is its mirror y → −y). Lengths [m].
+/// One arc of the construction, field side (the gauge side is its mirror y → −y). Lengths [m].
+struct RailArc {
+  double R = 0;             ///< [m] radius
+  double yc = 0, zc = 0;    ///< [m] centre
+  double y0 = 0, z0 = 0;    ///< [m] start (the crown top or the previous junction)
+  double y1 = 0, z1 = 0;    ///< [m] end (the next junction or the flank tangency point)
+};
+
+/// The derived construction, field side. Lengths [m].
 struct RailHeadConstruction {
-  double z12 = 0;                ///< [m] height of the R1/R2 junction (at y12)
-  double yc2 = 0, zc2 = 0;       ///< [m] centre of R2 (60E1: 7.5005, −80.1279 mm)
-  double z23 = 0;                ///< [m] height of the R2/R3 junction (at y23)
-  double yc3 = 0, zc3 = 0;       ///< [m] centre of R3 (60E1: 23.0160, −14.9492 mm)
-  double yt = 0, zt = 0;         ///< [m] R3/flank tangency point (60E1: about 36.000, −14.300 mm)
+  std::vector<RailArc> arcs;     ///< from the crown outwards (60E1: centres (0, −300), (7.5005, −80.1279), (23.0160, −14.9491) mm)
+  double yt = 0, zt = 0;         ///< [m] last arc/flank tangency point (60E1: about 36.000, −14.300 mm)
   double y_end = 0, z_end = 0;   ///< [m] end of the flank, `depth` below the crown top
 };
 
-/// The definitions of "60E1" and "54E1" (InputError for other names).
+/// The definitions of "60E1", "54E1", "60E2", "49E1" (InputError for other names).
 RailHeadDefinition rail_head_definition(const std::string& name);
-/// Centres and tangency points from the definition.
+/// Centres, junction points and the tangency point from the definition.
 RailHeadConstruction construct_rail_head(const RailHeadDefinition& d);
 
 }  // namespace mh

@@ -40,9 +40,24 @@ check "S1002 .prw exit 0" test $? -eq 0
 "$BIN" profile info S1002.prw >info.txt 2>&1
 check "S1002 .prw flange tip at (-55, -28) mm" grep -qx "flange_tip_mm: y -55 z -28" info.txt
 
+# 60E2 and 49E1 (EN 13674-1:2017) work like 60E1: crown top at the origin; the 60E2 gauge flank
+# turns vertical at 1:20 (left out, the warning names its last arc R8), 49E1's 1:17.2 does not.
+"$BIN" profile generate 60E2 -o 60E2.csv >out.txt 2>err.txt
+check "60E2 exit 0" test $? -eq 0
+check "60E2 crown top" grep -qx "0,0" 60E2.csv
+check "60E2 ends 20 mm below the crown" awk -F, 'END { exit !($2 + 20 < 1e-9 && $2 + 20 > -1e-9) }' 60E2.csv
+"$BIN" profile generate 60E2 --inclination 1:20 -o 60E2_1-20.csv >out.txt 2>err.txt
+check "60E2 1:20 warns about the vertical gauge flank" grep -qx "warning: 60E2: gauge-side flank left out: it is vertical at 1:20; the profile ends at the R8/flank tangency point" err.txt
+"$BIN" profile generate 49E1 --inclination 1:20 -o 49E1_1-20.csv >out.txt 2>err.txt
+check "49E1 1:20 exit 0" test $? -eq 0
+check "49E1 1:20 keeps its 1:17.2 flank (no warning)" test ! -s err.txt
+"$BIN" profile info 49E1_1-20.csv >info.txt 2>&1
+check "49E1 1:20 reads back as a rail canted 1:20" grep -q "^cant: 2.86[0-9] deg (1:20" info.txt
+
 # --- the shipped files are exactly what the generator writes ---------------------------------
 for spec in "S1002:none:S1002.csv" "60E1:none:60E1.csv" "60E1:1:40:60E1_1-40.csv" \
-            "54E1:none:54E1.csv" "54E1:1:40:54E1_1-40.csv"; do
+            "54E1:none:54E1.csv" "54E1:1:40:54E1_1-40.csv" \
+            "EN15302-wheel-A:none:EN15302_wheel_A.dat" "EN15302-rail-A:none:EN15302_rail_A.dat"; do
   name="${spec%%:*}"; rest="${spec#*:}"; file="${rest##*:}"; incl="${rest%:*}"
   "$BIN" profile generate "$name" --inclination "$incl" -o "fresh_$file" >/dev/null 2>&1
   check "generate $name $incl" test $? -eq 0
@@ -62,8 +77,9 @@ must_fail() {  # must_fail CODE MESSAGE ARGS...
   grep -qF -- "$msg" err.txt || { echo "FAIL: $* -> message lacks '$msg':"; cat err.txt; fail=1; }
   if [ -e bad.csv ] || [ -e bad.prw ] || [ -e bad.txt ] || [ -e bad.xlsx ]; then echo "FAIL: $* wrote a file"; fail=1; fi
 }
-must_fail 2 'mhcontact: error: standard profile: value "UIC60": unknown standard profile name (valid names: S1002, 60E1, 54E1)' profile generate UIC60 -o bad.csv
+must_fail 2 'mhcontact: error: standard profile: value "UIC60": unknown standard profile name (valid names: S1002, 60E1, 54E1, 60E2, 49E1, EN15302-wheel-A, EN15302-rail-A)' profile generate UIC60 -o bad.csv
 must_fail 2 "a wheel profile has no inclination" profile generate S1002 --inclination 1:40 -o bad.csv
+must_fail 2 "this rail is defined already canted (1:20)" profile generate EN15302-rail-A --inclination 1:20 -o bad.csv
 must_fail 2 "a rail cannot be written as a SIMPACK wheel (.prw)" profile generate 60E1 -o bad.prw
 must_fail 2 "step must lie in 0.001 … 5 mm" profile generate 60E1 --step 10 -o bad.csv
 must_fail 2 "unknown output profile format" profile generate 60E1 -o bad.xlsx

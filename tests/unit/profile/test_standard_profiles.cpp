@@ -234,10 +234,11 @@ TEST_CASE("60E1 and 54E1: junctions tangent, derived centres, width at the gauge
   for (const auto& r : rows) {
     CAPTURE(r.name, r.source);
     const mh::RailHeadConstruction c = mh::construct_rail_head(mh::rail_head_definition(r.name));
-    CHECK(std::abs(c.yc2 / mm - r.yc2) <= 1e-3);
-    CHECK(std::abs(c.zc2 / mm - r.zc2) <= 1e-3);
-    CHECK(std::abs(c.yc3 / mm - r.yc3) <= 1e-3);
-    CHECK(std::abs(c.zc3 / mm - r.zc3) <= 1e-3);
+    REQUIRE(c.arcs.size() == 3);
+    CHECK(std::abs(c.arcs[1].yc / mm - r.yc2) <= 1e-3);
+    CHECK(std::abs(c.arcs[1].zc / mm - r.zc2) <= 1e-3);
+    CHECK(std::abs(c.arcs[2].yc / mm - r.yc3) <= 1e-3);
+    CHECK(std::abs(c.arcs[2].zc / mm - r.zc3) <= 1e-3);
     CHECK(std::abs(c.yt / mm - r.yt) <= 1e-3);
     CHECK(std::abs(c.zt / mm - r.zt) <= 1e-3);
     CHECK(c.z_end == Approx(-20 * mm).margin(1e-15));
@@ -264,7 +265,7 @@ TEST_CASE("60E1 and 54E1: junctions tangent, derived centres, width at the gauge
     REQUIRE(L.y_top == 0.0);
     REQUIRE(L.z_top == 0.0);
     // Width 14 mm below the top: on the definition (bisection) and on the generated nodes.
-    const double y14 = solve_y(r.name, -14 * mm, c.yc3, c.yt);
+    const double y14 = solve_y(r.name, -14 * mm, c.arcs[2].yc, c.yt);
     CHECK(std::abs(y14 / mm - r.half_width14) <= 0.01);
     REQUIRE(L.has_gauge);
     CHECK(std::abs(-L.y_gauge / mm - r.half_width14) <= 0.01);
@@ -309,7 +310,7 @@ TEST_CASE("unknown names and wheel inclinations are input errors", "[stdprof]") 
   } catch (const mh::InputError& e) {
     const std::string m = e.what();
     CHECK(m.find("UIC60") != std::string::npos);
-    CHECK(m.find("S1002, 60E1, 54E1") != std::string::npos);  // the valid names are listed
+    CHECK(m.find("S1002, 60E1, 54E1, 60E2, 49E1, EN15302-wheel-A, EN15302-rail-A") != std::string::npos);  // the valid names are listed
   }
   REQUIRE_THROWS_AS(mh::standard_profile_breakpoints("s1002"), mh::InputError);  // case matters
   REQUIRE_THROWS_AS(mh::make_standard_profile("S1002", Inclination::In40), mh::InputError);
@@ -358,8 +359,8 @@ TEST_CASE("inclination: crown slope +1/40 and +1/20, none leaves the profile unc
     // Tolerance 0.05 mm: half the node spacing.
     const double a = mh::inclination_angle(row.incl);
     const auto k = mh::construct_rail_head(mh::rail_head_definition("60E1"));
-    const double yc = row.incl == Inclination::In40 ? 0.0 : k.yc2;
-    const double zc = row.incl == Inclination::In40 ? -0.300 : k.zc2;
+    const double yc = row.incl == Inclination::In40 ? 0.0 : k.arcs[1].yc;
+    const double zc = row.incl == Inclination::In40 ? -0.300 : k.arcs[1].zc;
     CHECK(mh::rail_landmarks(q).y_top == Approx(std::cos(a) * yc - std::sin(a) * zc).margin(0.05 * mm));
     for (std::size_t i = 1; i < q.size(); ++i) REQUIRE(q.y[i] > q.y[i - 1]);
   }

@@ -1,0 +1,120 @@
+// Equivalent conicity by the EN 15302 integral method; see conicity.hpp.
+#include "geometry/conicity.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/math/tools/roots.hpp>
+
+#include "core/units.hpp"
+
+namespace mh {
+
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr std::uintmax_t kMaxIterations = 200;
+}  // namespace
+
+double en15302_window(double t) { return std::min(0.05, 0.5 * t); }
+
+EquivalentConicity::EquivalentConicity(std::vector<double> y, std::vector<double> dr, const ConicityOptions& opt)
+    : y_(std::move(y)), dr_(std::move(dr)), y0_(kNaN), opt_(opt) {
+  if (y_.size() < 3 || y_.size() != dr_.size()) throw std::invalid_argument("EquivalentConicity: need >= 3 points (y, delta_r)");
+  for (std::size_t k = 1; k < y_.size(); ++k)
+    if (!(y_[k] > y_[k - 1])) throw std::invalid_argument("EquivalentConicity: y must increase strictly");
+  for (double v : dr_)
+    if (!std::isfinite(v)) throw std::invalid_argument("EquivalentConicity: delta_r must be finite");
+  // S at the table points (trapezoids: exact for Δr linear between points), S(0) = 0 after the
+  // shift below (only differences of S enter I).
+  S_.assign(y_.size(), 0.0);
+  for (std::size_t k = 1; k < y_.size(); ++k) S_[k] = S_[k - 1] + 0.5 * (dr_[k] + dr_[k - 1]) * (y_[k] - y_[k - 1]);
+  if (y_.front() <= 0 && y_.back() >= 0) {
+    const double s0 = S(0.0);
+    for (double& s : S_) s -= s0;
+  }
+  // Equilibrium: the sign changes of Δr from − (or 0) to +; the minimum of S nearest y = 0.
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 1; k < y_.size(); ++k) {
+    if (!(dr_[k - 1] <= 0 && dr_[k] > 0)) continue;
+    const double yc = dr_[k - 1] == 0 ? y_[k - 1] : y_[k - 1] + (y_[k] - y_[k - 1]) * (-dr_[k - 1]) / (dr_[k] - dr_[k - 1]);
+    if (std::fabs(yc) < std::fabs(best)) best = yc;
+  }
+  if (std::isfinite(best)) y0_ = best;
+}
+
+std::size_t EquivalentConicity::interval(double y) const {
+  const auto it = std::upper_bound(y_.begin(), y_.end(), y);
+  std::size_t k = static_cast<std::size_t>(it - y_.begin());
+  return std::clamp<std::size_t>(k, 1, y_.size() - 1) - 1;  // y in [y_k, y_k+1]
+}
+
+double EquivalentConicity::S(double y) const {
+  const std::size_t k = interval(y);
+  const double h = y_[k + 1] - y_[k], t = y - y_[k];
+  const double slope = (dr_[k + 1] - dr_[k]) / h;
+  return S_[k] + dr_[k] * t + 0.5 * slope * t * t;
+}
+
+double EquivalentConicity::S_between(double a, double b) const {
+  const std::size_t k = interval(a);
+  if (interval(b) == k) {
+    // ∫_a^b of the linear Δr: (b − a) times Δr at the midpoint.
+    const double slope = (dr_[k + 1] - dr_[k]) / (y_[k + 1] - y_[k]);
+    return (b - a) * (dr_[k] + slope * (0.5 * (a + b) - y_[k]));
+  }
+  return S(b) - S(a);
+}
+
+ConicityResult EquivalentConicity::at(double A) const {
+  ConicityResult r;
+  r.amplitude = A;
+  r.tan_gamma_e = r.y1 = r.y2 = r.I = kNaN;
+  if (std::isnan(y0_)) {
+    r.status = "no_centre";
+    return r;
+  }
+  // y2 ∈ [y0, y0 + 2ŷ] (then y1 = y2 − 2ŷ ∈ [y0 − 2ŷ, y0]), inside the table.
+  const double l = std::max(y0_, y_.front() + 2 * A), h = std::min(y0_ + 2 * A, y_.back());
+  if (!(l <= h)) {
+    r.status = "out_of_range";
+    return r;
+  }
+  auto F = [&](double y2) { return S(y2) - S(y2 - 2 * A); };
+  const double Fl = F(l), Fh = F(h);
+  double y2;
+  if (Fl == 0) y2 = l;
+  else if (Fh == 0) y2 = h;
+  else if (Fl < 0 && Fh > 0) {
+    std::uintmax_t it = kMaxIterations;
+    const double tol = opt_.turning_point_tolerance;
+    const auto s = boost::math::tools::toms748_solve(F, l, h, Fl, Fh, [tol](double a, double b) { return std::fabs(b - a) <= tol; }, it);
+    y2 = 0.5 * (s.first + s.second);
+  } else {
+    r.status = "out_of_range";
+    return r;
+  }
+  const double y1 = y2 - 2 * A, m = 0.5 * (y1 + y2);
+  r.y1 = y1;
+  r.y2 = y2;
+  // I = ∫ ŷ cos θ / √(S(y2) − S(m + ŷ sin θ)) dθ over [−π/2, π/2].
+  auto g = [&](double th) {
+    // S(y2) − S(y), with S(y1) = S(y2) (the turning points' definition): from the nearer
+    // turning point, so that the difference does not cancel next to it.
+    const double y = std::clamp(m + A * std::sin(th), y1, y2);
+    const double d = y >= m ? S_between(y, y2) : -S_between(y1, y);
+    const double c = std::cos(th);
+    if (!(d > 0)) return 0.0;  // only at θ = ±π/2 to rounding, where the limit is finite and the weight 0
+    return A * c / std::sqrt(d);
+  };
+  const double half = units::pi / 2;
+  const double I = boost::math::quadrature::gauss_kronrod<double, 31>::integrate(g, -half, half, opt_.quadrature_depth,
+                                                                                 opt_.quadrature_tolerance);
+  r.I = I;
+  r.tan_gamma_e = units::pi * units::pi / (I * I);
+  return r;
+}
+
+}  // namespace mh

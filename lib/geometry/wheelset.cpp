@@ -1,0 +1,285 @@
+// Rigid contact geometry of a wheelset on a track; see wheelset.hpp and docs/wheelset.md.
+#include "geometry/wheelset.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <thread>
+#include <utility>
+
+#include <boost/math/tools/minima.hpp>
+#include <boost/math/tools/roots.hpp>
+
+#include "core/errors.hpp"
+#include "core/numfmt.hpp"
+
+namespace mh {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+/// Iteration cap of TOMS 748 (contact point: a bracket of one scan step to machine precision in
+/// ~10 iterations; roll: ~15). Reaching it is reported, not hidden (WheelsetState::converged).
+constexpr std::uintmax_t kMaxIterations = 100;
+/// Local minima of the scanned gap refined: those within two_point_gap plus this of the lowest
+/// sample (the scan's own error at 0.05 mm spacing is below 1e-7 m on an R8 arc: h²/(8R)).
+constexpr double kCandidateMargin = 10e-6;  // [m]
+
+std::string mm_text(double v) { return format_number(v * 1e3); }
+
+}  // namespace
+
+WheelsetRoll parse_wheelset_roll(const std::string& s) {
+  if (s == "none") return WheelsetRoll::None;
+  if (s == "solved") return WheelsetRoll::Solved;
+  throw std::invalid_argument("roll must be \"none\" or \"solved\"");
+}
+
+const char* to_string(WheelsetRoll r) { return r == WheelsetRoll::None ? "none" : "solved"; }
+
+bool WheelsetOptions::valid(std::string* why) const {
+  auto bad = [&](const std::string& field, double v, const std::string& rule) {
+    if (why) *why = field + " = " + format_number(v) + ": " + rule;
+    return false;
+  };
+  if (!(scan_step > 0 && scan_step <= 1e-3)) return bad("scan_step", scan_step, "must lie in (0, 1 mm]");
+  if (!(two_point_gap >= 0 && two_point_gap < 1e-3)) return bad("two_point_gap", two_point_gap, "must lie in [0, 1 mm)");
+  if (!(jump_distance > 0)) return bad("jump_distance", jump_distance, "must be > 0");
+  if (!(max_roll > 0 && max_roll < 0.5)) return bad("max_roll", max_roll, "must lie in (0, 0.5 rad)");
+  if (!(roll_tolerance > 0 && roll_tolerance < 1e-3)) return bad("roll_tolerance", roll_tolerance, "must lie in (0, 1e-3 rad)");
+  return true;
+}
+
+double WheelsetState::delta_tan_gamma() const { return std::tan(right.gamma) - std::tan(left.gamma); }
+
+double Wheelset::Side::zr_fast(double yr) const {
+  const double t = (yr - yr_min) / rail_step;
+  const std::size_t n = zr_table.size();
+  if (t <= 0) return zr_table[0];
+  const std::size_t i = std::min(static_cast<std::size_t>(t), n - 2);
+  const double f = t - static_cast<double>(i);
+  return zr_table[i] + f * (zr_table[i + 1] - zr_table[i]);
+}
+
+Wheelset::Wheelset(const Profile& wheel_left, const Profile& wheel_right, const Profile& rail_left,
+                   const Profile& rail_right, const WheelsetPlacement& P, const WheelsetOptions& opt)
+    : opt_(opt) {
+  std::string why;
+  if (!opt.valid(&why)) throw InputError("wheelset options", "", why);
+  const Profile* wheels[2] = {&wheel_left, &wheel_right};
+  const Profile* rails[2] = {&rail_left, &rail_right};
+  std::shared_ptr<const ProfileCurve> wc[2], rc[2];
+  for (int k = 0; k < 2; ++k) {
+    // One profile for both sides (mirrored) is smoothed once.
+    wc[k] = k == 1 && wheels[1] == wheels[0] ? wc[0] : std::make_shared<const ProfileCurve>(*wheels[k], opt.curve);
+    rc[k] = k == 1 && rails[1] == rails[0] ? rc[0] : std::make_shared<const ProfileCurve>(*rails[k], opt.curve);
+  }
+  double gauge_y[2] = {kNaN, kNaN};
+  for (int k = 0; k < 2; ++k) {
+    Side& S = side_[k];
+    S.W = wc[k];
+    S.R = rc[k];
+    S.s = k == 0 ? -1.0 : 1.0;
+    S.R0 = k == 0 ? P.nominal_radius_left : P.nominal_radius_right;
+    set_wheel(S, wc[k], *wheels[k]);
+    S.a = P.flange_back_distance / 2 - P.flange_back_position;
+    const RailLandmarks L = rail_landmarks(*rails[k], P.gauge_height);
+    if (L.has_gauge) gauge_y[k] = L.y_gauge;
+    if (P.rails == WheelsetPlacement::Rails::Gauge) {
+      if (!L.has_gauge)
+        throw InputError(rails[k]->source, "", "no gauge point found " + mm_text(P.gauge_height) +
+                                                   " mm below the top of the rail on its gauge side (negative y)",
+                         "the rail profile must reach that low on the gauge side (check mirror_y); or place the rails "
+                         "absolutely: rails.placement \"absolute\" with rails.origin_mm");
+      S.c = P.gauge / 2 - L.y_gauge;
+    } else {
+      S.c = k == 0 ? P.rail_origin_left : P.rail_origin_right;
+    }
+    a_[k] = S.a;
+    c_[k] = S.c;
+    S.yr_min = S.R->y_min(), S.yr_max = S.R->y_max();
+    S.rail_step = std::min(opt.curve.grid_step, opt.scan_step);
+    const std::size_t nr = static_cast<std::size_t>(std::ceil((S.yr_max - S.yr_min) / S.rail_step)) + 1;
+    S.zr_table.resize(std::max<std::size_t>(nr, 2));
+    for (std::size_t i = 0; i < S.zr_table.size(); ++i)
+      S.zr_table[i] = S.R->z(std::min(S.yr_min + S.rail_step * static_cast<double>(i), S.yr_max));
+  }
+  measured_gauge_ = (c_[0] + gauge_y[0]) + (c_[1] + gauge_y[1]);
+}
+
+void Wheelset::set_wheel(Side& S, std::shared_ptr<const ProfileCurve> W, const Profile& wheel) {
+  S.W = std::move(W);
+  if (!S.W->contains(0.0))
+    throw InputError(wheel.source, "y = " + mm_text(S.W->y_min()) + " … " + mm_text(S.W->y_max()) + " mm",
+                     "the wheel profile does not reach its taping line (y = 0), where the nominal radius is given",
+                     "check the profile's origin (taping line 70 mm from the flange back) and mirror options");
+  S.zw0 = S.W->z(0.0);
+  S.yw_min = S.W->y_min(), S.yw_max = S.W->y_max();
+  const std::size_t nw = static_cast<std::size_t>(std::floor((S.yw_max - S.yw_min) / opt_.scan_step)) + 1;
+  S.zw_scan.resize(nw);
+  for (std::size_t i = 0; i < nw; ++i) S.zw_scan[i] = S.W->z(S.yw_min + opt_.scan_step * static_cast<double>(i));
+}
+
+Wheelset::Wheelset(const Wheelset& track, const Profile& wheel_left, const Profile& wheel_right) : Wheelset(track) {
+  auto wl = std::make_shared<const ProfileCurve>(wheel_left, opt_.curve);
+  auto wr = &wheel_right == &wheel_left ? wl : std::make_shared<const ProfileCurve>(wheel_right, opt_.curve);
+  set_wheel(side_[0], wl, wheel_left);
+  set_wheel(side_[1], wr, wheel_right);
+}
+
+WheelContact Wheelset::contact(const Side& S, double y, double phi, bool* found) const {
+  const double ps = S.s * phi, cs = std::cos(ps), sn = std::sin(ps);
+  const double U0 = S.s * y - S.c;  // rail coordinate of the axle centre's vertical
+  // Gap at wheel coordinate eta, and its derivative, on the smooth profiles.
+  auto gap = [&](double eta, double* dG, double* yr_out) {
+    double dzw = 0;
+    const double zw = S.W->z(eta, &dzw);
+    const double p = S.a + eta, q = -S.R0 + (zw - S.zw0);
+    const double yr = U0 + cs * p - sn * q;
+    double dzr = 0;
+    const double zr = S.R->z(yr, &dzr);
+    if (dG) *dG = (sn + cs * dzw) - dzr * (cs - sn * dzw);
+    if (yr_out) *yr_out = yr;
+    return sn * p + cs * q - zr;
+  };
+  // Scan, over the wheel coordinates that face the rail: y_r = U0 + cos·(a + η) − sin·q with
+  // |q − (−R0)| below 0.1 m (any wheel profile's radius change), bounded by |sin|·0.1 m.
+  const double h = opt_.scan_step;
+  const std::size_t n = S.zw_scan.size();
+  const double slack = std::fabs(sn) * (S.R0 + 0.1) + h;
+  const double e_lo = (S.yr_min - U0 - slack) / cs - S.a, e_hi = (S.yr_max - U0 + slack) / cs - S.a;
+  const double i_lo = std::floor((e_lo - S.yw_min) / h), i_hi = std::ceil((e_hi - S.yw_min) / h);
+  const std::size_t i0 = i_lo <= 0 ? 0 : std::min(n, static_cast<std::size_t>(i_lo));
+  const std::size_t i1 = i_hi < 0 ? 0 : std::min(n, static_cast<std::size_t>(i_hi) + 1);
+  thread_local std::vector<double> G;
+  G.assign(n, kNaN);
+  double gmin = std::numeric_limits<double>::infinity();
+  for (std::size_t i = i0; i < i1; ++i) {
+    const double eta = S.yw_min + h * static_cast<double>(i);
+    const double p = S.a + eta, q = -S.R0 + (S.zw_scan[i] - S.zw0);
+    const double yr = U0 + cs * p - sn * q;
+    if (yr < S.yr_min || yr > S.yr_max) continue;
+    G[i] = sn * p + cs * q - S.zr_fast(yr);
+    gmin = std::min(gmin, G[i]);
+  }
+  *found = std::isfinite(gmin);
+  WheelContact best;
+  if (!*found) return best;
+
+  struct Cand { double eta, G, yr; bool edge; };
+  std::vector<Cand> cands;
+  const double limit = gmin + opt_.two_point_gap + kCandidateMargin;
+  for (std::size_t i = i0; i < i1; ++i) {
+    if (!(G[i] <= limit)) continue;
+    const bool has_l = i > 0 && !std::isnan(G[i - 1]), has_r = i + 1 < n && !std::isnan(G[i + 1]);
+    if ((has_l && G[i - 1] < G[i]) || (has_r && G[i + 1] < G[i])) continue;  // not a local minimum
+    if (has_l && G[i - 1] == G[i]) continue;                                  // a plateau: its first sample only
+    const double eta_i = S.yw_min + h * static_cast<double>(i);
+    Cand c{eta_i, 0, 0, !(has_l && has_r)};
+    if (!c.edge) {
+      // Refine: G'(η) = 0 between the neighbours (TOMS 748), else the minimum of G (Brent).
+      const double lo = eta_i - h, hi = eta_i + h;
+      double dlo = 0, dhi = 0;
+      gap(lo, &dlo, nullptr);
+      gap(hi, &dhi, nullptr);
+      if (dlo < 0 && dhi > 0) {
+        std::uintmax_t it = kMaxIterations;
+        auto f = [&](double e) { double d = 0; gap(e, &d, nullptr); return d; };
+        const auto r = boost::math::tools::toms748_solve(f, lo, hi, dlo, dhi,
+                                                         boost::math::tools::eps_tolerance<double>(50), it);
+        c.eta = 0.5 * (r.first + r.second);
+      } else {
+        const auto r = boost::math::tools::brent_find_minima([&](double e) { return gap(e, nullptr, nullptr); }, lo, hi, 40);
+        c.eta = r.first;
+      }
+    }
+    c.G = gap(c.eta, nullptr, &c.yr);
+    cands.push_back(c);
+  }
+  std::size_t m = 0;
+  for (std::size_t k = 1; k < cands.size(); ++k)
+    if (cands[k].G < cands[m].G) m = k;
+  const Cand& C = cands[m];
+  double dzw = 0, dzr = 0;
+  best.y_w = C.eta;
+  best.z_w = S.W->z(C.eta, &dzw);
+  best.y_r = C.yr;
+  best.z_r = S.R->z(C.yr, &dzr);
+  best.r = S.R0 - (best.z_w - S.zw0);
+  best.gamma = std::atan(dzr);
+  best.h = -C.G;
+  best.off_profile = C.edge;
+  for (std::size_t k = 0; k < cands.size(); ++k) {
+    if (k == m) continue;
+    if (cands[k].G - C.G <= opt_.two_point_gap && std::fabs(cands[k].yr - C.yr) > opt_.jump_distance) {
+      best.two_point = true;
+      best.y_r_second = cands[k].yr;
+    }
+  }
+  return best;
+}
+
+WheelsetState Wheelset::at(double y) const {
+  WheelsetState st;
+  st.y = y;
+  bool fl = false, fr = false;
+  if (opt_.roll == WheelsetRoll::None) {
+    st.left = contact(side_[0], y, 0.0, &fl);
+    st.right = contact(side_[1], y, 0.0, &fr);
+    st.found = fl && fr;
+    return st;
+  }
+  // Solved: the axle heights at which each wheel touches agree. h_right falls and h_left rises
+  // with φ (raising the right end lifts the right wheel off its rail).
+  bool ok = true;
+  auto f = [&](double phi) {
+    bool a = false, b = false;
+    const double v = contact(side_[1], y, phi, &b).h - contact(side_[0], y, phi, &a).h;
+    ok = ok && a && b;
+    return v;
+  };
+  const double lo = -opt_.max_roll, hi = opt_.max_roll;
+  const double flo = f(lo), fhi = f(hi);
+  if (!ok || !(flo > 0 && fhi < 0)) {
+    st.found = ok;
+    st.converged = false;
+    st.roll = kNaN;
+    st.left = contact(side_[0], y, 0.0, &fl);
+    st.right = contact(side_[1], y, 0.0, &fr);
+    return st;
+  }
+  std::uintmax_t it = kMaxIterations;
+  const double tol = opt_.roll_tolerance;
+  const auto r = boost::math::tools::toms748_solve(f, lo, hi, flo, fhi,
+                                                   [tol](double a, double b) { return std::fabs(b - a) <= tol; }, it);
+  st.converged = it < kMaxIterations;
+  st.roll = 0.5 * (r.first + r.second);
+  st.left = contact(side_[0], y, st.roll, &fl);
+  st.right = contact(side_[1], y, st.roll, &fr);
+  st.found = ok && fl && fr;
+  return st;
+}
+
+std::vector<WheelsetState> Wheelset::sweep(const std::vector<double>& ys, unsigned threads) const {
+  std::vector<WheelsetState> out(ys.size());
+  const std::size_t n = ys.size(), nt = std::max<std::size_t>(1, std::min<std::size_t>(threads, n / 64 + 1));
+  auto work = [&](std::size_t t) {
+    for (std::size_t k = n * t / nt; k < n * (t + 1) / nt; ++k) out[k] = at(ys[k]);
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < nt; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (auto& th : pool) th.join();
+  for (std::size_t k = 1; k < n; ++k) {
+    WheelsetState& a = out[k];
+    const WheelsetState& b = out[k - 1];
+    if (!a.found || !b.found) continue;
+    if (std::fabs(a.left.y_r - b.left.y_r) > opt_.jump_distance) a.left.two_point = true;
+    if (std::fabs(a.right.y_r - b.right.y_r) > opt_.jump_distance) a.right.two_point = true;
+  }
+  return out;
+}
+
+}  // namespace mh

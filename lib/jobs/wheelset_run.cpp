@@ -1,0 +1,217 @@
+// `mhcontact wheelset`; see wheelset_run.hpp.
+#include "jobs/wheelset_run.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <ostream>
+#include <thread>
+
+#include "core/errors.hpp"
+#include "core/numfmt.hpp"
+#include "core/units.hpp"
+#include "geometry/conicity.hpp"
+#include "geometry/wheelset.hpp"
+#include "jobs/run.hpp"
+#include "output/cells.hpp"
+#include "output/output_file.hpp"
+#include "output/run_dir.hpp"
+#include "output/wheelset_tables.hpp"
+#include "profile/standard_profiles.hpp"
+
+namespace mh {
+
+namespace {
+
+constexpr double kHeadlineAmplitude = 3e-3;  // [m] EN 15302's headline tan γe at ŷ = 3 mm
+
+/// Conicity at amplitude A, refused ("off_profile") when a row between its turning points is not ok.
+ConicityResult conicity_checked(const EquivalentConicity& C, const std::vector<double>& ys,
+                                const std::vector<WheelsetState>& st, double A) {
+  ConicityResult c = C.at(A);
+  if (c.status != "ok") return c;
+  for (std::size_t k = 0; k < ys.size(); ++k)
+    if (ys[k] >= c.y1 - 1e-12 && ys[k] <= c.y2 + 1e-12 && wheelset_row_status(st[k]) != "ok") {
+      c.status = wheelset_row_status(st[k]);
+      c.tan_gamma_e = std::nan("");
+      break;
+    }
+  return c;
+}
+
+/// Δr of the rows that found both contacts (the conicity's input); NaN rows are left out.
+std::unique_ptr<EquivalentConicity> conicity_of(const std::vector<double>& ys, const std::vector<WheelsetState>& st) {
+  std::vector<double> y, dr;
+  for (std::size_t k = 0; k < ys.size(); ++k)
+    if (st[k].found && std::isfinite(st[k].delta_r())) y.push_back(ys[k]), dr.push_back(st[k].delta_r());
+  if (y.size() < 3) return nullptr;
+  return std::make_unique<EquivalentConicity>(y, dr);
+}
+
+unsigned thread_count(unsigned t) { return std::max(1u, t ? t : std::thread::hardware_concurrency()); }
+
+int single_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostream& out, std::ostream& err) {
+  const Profile wl = load_profile(wc.wheel_left, ProfileKind::Wheel);
+  const Profile wr = wc.one_wheel ? wl : load_profile(wc.wheel_right, ProfileKind::Wheel);
+  const Profile rl = load_profile(wc.rail_left, ProfileKind::Rail, wc.inclination);
+  const Profile rr = wc.one_rail ? rl : load_profile(wc.rail_right, ProfileKind::Rail, wc.inclination);
+  const Wheelset ws(wl, wc.one_wheel ? wl : wr, rl, wc.one_rail ? rl : rr, wc.placement, wc.options);
+  const std::vector<WheelsetState> st = ws.sweep(wc.y, thread_count(opt.threads));
+  const bool roll = wc.options.roll == WheelsetRoll::Solved;
+
+  RunDirectory rd(opt.out_dir);
+  bool all_ok = true;
+  {
+    OutputFile f(rd.path("wheelset.csv"));
+    std::string s = wheelset_csv_header(roll);
+    for (std::size_t k = 0; k < st.size(); ++k) {
+      wheelset_csv_row(s, wc.y_mm[k], st[k], roll);
+      all_ok = all_ok && wheelset_row_status(st[k]) == "ok";
+    }
+    f.stream() << s;
+    f.commit();
+  }
+  const auto C = conicity_of(wc.y, st);
+  ConicityResult head;
+  head.status = "no_centre";
+  head.tan_gamma_e = std::nan("");
+  {
+    OutputFile f(rd.path("conicity.csv"));
+    std::string s = conicity_csv_header();
+    for (std::size_t i = 0; i < wc.amplitudes.size(); ++i) {
+      ConicityResult c;
+      if (C) c = conicity_checked(*C, wc.y, st, wc.amplitudes[i]);
+      else c.status = "no_centre", c.tan_gamma_e = c.y1 = c.y2 = std::nan("");
+      all_ok = all_ok && c.status == "ok";
+      conicity_csv_row(s, wc.amplitudes_mm[i], c);
+    }
+    f.stream() << s;
+    f.commit();
+    if (C) head = conicity_checked(*C, wc.y, st, kHeadlineAmplitude);
+  }
+  nlohmann::ordered_json sum;
+  sum["schema"] = kWheelsetSchema;
+  sum["inputs"] = wc.resolved_json();
+  sum["wheel_left"] = wl.source;
+  sum["wheel_right"] = wr.source;
+  sum["rail_left"] = rl.source;
+  sum["rail_right"] = rr.source;
+  sum["rail_origin_mm"] = {{"left", ws.rail_origin(-1) * units::per_mm}, {"right", ws.rail_origin(+1) * units::per_mm}};
+  sum["measured_gauge_mm"] = std::isfinite(ws.measured_gauge()) ? nlohmann::json(ws.measured_gauge() * units::per_mm) : nlohmann::json();
+  sum["tan_gamma_e_3mm"] = std::isfinite(head.tan_gamma_e) ? nlohmann::json(head.tan_gamma_e) : nlohmann::json();
+  sum["tan_gamma_e_3mm_status"] = head.status;
+  std::size_t n_two = 0;
+  for (const auto& s : st) n_two += s.left.two_point || s.right.two_point;
+  sum["rows_with_two_point_contact"] = n_two;
+  {
+    OutputFile f(rd.path("summary.json"));
+    f.stream() << sum.dump(2) << '\n';
+    f.commit();
+  }
+  rd.finish("wheelset", program_json());
+  if (!opt.quiet) {
+    err << "wheelset: " << st.size() << " rows, y " << format_number(wc.y_mm.front()) << " … "
+        << format_number(wc.y_mm.back()) << " mm, roll " << to_string(wc.options.roll) << "; gauge "
+        << format_number(std::round(ws.measured_gauge() * 1e6) / 1e3) << " mm\n";
+  }
+  out << "tan_gamma_e at 3 mm: ";
+  if (std::isfinite(head.tan_gamma_e)) out << format_number(std::round(head.tan_gamma_e * 1e4) / 1e4) << "\n";
+  else out << head.status << "\n";
+  return all_ok ? kExitOk : kExitCasesFailed;
+}
+
+struct FleetRow {
+  std::string source, status = "ok", message;
+  double head = std::nan("");
+  std::vector<double> tg;
+  WheelMeasures m;
+};
+
+int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostream& out, std::ostream& err) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Profile rl = load_profile(wc.rail_left, ProfileKind::Rail, wc.inclination);
+  const Profile rr = wc.one_rail ? rl : load_profile(wc.rail_right, ProfileKind::Rail, wc.inclination);
+  // The rails are smoothed and placed once (with a stand-in wheel); each wheel then replaces it.
+  const Profile stand_in = make_standard_profile("S1002");
+  const Wheelset track(stand_in, stand_in, rl, wc.one_rail ? rl : rr, wc.placement, wc.options);
+  const std::size_t n = wc.fleet.size();
+  std::vector<FleetRow> rows(n);
+  std::atomic<std::size_t> next{0};
+  auto work = [&]() {
+    for (std::size_t i; (i = next++) < n;) {
+      FleetRow& r = rows[i];
+      r.source = wc.fleet[i].standard.empty() ? wc.fleet[i].file : "standard:" + wc.fleet[i].standard;
+      try {
+        const Profile w = load_profile(wc.fleet[i], ProfileKind::Wheel);
+        r.m = wheel_measures(w);
+        const Wheelset ws(track, w, w);
+        const std::vector<WheelsetState> st = ws.sweep(wc.y, 1);
+        const auto C = conicity_of(wc.y, st);
+        if (!C) throw InputError(r.source, "", "no contact found over the sweep");
+        const ConicityResult h = conicity_checked(*C, wc.y, st, kHeadlineAmplitude);
+        r.head = h.tan_gamma_e;
+        if (h.status != "ok") r.status = h.status, r.message = "tan_gamma_e at 3 mm: " + h.status;
+        for (double A : wc.amplitudes) {
+          const ConicityResult c = conicity_checked(*C, wc.y, st, A);
+          r.tg.push_back(c.tan_gamma_e);
+          if (c.status != "ok" && r.status == "ok") r.status = c.status, r.message = "amplitude " + format_number(A * 1e3) + " mm: " + c.status;
+        }
+      } catch (const InputError& e) {
+        r.status = kInvalidWheel;
+        r.message = e.what();
+        r.tg.assign(wc.amplitudes.size(), std::nan(""));
+      }
+    }
+  };
+  const unsigned nt = static_cast<unsigned>(std::min<std::size_t>(thread_count(opt.threads), std::max<std::size_t>(n, 1)));
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < nt; ++t) pool.emplace_back(work);
+  work();
+  for (auto& th : pool) th.join();
+
+  RunDirectory rd(opt.out_dir);
+  std::size_t n_ok = 0;
+  {
+    OutputFile f(rd.path("fleet.csv"));
+    std::string s = fleet_csv_header(wc.amplitudes_mm);
+    for (std::size_t i = 0; i < n; ++i) {
+      const FleetRow& r = rows[i];
+      n_ok += r.status == "ok";
+      s += std::to_string(i) + ',';
+      cells::csv_text(s, r.source);
+      s += ',' + r.status + ',';
+      cells::num(s, r.head);
+      for (double v : r.tg) {
+        s += ',';
+        cells::num(s, v);
+      }
+      for (double v : {r.m.Sd, r.m.Sh, r.m.qR}) {
+        s += ',';
+        if (r.m.valid) cells::num(s, v * units::per_mm);
+      }
+      s += ',';
+      cells::csv_text(s, r.message);
+      s += '\n';
+    }
+    f.stream() << s;
+    f.commit();
+  }
+  rd.finish("wheelset", program_json(), {{"wheels", n}, {"wheels_ok", n_ok}});
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!opt.quiet)
+    err << "wheelset fleet: " << n << " wheels, " << n_ok << " ok, " << (n - n_ok) << " refused or incomplete ("
+        << format_number(std::round(secs * 100) / 100) << " s, " << nt << " threads)\n";
+  out << "wrote " << opt.out_dir << "/fleet.csv (" << n << " wheels, " << n_ok << " ok)\n";
+  return n_ok == n ? kExitOk : kExitCasesFailed;
+}
+
+}  // namespace
+
+int wheelset_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostream& out, std::ostream& err) {
+  const cells::DigitsScope digits_scope(opt.digits);
+  return wc.is_fleet ? fleet_job(wc, opt, out, err) : single_job(wc, opt, out, err);
+}
+
+}  // namespace mh

@@ -1,0 +1,35 @@
+#pragma once
+// The tables of `mhcontact wheelset` (docs/wheelset.md "Outputs"): DIR/wheelset.csv (one row per
+// lateral displacement y), DIR/conicity.csv (one row per amplitude), DIR/fleet.csv (one row per
+// wheel of a fleet). Numbers with cells::num (the run's --digits); lengths in mm, angles in
+// degrees, as the column names say.
+#include <string>
+#include <vector>
+
+#include "geometry/conicity.hpp"
+#include "geometry/wheelset.hpp"
+
+namespace mh {
+
+/// Schema of DIR/summary.json.
+constexpr const char* kWheelsetSchema = "mhcontact.wheelset/1";
+
+/// "ok", "off_profile" (a contact at the end of a profile: not a real contact), "no_contact" (a
+/// wheel does not face its rail), "roll_not_converged".
+std::string wheelset_row_status(const WheelsetState& s);
+
+/// y_mm,delta_r_mm,r_left_mm,r_right_mm,gamma_left_deg,gamma_right_deg,delta_tan_gamma[,roll_deg],
+/// two_point_left,two_point_right, the contact points (y_wheel/z_wheel/y_rail/z_rail per side,
+/// each in its own profile's frame), status.
+std::string wheelset_csv_header(bool roll);
+/// One row; `y_mm` is the displacement as given (printed verbatim).
+void wheelset_csv_row(std::string& row, double y_mm, const WheelsetState& s, bool roll);
+
+/// amplitude_mm,tan_gamma_e,y1_mm,y2_mm,window_lo,window_hi,status
+std::string conicity_csv_header();
+void conicity_csv_row(std::string& row, double amplitude_mm, const ConicityResult& c);
+
+/// wheel,source,status,tan_gamma_e_3mm,tan_gamma_e_<A>mm...,Sd_mm,Sh_mm,qR_mm,message
+std::string fleet_csv_header(const std::vector<double>& amplitudes_mm);
+
+}  // namespace mh
