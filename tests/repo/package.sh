@@ -2,9 +2,9 @@
 # The CMake package as a user consumes it: `cmake --install` into a fresh prefix, then the
 # examples copied OUTSIDE the source tree find it (find_package(mhcontact)), build and run:
 # examples/c_stepping (C99), and examples/python_stepping.py against the installed Python module
-# when the build has one. Usage: package.sh SOURCE_DIR BUILD_DIR
+# when the build has one. Usage: package.sh SOURCE_DIR BUILD_DIR [PYTHON]
 set -euo pipefail
-src=$1; build=$2
+src=$1; build=$2; python=${3:-python3}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 cmake --install "$build" --prefix "$tmp/p" >/dev/null
 for f in include/mhcontact.h lib/cmake/mhcontact/mhcontactConfig.cmake share/doc/mhcontact/examples/c_stepping/c_stepping.c; do
@@ -30,7 +30,7 @@ grep -q 'c_stepping: /nonexistent.json: input: ' "$tmp/err" || { echo "package: 
 py=$(find "$tmp/p" -path '*/mhcontact/__init__.py' 2>/dev/null | head -1)
 if [ -n "$py" ]; then
   cp "$tmp/p/share/doc/mhcontact/examples/python_stepping.py" "$tmp/"
-  (cd "$tmp" && PYTHONPATH="$(dirname "$(dirname "$py")")" MPLBACKEND=Agg python3 python_stepping.py --plot "$tmp/steps.png" > "$tmp/py.out")
+  (cd "$tmp" && PYTHONPATH="$(dirname "$(dirname "$py")")" MPLBACKEND=Agg "$python" python_stepping.py --plot "$tmp/steps.png" > "$tmp/py.out")
   grep -q '^t_s,tY_mm,status' "$tmp/py.out" || { echo "package: python_stepping printed no table"; cat "$tmp/py.out"; exit 1; }
   # The same numbers as the C example, step for step.
   diff <(grep ',ok,' "$tmp/c.out" | cut -d, -f1-6) <(grep ',ok,' "$tmp/py.out" | cut -d, -f1-6) \
