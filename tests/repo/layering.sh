@@ -6,11 +6,14 @@
 #   < ellipse (one Hertzian ellipse) < case_result (the result every method returns)
 #   < multi_hertz < grid (what the grid methods share) < half_space | strips (siblings: neither
 #   includes the other) < solve (dispatch and auto).
+# Last comes capi (the C interface and the Python module's core, include/mhcontact.h): it may use
+# core … contact and input (profiles and case files read as the command reads them), but not
+# output or jobs, so that the embeddable library carries no table writer and no job runner.
 # The core layers (core, profile, geometry, contact) include neither nlohmann-json nor CLI11;
 # nothing in lib/ includes CLI11 (only apps/mhcontact does).
 set -uo pipefail
 src=$1
-layers=(core profile geometry contact input output jobs)
+layers=(core profile geometry contact input output jobs capi)
 rooms=(options ellipse case_result multi_hertz grid half_space strips solve)
 room_rank=(0 1 2 3 4 5 5 6)
 rank() { local i; for i in "${!layers[@]}"; do [ "${layers[$i]}" = "$1" ] && { echo "$i"; return; }; done; echo -1; }
@@ -34,6 +37,8 @@ check_tree() {  # prints the violations of the tree $1, returns 1 if any
       r=$(rank "$layer")
       if [ "$r" -lt 0 ]; then echo "layering: $f includes \"$inc\": not a lib/<layer>/ header"; bad=1
       elif [ "$r" -gt "$r_own" ]; then echo "layering: $f ($own) includes \"$inc\" of the later layer $layer"; bad=1
+      elif [ "$own" = capi ] && { [ "$layer" = output ] || [ "$layer" = jobs ]; }; then
+        echo "layering: $f (capi) includes \"$inc\": the C interface may not use $layer"; bad=1
       elif [ "$own" = contact ] && [ "$layer" = contact ]; then
         ri=$(room "${inc#contact/}"); rri=$(room_rank_of "$ri")
         if [ "$rri" -lt 0 ]; then echo "layering: $f includes \"$inc\": no known room of lib/contact"; bad=1
@@ -48,13 +53,14 @@ check_tree() {  # prints the violations of the tree $1, returns 1 if any
 }
 check_tree "$src" || exit 1
 # The check must be able to fail: an upward include, a JSON include in the core, a room of
-# lib/contact including a later room and a sibling are caught.
+# lib/contact including a later room and a sibling, capi including jobs are caught.
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-mkdir -p "$tmp/lib/core" "$tmp/lib/contact/ellipse" "$tmp/lib/contact/strips"
+mkdir -p "$tmp/lib/core" "$tmp/lib/contact/ellipse" "$tmp/lib/contact/strips" "$tmp/lib/capi"
 echo '#include "jobs/run.hpp"' > "$tmp/lib/core/x.hpp"
 echo '#include <nlohmann/json.hpp>' > "$tmp/lib/contact/options.cpp"
 echo '#include "contact/multi_hertz/multi_hertz.hpp"' > "$tmp/lib/contact/ellipse/hertz.hpp"
 echo '#include "contact/half_space/influence.hpp"' > "$tmp/lib/contact/strips/strip_method.hpp"
+echo '#include "jobs/run.hpp"' > "$tmp/lib/capi/x.cpp"
 out=$(check_tree "$tmp") && { echo "layering: the self-test was not caught"; exit 1; }
-[ "$(echo "$out" | wc -l)" = 4 ] || { echo "layering: self-test expected 4 violations, got: $out"; exit 1; }
+[ "$(echo "$out" | wc -l)" = 5 ] || { echo "layering: self-test expected 5 violations, got: $out"; exit 1; }
 echo "layering: OK"

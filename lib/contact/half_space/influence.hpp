@@ -12,11 +12,11 @@
 //       and FFT (DC-FFT) for contact analyses", Wear 243 (2000) 101–111: the aperiodic discrete
 //       convolution of n points done exactly as a cyclic one on ≥ 2n−1 points with a zero-padded
 //       pressure and the wrapped-around kernel ("DC-FFT").
-#include <fftw3.h>
-
+//  [K]  M. Borgerding, KISS FFT (BSD-3-Clause, Debian libkissfft-dev): the header-only C++ class
+//       template kissfft<double> of kissfft.hh, a mixed-radix complex FFT (radices 2, 3, 4, 5
+//       and a generic one). The default backend; FFTW 3 (GPL-2+) replaces it when the build sets
+//       MHCONTACT_FFTW=ON (docs/embedding.md "FFT backends").
 #include <memory>
-#include <mutex>
-#include <type_traits>
 
 namespace mh {
 
@@ -33,28 +33,29 @@ namespace mh {
 /// at r = 100 a that leaves ~1e-12 relative, far below the discretisation error.
 double love_rectangle(double x, double y, double a, double b);
 
-/// The global FFTW planner mutex: FFTW planning (fftw_plan_* and fftw_destroy_plan) is not
-/// thread-safe, execution of an existing plan is (FFTW 3 manual §5.4 "Thread safety"). Any code in
-/// the project that plans with FFTW should hold this mutex while planning or destroying.
-std::mutex& fftw_planner_mutex();
+/// The FFT library this build convolves with: "kissfft" (default) or "fftw3" (MHCONTACT_FFTW=ON).
+const char* fft_backend();
 
 /// The discrete operator u = C p on an nx × ny grid of dx × dy elements: piecewise-constant
 /// pressure per element, displacement collocated at the element centres,
 ///     C_ij = H · love_rectangle(x_i − x_j, y_i − y_j, dx/2, dy/2)   [m/Pa]   (H = compliance).
 /// Storage is row-major with x fastest: index = ix + nx·iy, for p and u alike.
 /// apply() is the exact (aperiodic) discrete convolution done by DC-FFT ([LI]): the kernel of the
-/// offsets −(n−1)…(n−1) is wrapped onto a padded grid of mx × my points (the smallest 2,3,5,7-
-/// smooth sizes ≥ 2n−1, e.g. 120 × 100 for 60 × 50) and transformed once (r2c); each apply()
-/// zero-pads p, transforms, multiplies and transforms back (c2r): O(n log n).
+/// offsets −(n−1)…(n−1) is wrapped onto a padded grid of mx × my points (the smallest sizes
+/// ≥ 2n−1 whose prime factors the backend has fast butterflies for: 2, 3, 5 for KissFFT, also 7
+/// for FFTW; e.g. 120 × 100 for 60 × 50) and transformed once; each apply() zero-pads p,
+/// transforms, multiplies and transforms back: O(n log n). Only the half spectrum of the real
+/// data is kept (kx = 0 … mx/2), and rows of p that are all padding are not transformed.
 ///
-/// Plans are FFTW_ESTIMATE (deterministic: the same bytes for any thread count and run), created
-/// and destroyed under fftw_planner_mutex(). The object owns its work buffers, so apply() on ONE
+/// Deterministic: the same bytes for any thread count and run (FFTW: FFTW_ESTIMATE plans, created
+/// and destroyed under a planner mutex). The two backends agree to round-off (~1e-15 relative to
+/// the largest displacement), not bitwise. The object owns its work buffers, so apply() on ONE
 /// object must be called from one thread at a time; distinct objects may be used concurrently.
 /// Movable, not copyable; a moved-from object may only be destroyed or assigned to.
 class InfluenceGrid {
  public:
   /// Throws std::invalid_argument unless nx, ny ≥ 1, dx, dy, compliance > 0 and finite, and
-  /// std::bad_alloc / std::runtime_error if FFTW cannot allocate or plan.
+  /// std::bad_alloc / std::runtime_error if the FFT cannot allocate or plan.
   InfluenceGrid(int nx, int ny, double dx, double dy, double compliance);
   ~InfluenceGrid();
   InfluenceGrid(InfluenceGrid&&) noexcept;
@@ -79,20 +80,10 @@ class InfluenceGrid {
   int padded_ny() const { return my_; }  ///< my, FFT size along y
 
  private:
-  struct FftwFree {
-    void operator()(void* ptr) const { fftw_free(ptr); }
-  };
-  struct PlanDestroy {
-    void operator()(fftw_plan plan) const;
-  };
-  using Plan = std::unique_ptr<std::remove_pointer_t<fftw_plan>, PlanDestroy>;
-
+  struct Fft;  ///< the backend's plans and work buffers (influence.cpp)
   int nx_ = 0, ny_ = 0, mx_ = 0, my_ = 0;
   double dx_ = 0, dy_ = 0, compliance_ = 0, c00_ = 0;
-  std::unique_ptr<double, FftwFree> real_;           ///< mx·my work buffer (mutable through get())
-  std::unique_ptr<fftw_complex, FftwFree> spectrum_; ///< my·(mx/2+1) work buffer
-  std::unique_ptr<fftw_complex, FftwFree> kernel_;   ///< FFT of the wrapped kernel, / (mx·my)
-  Plan forward_, backward_;
+  std::unique_ptr<Fft> fft_;
 };
 
 }  // namespace mh

@@ -1,0 +1,261 @@
+/* mhcontact.h — the C interface of mhcontact: wheel–rail normal contact by the multi-Hertzian
+ * method (Sebès et al., Wear 314 (2014) 118–124), the elastic half-space and the strip method,
+ * callable from a vehicle-dynamics simulation at every time step. C99; usable from C++.
+ *
+ * Units: SI everywhere (m, N, Pa, rad); every field names its unit in its suffix (_m, _N, _Pa,
+ * _rad, _m2, _per_m, _N_per_m). Frames and signs are those of the command (docs/method.md §1):
+ * y lateral towards the field side, z up; t_Y the lateral displacement of the wheel on the rail.
+ *
+ * Objects (docs/c-api.md):
+ *   mhc_profile    a wheel or rail profile (file, points or standard name); immutable.
+ *   mhc_pair       a wheel–rail pair: profiles placed by the track data, geometry tables and
+ *                  potential ellipses built once, material, model and method; immutable.
+ *   mhc_workspace  the scratch memory of one thread's calls on one pair.
+ * Immutable objects may be shared by any number of threads; a workspace belongs to one thread
+ * at a time. There is no global state: the only per-thread state is the last message
+ * (mhc_last_message).
+ *
+ * Errors: every function returning mhc_error returns MHC_OK or an error code and never lets an
+ * exception or a signal cross the interface; the message of the thread's last error (same wording
+ * as the command's) is mhc_last_message(). A case that was solved but did not end `ok` (no
+ * contact, t_Y outside the tables, not converged) is not an error: the result's status says it.
+ */
+#ifndef MHCONTACT_H
+#define MHCONTACT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(_WIN32)
+#define MHC_API __declspec(dllimport)
+#elif defined(__GNUC__)
+#define MHC_API __attribute__((visibility("default")))
+#else
+#define MHC_API
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** The ABI this header describes: incremented on any incompatible change of a struct or a
+ *  function. Compare with mhc_abi_version() at run time. */
+#define MHC_ABI_VERSION 1
+
+/** Contact slots of a result: the loaded ellipses (multi-Hertzian) or patches (grid methods) of
+ *  one case, in increasing rail y. More contacts than this set MHC_WARN_TRUNCATED. */
+#define MHC_MAX_CONTACTS 6
+
+typedef enum mhc_error {
+  MHC_OK = 0,
+  MHC_ERR_ARGUMENT = 1,    /**< a null pointer, a wrong struct_size, a value out of its range */
+  MHC_ERR_INPUT = 2,       /**< unreadable or invalid input data (profile file, points, case file,
+                                a pair that cannot be placed): the command's exit code 2 */
+  MHC_ERR_UNSUPPORTED = 3, /**< a valid request this pair cannot honour: a relative roll, an
+                                approach-prescribed solve with a grid method */
+  MHC_ERR_MEMORY = 4,      /**< out of memory */
+  MHC_ERR_INTERNAL = 5     /**< a bug: please report with the message */
+} mhc_error;
+
+/** The outcome of one case: the `status` column of cases.csv. */
+typedef enum mhc_status {
+  MHC_STATUS_OK = 0,
+  MHC_STATUS_NO_CONTACT = 1,    /**< no force: Q <= 0, the wheel lifted (approach below first
+                                     contact), or no Hertzian candidate */
+  MHC_STATUS_OUT_OF_RANGE = 2,  /**< t_Y outside the pair's geometry table */
+  MHC_STATUS_NOT_CONVERGED = 3  /**< the equilibrium was not reached; the fields hold the last iterate */
+} mhc_status;
+
+typedef enum mhc_kind { MHC_WHEEL = 1, MHC_RAIL = 2 } mhc_kind;
+
+typedef enum mhc_method {
+  MHC_METHOD_MULTI_HERTZIAN = 0, /**< the paper's method: microseconds per case */
+  MHC_METHOD_HALF_SPACE = 1,     /**< exact elastic half-space on a grid (milliseconds) */
+  MHC_METHOD_STRIPS = 2,         /**< strip method (sub-millisecond to milliseconds) */
+  MHC_METHOD_AUTO = 3            /**< multi-Hertzian where its Hertz checks pass, strips elsewhere */
+} mhc_method;
+
+/** Case warnings (bits of mhc_result.warnings): the `warnings` column of cases.csv by kind. */
+#define MHC_WARN_FLANGE_CLIMB 0x1u          /**< the contact has passed the steepest flange point */
+#define MHC_WARN_NON_HERTZIAN 0x2u          /**< a loaded ellipse fails a Hertz assumption */
+#define MHC_WARN_NON_HERTZIAN_EXCLUDED 0x4u /**< a conformal candidate (B <= 0) would have touched */
+#define MHC_WARN_OFF_PROFILE 0x8u           /**< a loaded contact lies off the end of a profile */
+#define MHC_WARN_TRUNCATED 0x10u            /**< more than MHC_MAX_CONTACTS contacts: the rest omitted */
+#define MHC_WARN_OTHER 0x20u                /**< any other warning (the text: mhc_last_message) */
+
+/** Per-contact flags (mhc_contact.flags). */
+#define MHC_CONTACT_PLASTIC 0x1u      /**< the plastic law caps its pressure (p0 > p_lim) */
+#define MHC_CONTACT_NON_HERTZIAN 0x2u /**< fails a Hertz assumption (docs/method.md §4) */
+#define MHC_CONTACT_OFF_PROFILE 0x4u  /**< lies off the end of a profile (docs/method.md §3.7) */
+
+/** One contact of a case: a loaded ellipse (multi-Hertzian) or a contact patch (grid methods). */
+typedef struct mhc_contact {
+  int32_t index;          /**< 1-based: the potential ellipse, or the patch in increasing rail y */
+  uint32_t flags;         /**< MHC_CONTACT_* bits */
+  double y_rail_m;        /**< contact point on the rail profile, lateral (rail frame, with the cant) */
+  double z_rail_m;        /**< ... its height on the rail profile */
+  double y_wheel_m;       /**< facing point on the wheel profile (wheel frame, 0 at the taping line) */
+  double z_wheel_m;       /**< ... its height on the wheel profile (NaN for grid patches) */
+  double gamma_rad;       /**< contact angle */
+  double r_roll_m;        /**< wheel rolling radius at y_wheel */
+  double N_N;             /**< normal force */
+  double Fz_N;            /**< its vertical component N cos(gamma) */
+  double Fy_N;            /**< its lateral component N sin(gamma), towards the field side */
+  double a_m;             /**< semi-axis along x, rolling direction (grid: half the contact length) */
+  double b_m;             /**< semi-axis across, in the contact plane (grid: half the width) */
+  double A_per_m;         /**< curvature sum along x (eq. 1); NaN for grid patches */
+  double B_per_m;         /**< curvature sum across (eq. 1); NaN for grid patches */
+  double p_max_Pa;        /**< largest pressure carried (capped at p_lim in the plastic model) */
+  double area_m2;         /**< contact area (pi a b for an ellipse) */
+  double h0_m;            /**< virtual penetration of eq. 6 (h0 = b^2 B); NaN for grid patches */
+  double approach_m;      /**< true normal approach of the contact (delta of Hertz) */
+  double dN_ddz_N_per_m;  /**< dN/d(dz): this contact's normal-force derivative in the wheel's
+                               vertical approach dz at fixed t_Y; NaN for grid patches */
+} mhc_contact;
+
+/** The result of one case. Caller-owned: set struct_size = sizeof(mhc_result) before a call. */
+typedef struct mhc_result {
+  size_t struct_size;        /**< set by the caller: sizeof(mhc_result) */
+  int32_t status;            /**< mhc_status */
+  int32_t method;            /**< mhc_method that solved it (never AUTO) */
+  int32_t n_contacts;        /**< contacts (may exceed MHC_MAX_CONTACTS: see MHC_WARN_TRUNCATED) */
+  int32_t iterations;        /**< solver iterations */
+  uint32_t warnings;         /**< MHC_WARN_* bits */
+  int32_t n_warnings;        /**< number of warnings (the n_warnings column of cases.csv) */
+  double tY_m;               /**< the lateral displacement solved for */
+  double Q_N;                /**< the vertical load prescribed, or the one carried (approach given) */
+  double dz_m;               /**< vertical virtual penetration of eq. 11 (0 at first contact);
+                                  the approach given, for approach-prescribed solves */
+  double approach_m;         /**< rigid vertical approach of the wheel from first contact */
+  double residual;           /**< (sum N cos(gamma) - Q) / Q at the end (0 when approach given) */
+  double Fz_N;               /**< total vertical force, sum N cos(gamma) */
+  double Fy_N;               /**< total lateral force, sum N sin(gamma) */
+  double p_max_Pa;           /**< largest contact pressure of the case */
+  double area_m2;            /**< total contact area */
+  double gamma_main_rad;     /**< contact angle of the contact carrying the largest N (NaN: none) */
+  double r_roll_main_m;      /**< rolling radius there (NaN: none) */
+  double dFz_ddz_N_per_m;    /**< vertical contact stiffness dFz/d(dz) at fixed t_Y, for implicit
+                                  integrators (multi-Hertzian; NaN for the grid methods) */
+  int32_t plastic;           /**< 1 when a contact is capped by the plastic law */
+  int32_t reserved;
+  mhc_contact contact[MHC_MAX_CONTACTS];  /**< the first min(n_contacts, MHC_MAX_CONTACTS) */
+} mhc_result;
+
+/** What a pair is built from besides its two profiles. mhc_pair_options_init fills the defaults
+ *  of the command's case file (README "Case file") and struct_size. */
+typedef struct mhc_pair_options {
+  size_t struct_size;             /**< sizeof(mhc_pair_options), set by mhc_pair_options_init */
+  /* track and wheelset (docs/method.md §7) */
+  double gauge_m;                 /**< track gauge (default 1.435) */
+  double gauge_height_m;          /**< gauge measured this far below the top of rail (default 0.014) */
+  double flange_back_distance_m;  /**< wheelset flange-back distance (default 1.360) */
+  double flange_back_position_m;  /**< y of the flange back on the wheel profile (default -0.070) */
+  double nominal_radius_m;        /**< wheel radius at the taping line (default 0.460) */
+  double rail_inclination;        /**< cant 1:N applied to the rail profile, N (e.g. 40); 0: the
+                                       profile is used as given (default 0) */
+  /* material: wheel, and rail (NaN: the wheel's) */
+  double E_wheel_Pa;              /**< Young's modulus (default 210e9) */
+  double nu_wheel;                /**< Poisson's ratio (default 0.28) */
+  double E_rail_Pa;               /**< default NaN: as the wheel */
+  double nu_rail;                 /**< default NaN: as the wheel */
+  double p_lim_Pa;                /**< limit pressure of the plastic model; INFINITY: elastic (default) */
+  int32_t method;                 /**< mhc_method (default MHC_METHOD_MULTI_HERTZIAN) */
+  int32_t reserved;
+  /* the geometry table: t_Y range and step */
+  double tY_min_m;                /**< default -0.010 */
+  double tY_max_m;                /**< default +0.012 */
+  double tY_step_m;               /**< default 1e-5 */
+  /* the grid methods' element size */
+  double grid_dx_m;               /**< default 0.2e-3 */
+  double grid_ds_m;               /**< default 0.2e-3 */
+} mhc_pair_options;
+
+typedef struct mhc_profile mhc_profile;
+typedef struct mhc_pair mhc_pair;
+typedef struct mhc_workspace mhc_workspace;
+
+/* ---- version ---------------------------------------------------------------------------- */
+
+/** "0.2.0" */
+MHC_API const char* mhc_version(void);
+/** MHC_ABI_VERSION of the library (compare with the header's). */
+MHC_API int32_t mhc_abi_version(void);
+/** "kissfft" or "fftw3": the FFT the half-space method uses in this build (docs/embedding.md). */
+MHC_API const char* mhc_fft_backend(void);
+
+/* ---- errors ----------------------------------------------------------------------------- */
+
+/** The thread's last message: the error of its last failed call, or the message of its last case
+ *  whose status is not ok; "" if none. Valid until the thread's next call. */
+MHC_API const char* mhc_last_message(void);
+/** "ok", "argument", "input", "unsupported", "memory", "internal". */
+MHC_API const char* mhc_error_name(mhc_error e);
+/** "ok", "no_contact", "out_of_range", "not_converged" (the cases.csv words). */
+MHC_API const char* mhc_status_name(int32_t status);
+
+/* ---- profiles ------------------------------------------------------------------------------ */
+
+/** Read a profile file in any format the command reads (SIMPACK .prr/.prw, MiniProf .ban/.whl,
+ *  VAMPIRE .whe/.rai, tables .csv/.txt/.dat; by extension, else by content), with the command's
+ *  clean-up and plausibility checks. kind: MHC_WHEEL or MHC_RAIL. */
+MHC_API mhc_error mhc_profile_read(const char* path, int32_t kind, mhc_profile** out);
+/** A profile from n points (y_m[i], z_m[i]) in the canonical frame (y to the field side, z up;
+ *  a wheel's flange at negative y, its taping line at y = 0), with the same checks as a file. */
+MHC_API mhc_error mhc_profile_from_points(const double* y_m, const double* z_m, size_t n, int32_t kind,
+                                          mhc_profile** out);
+/** A standard profile: "S1002" (wheel), "60E1", "54E1" (rails), generated with 0.1 mm nodes. */
+MHC_API mhc_error mhc_profile_standard(const char* name, mhc_profile** out);
+/** Points of a profile as used (after clean-up): n, and if y_m / z_m are non-null, up to
+ *  capacity values each. */
+MHC_API mhc_error mhc_profile_points(const mhc_profile* p, size_t* n, double* y_m, double* z_m, size_t capacity);
+MHC_API void mhc_profile_free(mhc_profile* p);
+
+/* ---- pairs ------------------------------------------------------------------------------- */
+
+MHC_API void mhc_pair_options_init(mhc_pair_options* opt);
+/** Build a pair (tens of milliseconds: the geometry tables). The profiles are copied: they may be
+ *  freed afterwards. */
+MHC_API mhc_error mhc_pair_create(const mhc_profile* wheel, const mhc_profile* rail, const mhc_pair_options* opt,
+                                  mhc_pair** out);
+/** Build the pair of a case file exactly as `mhcontact run` does (profiles, track, geometry,
+ *  material, model, method and every option; its sweep is ignored). */
+MHC_API mhc_error mhc_pair_from_case_file(const char* path, mhc_pair** out);
+/** The t_Y range of the pair's geometry table [m]. */
+MHC_API mhc_error mhc_pair_tY_range(const mhc_pair* pair, double* tY_min_m, double* tY_max_m);
+/** Potential ellipses of the pair (docs/method.md §3.5). */
+MHC_API int32_t mhc_pair_n_ellipses(const mhc_pair* pair);
+MHC_API void mhc_pair_free(mhc_pair* pair);
+
+/* ---- solving ------------------------------------------------------------------------------- */
+
+/** Scratch memory for one thread's calls on `pair` (which must outlive it). */
+MHC_API mhc_error mhc_workspace_create(const mhc_pair* pair, mhc_workspace** out);
+MHC_API void mhc_workspace_free(mhc_workspace* ws);
+
+/** One case with the vertical load prescribed (eq. 10): the wheel at lateral displacement tY_m
+ *  and relative roll roll_rad (only 0 is supported: MHC_ERR_UNSUPPORTED otherwise), carrying
+ *  Q_N. Fills *out (out->struct_size must be set). Any method. */
+MHC_API mhc_error mhc_solve_load(const mhc_pair* pair, mhc_workspace* ws, double tY_m, double roll_rad, double Q_N,
+                                 mhc_result* out);
+/** One case with the vertical approach prescribed: the penetration-driven force element. dz_m is
+ *  the vertical virtual penetration of eq. 11 (0 at first contact; mhc_result.dz_m of a
+ *  load-prescribed solve gives back its load). Multi-Hertzian pairs only (MHC_ERR_UNSUPPORTED
+ *  otherwise). dz_m <= 0: status no_contact, zero forces. */
+MHC_API mhc_error mhc_solve_approach(const mhc_pair* pair, mhc_workspace* ws, double tY_m, double roll_rad,
+                                     double dz_m, mhc_result* out);
+
+typedef enum mhc_prescribe { MHC_PRESCRIBE_LOAD = 0, MHC_PRESCRIBE_APPROACH = 1 } mhc_prescribe;
+
+/** n cases at once: tY_m[i], roll_rad[i] (roll_rad may be NULL: 0) and value[i] (Q_N or dz_m
+ *  by `prescribe`), into out[i] — an array of n results of result_size bytes each
+ *  (sizeof(mhc_result)). n_threads: 0 = all cores. Results do not depend on the thread count.
+ *  Returns the first argument error; a case that is not ok is not an error. */
+MHC_API mhc_error mhc_solve_many(const mhc_pair* pair, int32_t prescribe, size_t n, const double* tY_m,
+                                 const double* roll_rad, const double* value, mhc_result* out, size_t result_size,
+                                 int32_t n_threads);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MHCONTACT_H */

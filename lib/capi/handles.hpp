@@ -1,0 +1,66 @@
+#pragma once
+// The objects behind the C interface (include/mhcontact.h) and the conversion of one case's
+// CaseResult into an mhc_result, shared by the C functions (mhcontact_c.cpp) and the Python
+// module (python/mhcontact_module.cpp). Layer capi: above core, profile, geometry, contact and
+// input (profiles and case files are read as the command reads them), never output or jobs.
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include <mhcontact.h>
+
+#include "contact/case_result.hpp"
+#include "contact/multi_hertz/approach_given.hpp"
+#include "contact/options.hpp"
+#include "geometry/contact_geometry.hpp"
+#include "profile/profile.hpp"
+
+/// A profile as read, or a standard profile's name (generated again with the pair's cant).
+struct mhc_profile {
+  mh::Profile profile;
+  std::string standard;  ///< "S1002", "60E1", "54E1", or empty
+};
+
+/// A pair: geometry tables, material, model and method options. Immutable once built.
+struct mhc_pair {
+  mh::PairGeometry pg;
+  mh::Material material;
+  mh::MethodOptions options;
+  bool plastic = false;  ///< the plastic model (material.p_lim finite)
+};
+
+/// One thread's scratch memory for calls on one pair.
+struct mhc_workspace {
+  const mhc_pair* pair = nullptr;
+  mh::ApproachWorkspace approach;
+  mh::CaseResult r;
+};
+
+namespace mh::capi {
+
+/// The thread's last message (mhc_last_message).
+std::string& last_message();
+
+/// Run f, turning every exception into an error code and the thread's message (the command's
+/// wording: InputError::what()).
+mhc_error guarded(const std::function<mhc_error()>& f) noexcept;
+
+/// Check an mhc_result pointer and its struct_size; false with the message set otherwise.
+bool result_ok(const mhc_result* out, std::size_t result_size);
+
+/// Solve one case: Q prescribed (approach = false) or the approach dz prescribed (approach =
+/// true), at tY [m] and roll [rad]. Fills *out; sets the message for a case that is not ok.
+/// Does not catch (callers wrap it in guarded()).
+mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, double tY, double roll, double value,
+                     mhc_result* out);
+
+/// Convert a case's result. Q: the load prescribed (NaN: the load carried, Fz).
+void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_result* out);
+
+/// Run body(i, ws) for i in [0, n) on n_threads threads (0: all cores), each with its own
+/// workspace on `pair`; blocks of cases are handed out in order. Returns the first non-OK code
+/// of body (the others still run) or an exception's code.
+mhc_error for_each_case(const mhc_pair& pair, std::size_t n, int n_threads,
+                        const std::function<mhc_error(std::size_t, mhc_workspace&)>& body);
+
+}  // namespace mh::capi

@@ -1,0 +1,584 @@
+// The C interface (include/mhcontact.h): handles, error codes and the conversion of results.
+// Nothing here throws across extern "C": every entry point runs inside guarded().
+#include "capi/handles.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <limits>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "contact/half_space/influence.hpp"
+#include "contact/solve.hpp"
+#include "core/errors.hpp"
+#include "core/numfmt.hpp"
+#include "input/case_file.hpp"
+#include "profile/formats/formats.hpp"
+#include "profile/rail_cant.hpp"
+#include "profile/read.hpp"
+#include "profile/standard_profiles.hpp"
+
+#ifndef MHCONTACT_VERSION
+#define MHCONTACT_VERSION "unknown"
+#endif
+
+namespace mh::capi {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+mhc_error fail(mhc_error e, const std::string& msg) {
+  last_message() = msg;
+  return e;
+}
+
+std::uint32_t warning_bit(const std::string& w) {
+  auto starts = [&](const char* p) { return w.compare(0, std::strlen(p), p) == 0; };
+  if (starts("flange_climb:")) return MHC_WARN_FLANGE_CLIMB;
+  if (starts("non_hertzian_excluded:")) return MHC_WARN_NON_HERTZIAN_EXCLUDED;
+  if (starts("non_hertzian:")) return MHC_WARN_NON_HERTZIAN;
+  if (starts("off_profile:")) return MHC_WARN_OFF_PROFILE;
+  return MHC_WARN_OTHER;
+}
+
+int32_t status_code(CaseStatus s) {
+  switch (s) {
+    case CaseStatus::Ok: return MHC_STATUS_OK;
+    case CaseStatus::NoContact: return MHC_STATUS_NO_CONTACT;
+    case CaseStatus::OutOfRange: return MHC_STATUS_OUT_OF_RANGE;
+    case CaseStatus::NotConverged: return MHC_STATUS_NOT_CONVERGED;
+  }
+  return MHC_STATUS_NOT_CONVERGED;
+}
+
+int32_t method_code(Method m) {
+  switch (m) {
+    case Method::MultiHertzian: return MHC_METHOD_MULTI_HERTZIAN;
+    case Method::HalfSpace: return MHC_METHOD_HALF_SPACE;
+    case Method::Strips: return MHC_METHOD_STRIPS;
+    case Method::Auto: return MHC_METHOD_AUTO;
+  }
+  return MHC_METHOD_AUTO;
+}
+
+}  // namespace
+
+std::string& last_message() {
+  thread_local std::string m;
+  return m;
+}
+
+mhc_error guarded(const std::function<mhc_error()>& f) noexcept {
+  try {
+    try {
+      return f();
+    } catch (const InputError& e) {
+      return fail(MHC_ERR_INPUT, e.what());
+    } catch (const std::invalid_argument& e) {
+      return fail(MHC_ERR_ARGUMENT, e.what());
+    } catch (const std::bad_alloc&) {
+      return fail(MHC_ERR_MEMORY, "out of memory");
+    } catch (const std::exception& e) {
+      return fail(MHC_ERR_INTERNAL, std::string("internal error: ") + e.what() +
+                                        " (a bug: please report it with the input)");
+    } catch (...) {
+      return fail(MHC_ERR_INTERNAL, "internal error: unknown exception (a bug: please report it with the input)");
+    }
+  } catch (...) {  // the message itself could not be allocated
+    return MHC_ERR_MEMORY;
+  }
+}
+
+bool result_ok(const mhc_result* out, std::size_t result_size) {
+  if (!out) return fail(MHC_ERR_ARGUMENT, "result: null pointer"), false;
+  if (result_size < sizeof(mhc_result))
+    return fail(MHC_ERR_ARGUMENT, "result: struct_size = " + std::to_string(result_size) +
+                                      ": must be sizeof(mhc_result) = " + std::to_string(sizeof(mhc_result)) +
+                                      " (a header older than the library, or struct_size not set)"),
+           false;
+  return true;
+}
+
+void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_result* out) {
+  const std::size_t size = out->struct_size;
+  std::memset(static_cast<void*>(out), 0, sizeof(mhc_result));
+  out->struct_size = size;
+  out->status = status_code(r.status);
+  out->method = method_code(r.method);
+  out->n_contacts = r.n_contacts;
+  out->iterations = r.iterations;
+  out->n_warnings = static_cast<int32_t>(r.warnings.size());
+  for (const std::string& w : r.warnings) out->warnings |= warning_bit(w);
+  out->tY_m = tY;
+  out->Q_N = std::isnan(Q) ? r.Fz : Q;
+  // A case without a solution leaves every result field NaN (empty in cases.csv).
+  const bool failed = r.status == CaseStatus::NoContact || r.status == CaseStatus::OutOfRange;
+  out->dz_m = failed ? kNaN : r.dz;
+  out->approach_m = failed ? kNaN : r.approach;
+  out->residual = failed ? kNaN : r.residual;
+  out->Fz_N = failed ? kNaN : r.Fz;
+  out->Fy_N = failed ? kNaN : r.Fy;
+  out->p_max_Pa = failed ? kNaN : r.pmax;
+  out->area_m2 = failed ? kNaN : r.area;
+  out->gamma_main_rad = kNaN;
+  out->r_roll_main_m = kNaN;
+  out->dFz_ddz_N_per_m = failed ? kNaN : 0.0;
+  if (r.n_contacts > MHC_MAX_CONTACTS) out->warnings |= MHC_WARN_TRUNCATED;
+  const LoadedEllipse* main = nullptr;
+  int k = 0;
+  for (const LoadedEllipse& L : r.loaded) {
+    if (!main || L.s.N > main->s.N) main = &L;
+    const double cg = std::cos(L.g.gamma), sg = std::sin(L.g.gamma);
+    const double dN_dh0 = normal_stiffness(L);
+    out->dFz_ddz_N_per_m += dN_dh0 * cg * cg;  // d(N cos γ)/dδz with dh0/dδz = cos γ (eq. 11)
+    if (plastic && L.s.plastic) out->plastic = 1;
+    if (k >= MHC_MAX_CONTACTS) continue;
+    mhc_contact& c = out->contact[k++];
+    c.index = L.ellipse;
+    c.flags = (plastic && L.s.plastic ? MHC_CONTACT_PLASTIC : 0u) | (L.validity.valid ? 0u : MHC_CONTACT_NON_HERTZIAN) |
+              (L.g.off_profile ? MHC_CONTACT_OFF_PROFILE : 0u);
+    c.y_rail_m = L.g.y_r;
+    c.z_rail_m = L.z_r;
+    c.y_wheel_m = L.g.y_w;
+    c.z_wheel_m = L.z_w;
+    c.gamma_rad = L.g.gamma;
+    c.r_roll_m = L.g.r_roll;
+    c.N_N = L.s.N;
+    c.Fz_N = L.s.N * cg;
+    c.Fy_N = L.s.N * sg;
+    c.a_m = L.s.a;
+    c.b_m = L.s.b;
+    c.A_per_m = L.A;
+    c.B_per_m = L.B;
+    c.p_max_Pa = L.s.p_max;
+    c.area_m2 = units::pi * L.s.a * L.s.b;
+    c.h0_m = L.s.h0;
+    c.approach_m = L.s.approach;
+    c.dN_ddz_N_per_m = dN_dh0 * cg;
+  }
+  if (main) {
+    out->gamma_main_rad = main->g.gamma;
+    out->r_roll_main_m = main->g.r_roll;
+  }
+  // Grid methods: patches (no ellipse law: no curvature sums, no stiffness).
+  const PatchResult* main_patch = nullptr;
+  for (const PatchResult& P : r.patches) {
+    if (!main_patch || P.N > main_patch->N) main_patch = &P;
+    if (plastic && P.plastic_area > 0) out->plastic = 1;
+    if (k >= MHC_MAX_CONTACTS) continue;
+    mhc_contact& c = out->contact[k++];
+    c.index = P.patch;
+    c.flags = plastic && P.plastic_area > 0 ? MHC_CONTACT_PLASTIC : 0u;
+    c.y_rail_m = P.y_r;
+    c.z_rail_m = P.z_r;
+    c.y_wheel_m = P.y_w;
+    c.z_wheel_m = kNaN;
+    c.gamma_rad = P.gamma;
+    c.r_roll_m = P.r_roll;
+    c.N_N = P.N;
+    c.Fz_N = P.N * std::cos(P.gamma);
+    c.Fy_N = P.N * std::sin(P.gamma);
+    c.a_m = 0.5 * P.length_x;
+    c.b_m = 0.5 * P.width_s;
+    c.A_per_m = c.B_per_m = kNaN;
+    c.p_max_Pa = P.pmax;
+    c.area_m2 = P.area;
+    c.h0_m = kNaN;
+    c.approach_m = P.approach;
+    c.dN_ddz_N_per_m = kNaN;
+  }
+  if (!failed && r.method != Method::MultiHertzian) out->dFz_ddz_N_per_m = kNaN;
+  if (main_patch) {
+    out->gamma_main_rad = main_patch->gamma;
+    out->r_roll_main_m = main_patch->r_roll;
+  }
+}
+
+mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, double tY, double roll, double value,
+                     mhc_result* out) {
+  if (roll != 0.0)
+    return fail(MHC_ERR_UNSUPPORTED, "roll = " + format_number(roll) +
+                                         " rad: a relative roll is not supported (the geometry tables are "
+                                         "built for the wheel upright on the rail); pass 0");
+  if (!std::isfinite(tY)) return fail(MHC_ERR_ARGUMENT, "t_Y = " + format_number(tY) + " m: must be finite");
+  if (approach) {
+    if (pair.options.method != Method::MultiHertzian)
+      return fail(MHC_ERR_UNSUPPORTED, std::string("the approach-prescribed solve needs the multi-hertzian method, "
+                                                   "not ") + to_string(pair.options.method));
+    solve_multi_hertz_approach(pair.pg.geo, pair.material, tY, value, pair.options.multi_hertzian, ws.approach, ws.r);
+    fill_result(ws.r, tY, kNaN, pair.plastic, out);
+  } else {
+    ws.r = solve_contact(pair.pg.geo, pair.material, tY, value, pair.options);
+    fill_result(ws.r, tY, value, pair.plastic, out);
+  }
+  if (ws.r.status != CaseStatus::Ok) last_message() = ws.r.message;
+  return MHC_OK;
+}
+
+mhc_error for_each_case(const mhc_pair& pair, std::size_t n, int n_threads,
+                        const std::function<mhc_error(std::size_t, mhc_workspace&)>& body) {
+  unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  std::size_t threads = n_threads > 0 ? static_cast<std::size_t>(n_threads) : hw;
+  constexpr std::size_t kBlock = 256;
+  threads = std::max<std::size_t>(1, std::min(threads, (n + kBlock - 1) / kBlock));
+  std::atomic<std::size_t> next{0};
+  std::vector<mhc_error> codes(threads, MHC_OK);
+  std::vector<std::string> messages(threads);
+  auto worker = [&](std::size_t t) {
+    codes[t] = guarded([&]() -> mhc_error {
+      mhc_workspace ws;
+      ws.pair = &pair;
+      mhc_error first = MHC_OK;
+      for (;;) {
+        const std::size_t b = next.fetch_add(kBlock);
+        if (b >= n) break;
+        const std::size_t e = std::min(n, b + kBlock);
+        for (std::size_t i = b; i < e; ++i) {
+          const mhc_error c = body(i, ws);
+          if (c != MHC_OK && first == MHC_OK) {
+            first = c;
+            messages[t] = last_message();
+          }
+        }
+      }
+      return first;
+    });
+    if (codes[t] != MHC_OK && messages[t].empty()) messages[t] = last_message();
+  };
+  if (threads == 1) {
+    worker(0);
+  } else {
+    std::vector<std::thread> pool;
+    for (std::size_t t = 0; t < threads; ++t) pool.emplace_back(worker, t);
+    for (std::thread& th : pool) th.join();
+  }
+  for (std::size_t t = 0; t < threads; ++t)
+    if (codes[t] != MHC_OK) return fail(codes[t], messages[t]);
+  return MHC_OK;
+}
+
+}  // namespace mh::capi
+
+using namespace mh;
+using mh::capi::fail;
+using mh::capi::guarded;
+
+namespace {
+
+ProfileKind to_kind(int32_t kind) {
+  if (kind == MHC_WHEEL) return ProfileKind::Wheel;
+  if (kind == MHC_RAIL) return ProfileKind::Rail;
+  throw std::invalid_argument("kind = " + std::to_string(kind) + ": must be MHC_WHEEL (1) or MHC_RAIL (2)");
+}
+
+mhc_error need(const void* p, const char* what) {
+  if (p) return MHC_OK;
+  return fail(MHC_ERR_ARGUMENT, std::string(what) + ": null pointer");
+}
+
+/// Profiles, cant check and geometry, as jobs/run.cpp's build_pair_geometry.
+void place_pair(mhc_pair& pair, Profile wheel, Profile rail, const Inclination& incl, const TrackSetup& track,
+                const GeometryOptions& geo) {
+  pair.pg.wheel = std::move(wheel);
+  pair.pg.rail = std::move(rail);
+  pair.pg.cant = check_rail_cant(pair.pg.rail, incl);
+  for (const auto& w : pair.pg.cant.warnings) pair.pg.rail.warnings.push_back(w);
+  pair.pg.geo = build_geometry(pair.pg.wheel, pair.pg.rail, track, geo);
+}
+
+}  // namespace
+
+extern "C" {
+
+const char* mhc_version(void) { return MHCONTACT_VERSION; }
+int32_t mhc_abi_version(void) { return MHC_ABI_VERSION; }
+const char* mhc_fft_backend(void) { return mh::fft_backend(); }
+
+const char* mhc_last_message(void) { return mh::capi::last_message().c_str(); }
+
+const char* mhc_error_name(mhc_error e) {
+  switch (e) {
+    case MHC_OK: return "ok";
+    case MHC_ERR_ARGUMENT: return "argument";
+    case MHC_ERR_INPUT: return "input";
+    case MHC_ERR_UNSUPPORTED: return "unsupported";
+    case MHC_ERR_MEMORY: return "memory";
+    case MHC_ERR_INTERNAL: return "internal";
+  }
+  return "unknown";
+}
+
+const char* mhc_status_name(int32_t status) {
+  switch (status) {
+    case MHC_STATUS_OK: return "ok";
+    case MHC_STATUS_NO_CONTACT: return "no_contact";
+    case MHC_STATUS_OUT_OF_RANGE: return "out_of_range";
+    case MHC_STATUS_NOT_CONVERGED: return "not_converged";
+  }
+  return "unknown";
+}
+
+mhc_error mhc_profile_read(const char* path, int32_t kind, mhc_profile** out) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(path, "path")) return e;
+  if (mhc_error e = need(out, "out")) return e;
+  *out = nullptr;
+  return guarded([&] {
+    ProfileReadOptions o;
+    o.kind = to_kind(kind);
+    auto p = std::make_unique<mhc_profile>();
+    p->profile = read_profile(path, o);
+    *out = p.release();
+    return MHC_OK;
+  });
+}
+
+mhc_error mhc_profile_from_points(const double* y_m, const double* z_m, size_t n, int32_t kind, mhc_profile** out) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(y_m, "y_m")) return e;
+  if (mhc_error e = need(z_m, "z_m")) return e;
+  if (mhc_error e = need(out, "out")) return e;
+  *out = nullptr;
+  return guarded([&] {
+    ProfileReadOptions o;
+    o.kind = to_kind(kind);
+    // The readers' clean-up and checks work in mm (profile/formats/formats.hpp).
+    formats::RawProfile r;
+    r.kind = o.kind;
+    r.format = "points";
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!std::isfinite(y_m[i]) || !std::isfinite(z_m[i]))
+        throw InputError("points[" + std::to_string(i) + "]", format_number(y_m[i]) + ", " + format_number(z_m[i]),
+                         "coordinates must be finite");
+      r.add(y_m[i] * 1000, z_m[i] * 1000, i + 1);
+    }
+    const std::string where = "points";
+    formats::clean_and_check(r, where, o);
+    auto p = std::make_unique<mhc_profile>();
+    p->profile.kind = r.kind;
+    p->profile.source = where;
+    p->profile.format = r.format;
+    p->profile.warnings = r.warnings;
+    p->profile.cleanup = r.cleanup;
+    p->profile.y.resize(r.size());
+    p->profile.z.resize(r.size());
+    for (std::size_t k = 0; k < r.size(); ++k) p->profile.y[k] = r.y[k] / 1000, p->profile.z[k] = r.z[k] / 1000;
+    *out = p.release();
+    return MHC_OK;
+  });
+}
+
+mhc_error mhc_profile_standard(const char* name, mhc_profile** out) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(name, "name")) return e;
+  if (mhc_error e = need(out, "out")) return e;
+  *out = nullptr;
+  return guarded([&] {
+    auto p = std::make_unique<mhc_profile>();
+    p->profile = make_standard_profile(name, Inclination::None);
+    p->standard = name;
+    *out = p.release();
+    return MHC_OK;
+  });
+}
+
+mhc_error mhc_profile_points(const mhc_profile* p, size_t* n, double* y_m, double* z_m, size_t capacity) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(p, "profile")) return e;
+  if (mhc_error e = need(n, "n")) return e;
+  *n = p->profile.size();
+  const std::size_t m = std::min(capacity, p->profile.size());
+  if (y_m) std::copy(p->profile.y.begin(), p->profile.y.begin() + static_cast<std::ptrdiff_t>(m), y_m);
+  if (z_m) std::copy(p->profile.z.begin(), p->profile.z.begin() + static_cast<std::ptrdiff_t>(m), z_m);
+  return MHC_OK;
+}
+
+void mhc_profile_free(mhc_profile* p) { delete p; }
+
+void mhc_pair_options_init(mhc_pair_options* o) {
+  if (!o) return;
+  std::memset(static_cast<void*>(o), 0, sizeof *o);
+  o->struct_size = sizeof *o;
+  const TrackSetup t;
+  o->gauge_m = t.gauge;
+  o->gauge_height_m = t.gauge_height;
+  o->flange_back_distance_m = t.flange_back_distance;
+  o->flange_back_position_m = t.flange_back_position;
+  o->nominal_radius_m = t.nominal_radius;
+  o->rail_inclination = 0;
+  const Material m;
+  o->E_wheel_Pa = m.E;
+  o->nu_wheel = m.nu;
+  o->E_rail_Pa = m.E_rail;
+  o->nu_rail = m.nu_rail;
+  o->p_lim_Pa = m.p_lim;
+  o->method = MHC_METHOD_MULTI_HERTZIAN;
+  const GeometryOptions g;
+  o->tY_min_m = g.tY_min;
+  o->tY_max_m = g.tY_max;
+  o->tY_step_m = g.tY_step;
+  const HalfSpaceOptions h;
+  o->grid_dx_m = h.dx;
+  o->grid_ds_m = h.ds;
+}
+
+mhc_error mhc_pair_create(const mhc_profile* wheel, const mhc_profile* rail, const mhc_pair_options* opt,
+                          mhc_pair** out) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(wheel, "wheel")) return e;
+  if (mhc_error e = need(rail, "rail")) return e;
+  if (mhc_error e = need(opt, "options")) return e;
+  if (mhc_error e = need(out, "out")) return e;
+  *out = nullptr;
+  if (opt->struct_size != sizeof(mhc_pair_options))
+    return fail(MHC_ERR_ARGUMENT, "options: struct_size = " + std::to_string(opt->struct_size) +
+                                      ": must be sizeof(mhc_pair_options) = " +
+                                      std::to_string(sizeof(mhc_pair_options)) + " (call mhc_pair_options_init)");
+  return guarded([&] {
+    if (wheel->profile.kind != ProfileKind::Wheel)
+      return fail(MHC_ERR_ARGUMENT, "wheel: " + wheel->profile.source + " is a " + to_string(wheel->profile.kind) +
+                                        " profile, but a wheel is needed here");
+    if (rail->profile.kind != ProfileKind::Rail)
+      return fail(MHC_ERR_ARGUMENT, "rail: " + rail->profile.source + " is a " + to_string(rail->profile.kind) +
+                                        " profile, but a rail is needed here");
+    auto pair = std::make_unique<mhc_pair>();
+    std::string why;
+    Material& m = pair->material;
+    m.E = opt->E_wheel_Pa;
+    m.nu = opt->nu_wheel;
+    m.E_rail = opt->E_rail_Pa;
+    m.nu_rail = opt->nu_rail;
+    m.p_lim = opt->p_lim_Pa;
+    if (!m.valid(&why)) return fail(MHC_ERR_ARGUMENT, "material: " + why);
+    pair->plastic = std::isfinite(m.p_lim);
+    if (opt->method < MHC_METHOD_MULTI_HERTZIAN || opt->method > MHC_METHOD_AUTO)
+      return fail(MHC_ERR_ARGUMENT, "method = " + std::to_string(opt->method) + ": must be an mhc_method (0 to 3)");
+    MethodOptions& mo = pair->options;
+    mo.method = static_cast<Method>(opt->method);  // same order as mhc_method
+    mo.half_space.dx = opt->grid_dx_m;
+    mo.half_space.ds = opt->grid_ds_m;
+    mo.strips.ds = opt->grid_ds_m;
+    if (!mo.half_space.valid(&why) || !mo.strips.valid(&why)) return fail(MHC_ERR_ARGUMENT, why);
+    if (!(opt->rail_inclination == 0 || opt->rail_inclination >= 5) || !std::isfinite(opt->rail_inclination))
+      return fail(MHC_ERR_ARGUMENT, "rail_inclination = " + format_number(opt->rail_inclination) +
+                                        ": must be 0 (as given) or N >= 5 of a cant 1:N");
+    const Inclination incl = opt->rail_inclination > 0 ? Inclination{Inclination::Mode::Ratio, opt->rail_inclination}
+                                                       : Inclination::AsIs;
+    TrackSetup track;
+    track.gauge = opt->gauge_m;
+    track.gauge_height = opt->gauge_height_m;
+    track.flange_back_distance = opt->flange_back_distance_m;
+    track.flange_back_position = opt->flange_back_position_m;
+    track.nominal_radius = opt->nominal_radius_m;
+    GeometryOptions geo;
+    geo.tY_min = opt->tY_min_m;
+    geo.tY_max = opt->tY_max_m;
+    geo.tY_step = opt->tY_step_m;
+    if (!geo.valid(&why)) return fail(MHC_ERR_ARGUMENT, why);
+    // The cant as the case loader applies it (input/profile_source.cpp load_profile): a standard
+    // rail is generated with it, a read one rotated.
+    Profile r = rail->standard.empty() ? rail->profile : make_standard_profile(rail->standard, incl);
+    if (rail->standard.empty()) rotate_towards_track_centre(r, inclination_angle(incl));
+    place_pair(*pair, wheel->profile, std::move(r), incl, track, geo);
+    *out = pair.release();
+    return MHC_OK;
+  });
+}
+
+mhc_error mhc_pair_from_case_file(const char* path, mhc_pair** out) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(path, "path")) return e;
+  if (mhc_error e = need(out, "out")) return e;
+  *out = nullptr;
+  return guarded([&] {
+    const CaseFile cf = load_case_file(path, false);
+    auto pair = std::make_unique<mhc_pair>();
+    place_pair(*pair, load_profile(cf.wheel, ProfileKind::Wheel), load_profile(cf.rail, ProfileKind::Rail, cf.inclination),
+               cf.inclination, cf.track, cf.geometry);
+    pair->material = cf.material;
+    pair->options = cf.method_options();
+    pair->plastic = cf.model == Model::Plastic;
+    *out = pair.release();
+    return MHC_OK;
+  });
+}
+
+mhc_error mhc_pair_tY_range(const mhc_pair* pair, double* tY_min_m, double* tY_max_m) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(pair, "pair")) return e;
+  if (tY_min_m) *tY_min_m = pair->pg.geo.tY.front();
+  if (tY_max_m) *tY_max_m = pair->pg.geo.tY.back();
+  return MHC_OK;
+}
+
+int32_t mhc_pair_n_ellipses(const mhc_pair* pair) {
+  return pair ? static_cast<int32_t>(pair->pg.geo.n_ellipses()) : 0;
+}
+
+void mhc_pair_free(mhc_pair* pair) { delete pair; }
+
+mhc_error mhc_workspace_create(const mhc_pair* pair, mhc_workspace** out) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(pair, "pair")) return e;
+  if (mhc_error e = need(out, "out")) return e;
+  *out = nullptr;
+  return guarded([&] {
+    auto ws = std::make_unique<mhc_workspace>();
+    ws->pair = pair;
+    ws->approach.geo.reserve(pair->pg.geo.n_ellipses());
+    ws->r.loaded.reserve(pair->pg.geo.n_ellipses());
+    *out = ws.release();
+    return MHC_OK;
+  });
+}
+
+void mhc_workspace_free(mhc_workspace* ws) { delete ws; }
+
+static mhc_error solve_one(const mhc_pair* pair, mhc_workspace* ws, bool approach, double tY_m, double roll_rad,
+                           double value, mhc_result* out) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(pair, "pair")) return e;
+  if (mhc_error e = need(ws, "workspace")) return e;
+  if (!mh::capi::result_ok(out, out ? out->struct_size : 0)) return MHC_ERR_ARGUMENT;
+  if (ws->pair != pair) return fail(MHC_ERR_ARGUMENT, "workspace: made for another pair (mhc_workspace_create)");
+  return guarded([&] { return mh::capi::solve_case(*pair, *ws, approach, tY_m, roll_rad, value, out); });
+}
+
+mhc_error mhc_solve_load(const mhc_pair* pair, mhc_workspace* ws, double tY_m, double roll_rad, double Q_N,
+                         mhc_result* out) {
+  return solve_one(pair, ws, false, tY_m, roll_rad, Q_N, out);
+}
+
+mhc_error mhc_solve_approach(const mhc_pair* pair, mhc_workspace* ws, double tY_m, double roll_rad, double dz_m,
+                             mhc_result* out) {
+  return solve_one(pair, ws, true, tY_m, roll_rad, dz_m, out);
+}
+
+mhc_error mhc_solve_many(const mhc_pair* pair, int32_t prescribe, size_t n, const double* tY_m, const double* roll_rad,
+                         const double* value, mhc_result* out, size_t result_size, int32_t n_threads) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(pair, "pair")) return e;
+  if (n == 0) return MHC_OK;
+  if (mhc_error e = need(tY_m, "tY_m")) return e;
+  if (mhc_error e = need(value, "value")) return e;
+  if (!mh::capi::result_ok(out, result_size)) return MHC_ERR_ARGUMENT;
+  if (prescribe != MHC_PRESCRIBE_LOAD && prescribe != MHC_PRESCRIBE_APPROACH)
+    return fail(MHC_ERR_ARGUMENT, "prescribe = " + std::to_string(prescribe) +
+                                      ": must be MHC_PRESCRIBE_LOAD (0) or MHC_PRESCRIBE_APPROACH (1)");
+  if (n_threads < 0) return fail(MHC_ERR_ARGUMENT, "n_threads = " + std::to_string(n_threads) + ": must be >= 0");
+  const bool approach = prescribe == MHC_PRESCRIBE_APPROACH;
+  return mh::capi::for_each_case(*pair, n, n_threads, [&](std::size_t i, mhc_workspace& ws) {
+    auto* r = reinterpret_cast<mhc_result*>(reinterpret_cast<char*>(out) + i * result_size);
+    r->struct_size = result_size;
+    return mh::capi::solve_case(*pair, ws, approach, tY_m[i], roll_rad ? roll_rad[i] : 0.0, value[i], r);
+  });
+}
+
+}  // extern "C"

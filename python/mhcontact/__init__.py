@@ -1,0 +1,69 @@
+"""mhcontact: wheel-rail normal contact by the multi-Hertzian method (Sebes et al. 2014), the
+elastic half-space and the strip method, for scripts and vehicle-dynamics loops (docs/python.md).
+
+    import mhcontact
+    pair = mhcontact.Pair(mhcontact.Profile.standard("S1002"), mhcontact.Profile.standard("60E1"),
+                          {"rail_inclination": 40})
+    pair.solve(2e-3, Q_N=50e3)["Fy_kN"]
+    cols = pair.solve_many(np.linspace(-6e-3, 10e-3, 1000), Q_N=50e3)   # columns of cases.csv
+
+Inputs are SI (m, N, rad); results carry the names and units of the command's tables (cases.csv:
+tY_mm, Fz_kN, pmax_MPa, ...), with NaN where the table has an empty cell.
+"""
+import numpy as _np
+
+from ._core import (InputError, METHOD_NAMES, STATUS_NAMES, UnsupportedError, Pair, Profile,
+                    __version__, abi_version, fft_backend)
+
+__all__ = ["Pair", "Profile", "InputError", "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES",
+           "CASE_COLUMNS", "__version__", "abi_version", "fft_backend"]
+
+#: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp), then the
+#: vertical contact stiffness dFz/d(dz) (not in cases.csv).
+CASE_COLUMNS = ("case", "tY_mm", "Q_kN", "status", "method", "dz_virtual_mm", "approach_mm", "iterations",
+                "residual", "n_contacts", "Fz_kN", "Fy_kN", "pmax_MPa", "area_mm2", "gamma_main_deg",
+                "r_roll_main_mm", "plastic", "n_warnings", "dFz_ddz_kN_per_mm")
+
+
+def _prescribed(Q_N, dz_m):
+    if (Q_N is None) == (dz_m is None):
+        raise ValueError("give exactly one of Q_N (load prescribed) and dz_m (approach prescribed)")
+    return (dz_m, True) if Q_N is None else (Q_N, False)
+
+
+# Pair (the extension's class): Pair(wheel, rail, options) with options the fields of
+# mhc_pair_options (SI: gauge_m, rail_inclination, E_wheel_Pa, p_lim_Pa, method, tY_min_m, ...), or
+# Pair.from_case_file(path). Immutable; share it between threads. Its solve methods are these:
+
+
+def _pair_solve(self, tY_m, Q_N=None, dz_m=None, roll_rad=0.0):
+    """One case: the load Q_N [N] or the vertical approach dz_m [m] prescribed, at lateral
+    position tY_m [m]. A dict of the cases.csv fields and 'contacts', one dict per contact."""
+    value, approach = _prescribed(Q_N, dz_m)
+    return self._solve(float(tY_m), float(value), approach, float(roll_rad))
+
+
+def _pair_solve_many(self, tY_m, Q_N=None, dz_m=None, threads=0):
+    """Many cases: tY_m [m] and Q_N [N] (or dz_m [m]) broadcast against each other, solved on
+    `threads` threads (0: all cores) without the GIL. A dict of 1-D numpy arrays named as
+    the columns of cases.csv (CASE_COLUMNS); status and method as strings."""
+    value, approach = _prescribed(Q_N, dz_m)
+    t, v = _np.broadcast_arrays(_np.asarray(tY_m, dtype=float), _np.asarray(value, dtype=float))
+    t = _np.ascontiguousarray(t.ravel())
+    v = _np.ascontiguousarray(v.ravel())
+    raw = self._solve_many(t, v, approach, int(threads))
+    out = {"case": _np.arange(1, t.size + 1)}
+    status = _np.asarray(STATUS_NAMES)[raw.pop("status_code")]
+    method = _np.asarray(METHOD_NAMES)[raw.pop("method_code")]
+    for name in CASE_COLUMNS[1:]:
+        if name == "status":
+            out[name] = status
+        elif name == "method":
+            out[name] = method
+        else:
+            out[name] = raw[name]
+    return out
+
+
+Pair.solve = _pair_solve
+Pair.solve_many = _pair_solve_many

@@ -1,0 +1,290 @@
+// mhcontact._core: the Python module over the C interface (include/mhcontact.h, lib/capi). The
+// pure-Python package python/mhcontact/__init__.py wraps it (broadcasting, status names). Columns
+// carry the names and units of cases.csv (lib/output/case_tables.cpp), converted the same way
+// (x * 1e3 for mm, x / 1e3 for kN, ...), so they equal the table's numbers bit for bit.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <mhcontact.h>
+
+#include "capi/handles.hpp"
+#include "core/units.hpp"
+
+namespace py = pybind11;
+using mh::units::deg;
+
+namespace {
+
+py::object g_input_error, g_unsupported_error;
+
+[[noreturn]] void raise(mhc_error e) {
+  const std::string msg = mhc_last_message();
+  switch (e) {
+    case MHC_ERR_INPUT: PyErr_SetString(g_input_error.ptr(), msg.c_str()); break;
+    case MHC_ERR_UNSUPPORTED: PyErr_SetString(g_unsupported_error.ptr(), msg.c_str()); break;
+    case MHC_ERR_ARGUMENT: PyErr_SetString(PyExc_ValueError, msg.c_str()); break;
+    case MHC_ERR_MEMORY: PyErr_SetString(PyExc_MemoryError, msg.c_str()); break;
+    default: PyErr_SetString(PyExc_RuntimeError, msg.c_str()); break;
+  }
+  throw py::error_already_set();
+}
+void check(mhc_error e) {
+  if (e != MHC_OK) raise(e);
+}
+
+struct Profile {
+  mhc_profile* p = nullptr;
+  ~Profile() { mhc_profile_free(p); }
+};
+
+struct Pair {
+  mhc_pair* p = nullptr;
+  ~Pair() { mhc_pair_free(p); }
+};
+
+int32_t kind_of(const std::string& k) {
+  if (k == "wheel") return MHC_WHEEL;
+  if (k == "rail") return MHC_RAIL;
+  throw py::value_error("kind = \"" + k + "\": must be \"wheel\" or \"rail\"");
+}
+
+py::dict contact_dict(const mhc_contact& c) {
+  py::dict d;
+  d["ellipse"] = c.index;
+  d["y_rail_mm"] = c.y_rail_m * 1e3;
+  d["z_rail_mm"] = c.z_rail_m * 1e3;
+  d["y_wheel_mm"] = c.y_wheel_m * 1e3;
+  d["z_wheel_mm"] = c.z_wheel_m * 1e3;
+  d["gamma_deg"] = c.gamma_rad / deg;
+  d["r_roll_mm"] = c.r_roll_m * 1e3;
+  d["h0_mm"] = c.h0_m * 1e3;
+  d["N_kN"] = c.N_N / 1e3;
+  d["Fz_kN"] = c.Fz_N / 1e3;
+  d["Fy_kN"] = c.Fy_N / 1e3;
+  d["a_mm"] = c.a_m * 1e3;
+  d["b_mm"] = c.b_m * 1e3;
+  d["A_per_mm"] = c.A_per_m * 1e-3;
+  d["B_per_mm"] = c.B_per_m * 1e-3;
+  d["pmax_MPa"] = c.p_max_Pa / 1e6;
+  d["area_mm2"] = c.area_m2 * 1e6;
+  d["approach_mm"] = c.approach_m * 1e3;
+  d["dN_ddz_kN_per_mm"] = c.dN_ddz_N_per_m / 1e6;
+  d["plastic"] = (c.flags & MHC_CONTACT_PLASTIC) != 0;
+  d["hertz_valid"] = (c.flags & MHC_CONTACT_NON_HERTZIAN) == 0;
+  d["off_profile"] = (c.flags & MHC_CONTACT_OFF_PROFILE) != 0;
+  return d;
+}
+
+const char* method_name(int32_t m) {
+  static const char* names[] = {"multi-hertzian", "half-space", "strips", "auto"};
+  return m >= 0 && m <= 3 ? names[m] : "?";
+}
+
+py::dict result_dict(const mhc_result& r) {
+  py::dict d;
+  d["tY_mm"] = r.tY_m * 1e3;
+  d["Q_kN"] = r.Q_N / 1e3;
+  d["status"] = mhc_status_name(r.status);
+  d["method"] = method_name(r.method);
+  d["dz_virtual_mm"] = r.dz_m * 1e3;
+  d["approach_mm"] = r.approach_m * 1e3;
+  d["iterations"] = r.iterations;
+  d["residual"] = r.residual;
+  d["n_contacts"] = r.n_contacts;
+  d["Fz_kN"] = r.Fz_N / 1e3;
+  d["Fy_kN"] = r.Fy_N / 1e3;
+  d["pmax_MPa"] = r.p_max_Pa / 1e6;
+  d["area_mm2"] = r.area_m2 * 1e6;
+  d["gamma_main_deg"] = r.gamma_main_rad / deg;
+  d["r_roll_main_mm"] = r.r_roll_main_m * 1e3;
+  d["plastic"] = r.plastic;
+  d["n_warnings"] = r.n_warnings;
+  d["dFz_ddz_kN_per_mm"] = r.dFz_ddz_N_per_m / 1e6;
+  d["message"] = r.status == MHC_STATUS_OK ? std::string() : std::string(mhc_last_message());
+  py::list cs;
+  for (int k = 0; k < std::min<int>(r.n_contacts, MHC_MAX_CONTACTS); ++k) cs.append(contact_dict(r.contact[k]));
+  d["contacts"] = cs;
+  return d;
+}
+
+/// The float columns of solve_many, in the order of cases.csv, then the stiffness.
+const char* kFloatCols[] = {"tY_mm",    "Q_kN",     "dz_virtual_mm", "approach_mm",    "iterations",
+                            "residual", "Fz_kN",    "Fy_kN",         "pmax_MPa",       "area_mm2",
+                            "gamma_main_deg", "r_roll_main_mm", "dFz_ddz_kN_per_mm"};
+constexpr int kNFloat = sizeof kFloatCols / sizeof kFloatCols[0];
+
+void fill_columns(const mhc_result& r, std::size_t i, double* const* f, int8_t* status, int8_t* method,
+                  int32_t* n_contacts, int8_t* plastic, int32_t* n_warnings) {
+  const bool failed = r.status == MHC_STATUS_NO_CONTACT || r.status == MHC_STATUS_OUT_OF_RANGE;
+  const double v[kNFloat] = {r.tY_m * 1e3,       r.Q_N / 1e3,     r.dz_m * 1e3,
+                             r.approach_m * 1e3, failed ? NAN : static_cast<double>(r.iterations),
+                             r.residual,         r.Fz_N / 1e3,    r.Fy_N / 1e3,
+                             r.p_max_Pa / 1e6,   r.area_m2 * 1e6, r.gamma_main_rad / deg,
+                             r.r_roll_main_m * 1e3, r.dFz_ddz_N_per_m / 1e6};
+  for (int c = 0; c < kNFloat; ++c) f[c][i] = v[c];
+  status[i] = static_cast<int8_t>(r.status);
+  method[i] = static_cast<int8_t>(r.method);
+  n_contacts[i] = r.n_contacts;
+  plastic[i] = static_cast<int8_t>(failed ? -1 : r.plastic);
+  n_warnings[i] = r.n_warnings;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "mhcontact: wheel-rail normal contact (multi-Hertzian, half-space, strips); docs/python.md";
+  g_input_error = py::reinterpret_borrow<py::object>(
+      PyErr_NewException("mhcontact.InputError", PyExc_ValueError, nullptr));
+  g_unsupported_error = py::reinterpret_borrow<py::object>(
+      PyErr_NewException("mhcontact.UnsupportedError", PyExc_NotImplementedError, nullptr));
+  m.attr("InputError") = g_input_error;
+  m.attr("UnsupportedError") = g_unsupported_error;
+  m.attr("__version__") = mhc_version();
+  m.attr("abi_version") = mhc_abi_version();
+  m.attr("fft_backend") = mhc_fft_backend();
+  m.attr("STATUS_NAMES") = py::make_tuple("ok", "no_contact", "out_of_range", "not_converged");
+  m.attr("METHOD_NAMES") = py::make_tuple("multi-hertzian", "half-space", "strips", "auto");
+
+  py::class_<Profile>(m, "Profile", "A wheel or rail profile (immutable).")
+      .def_static("read", [](const std::string& path, const std::string& kind) {
+            auto p = std::make_unique<Profile>();
+            check(mhc_profile_read(path.c_str(), kind_of(kind), &p->p));
+            return p;
+          }, py::arg("path"), py::arg("kind"), "Read a profile file in any format the command reads.")
+      .def_static("standard", [](const std::string& name) {
+            auto p = std::make_unique<Profile>();
+            check(mhc_profile_standard(name.c_str(), &p->p));
+            return p;
+          }, py::arg("name"), "\"S1002\", \"60E1\" or \"54E1\".")
+      .def_static("from_points", [](py::array_t<double, py::array::c_style | py::array::forcecast> y_m,
+                                    py::array_t<double, py::array::c_style | py::array::forcecast> z_m,
+                                    const std::string& kind) {
+            if (y_m.ndim() != 1 || z_m.ndim() != 1 || y_m.size() != z_m.size())
+              throw py::value_error("y_m and z_m must be 1-D arrays of the same length");
+            auto p = std::make_unique<Profile>();
+            check(mhc_profile_from_points(y_m.data(), z_m.data(), static_cast<size_t>(y_m.size()), kind_of(kind), &p->p));
+            return p;
+          }, py::arg("y_m"), py::arg("z_m"), py::arg("kind"), "A profile from points [m] in the canonical frame.")
+      .def("points", [](const Profile& p) {
+            size_t n = 0;
+            check(mhc_profile_points(p.p, &n, nullptr, nullptr, 0));
+            py::array_t<double> y(n), z(n);
+            check(mhc_profile_points(p.p, &n, y.mutable_data(), z.mutable_data(), n));
+            return py::make_tuple(y, z);
+          }, "(y_m, z_m) as used, after the clean-up.");
+
+  py::class_<Pair>(m, "Pair", "A wheel-rail pair: geometry tables, material, model, method (immutable).")
+      .def(py::init([](const Profile& wheel, const Profile& rail, py::dict kw) {
+             mhc_pair_options o;
+             mhc_pair_options_init(&o);
+             for (auto item : kw) {
+               const std::string k = py::str(item.first);
+               if (k == "method") {
+                 const std::string v = py::str(item.second);
+                 int mth = -1;
+                 for (int i = 0; i < 4; ++i)
+                   if (v == method_name(i)) mth = i;
+                 if (mth < 0) throw py::value_error("method = \"" + v + "\": must be multi-hertzian, half-space, strips or auto");
+                 o.method = mth;
+                 continue;
+               }
+               const double v = item.second.cast<double>();
+               if (k == "gauge_m") o.gauge_m = v;
+               else if (k == "gauge_height_m") o.gauge_height_m = v;
+               else if (k == "flange_back_distance_m") o.flange_back_distance_m = v;
+               else if (k == "flange_back_position_m") o.flange_back_position_m = v;
+               else if (k == "nominal_radius_m") o.nominal_radius_m = v;
+               else if (k == "rail_inclination") o.rail_inclination = v;
+               else if (k == "E_wheel_Pa") o.E_wheel_Pa = v;
+               else if (k == "nu_wheel") o.nu_wheel = v;
+               else if (k == "E_rail_Pa") o.E_rail_Pa = v;
+               else if (k == "nu_rail") o.nu_rail = v;
+               else if (k == "p_lim_Pa") o.p_lim_Pa = v;
+               else if (k == "tY_min_m") o.tY_min_m = v;
+               else if (k == "tY_max_m") o.tY_max_m = v;
+               else if (k == "tY_step_m") o.tY_step_m = v;
+               else if (k == "grid_dx_m") o.grid_dx_m = v;
+               else if (k == "grid_ds_m") o.grid_ds_m = v;
+               else throw py::type_error("Pair: unknown option " + k + " (the fields of mhc_pair_options, docs/c-api.md)");
+             }
+             auto p = std::make_unique<Pair>();
+             {
+               py::gil_scoped_release nogil;
+               const mhc_error e = mhc_pair_create(wheel.p, rail.p, &o, &p->p);
+               if (e != MHC_OK) {
+                 py::gil_scoped_acquire gil;
+                 raise(e);
+               }
+             }
+             return p;
+           }), py::arg("wheel"), py::arg("rail"), py::arg("options") = py::dict())
+      .def_static("from_case_file", [](const std::string& path) {
+            auto p = std::make_unique<Pair>();
+            check(mhc_pair_from_case_file(path.c_str(), &p->p));
+            return p;
+          }, py::arg("path"), "The pair of a case file, exactly as `mhcontact run` builds it.")
+      .def_property_readonly("tY_range_m", [](const Pair& p) {
+            double lo = 0, hi = 0;
+            check(mhc_pair_tY_range(p.p, &lo, &hi));
+            return py::make_tuple(lo, hi);
+          })
+      .def_property_readonly("n_ellipses", [](const Pair& p) { return mhc_pair_n_ellipses(p.p); })
+      .def("_solve", [](const Pair& p, double tY_m, double value, bool approach, double roll_rad) {
+            mhc_workspace* ws = nullptr;
+            check(mhc_workspace_create(p.p, &ws));
+            mhc_result r;
+            r.struct_size = sizeof r;
+            const mhc_error e = approach ? mhc_solve_approach(p.p, ws, tY_m, roll_rad, value, &r)
+                                         : mhc_solve_load(p.p, ws, tY_m, roll_rad, value, &r);
+            mhc_workspace_free(ws);
+            check(e);
+            return result_dict(r);
+          })
+      .def("_solve_many", [](const Pair& p, py::array_t<double, py::array::c_style | py::array::forcecast> tY_m,
+                             py::array_t<double, py::array::c_style | py::array::forcecast> value, bool approach,
+                             int threads) {
+            const std::size_t n = static_cast<std::size_t>(tY_m.size());
+            if (static_cast<std::size_t>(value.size()) != n) throw py::value_error("tY and Q (or dz) differ in length");
+            std::vector<py::array_t<double>> fcols;
+            std::vector<double*> f;
+            for (int c = 0; c < kNFloat; ++c) {
+              fcols.emplace_back(n);
+              f.push_back(fcols.back().mutable_data());
+            }
+            py::array_t<int8_t> status(n), method(n), plastic(n);
+            py::array_t<int32_t> n_contacts(n), n_warnings(n);
+            int8_t* st = status.mutable_data();
+            int8_t* me = method.mutable_data();
+            int8_t* pl = plastic.mutable_data();
+            int32_t* nc = n_contacts.mutable_data();
+            int32_t* nw = n_warnings.mutable_data();
+            const double* t = tY_m.data();
+            const double* v = value.data();
+            mhc_error e;
+            {
+              py::gil_scoped_release nogil;  // the solve runs without the GIL
+              e = mh::capi::for_each_case(*p.p, n, threads, [&](std::size_t i, mhc_workspace& ws) {
+                mhc_result r;
+                r.struct_size = sizeof r;
+                const mhc_error c = mh::capi::solve_case(*p.p, ws, approach, t[i], 0.0, v[i], &r);
+                if (c == MHC_OK) fill_columns(r, i, f.data(), st, me, nc, pl, nw);
+                return c;
+              });
+            }
+            check(e);
+            py::dict d;
+            for (int c = 0; c < kNFloat; ++c) d[kFloatCols[c]] = fcols[static_cast<std::size_t>(c)];
+            d["status_code"] = status;
+            d["method_code"] = method;
+            d["n_contacts"] = n_contacts;
+            d["plastic"] = plastic;
+            d["n_warnings"] = n_warnings;
+            return d;
+          });
+}

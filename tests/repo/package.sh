@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The CMake package as a user consumes it: `cmake --install` into a fresh prefix, then the
+# examples copied OUTSIDE the source tree find it (find_package(mhcontact)), build and run:
+# examples/c_stepping (C99), and examples/python_stepping.py against the installed Python module
+# when the build has one. Usage: package.sh SOURCE_DIR BUILD_DIR [PYTHON]
+set -euo pipefail
+src=$1; build=$2; python=${3:-python3}
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+cmake --install "$build" --prefix "$tmp/p" >/dev/null
+for f in include/mhcontact.h lib/cmake/mhcontact/mhcontactConfig.cmake share/doc/mhcontact/examples/c_stepping/c_stepping.c; do
+  [ -e "$tmp/p/$f" ] || { echo "package: $f missing"; exit 1; }
+done
+# The library exports the C interface only.
+lib=$(ls "$tmp"/p/lib/libmhcontact.so.* | head -1)
+if nm -D --defined-only "$lib" | awk '{print $3}' | grep -v '^mhc_' | grep -q .; then
+  echo "package: $lib exports more than mhc_*:"; nm -D --defined-only "$lib" | grep -v ' mhc_' | head; exit 1
+fi
+cp -r "$tmp/p/share/doc/mhcontact/examples/c_stepping" "$tmp/c_stepping"
+cmake -S "$tmp/c_stepping" -B "$tmp/c_build" -DCMAKE_PREFIX_PATH="$tmp/p" >/dev/null
+cmake --build "$tmp/c_build" >/dev/null
+"$tmp/c_build/c_stepping" > "$tmp/c.out"
+grep -q '^t_s,tY_mm,status' "$tmp/c.out" || { echo "package: c_stepping printed no table"; cat "$tmp/c.out"; exit 1; }
+[ "$(grep -c ',ok,' "$tmp/c.out")" = 21 ] || { echo "package: c_stepping: expected 21 ok rows"; cat "$tmp/c.out"; exit 1; }
+grep -q '^approach .*Fz 50.000 kN' "$tmp/c.out" || { echo "package: c_stepping: approach round trip"; cat "$tmp/c.out"; exit 1; }
+grep -q '^roll refused' "$tmp/c.out" || { echo "package: c_stepping: roll not refused"; exit 1; }
+"$tmp/c_build/c_stepping" "$src/cases/manchester.json" > "$tmp/m.out"
+"$tmp/c_build/c_stepping" /nonexistent.json 2> "$tmp/err" && { echo "package: a missing case file must fail"; exit 1; }
+grep -q 'c_stepping: /nonexistent.json: input: ' "$tmp/err" || { echo "package: error message"; cat "$tmp/err"; exit 1; }
+# The Python module, installed under the prefix, and the Python example.
+py=$(find "$tmp/p" -path '*/mhcontact/__init__.py' 2>/dev/null | head -1)
+if [ -n "$py" ]; then
+  cp "$tmp/p/share/doc/mhcontact/examples/python_stepping.py" "$tmp/"
+  (cd "$tmp" && PYTHONPATH="$(dirname "$(dirname "$py")")" MPLBACKEND=Agg "$python" python_stepping.py --plot "$tmp/steps.png" > "$tmp/py.out")
+  grep -q '^t_s,tY_mm,status' "$tmp/py.out" || { echo "package: python_stepping printed no table"; cat "$tmp/py.out"; exit 1; }
+  # The same numbers as the C example, step for step.
+  diff <(grep ',ok,' "$tmp/c.out" | cut -d, -f1-6) <(grep ',ok,' "$tmp/py.out" | cut -d, -f1-6) \
+    || { echo "package: C and Python examples differ"; exit 1; }
+  echo "package: OK (C and Python)"
+else
+  echo "package: OK (C; no Python module in this build)"
+fi

@@ -1,0 +1,324 @@
+// The C interface (include/mhcontact.h) as a host program uses it: errors crossing the boundary
+// with the command's wording, unsupported input refused, no-contact cases, identical numbers
+// through the command and the C interface, the approach-prescribed solve against the
+// load-prescribed one, and two threads on one pair.
+#include <catch2/catch.hpp>
+
+#include <mhcontact.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+#include "cli.hpp"
+#include "core/errors.hpp"
+#include "profile/read.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+const std::string kSrc = MHCONTACT_SOURCE_DIR;
+const std::string kManchester = kSrc + "/cases/manchester.json";
+
+/// The Manchester pair of cases/manchester.json, built once for the file's tests.
+const mhc_pair* manchester() {
+  static mhc_pair* pair = [] {
+    mhc_pair* p = nullptr;
+    const mhc_error e = mhc_pair_from_case_file(kManchester.c_str(), &p);
+    if (e != MHC_OK) throw std::runtime_error(mhc_last_message());
+    return p;
+  }();
+  return pair;
+}
+
+mhc_result fresh() {
+  mhc_result r;
+  std::memset(&r, 0xab, sizeof r);  // garbage: every field must be written
+  r.struct_size = sizeof r;
+  return r;
+}
+
+struct Workspace {
+  mhc_workspace* ws = nullptr;
+  explicit Workspace(const mhc_pair* p) { REQUIRE(mhc_workspace_create(p, &ws) == MHC_OK); }
+  ~Workspace() { mhc_workspace_free(ws); }
+};
+
+/// cases.csv as rows of column -> text.
+std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> head;
+  std::stringstream hs(line);
+  for (std::string c; std::getline(hs, c, ',');) head.push_back(c);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    std::map<std::string, std::string> row;
+    std::stringstream ls(line);
+    std::string c;
+    for (std::size_t k = 0; k < head.size() && std::getline(ls, c, ','); ++k) row[head[k]] = c;
+    rows.push_back(row);
+  }
+  return rows;
+}
+}  // namespace
+
+TEST_CASE("C interface: version, ABI version and FFT backend", "[capi]") {
+  CHECK(mhc_abi_version() == MHC_ABI_VERSION);
+  CHECK(std::string(mhc_version()).size() > 0);
+  const std::string fft = mhc_fft_backend();
+  CHECK((fft == "kissfft" || fft == "fftw3"));
+}
+
+TEST_CASE("C interface: a bad profile file is an input error with the command's message", "[capi]") {
+  const std::string bad = kSrc + "/tests/data/does_not_exist.prr";
+  mhc_profile* p = reinterpret_cast<mhc_profile*>(1);
+  CHECK(mhc_profile_read(bad.c_str(), MHC_RAIL, &p) == MHC_ERR_INPUT);
+  CHECK(p == nullptr);
+  std::string expected;
+  try {
+    mh::ProfileReadOptions o;
+    o.kind = mh::ProfileKind::Rail;
+    mh::read_profile(bad, o);
+  } catch (const mh::InputError& e) {
+    expected = e.what();  // what `mhcontact` prints after "mhcontact: error: "
+  }
+  REQUIRE_FALSE(expected.empty());
+  CHECK(std::string(mhc_last_message()) == expected);
+  // The next successful call clears the message.
+  mhc_profile* s = nullptr;
+  REQUIRE(mhc_profile_standard("S1002", &s) == MHC_OK);
+  CHECK(std::string(mhc_last_message()).empty());
+  mhc_profile_free(s);
+  CHECK(mhc_profile_standard("S1003", &s) == MHC_ERR_INPUT);
+  CHECK_THAT(mhc_last_message(), Catch::Contains("S1002"));
+  CHECK(mhc_profile_read(nullptr, MHC_RAIL, &s) == MHC_ERR_ARGUMENT);
+  CHECK(mhc_profile_read(bad.c_str(), 7, &s) == MHC_ERR_ARGUMENT);
+}
+
+TEST_CASE("C interface: a bad case file is an input error naming the file", "[capi]") {
+  const std::string dir = fs::temp_directory_path() / ("mhcontact_capi_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string cf = dir + "/bad.json";
+  std::ofstream(cf) << "{\"wheel\": \"x.prw\", \"rail\": \"y.prr\", \"materia\": {}}";
+  mhc_pair* p = nullptr;
+  CHECK(mhc_pair_from_case_file(cf.c_str(), &p) == MHC_ERR_INPUT);
+  CHECK(p == nullptr);
+  CHECK_THAT(mhc_last_message(), Catch::Contains("bad.json"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("C interface: unsupported input is refused, never ignored", "[capi]") {
+  const mhc_pair* pair = manchester();
+  Workspace w(pair);
+  mhc_result r = fresh();
+  CHECK(mhc_solve_load(pair, w.ws, 0.0, 1e-3, 50e3, &r) == MHC_ERR_UNSUPPORTED);
+  CHECK_THAT(mhc_last_message(), Catch::Contains("roll"));
+  CHECK(mhc_solve_approach(pair, w.ws, 0.0, -1e-3, 1e-4, &r) == MHC_ERR_UNSUPPORTED);
+  // The approach-prescribed solve needs the multi-Hertzian method.
+  mhc_pair* hs = nullptr;
+  REQUIRE(mhc_pair_from_case_file((kSrc + "/cases/manchester-halfspace.json").c_str(), &hs) == MHC_OK);
+  Workspace wh(hs);
+  CHECK(mhc_solve_approach(hs, wh.ws, 0.0, 0.0, 1e-4, &r) == MHC_ERR_UNSUPPORTED);
+  CHECK_THAT(mhc_last_message(), Catch::Contains("multi-hertzian"));
+  mhc_pair_free(hs);
+  // A result without its size, a workspace of another pair.
+  mhc_result small = fresh();
+  small.struct_size = sizeof small - 8;
+  CHECK(mhc_solve_load(pair, w.ws, 0.0, 0.0, 50e3, &small) == MHC_ERR_ARGUMENT);
+  CHECK_THAT(mhc_last_message(), Catch::Contains("struct_size"));
+  CHECK(mhc_solve_load(pair, w.ws, 0.0, 0.0, 50e3, nullptr) == MHC_ERR_ARGUMENT);
+}
+
+TEST_CASE("C interface: no contact and out of range are statuses with the command's message", "[capi]") {
+  const mhc_pair* pair = manchester();
+  Workspace w(pair);
+  mhc_result r = fresh();
+  REQUIRE(mhc_solve_load(pair, w.ws, 0.0, 0.0, 0.0, &r) == MHC_OK);
+  CHECK(r.status == MHC_STATUS_NO_CONTACT);
+  CHECK(std::string(mhc_status_name(r.status)) == "no_contact");
+  CHECK(std::string(mhc_last_message()) == "Q must be > 0");
+  CHECK(r.n_contacts == 0);
+  CHECK(std::isnan(r.Fz_N));
+  REQUIRE(mhc_solve_load(pair, w.ws, 0.05, 0.0, 50e3, &r) == MHC_OK);
+  CHECK(r.status == MHC_STATUS_OUT_OF_RANGE);
+  CHECK(std::string(mhc_last_message()) == "t_Y = 50 mm outside the geometry table [-10, 12] mm");
+  // The wheel lifted off the rail: no force, a status, not an error.
+  REQUIRE(mhc_solve_approach(pair, w.ws, 0.0, 0.0, -1e-5, &r) == MHC_OK);
+  CHECK(r.status == MHC_STATUS_NO_CONTACT);
+  CHECK(r.n_contacts == 0);
+  REQUIRE(mhc_solve_approach(pair, w.ws, 0.05, 0.0, 1e-4, &r) == MHC_OK);
+  CHECK(r.status == MHC_STATUS_OUT_OF_RANGE);
+}
+
+TEST_CASE("C interface: the same numbers as `mhcontact run` on the Manchester sweep", "[capi]") {
+  const std::string dir = fs::temp_directory_path() / ("mhcontact_capi_run_" + std::to_string(::getpid()));
+  std::ostringstream o, e;
+  REQUIRE(mh::run_cli({"run", kManchester, "-o", dir, "--digits", "max", "-q", "--format", "csv"}, o, e) == 0);
+  const auto rows = read_csv(dir + "/cases.csv");
+  fs::remove_all(dir);
+  REQUIRE(rows.size() == 99);
+  const mhc_pair* pair = manchester();
+  Workspace w(pair);
+  std::vector<double> tY, Q;
+  for (const auto& row : rows) {
+    tY.push_back(std::stod(row.at("tY_mm")) * 1e-3);  // as the case file's reader: mm * units::mm
+    Q.push_back(std::stod(row.at("Q_kN")) * 1e3);
+  }
+  std::vector<mhc_result> many(rows.size());
+  REQUIRE(mhc_solve_many(pair, MHC_PRESCRIBE_LOAD, rows.size(), tY.data(), nullptr, Q.data(), many.data(),
+                         sizeof(mhc_result), 2) == MHC_OK);
+  int compared = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    mhc_result r = fresh();
+    REQUIRE(mhc_solve_load(pair, w.ws, tY[i], 0.0, Q[i], &r) == MHC_OK);
+    INFO("case " << i << " tY " << rows[i].at("tY_mm") << " mm, Q " << rows[i].at("Q_kN") << " kN");
+    CHECK(mhc_status_name(r.status) == rows[i].at("status"));
+    CHECK(r.n_contacts == std::stoi(rows[i].at("n_contacts")));
+    // Bitwise: the table's shortest round-trip text read back, against the same unit conversion.
+    CHECK(r.Fz_N / 1e3 == std::stod(rows[i].at("Fz_kN")));
+    CHECK(r.Fy_N / 1e3 == std::stod(rows[i].at("Fy_kN")));
+    CHECK(r.p_max_Pa / 1e6 == std::stod(rows[i].at("pmax_MPa")));
+    CHECK(r.area_m2 * 1e6 == std::stod(rows[i].at("area_mm2")));
+    CHECK(r.dz_m * 1e3 == std::stod(rows[i].at("dz_virtual_mm")));
+    CHECK(r.approach_m * 1e3 == std::stod(rows[i].at("approach_mm")));
+    CHECK(r.n_warnings == std::stoi(rows[i].at("n_warnings")));
+    CHECK(std::memcmp(&r, &many[i], sizeof r) == 0);  // solve_many on 2 threads: the same bytes
+    ++compared;
+  }
+  CHECK(compared == 99);
+}
+
+TEST_CASE("C interface: the approach-prescribed solve gives back the load and its stiffness", "[capi]") {
+  const mhc_pair* pair = manchester();
+  Workspace w(pair);
+  for (double tY_mm : {-4.0, 0.0, 3.0, 6.5, 8.5}) {
+    for (double Q : {10e3, 50e3, 100e3}) {
+      INFO("tY " << tY_mm << " mm, Q " << Q << " N");
+      mhc_result load = fresh(), appr = fresh(), up = fresh(), down = fresh();
+      REQUIRE(mhc_solve_load(pair, w.ws, tY_mm * 1e-3, 0.0, Q, &load) == MHC_OK);
+      REQUIRE(load.status == MHC_STATUS_OK);
+      REQUIRE(mhc_solve_approach(pair, w.ws, tY_mm * 1e-3, 0.0, load.dz_m, &appr) == MHC_OK);
+      REQUIRE(appr.status == MHC_STATUS_OK);
+      CHECK(appr.Fz_N == Approx(Q).epsilon(1e-11));
+      CHECK(appr.Fy_N == Approx(load.Fy_N).epsilon(1e-10));
+      CHECK(appr.n_contacts == load.n_contacts);
+      CHECK(appr.dFz_ddz_N_per_m == Approx(load.dFz_ddz_N_per_m).epsilon(1e-10));
+      // dFz/d(dz) against a central difference (step 1e-4 of dz: truncation ~1e-8 relative).
+      const double h = 1e-4 * load.dz_m;
+      REQUIRE(mhc_solve_approach(pair, w.ws, tY_mm * 1e-3, 0.0, load.dz_m + h, &up) == MHC_OK);
+      REQUIRE(mhc_solve_approach(pair, w.ws, tY_mm * 1e-3, 0.0, load.dz_m - h, &down) == MHC_OK);
+      if (up.n_contacts == down.n_contacts)
+        CHECK(load.dFz_ddz_N_per_m == Approx((up.Fz_N - down.Fz_N) / (2 * h)).epsilon(1e-6));
+      double sum = 0;
+      for (int k = 0; k < std::min(load.n_contacts, MHC_MAX_CONTACTS); ++k) {
+        const mhc_contact& c = load.contact[k];
+        sum += c.dN_ddz_N_per_m * std::cos(c.gamma_rad);
+        CHECK(c.Fz_N == Approx(c.N_N * std::cos(c.gamma_rad)));
+        CHECK(c.area_m2 == Approx(M_PI * c.a_m * c.b_m));
+        CHECK(c.B_per_m > 0);
+      }
+      CHECK(sum == Approx(load.dFz_ddz_N_per_m).epsilon(1e-12));
+    }
+  }
+}
+
+TEST_CASE("C interface: two threads on one pair give the results of one", "[capi]") {
+  const mhc_pair* pair = manchester();
+  const int n = 2000;
+  std::vector<double> tY(n), Q(n);
+  for (int i = 0; i < n; ++i) {
+    tY[i] = (-6.0 + 16.0 * i / (n - 1)) * 1e-3;
+    Q[i] = 20e3 + 60e3 * ((i * 7) % 11) / 10.0;
+  }
+  std::vector<mhc_result> serial(n), a(n), b(n);
+  {
+    Workspace w(pair);
+    for (int i = 0; i < n; ++i) {
+      serial[i].struct_size = sizeof(mhc_result);
+      REQUIRE(mhc_solve_load(pair, w.ws, tY[i], 0.0, Q[i], &serial[i]) == MHC_OK);
+    }
+  }
+  // Both threads solve every case, in opposite orders, at the same time.
+  auto run = [&](std::vector<mhc_result>* out, bool reverse, int* failures) {
+    mhc_workspace* ws = nullptr;
+    if (mhc_workspace_create(pair, &ws) != MHC_OK) { ++*failures; return; }
+    for (int k = 0; k < n; ++k) {
+      const int i = reverse ? n - 1 - k : k;
+      (*out)[i].struct_size = sizeof(mhc_result);
+      if (mhc_solve_load(pair, ws, tY[i], 0.0, Q[i], &(*out)[i]) != MHC_OK) ++*failures;
+    }
+    mhc_workspace_free(ws);
+  };
+  int fa = 0, fb = 0;
+  std::thread ta(run, &a, false, &fa), tb(run, &b, true, &fb);
+  ta.join();
+  tb.join();
+  CHECK(fa == 0);
+  CHECK(fb == 0);
+  int differ = 0;
+  for (int i = 0; i < n; ++i)
+    differ += std::memcmp(&serial[i], &a[i], sizeof(mhc_result)) != 0 || std::memcmp(&serial[i], &b[i], sizeof(mhc_result)) != 0;
+  CHECK(differ == 0);
+}
+
+TEST_CASE("C interface: profiles from points and standard names build a pair", "[capi]") {
+  mhc_profile *w = nullptr, *r = nullptr;
+  REQUIRE(mhc_profile_standard("S1002", &w) == MHC_OK);
+  REQUIRE(mhc_profile_standard("60E1", &r) == MHC_OK);
+  size_t n = 0;
+  REQUIRE(mhc_profile_points(w, &n, nullptr, nullptr, 0) == MHC_OK);
+  std::vector<double> y(n), z(n);
+  REQUIRE(mhc_profile_points(w, &n, y.data(), z.data(), n) == MHC_OK);
+  mhc_profile* wp = nullptr;
+  REQUIRE(mhc_profile_from_points(y.data(), z.data(), n, MHC_WHEEL, &wp) == MHC_OK);
+  // The readers' checks run on points too: a wheel upside down is refused.
+  std::vector<double> zm(z);
+  for (double& v : zm) v = -v;
+  mhc_profile* bad = nullptr;
+  CHECK(mhc_profile_from_points(y.data(), zm.data(), n, MHC_WHEEL, &bad) == MHC_ERR_INPUT);
+  CHECK(bad == nullptr);
+  CHECK(std::string(mhc_last_message()).size() > 0);
+
+  mhc_pair_options o;
+  mhc_pair_options_init(&o);
+  o.rail_inclination = 40;
+  o.tY_min_m = -8e-3;
+  o.tY_max_m = 10e-3;
+  mhc_pair *p1 = nullptr, *p2 = nullptr;
+  REQUIRE(mhc_pair_create(w, r, &o, &p1) == MHC_OK);
+  REQUIRE(mhc_pair_create(wp, r, &o, &p2) == MHC_OK);
+  mhc_pair* none = nullptr;
+  CHECK(mhc_pair_create(r, w, &o, &none) == MHC_ERR_ARGUMENT);  // swapped
+  mhc_pair_options bado = o;
+  bado.E_wheel_Pa = -1;
+  CHECK(mhc_pair_create(w, r, &bado, &none) == MHC_ERR_ARGUMENT);
+  CHECK_THAT(mhc_last_message(), Catch::Contains("material"));
+  CHECK(none == nullptr);
+  mhc_profile_free(w);  // the pairs keep copies
+  mhc_profile_free(wp);
+  mhc_profile_free(r);
+  double lo = 0, hi = 0;
+  REQUIRE(mhc_pair_tY_range(p1, &lo, &hi) == MHC_OK);
+  CHECK(lo == Approx(-8e-3));
+  CHECK(hi == Approx(10e-3));
+  Workspace w1(p1), w2(p2);
+  mhc_result a = fresh(), b = fresh();
+  REQUIRE(mhc_solve_load(p1, w1.ws, 1e-3, 0.0, 60e3, &a) == MHC_OK);
+  REQUIRE(mhc_solve_load(p2, w2.ws, 1e-3, 0.0, 60e3, &b) == MHC_OK);
+  CHECK(a.status == MHC_STATUS_OK);
+  CHECK(a.Fz_N == Approx(60e3).epsilon(1e-12));
+  CHECK(b.Fy_N == Approx(a.Fy_N).epsilon(1e-6));  // the same profile, read back through points
+  mhc_pair_free(p1);
+  mhc_pair_free(p2);
+}
