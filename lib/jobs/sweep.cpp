@@ -404,7 +404,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
           auto& kinds = S.warning_kinds[i];
           kinds.clear();
           for (const std::string& w : r.warnings) {
-            std::string k = w.substr(0, w.find(':'));
+            std::string k = warning_class(w);
             if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(std::move(k));
           }
           format_case(c0 + i, cp, r, plastic, want_csv, want_json, f);
@@ -450,7 +450,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
     }
     for (std::size_t i = 0; i < m; ++i) {
       ++counts->by_status[to_string(S.status[i])];
-      if (S.status[i] != CaseStatus::Ok) ++counts->failed;
+      if (is_failure(S.status[i])) ++counts->failed;
       for (const std::string& k : S.warning_kinds[i]) ++counts->warnings[k];
       if (!S.warning_kinds[i].empty()) ++counts->with_warnings;
     }

@@ -91,7 +91,9 @@ struct Sinks {
 /// Counts of a sweep by status.
 struct SweepCounts {
   std::map<std::string, std::uint64_t> by_status;
-  std::uint64_t failed = 0;  ///< cases not `ok`
+  /// Cases without an answer (no_contact, out_of_range, not_converged; in a batch invalid_pair):
+  /// the run exits 1 for them. `outside_validity` cases are answers and are not counted here.
+  std::uint64_t failed = 0;
   /// Cases with at least one warning of each kind (the text before the first ':' of a warning,
   /// e.g. "non_hertzian_excluded"); a case with several warnings of one kind counts once.
   std::map<std::string, std::uint64_t> warnings;

@@ -284,20 +284,23 @@ TEST_CASE("strips in the plastic model: strongly capped flange contacts settle",
     mo.method = mh::Method::Strips;
     const mh::CaseResult r = mh::solve_contact(pg.geo, cf.material, tY, 100e3, mo);
     INFO(r.message);
-    REQUIRE(r.status == mh::CaseStatus::Ok);
+    // At 8.5 mm the main contact has passed the steepest flange point (flange_climb, docs/method.md
+    // §3.7): the solution is there, its row outside validity (docs/status.md).
+    const mh::CaseStatus solved = tY < 8e-3 ? mh::CaseStatus::Ok : mh::CaseStatus::OutsideValidity;
+    REQUIRE(r.status == solved);
     CHECK(r.Fz == Approx(100e3).epsilon(1e-4));
     CHECK(r.pmax <= cf.material.p_lim * (1 + 1e-9));
 
     mo.method = mh::Method::HalfSpace;
     const mh::CaseResult h = mh::solve_contact(pg.geo, cf.material, tY, 100e3, mo);
-    REQUIRE(h.status == mh::CaseStatus::Ok);
+    REQUIRE(h.status == solved);
     CHECK(r.area == Approx(h.area).epsilon(0.05));
     CHECK(r.approach == Approx(h.approach).epsilon(0.12));
     // auto hands the plastic flange patch at 7 mm (it fails the Hertz validity test) to the strip
     // method; at 8.5 mm the multi-Hertzian ellipse passes it and is kept.
     mo.method = mh::Method::Auto;
     const mh::CaseResult a = mh::solve_contact(pg.geo, cf.material, tY, 100e3, mo);
-    CHECK(a.status == mh::CaseStatus::Ok);
+    CHECK(a.status == solved);
     CHECK(a.method == (tY < 8e-3 ? mh::Method::Strips : mh::Method::MultiHertzian));
   }
   // No hole inside a capped patch. A refinement used to restart a capped strip from its
@@ -307,7 +310,7 @@ TEST_CASE("strips in the plastic model: strongly capped flange contacts settle",
   // the shorter neighbour (measured: smooth, 14.6 ... 33.1 ... 19.2 mm).
   mo.method = mh::Method::Strips;
   const mh::CaseResult r9 = mh::solve_contact(pg.geo, cf.material, 9e-3, 100e3, mo);
-  REQUIRE(r9.status == mh::CaseStatus::Ok);
+  REQUIRE(r9.status == mh::CaseStatus::OutsideValidity);  // flange_climb, as at 8.5 mm
   REQUIRE(r9.patches.size() == 1);
   // The capped strips' elastic amplitudes differ from their neighbours' by more than the outlier
   // factor (flagged when the flag compared amplitudes: checked), but their peaks are all p_lim: the
