@@ -63,7 +63,9 @@ typedef enum mhc_status {
   MHC_STATUS_NO_CONTACT = 1,    /**< no force: Q <= 0, the wheel lifted (approach below first
                                      contact), or no Hertzian candidate */
   MHC_STATUS_OUT_OF_RANGE = 2,  /**< t_Y outside the pair's geometry table */
-  MHC_STATUS_NOT_CONVERGED = 3  /**< the equilibrium was not reached; the fields hold the last iterate */
+  MHC_STATUS_NOT_CONVERGED = 3, /**< the equilibrium was not reached; the fields hold the last iterate */
+  MHC_STATUS_OUTSIDE_VALIDITY = 4 /**< solved, but outside the method's validity (a warning says
+                                       why: MHC_WARN_* bits); an answer, not to be trusted */
 } mhc_status;
 
 typedef enum mhc_kind { MHC_WHEEL = 1, MHC_RAIL = 2 } mhc_kind;
@@ -82,6 +84,9 @@ typedef enum mhc_method {
 #define MHC_WARN_OFF_PROFILE 0x8u           /**< a loaded contact lies off the end of a profile */
 #define MHC_WARN_TRUNCATED 0x10u            /**< more than MHC_MAX_CONTACTS contacts: the rest omitted */
 #define MHC_WARN_OTHER 0x20u                /**< any other warning (the text: mhc_last_message) */
+#define MHC_WARN_INTERACTING 0x40u          /**< two loaded ellipses closer than d_comb: they interact */
+#define MHC_WARN_PRESSURE_SPIKE 0x80u       /**< a grid patch's peak stands on a single element */
+#define MHC_WARN_STRIP_OUTLIER 0x100u       /**< a strip's peak stands far above its neighbours' */
 
 /** Per-contact flags (mhc_contact.flags). */
 #define MHC_CONTACT_PLASTIC 0x1u      /**< the plastic law caps its pressure (p0 > p_lim) */

@@ -148,7 +148,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__version__") = mhc_version();
   m.attr("abi_version") = mhc_abi_version();
   m.attr("fft_backend") = mhc_fft_backend();
-  m.attr("STATUS_NAMES") = py::make_tuple("ok", "no_contact", "out_of_range", "not_converged");
+  m.attr("STATUS_NAMES") = py::make_tuple("ok", "no_contact", "out_of_range", "not_converged", "outside_validity");
   m.attr("METHOD_NAMES") = py::make_tuple("multi-hertzian", "half-space", "strips", "auto");
 
   py::class_<Profile>(m, "Profile", "A wheel or rail profile (immutable).")

@@ -33,6 +33,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+# Statuses of rows with an answer: `outside_validity` rows are plotted too (the picture is about
+# where each method can be trusted; the table's status column says which rows are not).
+ANSWERS = ("ok", "outside_validity")
 STYLE = {"multi-hertzian": ("tab:blue", "o"), "strips": ("tab:orange", "s"), "half-space": ("tab:green", "^"),
          "auto": ("tab:purple", "x"), "CONTACT": ("black", "+")}
 
@@ -134,20 +137,20 @@ def main(argv=None):
                                  for r in ref)
     def elastic_of(name, r):  # (area, pmax) of the elastic run at the same t_Y, or NaNs
         e = elastic.get(name, {}).get(r[0])
-        return (e[2], e[1]) if e and e[4] == "ok" else (math.nan, math.nan)
+        return (e[2], e[1]) if e and e[4] in ANSWERS else (math.nan, math.nan)
 
     title = os.path.basename(a.case) + f": model {model}" + (f", p_lim {plim:g} MPa" if plim else "")
     fig, axes = plt.subplots(4 if plastic else 3, 1, figsize=(9, 13 if plastic else 10), sharex=True)
     for name, rows in data.items():
         color, marker = STYLE[name]
-        t = [r[0] for r in rows if r[4] == "ok"]
+        t = [r[0] for r in rows if r[4] in ANSWERS]
         for ax, k in zip(axes, (1, 2, 3)):
-            v = [r[k] for r in rows if r[4] == "ok"]
+            v = [r[k] for r in rows if r[4] in ANSWERS]
             if all(math.isnan(x) for x in v):
                 continue
             ax.plot(t, v, marker=marker, color=color, label=name, linewidth=1.2, markersize=4)
         if plastic and name in elastic:
-            ratio = [r[2] / elastic_of(name, r)[0] for r in rows if r[4] == "ok"]
+            ratio = [r[2] / elastic_of(name, r)[0] for r in rows if r[4] in ANSWERS]
             axes[3].plot(t, ratio, marker=marker, color=color, label=name, linewidth=1.2, markersize=4)
     if plastic:
         axes[3].set_ylabel("area ratio plastic / elastic")
@@ -190,10 +193,11 @@ def main(argv=None):
             line = f"| {t:g} |"
             for m in names:
                 r = by[m].get(t)
-                if r is None or r[4] != "ok":
+                if r is None or r[4] not in ANSWERS:
                     line += f" {r[4] if r else '-'} | |" + (" |" if plastic else "")
                     continue
-                line += f" {r[2]:.1f} | {r[1]:.0f} |"
+                # A row outside its method's validity is an answer, not a trusted one: said so.
+                line += f" {r[2]:.1f}{' (' + r[4] + ')' if r[4] != 'ok' else ''} | {r[1]:.0f} |"
                 if plastic:
                     ae = elastic_of(m, r)[0]
                     line += f" {r[2] / ae:.2f} |" if ae > 0 else " - |"

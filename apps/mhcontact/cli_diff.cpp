@@ -31,6 +31,7 @@ struct DiffArgs {
   std::string rtol, atol;
   std::vector<std::string> column_tol;
   std::vector<std::string> key;
+  std::vector<std::string> ignore_columns;
   bool json = false;
   bool quiet = false;
 };
@@ -43,7 +44,8 @@ void add_diff_command(CLI::App& app, CliContext& ctx) {
   CLI::App* cmd = app.add_subcommand(
       "diff",
       "Compare a result table (cases.csv, ellipses.csv, geometry.csv, caf.csv, pressure.csv, ...) against a "
-      "reference: rows matched by key, numbers within tolerance, text exactly. Exit 0 within "
+      "reference: rows matched by key, numbers within tolerance, text by its words with the numbers "
+      "inside within tolerance (warnings). Exit 0 within "
       "tolerance, 1 if they differ, 2 if an input is unreadable or malformed.");
   cmd->add_option("REF", args->ref, "Reference CSV table")->required()->type_name("FILE");
   cmd->add_option("OUT", args->out, "CSV table to check against REF")->required()->type_name("FILE");
@@ -67,6 +69,12 @@ void add_diff_command(CLI::App& app, CliContext& ctx) {
       ->delimiter(',')
       ->type_name("COL")
       ->allow_extra_args(false);
+  cmd->add_option("--ignore-columns", args->ignore_columns,
+                  "Columns left out of the comparison (repeatable or comma separated), e.g. "
+                  "--ignore-columns residual,iterations")
+      ->delimiter(',')
+      ->type_name("COL")
+      ->allow_extra_args(false);
   cmd->add_flag("--json", args->json, "Print a machine-readable JSON report instead of text");
   cmd->add_flag("--quiet", args->quiet, "Print only the final line (diff: OK / diff: N cells ...)");
 
@@ -85,6 +93,7 @@ void add_diff_command(CLI::App& app, CliContext& ctx) {
       opt.column_tol[col] = parse_tolerance("--column-tol " + col, spec.substr(eq + 1));
     }
     opt.key = args->key;
+    opt.ignore_columns = args->ignore_columns;
     std::string why;
     if (!opt.IsValid(&why)) throw InputError("diff options", "", why);
 

@@ -36,11 +36,12 @@ void add_geometry_command(CLI::App& app, CliContext& ctx) {
 }
 
 void add_run_command(CLI::App& app, CliContext& ctx) {
-  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false, strips = false, fail_on_warning = false; std::string shard, digits = "10", pressure_cases; };
+  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false, strips = false, fail_on_warning = false; std::string shard, fail_on, digits = "10", pressure_cases; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Solve every case of the case file's sweep (or of a batch manifest over many profile pairs) (writes DIR/cases.csv, DIR/ellipses.csv, DIR/geometry.csv, "
-             "DIR/results.json). Exit 0 if every case is ok, 1 if some are not.");
+             "DIR/results.json). Exit 0 if every case has an answer (status ok or outside_validity), 1 if some have "
+             "none (no_contact, out_of_range, not_converged, invalid_pair) or a --fail-on class occurred.");
   cmd->add_option("case", o->case_file, "Case file (JSON)")->required();
   cmd->add_option("-o,--output", o->out_dir, "Output directory (created if missing); '-' writes results.json to standard output")->required();
   cmd->add_option("--format", o->format, "Which outputs: csv, json or both")
@@ -55,11 +56,17 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--digits", o->digits, "Significant digits of the numbers in the tables (1..17), or max for the shortest round-trip")
       ->capture_default_str();
   cmd->add_flag("--fail-on-warning", o->fail_on_warning,
-                "Exit 1 when any case has a warning (e.g. non_hertzian_excluded), as when a case fails: for CI");
+                "Exit 1 when any case has a warning (e.g. non_hertzian_excluded), or the rail cant is warned about, "
+                "as when a case fails: for CI");
+  CLI::Option* fail_on = cmd->add_option("--fail-on", o->fail_on,
+                  "Exit 1 when any case has a warning of these classes, e.g. off_profile,pressure_spike "
+                  "(non_hertzian, non_hertzian_excluded, interacting, off_profile, flange_climb, pressure_spike, "
+                  "strip_outlier, auto, cant): for CI")
+      ->type_name("CLASSES");
   cmd->add_flag("--force", o->force, "Write pressure.csv even when it would be larger than the limit of 10 GB");
   cmd->add_option("--shard", o->shard, "K/N: run only the K-th of N deterministic slices of the case list (join them with `mhcontact merge`)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or summary on standard error");
-  cmd->callback([o, &ctx] {
+  cmd->callback([o, fail_on, &ctx] {
     RunOptions ro;
     if (!o->shard.empty()) parse_shard(o->shard, &ro.shard_index, &ro.shard_count);
     const nlohmann::json j = read_json_file(o->case_file);
@@ -68,6 +75,7 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
     ro.json = o->format != "csv";
     ro.threads = o->threads;
     ro.fail_on_warning = o->fail_on_warning;
+    if (fail_on->count()) ro.fail_on = parse_fail_on(o->fail_on);
     ro.quiet = o->quiet;
     ro.pressure_grid = o->pressure_grid;
     if (!o->pressure_cases.empty()) ro.pressure_cases = parse_case_selection(o->pressure_cases);

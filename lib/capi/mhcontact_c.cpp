@@ -45,6 +45,9 @@ std::uint32_t warning_bit(const std::string& w) {
   if (starts("non_hertzian_excluded:")) return MHC_WARN_NON_HERTZIAN_EXCLUDED;
   if (starts("non_hertzian:")) return MHC_WARN_NON_HERTZIAN;
   if (starts("off_profile:")) return MHC_WARN_OFF_PROFILE;
+  if (starts("interacting:")) return MHC_WARN_INTERACTING;
+  if (starts("pressure_spike:")) return MHC_WARN_PRESSURE_SPIKE;
+  if (starts("strip_outlier:")) return MHC_WARN_STRIP_OUTLIER;
   return MHC_WARN_OTHER;
 }
 
@@ -54,6 +57,7 @@ int32_t status_code(CaseStatus s) {
     case CaseStatus::NoContact: return MHC_STATUS_NO_CONTACT;
     case CaseStatus::OutOfRange: return MHC_STATUS_OUT_OF_RANGE;
     case CaseStatus::NotConverged: return MHC_STATUS_NOT_CONVERGED;
+    case CaseStatus::OutsideValidity: return MHC_STATUS_OUTSIDE_VALIDITY;
   }
   return MHC_STATUS_NOT_CONVERGED;
 }
@@ -213,6 +217,7 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
       return fail(MHC_ERR_UNSUPPORTED, std::string("the approach-prescribed solve needs the multi-hertzian method, "
                                                    "not ") + to_string(pair.options.method));
     solve_multi_hertz_approach(pair.pg.geo, pair.material, tY, value, pair.options.multi_hertzian, ws.approach, ws.r);
+    judge_validity(ws.r, pair.options.strips.d_comb);  // as solve_contact does for a load given
     fill_result(ws.r, tY, kNaN, pair.plastic, out);
   } else {
     ws.r = solve_contact(pair.pg.geo, pair.material, tY, value, pair.options);
@@ -321,6 +326,7 @@ const char* mhc_status_name(int32_t status) {
     case MHC_STATUS_NO_CONTACT: return "no_contact";
     case MHC_STATUS_OUT_OF_RANGE: return "out_of_range";
     case MHC_STATUS_NOT_CONVERGED: return "not_converged";
+    case MHC_STATUS_OUTSIDE_VALIDITY: return "outside_validity";
   }
   return "unknown";
 }

@@ -15,8 +15,35 @@
 namespace mh {
 
 /// The outcome of one case's solve (a batch's `invalid_pair` is not a solver outcome: jobs/batch.hpp).
-enum class CaseStatus { Ok, NoContact, OutOfRange, NotConverged };
+/// Ok and OutsideValidity rows carry an answer (their numbers are written); OutsideValidity says
+/// it is not to be trusted: the method solved the case outside the conditions it is valid in, and
+/// the warnings say which (judge_validity() below; docs/status.md). NoContact and OutOfRange rows
+/// have no answer; a NotConverged row keeps its last iterate.
+enum class CaseStatus { Ok, OutsideValidity, NoContact, OutOfRange, NotConverged };
 const char* to_string(CaseStatus s);
+/// True for the statuses without a usable answer (no_contact, out_of_range, not_converged): the
+/// cases a run counts as `failed` and exits 1 for. Ok and OutsideValidity are answers.
+bool is_failure(CaseStatus s);
+
+/// The class of a warning: its text before the first ':' ("non_hertzian" of
+/// "non_hertzian:ellipse=4:b_over_R=22.331>0.3").
+std::string warning_class(const std::string& warning);
+
+/// The warning classes a case can carry, each with whether it puts the row outside its method's
+/// validity (docs/status.md). Every class but `auto` does; a class not listed here (a check added
+/// later) does too, so a new check can never leave a row `ok` by omission.
+struct WarningClassInfo {
+  const char* name;
+  bool outside_validity;
+  const char* meaning;
+};
+const std::vector<WarningClassInfo>& warning_classes();
+/// Whether a warning of class `cls` puts its row outside validity: every class but the
+/// informational ones of warning_classes() (`auto`, `flange_climb`); a class not listed does.
+bool is_validity_class(const std::string& cls);
+
+/// The distinct validity classes among `warnings`, in order of first appearance.
+std::vector<std::string> validity_failures(const std::vector<std::string>& warnings);
 
 
 /// One loaded ellipse of a multi-Hertzian solution.
@@ -96,5 +123,22 @@ struct CaseResult {
   std::vector<LoadedEllipse> loaded;  ///< multi-Hertzian: in increasing ellipse index
   std::vector<PatchResult> patches;   ///< grid methods: in increasing rail y
 };
+
+/// Two loaded ellipses close enough to interact elastically, which the multi-Hertzian method
+/// solves each on its own (docs/method.md §9, the gauge-shoulder case): the lateral gap between
+/// their edges on the rail is below d_comb, the distance at which the grid methods make the
+/// regions one patch. `found` false when no pair is that close.
+struct EllipseInteraction {
+  bool found = false;
+  int first = 0, second = 0;  ///< the ellipses (LoadedEllipse::ellipse) of the first such pair
+  double edge_gap = 0;        ///< [m] lateral gap between their edges on the rail (negative: overlap)
+};
+EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb);
+
+/// The status rule (docs/status.md), applied once to every method's result (solve_contact):
+/// a multi-Hertzian result with interacting ellipses gets the warning
+/// `interacting:ellipses=I+J:edge_gap_mm=G<D`; then an `ok` result that carries a warning of a
+/// validity class becomes OutsideValidity, its message naming the classes. Other statuses stay.
+void judge_validity(CaseResult& r, double d_comb);
 
 }  // namespace mh

@@ -22,16 +22,10 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
   for (const auto& w : mhr.warnings)
     if (reason.empty() && w.rfind("non_hertzian_excluded", 0) == 0) reason = "non-Hertzian candidate excluded";
   // Contacts close enough to interact elastically: each ellipse is solved on its own, while the
-  // strip method couples them (the gauge-shoulder case of §9). Close: the lateral gap between the
-  // patches' edges on the rail is below d_comb, the distance at which the grid methods make the
-  // regions one patch.
-  for (std::size_t i = 0; i < mhr.loaded.size() && reason.empty(); ++i)
-    for (std::size_t j = i + 1; j < mhr.loaded.size() && reason.empty(); ++j) {
-      const LoadedEllipse &A = mhr.loaded[i], &B = mhr.loaded[j];
-      const double edge_gap = std::fabs(A.g.y_r - B.g.y_r) - A.s.b * std::cos(A.g.gamma) - B.s.b * std::cos(B.g.gamma);
-      if (edge_gap < opt.strips.d_comb)
-        reason = "ellipses " + std::to_string(A.ellipse) + " and " + std::to_string(B.ellipse) + " interact";
-    }
+  // strip method couples them (the gauge-shoulder case of §9; case_result.hpp).
+  if (reason.empty())
+    if (const EllipseInteraction e = interacting_ellipses(mhr, opt.strips.d_comb); e.found)
+      reason = "ellipses " + std::to_string(e.first) + " and " + std::to_string(e.second) + " interact";
   if (reason.empty()) return mhr;
   // The grid methods start from the elastic multi-Hertzian solution: mhr itself when the model
   // is elastic, else one elastic solve shared by strips and the half-space fallback.
@@ -59,13 +53,19 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
 }  // namespace
 
 CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt) {
+  CaseResult r;
   switch (opt.method) {
-    case Method::Auto: return solve_auto(G, mat, tY, Q, opt);
-    case Method::HalfSpace: return solve_half_space(G, mat, tY, Q, opt.half_space);
-    case Method::Strips: return solve_strip_method(G, mat, tY, Q, opt.strips);
+    case Method::Auto: r = solve_auto(G, mat, tY, Q, opt); break;
+    case Method::HalfSpace: r = solve_half_space(G, mat, tY, Q, opt.half_space); break;
+    case Method::Strips: r = solve_strip_method(G, mat, tY, Q, opt.strips); break;
     case Method::MultiHertzian:
-    default: return solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian);
+    default: r = solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian); break;
   }
+  // Whether the row can be trusted, by one rule for every method (docs/status.md): auto's rows
+  // handed to a grid method are judged by that method's checks, the multi-Hertzian rows it keeps
+  // passed the Hertz and interaction tests already.
+  judge_validity(r, opt.strips.d_comb);
+  return r;
 }
 
 }  // namespace mh

@@ -207,12 +207,10 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     if (cant_warned) err << ", " << cant_warned << " pairs with cant warnings";
     err << "; " << format_number(std::round(secs * 1e3) / 1e3) << " s; outputs in " << opt.out_dir << "\n";
   }
-  // --fail-on-warning: case warnings, and a rail cant that looks wrong (applied twice, mirrored).
-  const bool warned = counts.with_warnings || cant_warned;
-  if (!opt.quiet && opt.fail_on_warning && warned)
-    err << "mhcontact run: " << counts.with_warnings << " cases with warnings, " << cant_warned
-        << " pairs with cant warnings (--fail-on-warning): exit 1\n";
-  return (failed || invalid || (opt.fail_on_warning && warned)) ? kExitCasesFailed : kExitOk;
+  // --fail-on-warning, --fail-on: case warnings, and rail cants that look wrong (applied twice, mirrored).
+  const std::string warned = warnings_failure(opt, counts, cant_warned);
+  if (!opt.quiet) err << warned;
+  return (failed || invalid || !warned.empty()) ? kExitCasesFailed : kExitOk;
 }
 
 

@@ -280,12 +280,10 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     if (!to_stdout) err << "; outputs in " << opt.out_dir;
     err << "\n";
   }
-  // --fail-on-warning: case warnings, and a rail cant that looks wrong (applied twice, mirrored).
-  const bool warned = counts.with_warnings || !pg.cant.warnings.empty();
-  if (!opt.quiet && opt.fail_on_warning && warned)
-    err << "mhcontact run: " << counts.with_warnings << " cases with warnings, " << pg.cant.warnings.size()
-        << " cant warning(s) (--fail-on-warning): exit 1\n";
-  return (failed || (opt.fail_on_warning && warned)) ? kExitCasesFailed : kExitOk;
+  // --fail-on-warning, --fail-on: case warnings, and a rail cant that looks wrong (applied twice, mirrored).
+  const std::string warned = warnings_failure(opt, counts, pg.cant.warnings.empty() ? 0 : 1);
+  if (!opt.quiet) err << warned;
+  return (failed || !warned.empty()) ? kExitCasesFailed : kExitOk;
 }
 
 

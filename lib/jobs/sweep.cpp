@@ -119,6 +119,43 @@ int parse_digits(const std::string& text) {
   return d;
 }
 
+std::vector<std::string> parse_fail_on(const std::string& text) {
+  std::string known;
+  for (const WarningClassInfo& c : warning_classes()) known += std::string(c.name) + ", ";
+  known += "cant";
+  std::vector<std::string> classes;
+  std::size_t a = 0;
+  while (true) {
+    const std::size_t b = text.find(',', a);
+    const std::string c = text.substr(a, b == std::string::npos ? std::string::npos : b - a);
+    bool ok = c == "cant";
+    for (const WarningClassInfo& k : warning_classes()) ok = ok || c == k.name;
+    if (!ok)
+      throw InputError("--fail-on", "\"" + c + "\"", c.empty() ? "empty warning class" : "not a warning class",
+                       "the classes are " + known + "; --fail-on-warning fails on any");
+    if (std::find(classes.begin(), classes.end(), c) == classes.end()) classes.push_back(c);
+    if (b == std::string::npos) break;
+    a = b + 1;
+  }
+  return classes;
+}
+
+std::string warnings_failure(const RunOptions& opt, const SweepCounts& counts, std::uint64_t cant_warnings) {
+  if (opt.fail_on_warning) {
+    if (!counts.with_warnings && !cant_warnings) return {};
+    return "mhcontact run: " + std::to_string(counts.with_warnings) + " cases with warnings, " +
+           std::to_string(cant_warnings) + " cant warning(s) (--fail-on-warning): exit 1\n";
+  }
+  std::string found;
+  for (const std::string& c : opt.fail_on) {
+    std::uint64_t n = 0;
+    if (c == "cant") n = cant_warnings;
+    else if (auto it = counts.warnings.find(c); it != counts.warnings.end()) n = it->second;
+    if (n) found += (found.empty() ? "" : ", ") + std::to_string(n) + (c == "cant" ? " cant warning(s)" : " cases with " + c);
+  }
+  return found.empty() ? std::string() : "mhcontact run: " + found + " (--fail-on): exit 1\n";
+}
+
 std::string progress_line(std::uint64_t done, std::uint64_t total, double secs) {
   char buf[160];
   const double rate = secs > 0 ? static_cast<double>(done) / secs : 0;
@@ -404,7 +441,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
           auto& kinds = S.warning_kinds[i];
           kinds.clear();
           for (const std::string& w : r.warnings) {
-            std::string k = w.substr(0, w.find(':'));
+            std::string k = warning_class(w);
             if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(std::move(k));
           }
           format_case(c0 + i, cp, r, plastic, want_csv, want_json, f);
@@ -450,7 +487,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
     }
     for (std::size_t i = 0; i < m; ++i) {
       ++counts->by_status[to_string(S.status[i])];
-      if (S.status[i] != CaseStatus::Ok) ++counts->failed;
+      if (is_failure(S.status[i])) ++counts->failed;
       for (const std::string& k : S.warning_kinds[i]) ++counts->warnings[k];
       if (!S.warning_kinds[i].empty()) ++counts->with_warnings;
     }

@@ -54,13 +54,21 @@ struct RunOptions {
   bool strips = false;
   /// Write pressure.csv even when its estimated size is above kPressureLimitBytes (--force).
   bool force = false;
-  bool fail_on_warning = false;  ///< exit 1 when any case has a warning (for CI)
+  bool fail_on_warning = false;  ///< exit 1 when any case has a warning, or the pair a cant warning (for CI)
+  /// Exit 1 when any case carries a warning of one of these classes (`cant`: the pair's rail
+  /// cant warning), whatever the case's status (--fail-on; docs/status.md). Empty: none.
+  std::vector<std::string> fail_on;
   /// Significant digits of the numbers in the tables (--digits N), 0 = shortest round-trip (--digits max).
   int digits = 10;
 };
 
 /// Parse --digits: "max" (0) or an integer 1..17. Throws InputError.
 int parse_digits(const std::string& text);
+
+/// Parse --fail-on "non_hertzian,off_profile": comma-separated warning classes (those of
+/// warning_classes() and `cant`). An unknown or empty class is an InputError naming the known
+/// ones, so that a misspelt class cannot leave CI green.
+std::vector<std::string> parse_fail_on(const std::string& text);
 
 /// pressure.csv is refused before anything is solved when its estimated size (at least one
 /// contact per case) is above this, unless forced (README "Output tables").
@@ -91,7 +99,9 @@ struct Sinks {
 /// Counts of a sweep by status.
 struct SweepCounts {
   std::map<std::string, std::uint64_t> by_status;
-  std::uint64_t failed = 0;  ///< cases not `ok`
+  /// Cases without an answer (no_contact, out_of_range, not_converged; in a batch invalid_pair):
+  /// the run exits 1 for them. `outside_validity` cases are answers and are not counted here.
+  std::uint64_t failed = 0;
   /// Cases with at least one warning of each kind (the text before the first ':' of a warning,
   /// e.g. "non_hertzian_excluded"); a case with several warnings of one kind counts once.
   std::map<std::string, std::uint64_t> warnings;
@@ -102,6 +112,11 @@ struct SweepCounts {
             {"warnings", warnings}};
   }
 };
+
+/// --fail-on-warning and --fail-on: "" when the run need not exit 1 for its warnings, else the
+/// line that says why ("mhcontact run: 12 cases with off_profile (--fail-on): exit 1\n").
+/// `cant_warnings`: pairs (or the single pair) whose rail cant is warned about.
+std::string warnings_failure(const RunOptions& opt, const SweepCounts& counts, std::uint64_t cant_warnings);
 
 /// geometry.csv and results.json's "geometry" records: for each distinct t_Y of
 /// the cases [first, end) of `cf` that lies inside `G` (distinct as written in the tables), in

@@ -1,6 +1,7 @@
 #include "output/table_diff.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -105,6 +106,42 @@ bool parse_cell_number(const std::string& text, double& value) {
   return r.ec == std::errc() && r.ptr == e;
 }
 
+namespace detail {
+
+std::vector<TextPiece> split_text_cell(const std::string& cell) {
+  std::vector<TextPiece> pieces;
+  auto word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.'; };
+  auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  const std::size_t n = cell.size();
+  std::size_t i = 0;
+  while (i < n) {
+    const bool after_word = i > 0 && word_char(cell[i - 1]);
+    const bool starts = !after_word && (digit(cell[i]) || ((cell[i] == '-' || cell[i] == '.') && i + 1 < n &&
+                                                           (digit(cell[i + 1]) || (cell[i + 1] == '.' && i + 2 < n && digit(cell[i + 2])))));
+    double v = 0;
+    const char* end = nullptr;
+    if (starts) {
+      const auto r = std::from_chars(cell.data() + i, cell.data() + n, v);
+      if (r.ec == std::errc() || r.ec == std::errc::result_out_of_range) end = r.ptr;
+    }
+    if (end && end > cell.data() + i) {
+      TextPiece p;
+      p.number = true;
+      p.value = v;
+      p.text.assign(cell.data() + i, end);
+      p.integer = p.text.find_first_not_of("-0123456789") == std::string::npos;
+      pieces.push_back(std::move(p));
+      i = static_cast<std::size_t>(end - cell.data());
+      continue;
+    }
+    if (pieces.empty() || pieces.back().number) pieces.emplace_back();
+    pieces.back().text += cell[i++];
+  }
+  return pieces;
+}
+
+}  // namespace detail
+
 bool DiffOptions::IsValid(std::string* why) const {
   auto fail = [&](const std::string& msg) {
     if (why) *why = msg;
@@ -121,6 +158,13 @@ bool DiffOptions::IsValid(std::string* why) const {
   for (const std::string& k : key) {
     if (k.empty()) return fail("key: empty column name");
     if (!seen.insert(k).second) return fail("key: column " + k + " given twice");
+  }
+  std::unordered_set<std::string> ignored;
+  for (const std::string& c : ignore_columns) {
+    if (c.empty()) return fail("ignore_columns: empty column name");
+    if (!ignored.insert(c).second) return fail("ignore_columns: column " + c + " given twice");
+    if (seen.count(c)) return fail("ignore_columns: column " + c + " is a key column");
+    if (column_tol.count(c)) return fail("ignore_columns: column " + c + " also has a column tolerance");
   }
   return true;
 }
@@ -154,15 +198,24 @@ TableDiffResult diff_tables(const CsvTable& ref, const CsvTable& out, const Diff
   }
   r.by_row_number = r.key_columns.empty();
   const std::unordered_set<std::string> is_key(r.key_columns.begin(), r.key_columns.end());
+  const std::unordered_set<std::string> ignored(opt.ignore_columns.begin(), opt.ignore_columns.end());
+  for (const std::string& col : opt.ignore_columns) {
+    if (!ref.has_column(col) && !out.has_column(col))
+      throw InputError("--ignore-columns", col, "not a column of " + ref.source + " or " + out.source,
+                       header_list(ref));
+    if (is_key.count(col))
+      throw InputError("--ignore-columns", col, "is a key column; rows are matched by it");
+  }
 
   // Column sets (order may differ).
   std::vector<std::string> common;
   for (const std::string& c : ref.header) {
+    if (ignored.count(c)) continue;
     if (!out.has_column(c)) r.missing_columns.push_back(c);
     else if (!is_key.count(c)) common.push_back(c);
   }
   for (const std::string& c : out.header)
-    if (!ref.has_column(c)) r.extra_columns.push_back(c);
+    if (!ref.has_column(c) && !ignored.count(c)) r.extra_columns.push_back(c);
 
   for (const auto& [col, tol] : opt.column_tol) {
     (void)tol;
@@ -239,9 +292,16 @@ TableDiffResult diff_tables(const CsvTable& ref, const CsvTable& out, const Diff
         ++d.numeric_out;
         if (d.nonfinite_out++ == 0) d.first_nonfinite = {key, a_text, b_text};
       };
+      const auto within = [&](double x, double y) {
+        if (std::isnan(x) || std::isnan(y)) return std::isnan(x) && std::isnan(y);
+        if (x == y) return true;
+        if (!std::isfinite(x) || !std::isfinite(y)) return false;
+        return std::fabs(y - x) <= (c.has_tol ? c.tol : opt.atol + opt.rtol * std::fabs(x));
+      };
       double a, b;
       if (!(parse_cell_number(a_text, a) && parse_cell_number(b_text, b))) {
-        text_differs();  // text cells must be equal
+        // Text cells (warnings, message): equal words, the numbers inside within tolerance.
+        if (!text_cells_match(a_text, b_text, within)) text_differs();
         continue;
       }
       if (std::isnan(a) || std::isnan(b)) {
@@ -310,6 +370,7 @@ void write_diff_report(std::ostream& os, const TableDiffResult& r, const DiffOpt
     }
   }
   os << "\n";
+  if (!opt.ignore_columns.empty()) os << "ignored columns: " << join(opt.ignore_columns, ", ") << "\n";
   os << "rows compared: " << r.rows_compared << ", missing in OUT: " << r.missing_rows.size()
      << ", extra in OUT: " << r.extra_rows.size() << "\n";
 
@@ -365,6 +426,7 @@ nlohmann::json diff_report_json(const TableDiffResult& r, const DiffOptions& opt
   json ct = json::object();
   for (const auto& [col, tol] : opt.column_tol) ct[col] = tol;
   j["tolerance"] = {{"rtol", opt.rtol}, {"atol", opt.atol}, {"column_tol", ct}};
+  j["ignored_columns"] = opt.ignore_columns;
   j["rows_compared"] = r.rows_compared;
   j["cells_compared"] = r.cells_compared;
   j["cells_out_of_tolerance"] = r.cells_out;

@@ -11,9 +11,14 @@
 //    A key that occurs twice in one table is an InputError naming the file and line.
 //  - Columns: matched by name (order may differ). Columns only in REF ("missing") or only in
 //    OUT ("extra") are reported and make the tables differ.
+//  - Ignored columns (DiffOptions::ignore_columns) are neither compared nor reported missing or
+//    extra.
 //  - A cell pair is numeric if both cells parse completely as numbers (`nan`, `inf`, `-inf`
 //    included, case-insensitive; an optional leading '+'); otherwise both are compared as text
-//    and must be equal byte for byte.
+//    (text_cells_match): the text around the numbers inside the cells must be equal byte for
+//    byte, integers inside (ellipse=4, strips=3) must be equal, and decimal numbers inside
+//    (gap_error=0.525, q_MPa=1523.4) pass with the numeric tolerance of their column. So a
+//    warning is compared by its names, its numbers with the tolerance.
 //  - A numeric pair passes if |out - ref| <= atol + rtol*|ref|, or, for a column given a
 //    column tolerance, |out - ref| <= tol. NaN equals NaN; NaN against a number differs;
 //    an infinity equals only the same infinity.
@@ -42,6 +47,9 @@ struct DiffOptions {
   std::map<std::string, double> column_tol;
   /// Key columns; empty = default (see above). Each must exist in both tables.
   std::vector<std::string> key;
+  /// Columns left out of the comparison (e.g. `residual`, whose 1e-16 is noise); each must be a
+  /// column of REF or OUT, not a key column and not given a column tolerance.
+  std::vector<std::string> ignore_columns;
   /// How many missing/extra row keys the text report lists (counts are always complete).
   std::size_t max_listed = 5;
 
@@ -102,6 +110,39 @@ TableDiffResult diff_tables(const CsvTable& ref, const CsvTable& out, const Diff
 
 /// Parse a cell as a number: the whole text must be a number (`nan`, `inf` included).
 bool parse_cell_number(const std::string& text, double& value);
+
+/// Text cells compared by their words and numbers: true when both split into the same text and
+/// number pieces, the text pieces equal, the integer pieces equal, and every pair of decimal
+/// pieces (a '.' or an exponent in either) within `within(ref, out)`. A number piece starts at a
+/// digit, or at '-' or '.' before a digit, that does not follow a letter, digit, '_' or '.'
+/// (so "p0_MPa" and "R13" stay words); it is the longest number read from there.
+template <class Within>
+bool text_cells_match(const std::string& ref, const std::string& out, Within within);
+
+namespace detail {
+/// One piece of a text cell: a word (text) or a number; `integer`: digits with an optional sign.
+struct TextPiece {
+  bool number = false, integer = false;
+  double value = 0;
+  std::string text;
+};
+std::vector<TextPiece> split_text_cell(const std::string& cell);
+}  // namespace detail
+
+template <class Within>
+bool text_cells_match(const std::string& ref, const std::string& out, Within within) {
+  const std::vector<detail::TextPiece> a = detail::split_text_cell(ref), b = detail::split_text_cell(out);
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].number != b[i].number) return false;
+    if (!a[i].number || (a[i].integer && b[i].integer)) {
+      if (a[i].text != b[i].text) return false;
+    } else if (!within(a[i].value, b[i].value)) {
+      return false;
+    }
+  }
+  return true;
+}
 
 /// The last line of the report: "diff: OK" or
 /// "diff: N cells out of tolerance, M missing rows, K extra rows" (followed by

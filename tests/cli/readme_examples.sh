@@ -73,6 +73,14 @@ test "$(cut -d, -f1 out/hs-flange/pressure.csv | tail -n +2 | sort -u | tr '\n' 
 ./build/mhcontact run cases/manchester.json -o out/manchester --format csv -q
 ./build/mhcontact diff tests/ref/manchester/ellipses.csv out/manchester/ellipses.csv --column-tol p0_MPa=0.5
 
+# --- README.md, "Commands": the wheelset of EN 15302 wheel A on rail A -------------------------
+./build/mhcontact wheelset cases/en15302-wheel-a.json -o out/en15302
+grep -q '^y_mm,' out/en15302/wheelset.csv && test -s out/en15302/conicity.csv
+
+# --- docs/status.md, "Failing a run on warnings", "Comparing tables" ---------------------------
+./build/mhcontact run cases/manchester.json -o out/m -q --fail-on off_profile,non_hertzian_excluded,pressure_spike,strip_outlier,cant
+./build/mhcontact diff tests/ref/manchester/cases.csv out/m/cases.csv --rtol 1e-2 --ignore-columns residual,iterations
+
 # --- docs/methods.md, "Half-space", "Strips", "Comparing the methods" --------------------------
 ./build/mhcontact run cases/manchester-halfspace.json -o out/manchester-halfspace
 test "$(wc -l < out/manchester-halfspace/patches.csv)" -eq 18

@@ -207,9 +207,10 @@ TEST_CASE("C interface: the approach-prescribed solve gives back the load and it
       INFO("tY " << tY_mm << " mm, Q " << Q << " N");
       mhc_result load = fresh(), appr = fresh(), up = fresh(), down = fresh();
       REQUIRE(mhc_solve_load(pair, w.ws, tY_mm * 1e-3, 0.0, Q, &load) == MHC_OK);
-      REQUIRE(load.status == MHC_STATUS_OK);
+      // Solved: ok, or outside the method's validity (flange climb at 8.5 mm) with its numbers.
+      REQUIRE((load.status == MHC_STATUS_OK || load.status == MHC_STATUS_OUTSIDE_VALIDITY));
       REQUIRE(mhc_solve_approach(pair, w.ws, tY_mm * 1e-3, 0.0, load.dz_m, &appr) == MHC_OK);
-      REQUIRE(appr.status == MHC_STATUS_OK);
+      REQUIRE(appr.status == load.status);
       CHECK(appr.Fz_N == Approx(Q).epsilon(1e-11));
       CHECK(appr.Fy_N == Approx(load.Fy_N).epsilon(1e-10));
       CHECK(appr.n_contacts == load.n_contacts);
@@ -316,7 +317,8 @@ TEST_CASE("C interface: profiles from points and standard names build a pair", "
   mhc_result a = fresh(), b = fresh();
   REQUIRE(mhc_solve_load(p1, w1.ws, 1e-3, 0.0, 60e3, &a) == MHC_OK);
   REQUIRE(mhc_solve_load(p2, w2.ws, 1e-3, 0.0, 60e3, &b) == MHC_OK);
-  CHECK(a.status == MHC_STATUS_OK);
+  CHECK((a.status == MHC_STATUS_OK || a.status == MHC_STATUS_OUTSIDE_VALIDITY));  // solved
+  CHECK(b.status == a.status);
   CHECK(a.Fz_N == Approx(60e3).epsilon(1e-12));
   CHECK(b.Fy_N == Approx(a.Fy_N).epsilon(1e-6));  // the same profile, read back through points
   mhc_pair_free(p1);

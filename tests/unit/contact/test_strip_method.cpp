@@ -284,6 +284,8 @@ TEST_CASE("strips in the plastic model: strongly capped flange contacts settle",
     mo.method = mh::Method::Strips;
     const mh::CaseResult r = mh::solve_contact(pg.geo, cf.material, tY, 100e3, mo);
     INFO(r.message);
+    // At 8.5 mm the main contact has passed the steepest flange point (flange_climb, docs/method.md
+    // §3.7): informational, the row stays ok (docs/status.md).
     REQUIRE(r.status == mh::CaseStatus::Ok);
     CHECK(r.Fz == Approx(100e3).epsilon(1e-4));
     CHECK(r.pmax <= cf.material.p_lim * (1 + 1e-9));
@@ -307,7 +309,7 @@ TEST_CASE("strips in the plastic model: strongly capped flange contacts settle",
   // the shorter neighbour (measured: smooth, 14.6 ... 33.1 ... 19.2 mm).
   mo.method = mh::Method::Strips;
   const mh::CaseResult r9 = mh::solve_contact(pg.geo, cf.material, 9e-3, 100e3, mo);
-  REQUIRE(r9.status == mh::CaseStatus::Ok);
+  REQUIRE(r9.status == mh::CaseStatus::Ok);  // with flange_climb (informational), as at 8.5 mm
   REQUIRE(r9.patches.size() == 1);
   // The capped strips' elastic amplitudes differ from their neighbours' by more than the outlier
   // factor (flagged when the flag compared amplitudes: checked), but their peaks are all p_lim: the

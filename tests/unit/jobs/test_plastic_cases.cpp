@@ -39,7 +39,9 @@ TEST_CASE("plastic Manchester cases: p_max <= p_lim, equilibrium, patches at lea
   const Table cases{mh::read_csv_file((dir / "cases.csv").string())};
   const Table ell{mh::read_csv_file((dir / "ellipses.csv").string())};
   for (std::size_t i = 0; i < cases.t.rows.size(); ++i) {
-    REQUIRE(cases.t.rows[i][3] == "ok");
+    // Every case has an answer; some are outside the multi-Hertzian method's validity (docs/status.md).
+    const std::string& status = cases.t.rows[i][static_cast<std::size_t>(cases.t.column("status"))];
+    REQUIRE((status == "ok" || status == "outside_validity"));
     REQUIRE(cases.num(i, "Fz_kN") == Approx(cases.num(i, "Q_kN")).epsilon(1e-9));
   }
   double worst_tread = 1, least_corner = 1e9;

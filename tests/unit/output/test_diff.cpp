@@ -495,3 +495,109 @@ TEST_CASE("diff cli: --json report", "[diff][cli]") {
   CHECK(found);
   CHECK(j.at("summary") == "diff: 4 cells out of tolerance, 1 missing rows, 1 extra rows");
 }
+
+// ------------------------------------------------------------------------------------------
+// Issue 22 §3: --ignore-columns, and warnings compared by their names with the numbers inside
+// within tolerance
+// ------------------------------------------------------------------------------------------
+
+TEST_CASE("diff: text cells split into words and numbers", "[diff][text]") {
+  const auto P = mh::detail::split_text_cell("non_hertzian:ellipse=2:gap_error=0.525>0.5;edge_gap_mm=-0.049<8");
+  std::vector<std::string> text;
+  std::vector<int> kind;  // 0 word, 1 integer, 2 decimal
+  for (const auto& p : P) {
+    text.push_back(p.text);
+    kind.push_back(!p.number ? 0 : p.integer ? 1 : 2);
+  }
+  CHECK(text == std::vector<std::string>{"non_hertzian:ellipse=", "2", ":gap_error=", "0.525", ">", "0.5",
+                                         ";edge_gap_mm=", "-0.049", "<", "8"});
+  CHECK(kind == std::vector<int>{0, 1, 0, 2, 0, 2, 0, 2, 0, 1});
+  // Digits inside a name stay in the word; an exponent belongs to the number; '+' between two
+  // integers is a word.
+  const auto Q = mh::detail::split_text_cell("p0_MPa=1.5e-05 R13 ellipses=1+2");
+  REQUIRE(Q.size() == 6);
+  CHECK(Q[0].text == "p0_MPa=");
+  CHECK(Q[1].text == "1.5e-05");
+  CHECK(Q[1].value == 1.5e-05);
+  CHECK(Q[2].text == " R13 ellipses=");
+  CHECK(Q[3].text == "1");
+  CHECK(Q[4].text == "+");
+  CHECK(Q[5].text == "2");
+}
+
+TEST_CASE("diff: warnings compared by their names, decimal numbers with the tolerance", "[diff][text]") {
+  const char* ref = "case,status,warnings,message\n"
+                    "0,outside_validity,non_hertzian:ellipse=2:gap_error=0.525>0.5,relative residual 1.2e-05\n";
+  const auto out = [](const std::string& w, const std::string& m = "relative residual 1.2e-05") {
+    return "case,status,warnings,message\n0,outside_validity," + w + "," + m + "\n";
+  };
+  DiffOptions loose;
+  loose.rtol = 1e-2;
+  // The issue's pair: 0.525 against 0.527 is 0.4 %: within 1e-2, beyond the default 1e-9.
+  CHECK(D(ref, out("non_hertzian:ellipse=2:gap_error=0.527>0.5"), loose).ok());
+  const TableDiffResult strict = D(ref, out("non_hertzian:ellipse=2:gap_error=0.527>0.5"));
+  CHECK(strict.cells_out == 1);
+  REQUIRE(column(strict, "warnings"));
+  CHECK(column(strict, "warnings")->text_out == 1);
+  CHECK(D(ref, out("non_hertzian:ellipse=2:gap_error=0.54>0.5"), loose).cells_out == 1);  // 2.9 %
+  // Numbers inside a message too.
+  CHECK(D(ref, out("non_hertzian:ellipse=2:gap_error=0.525>0.5", "relative residual 1.21e-05"), loose).ok());
+  // Names, classes and integers (indices, counts) must be equal whatever the tolerance.
+  DiffOptions huge;
+  huge.rtol = 10;
+  CHECK(D(ref, out("non_hertzian:ellipse=3:gap_error=0.525>0.5"), huge).cells_out == 1);
+  CHECK(D(ref, out("non_hertzian:ellipse=2:gap_mean_error=0.525>0.5"), huge).cells_out == 1);
+  CHECK(D(ref, out("off_profile:ellipse=2:gap_error=0.525>0.5"), huge).cells_out == 1);
+  CHECK(D(ref, out("non_hertzian:ellipse=2:gap_error=0.525>0.5;flange_climb:ellipse=4"), huge).cells_out == 1);
+  CHECK(D(ref, out(""), huge).cells_out == 1);
+  // A column tolerance applies to the numbers inside its cells (absolute, in the column's "unit").
+  DiffOptions col;
+  col.column_tol["warnings"] = 0.005;
+  CHECK(D(ref, out("non_hertzian:ellipse=2:gap_error=0.529>0.5"), col).ok());
+  CHECK_FALSE(D(ref, out("non_hertzian:ellipse=2:gap_error=0.531>0.5"), col).ok());
+  // The status column has no numbers: exact.
+  CHECK_FALSE(D(ref, "case,status,warnings,message\n0,ok,non_hertzian:ellipse=2:gap_error=0.525>0.5,"
+                     "relative residual 1.2e-05\n", huge).ok());
+}
+
+TEST_CASE("diff: --ignore-columns leaves columns out of the comparison", "[diff][ignore]") {
+  const char* ref = "case,residual,iterations,area_mm2\nc1,1e-16,3,56.8\nc2,0,2,113.9\n";
+  const char* out = "case,residual,iterations,area_mm2\nc1,-2e-16,4,56.81\nc2,3e-17,2,113.9\n";
+  DiffOptions o;
+  o.rtol = 1e-2;
+  const TableDiffResult all = D(ref, out, o);
+  CHECK(all.cells_out == 3);  // residual twice (no atol), iterations once
+  o.ignore_columns = {"residual", "iterations"};
+  const TableDiffResult r = D(ref, out, o);
+  CHECK(r.ok());
+  CHECK(r.cells_compared == 2);  // area_mm2 only
+  // An ignored column may be on one side only: not reported missing or extra.
+  DiffOptions one;
+  one.ignore_columns = {"extents"};
+  CHECK(D("case,x\nc1,1\n", "case,x,extents\nc1,1,refined\n", one).ok());
+  CHECK_FALSE(D("case,x\nc1,1\n", "case,x,extents\nc1,1,refined\n").ok());
+  // Not a column, a key column, twice, with a tolerance too: input errors.
+  DiffOptions bad;
+  bad.ignore_columns = {"resid"};
+  CHECK(where_of([&] { D(ref, out, bad); }) == "--ignore-columns");
+  bad.ignore_columns = {"case"};
+  CHECK(where_of([&] { D(ref, out, bad); }) == "--ignore-columns");
+  bad.ignore_columns = {"residual", "residual"};
+  CHECK(where_of([&] { D(ref, out, bad); }) == "diff options");
+  bad.ignore_columns = {"residual"};
+  bad.column_tol["residual"] = 1e-9;
+  CHECK(where_of([&] { D(ref, out, bad); }) == "diff options");
+}
+
+TEST_CASE("diff cli: --ignore-columns in the report and in --json", "[diff][cli][ignore]") {
+  const Cli a = cli({kData + "cases_ref.csv", kData + "cases_changed.csv", "--ignore-columns", "dz_mm,Fz_kN", "--ignore-columns", "status"});
+  CHECK(a.code == 1);  // the missing and extra rows remain
+  CHECK_THAT(a.out, Catch::Contains("ignored columns: dz_mm, Fz_kN, status\n"));
+  CHECK_THAT(a.out, Catch::Contains("diff: 0 cells out of tolerance, 1 missing rows, 1 extra rows"));
+  const Cli j = cli({kData + "cases_ref.csv", kData + "cases_ref.csv", "--ignore-columns", "Fz_kN", "--json"});
+  CHECK(j.code == 0);
+  CHECK(nlohmann::json::parse(j.out).at("ignored_columns") == nlohmann::json::array({"Fz_kN"}));
+  const Cli e = cli({kData + "cases_ref.csv", kData + "cases_ref.csv", "--ignore-columns", "nope"});
+  CHECK(e.code == 2);
+  CHECK_THAT(e.err, Catch::Contains("--ignore-columns: value nope: not a column of"));
+}

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Issue 22 §3: `run --fail-on CLASSES` exits 1 when a case carries a warning of one of the classes
+# (outputs still written, a line says why), 0 otherwise; an unknown class exits 2 and writes
+# nothing; `--fail-on-warning` still means any warning; a batch obeys it too (docs/status.md).
+# Usage: bash fail_on.sh <mhcontact-binary> <source-dir>
+set -uo pipefail
+bin=$1; src=$2
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0
+expect() {  # expected-exit stderr-substring output-dir args...
+  local code=$1 msg=$2 dir=$3; shift 3
+  "$bin" run "$@" -o "$dir" 2>"$tmp/err"; local rc=$?
+  [ "$rc" = "$code" ] || { echo "FAIL (exit $rc, wanted $code): run $*"; cat "$tmp/err"; fails=1; }
+  [ -z "$msg" ] || grep -qF -- "$msg" "$tmp/err" || { echo "FAIL (stderr lacks '$msg'): run $*"; cat "$tmp/err"; fails=1; }
+}
+m=$src/cases/manchester.json
+# The classes the shipped Manchester sweep must never show: exit 0, as CI uses it.
+expect 0 "ok 74, outside_validity 25" "$tmp/ok" "$m" --fail-on off_profile,non_hertzian_excluded,pressure_spike,strip_outlier,cant
+# Its flange-climb and non-Hertzian rows: exit 1, outputs written.
+expect 1 "mhcontact run: 12 cases with flange_climb (--fail-on): exit 1" "$tmp/fc" "$m" --fail-on off_profile,flange_climb
+[ -s "$tmp/fc/cases.csv" ] || { echo "FAIL: --fail-on: outputs not written"; fails=1; }
+expect 1 "25 cases with non_hertzian, 10 cases with interacting (--fail-on): exit 1" "$tmp/nh" "$m" --fail-on non_hertzian,interacting
+# Any warning.
+expect 1 "37 cases with warnings, 0 cant warning(s) (--fail-on-warning): exit 1" "$tmp/any" "$m" --fail-on-warning
+# A misspelt class is an input error: exit 2, the classes listed, nothing written.
+expect 2 '--fail-on: value "off-profile": not a warning class (the classes are non_hertzian, ' "$tmp/bad" "$m" --fail-on off-profile
+[ ! -e "$tmp/bad" ] || { echo "FAIL: a refused run wrote $tmp/bad"; fails=1; }
+expect 2 '--fail-on: value "": empty warning class' "$tmp/bad2" "$m" --fail-on ""
+# A batch: the fleet's flange-climb rows.
+expect 1 "48 cases with flange_climb (--fail-on): exit 1" "$tmp/fleet" "$src/cases/fleet.json" --fail-on flange_climb
+expect 0 "" "$tmp/fleet0" "$src/cases/fleet.json" --fail-on off_profile -q
+exit $fails
