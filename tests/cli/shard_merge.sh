@@ -3,6 +3,7 @@
 # tables of the unsharded run (also with more shards than cases, a failing case, and pressure
 # grids). Missing, doubled or foreign shards are refused with exit 2.
 set -euo pipefail
+. "$(dirname "$0")/lib/csv_col.sh"
 bin=$1; src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 check_equal() {  # $1 = reference dir, $2 = merged dir
@@ -17,7 +18,7 @@ check_equal "$tmp/full" "$tmp/merged"
 # 4 shards cut the loads of one t_Y between shards 2 and 3 (cases 49 .. 50 share t_Y = 2 mm):
 # both shards write its geometry rows, the merge keeps them once, where one run writes them.
 for k in 1 2 3 4; do "$bin" run "$src/cases/manchester.json" -o "$tmp/q$k" --shard $k/4 -q; done
-test "$(tail -n +2 "$tmp/q2/geometry.csv" | tail -n 1 | cut -d, -f1)" = "$(tail -n +2 "$tmp/q3/geometry.csv" | head -n 1 | cut -d, -f1)"
+test "$(csv_col "$tmp/q2/geometry.csv" tY_mm | tail -n 1)" = "$(csv_col "$tmp/q3/geometry.csv" tY_mm | head -n 1)"
 "$bin" merge "$tmp"/q1 "$tmp"/q2 "$tmp"/q3 "$tmp"/q4 -o "$tmp/qmerged" -q
 check_equal "$tmp/full" "$tmp/qmerged"
 
