@@ -88,6 +88,9 @@ void print_info(const Profile& p, bool json, ProfileNoise noise, std::ostream& o
       text += "gauge_point_mm: none (profile does not reach 14 mm below the top on the gauge side)\n";
     }
   } else if (p.kind == ProfileKind::Wheel) {
+    // How y = 0 was put on the taping line (a wheel measured from its flange back), or as in the file.
+    j["taping_line"] = p.taping_line.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(p.taping_line);
+    text += "taping_line: " + (p.taping_line.empty() ? std::string("y = 0 as in the file") : p.taping_line) + "\n";
     const WheelLandmarks L = wheel_landmarks(p);
     j["flange_tip_y_mm"] = L.y_tip * units::per_mm;
     j["flange_tip_z_mm"] = L.z_tip * units::per_mm;

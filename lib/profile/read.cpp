@@ -107,6 +107,7 @@ Profile read_profile(const std::string& path, const ProfileReadOptions& opt) {
   p.checksum = sha256_hex(bytes);
   p.warnings = r.warnings;
   p.cleanup = r.cleanup;
+  p.taping_line = r.taping_line;
   p.file_measures = r.measures;
   p.print_step = r.print_step * opt.scale / 1000;
   p.y.resize(r.size());

@@ -36,6 +36,7 @@ struct RawProfile {
   std::string format;
   std::vector<std::string> warnings;
   CleanupReport cleanup;
+  std::string taping_line;  ///< wheels: how y = 0 was put on the taping line (Profile::taping_line)
   std::vector<std::pair<std::string, std::string>> measures;  ///< from the header (MiniProf Sd/Sh/qR)
   /// Smallest printed step of the coordinates (the most decimals seen), in the file's length
   /// units until the reader scales it to mm; 0: not printed (sampled elements) or unknown.
