@@ -46,12 +46,26 @@ for r in fr_ol.csv circ_r100.prr circ_r300.prr flat_plane.prr flat_ang200.prr gr
   [ $rc -eq 0 ] || [ $rc -eq 1 ] || { cat "$tmp/$r.err" >&2; exit 1; }
   test "$(wc -l < "$tmp/$r/cases.csv")" -eq 75
 done
-for w in MBench_S1002_v3.prw circ_r10.prw circ_r50.prw circ_r100.prw flat_plane.prw flat_ang200.prw; do
+for w in MBench_S1002_v3.prw circ_r10.prw circ_r50.prw circ_r100.prw flat_plane.prw; do
   echo "{\"wheel\": {\"profile\": \"$d/$w\"}, \"rail\": {\"profile\": $std_rail, \"inclination\": \"1:40\"}, $sweep}" > "$tmp/$w.json"
   set +e; "$bin" run "$tmp/$w.json" -o "$tmp/$w" -q 2>"$tmp/$w.err"; rc=$?; set -e
   echo "$w on 60E1 1:40: exit $rc, $(csv_col "$tmp/$w/cases.csv" status | sort | uniq -c | awk '{printf "%s %d ", $2, $1}')"
   [ $rc -eq 0 ] || [ $rc -eq 1 ] || { cat "$tmp/$w.err" >&2; exit 1; }
 done
+# the surfaces without a flange are placed by the gauge rule with a warning (docs/profiles.md
+# "Placement check"); the one inclined by 0.2 rad touches the rail at 11.5 deg, with its edge:
+# refused before any case is solved (exit 2), explicit positioning named as the way out
+for w in circ_r10.prw flat_plane.prw; do
+  "$bin" geometry "$tmp/$w.json" -o "$tmp/$w.geo" 2>"$tmp/$w.err"
+  grep -q "$w: the wheel has no flange.*track.positioning" "$tmp/$w.err" || { cat "$tmp/$w.err"; exit 1; }
+done
+"$bin" geometry "$tmp/MBench_S1002_v3.prw.json" -o "$tmp/mb.geo" 2>"$tmp/mb.err"
+! grep -q "has no flange" "$tmp/mb.err"
+w=flat_ang200.prw
+echo "{\"wheel\": {\"profile\": \"$d/$w\"}, \"rail\": {\"profile\": $std_rail, \"inclination\": \"1:40\"}, $sweep}" > "$tmp/$w.json"
+set +e; "$bin" run "$tmp/$w.json" -o "$tmp/$w" -q 2>"$tmp/$w.err"; rc=$?; set -e
+test $rc -eq 2; test ! -e "$tmp/$w/cases.csv"
+grep -q "contact angle -11.459 deg.*not on the tread of both profiles.*track.positioning" "$tmp/$w.err" || { cat "$tmp/$w.err"; exit 1; }
 # the clean-up can be made strict: the old rejection, exit 2
 echo "{\"wheel\": {\"profile\": {\"standard\": \"S1002\"}}, \"rail\": {\"profile\": {\"file\": \"$d/avg_low2.ban\", \"cleanup\": \"strict\"}, \"inclination\": \"as-is\"}, $sweep}" > "$tmp/strict.json"
 set +e; "$bin" run "$tmp/strict.json" -o "$tmp/strict" -q 2>"$tmp/strict.err"; rc=$?; set -e
