@@ -39,6 +39,10 @@ void add_profile_read_options(CLI::App& app, ProfileReadOptions& opt) {
          "clean-up where contact can happen: envelope (default: folds and loops replaced by the outer "
          "envelope, with a warning), strict (reject any fold larger than 0.05 mm jitter) or off (drop nothing)")
       ->check(CLI::IsMember({"envelope", "strict", "off"}));
+  app.add_option("--section", opt.section,
+                 "multi-profile MiniProf files (.mpt): read profile K ([Profile<K>Info]); default: the only one "
+                 "that can be a wheel or a rail (--kind narrows it), else the file is refused with the list")
+      ->check(CLI::Range(1, 1000000));
   app.add_flag("--no-check", [&opt](std::int64_t) { opt.check = false; },
                "skip the shape plausibility checks (flange side, upside down, kind)");
 }

@@ -305,6 +305,14 @@ std::size_t extend_over_local_folds(const RawProfile& r, std::size_t i0) {
 
 }  // namespace
 
+bool shape_could_be(const RawProfile& r, ProfileKind k) {
+  if (r.size() < 3) return false;
+  const Shape s = shape_of(r);
+  if (k == ProfileKind::Wheel) return flange_on_gauge_side(r, s) || flange_on_field_side(r, s);
+  if (k == ProfileKind::Rail) return rail_like(r, s);
+  return false;
+}
+
 void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOptions& opt) {
   const std::string kname[] = {"unknown", "wheel", "rail"};
   if (r.size() < L::kMinPoints)
@@ -331,7 +339,8 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
                      "the file holds no profile");
   if (r.size() < L::kMinPoints)
     throw InputError(path, std::to_string(r.size()) + " distinct points",
-                     "a profile needs at least " + std::to_string(L::kMinPoints) + " points");
+                     "a profile needs at least " + std::to_string(L::kMinPoints) + " points",
+                     "the others repeat the previous point: check the file (a column read twice?)");
   if (r.y.back() < r.y.front()) reverse_raw(r);
   Shape s = shape_of(r);
   if (s.width < L::kMinWidth_mm || s.width > L::kMaxWidth_mm) {
@@ -494,7 +503,8 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
     r.warnings.push_back("clipped " + std::to_string(r.size() - 1 - b) + " points not monotone in y at the " + what1);
   keep_range(r, a, b);
   if (r.size() < L::kMinPoints)
-    throw InputError(path, std::to_string(r.size()) + " points left", "too few points after clipping");
+    throw InputError(path, std::to_string(r.size()) + " points left", "too few points after clipping",
+                     "the profile turns back in y almost everywhere: check the axes (--mirror-y, --kind) and the format");
   // Taping-line rule for wheels whose file origin is not the taping line (MiniProf: measured
   // from the flange back): if the flange tip is not at negative y, put y = 0 at 70 mm
   // (EN 13715 taping line) from the flange back = the innermost point, lowest y.
