@@ -36,10 +36,13 @@ cmp "$tmp/ffull/pressure.csv" "$tmp/fmerged/pressure.csv"
 
 # Refused: a missing shard, a shard twice, shards of another run, a bad --shard.
 expect2() { set +e; "$@" 2>"$tmp/err"; rc=$?; set -e; test $rc -eq 2 || { echo "expected exit 2: $*" >&2; exit 1; }; }
+# the message names the shard that is missing, and how to make it (issue #22)
 expect2 "$bin" merge "$tmp/s1" "$tmp/s2" -o "$tmp/m2"
-grep -q "give all of them" "$tmp/err"
+grep -q "split into 3 shards: shard 3/3 missing (run the missing shard(s) .* --shard K/3)" "$tmp/err" || { cat "$tmp/err"; exit 1; }
+expect2 "$bin" merge "$tmp/s3" "$tmp/s1" -o "$tmp/m2"
+grep -q "shard 2/3 missing" "$tmp/err" || { cat "$tmp/err"; exit 1; }
 expect2 "$bin" merge "$tmp/s1" "$tmp/s2" "$tmp/s2" -o "$tmp/m3"
-grep -q "missing or given twice" "$tmp/err"
+grep -q "shard 3/3 missing; shard 2/3 in $tmp/s2 $tmp/s2 given twice" "$tmp/err" || { cat "$tmp/err"; exit 1; }
 "$bin" run "$src/cases/s1002-60e1.json" -o "$tmp/o2" --shard 2/3 -q
 expect2 "$bin" merge "$tmp/s1" "$tmp/o2" "$tmp/s3" -o "$tmp/m4"
 grep -q "different runs" "$tmp/err"
