@@ -39,6 +39,10 @@ void add_profile_read_options(CLI::App& app, ProfileReadOptions& opt) {
          "clean-up where contact can happen: envelope (default: folds and loops replaced by the outer "
          "envelope, with a warning), strict (reject any fold larger than 0.05 mm jitter) or off (drop nothing)")
       ->check(CLI::IsMember({"envelope", "strict", "off"}));
+  app.add_option("--section", opt.section,
+                 "multi-profile MiniProf files (.mpt): read profile K ([Profile<K>Info]); default: the only one "
+                 "that can be a wheel or a rail (--kind narrows it), else the file is refused with the list")
+      ->check(CLI::Range(1, 1000000));
   app.add_flag("--no-check", [&opt](std::int64_t) { opt.check = false; },
                "skip the shape plausibility checks (flange side, upside down, kind)");
 }
@@ -88,6 +92,9 @@ void print_info(const Profile& p, bool json, ProfileNoise noise, std::ostream& o
       text += "gauge_point_mm: none (profile does not reach 14 mm below the top on the gauge side)\n";
     }
   } else if (p.kind == ProfileKind::Wheel) {
+    // How y = 0 was put on the taping line (a wheel measured from its flange back), or as in the file.
+    j["taping_line"] = p.taping_line.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(p.taping_line);
+    text += "taping_line: " + (p.taping_line.empty() ? std::string("y = 0 as in the file") : p.taping_line) + "\n";
     const WheelLandmarks L = wheel_landmarks(p);
     j["flange_tip_y_mm"] = L.y_tip * units::per_mm;
     j["flange_tip_z_mm"] = L.z_tip * units::per_mm;

@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
+#include "geometry/placement_check.hpp"
 
 namespace mh {
 
@@ -226,6 +227,20 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   G.wheel_z0 = W.z(0.0);
   G.roller_radius = track.roller_radius;
 
+  // Placement check (docs/profiles.md "Placement check"), before any t_Y is scanned: a wheel
+  // placed by the gauge rule must stand with its tread on the rail's tread at t_Y = 0. Explicit
+  // positioning is the user's placement (a roller, a narrow section): not checked.
+  if (track.positioning == TrackSetup::Positioning::Gauge) {
+    const PlacementCheck pc = check_placement(G);
+    if (!pc.ok)
+      throw InputError(wheel.source + " on " + rail.source, pc.found ? "t_Y = 0: " + pc.numbers : "t_Y = 0",
+                       "gauge positioning places the wheel so that its main contact at t_Y = 0 is not on the tread of "
+                       "both profiles: " + pc.why + "; the pair is refused before any case is solved",
+                       "check the wheel's taping line (mhcontact profile info: taping_line), the mirror options and "
+                       "the track data; if the placement is meant (a test rig, a narrow section, a profile without "
+                       "a flange), place the wheel yourself: track.positioning \"explicit\" with track.lateral_offset_mm");
+  }
+
   const std::size_t nt = static_cast<std::size_t>(std::floor((opt.tY_max - opt.tY_min) / opt.tY_step + 1e-9)) + 1;
   G.tY.resize(nt);
   // Grid values: when t_Y_min is a whole number of steps, each value is computed as an integer
@@ -364,6 +379,12 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
       G.flange_y_steepest = W.node_y(i_lo);
     }
   }
+  if (!G.has_flange && track.positioning == TrackSetup::Positioning::Gauge)
+    G.warnings.push_back("the wheel has no flange (no lowest point " + format_number(opt.flange_min_height * units::per_mm) +
+                         " mm below its taping line on the gauge side): gauge positioning places it by a flange back it "
+                         "does not have (track.flange_back_position_mm from its origin); for a roller, a test wheel or "
+                         "a section without a flange place it yourself: track.positioning \"explicit\" with "
+                         "track.lateral_offset_mm");
   const std::size_t ne = G.ellipses.size();
   G.table.resize(nt * ne);
   // Outside its own t_Y interval an ellipse's candidate is its main strip at the nearer end of

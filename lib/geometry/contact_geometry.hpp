@@ -123,6 +123,8 @@ class ContactGeometry {
   /// within `flange_angle_tolerance` of it [m]; has_flange false for a wheel without a flange.
   bool has_flange = false;
   double flange_gamma_max = 0, flange_y_steepest = 0;
+  /// Warnings about the pair's placement (a wheel without a flange placed by the gauge rule).
+  std::vector<std::string> warnings;
   double rail_gauge_y = 0;               ///< [m] gauge point of the rail (rail frame); explicit positioning: the gauge point if the rail has one, else 0
   double wheel_window = 0, rail_window = 0;  ///< [m] curvature fit windows used (profile/curve.hpp)
   /// The smooth profiles the tables were built from, kept for the 3-D gap of the grid methods

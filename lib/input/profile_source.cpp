@@ -38,7 +38,7 @@ ProfileSource parse_profile_source(const Ctx& c, const json& v, const std::strin
     if (v.contains("step_mm")) s.step = c.positive(v, path, "step_mm") * units::mm;
     return s;
   }
-  c.only_keys(v, path, {"file", "format", "mirror_y", "mirror_z", "scale", "kind", "vampire_side", "check", "cleanup"});
+  c.only_keys(v, path, {"file", "format", "mirror_y", "mirror_z", "scale", "kind", "vampire_side", "check", "cleanup", "section"});
   if (!v.contains("file")) c.fail(path, &v, "a profile object needs \"file\" (or \"standard\")");
   s.file = resolve_path(case_path, c.string(v, path, "file"));
   if (v.contains("format")) {
@@ -63,6 +63,13 @@ ProfileSource parse_profile_source(const Ctx& c, const json& v, const std::strin
     s.read.vampire_side = c.string(v, path, "vampire_side");
     if (s.read.vampire_side != "left" && s.read.vampire_side != "right")
       c.fail(path + "/vampire_side", &v.at("vampire_side"), "must be \"left\" or \"right\"");
+  }
+  // Multi-profile MiniProf files (.mpt): which profile, K of [Profile<K>Info] (docs/profiles.md).
+  if (v.contains("section")) {
+    const json& k = v.at("section");
+    if (!k.is_number_unsigned() || k.get<std::uint64_t>() < 1 || k.get<std::uint64_t>() > 1000000)
+      c.fail(path + "/section", &k, "section must be a whole number K >= 1: the profile [Profile<K>Info] of a multi-profile MiniProf file");
+    s.read.section = static_cast<int>(k.get<std::uint64_t>());
   }
   if (v.contains("kind")) c.fail(path + "/kind", &v.at("kind"), "the kind follows from the section (wheel or rail)");
   return s;

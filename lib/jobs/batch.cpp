@@ -4,6 +4,8 @@
 #include <cmath>
 #include <memory>
 #include <ostream>
+#include <set>
+#include <string>
 
 #include "core/errors.hpp"
 #include "core/units.hpp"
@@ -86,6 +88,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   SweepCounts counts;
   auto& by_status = counts.by_status;
   std::uint64_t invalid = 0, cases_total = 0, cant_warned = 0;
+  std::set<std::string> printed;  // (profile source, warning) already printed
   RunOptions quiet_opt = opt;
   quiet_opt.progress = false;
   for (std::uint64_t k = first; k < end; ++k) {
@@ -139,7 +142,13 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     }
     if (pw) pw->begin_array("cases");
     if (pg) {
-      if (!opt.quiet) warn_profiles(*pg, err);
+      // A profile's warnings once per batch, not once per pair it is in (issue #22: the same five
+      // lines appeared eight times): the reader's warnings of a file, and any pair-level warning
+      // with the same text, are printed the first time they occur.
+      if (!opt.quiet)
+        for (const Profile* p : {&pg->wheel, &pg->rail})
+          for (const auto& w : p->warnings)
+            if (printed.insert(p->source + '\n' + w).second) err << "mhcontact: warning: " << p->source << ": " << w << "\n";
       if (!pg->cant.warnings.empty()) ++cant_warned;
       // Each pair can be inspected on its own: its profiles, CAF and potential
       // ellipses, as `mhcontact geometry` writes them for one pair.

@@ -65,6 +65,7 @@ PairGeometry build_pair_geometry(const CaseFile& cf) {
   pg.cant = check_rail_cant(pg.rail, cf.inclination);
   for (const auto& w : pg.cant.warnings) pg.rail.warnings.push_back(w);
   pg.geo = build_geometry(pg.wheel, pg.rail, cf.track, cf.geometry);
+  for (const auto& w : pg.geo.warnings) pg.wheel.warnings.push_back(w);  // placement (a wheel without a flange)
   return pg;
 }
 

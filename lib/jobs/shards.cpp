@@ -123,8 +123,38 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
   }
   std::sort(shards.begin(), shards.end(), [](const Shard& a, const Shard& b) { return a.meta["index"] < b.meta["index"]; });
   const auto N = shards[0].meta["count"].get<unsigned>();
-  if (shards.size() != N)
-    throw InputError("merge", std::to_string(shards.size()) + " directories", "the run was split into " + std::to_string(N) + " shards: give all of them, once each");
+  for (const auto& sh : shards)
+    if (sh.meta["count"].get<unsigned>() != N)
+      throw InputError(sh.dir + "/shard.json", "count " + sh.meta["count"].dump(),
+                       "shards of different runs: " + shards[0].dir + " is one of " + std::to_string(N) + " shards, this one of " +
+                           sh.meta["count"].dump(),
+                       "give the directories of one run");
+  {
+    // Name the shards that are missing or given twice (issue #22), not only their count.
+    std::map<unsigned, std::vector<std::string>> dirs_of;
+    for (const auto& sh : shards) dirs_of[sh.meta["index"].get<unsigned>()].push_back(sh.dir);
+    std::string missing, twice;
+    std::size_t n_missing = 0;
+    for (unsigned k = 1; k <= N; ++k) {
+      const auto it = dirs_of.find(k);
+      if (it == dirs_of.end()) {
+        if (++n_missing <= 20) missing += (missing.empty() ? "" : ", ") + std::to_string(k) + "/" + std::to_string(N);
+      } else if (it->second.size() > 1) {
+        twice += (twice.empty() ? "" : "; ") + std::to_string(k) + "/" + std::to_string(N) + " in";
+        for (const auto& d : it->second) twice += " " + d;
+      }
+    }
+    if (n_missing > 20) missing += " and " + std::to_string(n_missing - 20) + " more";
+    if (!missing.empty() || !twice.empty())
+      throw InputError("merge", std::to_string(shards.size()) + " directories",
+                       "the run was split into " + std::to_string(N) + " shards: " +
+                           (missing.empty() ? std::string() : "shard " + missing + " missing") +
+                           (!missing.empty() && !twice.empty() ? "; " : "") +
+                           (twice.empty() ? std::string() : "shard " + twice + " given twice"),
+                       missing.empty() ? "give each shard's directory once"
+                                       : "run the missing shard(s) with the same inputs (mhcontact run CASE -o DIR --shard K/" +
+                                             std::to_string(N) + ") and give all " + std::to_string(N) + " directories");
+  }
   std::uint64_t expect = 0;
   for (unsigned k = 0; k < N; ++k) {
     const nlohmann::json& m = shards[k].meta;

@@ -39,6 +39,10 @@ struct Profile {
   std::string checksum;    ///< SHA-256 of the source file's bytes (hex), empty for generated profiles
   std::vector<std::string> warnings;  ///< what cleaning did (e.g. "removed 3 duplicated points")
   CleanupReport cleanup;   ///< what the clean-up did (files only)
+  /// Wheels whose file origin is not the taping line: how the reader put y = 0 there (the file
+  /// y it chose and why: the file origin is the flange back, or the innermost point is taken as
+  /// the flange back; EN 13715, 70 mm). Empty when y is as in the file.
+  std::string taping_line;
   /// Measures found in the file's header (MiniProf "Sd/Sh/qR" line, ...), as written there.
   std::vector<std::pair<std::string, std::string>> file_measures;
   /// [m] Step of the coordinates as printed in the file: 10^-d mm for the most decimals d seen

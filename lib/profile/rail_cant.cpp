@@ -154,9 +154,15 @@ RailCantCheck check_rail_cant(const Profile& rail, const Inclination& incl, cons
   c.used = estimate_rail_cant(rail, opt);
   c.inclination = inclination_angle(incl);
   c.file_angle = c.used.angle - c.inclination;
-  if (!c.used.confident) return c;
+  if (!c.used.found) return c;
+  // A worn head gives an estimate that is not confident (biased by the wear): the checks still
+  // run on it, with a margin of two standard errors, and the warning says so (issue #22: a
+  // worn rail laid at 1:40 canted again gave 7.7 deg silently).
+  const double margin = c.used.confident ? 0.0 : 2 * c.used.std_error;
+  const std::string note = c.used.confident ? std::string() : " (estimate not confident: " + c.used.why + ")";
   const bool cants = incl.mode == Inclination::Mode::Ratio || (incl.mode == Inclination::Mode::Angle && incl.value != 0);
-  if (std::fabs(c.file_angle) >= lim.already_canted) {
+  const std::size_t before = c.warnings.size();
+  if (std::fabs(c.file_angle) >= lim.already_canted + margin) {
     if (cants)
       c.warnings.push_back("cant: the rail file looks canted already (" + deg(c.file_angle) + ", " + cant_ratio(c.file_angle) +
                            ") and the case cants it again by " + to_string(incl) + ": " + deg(c.used.angle) +
@@ -165,12 +171,13 @@ RailCantCheck check_rail_cant(const Profile& rail, const Inclination& incl, cons
       c.warnings.push_back("cant: the case says \"none\" (a vertical rail) but the rail file looks canted (" +
                            deg(c.file_angle) + ", " + cant_ratio(c.file_angle) + "); use \"as-is\" for a file laid as used");
   }
-  if (c.used.angle < -lim.tolerance)
+  if (c.used.angle < -lim.tolerance - margin)
     c.warnings.push_back("cant: the rail as used leans to the field side (" + deg(c.used.angle) + ", " + cant_ratio(c.used.angle) +
                          "), outside the usual 0 … 1:20: a canted rail mirrored in y (check mirror_y)?");
-  else if (c.used.angle > lim.max_cant + lim.tolerance)
+  else if (c.used.angle > lim.max_cant + lim.tolerance + margin)
     c.warnings.push_back("cant: the rail as used is canted " + deg(c.used.angle) + " (" + cant_ratio(c.used.angle) +
                          "), more than the usual 1:20 (2.862 deg)");
+  for (std::size_t k = before; k < c.warnings.size(); ++k) c.warnings[k] += note;
   return c;
 }
 

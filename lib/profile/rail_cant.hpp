@@ -72,7 +72,9 @@ struct RailCantCheck {
   RailCant used;           ///< estimated on the rail as used (after the case's inclination)
   double inclination = 0;  ///< [rad] the cant the case applied
   double file_angle = 0;   ///< [rad] used.angle − inclination: the cant the file had
-  /// "cant: ..." messages; empty when the estimate is not confident or nothing is wrong.
+  /// "cant: ..." messages; empty when nothing is wrong or no estimate was found. An estimate that
+  /// is not confident (a worn head) is checked too, with a margin of two standard errors on
+  /// every limit, and its warnings say "estimate not confident".
   std::vector<std::string> warnings;
 };
 

@@ -59,7 +59,7 @@ const char* to_string(ProfileCleanup c) {
 ProfileFormat format_from_extension(const std::string& path) {
   const std::string e = extension(path);
   if (e == "prr" || e == "prw") return ProfileFormat::Simpack;
-  if (e == "ban" || e == "whl") return ProfileFormat::MiniProf;
+  if (e == "ban" || e == "whl" || e == "mpt") return ProfileFormat::MiniProf;
   if (e == "txt" || e == "csv" || e == "dat" || e == "wheel" || e == "rail") return ProfileFormat::Table;
   if (e == "whe" || e == "rai") return ProfileFormat::Vampire;
   return ProfileFormat::Auto;
@@ -74,12 +74,18 @@ Profile read_profile(const std::string& path, const ProfileReadOptions& opt) {
   if (f == ProfileFormat::Auto) f = sniff(lines);
   if (!(opt.scale > 0) || !std::isfinite(opt.scale))
     throw InputError(path, format_number(opt.scale), "scale must be a positive number");
+  if (opt.section < 0)
+    throw InputError(path, std::to_string(opt.section), "a section is a profile number K >= 1 ([Profile<K>Info])");
+  if (opt.section > 0 && f != ProfileFormat::MiniProf)
+    throw InputError(path, "section " + std::to_string(opt.section),
+                     std::string("a section applies only to multi-profile MiniProf files, not to a ") + to_string(f) + " file",
+                     "drop \"section\" (--section)");
   RawProfile r;
   switch (f) {
     case ProfileFormat::Simpack: r = read_simpack(path, lines); break;
     case ProfileFormat::MiniProf: {
       ProfileKind hint = ext == "whl" ? ProfileKind::Wheel : ext == "ban" ? ProfileKind::Rail : opt.kind;
-      r = read_miniprof(path, lines, hint);
+      r = read_miniprof(path, lines, hint, opt.section);
       break;
     }
     case ProfileFormat::Vampire: r = read_vampire(path, lines, opt.vampire_side); break;
@@ -107,6 +113,7 @@ Profile read_profile(const std::string& path, const ProfileReadOptions& opt) {
   p.checksum = sha256_hex(bytes);
   p.warnings = r.warnings;
   p.cleanup = r.cleanup;
+  p.taping_line = r.taping_line;
   p.file_measures = r.measures;
   p.print_step = r.print_step * opt.scale / 1000;
   p.y.resize(r.size());

@@ -40,6 +40,10 @@ struct ProfileReadOptions {
   ProfileCleanup cleanup = ProfileCleanup::Envelope;  ///< clean-up where contact can happen (default envelope)
   /// VAMPIRE files hold both sides; which one to read: "right" (default) or "left".
   std::string vampire_side = "right";
+  /// Multi-profile MiniProf files (.mpt, [Profile<K>Info] sections): which profile to read
+  /// (K, 1-based). 0 (default): the only one that can be a wheel or a rail (the expected kind
+  /// when known); several: refused with the list of profiles. Any other file: must be 0.
+  int section = 0;
 };
 
 /// Read a profile file. Throws InputError (file, line, value, rule, fix) on anything malformed.

@@ -277,7 +277,41 @@ void outer_envelope(RawProfile& r, const std::string& path, std::size_t& i0, std
                        " (largest step back " + mm(largest) + "; cleanup \"strict\" rejects instead)");
 }
 
+/// Walking from index i0 towards the start of the file, where y should keep decreasing: the
+/// first index up to which every backward step (a fold or loop) is local, i.e. is no deeper than
+/// kMaxFold_mm and followed, further on, by a point beyond the fold's start. A step back that the
+/// profile never recovers from (a face turning away, a flank) ends the walk: the points beyond
+/// it are clipped as before.
+std::size_t extend_over_local_folds(const RawProfile& r, std::size_t i0) {
+  std::size_t a = i0;
+  while (a > 0) {
+    if (r.y[a - 1] < r.y[a]) { --a; continue; }
+    const double ystart = r.y[a];
+    double depth = 0;
+    std::size_t resume = a;
+    for (std::size_t j = a; j-- > 0;) {
+      depth = std::max(depth, r.y[j] - ystart);
+      if (depth > L::kMaxFold_mm) break;
+      if (r.y[j] < ystart) { resume = j; break; }
+    }
+    if (resume == a) break;
+    a = resume;
+  }
+  // No gain unless the walk passed a fold (a plain monotone run is kept by the clip anyway).
+  std::size_t plain = i0;
+  while (plain > 0 && r.y[plain - 1] < r.y[plain]) --plain;
+  return a < plain ? a : i0;
+}
+
 }  // namespace
+
+bool shape_could_be(const RawProfile& r, ProfileKind k) {
+  if (r.size() < 3) return false;
+  const Shape s = shape_of(r);
+  if (k == ProfileKind::Wheel) return flange_on_gauge_side(r, s) || flange_on_field_side(r, s);
+  if (k == ProfileKind::Rail) return rail_like(r, s);
+  return false;
+}
 
 void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOptions& opt) {
   const std::string kname[] = {"unknown", "wheel", "rail"};
@@ -305,7 +339,8 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
                      "the file holds no profile");
   if (r.size() < L::kMinPoints)
     throw InputError(path, std::to_string(r.size()) + " distinct points",
-                     "a profile needs at least " + std::to_string(L::kMinPoints) + " points");
+                     "a profile needs at least " + std::to_string(L::kMinPoints) + " points",
+                     "the others repeat the previous point: check the file (a column read twice?)");
   if (r.y.back() < r.y.front()) reverse_raw(r);
   Shape s = shape_of(r);
   if (s.width < L::kMinWidth_mm || s.width > L::kMaxWidth_mm) {
@@ -368,6 +403,29 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
     i1 = static_cast<std::size_t>(std::max_element(r.y.begin() + static_cast<long>(i0), r.y.end()) - r.y.begin());
     what0 = "flange back";
     what1 = "field-side end (rim face)";
+  }
+  // A wheel's flange back lies outside that region (it never touches the rail) but places the
+  // taping line (70 mm from it). A local loop or fold there (a scan that loops at the flange tip)
+  // is cleaned where it is, like inside the region, instead of clipping all the points beyond it:
+  // the region grows over every fold after which the profile goes on past the fold's start.
+  if (r.kind == ProfileKind::Wheel) {
+    std::size_t a = i0;
+    for (bool grown = true; grown;) {
+      grown = false;
+      // A fold that starts in the region and reaches back past points before it (a loop around
+      // the flange tip): those points belong to the fold.
+      double m = *std::min_element(r.y.begin() + static_cast<std::ptrdiff_t>(a), r.y.begin() + static_cast<std::ptrdiff_t>(i1) + 1);
+      while (a > 0 && r.y[a - 1] >= m) --a, m = std::min(m, r.y[a]), grown = true;
+      const std::size_t b = extend_over_local_folds(r, a);
+      if (b < a) a = b, grown = true;
+    }
+    if (a < i0) {
+      r.warnings.push_back("clean-up extended over " + std::to_string(i0 - a) + " points of the flange back (lines " +
+                           std::to_string(r.line[a]) + " … " + std::to_string(r.line[i0]) +
+                           ") to clean a fold or loop there where it is, instead of clipping the flange back, which places "
+                           "the taping line");
+      i0 = a;
+    }
   }
   if (opt.cleanup == ProfileCleanup::Envelope && r.kind == ProfileKind::Rail) {
     // A flank that turns under the head inside the depth that can touch (a worn gauge face that
@@ -445,15 +503,25 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
     r.warnings.push_back("clipped " + std::to_string(r.size() - 1 - b) + " points not monotone in y at the " + what1);
   keep_range(r, a, b);
   if (r.size() < L::kMinPoints)
-    throw InputError(path, std::to_string(r.size()) + " points left", "too few points after clipping");
+    throw InputError(path, std::to_string(r.size()) + " points left", "too few points after clipping",
+                     "the profile turns back in y almost everywhere: check the axes (--mirror-y, --kind) and the format");
   // Taping-line rule for wheels whose file origin is not the taping line (MiniProf: measured
   // from the flange back): if the flange tip is not at negative y, put y = 0 at 70 mm
   // (EN 13715 taping line) from the flange back = the innermost point, lowest y.
+  // A wheel whose flange tip lies at positive y was measured from its flange back (MiniProf
+  // wheels: X from the back face): y = 0 goes 70 mm (EN 13715) from its innermost point, the
+  // flange back. (MiniProf's X = 0 is the back face itself; the first points may start a little
+  // inside it, on the rounded corner: 1.55 mm in avg_wheel.whl. The innermost point is used
+  // whatever the format, so that a file's placement does not depend on its extension.)
   if (r.kind == ProfileKind::Wheel) {
     s = shape_of(r);
     if (flange_on_gauge_side(r, s) && r.y[s.i_min] >= 0) {
       const double shift = s.y0 + L::kTapingLineFromFlangeBack_mm;
       for (auto& y : r.y) y -= shift;
+      r.taping_line = "file y = " + mm(shift) + ", " + mm(L::kTapingLineFromFlangeBack_mm) +
+                      " from the flange back, the innermost point at file y = " + mm(s.y0) +
+                      ": the file is measured from the flange back (its flange tip lies at positive y" +
+                      (r.format == "miniprof" ? ", as MiniProf wheels are" : "") + "); EN 13715";
       r.warnings.push_back("y = 0 moved to the taping line, " + mm(L::kTapingLineFromFlangeBack_mm) +
                            " from the flange back at file y = " + mm(s.y0));
     }

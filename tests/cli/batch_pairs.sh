@@ -4,6 +4,7 @@
 # `geometry MANIFEST` writes the same; both plot scripts take --pair and refuse a batch directory
 # without it with a clear message; a rerun over a batch directory is accepted.
 set -euo pipefail
+. "$(dirname "$0")/lib/csv_col.sh"
 bin=$1; src=$2
 py=/usr/bin/python3; [ -x "$py" ] || py=python3
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -26,7 +27,7 @@ test "$(tail -n +2 "$tmp/fg/pairs.csv" | wc -l)" -eq "$n"
 # Rerun over a batch directory (it holds pairs/): accepted.
 "$bin" run "$src/cases/fleet.json" -o "$tmp/fleet" --format csv -q
 # Plots: --pair for batch directories; without it a clear error naming --pair.
-case=$(awk -F, 'NR>1 && $1==0 {print $2; exit}' "$tmp/fleet/ellipses.csv")
+case=$(csv_col "$tmp/fleet/ellipses.csv" pair case | awk -F, '$1 == 0 {print $2; exit}')
 MPLBACKEND=Agg "$py" "$src/scripts/plot_pressure.py" "$tmp/fleet" --pair 0 --case "$case" -o "$tmp/p.png"
 head -c 8 "$tmp/p.png" | od -An -c | grep -q 'P   N   G'
 if MPLBACKEND=Agg "$py" "$src/scripts/plot_pressure.py" "$tmp/fleet" --case "$case" 2>"$tmp/err"; then exit 1; fi

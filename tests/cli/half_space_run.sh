@@ -2,6 +2,7 @@
 # The half-space method through run, shards and merge, with pressure grids and errors: the same
 # tables and rules as the multi-Hertzian method, byte-identical for any thread count.
 set -euo pipefail
+. "$(dirname "$0")/lib/csv_col.sh"
 bin=$1; src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 sed -e "s|\"\\.\\./profiles/|\"$src/profiles/|g" -e 's|"tY_mm": {"from": -6, "to": 10, "step": 1}|"tY_mm": [-3, 5, 8]|' \
@@ -43,8 +44,8 @@ sed 's|"method": "half-space"|"method": "auto"|' "$tmp/hs.json" > "$tmp/auto.jso
 grep -q '^1,5,50,ok,strips,' "$tmp/auto/cases.csv"
 grep -q '^2,8,50,ok,strips,' "$tmp/auto/cases.csv"
 grep -q '^0,-3,50,ok,multi-hertzian,' "$tmp/auto/cases.csv"
-test "$(cut -d, -f1 "$tmp/auto/patches.csv" | sort -u | grep -c '^[0-9]')" -eq 2
-test "$(cut -d, -f1 "$tmp/auto/ellipses.csv" | sort -u | grep -c '^[0-9]')" -eq 1
+test "$(csv_col "$tmp/auto/patches.csv" case | sort -u | grep -c '^[0-9]')" -eq 2
+test "$(csv_col "$tmp/auto/ellipses.csv" case | sort -u | grep -c '^[0-9]')" -eq 1
 test "$(wc -l < "$tmp/auto/strips.csv")" -gt 10
 # The same bytes for any thread count (auto mixes the multi-Hertzian and strip methods per case).
 "$bin" run "$tmp/auto.json" -o "$tmp/auto1" -q --strips --threads 1

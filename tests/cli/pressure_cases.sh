@@ -2,17 +2,18 @@
 # --pressure-cases: the pressure grid of the cases asked for only (numbers and ranges, global case
 # numbers also in shards), the same rows as the full grid for those cases; refused without --pressure-grid, with a case beyond the case file, or malformed.
 set -euo pipefail
+. "$(dirname "$0")/lib/csv_col.sh"
 bin=$1; src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # Elastic multi-Hertzian and half-space.
 "$bin" run "$src/cases/manchester.json" -o "$tmp/all" --pressure-grid 4 -q
 "$bin" run "$src/cases/manchester.json" -o "$tmp/sel" --pressure-grid 4 --pressure-cases 40-42,7,41 -q
-test "$(cut -d, -f1 "$tmp/sel/pressure.csv" | tail -n +2 | sort -un | tr '\n' ' ')" = "7 40 41 42 "
+test "$(csv_col "$tmp/sel/pressure.csv" case | sort -un | tr '\n' ' ')" = "7 40 41 42 "
 # Exactly the full run's rows of those cases.
 diff <(head -1 "$tmp/all/pressure.csv"; grep -E '^(7|40|41|42),' "$tmp/all/pressure.csv") "$tmp/sel/pressure.csv"
 cmp "$tmp/all/cases.csv" "$tmp/sel/cases.csv"
 "$bin" run "$src/cases/manchester-halfspace.json" -o "$tmp/hs" --pressure-grid 2 --pressure-cases 13 -q
-test "$(cut -d, -f1 "$tmp/hs/pressure.csv" | tail -n +2 | sort -u)" = "13"
+test "$(csv_col "$tmp/hs/pressure.csv" case | sort -u)" = "13"
 # Shards keep global case numbers: two shards merged equal the unsharded selection.
 for k in 1 2; do "$bin" run "$src/cases/manchester.json" -o "$tmp/s$k" --pressure-grid 4 --pressure-cases 40-42,7 --shard $k/2 -q; done
 "$bin" merge "$tmp/s1" "$tmp/s2" -o "$tmp/m" -q

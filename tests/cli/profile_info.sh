@@ -35,6 +35,8 @@ PY
 "$MH" profile info "$D/avg_wheel.whl" >"$T/out" 2>&1 || fail "whl exit $?"
 grep -q "^y_range_mm: -70 " "$T/out" || fail "whl range: $(cat "$T/out")"
 grep -q "warning: y = 0 moved to the taping line, 70 mm from the flange back at file y = 1.55 mm" "$T/out" || fail "taping warning"
+grep -q "^taping_line: file y = 71.55 mm, 70 mm from the flange back, the innermost point at file y = 1.55 mm: the file is measured from the flange back" "$T/out" || fail "taping_line: $(grep taping "$T/out")"
+"$MH" profile info "$D/MBench_S1002_v3.prw" | grep -qx "taping_line: y = 0 as in the file" || fail "taping_line of a wheel at its taping line"
 
 # README example: --kind and --mirror-z on a table
 awk -F'[ \t]+' 'NF>=2 {print $1, -$2}' "$D/EN15302_rail_A.dat" >"$T/zdown.txt"

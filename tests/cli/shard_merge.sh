@@ -3,6 +3,7 @@
 # tables of the unsharded run (also with more shards than cases, a failing case, and pressure
 # grids). Missing, doubled or foreign shards are refused with exit 2.
 set -euo pipefail
+. "$(dirname "$0")/lib/csv_col.sh"
 bin=$1; src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 check_equal() {  # $1 = reference dir, $2 = merged dir
@@ -17,7 +18,7 @@ check_equal "$tmp/full" "$tmp/merged"
 # 4 shards cut the loads of one t_Y between shards 2 and 3 (cases 49 .. 50 share t_Y = 2 mm):
 # both shards write its geometry rows, the merge keeps them once, where one run writes them.
 for k in 1 2 3 4; do "$bin" run "$src/cases/manchester.json" -o "$tmp/q$k" --shard $k/4 -q; done
-test "$(tail -n +2 "$tmp/q2/geometry.csv" | tail -n 1 | cut -d, -f1)" = "$(tail -n +2 "$tmp/q3/geometry.csv" | head -n 1 | cut -d, -f1)"
+test "$(csv_col "$tmp/q2/geometry.csv" tY_mm | tail -n 1)" = "$(csv_col "$tmp/q3/geometry.csv" tY_mm | head -n 1)"
 "$bin" merge "$tmp"/q1 "$tmp"/q2 "$tmp"/q3 "$tmp"/q4 -o "$tmp/qmerged" -q
 check_equal "$tmp/full" "$tmp/qmerged"
 
@@ -35,10 +36,13 @@ cmp "$tmp/ffull/pressure.csv" "$tmp/fmerged/pressure.csv"
 
 # Refused: a missing shard, a shard twice, shards of another run, a bad --shard.
 expect2() { set +e; "$@" 2>"$tmp/err"; rc=$?; set -e; test $rc -eq 2 || { echo "expected exit 2: $*" >&2; exit 1; }; }
+# the message names the shard that is missing, and how to make it (issue #22)
 expect2 "$bin" merge "$tmp/s1" "$tmp/s2" -o "$tmp/m2"
-grep -q "give all of them" "$tmp/err"
+grep -q "split into 3 shards: shard 3/3 missing (run the missing shard(s) .* --shard K/3)" "$tmp/err" || { cat "$tmp/err"; exit 1; }
+expect2 "$bin" merge "$tmp/s3" "$tmp/s1" -o "$tmp/m2"
+grep -q "shard 2/3 missing" "$tmp/err" || { cat "$tmp/err"; exit 1; }
 expect2 "$bin" merge "$tmp/s1" "$tmp/s2" "$tmp/s2" -o "$tmp/m3"
-grep -q "missing or given twice" "$tmp/err"
+grep -q "shard 3/3 missing; shard 2/3 in $tmp/s2 $tmp/s2 given twice" "$tmp/err" || { cat "$tmp/err"; exit 1; }
 "$bin" run "$src/cases/s1002-60e1.json" -o "$tmp/o2" --shard 2/3 -q
 expect2 "$bin" merge "$tmp/s1" "$tmp/o2" "$tmp/s3" -o "$tmp/m4"
 grep -q "different runs" "$tmp/err"

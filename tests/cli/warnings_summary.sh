@@ -7,6 +7,7 @@
 # 0.8999999999999999).
 # Usage: bash warnings_summary.sh <mhcontact-binary> <source-dir>
 set -euo pipefail
+. "$(dirname "$0")/lib/csv_col.sh"
 bin="$1"
 src="$2"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
@@ -41,6 +42,6 @@ cat > "$tmp/s.json" <<JSON
  "sweep": {"tY_mm": {"from": 0, "to": 1, "step": 0.3}, "Q_kN": [100]}}
 JSON
 "$bin" run "$tmp/s.json" -o "$tmp/s" -q || true
-cut -d, -f2 "$tmp/s/cases.csv" | tail -n +2 | tr '\n' ' ' > "$tmp/ty"
+csv_col "$tmp/s/cases.csv" tY_mm | tr '\n' ' ' > "$tmp/ty"
 [ "$(cat "$tmp/ty")" = "0 0.3 0.6 0.9 " ] || { echo "FAIL: tY_mm column: $(cat "$tmp/ty")"; head -3 "$tmp/s/cases.csv"; exit 1; }
 echo "warnings_summary: OK"

@@ -36,6 +36,7 @@ struct RawProfile {
   std::string format;
   std::vector<std::string> warnings;
   CleanupReport cleanup;
+  std::string taping_line;  ///< wheels: how y = 0 was put on the taping line (Profile::taping_line)
   std::vector<std::pair<std::string, std::string>> measures;  ///< from the header (MiniProf Sd/Sh/qR)
   /// Smallest printed step of the coordinates (the most decimals seen), in the file's length
   /// units until the reader scales it to mm; 0: not printed (sampled elements) or unknown.
@@ -60,7 +61,8 @@ ProfileKind kind_from_extension(const std::string& ext);
 // canonical frame of profile.hpp, in mm.
 RawProfile read_simpack(const std::string& path, const std::vector<std::string>& lines);
 /// hint: Wheel or Rail from the extension or the user; Unknown: from the content (default rail).
-RawProfile read_miniprof(const std::string& path, const std::vector<std::string>& lines, ProfileKind hint);
+/// section: multi-profile files (.mpt), the profile to read (1-based; 0: the only one that can be `hint`).
+RawProfile read_miniprof(const std::string& path, const std::vector<std::string>& lines, ProfileKind hint, int section = 0);
 RawProfile read_table(const std::string& path, const std::vector<std::string>& lines, bool gensys);
 RawProfile read_vampire(const std::string& path, const std::vector<std::string>& lines, const std::string& side);
 /// The format of a file whose extension says nothing, from its content.
@@ -74,6 +76,11 @@ std::string write_table(const Profile& p, char sep, bool gensys);
 std::string write_vampire(const Profile& p, bool wheel);
 /// "! written by mhcontact from SOURCE (FORMAT)" style provenance text (without comment marker).
 std::string provenance(const Profile& p);
+
+/// A profile in the canonical frame whose shape can be a `k` (a wheel: a flange near one end; a
+/// rail: a head with both ends at least 5 mm lower) (shape.cpp; used to choose among the
+/// profiles of a multi-profile file).
+bool shape_could_be(const RawProfile& r, ProfileKind k);
 
 /// Shape checks and clean-up in the canonical frame (shape.cpp).
 void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOptions& opt);

@@ -54,14 +54,14 @@ RawProfile read_simpack(const std::string& path, const std::vector<std::string>&
     const std::string val = trim(l.substr(eq + 1));
     auto num = [&]() {
       const auto t = tokens(val);
-      if (t.empty()) throw InputError(where, "'" + val + "'", "key " + key + " needs a number");
+      if (t.empty()) throw InputError(where, "'" + val + "'", "key " + key + " needs a number", "write " + key + " = <number>, or drop the line");
       return parse_number(t[0], where);
     };
     if (state == Header) {
       if (key == "type") {
         const double v = num();
         if (v != 0 && v != 1)
-          throw InputError(where, "type = " + tokens(val)[0], "header type must be 0 (rail) or 1 (wheel)");
+          throw InputError(where, "type = " + tokens(val)[0], "header type must be 0 (rail) or 1 (wheel)", "write type = 0 or type = 1");
         type = static_cast<int>(v);
       }
     } else if (state == Spline) {
@@ -88,7 +88,7 @@ RawProfile read_simpack(const std::string& path, const std::vector<std::string>&
   if (type == 0) r.kind = ProfileKind::Rail;
   else if (type == 1) r.kind = ProfileKind::Wheel;
   else if (type != -1)
-    throw InputError(path, "type = " + std::to_string(type), "header type must be 0 (rail) or 1 (wheel)");
+    throw InputError(path, "type = " + std::to_string(type), "header type must be 0 (rail) or 1 (wheel)", "write type = 0 or type = 1 between header.begin and header.end");
   if (!(len_f > 0)) throw InputError(path, format_number(len_f), "units.len.f must be positive", "1000 for mm");
   if (!(ang_f > 0)) throw InputError(path, format_number(ang_f), "units.ang.f must be positive", "1 for rad");
 

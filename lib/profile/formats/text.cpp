@@ -99,7 +99,8 @@ long parse_integer(const std::string& tok, const std::string& where, const std::
   const double v = parse_number(tok, where);
   if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi))
     throw InputError(where, "'" + tok + "'",
-                     what + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+                     what + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi),
+                     "correct the number, or drop the key to let the reader count");
   return static_cast<long>(v);
 }
 
