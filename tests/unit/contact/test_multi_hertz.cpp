@@ -41,7 +41,7 @@ TEST_CASE("circular profiles: one ellipse equal to closed-form Hertz", "[solver]
       REQUIRE(r.loaded.size() == 1);
       const LoadedEllipse& e = r.loaded[0];
       const double cg = std::cos(e.g.gamma);
-      const double A = 1 / (2 * e.g.R_wyy()), B = 0.5 * (1 / 0.050 + 1 / 0.100);
+      const double A = cg / (2 * e.g.r_roll), B = 0.5 * (1 / 0.050 + 1 / 0.100);  // R_wyy = r/cos γ
       const double N = Q / cg;
       const testing::HertzReference h = testing::hertz_reference(A, B, N, EJ);
       CAPTURE(tY, Q);
