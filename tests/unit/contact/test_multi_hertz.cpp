@@ -2,9 +2,13 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <thread>
 #include <vector>
 
 #include "geometry/contact_geometry.hpp"
+#include "input/case_file.hpp"
+#include "jobs/run.hpp"
 #include "profile/read.hpp"
 #include "manchester_fixture.hpp"
 #include "contact/multi_hertz/multi_hertz.hpp"
@@ -247,4 +251,59 @@ TEST_CASE("candidate_ellipses: the load-independent part of every loaded ellipse
     }
   }
   REQUIRE(loaded >= 15);  // at least one ellipse per case, two near the jumps
+}
+
+TEST_CASE("roller rig: the roller's radius enters A as cos γ / (2 (R_roller + z_r)), and a, b, p0 follow Hertz",
+          "[solver][roller]") {
+  // Source: README "Positioning without a gauge point" (A = 1/(2 R_wyy) + 1/(2 R_ryy), R_ryy =
+  // (R_roller + z_r)/cos γ, Meusnier) and closed-form Hertz (tests/support/hertz_reference.hpp).
+  // The circular pair of "circular profiles" above on a roller of R_roller = 700 mm: A grows from
+  // 1.07–1.08 to 1.78–1.80 1/m, a shrinks by 20 %, b grows by 11 %, p0 by 12 %. Tolerance 1e-4
+  // relative on a, b, p0 and the approach (measured at most 1.7e-5, the fitted curvatures, as
+  // without the roller).
+  const double R_roller = 0.700;
+  TrackSetup roller;
+  roller.roller_radius = R_roller;
+  const Profile W = read("circ_r50.prw", ProfileKind::Wheel, false), R = read("circ_r100.prr", ProfileKind::Rail, false);
+  const ContactGeometry G = build_geometry(W, R, roller, GeometryOptions{});
+  const ContactGeometry G_straight = build_geometry(W, R, TrackSetup{}, GeometryOptions{});
+  const Material mat = steel();
+  const double EJ = testing::johnson_modulus(mat.E, mat.nu, mat.E, mat.nu);
+  for (double tY : {-8e-3, 0.0, 7.3e-3}) {
+    for (double Q : {10e3, 100e3}) {
+      CAPTURE(tY, Q);
+      const CaseResult r = solve_multi_hertz(G, mat, tY, Q), s = solve_multi_hertz(G_straight, mat, tY, Q);
+      REQUIRE(r.status == CaseStatus::Ok);
+      REQUIRE(r.loaded.size() == 1);
+      REQUIRE(s.loaded.size() == 1);
+      const LoadedEllipse& e = r.loaded[0];
+      const double cg = std::cos(e.g.gamma), B = 0.5 * (1 / 0.050 + 1 / 0.100);
+      const double A = cg / (2 * e.g.r_roll) + cg / (2 * (R_roller + e.z_r));  // wheel + roller
+      const testing::HertzReference h = testing::hertz_reference(A, B, Q / cg, EJ);
+      CHECK(rel(e.s.a, h.a) <= 1e-4);
+      CHECK(rel(e.s.b, h.b) <= 1e-4);
+      CHECK(rel(e.s.p0, h.p0) <= 1e-4);
+      CHECK(rel(e.s.approach, h.delta) <= 1e-4);
+      // The same contact point on a straight rail: the roller changes A only.
+      CHECK(s.loaded[0].g.gamma == e.g.gamma);
+      CHECK(e.s.a < 0.85 * s.loaded[0].s.a);
+      CHECK(e.s.p0 > 1.1 * s.loaded[0].s.p0);
+    }
+  }
+  // The case file's track.roller_radius_mm (cases/roller-rig.json: S1002 on a 700 mm roller with
+  // a 60E1 head) reaches every candidate: A − cos γ/(2 r_roll) = cos γ/(2 (0.7 m + z_r)) to 1e-12
+  // relative (measured 7e-16).
+  const CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/roller-rig.json", true);
+  REQUIRE(rel(cf.track.roller_radius, R_roller) <= 1e-15);
+  const PairGeometry pg = build_pair_geometry(cf);
+  std::vector<CandidateEllipse> cands;
+  for (double tY : {-4e-3, 0.0, 4e-3, 8e-3}) {
+    candidate_ellipses(pg.geo, cf.material, tY, MultiHertzOptions{}, cands);
+    REQUIRE(!cands.empty());
+    for (const CandidateEllipse& c : cands) {
+      CAPTURE(tY, c.ellipse);
+      const double cg = std::cos(c.g.gamma);
+      CHECK(rel(c.A - cg / (2 * c.g.r_roll), cg / (2 * (cf.track.roller_radius + c.z_r))) <= 1e-12);
+    }
+  }
 }
