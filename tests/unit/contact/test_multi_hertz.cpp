@@ -307,3 +307,34 @@ TEST_CASE("roller rig: the roller's radius enters A as cos γ / (2 (R_roller + z
     }
   }
 }
+
+TEST_CASE("not converged: the iteration limit gives not_converged, a message and the last iterate", "[solver]") {
+  // Manchester pair, t_Y = 0, Q = 50 kN: two loaded ellipses; the default solve converges in 4
+  // safeguarded Newton steps. With max_iterations = 1 (case file solver.max_iterations) the case is
+  // `not_converged` (README "Output tables": a not_converged row keeps its last iterate, its
+  // residual says how far it is from equilibrium; measured 0.042). The iterate is one state: every
+  // ellipse at h0_i = (δz − gap_i) cos γ_i (eq. 11) of the reported δz, and Σ N_i cos γ_i = Q (1 +
+  // residual) (eq. 10), both to 1e-12.
+  const ContactGeometry& G = manchester();
+  const Material mat = steel();
+  const double Q = 50e3;
+  REQUIRE(solve_multi_hertz(G, mat, 0.0, Q).status == CaseStatus::Ok);
+  MultiHertzOptions one;
+  one.max_iterations = 1;
+  const CaseResult r = solve_multi_hertz(G, mat, 0.0, Q, one);
+  CHECK(r.status == CaseStatus::NotConverged);
+  CHECK(std::string(to_string(r.status)) == "not_converged");
+  CHECK_THAT(r.message, Catch::Contains("equilibrium not reached in 1 iterations"));
+  CHECK(r.iterations == 1);
+  CHECK(std::fabs(r.residual) > 1e-3);
+  REQUIRE(r.loaded.size() == 2);
+  double F = 0;
+  for (const LoadedEllipse& L : r.loaded) {
+    CAPTURE(L.ellipse);
+    const double cg = std::cos(L.g.gamma);
+    CHECK(std::fabs(L.s.h0 - (r.dz - L.g.gap) * cg) <= 1e-12 * L.s.h0);
+    F += L.s.N * cg;
+  }
+  CHECK(rel(F, r.Fz) <= 1e-12);
+  CHECK(std::fabs((r.Fz - Q) / Q - r.residual) <= 1e-12);
+}
