@@ -338,3 +338,47 @@ TEST_CASE("not converged: the iteration limit gives not_converged, a message and
   CHECK(rel(F, r.Fz) <= 1e-12);
   CHECK(std::fabs((r.Fz - Q) / Q - r.residual) <= 1e-12);
 }
+
+TEST_CASE("exact_coefficients through the solver: the exact path's ellipses are closed-form Hertz, the fast path within its error",
+          "[solver][fast]") {
+  // Manchester pair, t_Y −6 … 10 mm, Q 10/50/100 kN (110 loaded ellipses). With
+  // exact_coefficients every loaded ellipse is the closed-form Hertz contact of its own A, B, N
+  // (tests/support/hertz_reference.hpp): tolerance 5e-14 relative on a, b, p0 and the approach
+  // (measured 7.6e-15; the fast path is 6.6e-11 off, so the test fails when the option does not
+  // reach the laws). Fast against exact, whole cases: a, b, p0 5e-10 relative (measured 1.0e-10),
+  // N_i 5e-11 Q (measured 9.6e-12), δz 3e-10 relative (measured 6.4e-11): the fast path's error
+  // (hertz.hpp kFastPathMaxRelError, measured 4.7e-11) and not more.
+  const ContactGeometry& G = manchester();
+  const Material mat = steel();
+  const double EJ = testing::johnson_modulus(mat.E, mat.nu, mat.E, mat.nu);
+  MultiHertzOptions exact;
+  exact.exact_coefficients = true;
+  int n = 0;
+  for (int i = 0; i <= 32; ++i) {
+    const double tY = (-6.0 + 0.5 * i) * 1e-3;
+    for (double Q : {10e3, 50e3, 100e3}) {
+      CAPTURE(tY, Q);
+      const CaseResult e = solve_multi_hertz(G, mat, tY, Q, exact), f = solve_multi_hertz(G, mat, tY, Q);
+      REQUIRE(e.status == CaseStatus::Ok);
+      REQUIRE(f.status == CaseStatus::Ok);
+      REQUIRE(e.loaded.size() == f.loaded.size());
+      CHECK(rel(f.dz, e.dz) <= 3e-10);
+      for (std::size_t k = 0; k < e.loaded.size(); ++k) {
+        const LoadedEllipse &x = e.loaded[k], &y = f.loaded[k];
+        CAPTURE(x.ellipse);
+        const testing::HertzReference h = testing::hertz_reference(x.A, x.B, x.s.N, EJ);
+        CHECK(rel(x.s.a, h.a) <= 5e-14);
+        CHECK(rel(x.s.b, h.b) <= 5e-14);
+        CHECK(rel(x.s.p0, h.p0) <= 5e-14);
+        CHECK(rel(x.s.approach, h.delta) <= 5e-14);
+        CHECK(y.ellipse == x.ellipse);
+        CHECK(rel(y.s.a, x.s.a) <= 5e-10);
+        CHECK(rel(y.s.b, x.s.b) <= 5e-10);
+        CHECK(rel(y.s.p0, x.s.p0) <= 5e-10);
+        CHECK(std::fabs(y.s.N - x.s.N) <= 5e-11 * Q);
+        ++n;
+      }
+    }
+  }
+  CHECK(n >= 100);
+}
