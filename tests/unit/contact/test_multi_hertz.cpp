@@ -382,3 +382,59 @@ TEST_CASE("exact_coefficients through the solver: the exact path's ellipses are 
   }
   CHECK(n >= 100);
 }
+
+namespace {
+// Everything a multi-Hertzian result reports that depends on the ellipse laws, compared bit for bit.
+void require_same_bytes(const CaseResult& a, const CaseResult& b) {
+  REQUIRE(a.status == b.status);
+  CHECK(a.dz == b.dz);
+  CHECK(a.Fz == b.Fz);
+  CHECK(a.pmax == b.pmax);
+  CHECK(a.area == b.area);
+  REQUIRE(a.loaded.size() == b.loaded.size());
+  for (std::size_t k = 0; k < a.loaded.size(); ++k) {
+    CHECK(a.loaded[k].s.N == b.loaded[k].s.N);
+    CHECK(a.loaded[k].s.a == b.loaded[k].s.a);
+    CHECK(a.loaded[k].s.b == b.loaded[k].s.b);
+    CHECK(a.loaded[k].s.p_max == b.loaded[k].s.p_max);
+    CHECK(a.loaded[k].c.m == b.loaded[k].c.m);
+  }
+}
+}  // namespace
+
+TEST_CASE("law cache: a change of material or coefficient path between two solves at one t_Y is seen", "[solver]") {
+  // solve_multi_hertz keeps the ellipse laws of the last t_Y per thread (LawCache, keyed by the
+  // material and exact_coefficients): a second solve at the same t_Y with another material must
+  // give the bytes a fresh thread (an empty cache: what a new process computes) gives, and not
+  // the first material's. Each variant changes one field of the key; each moves the answer.
+  // Manchester pair, t_Y = 0 (two ellipses) and −3 mm (one), Q = 50 kN.
+  const ContactGeometry& G = manchester();
+  const Material steel_ = steel();
+  struct Variant { const char* what; Material mat; bool exact; };
+  std::vector<Variant> variants;
+  auto with = [&](const char* what, auto&& change, bool exact = false) {
+    Variant v{what, steel_, exact};
+    change(v.mat);
+    variants.push_back(v);
+  };
+  with("E", [](Material& m) { m.E = 200e9; });
+  with("nu", [](Material& m) { m.nu = 0.3; });
+  with("E_rail", [](Material& m) { m.E_rail = 70e9; });
+  with("nu_rail", [](Material& m) { m.nu_rail = 0.33; });
+  with("p_lim", [](Material& m) { m.p_lim = 500e6; });  // below the elastic peaks (845, 938 MPa)
+  with("exact_coefficients", [](Material&) {}, true);
+  for (double tY : {0.0, -3e-3}) {
+    for (const Variant& v : variants) {
+      CAPTURE(tY, v.what);
+      MultiHertzOptions o2;
+      o2.exact_coefficients = v.exact;
+      const CaseResult first = solve_multi_hertz(G, steel_, tY, 50e3);   // fills this thread's cache
+      const CaseResult second = solve_multi_hertz(G, v.mat, tY, 50e3, o2);
+      CaseResult fresh;
+      std::thread([&] { fresh = solve_multi_hertz(G, v.mat, tY, 50e3, o2); }).join();
+      REQUIRE(second.status == CaseStatus::Ok);
+      CHECK(second.dz != first.dz);  // the variant matters
+      require_same_bytes(second, fresh);
+    }
+  }
+}
