@@ -396,17 +396,19 @@ TEST_CASE("cli hertz: zero load", "[hertz][cli]") {
 
 TEST_CASE("cli hertz: README example with --A and --B", "[hertz][cli]") {
   // README: mhcontact hertz --A 0.001 --B 0.002 --N 10 --E 210 --nu 0.28 --json
-  // λ = 0.5: m, n of method.md §2 (5e-4); a = m C, b = n C with C of eqs. 2–3 computed here
-  // (1e-6 relative, the fast path's bound); h0 = b² B (eq. 6).
+  // λ = 0.5: m, n of method.md §2 (5e-4); a and b against closed-form Hertz
+  // (tests/support/hertz_reference.hpp; 1e-9 relative: 10 printed digits and the fast path's
+  // 5e-11); h0 = b² B (eq. 6).
   const CliRun r = run({"hertz", "--A", "0.001", "--B", "0.002", "--N", "10", "--E", "210", "--nu", "0.28", "--json"});
   REQUIRE(r.code == 0);
   const nlohmann::json j = nlohmann::json::parse(r.out);
   CHECK(j.at("lambda").get<double>() == 0.5);
   CHECK(j.at("m").get<double>() == Approx(1.2758).margin(5e-4));
   CHECK(j.at("n").get<double>() == Approx(0.8045).margin(5e-4));
-  const double C_mm = std::cbrt(1.5 * 10e3 * (1 - 0.28 * 0.28) / 210e9 / 3.0) * 1e3;  // A + B = 3 1/m
-  CHECK(rel(j.at("a_mm").get<double>(), j.at("m").get<double>() * C_mm) <= 1e-6);
-  CHECK(rel(j.at("b_mm").get<double>(), j.at("n").get<double>() * C_mm) <= 1e-6);
+  const testing::HertzReference h =
+      testing::hertz_reference(1.0, 2.0, 10e3, testing::johnson_modulus(210e9, 0.28, 210e9, 0.28));  // A, B in 1/m
+  CHECK(rel(j.at("a_mm").get<double>(), h.a * 1e3) <= 1e-9);
+  CHECK(rel(j.at("b_mm").get<double>(), h.b * 1e3) <= 1e-9);
   CHECK(rel(j.at("h0_mm").get<double>(), std::pow(j.at("b_mm").get<double>(), 2) * 0.002) <= 1e-12);
   CHECK_FALSE(j.contains("plastic"));
 }
