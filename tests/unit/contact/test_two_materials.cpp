@@ -4,7 +4,7 @@
 // tests/support/hertz_reference.hpp). The pair: the circular profiles circ_r50.prw (wheel,
 // R_wxx = 50 mm) on circ_r100.prr (rail, R_rxx = 100 mm), exact to 5e−7 mm (tests/data/profiles),
 // wheel radius 460 mm: one elliptic contact, a/b ≈ 5.5 at any t_Y. Steel wheel (210 GPa, 0.28) on
-// an aluminium rail (70 GPa, 0.33): E*_J = 58.4 GPa against 115 GPa for steel on steel, and the
+// an aluminium rail (70 GPa, 0.33): E*_J = 58.4 GPa against 114 GPa for steel on steel, and the
 // rail's ν alone moves E*_J by 2.5 %.
 #include <catch2/catch.hpp>
 
