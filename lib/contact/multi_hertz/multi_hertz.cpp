@@ -181,7 +181,7 @@ CaseResult solve_multi_hertz(const ContactGeometry& G, const Material& mat, doub
   const double hi = first->g.gap + first->law.h0_for_force(Q / first->cg) / first->cg;
   RootTolerance tol;
   tol.rel = DBL_EPSILON;
-  tol.max_iterations = opt.max_iterations;
+  tol.max_iterations = opt.max_iterations + 1;  // the start at hi, then up to max_iterations steps
   tol.f_abs = opt.rtol * Q;
   const RootResult root = newton_root(
       [&](double z) {
@@ -196,7 +196,7 @@ CaseResult solve_multi_hertz(const ContactGeometry& G, const Material& mat, doub
   r.residual = root.f / Q;
   if (std::fabs(root.f) > tol.f_abs && std::fabs(r.residual) > 4 * std::numeric_limits<double>::epsilon()) {
     r.status = CaseStatus::NotConverged;
-    r.message = "equilibrium not reached in " + std::to_string(root.iterations) + " iterations (relative residual " +
+    r.message = "equilibrium not reached in " + std::to_string(r.iterations) + " iterations (relative residual " +
                 format_number(r.residual) + ")";
   }
   for (const Cand& c : cs) {

@@ -5,13 +5,18 @@
 // point within 0.3 mm.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "contact/half_space/half_space_method.hpp"
+#include "contact/half_space/influence.hpp"
+#include "geometry/gap.hpp"
 #include "input/case_file.hpp"
 #include "jobs/run.hpp"
 #include "output/csv_table.hpp"
+#include "support/hertz_reference.hpp"
 
 namespace {
 
@@ -129,5 +134,67 @@ TEST_CASE("half-space plastic on strongly capped flange contacts: few placements
     REQUIRE(same.status == mh::CaseStatus::Ok);
     CHECK(same.area == el.area);
     CHECK(same.pmax == Approx(el.pmax).epsilon(1e-12));
+  }
+}
+
+// Two patches under one wheel. Every CONTACT reference case has one patch (tests/data/contact: at
+// t_Y = 5 mm and 50 kN the tread and the gauge corner are one patch of two sub-regions), so this
+// test has no external reference; it checks what defines the multi-patch problem (docs/method.md
+// §8): each patch on its own plane, all at one rigid vertical approach δz, Σ N_k cos γ_k = Q.
+// Manchester pair, Q = 10 kN, t_Y = 4.9, 5.0, 5.1 mm: the tread (rail y ≈ −23.4 mm, γ ≈ 0.13 rad)
+// and the gauge corner (y ≈ −33.9 mm, γ ≈ 0.29 rad) carry 165 N / 9.9 kN, 3.0 / 7.2 kN and
+// 6.8 / 3.6 kN; with d_comb = 4 mm (CONTACT's D_COMB) they are two patches (with the default
+// 8 mm, one).
+TEST_CASE("half-space: two patches share one rigid approach, and their forces balance the load", "[half_space][two_patches]") {
+  const mh::CaseFile cf = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/manchester-halfspace.json", true);
+  mh::HalfSpaceOptions o = cf.half_space;
+  o.d_comb = 4e-3;
+  o.keep_pressure = true;
+  const double Q = 10e3, H = 1 / (3.14159265358979323846 * mh::testing::johnson_modulus(cf.material.E, cf.material.nu,
+                                                                                          cf.material.E, cf.material.nu));
+  for (double tY : {4.9e-3, 5.0e-3, 5.1e-3}) {
+    INFO("t_Y = " << tY * 1e3 << " mm");
+    const mh::CaseResult r = mh::solve_half_space(manchester().geo, cf.material, tY, Q, o);
+    REQUIRE(r.status == mh::CaseStatus::Ok);
+    REQUIRE(r.patches.size() == 2);
+    CHECK(r.patches[1].y_r - r.patches[0].y_r > 8e-3);  // gauge corner, then tread
+    const double dz = r.approach;                     // the rigid vertical approach
+    const mh::WheelRailGap gap(manchester().geo, tY);
+    double F = 0;
+    for (const mh::PatchResult& P : r.patches) {
+      INFO("patch " << P.patch << " at rail y " << P.y_r * 1e3 << " mm, N " << P.N << " N");
+      const double cg = std::cos(P.gamma);
+      F += P.N * cg;
+      // (2) one approach: δ_k = (δz − min g) cos γ_k, g the vertical gap over the patch's rail-y
+      // range (one element beyond its first and last row of contact). Tolerance 0.5 µm: measured
+      // at most 0.18 µm (the patch's grid samples its gap minimum at element centres, ds = 0.2 mm).
+      double g_min = INFINITY;
+      const double y0 = P.y_r + (P.s_lo - P.ds) * cg, y1 = P.y_r + (P.s_hi + P.ds) * cg;
+      for (int i = 0; i <= 4000; ++i) g_min = std::min(g_min, gap.g(y0 + (y1 - y0) * i / 4000));
+      CHECK(std::fabs(P.approach - (dz - g_min) * cg) <= 0.5e-6);
+      // (3) the deformed gap at that δz: normal_gap + u = 0 on every element in contact, ≥ 0 outside,
+      // u from the patch's pressures through Love's rectangles (influence.hpp). Tolerance 5e-3 δ_k
+      // (measured at most 1.6e-3 δ_k: the gap is set up at the approach the plane was placed for,
+      // within ref_rtol of δz).
+      REQUIRE(P.p.size() == static_cast<std::size_t>(P.nx) * P.ns);
+      const mh::InfluenceGrid C(P.nx, P.ns, P.dx, P.ds, H);
+      std::vector<double> u(P.p.size());
+      C.apply(P.p.data(), u.data());
+      const mh::PatchPlane plane = mh::plane_at(gap, P.y_r);
+      CHECK(plane.gamma == Approx(P.gamma).margin(2e-3));
+      double h_in = 0, h_out = INFINITY;
+      for (int j = 0; j < P.ns; ++j)
+        for (int i = 0; i < P.nx; ++i) {
+          const std::size_t e = static_cast<std::size_t>(i + P.nx * j);
+          const double h = mh::normal_gap(gap, plane, P.x0 + i * P.dx, P.s0 + j * P.ds, dz) + u[e];
+          if (P.p[e] > 0) h_in = std::max(h_in, std::fabs(h));
+          else h_out = std::min(h_out, h);
+        }
+      INFO("max |h| in contact " << h_in << " m, min h outside " << h_out << " m, approach " << P.approach << " m");
+      CHECK(h_in <= 5e-3 * P.approach);
+      CHECK(h_out >= -5e-3 * P.approach);
+    }
+    // (1) eq. 10 over the patches, to the solver's force_rtol (1e-7).
+    CHECK(std::fabs(F - Q) <= 2e-7 * Q);
   }
 }

@@ -9,14 +9,15 @@
 #include <vector>
 
 #include "contact/half_space/normal_cg.hpp"
+#include "support/hertz_reference.hpp"
 
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
 // Steel on steel: E = 210 GPa, ν = 0.28 for wheel and rail.
-const double H = 2 * (1 - 0.28 * 0.28) / (3.14159265358979323846 * 210e9);  // [1/Pa] two steel bodies (Johnson §3.2)
-const double E_star = 1.0 / (pi * H);  // Johnson's composite modulus, 1/E* = π H (influence.hpp)
+const double H = 2 * (1 - 0.28 * 0.28) / (3.14159265358979323846 * 210e9);  // [1/Pa] the solver's input: two steel bodies (Johnson §3.2)
+const double E_star = mh::testing::johnson_modulus(210e9, 0.28, 210e9, 0.28);  // [Pa], the reference's
 
 /// Grid of nx × ny elements of dx × dy centred on the origin, gap g = A x² + B y² at the centres.
 struct Case {
@@ -33,63 +34,10 @@ Case quadratic_case(int nx, int ny, double dx, double dy, double A, double B) {
   return c;
 }
 
-/// Complete elliptic integrals K(e), E(e) of modulus e, given the complementary modulus
-/// k' = √(1 − e²), by the arithmetic–geometric mean (Abramowitz & Stegun §17.6):
-///   a₀ = 1, b₀ = k', c₀ = e;  a_{n+1} = (a_n + b_n)/2, b_{n+1} = √(a_n b_n), c_{n+1} = (a_n − b_n)/2
-///   K = π / (2 a_N),  E = K (1 − Σ_{n≥0} 2^{n−1} c_n²).
-void elliptic_KE(double k_prime, double* K, double* E) {
-  double a = 1, b = k_prime, c = std::sqrt((1 - k_prime) * (1 + k_prime));
-  double sum = 0.5 * c * c, weight = 0.5;
-  for (int n = 0; n < 60 && std::fabs(c) > 1e-17; ++n) {
-    const double an = 0.5 * (a + b);
-    c = 0.5 * (a - b);
-    b = std::sqrt(a * b);
-    a = an;
-    weight *= 2;
-    sum += weight * c * c;
-  }
-  *K = pi / (2 * a);
-  *E = *K * (1 - sum);
-}
-
-/// Hertz ellipse for the gap A x² + B y² under the load N (Johnson 1985, §3.4 (ellipsoidal
-/// pressure p0 √(1 − x²/a² − y²/b²) on a half-space) and §4.2 (Hertz)). For A < B, the semi-axis
-/// a along x is the major one; with k = b/a, e² = 1 − k², K = K(e), E = E(e):
-///   A = p0 b (K − E) / (E* e² a²),   B = p0 b (E/k² − K) / (E* e² a²),   δ = p0 b K / E*,
-///   p0 = 3N / (2π a b),
-/// hence B/A = (E/k² − K)/(K − E) (solved for k by bisection; the ratio falls from ∞ at k → 0 to
-/// 1 at k → 1), a³ = 3N (K − E) / (2π E* e² A), b = k a. For A = B the circle: a³ = 3NR/(4E*),
-/// R = 1/(2A), δ = a²/R (Johnson eqs. 4.22–4.23). For A > B the axes swap.
-struct HertzEllipse {
-  double a, b, p0, delta;  // semi-axes along x and y [m], peak [Pa], approach [m]
-};
-
-HertzEllipse hertz_ellipse(double A, double B, double N) {
-  if (A == B) {
-    const double R = 1 / (2 * A), a = std::cbrt(3 * N * R / (4 * E_star));
-    return {a, a, 3 * N / (2 * pi * a * a), a * a / R};
-  }
-  if (A > B) {
-    const HertzEllipse s = hertz_ellipse(B, A, N);
-    return {s.b, s.a, s.p0, s.delta};
-  }
-  auto ratio = [](double k) {
-    double K, E;
-    elliptic_KE(k, &K, &E);
-    return (E / (k * k) - K) / (K - E);
-  };
-  double lo = 1e-8, hi = 1 - 1e-12;  // ratio(lo) > B/A > ratio(hi)
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (ratio(mid) > B / A ? lo : hi) = mid;
-  }
-  const double k = 0.5 * (lo + hi), e2 = (1 - k) * (1 + k);
-  double K, E;
-  elliptic_KE(k, &K, &E);
-  const double a = std::cbrt(3 * N * (K - E) / (2 * pi * E_star * e2 * A)), b = k * a;
-  const double p0 = 3 * N / (2 * pi * a * b);
-  return {a, b, p0, p0 * b * K / E_star};
-}
+/// The Hertz ellipse of the gap A x² + B y² under the load N: tests/support/hertz_reference.hpp
+/// (Johnson 1985, §3.6 and §4.2), with Johnson's E*.
+using HertzEllipse = mh::testing::HertzReference;
+HertzEllipse hertz_ellipse(double A, double B, double N) { return mh::testing::hertz_reference(A, B, N, E_star); }
 
 /// Measured contact patch: peak pressure and semi-axes (half the extent of the elements with
 /// p > 0 along x and y, element edges included).

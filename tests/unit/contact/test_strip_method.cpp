@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -17,6 +18,7 @@
 #include "contact/half_space/half_space_method.hpp"
 #include "contact/solve.hpp"
 #include "contact/strips/strip_method.hpp"
+#include "geometry/gap.hpp"
 #include "input/case_file.hpp"
 #include "jobs/run.hpp"
 #include "output/csv_table.hpp"
@@ -320,5 +322,45 @@ TEST_CASE("strips in the plastic model: strongly capped flange contacts settle",
   for (std::size_t k = 1; k + 1 < S9.size(); ++k) {
     CAPTURE(S9[k].y_r);
     CHECK(S9[k].a >= 0.5 * std::min(S9[k - 1].a, S9[k + 1].a));
+  }
+}
+
+TEST_CASE("strip method: two patches share one rigid approach, and their forces balance the load", "[strips][two_patches]") {
+  // The case of "half-space: two patches share one rigid approach" (test_half_space.cpp): the
+  // Manchester pair, Q = 10 kN, t_Y = 4.9, 5.0, 5.1 mm, d_comb = 4 mm: tread and gauge corner as
+  // two patches (no CONTACT reference has two). Checks: two patches; Σ N_k cos γ_k = Q (eq. 10) to
+  // 2e-7 (force_rtol 1e-7); each patch's approach δ_k = (δz − min g) cos γ_k with g the vertical
+  // undeformed gap of the geometry over the patch's rail-y range, to 0.5 µm (measured at most
+  // 0.16 µm: the gap minimum is sampled at the strip centres, ds = 0.2 mm); each patch's normal force
+  // against the half-space method's on the same patches, within 1 % of Q (measured at most 0.15 %).
+  const Fixture& F = manchester();
+  mh::StripMethodOptions so = F.cf.strips;
+  so.d_comb = 4e-3;
+  mh::HalfSpaceOptions ho = F.cf.half_space;
+  ho.d_comb = 4e-3;
+  const double Q = 10e3;
+  for (double tY : {4.9e-3, 5.0e-3, 5.1e-3}) {
+    INFO("t_Y = " << tY * 1e3 << " mm");
+    const mh::CaseResult r = mh::solve_strip_method(F.pg.geo, F.cf.material, tY, Q, so);
+    const mh::CaseResult hs = mh::solve_half_space(F.pg.geo, F.cf.material, tY, Q, ho);
+    REQUIRE(r.status == mh::CaseStatus::Ok);
+    REQUIRE(hs.status == mh::CaseStatus::Ok);
+    REQUIRE(r.patches.size() == 2);
+    REQUIRE(hs.patches.size() == 2);
+    CHECK(r.patches[1].y_r - r.patches[0].y_r > 8e-3);  // gauge corner, then tread
+    const mh::WheelRailGap gap(F.pg.geo, tY);
+    double Fz = 0;
+    for (std::size_t k = 0; k < 2; ++k) {
+      const mh::PatchResult& P = r.patches[k];
+      INFO("patch " << P.patch << " at rail y " << P.y_r * 1e3 << " mm, N " << P.N << " N");
+      const double cg = std::cos(P.gamma);
+      Fz += P.N * cg;
+      double g_min = INFINITY;
+      const double y0 = P.y_r + (P.s_lo - so.ds) * cg, y1 = P.y_r + (P.s_hi + so.ds) * cg;
+      for (int i = 0; i <= 4000; ++i) g_min = std::min(g_min, gap.g(y0 + (y1 - y0) * i / 4000));
+      CHECK(std::fabs(P.approach - (r.approach - g_min) * cg) <= 0.5e-6);
+      CHECK(std::fabs(P.N - hs.patches[k].N) <= 0.01 * Q);
+    }
+    CHECK(std::fabs(Fz - Q) <= 2e-7 * Q);
   }
 }

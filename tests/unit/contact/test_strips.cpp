@@ -1,6 +1,6 @@
-// Tests of the semi-Hertzian strip solver (lib/contact/strips.*).
-// Reference values: closed-form Hertz (Johnson, Contact Mechanics §3.6 / §4.2),
-// computed here independently of the library (own AGM, own axis-ratio solve).
+// Tests of the semi-Hertzian strip solver (lib/contact/strips/).
+// Reference values: closed-form Hertz (Johnson, Contact Mechanics §3.6 / §4.2) from
+// tests/support/hertz_reference.hpp, independent of the library.
 #include "contact/strips/strip_patch.hpp"
 #include "contact/strips/strip_extents.hpp"
 #include "contact/strips/strip_influence.hpp"
@@ -13,73 +13,18 @@
 #include <cstdio>
 #include <vector>
 
+#include "support/hertz_reference.hpp"
+
 namespace {
+
+using mh::testing::HertzReference;
 
 constexpr double kPi = 3.14159265358979323846;
 
-// ---- reference Hertz, written for the tests ---------------------------------
-
-// K(m), E(m) by the AGM (Abramowitz & Stegun 17.6.1-17.6.4).
-void agm_KE(double m, double& K, double& E) {
-  double a = 1.0, g = std::sqrt(1.0 - m), c2sum = 0.5 * m, p = 0.5;
-  for (int i = 0; i < 60; ++i) {
-    const double c = 0.5 * (a - g);
-    const double an = 0.5 * (a + g);
-    g = std::sqrt(a * g);
-    a = an;
-    p *= 2.0;
-    c2sum += p * c * c;
-    if (c < 1e-17) break;
-  }
-  K = kPi / (2.0 * a);
-  E = K * (1.0 - c2sum);
-}
-
-struct HertzRef {
-  double a, b, p0, delta;  // a along x (curvature A), b along y (curvature B)
-};
-
-// Johnson §3.6 eq. 3.69-3.71 with 1/E* = pi H: for A <= B the major axis is
-// along x, k = b/a, e^2 = 1 - k^2 and
-//   B/A = (E(e)/k^2 - K(e)) / (K(e) - E(e)),
-//   A   = b p0 (K - E) / (E* e^2 a^2),  p0 = 3N/(2 pi a b)  =>  a^3 = 3N (K-E) / (2 pi E* e^2 A),
-//   delta = b p0 K / E*.
-HertzRef hertz_ref(double A, double B, double N, double Estar) {
-  const bool swap = A > B;
-  const double Amin = swap ? B : A, Bmax = swap ? A : B;
-  const double ratio = Bmax / Amin;
-  double k = 1.0;
-  if (ratio > 1.0 + 1e-14) {
-    double lo = 1e-6, hi = 1.0;  // f(k) decreases from +inf to 1 on (0, 1]
-    for (int i = 0; i < 200; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      double K, E;
-      agm_KE(1.0 - mid * mid, K, E);
-      const double f = (E / (mid * mid) - K) / (K - E);
-      if (f > ratio) lo = mid; else hi = mid;
-    }
-    k = 0.5 * (lo + hi);
-  }
-  const double m = 1.0 - k * k;
-  double K, E, KmE_over_m;
-  agm_KE(m, K, E);
-  KmE_over_m = m > 1e-12 ? (K - E) / m : kPi / 4.0;
-  const double amaj = std::cbrt(3.0 * N * KmE_over_m / (2.0 * kPi * Estar * Amin));
-  const double bmin = k * amaj;
-  const double p0 = 3.0 * N / (2.0 * kPi * amaj * bmin);
-  const double delta = bmin * p0 * K / Estar;
-  HertzRef r;
-  r.a = swap ? bmin : amaj;
-  r.b = swap ? amaj : bmin;
-  r.p0 = p0;
-  r.delta = delta;
-  return r;
-}
-
 // Steel on steel: E = 210 GPa, nu = 0.28 (both bodies).
 const double kE = 210e9, kNu = 0.28;
-const double kH = 2.0 * (1.0 - kNu * kNu) / (kPi * kE);  // combined compliance [1/Pa]
-const double kEstar = 1.0 / (kPi * kH);                   // Johnson: 1/E* = sum (1-nu^2)/E
+const double kH = 2.0 * (1.0 - kNu * kNu) / (kPi * kE);          // combined compliance [1/Pa], the solver's input
+const double kEstar = mh::testing::johnson_modulus(kE, kNu, kE, kNu);  // Johnson's E*: the reference's
 
 // Elliptic-paraboloid gap g = B s^2, A constant, odd number of strips centred on 0.
 mh::StripGeometry ellipse_geometry(double A, double B, double ds, int n) {
@@ -206,7 +151,7 @@ mh::StripResult solve_with_end_gap_tol(const mh::StripGeometry& geo, double N, d
 
 TEST_CASE("Hertz sphere: p0, semi-axes, approach (Johnson §4.2)", "[strips]") {
   const double R = 0.3, N = 50e3;
-  const HertzRef h = hertz_ref(1.0 / (2.0 * R), 1.0 / (2.0 * R), N, kEstar);
+  const HertzReference h = mh::testing::hertz_reference(1.0 / (2.0 * R), 1.0 / (2.0 * R), N, kEstar);
   const int across = 40;  // strips across the contact diameter 2b (>= 30)
   // + 0.5: no strip centre exactly at the ellipse tip y = b, where the extent
   // is ~0 while delta - g > 0 (the thin-tail failure mode, see "outlier flag")
@@ -244,7 +189,7 @@ TEST_CASE("Hertz ellipses lambda = A/B in {0.1, 0.5, 2, 10} (Johnson §4.2)", "[
   for (double lambda : Bs) {
     const double B = 1.0 / (2.0 * 0.3);  // lateral curvature fixed, A varied
     const double A = lambda * B;
-    const HertzRef h = hertz_ref(A, B, N, kEstar);
+    const HertzReference h = mh::testing::hertz_reference(A, B, N, kEstar);
     const int across = 40;
     const double ds = 2.0 * h.b / (across + 0.5);
     const int n = 2 * (int)(2.0 * h.b / ds) + 1;
@@ -269,7 +214,7 @@ TEST_CASE("Hertz ellipses lambda = A/B in {0.1, 0.5, 2, 10} (Johnson §4.2)", "[
 TEST_CASE("library Hertz axes agree with the test's reference", "[strips]") {
   for (double lambda : {0.1, 0.5, 1.0, 2.0, 10.0}) {
     const double B = 1.0, A = lambda * B, N = 1e4;
-    const HertzRef h = hertz_ref(A, B, N, kEstar);
+    const HertzReference h = mh::testing::hertz_reference(A, B, N, kEstar);
     double a = 0, b = 0;
     REQUIRE(mh::strips_detail::hertz_axes(A, B, h.delta, &a, &b));
     CHECK(a == Approx(h.a).epsilon(1e-9));
@@ -279,7 +224,7 @@ TEST_CASE("library Hertz axes agree with the test's reference", "[strips]") {
 
 TEST_CASE("plastic cap", "[strips]") {
   const double R = 0.3, N = 50e3;
-  const HertzRef h = hertz_ref(1.0 / (2.0 * R), 1.0 / (2.0 * R), N, kEstar);
+  const HertzReference h = mh::testing::hertz_reference(1.0 / (2.0 * R), 1.0 / (2.0 * R), N, kEstar);
   const double ds = 2.0 * h.b / 40.5;
   const auto geo = ellipse_geometry(1.0 / (2.0 * R), 1.0 / (2.0 * R), ds, 2 * (int)(1.6 * h.b / ds) + 1);
   const auto el = mh::solve_strips_load(geo, kH, N, INFINITY);
@@ -553,7 +498,7 @@ TEST_CASE("a refinement started from a nearby plane's answer reaches the cold an
 
 TEST_CASE("outlier flag", "[strips]") {
   const double R = 0.3, N = 50e3;
-  const HertzRef h = hertz_ref(1.0 / (2.0 * R), 1.0 / (2.0 * R), N, kEstar);
+  const HertzReference h = mh::testing::hertz_reference(1.0 / (2.0 * R), 1.0 / (2.0 * R), N, kEstar);
   const double delta = h.delta;
   {
     // Degenerate tail: with ds = 2b/30 strip centres fall exactly on the tips y = +-b, where the
@@ -608,7 +553,7 @@ TEST_CASE("no contact and invalid input", "[strips]") {
 
 TEST_CASE("timing: ~50-strip patch", "[strips][timing]") {
   const double R = 0.3, N = 50e3;
-  const HertzRef h = hertz_ref(1.0 / (2.0 * R), 0.5 / (2.0 * R), N, kEstar);
+  const HertzReference h = mh::testing::hertz_reference(1.0 / (2.0 * R), 0.5 / (2.0 * R), N, kEstar);
   const double ds = 2.0 * h.b / 50;
   const auto geo = ellipse_geometry(1.0 / (2.0 * R), 0.5 / (2.0 * R), ds, 2 * (int)(1.6 * h.b / ds) + 1);
   const int reps = 30;

@@ -1,7 +1,9 @@
 // A failed row does not look like a result (issue #10 item 8): out_of_range, no_contact and
 // invalid_pair rows leave every result field empty in CSV and null in JSON.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "output/case_tables.hpp"
@@ -54,4 +56,48 @@ TEST_CASE("failed rows: empty CSV cells, JSON null, same convention for every fa
   format_case(0, cp, ok, false, true, true, f);
   REQUIRE(split(f.cases)[5] == "0.1");
   REQUIRE_FALSE(nlohmann::json::parse(f.json).at("Fz_kN").is_null());
+}
+
+TEST_CASE("not_converged rows keep their last iterate", "[output]") {
+  // README "Output tables": a not_converged row keeps its last iterate, its residual says how far
+  // it is from equilibrium; only out_of_range, no_contact and invalid_pair rows are empty. Columns
+  // read by name from cases_csv_header().
+  CasePoint cp;
+  cp.tY_mm = 0;
+  cp.Q_kN = 50;
+  CaseResult r;
+  r.status = CaseStatus::NotConverged;
+  r.message = "equilibrium not reached in 1 iterations";
+  r.dz = 2e-5;
+  r.approach = 4e-5;
+  r.iterations = 1;
+  r.residual = 0.0425;
+  r.Fz = 52.125e3;
+  r.Fy = 2e3;
+  r.pmax = 955e6;
+  r.area = 124e-6;
+  r.n_contacts = 2;
+  Formatted f;
+  format_case(3, cp, r, false, true, true, f);
+  const auto header = split(cases_csv_header()), row = split(f.cases);
+  CAPTURE(f.cases);
+  REQUIRE(row.size() == header.size());
+  auto cell = [&](const std::string& name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    REQUIRE(it != header.end());
+    return row[static_cast<std::size_t>(it - header.begin())];
+  };
+  CHECK(cell("status") == "not_converged");
+  CHECK(cell("dz_virtual_mm") == "0.02");
+  CHECK(cell("approach_mm") == "0.04");
+  CHECK(cell("iterations") == "1");
+  CHECK(cell("residual") == "0.0425");
+  CHECK(cell("Fz_kN") == "52.125");
+  CHECK(cell("pmax_MPa") == "955");
+  CHECK(cell("n_contacts") == "2");
+  CHECK_THAT(cell("message"), Catch::Contains("not reached"));
+  const auto j = nlohmann::json::parse(f.json);
+  CHECK(j.at("status") == "not_converged");
+  CHECK(j.at("residual").get<double>() == 0.0425);
+  CHECK(j.at("Fz_kN").get<double>() == 52.125);
 }
