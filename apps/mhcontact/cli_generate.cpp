@@ -1,5 +1,5 @@
 // `mhcontact profile generate NAME [--inclination none|1:40|1:20] [--step MM] -o FILE`
-// (README "Standard profiles"): a standard profile from its definition (standard_profiles.hpp),
+// (docs/profiles.md §2): a standard profile from its definition (standard_profiles.hpp),
 // written by write_profile (output/profile_file.hpp).
 #include <CLI/CLI.hpp>
 

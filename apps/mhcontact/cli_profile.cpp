@@ -1,4 +1,4 @@
-// `mhcontact profile convert` and `mhcontact profile info` (README "Profiles").
+// `mhcontact profile convert` and `mhcontact profile info` (docs/profiles.md §8).
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 

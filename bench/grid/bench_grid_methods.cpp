@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
   }
   auto mean = [](const std::vector<double>& v) { double s = 0; for (double x : v) s += x; return s / static_cast<double>(v.size()); };
   std::printf("auto: %d of %zu cases by strips; mean %.3f ms per case against %.3f ms for strips on every case "
-              "(ratio %.2f, issue 12 asks <= 0.33)\n",
+              "(ratio %.2f; the target was <= 0.33, docs/strips.md)\n",
               by_strips, ms_auto.size(), mean(ms_auto), mean(ms_st), mean(ms_auto) / mean(ms_st));
   // The same on all 99 cases of cases/manchester.json (t_Y -6 ... 10 mm by 0.5, Q = 10, 50, 100 kN).
   {
@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
                 sorted[sorted.size() / 2], mean(s99), sorted.back(), refined99, strips99, mean(a99), mean(a99) / mean(s99));
   }
   // The plastic model on the same pair (cases/manchester-plastic.json: Q = 100 kN, p_lim 900 MPa,
-  // t_Y -6 ... 10 mm by 0.5), half-space, one run per case (issue 11: the flange cases took > 60 s).
+  // t_Y -6 ... 10 mm by 0.5), half-space, one run per case (the flange cases once took > 60 s).
   const mh::CaseFile cp = mh::load_case_file(src + "/cases/manchester-plastic.json", true);
   std::vector<double> ms_pl;
   std::printf("half-space plastic, p_lim = %.0f MPa, Q = 100 kN, dx = ds = %.2f mm:\n"

@@ -1,4 +1,4 @@
-// Wheelset benchmark (issue 25; figures printed, never asserted):
+// Wheelset benchmark (figures printed, never asserted):
 //  1. one pair, EN 15302 wheel A on rail A: smoothing both profiles, Δr over y = −8 … 8 mm at
 //     0.01 mm (1601 rows) and tan γe at 33 amplitudes; median of 11 runs, 1 and 2 threads;
 //  2. a fleet: N wheels (default 10000; the argument) on one rail pair, each smoothed, swept over

@@ -9,7 +9,7 @@
 
 namespace mh {
 
-/// Documented process exit codes (README "Errors and exit codes").
+/// Documented process exit codes (docs/cli.md "Exit codes").
 enum ExitCode : int {
   kExitOk = 0,           ///< everything computed, every case ok
   kExitCasesFailed = 1,  ///< outputs written, but some cases did not end `ok` (or `diff` found deviations)

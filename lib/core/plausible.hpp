@@ -2,7 +2,7 @@
 // Plausible ranges of the physical inputs: one table, applied alike by the
 // case file, the manifest (through the case-file rules) and every subcommand. A value outside
 // its range is refused with a hint at the likely unit mistake (newtons typed as kN, MPa typed as
-// GPa, ...). The table is stated in README "Plausible ranges" and docs/method.md §1.
+// GPa, ...). The table is stated in docs/case-file.md "Plausible ranges" and docs/method.md §1.
 //
 //   quantity                    unit   low      high      hint below / above
 //   Q (wheel load)              kN     0.01     2000      "is it in MN?" / "did you give newtons?"
@@ -45,7 +45,7 @@ inline bool inside(const Range& r, double v) { return std::isfinite(v) && v >= r
 inline std::string rule(const Range& r) {
   std::string s = "must be between " + format_number(r.lo) + " and " + format_number(r.hi);
   if (std::string(r.unit) != "-") s += std::string(" ") + r.unit;
-  return s + " (plausible range of " + r.name + ", README \"Plausible ranges\")";
+  return s + " (plausible range of " + r.name + ", docs/case-file.md \"Plausible ranges\")";
 }
 
 /// The hint for a refused value: which unit mistake it looks like.

@@ -25,7 +25,7 @@ struct TrackSetup {
   double flange_back_distance = 1.360;    ///< [m] wheelset flange-back distance (default 1360 mm)
   double flange_back_position = -0.070;   ///< [m] y of the flange back on the wheel profile (default −70 mm)
   double nominal_radius = 0.460;          ///< [m] wheel radius at the taping line y = 0 (default 460 mm)
-  /// How the wheel is placed against the rail at t_Y = 0 (README "Positioning"):
+  /// How the wheel is placed against the rail at t_Y = 0 (docs/case-file.md):
   ///  Gauge (default): from the rail's gauge point (gauge_height below its top), the gauge and the
   ///    wheelset's flange-back distance/position (method.md §7);
   ///  Explicit: the rail y of the wheel profile's origin (taping line) is `lateral_offset`, for

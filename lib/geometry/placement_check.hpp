@@ -1,5 +1,5 @@
 #pragma once
-// The pair-level plausibility check of a wheel placed by gauge positioning (README "Positioning",
+// The pair-level plausibility check of a wheel placed by gauge positioning (docs/case-file.md,
 // docs/profiles.md "Placement check"): before any case is solved, the main contact at t_Y = 0
 // must lie on the tread of both profiles. A wheel whose taping line was not found (a measured
 // file whose origin is its flange back), a mirrored profile or wrong track data put the flange

@@ -1,7 +1,7 @@
 #pragma once
 // The case file (JSON): profiles, track, geometry grid, material, model and the sweep of cases.
 // Every error names the file, the JSON path, the value and the rule; unknown keys are errors.
-// Field reference: README "Case file".
+// Field reference: docs/case-file.md.
 #include <cstdint>
 #include <string>
 #include <vector>

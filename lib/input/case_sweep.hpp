@@ -1,5 +1,5 @@
 #pragma once
-// The cases a case file asks for (README "Case file", "sweep" and "cases"): either a cartesian
+// The cases a case file asks for (docs/case-file.md): either a cartesian
 // sweep of t_Y and Q whose axes are lists or ranges {"from", "to", "step"} (generated exactly in
 // the decimals given, counted before anything is materialised and refused beyond kMaxCases), or
 // an explicit list of cases, every entry in its plausible range. SweepAxis, kMaxCases and the

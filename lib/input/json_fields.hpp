@@ -3,7 +3,7 @@
 // in its plausible range (core/plausible.hpp), a range-checked integer, a boolean, a string, and
 // the allowed keys of an object. Each checks the JSON type and the rule and throws InputError
 // naming the file, the JSON path (e.g. /material/E_GPa), the value and the rule, with a hint
-// where one helps; unknown keys are errors. Field reference: README "Case file".
+// where one helps; unknown keys are errors. Field reference: docs/case-file.md.
 //
 // Internal to the case-file reader: namespace detail.
 #include <cmath>

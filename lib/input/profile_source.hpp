@@ -1,5 +1,5 @@
 #pragma once
-// Where a profile comes from, as the case file gives it (README "Case file", "wheel" and "rail"):
+// Where a profile comes from, as the case file gives it (docs/case-file.md):
 // a file name, {"file": ...} with reading options (paths relative to the case file), or
 // {"standard": ...}; and reading or generating it with the rail inclination applied once
 // (load_profile, declared in input/case_file.hpp).

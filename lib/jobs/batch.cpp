@@ -142,7 +142,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     }
     if (pw) pw->begin_array("cases");
     if (pg) {
-      // A profile's warnings once per batch, not once per pair it is in (issue #22: the same five
+      // A profile's warnings once per batch, not once per pair it is in (the same five
       // lines appeared eight times): the reader's warnings of a file, and any pair-level warning
       // with the same text, are printed the first time they occur.
       if (!opt.quiet)

@@ -130,7 +130,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
                            sh.meta["count"].dump(),
                        "give the directories of one run");
   {
-    // Name the shards that are missing or given twice (issue #22), not only their count.
+    // Name the shards that are missing or given twice, not only their count.
     std::map<unsigned, std::vector<std::string>> dirs_of;
     for (const auto& sh : shards) dirs_of[sh.meta["index"].get<unsigned>()].push_back(sh.dir);
     std::string missing, twice;

@@ -71,7 +71,7 @@ int parse_digits(const std::string& text);
 std::vector<std::string> parse_fail_on(const std::string& text);
 
 /// pressure.csv is refused before anything is solved when its estimated size (at least one
-/// contact per case) is above this, unless forced (README "Output tables").
+/// contact per case) is above this, unless forced (docs/outputs.md).
 constexpr double kPressureLimitBytes = 10e9;
 
 /// Refuse (InputError on --pressure-grid) a pressure grid of N×N points for `cases` cases whose

@@ -1,6 +1,6 @@
 // The per-case tables of `run` (cases.csv, ellipses.csv, pressure.csv) and the case records of
 // results.json: column names and the formatting of one case's rows. The schema is documented in
-// the README ("Output tables").
+// docs/outputs.md.
 #include "output/case_tables.hpp"
 
 #include <algorithm>
@@ -151,7 +151,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; s += status;
     s += ','; s += to_string(r.method);
     // A failed row (no solution: out_of_range, no_contact, invalid_pair) leaves every result
-    // field empty in CSV and null in JSON (README "Output tables"); n_contacts stays 0.
+    // field empty in CSV and null in JSON (docs/outputs.md); n_contacts stays 0.
     auto rnum = [&](std::string& o, double v) { if (!failed) num(o, v); };
     s += ','; rnum(s, r.dz * units::per_mm);
     s += ','; rnum(s, r.approach * units::per_mm);

@@ -42,7 +42,7 @@ void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& 
 void format_strips(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, std::string& s);
 std::string strips_csv_header();
 
-/// The column names of the tables (README "Output tables").
+/// The column names of the tables (docs/outputs.md).
 std::string patches_csv_header(bool plastic);
 /// Which per-contact tables a method writes: ellipses.csv (multi-Hertzian, and "auto" for the cases
 /// it keeps), patches.csv (grid methods, and "auto" for the cases it hands to the strip method).

@@ -4,7 +4,7 @@
 // `mhcontact diff` is a thin wrapper around diff_tables(); a regression test runner can call it
 // directly.
 //
-// Rules (README "Comparing result tables"):
+// Rules (docs/cli.md, "diff"; docs/status.md):
 //  - Key: DiffOptions::key if given, else those of `pair`, `case`, `ellipse` present in both
 //    headers (in that order); if none is, rows are matched by position (the 1-based row number
 //    is the key). Key cells are compared as exact text (numeric keys such as `tY_mm` too).

@@ -106,7 +106,7 @@ struct WheelLandmarks {
 };
 WheelLandmarks wheel_landmarks(const Profile& wheel);
 
-/// Wheel measures after EN 15313 (README "Wheel measures"), from the profile in the canonical
+/// Wheel measures after EN 15313 (docs/profiles.md §9), from the profile in the canonical
 /// frame (taping line at y = 0, flange at negative y, z = −increase of radius), all [m]:
 ///  Sh flange height: from the tread at the taping line (z at y = 0) to the flange tip (lowest z);
 ///  Sd flange thickness: from the flange back, which the canonical frame puts 70 mm from the

@@ -156,7 +156,7 @@ RailCantCheck check_rail_cant(const Profile& rail, const Inclination& incl, cons
   c.file_angle = c.used.angle - c.inclination;
   if (!c.used.found) return c;
   // A worn head gives an estimate that is not confident (biased by the wear): the checks still
-  // run on it, with a margin of two standard errors, and the warning says so (issue #22: a
+  // run on it, with a margin of two standard errors, and the warning says so (a
   // worn rail laid at 1:40 canted again gave 7.7 deg silently).
   const double margin = c.used.confident ? 0.0 : 2 * c.used.std_error;
   const std::string note = c.used.confident ? std::string() : " (estimate not confident: " + c.used.why + ")";

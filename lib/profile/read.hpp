@@ -17,7 +17,7 @@ enum class ProfileFormat { Auto, Simpack, MiniProf, Table, Vampire };
 ProfileFormat parse_profile_format(const std::string& s);
 const char* to_string(ProfileFormat f);
 
-/// Clean-up of measured profiles where the other body can touch (README "Clean-up"):
+/// Clean-up of measured profiles where the other body can touch (docs/profiles.md §6):
 ///  Envelope (default): exact duplicates and ≤ 0.05 mm jitter dropped, then folds and loops
 ///    (y stepping back) replaced by the outer envelope of the surface the other body can touch
 ///    (rail: the upper envelope, wheel: the lower one), with a warning saying how many points

@@ -70,7 +70,7 @@ NormalCGResult solve_normal_approach(const InfluenceGrid& C, const double* g, do
 /// over capped solve_normal_approach solves, warm-started, from max(δ_el, δ_rp) (δ_rp: the
 /// rigid–perfectly-plastic bound, p_lim·dx·dy·#{g < δ} = N), stopped at |N(δ) − N| ≤ tol·N, then
 /// [PK]'s load scaling from there (exact N, the same ε). [PK]'s scaling alone does not converge
-/// when most of the contact is capped (elements jump between 0 and p_lim every step; issue 11).
+/// when most of the contact is capped (elements jump between 0 and p_lim every step).
 /// iterations counts every CG step of all these solves; max_iterations bounds their total. N ≤ 0: NoContact, p = 0, δ = min g. N > p_lim·nx·ny·dx·dy (the grid cannot carry
 /// it): NotConverged. On success dx·dy·Σp = N to rounding.
 NormalCGResult solve_normal_load(const InfluenceGrid& C, const double* g, double N, double p_lim,

@@ -1,7 +1,7 @@
 #pragma once
 // Multi-Hertzian contact with the vertical approach prescribed instead of the load: eq. 11 with
 // δz given, each ellipse's force from its law (eq. 8, or the plastic law of method.md §5), no
-// iteration. The penetration-driven force element of a multi-body code (issue 26, docs/c-api.md);
+// iteration. The penetration-driven force element of a multi-body code (docs/c-api.md);
 // solve_multi_hertz() (multi_hertz.hpp) is the load-driven one (eq. 10). At the δz that
 // solve_multi_hertz returns for a load Q, this gives back Σ N_i cos γ_i = Q to the solver's rtol.
 #include <vector>

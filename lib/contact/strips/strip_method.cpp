@@ -129,7 +129,7 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
     evaluations += k.evaluations;
     const StripResult& S = k.last;
     // A patch solve that did not converge keeps its last (closest) iterate, as every
-    // not_converged row does (README "Failed rows"); the case's status and message say why.
+    // not_converged row does (docs/outputs.md); the case's status and message say why.
     if ((S.status != StripStatus::Ok && S.status != StripStatus::NotConverged) || S.N <= 0) continue;
     PatchResult pr;
     pr.y_r = k.P.y_ref;

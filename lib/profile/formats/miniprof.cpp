@@ -47,7 +47,7 @@ std::string unquote(std::string l) {
 
 /// The MiniProf styles, told apart by their content (not by the first line alone). Drawing
 /// elements count only when numbered elements MPD<k>= are there: a Key=Value header of points
-/// (ColumnDef=, XYPoints=) may carry stray MPDC=/MPDN= keys from a CAD export (issue #22).
+/// (ColumnDef=, XYPoints=) may carry stray MPDC=/MPDN= keys from a CAD export.
 enum class Style { KeyValue, Old, Elements, Multi };
 
 bool is_element_key(const std::string& l) {  // "MPD<digits>=..."
@@ -275,7 +275,7 @@ void orient(RawProfile& r, int yaxis) {
   }
 }
 
-/// The header keys that hold wheel measures (issue #22: Key=Value wheel files store Sd=, Sh=, qR=).
+/// The header keys that hold wheel measures (Key=Value wheel files store Sd=, Sh=, qR=).
 bool is_measure_key(const std::string& key) {
   const std::string k = lower(key);
   return k == "sd" || k == "sh" || k == "qr";

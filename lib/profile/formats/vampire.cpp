@@ -16,7 +16,7 @@ namespace mh::formats {
 // ---------------------------------------------------------------------------------------------
 // VAMPIRE .whe/.rai: line 1 WHEELPROFILE/RAILPROFILE, line 2 title, line 3 datum, line 4
 // flange-back distance or gauge, then rows "yl zl yr zr"; z up. Each side is taken in its own
-// frame with y positive towards its field side (assumption, see README); no real file was
+// frame with y positive towards its field side (assumption, see docs/profiles.md §4); no real file was
 // available to confirm the lateral sign.
 RawProfile read_vampire(const std::string& path, const std::vector<std::string>& lines, const std::string& side) {
   RawProfile r;
