@@ -4,7 +4,10 @@
 //  - bracketed_root: TOMS 748 (Alefeld, Potra & Shi, ACM TOMS 21 (1995) 327–344;
 //    boost::math::tools::toms748_solve), for a continuous f with a sign change in [lo, hi];
 //  - newton_root: Newton–Raphson kept inside a bracket, with bisection where a step would leave it
-//    (boost::math::tools::newton_raphson_iterate), for a monotone f whose derivative is at hand.
+//    (boost::math::tools::newton_raphson_iterate), for a monotone f whose derivative is at hand;
+//  - bisected_root: plain bisection (boost::math::tools::bisect), where the root of interest is
+//    the one bisection finds among several in the bracket (it keeps the same one whatever f's
+//    shape between them), or where f may be discontinuous.
 // Both stop on whichever comes first: the bracket (or step) below abs + rel·|x|, or |f| ≤ f_abs.
 #include <algorithm>
 #include <cfloat>
@@ -63,6 +66,24 @@ RootResult bracketed_root(F&& f, double lo, double hi, double f_lo, double f_hi,
   std::uintmax_t n = static_cast<std::uintmax_t>(std::max(tol.max_iterations, 1));
   const std::pair<double, double> ab = boost::math::tools::toms748_solve(g, lo, hi, f_lo, f_hi, done, n, roots_detail::Policy());
   r.converged = done(ab.first, ab.second) || r.f == 0;
+  return r;
+}
+
+/// A root of f in [lo, hi] (f(lo), f(hi) of opposite signs) by bisection, to a bracket narrower
+/// than tol.abs + tol.rel·min(|lo|, |hi|) or tol.max_iterations halvings; x is the bracket's
+/// midpoint (f is not evaluated there).
+template <class F>
+RootResult bisected_root(F&& f, double lo, double hi, const RootTolerance& tol = {}) {
+  RootResult r;
+  auto done = [&](double a, double b) { return std::fabs(b - a) <= tol.abs + tol.rel * std::min(std::fabs(a), std::fabs(b)); };
+  auto g = [&](double x) {
+    ++r.iterations;
+    return f(x);
+  };
+  std::uintmax_t n = static_cast<std::uintmax_t>(std::max(tol.max_iterations, 1)) + 3;  // + Boost's 3 at the ends
+  const std::pair<double, double> ab = boost::math::tools::bisect(g, lo, hi, done, n, roots_detail::Policy());
+  r.x = 0.5 * (ab.first + ab.second);
+  r.converged = done(ab.first, ab.second);
   return r;
 }
 

@@ -1,5 +1,7 @@
 #include "geometry/contact_geometry.hpp"
 
+#include "core/roots.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -30,7 +32,8 @@ namespace {
 
 // Minimise the gap g(y) = z_w(y − s) − z_r(y) on [a, b] around a discrete minimum: the roots
 // of g'(y) = z_w'(y − s) − z_r'(y) with g' going from negative to positive are local minima; each
-// is refined by bisection and the lowest gap wins. Without such a root the lower end is taken.
+// is refined by bisection (core/roots.hpp: of several roots in a sub-interval it keeps the one
+// bisection finds) and the lowest gap wins. Without such a root the lower end is taken.
 double refine_minimum(const ProfileCurve& W, const ProfileCurve& R, double s, double a, double b) {
   auto d = [&](double y) {
     double dw, dr;
@@ -45,12 +48,11 @@ double refine_minimum(const ProfileCurve& W, const ProfileCurve& R, double s, do
   for (int i = 1; i <= kSub; ++i) {
     const double y1 = a + (b - a) * i / kSub, d1 = d(y1);
     if (d0 < 0 && d1 >= 0) {
-      double lo = y0, hi = y1;
-      for (int it = 0; it < 60 && hi - lo > 1e-13; ++it) {
-        const double m = 0.5 * (lo + hi);
-        if (d(m) < 0) lo = m; else hi = m;
-      }
-      const double ym = 0.5 * (lo + hi), gm = g(ym);
+      RootTolerance tol;
+      tol.abs = 1e-13;
+      tol.rel = 0;
+      tol.max_iterations = 60;
+      const double ym = bisected_root(d, y0, y1, tol).x, gm = g(ym);
       if (gm < best_g) { best_g = gm; best_y = ym; }
     }
     y0 = y1;

@@ -1,5 +1,7 @@
 #include "profile/rail_cant.hpp"
 
+#include "core/roots.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -81,7 +83,8 @@ RailCant estimate_rail_cant(const Profile& rail, const RailCantOptions& opt) {
   if (rail.size() < 3) { r.why = "too few points"; return r; }
   // The cant is the turn-back θ at which the midpoint line is vertical: b(θ) = 0. b falls as θ
   // grows; b(θ) is far from linear (on a tilted crown the horizontal cuts move a lot), so the
-  // root is bracketed by a scan over ±max_angle and bisected; of several roots the one whose
+  // root is bracketed by a scan over ±max_angle and bisected (core/roots.hpp); of several roots
+  // the one whose
   // midpoints lie closest to a line wins.
   auto b_at = [&](double th, Line* out) {
     const Line L = chord_midpoints(rail, th, opt);
@@ -98,15 +101,16 @@ RailCant estimate_rail_cant(const Profile& rail, const RailCantOptions& opt) {
     const double th1 = -opt.max_angle + 2 * opt.max_angle * k / n_scan, b1 = b_at(th1, &L);
     max_levels = std::max(max_levels, L.n);
     if (std::isfinite(b0) && std::isfinite(b1) && b0 >= 0 && b1 <= 0) {
-      double lo = th0, hi = th1;
-      for (int it = 0; it < opt.max_iterations && hi - lo > 1e-12; ++it) {
-        const double m = 0.5 * (lo + hi), bm = b_at(m, nullptr);
-        if (!std::isfinite(bm)) break;
-        if (bm > 0) lo = m; else hi = m;
-      }
+      // Inside the bracket b may be undefined (too few levels): the root finder then ends there.
+      RootTolerance tol;
+      tol.abs = 1e-12;
+      tol.rel = 0;
+      tol.max_iterations = opt.max_iterations;
+      const double th = bisected_root([&](double t) { const double bt = b_at(t, nullptr); return std::isfinite(bt) ? bt : 0.0; },
+                                      th0, th1, tol).x;
       Line Lr;
-      b_at(0.5 * (lo + hi), &Lr);
-      if (Lr.n >= opt.min_levels && Lr.rms < best_rms) { best_rms = Lr.rms; best_theta = 0.5 * (lo + hi); }
+      b_at(th, &Lr);
+      if (Lr.n >= opt.min_levels && Lr.rms < best_rms) { best_rms = Lr.rms; best_theta = th; }
     }
     th0 = th1;
     b0 = b1;

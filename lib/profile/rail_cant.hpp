@@ -7,7 +7,7 @@
 // its highest point; on each cut the first crossing on the gauge side and on the field side of
 // the highest point are interpolated and their midpoint taken, and a least-squares line
 // y_mid = a + b·z is fitted through the midpoints. The cant is the θ at which that line is
-// vertical, b(θ) = 0: bracketed by a scan over ±max_angle and bisected. Turned back by the right
+// vertical, b(θ) = 0: bracketed by a scan over ±max_angle and bisected (core/roots.hpp). Turned back by the right
 // θ an exactly symmetric head has its horizontal chords' midpoints on its (vertical) axis, so
 // the estimate is exact there and biased only by the asymmetry of the head (wear, a worn gauge
 // corner) and by noise. (At a wrong θ the midpoints do not follow the tilted axis: the tilt of
