@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fleets pair by pair (issue #14 item 4): a batch writes pairs/<k>/profiles.csv, caf.csv and
+# Fleets pair by pair: a batch writes pairs/<k>/profiles.csv, caf.csv and
 # geometry.json (potential ellipses) per pair, the same as `mhcontact geometry` of that pair;
 # `geometry MANIFEST` writes the same; both plot scripts take --pair and refuse a batch directory
 # without it with a clear message; a rerun over a batch directory is accepted.

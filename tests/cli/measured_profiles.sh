@@ -37,7 +37,7 @@ for r in avg_low2.ban; do
   grep -q "gauge_point_mm (widest point" "$tmp/$r.info"
 done
 # the narrow section fr_ol.csv (18 mm wide, no gauge point) and the SIMPACK test surfaces used
-# as rails run with explicit positioning (issue #13 item 3); the test-surface wheels on 60E1
+# as rails run with explicit positioning; the test-surface wheels on 60E1
 explicit='"track": {"positioning": "explicit", "lateral_offset_mm": -23}'
 for r in fr_ol.csv circ_r100.prr circ_r300.prr flat_plane.prr flat_ang200.prr groove_r1002.prr MBench_UIC60_v3.prr; do
   echo "{\"wheel\": {\"profile\": {\"standard\": \"S1002\"}}, \"rail\": {\"profile\": \"$d/$r\", \"inclination\": \"as-is\"}, $explicit, $sweep}" > "$tmp/$r.json"

@@ -51,7 +51,7 @@ grep -qx "kind: rail" "$T/out" || fail "--mirror-z kind"
 [ $rc -eq 0 ] || fail "avg_HR exit $rc"
 grep -q "warning: dropped 1 points that stepped back in y by at most 0.01 mm" "$T/out" || fail "avg_HR warning"
 # measured rail whose gauge face turns under the head (a 0.06 mm backward step at line 537):
-# cleaned by default (issue #13), the report in the output; rejected with --cleanup strict
+# cleaned by default, the report in the output; rejected with --cleanup strict
 "$MH" profile info "$D/avg_low2.ban" >"$T/out" 2>&1; rc=$?
 [ $rc -eq 0 ] || fail "avg_low2 exit $rc"
 grep -q "^cleanup: envelope" "$T/out" || fail "avg_low2 cleanup line"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Explicit positioning and roller rigs (issue #13 item 3). Usage: bash profile_positioning.sh <mhcontact> <source-dir>
+# Explicit positioning and roller rigs. Usage: bash profile_positioning.sh <mhcontact> <source-dir>
 #  1. explicit positioning at the offset that gauge positioning computes gives the same results;
 #  2. a rail scanned only over its head has no gauge point: the error names explicit positioning,
 #     and with it the pair runs;

@@ -36,7 +36,7 @@ cmp "$tmp/ffull/pressure.csv" "$tmp/fmerged/pressure.csv"
 
 # Refused: a missing shard, a shard twice, shards of another run, a bad --shard.
 expect2() { set +e; "$@" 2>"$tmp/err"; rc=$?; set -e; test $rc -eq 2 || { echo "expected exit 2: $*" >&2; exit 1; }; }
-# the message names the shard that is missing, and how to make it (issue #22)
+# the message names the shard that is missing, and how to make it
 expect2 "$bin" merge "$tmp/s1" "$tmp/s2" -o "$tmp/m2"
 grep -q "split into 3 shards: shard 3/3 missing (run the missing shard(s) .* --shard K/3)" "$tmp/err" || { cat "$tmp/err"; exit 1; }
 expect2 "$bin" merge "$tmp/s3" "$tmp/s1" -o "$tmp/m2"

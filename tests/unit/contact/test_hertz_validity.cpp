@@ -1,4 +1,4 @@
-// Hertz validity of a loaded ellipse (contact/ellipse/hertz_validity.hpp, docs/method.md §4; issue #10 item 2).
+// Hertz validity of a loaded ellipse (contact/ellipse/hertz_validity.hpp, docs/method.md §4).
 #include <catch2/catch.hpp>
 #include <cmath>
 

@@ -183,7 +183,7 @@ TEST_CASE("non-Hertzian candidates (B <= 0) are excluded and flagged when they w
   REQUIRE(both.Fz == Approx(100e3).epsilon(1e-12));
 }
 
-TEST_CASE("load sharing next to a jump does not depend on the t_Y grid (issue #10 item 1)", "[solver]") {
+TEST_CASE("load sharing next to a jump does not depend on the t_Y grid", "[solver]") {
   // Manchester pair, Q = 100 kN, t_Y around the jumps at 0.21279, 5.02274 and 6.61399 mm. Before
   // the fix the gaps were interpolated linearly across the jump's grid interval and the lateral
   // force at t_Y = 6.6 mm was 130 / 140 / 83 / 84 / 75 kN for steps 0.005 / 0.01 / 0.05 / 0.1 /
@@ -437,4 +437,16 @@ TEST_CASE("law cache: a change of material or coefficient path between two solve
       require_same_bytes(second, fresh);
     }
   }
+}
+
+TEST_CASE("an invalid material is a bug of the caller, not a non-Hertzian case", "[solver]") {
+  // The solver used to turn every exception while building an ellipse law into "no Hertz
+  // ellipse": an invalid material then read "every potential ellipse has B <= 0 (conformal)".
+  // Now it propagates (the sweep reports an internal error, exit 3), and a λ beyond the Hertz
+  // range is the only reason a candidate has no law.
+  const ContactGeometry& G = manchester();
+  Material bad = steel();
+  bad.nu = 0.7;  // Poisson's ratio outside (0, 0.5)
+  CHECK_THROWS_AS(solve_multi_hertz(G, bad, 0.0, 50e3), std::invalid_argument);
+  REQUIRE(solve_multi_hertz(G, steel(), 0.0, 50e3).status == CaseStatus::Ok);
 }

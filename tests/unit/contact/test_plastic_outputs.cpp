@@ -1,4 +1,4 @@
-// Plastic outputs say what they mean (issue #10 item 5): the elastic peak at the same load, the
+// Plastic outputs say what they mean: the elastic peak at the same load, the
 // actual maximum, the elastic and plastic patches side by side. References are independent: an
 // elastic law (p_lim = INFINITY) loaded with the same N.
 #include <catch2/catch.hpp>

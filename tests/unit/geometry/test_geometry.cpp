@@ -115,7 +115,7 @@ TEST_CASE("candidates interpolate between grid points and keep their gaps", "[ge
   REQUIRE_FALSE(G.covers(12.5e-3));
 }
 
-TEST_CASE("potential ellipses do not depend on the t_Y grid (issue #10 item 1)", "[geometry]") {
+TEST_CASE("potential ellipses do not depend on the t_Y grid", "[geometry]") {
   // Manchester pair: 4 potential ellipses with the same jumps for every step 0.005 … 0.5 mm; the
   // jumps are bisected to 0.01 µm, so they agree far closer than one step (measured: identical
   // to 1e-5 mm). The ellipses' grid boundaries agree within one step.

@@ -66,7 +66,7 @@ TEST_CASE("a contact at the cut end of a wheel profile is flagged off_profile", 
   REQUIRE(warned(solve_contact(Gc, Material{}, -10e-3, 50e3, mo), "off_profile"));
   REQUIRE_FALSE(warned(solve_contact(Gf, Material{}, -10e-3, 50e3, mo), "off_profile"));
   REQUIRE_FALSE(warned(solve_contact(Gf, Material{}, 0.0, 50e3, mo), "off_profile"));
-  // The grid methods check their patches' lateral extent against the profiles' ends (issue #10).
+  // The grid methods check their patches' lateral extent against the profiles' ends.
   for (Method m : {Method::Strips, Method::HalfSpace}) {
     CAPTURE(to_string(m));
     MethodOptions g;

@@ -1,4 +1,4 @@
-// Integer fields are range-checked as integers before any conversion (issue #10 item 7, second part).
+// Integer fields are range-checked as integers before any conversion.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 

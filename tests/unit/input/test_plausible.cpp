@@ -1,4 +1,4 @@
-// Plausible ranges (issue #10 item 4), sweep values as written (item 6) and every case checked
+// Plausible ranges, sweep values as written (item 6) and every case checked
 // (item 7): through the case-file parser, which the manifest shares.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-// A failed row does not look like a result (issue #10 item 8): out_of_range, no_contact and
+// A failed row does not look like a result: out_of_range, no_contact and
 // invalid_pair rows leave every result field empty in CSV and null in JSON.
 #include <catch2/catch.hpp>
 #include <algorithm>

@@ -1,5 +1,5 @@
 // OutputFile: the temporary-then-rename contract and the early writeback a long sweep uses
-// (start_writeback after each chunk, issue #14 item 6). Reference: the bytes written.
+// (start_writeback after each chunk). Reference: the bytes written.
 #include <catch2/catch.hpp>
 
 #include <unistd.h>

@@ -153,7 +153,7 @@ TEST_CASE("every shipped profile file reads or is rejected with its reason", "[p
       // line 135): measurement jitter (<= 0.05 mm), the point is dropped with a warning.
       {"avg_HR.BAN", K::Rail, 146, nullptr},
       // avg_low2.ban: its gauge face turns under the head from 11.75 mm below the top (y steps
-      // back 0.06 mm at line 537, 0.8 mm in all): rejected before issue #13; the clean-up now
+      // back 0.06 mm at line 537, 0.8 mm in all): rejected by the strict clean-up; the default clean-up now
       // starts the profile at the widest point and clips the hidden face (warning).
       {"avg_low2.ban", K::Rail, 334, nullptr},
       {"synthetic_flange.whe", K::Wheel, 131, nullptr},
