@@ -25,6 +25,7 @@ bool GeometryOptions::valid(std::string* why) const {
   if (!(jump_threshold > 0)) return fail("jump_threshold_deg must be > 0");
   if (!(jump_distance >= 0)) return fail("jump_distance_mm must be >= 0");
   if (!(min_ellipse_width >= 0) || min_ellipse_width > 5e-3) return fail("min_ellipse_width_mm must be in [0, 5]");
+  if (!(contact_smoothing >= 0) || contact_smoothing > 20e-3) return fail("smoothing_mm must be in [0, 20]");
   return true;
 }
 
@@ -186,6 +187,13 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   cr.noise = opt.rail_noise;
   G.wheel_curve = std::make_shared<const ProfileCurve>(wheel, cw);
   G.rail_curve = std::make_shared<const ProfileCurve>(rail, cr);
+  // Smoothing for contact (profiles.md §7): measured profiles only.
+  auto gap_curve = [&](const Profile& p, const std::shared_ptr<const ProfileCurve>& c) {
+    if (!c->noise().measured || !(opt.contact_smoothing > 0)) return c;
+    return std::make_shared<const ProfileCurve>(smooth_profile(p, opt.contact_smoothing), opt.curve.grid_step, c->noise());
+  };
+  G.wheel_gap_curve = gap_curve(wheel, G.wheel_curve);
+  G.rail_gap_curve = gap_curve(rail, G.rail_curve);
   const ProfileCurve& W = *G.wheel_curve;
   const ProfileCurve& R = *G.rail_curve;
   G.wheel_window = W.window_used();

@@ -66,6 +66,12 @@ struct GeometryOptions {
   /// Measured or exact, per profile (case file geometry.noise; profiles.md "Measured or exact");
   /// each overrides curve.noise for its profile. Default auto: decided from the data.
   ProfileNoise wheel_noise = ProfileNoise::Auto, rail_noise = ProfileNoise::Auto;
+  /// Smoothing for contact (profiles.md §7 "Smoothing for contact"): the contact gap of the grid
+  /// methods (half-space, strips) is built on measured profiles smoothed by a spline of this
+  /// smoothing length L (profile/smoothing_spline.hpp: a wave of length L along the profile keeps
+  /// half its amplitude); exact profiles are never smoothed, and 0 turns it off. Case file
+  /// geometry.smoothing_mm. Default 5 mm: see profiles.md §7 for the measurement behind it.
+  double contact_smoothing = 5.0e-3;  ///< [m]
   bool valid(std::string* why) const;
 };
 
@@ -130,6 +136,10 @@ class ContactGeometry {
   /// The smooth profiles the tables were built from, kept for the 3-D gap of the grid methods
   /// (geometry/gap.hpp): wheel in its own frame, rail with its inclination.
   std::shared_ptr<const ProfileCurve> wheel_curve, rail_curve;
+  /// The profiles of the grid methods' contact gap (geometry/gap.hpp): a measured profile
+  /// smoothed for contact (GeometryOptions::contact_smoothing), otherwise the same curve as
+  /// wheel_curve / rail_curve.
+  std::shared_ptr<const ProfileCurve> wheel_gap_curve, rail_gap_curve;
   double nominal_radius = 0;             ///< [m] wheel radius at the taping line (y_w = 0)
   double wheel_z0 = 0;                   ///< [m] smoothed wheel height at y_w = 0 (r(y_w) = R0 − (z_w(y_w) − z0))
   /// Curvature samples of both profiles every kappa_dy over each profile's width, in the

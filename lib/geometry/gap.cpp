@@ -13,7 +13,8 @@ constexpr double kNewtonTol = 1e-13;     // [m]
 }  // namespace
 
 WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY)
-    : W_(G.wheel_curve.get()), R_(G.rail_curve.get()), shift_(G.y_offset + tY),
+    : W_(G.wheel_gap_curve ? G.wheel_gap_curve.get() : G.wheel_curve.get()),
+      R_(G.rail_gap_curve ? G.rail_gap_curve.get() : G.rail_curve.get()), shift_(G.y_offset + tY),
       R0_(G.nominal_radius), z0_(G.wheel_z0) {
   y0_ = std::max(R_->y_min(), W_->y_min() + shift_);
   y1_ = std::min(R_->y_max(), W_->y_max() + shift_);

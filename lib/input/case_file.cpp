@@ -126,7 +126,8 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   if (j.contains("geometry")) {
     const json& g = j.at("geometry");
     c.only_keys(g, "/geometry", {"tY_min_mm", "tY_max_mm", "tY_step_mm", "strip_width_mm", "jump_threshold_deg",
-                                 "jump_distance_mm", "min_ellipse_width_mm", "fit_window_mm", "measured_fit_window_mm", "noise"});
+                                 "jump_distance_mm", "min_ellipse_width_mm", "fit_window_mm", "measured_fit_window_mm", "noise",
+                                 "smoothing_mm"});
     if (g.contains("tY_min_mm") != g.contains("tY_max_mm"))
       c.fail("/geometry", &g, "give both tY_min_mm and tY_max_mm, or neither (then the range covers the sweep)");
     if (g.contains("tY_min_mm")) {
@@ -151,6 +152,12 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     if (g.contains("min_ellipse_width_mm")) cf.geometry.min_ellipse_width = c.number(g, "/geometry", "min_ellipse_width_mm") * units::mm;
     if (g.contains("fit_window_mm")) cf.geometry.curve.window_half_width = c.positive(g, "/geometry", "fit_window_mm") * units::mm;
     if (g.contains("measured_fit_window_mm")) cf.geometry.curve.measured_window_half_width = c.positive(g, "/geometry", "measured_fit_window_mm") * units::mm;
+    // Smoothing of measured profiles for the grid methods' contact gap (profiles.md §7).
+    if (g.contains("smoothing_mm")) {
+      const double L = c.number(g, "/geometry", "smoothing_mm");
+      if (!(L >= 0) || L > 20) c.fail("/geometry/smoothing_mm", &g.at("smoothing_mm"), "must be between 0 (off) and 20 mm");
+      cf.geometry.contact_smoothing = L * units::mm;
+    }
     // Measured or exact (profiles.md "Measured or exact"): one value for both profiles or
     // {"wheel": ..., "rail": ...} (a missing one stays "auto").
     if (g.contains("noise")) {
@@ -337,7 +344,8 @@ nlohmann::json CaseFile::resolved_json() const {
                    {"min_ellipse_width_mm", geometry.min_ellipse_width * units::per_mm},
                    {"fit_window_mm", geometry.curve.window_half_width * units::per_mm},
                    {"measured_fit_window_mm", geometry.curve.measured_window_half_width * units::per_mm},
-                   {"noise", {{"wheel", to_string(geometry.wheel_noise)}, {"rail", to_string(geometry.rail_noise)}}}};
+                   {"noise", {{"wheel", to_string(geometry.wheel_noise)}, {"rail", to_string(geometry.rail_noise)}}},
+                   {"smoothing_mm", geometry.contact_smoothing * units::per_mm}};
   json mat = {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}};
   if (!std::isnan(material.E_rail))
     mat = {{"wheel", {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}}},

@@ -32,6 +32,10 @@ nlohmann::json pair_summary_json(const PairGeometry& pg) {
   if (pg.geo.wheel_curve && pg.geo.rail_curve)
     j["profiles"] = {{"wheel", pg.geo.wheel_curve->noise().measured ? "measured" : "exact"},
                      {"rail", pg.geo.rail_curve->noise().measured ? "measured" : "exact"}};
+  // Smoothing for contact (profiles.md §7): per profile, the spline's length L, 0 when not smoothed.
+  if (pg.geo.wheel_gap_curve && pg.geo.rail_gap_curve)
+    j["contact_smoothing_mm"] = {{"wheel", pg.geo.wheel_gap_curve->smoothing_length() * units::per_mm},
+                                 {"rail", pg.geo.rail_gap_curve->smoothing_length() * units::per_mm}};
   j["rail_cant_deg"] = pg.cant.used.found ? nlohmann::json(pg.cant.used.angle / units::deg) : nlohmann::json(nullptr);
   j["pair_warnings"] = pg.cant.warnings;
   return j;
@@ -42,6 +46,13 @@ std::string pair_summary_line(const PairGeometry& pg) {
   for (const auto& [name, c] : {std::pair<const char*, const ProfileCurve*>{"wheel", pg.geo.wheel_curve.get()},
                                 {"rail", pg.geo.rail_curve.get()}})
     if (c) s += std::string(" ") + name + " " + c->noise().reason + ";";
+  for (const auto& [name, c] : {std::pair<const char*, const ProfileCurve*>{"wheel", pg.geo.wheel_gap_curve.get()},
+                                {"rail", pg.geo.rail_gap_curve.get()}})
+    if (c && c->smoothing_length() > 0)
+      s += std::string(" ") + name + " smoothed for contact (grid methods): spline L = " +
+           format_number(c->smoothing_length() * units::per_mm) + " mm, moved the points by " +
+           format_number(std::round(c->smoothing_rms_change() * 1e8) / 100) + " µm RMS (max " +
+           format_number(std::round(c->smoothing_max_change() * 1e8) / 100) + " µm);";
   if (pg.cant.used.found)
     s += " rail cant " + format_number(std::round(pg.cant.used.angle / units::deg * 1e3) / 1e3 + 0.0) + " deg (" +
          cant_ratio(pg.cant.used.angle) + (pg.cant.used.confident ? "" : ", not confident") + ")";

@@ -234,6 +234,38 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w) {
   median_rms_ = rms[rms.size() / 2];
 }
 
+ProfileCurve::ProfileCurve(const SmoothedProfile& sp, double grid_step, const NoiseDecision& noise)
+    : noise_(noise), smoothing_L_(sp.L), smoothing_rms_(sp.rms_change), smoothing_max_(sp.max_change) {
+  const std::vector<double>& S = sp.y.knots();
+  const double s_end = S.back();
+  h_ = grid_step;
+  y0_ = sp.y.eval(S.front());
+  const double y_end = sp.y.eval(s_end);
+  const std::size_t m = static_cast<std::size_t>(std::floor((y_end - y0_) / h_ + 1e-9)) + 1;
+  z_.resize(m); dz_.resize(m); k_.resize(m); side_.assign(m, 0);
+  double s_lo = S.front();
+  for (std::size_t j = 0; j < m; ++j) {
+    const double yj = y0_ + h_ * static_cast<double>(j);
+    // s where y(s) = yj: bisection from the previous node's s (y(s) increases with s).
+    double a = s_lo, b = s_end;
+    for (int it = 0; it < 100 && b - a > 1e-15; ++it) {
+      const double c = 0.5 * (a + b);
+      (sp.y.eval(c) < yj ? a : b) = c;
+    }
+    const double s = 0.5 * (a + b);
+    s_lo = a;
+    double y1 = 0, y2 = 0, z1 = 0, z2 = 0;
+    sp.y.eval(s, &y1, &y2);
+    z_[j] = sp.z.eval(s, &z1, &z2);
+    dz_[j] = z1 / y1;
+    // Curvature of the plane curve (y(s), z(s)): (y' z'' − z' y'') / (y'² + z'²)^(3/2); with y
+    // increasing it is z''/(1+z'²)^(3/2) of z(y), the sign convention above.
+    k_[j] = (y1 * z2 - z1 * y2) / std::pow(y1 * y1 + z1 * z1, 1.5);
+  }
+  window_ = 0;
+  median_rms_ = noise.median_residual;
+}
+
 double ProfileCurve::z(double y, double* dz) const {
   const std::size_t m = z_.size();
   double s = (y - y0_) / h_;

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "profile/profile.hpp"
+#include "profile/smoothing_spline.hpp"
 
 namespace mh {
 
@@ -79,6 +80,10 @@ class ProfileCurve {
   ProfileCurve() = default;
   /// Throws InputError if the profile has fewer than `min_points` points or y is not increasing.
   ProfileCurve(const Profile& p, const CurveOptions& opt = {});
+  /// The curve of a smoothed profile (profile/smoothing_spline.hpp) for the contact gap of the
+  /// grid methods: z, dz/dy and kappa at every node of a `grid_step` grid from the splines
+  /// y(s), z(s) themselves (no window fit). `noise` is carried over from the fitted curve.
+  ProfileCurve(const SmoothedProfile& sp, double grid_step, const NoiseDecision& noise);
 
   double y_min() const { return y0_; }
   double y_max() const { return y0_ + h_ * static_cast<double>(z_.size() - 1); }
@@ -95,6 +100,11 @@ class ProfileCurve {
   double median_residual() const { return median_rms_; }
   /// Exact or measured, and why.
   const NoiseDecision& noise() const { return noise_; }
+  /// [m] The smoothing length L of the spline this curve was made from (0: a window fit of the
+  /// points as given), and the RMS / largest distance [m] it moved the points.
+  double smoothing_length() const { return smoothing_L_; }
+  double smoothing_rms_change() const { return smoothing_rms_; }
+  double smoothing_max_change() const { return smoothing_max_; }
 
   const std::vector<double>& node_kappa() const { return k_; }
   double node_y(std::size_t i) const { return y0_ + h_ * static_cast<double>(i); }
@@ -106,6 +116,7 @@ class ProfileCurve {
   std::vector<signed char> side_;
   double window_ = 0, median_rms_ = 0;
   NoiseDecision noise_;
+  double smoothing_L_ = 0, smoothing_rms_ = 0, smoothing_max_ = 0;
   void build(const Profile& p, const CurveOptions& opt, double w);
 };
 

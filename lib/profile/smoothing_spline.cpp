@@ -1,0 +1,126 @@
+#include "profile/smoothing_spline.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/units.hpp"
+
+namespace mh {
+
+double CubicSpline1::eval(double s, double* d1, double* d2) const {
+  const std::size_t n = s_.size();
+  if (s <= s_.front() || s >= s_.back()) {  // linear beyond the ends (f'' = 0 there)
+    const bool lo = s <= s_.front();
+    const std::size_t k = lo ? 0 : n - 2;
+    const double h = s_[k + 1] - s_[k];
+    // f' at the end knot of the end interval (Numerical Recipes eq. 3.3.5 with A or B = 0).
+    const double slope = (f_[k + 1] - f_[k]) / h + (lo ? -(h / 3) * f2_[k] - (h / 6) * f2_[k + 1]
+                                                      : (h / 6) * f2_[k] + (h / 3) * f2_[k + 1]);
+    if (d1) *d1 = slope;
+    if (d2) *d2 = 0;
+    return lo ? f_.front() + slope * (s - s_.front()) : f_.back() + slope * (s - s_.back());
+  }
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(s_.begin(), s_.end(), s) - s_.begin()) - 1;
+  const double h = s_[i + 1] - s_[i];
+  const double A = (s_[i + 1] - s) / h, B = 1 - A;
+  // Press et al., Numerical Recipes §3.3 (eqs 3.3.3, 3.3.5).
+  if (d1) *d1 = (f_[i + 1] - f_[i]) / h - (3 * A * A - 1) / 6 * h * f2_[i] + (3 * B * B - 1) / 6 * h * f2_[i + 1];
+  if (d2) *d2 = A * f2_[i] + B * f2_[i + 1];
+  return A * f_[i] + B * f_[i + 1] + ((A * A * A - A) * f2_[i] + (B * B * B - B) * f2_[i + 1]) * h * h / 6;
+}
+
+CubicSpline1 smoothing_spline(const std::vector<double>& s, const std::vector<double>& d,
+                              const std::vector<double>& w, double lambda) {
+  const std::size_t n = s.size();
+  if (n < 3 || d.size() != n || w.size() != n || !(lambda >= 0))
+    throw std::invalid_argument("smoothing_spline: needs n >= 3 knots, matching data and weights, lambda >= 0");
+  std::vector<double> h(n - 1);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    h[i] = s[i + 1] - s[i];
+    if (!(h[i] > 0)) throw std::invalid_argument("smoothing_spline: knots must increase strictly");
+  }
+  const std::size_t m = n - 2;  // interior knots: unknowns gamma_1 .. gamma_{n-2}
+  // Q (n × m): column a (knot a+1) has 1/h_a, −1/h_a − 1/h_{a+1}, 1/h_{a+1} in rows a, a+1, a+2.
+  auto Q = [&](std::size_t row, std::size_t a) -> double {
+    if (row == a) return 1 / h[a];
+    if (row == a + 1) return -1 / h[a] - 1 / h[a + 1];
+    if (row == a + 2) return 1 / h[a + 1];
+    return 0;
+  };
+  // Band of the symmetric matrix R + lambda Qᵀ W⁻¹ Q: B[a][k] = entry (a, a+k), k = 0, 1, 2.
+  std::vector<std::array<double, 3>> B(m, {0, 0, 0});
+  for (std::size_t a = 0; a < m; ++a) {
+    B[a][0] = (h[a] + h[a + 1]) / 3;
+    if (a + 1 < m) B[a][1] = h[a + 1] / 6;
+  }
+  for (std::size_t row = 0; row < n; ++row) {
+    const std::size_t a0 = row >= 2 ? row - 2 : 0, a1 = std::min(row, m - 1);
+    for (std::size_t a = a0; a <= a1; ++a)
+      for (std::size_t b = a; b <= a1; ++b) B[a][b - a] += lambda * Q(row, a) * Q(row, b) / w[row];
+  }
+  std::vector<double> rhs(m);
+  for (std::size_t a = 0; a < m; ++a) rhs[a] = Q(a, a) * d[a] + Q(a + 1, a) * d[a + 1] + Q(a + 2, a) * d[a + 2];
+  // Banded Cholesky L Lᵀ (bandwidth 2), then the two triangular solves.
+  std::vector<std::array<double, 3>> L(m, {0, 0, 0});  // L[a][k] = entry (a, a−k)
+  for (std::size_t a = 0; a < m; ++a) {
+    for (std::size_t k = 2; k >= 1; --k) {
+      if (a < k) continue;
+      const std::size_t b = a - k;  // entry (a, b), b < a
+      double v = B[b][k];
+      for (std::size_t j = 1; j <= 2; ++j)  // Σ_c L(a,c) L(b,c), c < b
+        if (b >= j && k + j <= 2) v -= L[a][k + j] * L[b][j];
+      L[a][k] = v / L[b][0];
+    }
+    double v = B[a][0];
+    for (std::size_t k = 1; k <= 2; ++k)
+      if (a >= k) v -= L[a][k] * L[a][k];
+    L[a][0] = std::sqrt(v);
+  }
+  std::vector<double> g(m);
+  for (std::size_t a = 0; a < m; ++a) {
+    double v = rhs[a];
+    for (std::size_t k = 1; k <= 2; ++k)
+      if (a >= k) v -= L[a][k] * g[a - k];
+    g[a] = v / L[a][0];
+  }
+  for (std::size_t a = m; a-- > 0;) {
+    double v = g[a];
+    for (std::size_t k = 1; k <= 2; ++k)
+      if (a + k < m) v -= L[a + k][k] * g[a + k];
+    g[a] = v / L[a][0];
+  }
+  std::vector<double> f(d), f2(n, 0.0);
+  for (std::size_t a = 0; a < m; ++a) f2[a + 1] = g[a];
+  for (std::size_t row = 0; row < n; ++row) {
+    double qg = 0;
+    const std::size_t a0 = row >= 2 ? row - 2 : 0, a1 = std::min(row, m - 1);
+    for (std::size_t a = a0; a <= a1; ++a) qg += Q(row, a) * g[a];
+    f[row] -= lambda * qg / w[row];
+  }
+  return CubicSpline1(s, std::move(f), std::move(f2));
+}
+
+SmoothedProfile smooth_profile(const Profile& p, double L) {
+  const std::size_t n = p.size();
+  std::vector<double> s(n, 0.0), w(n, 0.0);
+  for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + std::hypot(p.y[i] - p.y[i - 1], p.z[i] - p.z[i - 1]);
+  for (std::size_t i = 0; i < n; ++i)
+    w[i] = 0.5 * ((i + 1 < n ? s[i + 1] : s[i]) - (i > 0 ? s[i - 1] : s[i]));
+  const double lambda = std::pow(L / (2 * units::pi), 4);
+  SmoothedProfile sp;
+  sp.L = L;
+  sp.y = smoothing_spline(s, p.y, w, lambda);
+  sp.z = smoothing_spline(s, p.z, w, lambda);
+  double ss = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double e = std::hypot(sp.y.values()[i] - p.y[i], sp.z.values()[i] - p.z[i]);
+    ss += e * e;
+    sp.max_change = std::max(sp.max_change, e);
+  }
+  sp.rms_change = std::sqrt(ss / static_cast<double>(n));
+  return sp;
+}
+
+}  // namespace mh
