@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Field trust table: how often does each method answer `ok` while it is wrong?
 
-    trust_table.py [SPEC.json] [--mhcontact build/mhcontact] [--pairs NAME,...] [--methods M,...]
+    trust_table.py [SPEC.json] [--mhcontact build/mhcontact] [--pairs NAME,...] [--methods M,...] [--only TY:Q,...]
                    [--markdown] [--cases] [--keep DIR] [--jobs N] [--assert-targets]
 
 SPEC (default tests/data/contact/field/trust.json) lists profile pairs with a t_Y x Q sweep and,
@@ -163,7 +163,12 @@ def evaluate(spec, spec_dir, mhcontact, methods, pair_names, workdir, jobs):
     for i, pair in enumerate(pairs):
         base = absolutise(dict(json.loads(json.dumps(pair["case"]))), spec_dir)
         cases = cases_of(pair)
-        ref = read_reference(os.path.join(spec_dir, pair["reference"])) if pair.get("reference") else {}
+        ref = {}
+        if pair.get("reference"):
+            rpath = os.path.join(spec_dir, pair["reference"])
+            if not os.path.exists(rpath):
+                sys.exit("trust_table.py: pair %s: reference table %s not found" % (pair["name"], rpath))
+            ref = read_reference(rpath)
         need_fine = [k for k in cases if k not in ref]
         prepared.append((i, pair, base, cases, ref, need_fine))
         for m in methods:
@@ -274,6 +279,7 @@ def main(argv=None):
     ap.add_argument("--mhcontact", default=os.path.join(ROOT, "build", "mhcontact"))
     ap.add_argument("--pairs", default="", help="comma-separated pair names (default: all)")
     ap.add_argument("--methods", default=",".join(ALL_METHODS))
+    ap.add_argument("--only", default="", help="run only these cases of each pair: TY:Q,... (mm:kN), e.g. 2:60,8:120")
     ap.add_argument("--markdown", action="store_true", help="print Markdown tables")
     ap.add_argument("--cases", action="store_true", help="list every silent case")
     ap.add_argument("--keep", help="keep the runs in this directory (default: a temporary one, removed)")
@@ -293,6 +299,14 @@ def main(argv=None):
         spec = json.load(f)
     spec_dir = os.path.dirname(os.path.abspath(a.spec))
     names = [n.strip() for n in a.pairs.split(",") if n.strip()]
+    if a.only:
+        try:
+            only = [[float(v) for v in c.split(":")] for c in a.only.split(",") if c.strip()]
+            assert all(len(c) == 2 for c in only)
+        except (ValueError, AssertionError):
+            ap.error("--only wants TY:Q,... (e.g. 2:60,8:120)")
+        for p in spec["pairs"]:
+            p["only"] = only
     if a.keep:
         os.makedirs(a.keep, exist_ok=True)
         work = a.keep
