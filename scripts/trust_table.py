@@ -2,7 +2,7 @@
 """Field trust table: how often does each method answer `ok` while it is wrong?
 
     trust_table.py [SPEC.json] [--mhcontact build/mhcontact] [--pairs NAME,...] [--methods M,...] [--only TY:Q,...]
-                   [--markdown] [--cases] [--keep DIR] [--jobs N] [--assert-targets]
+                   [--markdown] [--cases] [--by-pair] [--keep DIR] [--jobs N] [--assert-targets]
 
 SPEC (default tests/data/contact/field/trust.json) lists profile pairs with a t_Y x Q sweep and,
 per pair, a reference table (paths relative to the spec file):
@@ -34,7 +34,7 @@ whose area by more than the area tolerance (15 %). "beyond tol" counts every ans
 `strips` and `auto`, and for `multi-hertzian` every case beyond tolerance non-`ok` (i.e. zero
 silent cases there as well).
 
---cases lists every silent case; --markdown prints the table in Markdown; --assert-targets exits 1
+--cases lists every silent case; --by-pair prints the counts per pair; --markdown prints the table in Markdown; --assert-targets exits 1
 when a target is missed (silent > 0 for strips, auto or multi-hertzian), 0 otherwise.
 Python 3 standard library only.
 """
@@ -179,11 +179,16 @@ def evaluate(spec, spec_dir, mhcontact, methods, pair_names, workdir, jobs):
             c["half_space"] = dict(c.get("half_space", {}), dx_mm=fine, ds_mm=fine)
             jobs_list.append(((i, "fine"), c, need_fine, "p%d_fine" % i))
     results = {}
+
     with cf.ThreadPoolExecutor(max_workers=max(1, jobs)) as ex:
         futs = {ex.submit(run_case_file, mhcontact, c, cs, workdir, n): k for k, c, cs, n in jobs_list}
         for fu in cf.as_completed(futs):
             results[futs[fu]] = fu.result()
-    stats = {m: {"n": 0, "status": {}, "silent": 0, "beyond": 0, "noref": 0} for m in methods}
+
+    def fresh():
+        return {m: {"n": 0, "status": {}, "silent": 0, "beyond": 0, "noref": 0} for m in methods}
+    stats = fresh()
+    by_pair = {}
     silent_list = []
     refsrc = {"CONTACT": 0, "half-space fine": 0, "none": 0}
     for i, pair, base, cases, ref, need_fine in prepared:
@@ -199,28 +204,29 @@ def evaluate(spec, spec_dir, mhcontact, methods, pair_names, workdir, jobs):
                 else:
                     refs[k] = (None, "none")
             refsrc[refs[k][1]] += 1
+        by_pair[pair["name"]] = fresh()
         for m in methods:
             rows = results[(i, m)]
-            s = stats[m]
             for k in cases:
                 row = rows.get(k)
                 if row is None:
                     st, beyond, dp, da = "missing", None, math.nan, math.nan
                 else:
                     st, beyond, dp, da = classify(row, refs[k][0], tol_p, tol_a)
-                s["n"] += 1
-                s["status"][st] = s["status"].get(st, 0) + 1
-                if refs[k][0] is None:
-                    s["noref"] += 1
-                if beyond:
-                    s["beyond"] += 1
-                    if st == "ok":
-                        s["silent"] += 1
-                        silent_list.append(dict(pair=pair["name"], method=m, tY=k[0], Q=k[1], dp=dp, da=da,
-                                                pmax=fnum(row["pmax_MPa"]), ref_pmax=refs[k][0][0],
-                                                area=fnum(row["area_mm2"]), ref_area=refs[k][0][1],
-                                                ref=refs[k][1]))
-    return dict(stats=stats, silent=silent_list, refsrc=refsrc, tol_p=tol_p, tol_a=tol_a,
+                for s in (stats[m], by_pair[pair["name"]][m]):
+                    s["n"] += 1
+                    s["status"][st] = s["status"].get(st, 0) + 1
+                    if refs[k][0] is None:
+                        s["noref"] += 1
+                    if beyond:
+                        s["beyond"] += 1
+                        if st == "ok":
+                            s["silent"] += 1
+                if beyond and st == "ok":
+                    silent_list.append(dict(pair=pair["name"], method=m, tY=k[0], Q=k[1], dp=dp, da=da,
+                                            pmax=fnum(row["pmax_MPa"]), ref_pmax=refs[k][0][0],
+                                            area=fnum(row["area_mm2"]), ref_area=refs[k][0][1], ref=refs[k][1]))
+    return dict(stats=stats, by_pair=by_pair, silent=silent_list, refsrc=refsrc, tol_p=tol_p, tol_a=tol_a,
                 pairs=[p["name"] for p in pairs], n_cases=sum(len(p[3]) for p in prepared))
 
 
@@ -250,8 +256,29 @@ def print_table(ev, methods, markdown, out=sys.stdout):
             out.write("  ".join(str(x).ljust(w[j]) for j, x in enumerate(r)) + "\n")
     out.write("\n%d pairs (%s), %d cases; reference: CONTACT %d, half-space fine %d, none %d; "
               "SILENT: ok and |dpmax| > %g %% or |darea| > %g %%\n"
-              % (len(ev["pairs"]), ", ".join(ev["pairs"]), ev["n_cases"], ev["refsrc"]["CONTACT"] // 1,
+              % (len(ev["pairs"]), ", ".join(ev["pairs"]), ev["n_cases"], ev["refsrc"]["CONTACT"],
                  ev["refsrc"]["half-space fine"], ev["refsrc"]["none"], 100 * ev["tol_p"], 100 * ev["tol_a"]))
+
+
+def print_by_pair(ev, methods, markdown, out=sys.stdout):
+    """One line per pair and method: cases, ok, other statuses, beyond tolerance, silent."""
+    head = ["pair", "method", "cases", "ok", "other statuses", "beyond tol", "SILENT"]
+    rows = []
+    for name in ev["pairs"]:
+        for m in methods:
+            s = ev["by_pair"][name][m]
+            other = ", ".join("%s %d" % (k, v) for k, v in sorted(s["status"].items()) if k != "ok") or "-"
+            rows.append([name, m, str(s["n"]), str(s["status"].get("ok", 0)), other, str(s["beyond"]),
+                         str(s["silent"])])
+    out.write("\nper pair:\n")
+    if markdown:
+        out.write("| " + " | ".join(head) + " |\n|" + "---|" * len(head) + "\n")
+        for r in rows:
+            out.write("| " + " | ".join(r) + " |\n")
+    else:
+        w = [max(len(x) for x in col) for col in zip(head, *rows)]
+        for r in [head] + rows:
+            out.write("  ".join(x.ljust(w[j]) for j, x in enumerate(r)) + "\n")
 
 
 def print_cases(ev, markdown, out=sys.stdout):
@@ -282,6 +309,7 @@ def main(argv=None):
     ap.add_argument("--only", default="", help="run only these cases of each pair: TY:Q,... (mm:kN), e.g. 2:60,8:120")
     ap.add_argument("--markdown", action="store_true", help="print Markdown tables")
     ap.add_argument("--cases", action="store_true", help="list every silent case")
+    ap.add_argument("--by-pair", action="store_true", help="also print the counts per pair")
     ap.add_argument("--keep", help="keep the runs in this directory (default: a temporary one, removed)")
     ap.add_argument("--jobs", type=int, default=2, help="mhcontact runs at once (default 2)")
     ap.add_argument("--json", help="also write the counts and silent cases to this JSON file")
@@ -318,11 +346,13 @@ def main(argv=None):
         if not a.keep:
             shutil.rmtree(work, ignore_errors=True)
     print_table(ev, methods, a.markdown)
+    if a.by_pair:
+        print_by_pair(ev, methods, a.markdown)
     if a.cases:
         print_cases(ev, a.markdown)
     if a.json:
         with open(a.json, "w") as f:
-            json.dump(dict(stats=ev["stats"], silent=ev["silent"], refsrc=ev["refsrc"], pairs=ev["pairs"]), f,
+            json.dump(dict(stats=ev["stats"], by_pair=ev["by_pair"], silent=ev["silent"], refsrc=ev["refsrc"], pairs=ev["pairs"]), f,
                       indent=1)
     if a.assert_targets:
         bad = [m for m in methods if m in TARGET_METHODS and ev["stats"][m]["silent"] > 0]
