@@ -6,8 +6,8 @@
 Runs `mhcontact geometry` on the pair's case and writes, from its profiles.csv (the profiles in
 mhcontact's canonical frame, after the reader's clean-up, the rail canted by the case's
 inclination, the wheel's y = 0 at its taping line), OUTDIR/rail.prr and OUTDIR/wheel.prw
-(SIMPACK, z down, no transformations) and OUTDIR/sweep.json, a run_sweep.py spec (see
-/work/shared/tools/contact/README.md) with FBPOS = the case's flange_back_position_mm (the wheel's
+(SIMPACK, z down, no transformations) and OUTDIR/sweep.json, a spec for run_sweep.py of the
+CONTACT tools (README.md in this folder) with FBPOS = the case's flange_back_position_mm (the wheel's
 flange back in this frame), CANT = 0 (the rail is canted in the file), GAUGHT and GAUGWD from the
 case, no YTAPE, dx = ds = 0.2 mm, NPOT_MAX 200000. The geometry.json of the run is kept in OUTDIR.
 """
