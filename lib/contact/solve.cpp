@@ -62,7 +62,7 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
   // the strip row stays, with its status and warnings.
   if (sr.status == CaseStatus::Ok && validity_failures(sr.warnings).empty()) return sr;
   const std::string why = sr.status == CaseStatus::Ok ? "strips failed " + validity_failures(sr.warnings).front()
-                                                      : "strips " + std::string(to_string(sr.status));
+                                                      : "strips not converged";
   CaseResult hr = solve_half_space(G, mat, tY, Q, opt.half_space, start);
   if (hr.status != CaseStatus::Ok || !validity_failures(hr.warnings).empty()) {
     sr.warnings.push_back("auto:half-space:rejected:" + std::string(to_string(hr.status)) +

@@ -69,7 +69,7 @@ HertzValidity hertz_validity(const ContactGeometry& G, const CandidateGeom& g, d
 ///   kink_ratio = E* Δθ / (2π p0)     (E* = E_star()/2, Johnson's combined modulus)
 /// valid when kink_ratio ≤ HertzValidityOptions::max_gap_mean_error (0.1: the corner's pressure
 /// scale within 10 % of p0, the budget of the mean-gap limit). Measured: Manchester pair ≤ 0.052
-/// (t_Y −6 … 10 mm); worn measured flanges 0.19 … 10^4 (docs/methods.md, auto).
+/// (t_Y −6 … 10 mm); worn measured flanges 0.38 … 10^4 (docs/methods.md, auto).
 struct GapKink {
   double dtheta = 0;      ///< [rad] the largest slope jump of the gap across the patch
   double kink_ratio = 0;  ///< [-] E* Δθ / (2π p0)
