@@ -37,6 +37,10 @@ const std::vector<WarningClassInfo>& warning_classes() {
       {"flange_climb", false, "the main contact has passed the wheel flange's steepest point (docs/method.md §3.7)"},
       {"pressure_spike", true, "a half-space patch whose peak stands on one element (docs/half_space.md)"},
       {"strip_outlier", true, "a strip whose peak stands far above its neighbours' (docs/strips.md)"},
+      // The physical checks of a grid result (contact/grid/grid_checks.hpp).
+      {"force_balance", true, "a grid result whose patch forces do not balance Q (grid_checks.hpp)"},
+      {"complementarity", true, "a grid result that violates 0 <= p <= p_lim or the deformed-gap conditions (grid_checks.hpp)"},
+      {"contact_hole", true, "a grid patch with unloaded elements enclosed by loaded ones where the bodies overlap (grid_checks.hpp)"},
       {"auto", false, "which method auto handed the case to, and why (informational)"},
   };
   return k;

@@ -153,6 +153,9 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     // A failed row (no solution: out_of_range, no_contact, invalid_pair) leaves every result
     // field empty in CSV and null in JSON (docs/outputs.md); n_contacts stays 0.
     auto rnum = [&](std::string& o, double v) { if (!failed) num(o, v); };
+    // A grid method's not_converged row has no peak pressure or area (NaN: grid_checks.hpp,
+    // withhold_unconverged_pressures): empty as well, never "nan".
+    auto pnum = [&](std::string& o, double v) { if (!failed && std::isfinite(v)) num(o, v); };
     s += ','; rnum(s, r.dz * units::per_mm);
     s += ','; rnum(s, r.approach * units::per_mm);
     s += ','; if (!failed) append_number(s, static_cast<long long>(r.iterations));
@@ -160,8 +163,8 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; append_number(s, static_cast<long long>(r.n_contacts));
     s += ','; rnum(s, r.Fz / units::kN);
     s += ','; rnum(s, r.Fy / units::kN);
-    s += ','; rnum(s, r.pmax / units::MPa);
-    s += ','; rnum(s, r.area * units::per_mm2);
+    s += ','; pnum(s, r.pmax / units::MPa);
+    s += ','; pnum(s, r.area * units::per_mm2);
     s += ','; if (!failed) num_repeated(s, gamma_main);
     s += ','; if (!failed) num_repeated(s, r_roll_main);
     s += ','; if (!failed) s += any_plastic ? '1' : '0';

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/numfmt.hpp"
+#include "geometry/gap.hpp"
 
 namespace mh {
 
@@ -60,6 +62,29 @@ HertzValidity hertz_validity(const ContactGeometry& G, const CandidateGeom& g, d
     mean_err = S0 > 0 ? 0.5 * std::fabs(e[0] + e[1]) : INFINITY;
   }
   return hertz_validity(b, g.k_rxx, g.k_wxx, err, mean_err, opt);
+}
+
+std::string GapKink::describe(const HertzValidityOptions& opt) const {
+  if (valid) return "";
+  return "gap_kink=" + format_number(std::round(kink_ratio * 1e3) / 1e3) + ">" + format_number(opt.max_gap_mean_error);
+}
+
+GapKink gap_kink(const WheelRailGap& gap, const CandidateGeom& g, double B, double b, double p0, double E_pair,
+                 double dz, const HertzValidityOptions& opt) {
+  GapKink k;
+  if (!(b > 0) || !(p0 > 0)) return k;
+  const PatchPlane P = plane_at(gap, g.y_r);
+  const double h = b / 40;
+  const int n = 160;  // s = −b … b in steps of h/2
+  std::vector<double> G(static_cast<std::size_t>(n + 5));
+  for (int i = 0; i < n + 5; ++i) G[static_cast<std::size_t>(i)] = normal_gap(gap, P, 0, -b - h + 0.5 * h * i, dz);
+  for (int i = 2; i <= n + 2; ++i) {  // s_i = −b + (i − 2) h/2, neighbours two samples away
+    const double D = G[static_cast<std::size_t>(i + 2)] - 2 * G[static_cast<std::size_t>(i)] + G[static_cast<std::size_t>(i - 2)];
+    k.dtheta = std::max(k.dtheta, std::fabs(D - 2 * B * h * h) / h);
+  }
+  k.kink_ratio = E_pair * k.dtheta / (2 * M_PI * p0);
+  k.valid = k.kink_ratio <= opt.max_gap_mean_error;  // NaN fails
+  return k;
 }
 
 }  // namespace mh

@@ -52,4 +52,36 @@ HertzValidity hertz_validity(double b, double k_rxx, double k_wxx, double gap_er
 HertzValidity hertz_validity(const ContactGeometry& G, const CandidateGeom& g, double b,
                              const HertzValidityOptions& opt = {});
 
+/// A corner of the gap inside the patch (used by `auto`, contact/solve.cpp). hertz_validity()
+/// measures the profiles' sampled curvature (ContactGeometry::rail_k, wheel_k) at the patch
+/// edges; the grid methods solve on the 3-D normal gap of the profiles themselves
+/// (geometry/gap.hpp). A corner of that gap, a jump Δθ of its slope across the patch (a kink
+/// of a measured profile between its points, a step, a normal ray changing branch on a steep
+/// flange), is invisible in the integrated edge gaps but makes the elastic pressure singular:
+/// near a corner p ≈ (E* Δθ / 2π) cosh⁻¹(c/|s − s_k|) (Johnson, Contact Mechanics §5.8, the
+/// wedge: Δθ = 2 cot α), a logarithmic peak of scale E*Δθ/2π whatever the load. The Hertz peak
+/// p0 is then not the peak, and a grid method's peak grows as its elements shrink.
+/// The test samples the normal gap across the patch, in the patch plane at the ellipse's contact
+/// point, at x = 0, s ∈ [−b, b] in steps of h/2 with h = b/40, wheel at the vertical approach dz:
+///   Δθ = max over s of |g(s+h) − 2 g(s) + g(s−h) − 2 B h²| / h
+/// (a corner inside [s−h, s+h] gives its slope jump; a smooth gap, curvature varying or not,
+/// gives O(h) → 0), and
+///   kink_ratio = E* Δθ / (2π p0)     (E* = E_star()/2, Johnson's combined modulus)
+/// valid when kink_ratio ≤ HertzValidityOptions::max_gap_mean_error (0.1: the corner's pressure
+/// scale within 10 % of p0, the budget of the mean-gap limit). Measured: Manchester pair ≤ 0.052
+/// (t_Y −6 … 10 mm); worn measured flanges 0.38 … 10^4 (docs/methods.md, auto).
+struct GapKink {
+  double dtheta = 0;      ///< [rad] the largest slope jump of the gap across the patch
+  double kink_ratio = 0;  ///< [-] E* Δθ / (2π p0)
+  bool valid = true;
+  /// "gap_kink=0.71>0.1", empty when valid.
+  std::string describe(const HertzValidityOptions& opt) const;
+};
+class WheelRailGap;
+/// The test above for an ellipse at candidate g with lateral curvature B [1/m] (eq. 1),
+/// semi-axis b [m] and peak p0 [Pa], combined modulus E_pair [Pa] (Johnson's E*), the wheel
+/// lowered by dz [m] (the case's vertical approach).
+GapKink gap_kink(const WheelRailGap& gap, const CandidateGeom& g, double B, double b, double p0, double E_pair,
+                 double dz, const HertzValidityOptions& opt = {});
+
 }  // namespace mh

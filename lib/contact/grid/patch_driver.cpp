@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/grid/grid_checks.hpp"
 #include "contact/multi_hertz/multi_hertz.hpp"
 #include "core/numfmt.hpp"
 #include "core/roots.hpp"
@@ -45,6 +46,7 @@ void finish_grid_case(const ContactGeometry& G, double tY, const GridStart& gs, 
       if (G.off_profile(tY, P.y_r + P.s_lo * c) || G.off_profile(tY, P.y_r + P.s_hi * c))
         r.warnings.push_back("off_profile:patch=" + std::to_string(P.patch));
     }
+  withhold_unconverged_pressures(r);
 }
 
 double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim) {

@@ -95,7 +95,8 @@ bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, d
 
 /// What every grid method does after solving a case: the start's flange_climb warning, then
 /// `off_profile:patch=K` for each patch whose contact reaches the end of either profile (method.md
-/// §3.7: it stands on extrapolated geometry).
+/// §3.7: it stands on extrapolated geometry); a not_converged result then loses its pressures
+/// (withhold_unconverged_pressures, grid_checks.hpp).
 void finish_grid_case(const ContactGeometry& G, double tY, const GridStart& gs, CaseResult& r);
 
 /// [m] the vertical approach at which p_lim [Pa] times the horizontal projection of the rigid

@@ -1,13 +1,12 @@
 #include "contact/half_space/half_space_method.hpp"
 
-#include "contact/grid/pressure_spike.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 
 #include "contact/half_space/influence.hpp"
+#include "contact/grid/grid_checks.hpp"
 #include "contact/grid/patch_driver.hpp"
 #include "contact/multi_hertz/multi_hertz.hpp"
 #include "core/numfmt.hpp"
@@ -90,6 +89,32 @@ class HalfSpacePatch : public PatchSolver {
     return false;
   }
 
+  /// The solution as the physical checks see it (grid_checks.hpp): pressures, the rigid overlap
+  /// δ − g per element, and the largest violation of the contact condition by the deformed gap
+  /// h = g + C p − δ (δ of the last solve).
+  PatchCheckInput check_input() const {
+    PatchCheckInput c;
+    c.nx = nx; c.ns = ns; c.p = p; c.p_lim = p_lim_;
+    c.spike_check = c.hole_check = true;
+    c.y_ref = P.y_ref; c.gamma = P.gamma; c.s0 = s0; c.ds = ds;
+    const double delta = last.delta;
+    c.overlap.resize(h.size());
+    std::vector<double> u(h.size());
+    C->apply(p.data(), u.data());
+    c.gap_violation = 0;
+    for (std::size_t e = 0; e < h.size(); ++e) {
+      c.overlap[e] = delta - h[e];
+      c.approach = std::max(c.approach, c.overlap[e]);
+      const double he = h[e] + u[e] - delta;
+      double v = 0;
+      if (p[e] <= 0) v = std::max(0.0, -he);                                 // free: h ≥ 0
+      else if (std::isfinite(p_lim_) && p[e] >= p_lim_) v = std::max(0.0, he);  // capped: h ≤ 0
+      else v = std::fabs(he);                                                // in contact: h = 0
+      c.gap_violation = std::max(c.gap_violation, v);
+    }
+    return c;
+  }
+
   PatchPlane P;
   double dx, ds;
   int nx = 0, ns = 0;
@@ -151,6 +176,7 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
   r.approach = dz;
   r.iterations = outer;
   int index = 0;
+  std::vector<PatchCheckInput> checks;  // of the reported patches, for the physical checks
   for (const auto& solver : D.solvers) {
     const HalfSpacePatch& k = static_cast<const HalfSpacePatch&>(*solver);
     PatchResult pr;
@@ -186,14 +212,7 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
     }
     pr.approach = dz * std::cos(k.P.gamma) - k.h_min;
     if (pr.N <= 0) continue;  // a potential patch that carries nothing is not reported
-    // A peak on a single element is a property of the grid (a corner in the gap), not of the
-    // contact: said in a warning (contact/grid/pressure_spike.hpp).
-    const PressureSpike spike = find_pressure_spike(k.p, k.nx, k.ns);
-    if (spike.found)
-      r.warnings.push_back("pressure_spike:patch=" + std::to_string(r.patches.size() + 1) +
-                           ":y_rail_mm=" + format_number(std::round((k.P.y_ref + (k.s0 + spike.j * opt.ds) * std::cos(k.P.gamma)) * 1e6) / 1e3) +
-                           ":p_MPa=" + format_number(std::round(spike.p / 1e3) / 1e3) +
-                           ":neighbours_MPa=" + format_number(std::round(spike.neighbours / 1e3) / 1e3));
+    checks.push_back(k.check_input());
     if (opt.keep_pressure) {
       pr.nx = k.nx; pr.ns = k.ns; pr.dx = opt.dx; pr.ds = opt.ds; pr.x0 = k.x0; pr.s0 = k.s0;
       pr.p = k.p;
@@ -212,6 +231,7 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
     r.status = CaseStatus::NotConverged;
     r.message = "force balance residual " + format_number(r.residual);
   }
+  check_grid_result(checks, Q, r);
   return r;
 }
 

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "contact/multi_hertz/multi_hertz.hpp"
+#include "contact/grid/grid_checks.hpp"
 #include "contact/grid/patch_driver.hpp"
 #include "core/numfmt.hpp"
 #include "geometry/gap.hpp"
@@ -86,6 +87,27 @@ class StripPatch : public PatchSolver {
     return false;
   }
 
+  /// The solution as the physical checks see it (grid_checks.hpp): one element per strip, its
+  /// peak pressure, the rigid overlap δ − g(s) of each strip, and the end-gap error.
+  PatchCheckInput check_input(const StripOptions& o) const {
+    PatchCheckInput c;
+    c.nx = 1;
+    c.ns = static_cast<int>(geo.s.size());
+    c.p.assign(geo.s.size(), 0.0);
+    c.overlap.resize(geo.s.size());
+    c.p_lim = p_lim_;
+    for (std::size_t j = 0; j < geo.s.size(); ++j) {
+      c.overlap[j] = last.delta - geo.g[j];
+      c.approach = std::max(c.approach, c.overlap[j]);
+    }
+    for (const StripState& st : last.strips) c.p[static_cast<std::size_t>(st.index)] = std::min(st.q, p_lim_);
+    c.end_gap_error = last.end_gap_error;
+    c.end_gap_tol = o.end_gap_tol;
+    c.refined = last.refined;
+    c.y_ref = P.y_ref; c.gamma = P.gamma; c.s0 = geo.s.empty() ? 0 : geo.s.front(); c.ds = geo.ds;
+    return c;
+  }
+
   PatchPlane P;
   StripGeometry geo;
   StripResult last;
@@ -124,6 +146,7 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
   r.message = D.message;
   r.approach = D.dz;
   int evaluations = 0;
+  std::vector<PatchCheckInput> checks;  // of the reported patches, for the physical checks
   for (const auto& solver : D.solvers) {
     const StripPatch& k = static_cast<const StripPatch&>(*solver);
     evaluations += k.evaluations;
@@ -179,6 +202,7 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
                            ":q_MPa=" + format_number(std::round(std::min(w.q, p_lim) / 1e3) / 1e3));
     }
     r.patches.push_back(std::move(pr));
+    checks.push_back(k.check_input(opt.strips));
   }
   int index = 0;
   for (auto& pr : r.patches) pr.patch = ++index;
@@ -189,6 +213,7 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
     r.status = CaseStatus::NotConverged;
     r.message = "force balance residual " + format_number(r.residual);
   }
+  check_grid_result(checks, Q, r);
   return r;
 }
 

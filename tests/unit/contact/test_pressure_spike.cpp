@@ -61,14 +61,21 @@ TEST_CASE("pressure spike: the half-space case with a single-element peak warns"
   const mh::PairGeometry pg = mh::build_pair_geometry(cf);
   // Unsmoothed (smoothing_mm 0): the spike comes from the measured scatter of the gauge corner;
   // smoothed for contact (the default 5 mm) the same row has a 3.4 GPa peak and no spike.
-  // The flange on a corner of the measured gauge face: the load ends on one or two elements and
-  // the placement does not settle; whatever the status, the row says why its peak is meaningless.
+  // The flange on a corner of the measured gauge face: the load ends on one or two elements
+  // (70.6 GPa with the placement settled, 1.2e6 MPa when it does not settle). Whatever the
+  // status, the row does not offer that peak as an answer: settled, it is outside validity with
+  // pressure_spike; not settled, it keeps no pressures (grid_checks.hpp).
   const mh::CaseResult spike = mh::solve_half_space(pg.geo, cf.material, 11.5e-3, 50e3, cf.half_space);
-  // The singular element: tens of GPa or more (70.6 GPa with its placement settled, 1.2e6 MPa
-  // when it does not settle), where a steel contact stays below about 10 GPa.
-  CHECK(spike.pmax > 20e9);
-  REQUIRE(spike.warnings.size() == 1);
-  CHECK(spike.warnings[0].rfind("pressure_spike:patch=1:", 0) == 0);
+  if (spike.status == mh::CaseStatus::NotConverged) {
+    CHECK(std::isnan(spike.pmax));
+    CHECK(spike.patches.empty());
+  } else {
+    CHECK(spike.pmax > 20e9);
+    REQUIRE(!spike.warnings.empty());
+    bool found = false;
+    for (const std::string& w : spike.warnings) found = found || w.rfind("pressure_spike:patch=1:", 0) == 0;
+    CHECK(found);
+  }
   const mh::CaseResult smooth = mh::solve_half_space(pg.geo, cf.material, 2e-3, 50e3, cf.half_space);
   REQUIRE(smooth.status == mh::CaseStatus::Ok);
   CHECK(smooth.warnings.empty());

@@ -73,9 +73,10 @@ TEST_CASE("a contact at the cut end of a wheel profile is flagged off_profile", 
     g.method = m;
     const CaseResult rc = solve_contact(Gc, Material{}, -10e-3, 50e3, g);
     // The patch runs into the cut edge: the grid solvers report not_converged ("edge reached"),
-    // and the row now also says why the geometry there cannot be trusted.
+    // and the row now also says why the geometry there cannot be trusted (a not_converged grid
+    // row keeps no patches: grid_checks.hpp, withhold_unconverged_pressures).
     INFO(rc.message);
-    REQUIRE(rc.patches.size() == 1);
+    REQUIRE(rc.patches.size() == (rc.status == CaseStatus::NotConverged ? 0u : 1u));
     REQUIRE(warned(rc, "off_profile:patch=1"));
     REQUIRE_FALSE(warned(solve_contact(Gf, Material{}, -10e-3, 50e3, g), "off_profile"));
     REQUIRE_FALSE(warned(solve_contact(Gf, Material{}, 0.0, 50e3, g), "off_profile"));

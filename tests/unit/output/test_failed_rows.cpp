@@ -101,3 +101,39 @@ TEST_CASE("not_converged rows keep their last iterate", "[output]") {
   CHECK(j.at("residual").get<double>() == 0.0425);
   CHECK(j.at("Fz_kN").get<double>() == 52.125);
 }
+
+TEST_CASE("not_converged grid rows: forces of the last iterate, no peak pressure or area", "[output]") {
+  // docs/outputs.md "Failed rows": a grid method's not_converged row keeps approach, forces and
+  // residual, its pmax_MPa and area_mm2 are empty (null), never the iterate's (0.2-2.9 million
+  // MPa on a worn measured flange) nor "nan". Break guarded: write pmax with rnum().
+  CasePoint cp;
+  cp.tY_mm = 5;
+  cp.Q_kN = 50;
+  CaseResult r;
+  r.status = CaseStatus::NotConverged;
+  r.method = Method::HalfSpace;
+  r.message = "the contact patches did not settle";
+  r.approach = 1e-4;
+  r.residual = 0.01;
+  r.Fz = 50.5e3;
+  r.pmax = NAN;  // withhold_unconverged_pressures (grid_checks.hpp)
+  r.area = NAN;
+  r.n_contacts = 1;
+  Formatted f;
+  format_case(1, cp, r, false, true, true, f);
+  const auto header = split(cases_csv_header()), row = split(f.cases);
+  auto cell = [&](const std::string& name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    REQUIRE(it != header.end());
+    return row[static_cast<std::size_t>(it - header.begin())];
+  };
+  CHECK(cell("status") == "not_converged");
+  CHECK(cell("approach_mm") == "0.1");
+  CHECK(cell("Fz_kN") == "50.5");
+  CHECK(cell("pmax_MPa").empty());
+  CHECK(cell("area_mm2").empty());
+  const auto j = nlohmann::json::parse(f.json);
+  CHECK(j.at("pmax_MPa").is_null());
+  CHECK(j.at("area_mm2").is_null());
+  CHECK(j.at("Fz_kN").get<double>() == 50.5);
+}

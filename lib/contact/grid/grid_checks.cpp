@@ -1,0 +1,97 @@
+#include "contact/grid/grid_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "contact/grid/pressure_spike.hpp"
+#include "core/numfmt.hpp"
+
+namespace mh {
+
+namespace {
+
+std::string r3(double v) { return format_number(std::round(v * 1e3) / 1e3); }  // 3 decimals
+double rail_y(const PatchCheckInput& in, int j) { return in.y_ref + (in.s0 + j * in.ds) * std::cos(in.gamma); }
+
+}  // namespace
+
+ContactHole find_contact_hole(const PatchCheckInput& in) {
+  ContactHole h;
+  const double tol = kGapRtol * in.approach;
+  auto P = [&](int i, int j) { return in.p[static_cast<std::size_t>(i + in.nx * j)]; };
+  // For each element, whether a loaded element lies before / after it along its row and column:
+  // prefix and suffix scans, O(nx ns).
+  const std::size_t n = in.p.size();
+  std::vector<char> left(n, 0), right(n, 0), below(n, 0), above(n, 0);
+  for (int j = 0; j < in.ns; ++j) {
+    char seen = 0;
+    for (int i = 0; i < in.nx; ++i) { left[i + in.nx * j] = seen; seen = seen || P(i, j) > 0; }
+    seen = 0;
+    for (int i = in.nx - 1; i >= 0; --i) { right[i + in.nx * j] = seen; seen = seen || P(i, j) > 0; }
+  }
+  for (int i = 0; i < in.nx; ++i) {
+    char seen = 0;
+    for (int j = 0; j < in.ns; ++j) { below[i + in.nx * j] = seen; seen = seen || P(i, j) > 0; }
+    seen = 0;
+    for (int j = in.ns - 1; j >= 0; --j) { above[i + in.nx * j] = seen; seen = seen || P(i, j) > 0; }
+  }
+  for (int j = 0; j < in.ns; ++j)
+    for (int i = 0; i < in.nx; ++i) {
+      const std::size_t e = static_cast<std::size_t>(i + in.nx * j);
+      if (P(i, j) > 0 || !(in.overlap[e] > tol)) continue;
+      if (!below[e] || !above[e] || !left[e] || !right[e]) continue;
+      ++h.elements;
+      if (in.overlap[e] > h.overlap) { h.overlap = in.overlap[e]; h.i = i; h.j = j; }
+    }
+  return h;
+}
+
+void check_grid_result(const std::vector<PatchCheckInput>& in, double Q, CaseResult& r) {
+  if (r.status != CaseStatus::Ok) return;
+  // Force balance (eq. 10), from the patches as reported.
+  double Fz = 0;
+  for (const PatchResult& P : r.patches) Fz += P.N * std::cos(P.gamma);
+  const double res = (Fz - Q) / Q;
+  if (!(std::fabs(res) <= kForceBalanceRtol))
+    r.warnings.push_back("force_balance:residual=" + format_number(res) + ">" + format_number(kForceBalanceRtol));
+  for (std::size_t k = 0; k < in.size() && k < r.patches.size(); ++k) {
+    const PatchCheckInput& c = in[k];
+    const std::string patch = "patch=" + std::to_string(k + 1);
+    // Complementarity: 0 ≤ p ≤ p_lim (a cap reached to round-off), the deformed gap's conditions.
+    double p_lo = 0, p_hi = 0;
+    for (double v : c.p) { p_lo = std::min(p_lo, v); p_hi = std::max(p_hi, v); }
+    if (p_lo < 0) r.warnings.push_back("complementarity:" + patch + ":p_min_MPa=" + r3(p_lo / 1e6) + "<0");
+    if (std::isfinite(c.p_lim) && p_hi > c.p_lim * (1 + 1e-9))
+      r.warnings.push_back("complementarity:" + patch + ":p_max_MPa=" + r3(p_hi / 1e6) + ">p_lim");
+    const double gap_tol = kGapRtol * c.approach;
+    if (std::isfinite(c.gap_violation) && c.gap_violation > gap_tol)
+      r.warnings.push_back("complementarity:" + patch + ":gap_um=" + r3(c.gap_violation * 1e6) + ">" +
+                           r3(gap_tol * 1e6));
+    if (std::isfinite(c.end_gap_error) && !c.refined && c.end_gap_error > c.end_gap_tol)
+      r.warnings.push_back("complementarity:" + patch + ":end_gap_error=" + r3(c.end_gap_error) + ">" +
+                           format_number(c.end_gap_tol));
+    // An isolated peak (half-space).
+    if (c.spike_check) {
+      const PressureSpike spike = find_pressure_spike(c.p, c.nx, c.ns);
+      if (spike.found)
+        r.warnings.push_back("pressure_spike:" + patch + ":y_rail_mm=" + r3(rail_y(c, spike.j) * 1e3) +
+                             ":p_MPa=" + r3(spike.p / 1e6) + ":neighbours_MPa=" + r3(spike.neighbours / 1e6));
+    }
+    // A hole where the bodies overlap.
+    const ContactHole hole = c.hole_check ? find_contact_hole(c) : ContactHole();
+    if (hole.elements > 0)
+      r.warnings.push_back("contact_hole:" + patch + ":elements=" + std::to_string(hole.elements) + ":y_rail_mm=" +
+                           r3(rail_y(c, hole.j) * 1e3) + ":overlap_um=" + r3(hole.overlap * 1e6) + ">" +
+                           r3(gap_tol * 1e6));
+  }
+}
+
+void withhold_unconverged_pressures(CaseResult& r) {
+  if (r.status != CaseStatus::NotConverged) return;
+  r.pmax = NAN;
+  r.area = NAN;
+  r.patches.clear();
+}
+
+}  // namespace mh

@@ -1,0 +1,88 @@
+#pragma once
+// The physical checks of a solved grid result (half-space §8 and strips §9 of docs/method.md),
+// in one place for both grid methods (docs/status.md, "Physical checks of a grid result"). A grid
+// solver's `ok` says its iteration stopped; these say whether what it stopped on is a contact
+// solution that can be trusted. Each failed check adds a warning of a validity class, so the row
+// becomes `outside_validity` (judge_validity, case_result.hpp):
+//
+//   force_balance   Σ_k N_k cos γ_k, re-summed from the reported patches, differs from Q by more
+//                   than kForceBalanceRtol·Q (eq. 10).
+//   complementarity an element's pressure is negative or above p_lim, or the deformed gap
+//                   h = g + u − δ violates the contact condition (h = 0 where 0 < p < p_lim,
+//                   h ≥ 0 where p = 0, h ≤ 0 where p = p_lim) by more than kGapRtol times the
+//                   patch's approach (half-space; Johnson, Contact Mechanics §5.9, the conditions
+//                   of normal contact); for the strips, the estimated strip extents leave an
+//                   end-gap error above StripOptions::end_gap_tol without being refined.
+//   pressure_spike  (half-space) the patch's peak stands on a single element (pressure_spike.hpp).
+//                   The strip method's isolated peak is its own strip_outlier (strips.hpp).
+//   contact_hole    an element (strip) that carries no pressure although the undeformed bodies
+//                   overlap there by more than kGapRtol times the patch's approach, and that is
+//                   enclosed by loaded elements: along its row (x) on both sides AND along its
+//                   column (s) on both sides. Elastic
+//                   displacement is smooth on the scale of the patch, so such an element can
+//                   only be free when the gap has a feature narrower than the patch there (a
+//                   ridge of a measured profile, a kink); the pressure next to it is then set by
+//                   the feature's sharpness, that is by the profile's sampling, not by the
+//                   contact. Half-space only: enclosure along s alone is not a hole. The strip
+//                   method sees a row only at its centre, and a free strip between loaded ones is
+//                   a lateral separation, which is physical: Manchester pair, t_Y = 5 mm, 50 kN,
+//                   the tread and gauge-shoulder contacts in one patch are 5.4 mm apart where the
+//                   undeformed bodies overlap by up to 32.6 µm (0.58 of the approach); the
+//                   half-space solution has the same free band, with no element loaded across it.
+// A peak pressure that a steel contact "cannot have" is deliberately NOT a check: the elastic
+// answer has no such bound, and a spike or a hole is what makes a peak meaningless.
+#include <cmath>
+#include <vector>
+
+#include "contact/case_result.hpp"
+
+namespace mh {
+
+/// |Σ N_k cos γ_k − Q| ≤ kForceBalanceRtol·Q. The solvers close the balance to 1e-7 (half-space,
+/// HalfSpaceOptions::force_rtol) or better; 1e-5 is the strip method's own acceptance.
+constexpr double kForceBalanceRtol = 1e-5;
+/// Gap tolerance of the complementarity and hole checks, relative to the patch's approach (its
+/// largest rigid interpenetration). A 1 % error of the gap moves a Hertz-like peak by about
+/// 0.5 % (p0 ∝ δ^1/2), well inside the methods' accuracy; a converged CG solve
+/// (NormalCGOptions::tol = 1e-9) violates the conditions by orders of magnitude less.
+constexpr double kGapRtol = 1e-2;
+
+/// What a grid method hands to the checks for one reported patch (the k-th of CaseResult::patches).
+struct PatchCheckInput {
+  int nx = 0, ns = 0;            ///< elements along x and s (strips: nx = 1, ns strips)
+  std::vector<double> p;         ///< [Pa] pressure per element, index i + nx j (strips: the strip's peak, 0 unloaded)
+  std::vector<double> overlap;   ///< [m] rigid interpenetration δ − g per element (> 0: the undeformed bodies overlap)
+  double approach = 0;           ///< [m] the patch's approach (its largest overlap): the scale of the gap tolerance
+  double p_lim = INFINITY;       ///< [Pa] the pressure cap (INFINITY: elastic)
+  /// [m] the largest violation of the contact condition by the deformed gap (half-space); NaN:
+  /// not measured (strips).
+  double gap_violation = NAN;
+  double end_gap_error = NAN;    ///< strips: the estimate's end-gap error; NaN for the half-space method
+  double end_gap_tol = NAN;      ///< strips: StripOptions::end_gap_tol
+  bool refined = false;          ///< strips: the extents were refined (the end gap closed at every end)
+  bool spike_check = false;      ///< look for a single-element peak (half-space; strips have strip_outlier)
+  bool hole_check = false;       ///< look for a contact hole (half-space: rows and columns of elements)
+  double y_ref = 0, gamma = 0;   ///< [m], [rad] the patch plane (to name rail y in warnings)
+  double s0 = 0, ds = 0;         ///< [m] s of the first element row and the row spacing
+};
+
+/// A zero-pressure element enclosed by loaded ones where the bodies overlap (the rule above).
+struct ContactHole {
+  int elements = 0;  ///< hole elements
+  int i = -1, j = -1;  ///< the one with the largest overlap
+  double overlap = 0;  ///< [m] its overlap
+};
+ContactHole find_contact_hole(const PatchCheckInput& in);
+
+/// The checks above on a solved grid result r (status Ok; other statuses are left alone), with
+/// in[k] describing r.patches[k]. Adds the warnings; does not change the status (judge_validity
+/// does, once, for every method).
+void check_grid_result(const std::vector<PatchCheckInput>& in, double Q, CaseResult& r);
+
+/// A grid result whose status is not_converged carries no pressures that look like an answer
+/// (docs/outputs.md, "Failed rows"): its last iterate's approach, forces and residual stay (they
+/// say how far it is from equilibrium), its peak pressure and area become NaN (empty cells, null)
+/// and its patches are dropped (no patches.csv, pressure.csv or strips.csv rows); n_contacts stays.
+void withhold_unconverged_pressures(CaseResult& r);
+
+}  // namespace mh
