@@ -3,6 +3,7 @@
 // method's options, each with its documented defaults and a Ceres-style valid(why) that names the
 // field, the value and the rule. A light header: the case-file reader includes it without
 // pulling in a solver. SI throughout (lengths m, pressures Pa).
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -17,6 +18,19 @@ struct Material {
   double E_rail = NAN;       ///< [Pa] the rail's Young's modulus when it differs (NaN: same as E)
   double nu_rail = NAN;      ///< [-] the rail's Poisson's ratio when it differs (NaN: same as nu)
   double p_lim = INFINITY;   ///< [Pa] limit pressure of the plastic law (method.md §5); INFINITY = elastic
+  /// [Pa] uniaxial yield stress σ_y of the wheel, and of the rail unless yield_rail is set (NaN: not
+  /// given). Input (case file "material.yield_MPa", hertz --yield); the case file derives p_lim from
+  /// it when p_lim_MPa is not given (docs/method.md §5). Also the basis of k = σ_y/√3 (RCF indicators).
+  double yield = NAN;
+  double yield_rail = NAN;   ///< [Pa] the rail's yield stress when it differs (NaN: same as yield)
+  double yield_r() const { return std::isnan(yield_rail) ? yield : yield_rail; }
+  /// [Pa] the yield stress of the softer body (NaN when none is given): the one that yields first
+  /// in a frictionless contact of bodies of equal elasticity.
+  double yield_min() const {
+    if (std::isnan(yield)) return yield_rail;
+    if (std::isnan(yield_rail)) return yield;
+    return std::min(yield, yield_rail);
+  }
   double Er() const { return std::isnan(E_rail) ? E : E_rail; }
   double nur() const { return std::isnan(nu_rail) ? nu : nu_rail; }
   /// [Pa] the paper's E/(1−ν²) of eqs. 2–3, 8 for identical bodies; for two materials the value
