@@ -242,6 +242,10 @@ def solve_rows(R, L, h, r_fine, steps, sy, tag):
     run(name)
     rows = parse_dat(name)
     fr = parse_frd(name, info["top"], info["coord"], R)
+    # only the steps that completed (a stopped run: the last step may be part-way)
+    done = sum(1 for l in open(name + ".sta") if len(l.split()) == 7 and l.split()[0].isdigit()
+               and abs(float(l.split()[5]) - 1.0) < 1e-9)
+    rows, fr = rows[:done], fr[:done]
     out = []
     for k, row in enumerate(rows):
         ps = fr[k]["p"]
@@ -251,7 +255,13 @@ def solve_rows(R, L, h, r_fine, steps, sy, tag):
         sm = smooth(inside + [(-r, p) for r, p in inside if r > 0], max(0.15 * a, 1.6 * h))
         sm = [(r, p) for r, p in sm if r >= 0]
         pe = fr[k]["pe"]
-        out.append(dict(step=k, omega_fe=-row["uz"], P=row["P"], a=a, pmax=max(p for _, p in sm), pc=sm[0][1],
+        # bracket of the edge: midway between the last node carrying > 2 % of the peak and the next
+        pts = sorted((info["coord"][n][0], p) for n, p in ps.items())
+        pk = max(p for _, p in pts)
+        i0 = next(i for i, (x, p) in enumerate(pts) if p <= 0.02 * pk and x > 0)
+        a_mid, a_half = 0.5 * (pts[i0][0] + pts[i0 - 1][0]), 0.5 * (pts[i0][0] - pts[i0 - 1][0])
+        out.append(dict(step=k, omega_fe=-row["uz"], P=row["P"], a=a, a_mid=a_mid, a_half=a_half,
+                        pmax=max(p for _, p in sm), pc=sm[0][1],
                         pmax_nodes=max(ps.values()),
                         peeq=pe[0], peeq_depth=pe[1], peeq_r=pe[2]))
     return out, info
@@ -336,8 +346,9 @@ def cmd_jg(args):
                               f"mesh: h = {h:.4g} mm (a_max/{args.n}), {info['nodes']} nodes, {info['elements']} CAX8, block {L:.1f} mm",
                               f"finite-block correction from the elastic run on the same mesh: omega = u_center + c P, c = {c:.4g} mm/N"
                               f" (elastic rows after correction within {100*resid:.2f} % of Hertz)",
-                              "columns: omega_over_wc prescribed (flat displacement), omega_over_wc_corr, P/Pc FE and JG(omega_corr), A/Ac FE and JG,"
-                              " pmean/sy, pmax/sy (smoothed profile), peeq max (nodal), its depth/a, r/a"] +
+                              "columns: omega_over_wc prescribed (flat displacement), omega_over_wc_corr, P/Pc FE and JG(omega_corr), A/Ac FE (edge by p^2 extrapolation;"
+                              " and by the midpoint of the last loaded and first unloaded surface node, with its relative uncertainty +-) and JG,"
+                              " pmean/sy (on the midpoint area), pmax/sy (smoothed profile), peeq max (nodal), its depth/a, r/a"] +
                              [f"elastic check on the same mesh: omega/omega_c = {e['omega_fe'] / wc:.4g}: a/a_hertz = "
                               f"{e['a'] / hertz(R, e['P'])[0]:.4f}, p_centre/p0_hertz = {e['pc'] / hertz(R, e['P'])[2]:.4f},"
                               f" corrected approach/Hertz = {(e['omega_fe'] + c * e['P']) / hertz(R, e['P'])[1]:.4f}" for e in el])
@@ -346,12 +357,13 @@ def cmd_jg(args):
         w = o["omega_fe"] + c * o["P"]
         Pj, Aj, *_ = jg(w / wc, sy, R)
         A = math.pi * o["a"] ** 2
-        rows.append((x, w / wc, o["P"] / Pc, Pj, A / Ac, Aj, o["P"] / A / sy, o["pmax"] / sy, o["peeq"],
+        Am = math.pi * o["a_mid"] ** 2
+        rows.append((x, w / wc, o["P"] / Pc, Pj, A / Ac, Am / Ac, 2 * o["a_half"] / o["a_mid"], Aj, o["P"] / Am / sy, o["pmax"] / sy, o["peeq"],
                      o["peeq_depth"] / o["a"], o["peeq_r"] / o["a"]))
         print(rows[-1], flush=True)
     with open(args.out, "w") as f:
         f.write("\n".join(lines) + "\n")
-        f.write("omega_over_wc,omega_corr_over_wc,P_over_Pc_fe,P_over_Pc_jg,A_over_Ac_fe,A_over_Ac_jg,pmean_over_sy,pmax_over_sy,"
+        f.write("omega_over_wc,omega_corr_over_wc,P_over_Pc_fe,P_over_Pc_jg,A_over_Ac_fe_p2,A_over_Ac_fe_mid,A_fe_mid_uncertainty,A_over_Ac_jg,pmean_over_sy,pmax_over_sy,"
                 "peeq_max,peeq_depth_over_a,peeq_r_over_a\n")
         for r in rows:
             f.write(",".join(f"{x:.6g}" for x in r) + "\n")
