@@ -124,6 +124,7 @@ def build(R, L, h, r_fine, z_fine, steps, sy=None, tag="m"):
 
 
 def run(name):
+    os.makedirs(os.path.dirname(name) or ".", exist_ok=True)
     if os.environ.get("FE_REUSE") and os.path.exists(name + ".frd"):
         return  # re-parse an earlier run (FE_REUSE=1)
     env = dict(os.environ, OMP_NUM_THREADS="1")
