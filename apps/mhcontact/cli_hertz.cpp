@@ -11,6 +11,7 @@
 
 #include "cli.hpp"
 #include "contact/ellipse/ellipse_law.hpp"
+#include "contact/options.hpp"
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
 #include "core/plausible.hpp"
@@ -27,6 +28,7 @@ struct HertzCliOptions {
   double E_GPa = NAN;                              ///< [GPa] Young's modulus
   double nu = NAN;                                 ///< [-] Poisson's ratio
   double p_lim_MPa = NAN;                          ///< [MPa] limit pressure; not given = elastic
+  double yield_MPa = NAN;                          ///< [MPa] yield stress; p_lim derived from it unless --p-lim
   bool json = false;                               ///< one JSON object instead of text lines
   bool exact = false;                              ///< exact elliptic integrals instead of the table
 };
@@ -93,14 +95,22 @@ void run_hertz(const HertzCliOptions& o, CliContext& ctx) {
   if (!(o.nu > 0 && o.nu < 0.5)) bad("--nu", o.nu, "Poisson's ratio must be in (0, 0.5)");
   plausible_or_bad("--E", o.E_GPa, plausible::kE_GPa);
   plausible_or_bad("--nu", o.nu, plausible::kNu);
-  const bool plastic = !std::isnan(o.p_lim_MPa);
-  if (plastic && (!(o.p_lim_MPa > 0) || std::isinf(o.p_lim_MPa)))
+  const bool by_yield = !std::isnan(o.yield_MPa);
+  if (by_yield && (!(o.yield_MPa > 0) || std::isinf(o.yield_MPa)))
+    bad("--yield", o.yield_MPa, "the yield stress must be > 0 MPa and finite", "omit it for an elastic contact");
+  if (by_yield) plausible_or_bad("--yield", o.yield_MPa, plausible::kYield_MPa);
+  const bool plastic = !std::isnan(o.p_lim_MPa) || by_yield;
+  if (!std::isnan(o.p_lim_MPa) && (!(o.p_lim_MPa > 0) || std::isinf(o.p_lim_MPa)))
     bad("--p-lim", o.p_lim_MPa, "the limit pressure must be > 0 MPa and finite", "omit it for an elastic contact");
-  if (plastic) plausible_or_bad("--p-lim", o.p_lim_MPa, plausible::kPlim_MPa);
+  if (!std::isnan(o.p_lim_MPa)) plausible_or_bad("--p-lim", o.p_lim_MPa, plausible::kPlim_MPa);
   Material mat;
   mat.E = o.E_GPa * units::GPa;
   mat.nu = o.nu;
-  mat.p_lim = plastic ? o.p_lim_MPa * units::MPa : INFINITY;
+  if (by_yield) mat.yield = o.yield_MPa * units::MPa;
+  // --p-lim takes precedence over the limit pressure derived from --yield (as in the case file)
+  mat.p_lim = !std::isnan(o.p_lim_MPa) ? o.p_lim_MPa * units::MPa
+              : by_yield               ? p_lim_from_yield(mat.yield)
+                                       : INFINITY;
 
   EllipseLaw law;
   try {
@@ -140,6 +150,10 @@ void run_hertz(const HertzCliOptions& o, CliContext& ctx) {
     j["B_per_mm"] = B * units::mm;
     j["N_kN"] = o.N_kN;
     for (const Item& it : elastic_items) j[it.key] = it.value;
+    if (by_yield) {
+      j["yield_MPa"] = o.yield_MPa;
+      j["p_lim_MPa"] = mat.p_lim / units::MPa;
+    }
     if (plastic) {
       j["plastic"] = s.plastic;
       for (const Item& it : plastic_items) j[it.key] = it.value;
@@ -150,6 +164,10 @@ void run_hertz(const HertzCliOptions& o, CliContext& ctx) {
       ctx.out << name << " = " << format_number(v) << " " << unit << "\n";
     };
     for (const Item& it : elastic_items) line(it.name, it.value, it.unit);
+    if (by_yield) {
+      line("yield", o.yield_MPa, "MPa");
+      line("p_lim", mat.p_lim / units::MPa, "MPa");
+    }
     if (plastic) {
       ctx.out << "plastic = " << (s.plastic ? "true" : "false") << " -\n";
       for (const Item& it : plastic_items) line(it.name, it.value, it.unit);
@@ -166,7 +184,7 @@ void add_hertz_command(CLI::App& app, CliContext& ctx) {
       "hertz",
       "One Hertzian ellipse (paper eqs. 1-8, docs/method.md section 2): lambda, m, n, semi-axes, peak and "
       "mean pressure, virtual penetration h0 and true approach; with --p-lim the plastic law "
-      "(docs/method.md section 5). Give --A and --B, or the radii.");
+      "(docs/method.md section 5), or with --yield from the yield stress. Give --A and --B, or the radii.");
   cmd->footer(
       "Example (docs/method.md section 5): mhcontact hertz --R-wyy 460 --R-rxx 300 --N 100 --E 210 --nu 0.3 --p-lim 800\n"
       "Radii are positive when the centre of curvature is inside the material (concave: negative); "
@@ -186,7 +204,9 @@ void add_hertz_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--N", opt->N_kN, "[kN] normal load (>= 0)")->required();
   cmd->add_option("--E", opt->E_GPa, "[GPa] Young's modulus of wheel and rail")->required();
   cmd->add_option("--nu", opt->nu, "[-] Poisson's ratio of wheel and rail, in (0, 0.5)")->required();
-  cmd->add_option("--p-lim", opt->p_lim_MPa, "[MPa] limit pressure of the plastic law (omit: elastic)");
+  cmd->add_option("--p-lim", opt->p_lim_MPa, "[MPa] limit pressure of the plastic law (omit: elastic; takes precedence over --yield)");
+  cmd->add_option("--yield", opt->yield_MPa,
+                  "[MPa] yield stress of the softer body: the plastic law with p_lim = 2.1 x yield (docs/method.md section 5.1)");
   cmd->add_flag("--json", opt->json, "print one JSON object (keys carry their units) instead of text");
   cmd->add_flag("--exact", opt->exact, "exact elliptic integrals instead of the tabulated fast path");
   cmd->callback([opt, &ctx]() { run_hertz(*opt, ctx); });

@@ -38,6 +38,11 @@ bool Material::valid(std::string* why) const {
     return fail("Material.E_rail = " + format_number(E_rail) + " Pa: Young's modulus must be > 0 and finite");
   if (!std::isnan(nu_rail) && !(nu_rail > 0 && nu_rail < 0.5))
     return fail("Material.nu_rail = " + format_number(nu_rail) + ": Poisson's ratio must be in (0, 0.5)");
+  if (!std::isnan(yield) && (!(yield > 0) || !std::isfinite(yield)))
+    return fail("Material.yield = " + format_number(yield) + " Pa: the yield stress must be > 0 and finite (NaN: not given)");
+  if (!std::isnan(yield_rail) && (!(yield_rail > 0) || !std::isfinite(yield_rail)))
+    return fail("Material.yield_rail = " + format_number(yield_rail) +
+                " Pa: the yield stress must be > 0 and finite (NaN: same as yield)");
   if (!(p_lim > 0))
     return fail("Material.p_lim = " + format_number(p_lim) +
                 " Pa: the limit pressure must be > 0 (INFINITY for an elastic contact)");

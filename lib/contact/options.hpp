@@ -3,6 +3,7 @@
 // method's options, each with its documented defaults and a Ceres-style valid(why) that names the
 // field, the value and the rule. A light header: the case-file reader includes it without
 // pulling in a solver. SI throughout (lengths m, pressures Pa).
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -17,6 +18,19 @@ struct Material {
   double E_rail = NAN;       ///< [Pa] the rail's Young's modulus when it differs (NaN: same as E)
   double nu_rail = NAN;      ///< [-] the rail's Poisson's ratio when it differs (NaN: same as nu)
   double p_lim = INFINITY;   ///< [Pa] limit pressure of the plastic law (method.md §5); INFINITY = elastic
+  /// [Pa] uniaxial yield stress σ_y of the wheel, and of the rail unless yield_rail is set (NaN: not
+  /// given). Input (case file "material.yield_MPa", hertz --yield); the case file derives p_lim from
+  /// it when p_lim_MPa is not given (docs/method.md §5). Also the basis of k = σ_y/√3 (RCF indicators).
+  double yield = NAN;
+  double yield_rail = NAN;   ///< [Pa] the rail's yield stress when it differs (NaN: same as yield)
+  double yield_r() const { return std::isnan(yield_rail) ? yield : yield_rail; }
+  /// [Pa] the yield stress of the softer body (NaN when none is given): the one that yields first
+  /// in a frictionless contact of bodies of equal elasticity.
+  double yield_min() const {
+    if (std::isnan(yield)) return yield_rail;
+    if (std::isnan(yield_rail)) return yield;
+    return std::min(yield, yield_rail);
+  }
   double Er() const { return std::isnan(E_rail) ? E : E_rail; }
   double nur() const { return std::isnan(nu_rail) ? nu : nu_rail; }
   /// [Pa] the paper's E/(1−ν²) of eqs. 2–3, 8 for identical bodies; for two materials the value
@@ -33,6 +47,17 @@ struct Material {
   /// the rule (E > 0 and finite, 0 < ν < 0.5, p_lim > 0 or INFINITY; the same for the rail's).
   bool valid(std::string* why = nullptr) const;
 };
+
+/// [-] p_lim / σ_y of the plastic law when only the yield stress is given (docs/method.md §5.1).
+/// Basis: the elastic–perfectly-plastic FE measurement quoted in issue 24 (crossed cylinders
+/// R 460 × 300 mm, E = 210 GPa, ν = 0.3, σ_y 350 and 500 MPa, p0_el/σ_y 1 … 4): with this law
+/// p_lim ≈ 2.1 σ_y matches the FE contact area within −3 … +9 % (the approach is then up to 24 %
+/// off; 2.7 σ_y would match the approach within ±4 % but give areas 15 % low). The area, and with
+/// it the peak and mean pressure, is what stresses and RCF indicators need, hence 2.1. Valid for
+/// non-conformal steel contacts with p0_el/σ_y ≤ 4 and E/σ_y ≈ 400–600; outside, give p_lim_MPa.
+inline constexpr double kPlimPerYield = 2.1;
+/// [Pa] p_lim derived from a yield stress σ_y [Pa] (kPlimPerYield σ_y).
+inline double p_lim_from_yield(double sigma_y) { return kPlimPerYield * sigma_y; }
 
 /// The solution method of a case (case file "method"). Auto chooses per case (docs/method.md).
 enum class Method { MultiHertzian, HalfSpace, Strips, Auto };

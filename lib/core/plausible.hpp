@@ -32,6 +32,7 @@ struct Range {
 inline constexpr Range kQ_kN{"Q", "kN", 0.01, 2000, "is it in MN?", "did you give newtons? Q is in kN"};
 inline constexpr Range kE_GPa{"E", "GPa", 50, 400, "is it in TPa?", "is it in MPa? E is in GPa, steel is 210"};
 inline constexpr Range kNu{"nu", "-", 0.1, 0.45, "", "steel is about 0.28-0.3"};
+inline constexpr Range kYield_MPa{"yield", "MPa", 50, 5000, "is it in GPa? the yield stress is in MPa", "is it in kPa or Pa? the yield stress is in MPa"};
 inline constexpr Range kPlim_MPa{"p_lim", "MPa", 100, 20000, "is it in GPa? p_lim is in MPa", "is it in kPa? p_lim is in MPa"};
 inline constexpr Range kTY_mm{"t_Y", "mm", -60, 60, "", "is it in micrometres? t_Y is in mm"};
 inline constexpr Range kRadius_mm{"radius", "mm", 100, 2000, "is it in metres? radii are in mm", "is it a diameter? give the radius"};

@@ -197,7 +197,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   }
   if (j.contains("material")) {
     const json& m = j.at("material");
-    c.only_keys(m, "/material", {"E_GPa", "nu", "p_lim_MPa", "wheel", "rail"});
+    c.only_keys(m, "/material", {"E_GPa", "nu", "p_lim_MPa", "yield_MPa", "wheel", "rail"});
     // Either one E and nu for both bodies, or "wheel": {...} and "rail": {...} (each defaulting
     // to the common values).
     auto elastic = [&](const json& o, const std::string& path, double* E_out, double* nu_out) {
@@ -211,7 +211,12 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
       }
     };
     elastic(m, "/material", &cf.material.E, &cf.material.nu);
-    if (m.contains("wheel") || m.contains("rail")) {
+    // per-body elastic constants: a "wheel" or "rail" object that gives E_GPa or nu (an object with
+    // only yield_MPa leaves the elastic constants common)
+    auto gives_elastic = [&](const char* body) {
+      return m.contains(body) && (!m.at(body).is_object() || m.at(body).contains("E_GPa") || m.at(body).contains("nu"));
+    };
+    if (gives_elastic("wheel") || gives_elastic("rail")) {
       if (m.contains("E_GPa") || m.contains("nu"))
         c.fail("/material", &m, "give E_GPa and nu either for both bodies or per body (\"wheel\", \"rail\"), not both");
       double Er = cf.material.E, nur = cf.material.nu;
@@ -219,13 +224,36 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
         if (!m.contains(body)) continue;
         const json& b = m.at(body);
         const std::string path = std::string("/material/") + body;
-        if (!b.is_object()) c.fail(path, &b, "must be an object {\"E_GPa\": ..., \"nu\": ...}");
-        c.only_keys(b, path, {"E_GPa", "nu"});
+        if (!b.is_object()) c.fail(path, &b, "must be an object {\"E_GPa\": ..., \"nu\": ..., \"yield_MPa\": ...}");
+        c.only_keys(b, path, {"E_GPa", "nu", "yield_MPa"});
         if (std::string(body) == "wheel") elastic(b, path, &cf.material.E, &cf.material.nu);
         else elastic(b, path, &Er, &nur);
       }
       cf.material.E_rail = Er;
       cf.material.nu_rail = nur;
+    }
+    for (const char* body : {"wheel", "rail"}) {
+      if (!m.contains(body) || gives_elastic(body)) continue;  // checked above
+      c.only_keys(m.at(body), std::string("/material/") + body, {"E_GPa", "nu", "yield_MPa"});
+    }
+    // The yield stress: "yield_MPa" for both bodies, or per body in "wheel"/"rail" (not both).
+    const bool yield_per_body = (m.contains("wheel") && m.at("wheel").is_object() && m.at("wheel").contains("yield_MPa")) ||
+                                (m.contains("rail") && m.at("rail").is_object() && m.at("rail").contains("yield_MPa"));
+    if (m.contains("yield_MPa") && yield_per_body)
+      c.fail("/material/yield_MPa", &m.at("yield_MPa"),
+             "give yield_MPa either for both bodies or per body (\"wheel\", \"rail\"), not both");
+    if (m.contains("yield_MPa"))
+      cf.material.yield = c.plausible(m, "/material", "yield_MPa", plausible::kYield_MPa) * units::MPa;
+    if (yield_per_body) {
+      for (const char* body : {"wheel", "rail"}) {
+        if (!m.contains(body) || !m.at(body).contains("yield_MPa")) continue;
+        const std::string path = std::string("/material/") + body;
+        const double y = c.plausible(m.at(body), path, "yield_MPa", plausible::kYield_MPa) * units::MPa;
+        (std::string(body) == "wheel" ? cf.material.yield : cf.material.yield_rail) = y;
+      }
+      if (std::isnan(cf.material.yield) || std::isnan(cf.material.yield_rail))
+        c.fail(std::isnan(cf.material.yield) ? "/material/wheel/yield_MPa" : "/material/rail/yield_MPa", nullptr,
+               "required: give yield_MPa for both \"wheel\" and \"rail\", or one common \"yield_MPa\"");
     }
     if (m.contains("p_lim_MPa")) {
       if (cf.model != Model::Plastic)
@@ -235,8 +263,14 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
       cf.material.p_lim = p * units::MPa;
     }
   }
+  // p_lim: p_lim_MPa when given (it takes precedence: the user's own limit pressure), otherwise
+  // derived from the softer body's yield stress by the calibration p_lim = kPlimPerYield σ_y
+  // (docs/method.md §5.1). The yield stress stays in Material for the indicators that need it.
+  if (cf.model == Model::Plastic && !std::isfinite(cf.material.p_lim) && !std::isnan(cf.material.yield_min()))
+    cf.material.p_lim = p_lim_from_yield(cf.material.yield_min());
   if (cf.model == Model::Plastic && !std::isfinite(cf.material.p_lim))
-    c.fail("/material/p_lim_MPa", nullptr, "required for the plastic model");
+    c.fail("/material/p_lim_MPa", nullptr, "required for the plastic model: give the steel's yield stress "
+           "\"yield_MPa\" (p_lim is derived from it) or your own \"p_lim_MPa\"");
   // solver
   if (j.contains("solver")) {
     const json& s = j.at("solver");
@@ -351,6 +385,12 @@ nlohmann::json CaseFile::resolved_json() const {
     mat = {{"wheel", {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}}},
            {"rail", {{"E_GPa", material.E_rail / units::GPa}, {"nu", material.nu_rail}}}};
   if (model == Model::Plastic) mat["p_lim_MPa"] = material.p_lim / units::MPa;
+  if (!std::isnan(material.yield) && std::isnan(material.yield_rail)) {
+    mat["yield_MPa"] = material.yield / units::MPa;
+  } else if (!std::isnan(material.yield_rail)) {  // per body (the reader requires both)
+    mat["wheel"]["yield_MPa"] = material.yield / units::MPa;
+    mat["rail"]["yield_MPa"] = material.yield_rail / units::MPa;
+  }
   j["material"] = mat;
   j["model"] = to_string(model);
   j["method"] = to_string(method);
