@@ -49,7 +49,7 @@ struct Material {
 };
 
 /// [-] p_lim / σ_y of the plastic law when only the yield stress is given (docs/method.md §5.1).
-/// Basis: the elastic–perfectly-plastic FE measurement quoted in issue 24 (crossed cylinders
+/// Basis: an elastic–perfectly-plastic FE measurement reported to the project (crossed cylinders
 /// R 460 × 300 mm, E = 210 GPa, ν = 0.3, σ_y 350 and 500 MPa, p0_el/σ_y 1 … 4): with this law
 /// p_lim ≈ 2.1 σ_y matches the FE contact area within −3 … +9 % (the approach is then up to 24 %
 /// off; 2.7 σ_y would match the approach within ±4 % but give areas 15 % low). The area, and with

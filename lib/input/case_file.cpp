@@ -57,7 +57,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   Ctx c{path};
   CaseFile cf;
   cf.path = path;
-  c.only_keys(j, "", {"wheel", "rail", "track", "geometry", "material", "model", "method", "half_space", "strips", "sweep", "cases", "solver", "comment"});
+  c.only_keys(j, "", {"wheel", "rail", "track", "geometry", "material", "model", "method", "half_space", "strips", "rcf", "sweep", "cases", "solver", "comment"});
 
   // wheel
   if (!j.contains("wheel")) c.fail("/wheel", nullptr, "required");
@@ -297,6 +297,18 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     std::string why;
     if (!o.valid(&why)) c.fail("/half_space", &h, why);
   }
+  // RCF indicators (docs/outputs.md "RCF columns"): f, and k or the material's yield.
+  if (j.contains("rcf")) {
+    const json& h = j.at("rcf");
+    c.only_keys(h, "/rcf", {"traction_coefficient", "shear_yield_MPa"});
+    if (!h.contains("traction_coefficient")) c.fail("/rcf", &h, "needs traction_coefficient (f = T/N)");
+    cf.rcf.f = c.number(h, "/rcf", "traction_coefficient");
+    if (!(cf.rcf.f >= 0 && cf.rcf.f <= 1))
+      c.fail("/rcf/traction_coefficient", &h.at("traction_coefficient"), "must be in [0, 1]");
+    if (h.contains("shear_yield_MPa")) cf.rcf.k = c.positive(h, "/rcf", "shear_yield_MPa") * units::MPa;
+    if (!std::isfinite(rcf_shear_yield(cf.material, cf.rcf)))
+      c.fail("/rcf", &h, "needs shear_yield_MPa (k = sigma_y/sqrt(3)): the material gives no yield stress");
+  }
   // strip method options (docs/method.md §9)
   if (j.contains("strips")) {
     const json& h = j.at("strips");
@@ -394,6 +406,10 @@ nlohmann::json CaseFile::resolved_json() const {
   j["material"] = mat;
   j["model"] = to_string(model);
   j["method"] = to_string(method);
+  if (rcf.enabled()) {
+    j["rcf"] = {{"traction_coefficient", rcf.f}};
+    if (std::isfinite(rcf.k)) j["rcf"]["shear_yield_MPa"] = rcf.k / units::MPa;
+  }
   if (method == Method::HalfSpace)
     j["half_space"] = {{"dx_mm", half_space.dx * units::per_mm}, {"ds_mm", half_space.ds * units::per_mm},
                        {"d_comb_mm", half_space.d_comb * units::per_mm}, {"force_rtol", half_space.force_rtol},

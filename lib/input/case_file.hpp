@@ -12,6 +12,7 @@
 #include "profile/profile.hpp"
 #include "profile/read.hpp"
 #include "contact/options.hpp"
+#include "contact/ellipse/rcf.hpp"
 
 namespace mh {
 
@@ -72,6 +73,7 @@ struct CaseFile {
   MultiHertzOptions solver;                   ///< "solver": the multi-Hertzian iteration
   HalfSpaceOptions half_space;            ///< "half_space": grid and tolerances of the half-space method
   StripMethodOptions strips;              ///< "strips": strip width and tolerances of the strip method
+  RcfOptions rcf;                         ///< "rcf": traction coefficient and shear yield of the RCF columns (docs/outputs.md)
   /// The options of the case's method, for solve_contact().
   MethodOptions method_options() const { return {method, solver, half_space, strips}; }
   /// Either a cartesian sweep (t_Y outer, Q inner: case i has tY[i / nQ], Q[i % nQ]) ...

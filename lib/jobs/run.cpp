@@ -202,13 +202,13 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
       fc->stream() << cases_csv_header();
       if (writes_ellipses(M)) {
         fe = std::make_unique<OutputFile>(rd->path("ellipses.csv"));
-        fe->stream() << ellipses_csv_header(plastic);
+        fe->stream() << ellipses_csv_header(plastic, cf.rcf.enabled());
         fg = std::make_unique<OutputFile>(rd->path("geometry.csv"));
         fg->stream() << geometry_csv_header();
       }
       if (writes_patches(M)) {
         fpa = std::make_unique<OutputFile>(rd->path("patches.csv"));
-        fpa->stream() << patches_csv_header(plastic);
+        fpa->stream() << patches_csv_header(plastic, cf.rcf.enabled());
       }
     }
     if (want_json) fj = std::make_unique<OutputFile>(rd->path("results.json"));

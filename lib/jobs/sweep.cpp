@@ -388,6 +388,8 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   mo.half_space.keep_pressure = np > 0;
   mo.strips.keep_strips = out.strips != nullptr;
   const bool grid_method = mo.method != Method::MultiHertzian;
+  RcfOptions rcf = cf.rcf;  // the RCF columns, k resolved (contact/ellipse/rcf.hpp)
+  if (rcf.enabled()) rcf.k = rcf_shear_yield(cf.material, cf.rcf);
   const std::uint64_t n = end - first;
   if (n == 0) return;
   const unsigned threads = std::max(1u, opt.threads ? opt.threads : std::thread::hardware_concurrency());
@@ -444,14 +446,14 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
             std::string k = warning_class(w);
             if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(std::move(k));
           }
-          format_case(c0 + i, cp, r, plastic, want_csv, want_json, f);
+          format_case(c0 + i, cp, r, plastic, want_csv, want_json, f, nullptr, rcf);
           // The per-contact tables: ellipses (multi-Hertzian) and patches (grid methods); "auto"
           // writes each case into the table of the method that solved it.
           if (want_csv) {
             append_prefixed(B.cases, out.prefix, f.cases);
             if (out.ellipses) append_prefixed(B.ellipses, out.prefix, f.ellipses);
             if (out.patches) {
-              format_patches(c0 + i, cp, r, plastic, f.patches);
+              format_patches(c0 + i, cp, r, plastic, f.patches, rcf);
               append_prefixed(B.patches, out.prefix, f.patches);
             }
           }

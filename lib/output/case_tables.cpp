@@ -79,6 +79,27 @@ const Col kPlasticTailCols[] = {
 // has area_mm2).
 const Col kAreaCol = {"area_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a * e.s.b * units::per_mm2; }};
 
+// The RCF columns (docs/outputs.md "RCF columns"), appended last to ellipses.csv and patches.csv.
+const char* const kRcfHeader = ",traction_coefficient,k_MPa,p0_over_k,elastic_limit_p0_over_k,"
+                               "shakedown_limit_p0_over_k,shakedown_regime,FI_surf";
+void rcf_cells(std::string& s, const RcfOptions& o, double N, double a, double b) {
+  const RcfPoint p = rcf_point(o.f, o.k, N, a, b);
+  s += ','; num(s, o.f);
+  s += ','; num(s, o.k / units::MPa);
+  s += ','; num(s, p.p0_over_k);
+  s += ','; num(s, p.elastic_limit);
+  s += ','; num(s, p.shakedown_limit);
+  s += ','; if (std::isfinite(p.p0_over_k)) s += to_string(p.regime);
+  s += ','; num(s, p.fi_surf);
+}
+// A grid patch as an ellipse: π a b its area, a/b its length over its width.
+void patch_axes(const PatchResult& P, double* a, double* b) {
+  const double ab = P.area / units::pi;
+  const double ratio = P.width_s > 0 ? P.length_x / P.width_s : NAN;
+  *a = std::sqrt(ab * ratio);
+  *b = ab / *a;
+}
+
 }  // namespace
 
 
@@ -118,7 +139,8 @@ bool is_failed_row(const CaseResult& r, const char* status_text) {
 }
 
 void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
-                 bool plastic, bool want_csv, bool want_json, Formatted& f, const char* status_text) {
+                 bool plastic, bool want_csv, bool want_json, Formatted& f, const char* status_text,
+                 const RcfOptions& rcf) {
   const char* status = status_text ? status_text : to_string(r.status);
   const std::string warn = join(r.warnings, ";");
   // The main contact: the loaded ellipse carrying the largest normal force.
@@ -190,6 +212,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (plastic)
         for (const Col& c : kPlasticTailCols) { e += ','; num(e, c.get(L)); }
       if (!plastic) { e += ','; num(e, kAreaCol.get(L)); }
+      if (rcf.enabled()) rcf_cells(e, rcf, L.s.N, L.s.a, L.s.b);
       e += '\n';
     }
   }
@@ -240,7 +263,8 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
   }
 }
 
-void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, bool plastic, std::string& s) {
+void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, bool plastic, std::string& s,
+                    const RcfOptions& rcf) {
   s.clear();
   for (const PatchResult& P : r.patches) {
     append_number(s, static_cast<long long>(idx));
@@ -270,6 +294,11 @@ void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     if (plastic) {
       s += ','; num(s, P.plastic_area * units::per_mm2);
       s += ','; num(s, P.capped_load / units::kN);
+    }
+    if (rcf.enabled()) {
+      double a, b;
+      patch_axes(P, &a, &b);
+      rcf_cells(s, rcf, P.N, a, b);
     }
     s += '\n';
   }
@@ -315,11 +344,12 @@ void format_strips(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, 
 
 std::string strips_csv_header() { return "case,tY_mm,Q_kN,patch,s_mm,y_rail_mm,x_centre_mm,half_length_mm,amplitude_MPa,plastic\n"; }
 
-std::string patches_csv_header(bool plastic) {
+std::string patches_csv_header(bool plastic, bool rcf) {
   std::string s = "case,tY_mm,Q_kN,patch,y_rail_mm,z_rail_mm,y_wheel_mm,gamma_deg,N_kN,pmax_MPa,area_mm2,"
                   "length_x_mm,width_s_mm,approach_mm,x_centroid_mm,s_centroid_mm,n_elements,iterations,extents,"
                   "end_gap_error";
   if (plastic) s += ",plastic_area_mm2,capped_load_kN";
+  if (rcf) s += kRcfHeader;
   return s + "\n";
 }
 
@@ -340,7 +370,7 @@ std::string pressure_csv_header(bool plastic) {
   return plastic ? "case,ellipse,x_mm,y_mm,p_MPa,p_elastic_MPa\n" : "case,ellipse,x_mm,y_mm,p_MPa\n";
 }
 
-std::string ellipses_csv_header(bool plastic) {
+std::string ellipses_csv_header(bool plastic, bool rcf) {
   std::string s = "case,tY_mm,Q_kN,ellipse";
   for (const Col& c : kEllipseCols) { s += ','; s += c.name; }
   if (plastic) {
@@ -351,6 +381,7 @@ std::string ellipses_csv_header(bool plastic) {
   if (plastic)
     for (const Col& c : kPlasticTailCols) { s += ','; s += c.name; }
   if (!plastic) { s += ','; s += kAreaCol.name; }
+  if (rcf) s += kRcfHeader;
   return s + "\n";
 }
 

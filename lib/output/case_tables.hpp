@@ -25,7 +25,7 @@ bool is_failed_row(const CaseResult& r, const char* status_text = nullptr);
 
 void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                  bool plastic, bool want_csv, bool want_json, Formatted& f,
-                 const char* status_text = nullptr);
+                 const char* status_text = nullptr, const RcfOptions& rcf = {});
 
 /// The pressure of each loaded ellipse of `r` on an N × N grid over its patch (method.md §5),
 /// into `s` (pressure.csv rows).
@@ -33,7 +33,10 @@ void format_pressure(std::uint64_t idx, const CaseResult& r, const Material& mat
                      std::string& s);
 
 /// patches.csv rows of a grid method's case (one row per contact patch), into `s`.
-void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, bool plastic, std::string& s);
+/// With rcf.enabled() (k resolved: rcf_shear_yield) both tables end with the RCF columns
+/// (docs/outputs.md "RCF columns").
+void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, bool plastic, std::string& s,
+                    const RcfOptions& rcf = {});
 /// The element pressures of every patch of a grid method's case (elements in contact only), into
 /// `s` (pressure.csv rows of the grid methods).
 void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& s);
@@ -43,7 +46,7 @@ void format_strips(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, 
 std::string strips_csv_header();
 
 /// The column names of the tables (docs/outputs.md).
-std::string patches_csv_header(bool plastic);
+std::string patches_csv_header(bool plastic, bool rcf = false);
 /// Which per-contact tables a method writes: ellipses.csv (multi-Hertzian, and "auto" for the cases
 /// it keeps), patches.csv (grid methods, and "auto" for the cases it hands to the strip method).
 bool writes_ellipses(Method m);
@@ -52,7 +55,7 @@ bool writes_patches(Method m);
 std::string pressure_table_header(Method m, bool plastic);
 std::string patch_pressure_csv_header();
 std::string cases_csv_header();
-std::string ellipses_csv_header(bool plastic);
+std::string ellipses_csv_header(bool plastic, bool rcf = false);
 
 /// geometry.csv: what ellipses.csv would repeat for every Q, once per (t_Y,
 /// potential ellipse). Its header, and the rows of the candidates `cands` at the case t_Y `tY_mm`

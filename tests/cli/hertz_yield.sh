@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `mhcontact hertz --yield`: the yield stress as input (issue 24 §2). p_lim = 2.1 sigma_y
+# `mhcontact hertz --yield`: the yield stress as input. p_lim = 2.1 sigma_y
 # (method.md §5.1); --p-lim takes precedence; errors name the option. Worked example of
 # method.md §5 (R_wyy 460, R_rxx 300, N 100 kN, E 210 GPa, nu 0.3) with sigma_y = 380 MPa:
 # p_lim = 798 MPa, the same law as --p-lim 798.

@@ -81,6 +81,10 @@ grep -q '^y_mm,' out/en15302/wheelset.csv && test -s out/en15302/conicity.csv
 ./build/mhcontact run cases/manchester.json -o out/m -q --fail-on off_profile,non_hertzian_excluded,pressure_spike,strip_outlier,cant
 ./build/mhcontact diff tests/ref/manchester/cases.csv out/m/cases.csv --rtol 1e-2 --ignore-columns residual,iterations
 
+# --- docs/methods.md, "Yield stress as input": two rail steels ----------------------------------
+./build/mhcontact hertz --R-wyy 460 --R-rxx 300 --N 150 --E 210 --nu 0.3 --yield 500
+./build/mhcontact hertz --R-wyy 460 --R-rxx 300 --N 150 --E 210 --nu 0.3 --yield 800
+
 # --- docs/methods.md, "Half-space", "Strips", "Comparing the methods" --------------------------
 ./build/mhcontact run cases/manchester-halfspace.json -o out/manchester-halfspace
 test "$(wc -l < out/manchester-halfspace/patches.csv)" -eq 18

@@ -67,6 +67,13 @@ EllipseState ellipse_state(const EllipseLaw& L, double h0) {
     s.b_el = std::sqrt(h0_el / L.B);
     s.a_el = (L.c.m / L.c.n) * s.b_el;
     s.area_ratio = (s.a * s.b) / (s.a_el * s.b_el);
+    // Approach and shape held by the overlap (method.md §5, "approach and overlap").
+    const PlasticPatch h = plastic_patch_in_overlap(s.a, s.b, L.A, L.B, s.approach, s.N / N_hertz);
+    s.approach = h.approach;
+    s.plateau_a *= h.a / s.a;
+    s.plateau_b *= h.b / s.b;
+    s.a = h.a;
+    s.b = h.b;
   } else {
     s.a_el = s.a;
     s.b_el = s.b;

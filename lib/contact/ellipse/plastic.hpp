@@ -60,4 +60,33 @@ inline PlasticBranch plastic_branch(double m, double n, double B, double k_e, do
   return p;
 }
 
+/// The approach and semi-axes of a capped ellipse, held within its overlap (method.md §5).
+struct PlasticPatch {
+  double approach = 0;  ///< [m] true approach δ
+  double a = 0, b = 0;  ///< [m] semi-axes (a b kept: the area and the load of the law)
+};
+
+/// The approach of the capped patch of semi-axes a, b [m] (curvature sums A, B [1/m]) whose Hertz
+/// approach (Thornton's δ of the grown patch) is delta_H [m] and which carries the fraction
+/// r = N/N_H ≤ 1 of the Hertz load of its patch (r = 1.5 s (1 − s²/3), s = p_lim/p0):
+///   δ = δ_ov + r (δ_H − δ_ov),   δ_ov = a b √(A B)
+/// δ_ov is the rigid approach at which the surfaces overlap over an ellipse of the patch's area
+/// (the rigid–perfectly-plastic limit, r → 0); δ_H − δ_ov is the elastic displacement at the edge
+/// of the Hertz patch, scaled by the load the capped pressure actually carries (r = 1: Hertz,
+/// continuous at yield). The patch is then held inside the overlap ellipse √(δ/A), √(δ/B): an
+/// axis beyond it is shortened to it and the other lengthened to keep a b (always possible:
+/// δ ≥ δ_ov). As a capped strip never reaches beyond its overlap (docs/strips.md).
+inline PlasticPatch plastic_patch_in_overlap(double a, double b, double A, double B, double delta_H, double r) {
+  PlasticPatch p;
+  const double ab = a * b;
+  const double d_ov = ab * std::sqrt(A * B);
+  p.approach = d_ov + r * (delta_H - d_ov);
+  const double a_ov = std::sqrt(p.approach / A), b_ov = std::sqrt(p.approach / B);
+  p.a = a;
+  p.b = b;
+  if (p.a > a_ov) { p.a = a_ov; p.b = ab / a_ov; }
+  if (p.b > b_ov) { p.b = b_ov; p.a = ab / b_ov; }
+  return p;
+}
+
 }  // namespace mh

@@ -450,3 +450,24 @@ TEST_CASE("an invalid material is a bug of the caller, not a non-Hertzian case",
   CHECK_THROWS_AS(solve_multi_hertz(G, bad, 0.0, 50e3), std::invalid_argument);
   REQUIRE(solve_multi_hertz(G, steel(), 0.0, 50e3).status == CaseStatus::Ok);
 }
+
+TEST_CASE("plastic flange: approach and area near the capped half-space solution", "[solver][plastic]") {
+  // Manchester pair, Q = 100 kN, p_lim = 900 MPa, t_Y = 8.5 … 10 mm. Reference: the capped
+  // half-space method on the same cases (docs/half_space.md, "plastic flange"; mhcontact run with
+  // "method": "half-space", dx = ds = 0.2 mm): approach 1.293, 1.209, 1.107, 1.010 mm; area 283,
+  // 265, 247, 232 mm². Before the overlap-held approach (method.md §5) the multi-Hertzian
+  // approach was 2.93, 2.56, 2.29, 2.08 mm (+106 … +127 %).
+  const ContactGeometry& G = manchester();
+  Material mat;
+  mat.p_lim = 900e6;
+  const double tY[] = {8.5e-3, 9e-3, 9.5e-3, 10e-3};
+  const double approach[] = {1.293e-3, 1.209e-3, 1.107e-3, 1.010e-3};
+  const double area[] = {283e-6, 265e-6, 247e-6, 232e-6};
+  for (int k = 0; k < 4; ++k) {
+    CAPTURE(tY[k]);
+    const CaseResult r = solve_multi_hertz(G, mat, tY[k], 100e3);
+    REQUIRE(r.status == CaseStatus::Ok);
+    CHECK(std::fabs(r.approach / approach[k] - 1) <= 0.15);
+    CHECK(std::fabs(r.area / area[k] - 1) <= 0.20);
+  }
+}

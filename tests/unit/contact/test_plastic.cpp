@@ -17,6 +17,8 @@ double rel(double x, double ref) { return std::fabs(x / ref - 1.0); }
 }  // namespace
 
 TEST_CASE("plastic law of a sphere is Thornton's (1997) truncated-Hertz law", "[plastic]") {
+  // (Thornton's force law in h0 and his contact radius; the approach beyond yield is the
+  // overlap-held one of method.md §5, below.)
   // Thornton, C., "Coefficient of restitution for collinear collisions of elastic-perfectly
   // plastic spheres", J. Appl. Mech. 64 (1997) 383–386. Contact of radius R (composite), modulus
   // E*_J = E/(2(1−ν²)), interference δ; the Hertz pressure is truncated at p_y, contact radius
@@ -51,7 +53,13 @@ TEST_CASE("plastic law of a sphere is Thornton's (1997) truncated-Hertz law", "[
         CHECK(rel(dN_dh0 / 2, dF) <= 1e-11);  // dN/dδ = (dN/dh0)/2
         const EllipseState s = ellipse_state(L, delta / 2);
         CHECK(rel(s.a, std::sqrt(R * delta)) <= 1e-12);
-        CHECK(rel(s.approach, delta) <= 1e-12);
+        // The approach (method.md §5, "approach and overlap"): Hertz up to yield; beyond,
+        // δ' = δ_ov + r (δ − δ_ov) with δ_ov = a²/(2R) = δ/2 (the rigid overlap of the patch),
+        // r = 1.5 s (1 − s²/3), s = p_y/p0 = √(δ_y/δ) = 1/√f; e.g. f = 5: s = 0.4472,
+        // r = 0.6708 × 0.9333 = 0.6261, δ' = δ (0.5 + 0.5 × 0.6261) = 0.8130 δ.
+        const double sy = std::sqrt(1 / f), r = f > 1 ? 1.5 * sy * (1 - sy * sy / 3) : 1.0;
+        CHECK(rel(s.approach, 0.5 * delta * (1 + r)) <= 1e-12);
+        if (f == 5.0) CHECK(rel(s.approach, 0.8130 * delta) <= 1e-4);
         CHECK(s.plastic == (f > 1));
       }
     }
@@ -222,4 +230,30 @@ TEST_CASE("plastic law: worked example of method.md §5", "[plastic]") {
     CHECK(rel(capped_load_quadrature(e.a * st, e.b * st, e.p0 * st, 800e6), 100e3) <= 1e-8);
     CHECK(rel(p.a, e.a * std::sqrt(p.area_ratio)) <= 1e-12);
   }
+}
+
+TEST_CASE("a capped flange ellipse stays inside its overlap, area and load kept", "[plastic]") {
+  // The Manchester flange ellipse at t_Y = 7 mm (geometry.csv: A = 3.614e-4 1/mm, B = 0.03846
+  // 1/mm, λ = 0.0094), E = 210 GPa, ν = 0.28, p_lim = 900 MPa, N = 292 kN. Before the hold the
+  // patch was a = 44.2 mm, b = 2.34 mm (88 mm long) at Thornton's δ = 0.918 mm, while the
+  // overlap at that δ is only √(δ/A) = 50 mm; the overlap-held approach is
+  // δ = a b √(AB) + r (δ_H − a b √(AB)) and the patch a' = √(δ/A), b' = a b / a'.
+  Material mat;
+  mat.E = 210e9;
+  mat.nu = 0.28;
+  mat.p_lim = 900e6;
+  const double A = 3.614e-4 * 1e3, B = 0.03846 * 1e3;
+  const EllipseLaw L = make_ellipse_law(A, B, mat, true);
+  const EllipseState s = ellipse_state_for_force(L, 292e3);
+  REQUIRE(s.plastic);
+  CHECK(s.a <= std::sqrt(s.approach / A) * (1 + 1e-12));
+  CHECK(s.b <= std::sqrt(s.approach / B) * (1 + 1e-12));
+  // Area (hence the capped load π a b p_lim (1 − s²/3)) is the law's: (m/n) h0 / B.
+  CHECK(rel(kPi * s.a * s.b, kPi * (L.c.m / L.c.n) * s.h0 / B) <= 1e-12);
+  // The approach between the rigid–plastic overlap of the area and the Hertz approach.
+  const double d_ov = s.a * s.b * std::sqrt(A * B);
+  const double C = std::sqrt(s.h0 / B) / L.c.n;
+  const double d_H = L.c.rho * C * C * (A + B);
+  CHECK(s.approach > d_ov);
+  CHECK(s.approach < 0.6 * d_H);  // Thornton's δ of the grown patch was d_H
 }

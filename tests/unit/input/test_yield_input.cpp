@@ -1,4 +1,4 @@
-// material.yield_MPa: the yield stress as input (issue 24 §2). p_lim is derived from it by the
+// material.yield_MPa: the yield stress as input. p_lim is derived from it by the
 // calibration p_lim = kPlimPerYield σ_y (docs/method.md §5.1) unless p_lim_MPa is given.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
