@@ -111,14 +111,14 @@ bool result_ok(const mhc_result* out, std::size_t result_size) {
 }
 
 void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_result* out) {
-  const std::size_t size = out->struct_size;
-  std::memset(static_cast<void*>(out), 0, sizeof(mhc_result));
-  out->struct_size = size;
+  // Every field is set below; of the ~1 kB contact array only the slots left unused are cleared
+  // (so that equal cases give equal bytes).
   out->status = status_code(r.status);
   out->method = method_code(r.method);
   out->n_contacts = r.n_contacts;
   out->iterations = r.iterations;
   out->n_warnings = static_cast<int32_t>(r.warnings.size());
+  out->warnings = 0;
   for (const std::string& w : r.warnings) out->warnings |= warning_bit(w);
   out->tY_m = tY;
   out->Q_N = std::isnan(Q) ? r.Fz : Q;
@@ -134,12 +134,14 @@ void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_res
   out->gamma_main_rad = kNaN;
   out->r_roll_main_m = kNaN;
   out->dFz_ddz_N_per_m = failed ? kNaN : 0.0;
+  out->plastic = 0;
+  out->reserved = 0;
   if (r.n_contacts > MHC_MAX_CONTACTS) out->warnings |= MHC_WARN_TRUNCATED;
   const LoadedEllipse* main = nullptr;
   int k = 0;
   for (const LoadedEllipse& L : r.loaded) {
     if (!main || L.s.N > main->s.N) main = &L;
-    const double cg = std::cos(L.g.gamma), sg = std::sin(L.g.gamma);
+    const double cg = L.cos_gamma, sg = L.sin_gamma;
     const double dN_dh0 = normal_stiffness(L);
     out->dFz_ddz_N_per_m += dN_dh0 * cg * cg;  // d(N cos γ)/dδz with dh0/dδz = cos γ (eq. 11)
     if (plastic && L.s.plastic) out->plastic = 1;
@@ -198,6 +200,8 @@ void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_res
     c.approach_m = P.approach;
     c.dN_ddz_N_per_m = kNaN;
   }
+  if (k < MHC_MAX_CONTACTS)
+    std::memset(static_cast<void*>(&out->contact[k]), 0, sizeof(mhc_contact) * static_cast<std::size_t>(MHC_MAX_CONTACTS - k));
   if (!failed && r.method != Method::MultiHertzian) out->dFz_ddz_N_per_m = kNaN;
   if (main_patch) {
     out->gamma_main_rad = main_patch->gamma;
@@ -220,7 +224,7 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
     judge_validity(ws.r, pair.options.strips.d_comb);  // as solve_contact does for a load given
     fill_result(ws.r, tY, kNaN, pair.plastic, out);
   } else {
-    ws.r = solve_contact(pair.pg.geo, pair.material, tY, value, pair.options);
+    solve_contact(pair.pg.geo, pair.material, tY, value, pair.options, ws.r);
     fill_result(ws.r, tY, value, pair.plastic, out);
   }
   if (ws.r.status != CaseStatus::Ok) last_message() = ws.r.message;

@@ -50,6 +50,7 @@ std::vector<std::string> validity_failures(const std::vector<std::string>& warni
 struct LoadedEllipse {
   int ellipse = 0;          ///< 1-based index of the potential ellipse
   CandidateGeom g;          ///< its strip (interpolated at the case's t_Y)
+  double cos_gamma = 1, sin_gamma = 0;  ///< cos γ, sin γ of g.gamma, as the solver used them (eqs. 10–11)
   double A = 0, B = 0;      ///< [1/m] (eq. 1)
   HertzCoefficients c;
   double h_y = INFINITY;    ///< [m] yield penetration of its law (docs/method.md §5); INFINITY when elastic

@@ -92,4 +92,14 @@ CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double t
   return r;
 }
 
+void solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt,
+                   CaseResult& out) {
+  if (opt.method != Method::MultiHertzian) {
+    out = solve_contact(G, mat, tY, Q, opt);
+    return;
+  }
+  solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian, out);
+  judge_validity(out, opt.strips.d_comb);  // as above
+}
+
 }  // namespace mh

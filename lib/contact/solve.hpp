@@ -12,4 +12,10 @@ namespace mh {
 /// Solve one case by opt.method. Never throws for a numerical reason (the status says it).
 CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt);
 
+/// The same into `out`. The multi-Hertzian method reuses out's vectors (solve_multi_hertz's
+/// second form: no allocation once they have grown, for the C interface's workspace); the other
+/// methods assign a fresh result.
+void solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt,
+                   CaseResult& out);
+
 }  // namespace mh

@@ -49,6 +49,7 @@ bool WheelsetOptions::valid(std::string* why) const {
   if (!(jump_distance > 0)) return bad("jump_distance", jump_distance, "must be > 0");
   if (!(max_roll > 0 && max_roll < 0.5)) return bad("max_roll", max_roll, "must lie in (0, 0.5 rad)");
   if (!(roll_tolerance > 0 && roll_tolerance < 1e-3)) return bad("roll_tolerance", roll_tolerance, "must lie in (0, 1e-3 rad)");
+  if (!(max_displacement >= 0 && max_displacement <= 0.2)) return bad("max_displacement", max_displacement, "must lie in [0, 200 mm]");
   return true;
 }
 
@@ -71,11 +72,8 @@ Wheelset::Wheelset(const Profile& wheel_left, const Profile& wheel_right, const 
   const Profile* wheels[2] = {&wheel_left, &wheel_right};
   const Profile* rails[2] = {&rail_left, &rail_right};
   std::shared_ptr<const ProfileCurve> wc[2], rc[2];
-  for (int k = 0; k < 2; ++k) {
-    // One profile for both sides (mirrored) is smoothed once.
-    wc[k] = k == 1 && wheels[1] == wheels[0] ? wc[0] : std::make_shared<const ProfileCurve>(*wheels[k], opt.curve);
+  for (int k = 0; k < 2; ++k)  // one profile for both sides (mirrored) is smoothed once
     rc[k] = k == 1 && rails[1] == rails[0] ? rc[0] : std::make_shared<const ProfileCurve>(*rails[k], opt.curve);
-  }
   double gauge_y[2] = {kNaN, kNaN};
   for (int k = 0; k < 2; ++k) {
     Side& S = side_[k];
@@ -83,7 +81,6 @@ Wheelset::Wheelset(const Profile& wheel_left, const Profile& wheel_right, const 
     S.R = rc[k];
     S.s = k == 0 ? -1.0 : 1.0;
     S.R0 = k == 0 ? P.nominal_radius_left : P.nominal_radius_right;
-    set_wheel(S, wc[k], *wheels[k]);
     S.a = P.flange_back_distance / 2 - P.flange_back_position;
     const RailLandmarks L = rail_landmarks(*rails[k], P.gauge_height);
     if (L.has_gauge) gauge_y[k] = L.y_gauge;
@@ -107,6 +104,30 @@ Wheelset::Wheelset(const Profile& wheel_left, const Profile& wheel_right, const 
       S.zr_table[i] = S.R->z(std::min(S.yr_min + S.rail_step * static_cast<double>(i), S.yr_max));
   }
   measured_gauge_ = (c_[0] + gauge_y[0]) + (c_[1] + gauge_y[1]);
+  const CurveOptions wopt = wheel_curve_options();
+  for (int k = 0; k < 2; ++k) {
+    wc[k] = k == 1 && wheels[1] == wheels[0] ? wc[0] : std::make_shared<const ProfileCurve>(*wheels[k], wopt);
+    set_wheel(side_[k], wc[k], *wheels[k]);
+  }
+}
+
+CurveOptions Wheelset::wheel_curve_options() const {
+  // Wheel coordinate facing rail coordinate y_r without roll: η = y_r − (s y − c) − a, for |y| up
+  // to max_displacement and y_r over the rail (contact(): y_r = U0 + cos·(a + η) − sin·q). The
+  // roll (Solved) moves it by up to sin(max_roll)·(R0 + 0.1 m), as contact()'s scan allows; the
+  // fits of the nodes at the ends reach two window half-widths (the one-sided windows) beyond.
+  const CurveOptions& c = opt_.curve;
+  const double reach = 2 * std::max(c.window_half_width, c.measured_window_half_width) + 1e-3;
+  double lo = 0, hi = 0;  // the taping line (y = 0) is always kept: z_w(0) is the radius's reference
+  for (const Side& S : side_) {
+    const double roll = opt_.roll == WheelsetRoll::Solved ? std::sin(opt_.max_roll) * (S.R0 + 0.1) : 0.0;
+    lo = std::min(lo, S.yr_min - opt_.max_displacement + S.c - S.a - roll - reach);
+    hi = std::max(hi, S.yr_max + opt_.max_displacement + S.c - S.a + roll + reach);
+  }
+  CurveOptions w = c;
+  w.y_from = std::max(w.y_from, lo);
+  w.y_to = std::min(w.y_to, hi);
+  return w;
 }
 
 void Wheelset::set_wheel(Side& S, std::shared_ptr<const ProfileCurve> W, const Profile& wheel) {
@@ -117,14 +138,21 @@ void Wheelset::set_wheel(Side& S, std::shared_ptr<const ProfileCurve> W, const P
                      "check the profile's origin (taping line 70 mm from the flange back) and mirror options");
   S.zw0 = S.W->z(0.0);
   S.yw_min = S.W->y_min(), S.yw_max = S.W->y_max();
-  const std::size_t nw = static_cast<std::size_t>(std::floor((S.yw_max - S.yw_min) / opt_.scan_step)) + 1;
+  const double h = opt_.scan_step;
+  S.ys0 = wheel.y.front();
+  S.is0 = static_cast<std::size_t>(std::max(0.0, std::ceil((S.yw_min - S.ys0) / h)));
+  while (S.is0 > 0 && S.eta(0, h) - h >= S.yw_min) --S.is0;  // the first grid point inside
+  while (S.eta(0, h) < S.yw_min) ++S.is0;
+  std::size_t nw = 0;
+  while (S.eta(nw, h) <= S.yw_max) ++nw;
   S.zw_scan.resize(nw);
-  for (std::size_t i = 0; i < nw; ++i) S.zw_scan[i] = S.W->z(S.yw_min + opt_.scan_step * static_cast<double>(i));
+  for (std::size_t i = 0; i < nw; ++i) S.zw_scan[i] = S.W->z(S.eta(i, h));
 }
 
 Wheelset::Wheelset(const Wheelset& track, const Profile& wheel_left, const Profile& wheel_right) : Wheelset(track) {
-  auto wl = std::make_shared<const ProfileCurve>(wheel_left, opt_.curve);
-  auto wr = &wheel_right == &wheel_left ? wl : std::make_shared<const ProfileCurve>(wheel_right, opt_.curve);
+  const CurveOptions wopt = wheel_curve_options();
+  auto wl = std::make_shared<const ProfileCurve>(wheel_left, wopt);
+  auto wr = &wheel_right == &wheel_left ? wl : std::make_shared<const ProfileCurve>(wheel_right, wopt);
   set_wheel(side_[0], wl, wheel_left);
   set_wheel(side_[1], wr, wheel_right);
 }
@@ -150,14 +178,15 @@ WheelContact Wheelset::contact(const Side& S, double y, double phi, bool* found)
   const std::size_t n = S.zw_scan.size();
   const double slack = std::fabs(sn) * (S.R0 + 0.1) + h;
   const double e_lo = (S.yr_min - U0 - slack) / cs - S.a, e_hi = (S.yr_max - U0 + slack) / cs - S.a;
-  const double i_lo = std::floor((e_lo - S.yw_min) / h), i_hi = std::ceil((e_hi - S.yw_min) / h);
+  const double e0 = S.eta(0, h);
+  const double i_lo = std::floor((e_lo - e0) / h), i_hi = std::ceil((e_hi - e0) / h);
   const std::size_t i0 = i_lo <= 0 ? 0 : std::min(n, static_cast<std::size_t>(i_lo));
   const std::size_t i1 = i_hi < 0 ? 0 : std::min(n, static_cast<std::size_t>(i_hi) + 1);
   thread_local std::vector<double> G;
   G.assign(n, kNaN);
   double gmin = std::numeric_limits<double>::infinity();
   for (std::size_t i = i0; i < i1; ++i) {
-    const double eta = S.yw_min + h * static_cast<double>(i);
+    const double eta = S.eta(i, h);
     const double p = S.a + eta, q = -S.R0 + (S.zw_scan[i] - S.zw0);
     const double yr = U0 + cs * p - sn * q;
     if (yr < S.yr_min || yr > S.yr_max) continue;
@@ -176,7 +205,7 @@ WheelContact Wheelset::contact(const Side& S, double y, double phi, bool* found)
     const bool has_l = i > 0 && !std::isnan(G[i - 1]), has_r = i + 1 < n && !std::isnan(G[i + 1]);
     if ((has_l && G[i - 1] < G[i]) || (has_r && G[i + 1] < G[i])) continue;  // not a local minimum
     if (has_l && G[i - 1] == G[i]) continue;                                  // a plateau: its first sample only
-    const double eta_i = S.yw_min + h * static_cast<double>(i);
+    const double eta_i = S.eta(i, h);
     Cand c{eta_i, 0, 0, !(has_l && has_r)};
     if (!c.edge) {
       // Refine: G'(η) = 0 between the neighbours (TOMS 748), else the minimum of G (Brent).

@@ -80,6 +80,13 @@ struct WheelsetOptions {
   /// within 0.0005 mm of the table (its rounding) at 0.01 mm, 0.0016 mm at 0.02 (at y = ±3.0 mm),
   /// 0.0021 mm at 0.03, 0.0037 mm at 0.05.
   CurveOptions curve = wheelset_curve_defaults();
+  /// [m] the largest |y| the wheelset is asked for (default 20 mm). The wheel profiles are
+  /// smoothed only over the part that can face a rail for |y| up to this (the rail's width
+  /// shifted by ±y, the roll's reach when solved, and twice the widest fit window on each side):
+  /// a third of the smoothing of a 135 mm wheel is saved on EN 15302 rail A. A y beyond it is
+  /// still answered, on that part only (a contact at its end is off_profile: never a silent
+  /// figure). The jobs set it from the sweep.
+  double max_displacement = 0.020;
   static CurveOptions wheelset_curve_defaults() {
     CurveOptions c;
     c.grid_step = 0.02e-3;
@@ -151,7 +158,12 @@ class Wheelset {
     double a = 0, c = 0;          // taping line and rail origin |Y|
     double s = 1;                 // +1 right, −1 left
     double yw_min = 0, yw_max = 0, yr_min = 0, yr_max = 0;
-    // Scan tables: wheel heights every scan_step from yw_min; rail heights every rail_step.
+    // Scan tables: wheel heights every scan_step on the grid anchored at the wheel profile's first
+    // point (ys0; sample i of the table is grid point is0 + i, so a wheel smoothed only in part
+    // is scanned at the same η as in full); rail heights every rail_step.
+    double ys0 = 0;
+    std::size_t is0 = 0;
+    double eta(std::size_t i, double h) const { return ys0 + h * static_cast<double>(is0 + i); }
     std::vector<double> zw_scan;
     double rail_step = 0;
     std::vector<double> zr_table;
@@ -163,6 +175,9 @@ class Wheelset {
   WheelsetOptions opt_;
 
   void set_wheel(Side& S, std::shared_ptr<const ProfileCurve> W, const Profile& wheel);
+  /// The smoothing options of the wheels: opt_.curve limited to the part that can face the
+  /// rails (max_displacement), once the rails are placed.
+  CurveOptions wheel_curve_options() const;
   /// Contact of one wheel with the wheelset at displacement y and roll phi.
   WheelContact contact(const Side& S, double y, double phi, bool* found) const;
 };

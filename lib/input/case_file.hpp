@@ -19,11 +19,16 @@ namespace mh {
 /// Where a profile comes from: a file (with reading options) or a standard definition.
 struct ProfileSource {
   std::string file;          ///< resolved path (relative paths are relative to the case file)
+  /// The path as the case file or manifest gives it (a glob's matches relative to the manifest,
+  /// as the pattern was): what outputs name, so that they do not depend on where the files live.
+  std::string given;
   std::string standard;      ///< e.g. "S1002", "60E1", "54E1" (then `file` is empty)
   double step = 0.1e-3;      ///< [m] node spacing of a generated standard profile (default 0.1 mm)
   ProfileReadOptions read;
   std::string json_path;     ///< e.g. "/wheel/profile", for messages
   std::string case_file;     ///< the case file that named it, for messages
+  /// How outputs name the profile: `given`, or "standard:NAME".
+  std::string label() const { return standard.empty() ? given : "standard:" + standard; }
 };
 
 enum class Model { Elastic, Plastic };

@@ -28,7 +28,8 @@ ProfileSource parse_profile_source(const Ctx& c, const json& v, const std::strin
   s.json_path = path;
   s.case_file = case_path;
   if (v.is_string()) {
-    s.file = resolve_path(case_path, v.get<std::string>());
+    s.given = v.get<std::string>();
+    s.file = resolve_path(case_path, s.given);
     return s;
   }
   if (!v.is_object()) c.fail(path, &v, "a profile is a file name, {\"file\": ...} or {\"standard\": ...}");
@@ -40,7 +41,8 @@ ProfileSource parse_profile_source(const Ctx& c, const json& v, const std::strin
   }
   c.only_keys(v, path, {"file", "format", "mirror_y", "mirror_z", "scale", "kind", "vampire_side", "check", "cleanup", "section"});
   if (!v.contains("file")) c.fail(path, &v, "a profile object needs \"file\" (or \"standard\")");
-  s.file = resolve_path(case_path, c.string(v, path, "file"));
+  s.given = c.string(v, path, "file");
+  s.file = resolve_path(case_path, s.given);
   if (v.contains("format")) {
     try {
       s.read.format = parse_profile_format(c.string(v, path, "format"));

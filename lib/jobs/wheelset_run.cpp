@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 #include <ostream>
 #include <thread>
@@ -50,6 +52,15 @@ std::unique_ptr<EquivalentConicity> conicity_of(const std::vector<double>& ys, c
   return std::make_unique<EquivalentConicity>(y, dr);
 }
 
+/// The case's options with max_displacement the sweep's largest |y| (the wheels are smoothed only
+/// over what can face the rails there).
+WheelsetOptions sweep_options(const WheelsetCase& wc) {
+  WheelsetOptions o = wc.options;
+  o.max_displacement = 0;
+  for (double y : wc.y) o.max_displacement = std::max(o.max_displacement, std::fabs(y));
+  return o;
+}
+
 unsigned thread_count(unsigned t) { return std::max(1u, t ? t : std::thread::hardware_concurrency()); }
 
 int single_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostream& out, std::ostream& err) {
@@ -57,7 +68,7 @@ int single_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostre
   const Profile wr = wc.one_wheel ? wl : load_profile(wc.wheel_right, ProfileKind::Wheel);
   const Profile rl = load_profile(wc.rail_left, ProfileKind::Rail, wc.inclination);
   const Profile rr = wc.one_rail ? rl : load_profile(wc.rail_right, ProfileKind::Rail, wc.inclination);
-  const Wheelset ws(wl, wc.one_wheel ? wl : wr, rl, wc.one_rail ? rl : rr, wc.placement, wc.options);
+  const Wheelset ws(wl, wc.one_wheel ? wl : wr, rl, wc.one_rail ? rl : rr, wc.placement, sweep_options(wc));
   const std::vector<WheelsetState> st = ws.sweep(wc.y, thread_count(opt.threads));
   const bool roll = wc.options.roll == WheelsetRoll::Solved;
 
@@ -94,10 +105,12 @@ int single_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostre
   nlohmann::ordered_json sum;
   sum["schema"] = kWheelsetSchema;
   sum["inputs"] = wc.resolved_json();
-  sum["wheel_left"] = wl.source;
-  sum["wheel_right"] = wr.source;
-  sum["rail_left"] = rl.source;
-  sum["rail_right"] = rr.source;
+  // The profiles as the case file names them (never resolved: outputs do not depend on where the
+  // repository or the files live).
+  sum["wheel_left"] = wc.wheel_left.label();
+  sum["wheel_right"] = wc.wheel_right.label();
+  sum["rail_left"] = wc.rail_left.label();
+  sum["rail_right"] = wc.rail_right.label();
   sum["rail_origin_mm"] = {{"left", ws.rail_origin(-1) * units::per_mm}, {"right", ws.rail_origin(+1) * units::per_mm}};
   sum["measured_gauge_mm"] = std::isfinite(ws.measured_gauge()) ? nlohmann::json(ws.measured_gauge() * units::per_mm) : nlohmann::json();
   sum["tan_gamma_e_3mm"] = std::isfinite(head.tan_gamma_e) ? nlohmann::json(head.tan_gamma_e) : nlohmann::json();
@@ -126,8 +139,41 @@ struct FleetRow {
   std::string source, status = "ok", message;
   double head = std::nan("");
   std::vector<double> tg;
-  WheelMeasures m;
+  double Sd = std::nan(""), Sh = std::nan(""), qR = std::nan("");  ///< [m]
+  std::string measures_from;  ///< "file", "profile", "file+profile" (some of each), "" (none)
 };
+
+/// The wheel's Sd, Sh, qR: as its file's header states them (MiniProf "Sd/Sh/qR" measures line
+/// or Sd=, Sh=, qR= keys, in mm: Profile::file_measures), else computed from the profile (EN
+/// 15313, wheel_measures), each on its own; `measures_from` says which.
+void fleet_measures(const Profile& w, FleetRow& r) {
+  const WheelMeasures m = wheel_measures(w);
+  const char* names[3] = {"sd", "sh", "qr"};
+  double* out[3] = {&r.Sd, &r.Sh, &r.qR};
+  const double computed[3] = {m.Sd, m.Sh, m.qR};
+  bool any_file = false, any_profile = false;
+  for (int k = 0; k < 3; ++k) {
+    for (const auto& [key, val] : w.file_measures) {
+      std::string lk = key;
+      for (char& ch : lk) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      if (lk != names[k]) continue;
+      char* end = nullptr;
+      const double v = std::strtod(val.c_str(), &end);
+      if (end != val.c_str() && std::isfinite(v)) *out[k] = v * units::mm;
+    }
+    if (std::isfinite(*out[k])) any_file = true;
+    else if (m.valid) *out[k] = computed[k], any_profile = true;
+  }
+  r.measures_from = any_file && any_profile ? "file+profile" : any_file ? "file" : any_profile ? "profile" : "";
+}
+
+/// `text` with every occurrence of `from` replaced by `to` (a reader's message naming the resolved
+/// path, written with the path as given).
+std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  if (from.empty()) return text;
+  for (std::size_t p = 0; (p = text.find(from, p)) != std::string::npos; p += to.size()) text.replace(p, from.size(), to);
+  return text;
+}
 
 int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostream& out, std::ostream& err) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -135,17 +181,17 @@ int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostrea
   const Profile rr = wc.one_rail ? rl : load_profile(wc.rail_right, ProfileKind::Rail, wc.inclination);
   // The rails are smoothed and placed once (with a stand-in wheel); each wheel then replaces it.
   const Profile stand_in = make_standard_profile("S1002");
-  const Wheelset track(stand_in, stand_in, rl, wc.one_rail ? rl : rr, wc.placement, wc.options);
+  const Wheelset track(stand_in, stand_in, rl, wc.one_rail ? rl : rr, wc.placement, sweep_options(wc));
   const std::size_t n = wc.fleet.size();
   std::vector<FleetRow> rows(n);
   std::atomic<std::size_t> next{0};
   auto work = [&]() {
     for (std::size_t i; (i = next++) < n;) {
       FleetRow& r = rows[i];
-      r.source = wc.fleet[i].standard.empty() ? wc.fleet[i].file : "standard:" + wc.fleet[i].standard;
+      r.source = wc.fleet[i].label();
       try {
         const Profile w = load_profile(wc.fleet[i], ProfileKind::Wheel);
-        r.m = wheel_measures(w);
+        fleet_measures(w, r);
         const Wheelset ws(track, w, w);
         const std::vector<WheelsetState> st = ws.sweep(wc.y, 1);
         const auto C = conicity_of(wc.y, st);
@@ -160,7 +206,7 @@ int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostrea
         }
       } catch (const InputError& e) {
         r.status = kInvalidWheel;
-        r.message = e.what();
+        r.message = replace_all(e.what(), wc.fleet[i].file, wc.fleet[i].given);
         r.tg.assign(wc.amplitudes.size(), std::nan(""));
       }
     }
@@ -187,11 +233,11 @@ int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostrea
         s += ',';
         cells::num(s, v);
       }
-      for (double v : {r.m.Sd, r.m.Sh, r.m.qR}) {
+      for (double v : {r.Sd, r.Sh, r.qR}) {
         s += ',';
-        if (r.m.valid) cells::num(s, v * units::per_mm);
+        if (std::isfinite(v)) cells::num(s, v * units::per_mm);
       }
-      s += ',';
+      s += ',' + r.measures_from + ',';
       cells::csv_text(s, r.message);
       s += '\n';
     }

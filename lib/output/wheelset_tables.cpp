@@ -63,7 +63,7 @@ void conicity_csv_row(std::string& row, double amplitude_mm, const ConicityResul
 std::string fleet_csv_header(const std::vector<double>& amplitudes_mm) {
   std::string h = "wheel,source,status,tan_gamma_e_3mm";
   for (double a : amplitudes_mm) h += ",tan_gamma_e_" + format_number(a) + "mm";
-  return h + ",Sd_mm,Sh_mm,qR_mm,message\n";
+  return h + ",Sd_mm,Sh_mm,qR_mm,measures_from,message\n";
 }
 
 }  // namespace mh

@@ -1,5 +1,7 @@
 #include "profile/curve.hpp"
 
+#include "core/roots.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -171,8 +173,20 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w) {
       throw InputError(where, "y = " + std::to_string(p.y[i] * 1e3) + " mm",
                        "profile points must have strictly increasing y");
   h_ = opt.grid_step;
-  y0_ = p.y.front();
-  const std::size_t m = static_cast<std::size_t>(std::floor((p.y.back() - y0_) / h_ + 1e-9)) + 1;
+  const double y_first = p.y.front();
+  const std::size_t m_all = static_cast<std::size_t>(std::floor((p.y.back() - y_first) / h_ + 1e-9)) + 1;
+  // Nodes j_lo … j_lo + m − 1 of the full grid (CurveOptions::y_from, y_to), at least two.
+  std::size_t j_lo = 0, j_hi = m_all - 1;
+  if (opt.y_from > y_first) j_lo = std::min(m_all - 1, static_cast<std::size_t>(std::floor((opt.y_from - y_first) / h_)));
+  if (opt.y_to < p.y.back()) j_hi = std::min(m_all - 1, static_cast<std::size_t>(std::ceil((opt.y_to - y_first) / h_)));
+  if (j_hi < j_lo + 1) {
+    j_hi = std::min(m_all - 1, j_lo + 1);
+    j_lo = j_hi > 0 ? j_hi - 1 : 0;
+  }
+  const std::size_t m = j_hi - j_lo + 1;
+  y_first_ = y_first;
+  j0_ = j_lo;
+  y0_ = y_first + h_ * static_cast<double>(j_lo);
   z_.resize(m); dz_.resize(m); k_.resize(m); side_.resize(m);
   const auto& Y = p.y;
   const auto& Z = p.z;
@@ -194,8 +208,9 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w) {
       if (dir > 0 && i1 == n && i0 > 0) --i0;
     }
   };
+  rms.reserve(m);
   for (std::size_t j = 0; j < m; ++j) {
-    const double yc = y0_ + h_ * static_cast<double>(j);
+    const double yc = y_first + h_ * static_cast<double>(j_lo + j);
     // Linear interpolation of the raw points as the local origin height.
     std::size_t k = std::min(std::max<std::size_t>(upper_y(yc), 1), n - 1);
     const double t = (yc - Y[k - 1]) / (Y[k] - Y[k - 1]);
@@ -240,20 +255,23 @@ ProfileCurve::ProfileCurve(const SmoothedProfile& sp, double grid_step, const No
   const double s_end = S.back();
   h_ = grid_step;
   y0_ = sp.y.eval(S.front());
+  y_first_ = y0_;  // the whole grid (no CurveOptions::y_from / y_to window)
+  j0_ = 0;
   const double y_end = sp.y.eval(s_end);
   const std::size_t m = static_cast<std::size_t>(std::floor((y_end - y0_) / h_ + 1e-9)) + 1;
   z_.resize(m); dz_.resize(m); k_.resize(m); side_.assign(m, 0);
   double s_lo = S.front();
   for (std::size_t j = 0; j < m; ++j) {
     const double yj = y0_ + h_ * static_cast<double>(j);
-    // s where y(s) = yj: bisection from the previous node's s (y(s) increases with s).
-    double a = s_lo, b = s_end;
-    for (int it = 0; it < 100 && b - a > 1e-15; ++it) {
-      const double c = 0.5 * (a + b);
-      (sp.y.eval(c) < yj ? a : b) = c;
-    }
-    const double s = 0.5 * (a + b);
-    s_lo = a;
+    // s where y(s) = yj, from the previous node's s (y(s) increases with s): bisection
+    // (core/roots.hpp).
+    RootTolerance tol;
+    tol.abs = 1e-15;
+    tol.rel = 0;
+    const double fa = sp.y.eval(s_lo) - yj, fb = sp.y.eval(s_end) - yj;
+    const double s = fa >= 0 ? s_lo : fb <= 0 ? s_end
+                                              : bisected_root([&](double c) { return sp.y.eval(c) - yj; }, s_lo, s_end, tol).x;
+    s_lo = s;
     double y1 = 0, y2 = 0, z1 = 0, z2 = 0;
     sp.y.eval(s, &y1, &y2);
     z_[j] = sp.z.eval(s, &z1, &z2);
@@ -268,7 +286,7 @@ ProfileCurve::ProfileCurve(const SmoothedProfile& sp, double grid_step, const No
 
 double ProfileCurve::z(double y, double* dz) const {
   const std::size_t m = z_.size();
-  double s = (y - y0_) / h_;
+  double s = grid_pos(y);
   if (s <= 0) { if (dz) *dz = dz_[0]; return z_[0] + dz_[0] * (y - y0_); }
   if (s >= static_cast<double>(m - 1)) {
     if (dz) *dz = dz_[m - 1];
@@ -289,7 +307,7 @@ double ProfileCurve::z(double y, double* dz) const {
 
 double ProfileCurve::kappa(double y) const {
   const std::size_t m = k_.size();
-  double s = (y - y0_) / h_;
+  double s = grid_pos(y);
   if (s <= 0) return k_[0];
   if (s >= static_cast<double>(m - 1)) return k_[m - 1];
   const std::size_t i = static_cast<std::size_t>(s);
@@ -298,7 +316,7 @@ double ProfileCurve::kappa(double y) const {
 }
 
 int ProfileCurve::window_side(double y) const {
-  double s = std::round((y - y0_) / h_);
+  double s = std::round(grid_pos(y));
   s = std::clamp(s, 0.0, static_cast<double>(side_.size() - 1));
   return side_[static_cast<std::size_t>(s)];
 }

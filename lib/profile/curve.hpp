@@ -23,6 +23,7 @@
 // upwards. Radii with the paper's sign (positive when the centre of curvature is inside the
 // material, method.md §1): rail 1/R_rxx = −kappa (material below), wheel 1/R_wxx = +kappa
 // (material above).
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,13 @@ struct CurveOptions {
   double max_exact_rounding = 0.5e-6;         ///< [m]
   double measured_window_half_width = 3.0e-3; ///< [m] (default 3 mm)
   ProfileNoise noise = ProfileNoise::Auto;    ///< (default auto: decided from the data as above)
+  /// [m] Build the smooth representation only over [y_from, y_to] ∩ the profile (default: all of
+  /// it). The grid stays anchored at the profile's first point and every node is fitted from the
+  /// raw points as without the limits, so a node keeps its value as long as the measured/exact
+  /// decision, which looks at the built nodes only, is the same. The wheelset smooths only the
+  /// part of a wheel that can face the rail (wheelset.hpp).
+  double y_from = -std::numeric_limits<double>::infinity();
+  double y_to = std::numeric_limits<double>::infinity();
 };
 
 /// How a profile was classified by the curve fit (ProfileCurve::noise()).
@@ -86,7 +94,7 @@ class ProfileCurve {
   ProfileCurve(const SmoothedProfile& sp, double grid_step, const NoiseDecision& noise);
 
   double y_min() const { return y0_; }
-  double y_max() const { return y0_ + h_ * static_cast<double>(z_.size() - 1); }
+  double y_max() const { return y_first_ + h_ * static_cast<double>(j0_ + z_.size() - 1); }
   bool contains(double y) const { return y >= y_min() && y <= y_max(); }
 
   /// Smoothed height z(y) [m] and slope dz/dy at y (clamped to the range).
@@ -107,11 +115,17 @@ class ProfileCurve {
   double smoothing_max_change() const { return smoothing_max_; }
 
   const std::vector<double>& node_kappa() const { return k_; }
-  double node_y(std::size_t i) const { return y0_ + h_ * static_cast<double>(i); }
+  double node_y(std::size_t i) const { return y_first_ + h_ * static_cast<double>(j0_ + i); }
   std::size_t nodes() const { return z_.size(); }
 
  private:
   double y0_ = 0, h_ = 1;
+  // The full grid's origin (the profile's first point) and the index of the first node built
+  // (CurveOptions::y_from): positions are computed on the full grid, the same bits either way.
+  double y_first_ = 0;
+  std::size_t j0_ = 0;
+  /// (y − y_first)/h − j0: the position in nodes (exact subtraction of the integer j0).
+  double grid_pos(double y) const { return (y - y_first_) / h_ - static_cast<double>(j0_); }
   std::vector<double> z_, dz_, k_;
   std::vector<signed char> side_;
   double window_ = 0, median_rms_ = 0;

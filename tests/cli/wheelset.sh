@@ -43,16 +43,23 @@ check "solved roll has roll_deg" grep -q "delta_tan_gamma,roll_deg," solved/whee
 check "asymmetric: delta_r(0) < 0, roll(0) < 0" awk -F, '$1 == "0" { exit !($2 < -0.5 && $8 < 0) }' solved/wheelset.csv
 
 # --- a fleet with a wheel that cannot be placed ----------------------------------------------
+# Profiles named relative to the manifest: fleet.csv names them as given (never resolved: the
+# output does not depend on where the repository lives). The MiniProf wheel states Sd, Sh, qR in
+# its header: those are written (measures_from "file"); wheel A's are computed ("profile").
+ln -s "$SRC/profiles" profiles; ln -s "$SRC/tests/data/field" field
 cat > fleet.json <<EOF2
-{"wheels": ["$SRC/profiles/EN15302_wheel_A.dat", "$SRC/profiles/S1002.csv", "$SRC/profiles/60E1.csv"],
- "rail": {"profile": "$SRC/profiles/EN15302_rail_A.dat", "inclination": "as-is", "placement": "absolute", "origin_mm": 750},
+{"wheels": ["profiles/EN15302_wheel_A.dat", "field/kv_wheel_measures.whl", "profiles/60E1.csv"],
+ "rail": {"profile": "profiles/EN15302_rail_A.dat", "inclination": "as-is", "placement": "absolute", "origin_mm": 750},
  "y_mm": {"from": -8, "to": 8, "step": 0.02}, "amplitudes_mm": [2, 4]}
 EOF2
 "$BIN" wheelset fleet.json -o fleet >stdout.txt 2>stderr.txt
 check "fleet with a refused wheel exits 1" test $? -eq 1
-check "fleet header" test "$(head -1 fleet/fleet.csv)" = "wheel,source,status,tan_gamma_e_3mm,tan_gamma_e_2mm,tan_gamma_e_4mm,Sd_mm,Sh_mm,qR_mm,message"
-check "fleet wheel A row" awk -F, '$1 == "0" { exit !($3 == "ok" && $4 > 0.187 && $4 < 0.189) }' fleet/fleet.csv
+check "fleet header" test "$(head -1 fleet/fleet.csv)" = "wheel,source,status,tan_gamma_e_3mm,tan_gamma_e_2mm,tan_gamma_e_4mm,Sd_mm,Sh_mm,qR_mm,measures_from,message"
+check "fleet wheel A row" awk -F, '$1 == "0" { exit !($2 == "profiles/EN15302_wheel_A.dat" && $3 == "ok" && $4 > 0.187 && $4 < 0.189 && $10 == "profile") }' fleet/fleet.csv
+check "header measures from the MiniProf file" awk -F, '$1 == "1" { exit !($2 == "field/kv_wheel_measures.whl" && $7 == 32.5 && $8 == 28 && $9 == 10.8 && $10 == "file") }' fleet/fleet.csv
 check "a rail given as a wheel is refused, no figures" awk -F, '$1 == "2" { exit !($3 == "invalid_wheel" && $4 == "nan") }' fleet/fleet.csv
+check "no resolved path in fleet.csv" sh -c "! grep -q '$SRC' fleet/fleet.csv"
+check "summary.json names the profiles as given" grep -q '"wheel_left": "../profiles/EN15302_wheel_A.dat"' out/summary.json
 
 # --- must fail: exit 2, message with the JSON path, no output -------------------------------
 must_fail() {  # must_fail MESSAGE JSON

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <string>
 
 #include "core/numfmt.hpp"
@@ -49,52 +48,13 @@ void solve_multi_hertz_approach(const ContactGeometry& G, const Material& mat, d
     const CandidateGeom& g = ws.geo[e];
     const double h = (dz - g.gap) * std::cos(g.gamma);  // (eq. 11)
     if (!(h > 0)) continue;
-    const int idx = static_cast<int>(e) + 1;
-    // A loaded candidate off the end of a profile (method.md §3.7): never silent.
-    if (g.off_profile) r.warnings.push_back("off_profile:ellipse=" + std::to_string(idx));
-    // A and B, the Hertzian test and the law exactly as solve_multi_hertz builds them
-    // (candidate_ellipses shares that code: same bits).
+    // A, B, the Hertzian test, the law and the loaded ellipse exactly as solve_multi_hertz
+    // builds them (the same helpers: same bits).
     double A = 0, B = 0;
-    bool hertzian = false;
-    EllipseLaw law;
-    {
-      // eq. 1, as multi_hertz.cpp's curvature_sums
-      A = 1.0 / (2.0 * g.R_wyy());
-      if (g.r_roller > 0) A += 0.5 * g.k_ryy();
-      B = 0.5 * (g.k_wxx + g.k_rxx);
-      hertzian = B > 0 && A > 0 && std::isfinite(A) && std::isfinite(B);
-      if (hertzian) {
-        try {
-          law = make_ellipse_law(A, B, mat, opt.exact_coefficients);
-        } catch (const std::exception&) {
-          hertzian = false;  // λ beyond the Hertz range: nearly conformal, no ellipse
-        }
-      }
-    }
-    if (!hertzian) {
-      r.warnings.push_back("non_hertzian_excluded:ellipse=" + std::to_string(idx));
-      continue;
-    }
-    const double cg = std::cos(g.gamma), sg = std::sin(g.gamma);
-    LoadedEllipse L;
-    L.ellipse = idx;
-    L.g = g;
-    L.A = A;
-    L.B = B;
-    L.c = law.c;
-    L.h_y = law.h_y;
-    L.s = ellipse_state(law, h);
-    L.validity = hertz_validity(G, g, L.s.b, opt.validity);
-    if (G.rail_curve) L.z_r = G.rail_curve->z(g.y_r);
-    if (G.wheel_curve) L.z_w = G.wheel_curve->z(g.y_w);
-    if (!L.validity.valid)
-      r.warnings.push_back("non_hertzian:ellipse=" + std::to_string(idx) + ":" + L.validity.describe(opt.validity));
-    r.Fz += L.s.N * cg;
-    r.Fy += L.s.N * sg;
-    r.pmax = std::max(r.pmax, L.s.p_max);
-    r.area += units::pi * L.s.a * L.s.b;
-    r.approach = std::max(r.approach, L.s.approach / cg + g.gap);
-    r.loaded.push_back(L);
+    const bool hertzian = candidate_sums(g, &A, &B);
+    const EllipseLaw law = hertzian ? make_ellipse_law(A, B, mat, opt.exact_coefficients) : EllipseLaw{};
+    add_loaded_candidate(G, static_cast<int>(e) + 1, g, A, B, hertzian ? &law : nullptr, h, std::cos(g.gamma),
+                         std::sin(g.gamma), opt, r);
   }
   r.n_contacts = static_cast<int>(r.loaded.size());
   if (r.loaded.empty()) {

@@ -57,25 +57,56 @@ struct LawCache {
   }
 };
 
-// A and B [1/m] of a candidate (eq. 1).
-void curvature_sums(const CandidateGeom& g, double* A, double* B) {
+}  // namespace
+
+bool candidate_sums(const CandidateGeom& g, double* A, double* B) {
   // Roller rig: + 1/(2 R_ryy) in A; a straight rail adds nothing.
-  const CurvatureSums s = mh::curvature_sums(g.R_wyy(), g.r_roller > 0 ? g.k_ryy() : 0.0, g.k_wxx, g.k_rxx);
+  const CurvatureSums s = curvature_sums(g.R_wyy(), g.r_roller > 0 ? g.k_ryy() : 0.0, g.k_wxx, g.k_rxx);
   *A = s.A;
   *B = s.B;
-}
-
-// A candidate has a Hertz ellipse when both curvature sums are positive and finite and λ = A/B is
-// within the range of the Hertz coefficients (hertz.hpp): beyond it the contact is nearly
-// conformal, not an ellipse. Any other failure to build a law (an invalid material) is a bug of
-// the caller and propagates as an exception: an internal error, never "non-Hertzian".
-bool hertzian_sums(double A, double B) {
-  if (!(B > 0 && A > 0 && std::isfinite(A) && std::isfinite(B))) return false;
-  const double lambda = A / B;
+  // A Hertz ellipse when both sums are positive and finite and λ = A/B is within the range of the
+  // Hertz coefficients (hertz.hpp): beyond it the contact is nearly conformal, not an ellipse. Any
+  // other failure to build a law (an invalid material) is a bug of the caller and propagates as
+  // an exception: an internal error, never "non-Hertzian".
+  if (!(s.B > 0 && s.A > 0 && std::isfinite(s.A) && std::isfinite(s.B))) return false;
+  const double lambda = s.A / s.B;
   return lambda >= kLambdaMinExact && lambda <= kLambdaMaxExact;
 }
 
-}  // namespace
+void add_loaded_candidate(const ContactGeometry& G, int ellipse, const CandidateGeom& g, double A, double B,
+                          const EllipseLaw* law, double h, double cg, double sg, const MultiHertzOptions& opt,
+                          CaseResult& r) {
+  // A loaded candidate off the end of a profile (method.md §3.7): its geometry is the end's,
+  // extrapolated; never silent.
+  if (g.off_profile) r.warnings.push_back("off_profile:ellipse=" + std::to_string(ellipse));
+  if (!law) {
+    r.warnings.push_back("non_hertzian_excluded:ellipse=" + std::to_string(ellipse));
+    return;
+  }
+  r.loaded.emplace_back();
+  LoadedEllipse& L = r.loaded.back();
+  L.ellipse = ellipse;
+  L.g = g;
+  L.cos_gamma = cg;
+  L.sin_gamma = sg;
+  L.A = A;
+  L.B = B;
+  L.c = law->c;
+  L.h_y = law->h_y;
+  L.s = ellipse_state(*law, h);
+  L.validity = hertz_validity(G, g, L.s.b, opt.validity);
+  // The contact point on each profile: for plots and checks.
+  if (G.rail_curve) L.z_r = G.rail_curve->z(g.y_r);
+  if (G.wheel_curve) L.z_w = G.wheel_curve->z(g.y_w);
+  if (!L.validity.valid)
+    r.warnings.push_back("non_hertzian:ellipse=" + std::to_string(ellipse) + ":" + L.validity.describe(opt.validity));
+  r.Fz += L.s.N * cg;
+  r.Fy += L.s.N * sg;
+  // Case summary shared with the grid methods (case_result.hpp).
+  r.pmax = std::max(r.pmax, L.s.p_max);
+  r.area += units::pi * L.s.a * L.s.b;
+  r.approach = std::max(r.approach, L.s.approach / cg + g.gap);
+}
 
 void candidate_ellipses(const ContactGeometry& G, const Material& mat, double tY, const MultiHertzOptions& opt,
                         std::vector<CandidateEllipse>& out) {
@@ -88,8 +119,7 @@ void candidate_ellipses(const ContactGeometry& G, const Material& mat, double tY
     CandidateEllipse& c = out[e];
     c.ellipse = static_cast<int>(e) + 1;
     c.g = geo[e];
-    curvature_sums(c.g, &c.A, &c.B);
-    c.hertzian = hertzian_sums(c.A, c.B);
+    c.hertzian = candidate_sums(c.g, &c.A, &c.B);
     if (c.hertzian) c.c = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients).c;
     if (G.rail_curve) c.z_r = G.rail_curve->z(c.g.y_r);
     if (G.wheel_curve) c.z_w = G.wheel_curve->z(c.g.y_w);
@@ -97,18 +127,35 @@ void candidate_ellipses(const ContactGeometry& G, const Material& mat, double tY
 }
 
 CaseResult solve_multi_hertz(const ContactGeometry& G, const Material& mat, double tY, double Q,
-                      const MultiHertzOptions& opt) {
+                             const MultiHertzOptions& opt) {
   CaseResult r;
+  solve_multi_hertz(G, mat, tY, Q, opt, r);
+  return r;
+}
+
+void solve_multi_hertz(const ContactGeometry& G, const Material& mat, double tY, double Q,
+                       const MultiHertzOptions& opt, CaseResult& r) {
+  // Reset as a fresh CaseResult, keeping the vectors' capacity.
+  r.status = CaseStatus::Ok;
+  r.method = Method::MultiHertzian;
+  r.message.clear();
+  r.warnings.clear();
+  r.dz = r.approach = r.residual = 0;
+  r.iterations = 0;
+  r.Fz = r.Fy = r.pmax = r.area = 0;
+  r.n_contacts = 0;
+  r.loaded.clear();
+  r.patches.clear();
   if (!(Q > 0) || !std::isfinite(Q)) {
     r.status = CaseStatus::NoContact;
     r.message = "Q must be > 0";
-    return r;
+    return;
   }
   if (!G.covers(tY)) {
     r.status = CaseStatus::OutOfRange;
     r.message = "t_Y = " + format_number(tY * 1e3) + " mm outside the geometry table [" +
                 format_number(G.tY.front() * 1e3) + ", " + format_number(G.tY.back() * 1e3) + "] mm";
-    return r;
+    return;
   }
   const std::size_t ne = G.n_ellipses();
   thread_local std::vector<CandidateGeom> geo;
@@ -130,10 +177,9 @@ CaseResult solve_multi_hertz(const ContactGeometry& G, const Material& mat, doub
     Cand c;
     c.ellipse = static_cast<int>(e) + 1;
     c.g = geo[e];
-    curvature_sums(c.g, &c.A, &c.B);
+    c.hertzian = candidate_sums(c.g, &c.A, &c.B);
     c.cg = std::cos(c.g.gamma);
     c.sg = std::sin(c.g.gamma);
-    c.hertzian = hertzian_sums(c.A, c.B);
     if (c.hertzian) {
       LawSlot& slot = cache.slots[e];
       if (slot.used && slot.A == bits(c.A) && slot.B == bits(c.B)) {
@@ -173,7 +219,7 @@ CaseResult solve_multi_hertz(const ContactGeometry& G, const Material& mat, doub
     r.status = CaseStatus::NoContact;
     r.message = "no Hertzian candidate: every potential ellipse has B <= 0 (conformal) at this t_Y";
     flag_climb();
-    return r;
+    return;
   }
   // Eq. 10 by Newton's method in δz, kept inside the bracket [lo, hi] (core/roots.hpp): F is
   // increasing and piecewise smooth (a candidate enters with zero force and zero slope).
@@ -202,38 +248,10 @@ CaseResult solve_multi_hertz(const ContactGeometry& G, const Material& mat, doub
   for (const Cand& c : cs) {
     const double h = (dz - c.g.gap) * c.cg;
     if (h <= 0) continue;
-    // A loaded candidate off the end of a profile (method.md §3.7): its geometry is the end's,
-    // extrapolated; never silent.
-    if (c.g.off_profile) r.warnings.push_back("off_profile:ellipse=" + std::to_string(c.ellipse));
-    if (!c.hertzian) {
-      r.warnings.push_back("non_hertzian_excluded:ellipse=" + std::to_string(c.ellipse));
-      continue;
-    }
-    LoadedEllipse L;
-    L.ellipse = c.ellipse;
-    L.g = c.g;
-    L.A = c.A;
-    L.B = c.B;
-    L.c = c.law.c;
-    L.h_y = c.law.h_y;
-    L.s = ellipse_state(c.law, h);
-    L.validity = hertz_validity(G, c.g, L.s.b, opt.validity);
-    // The contact point on each profile: for plots and checks.
-    if (G.rail_curve) L.z_r = G.rail_curve->z(c.g.y_r);
-    if (G.wheel_curve) L.z_w = G.wheel_curve->z(c.g.y_w);
-    if (!L.validity.valid)
-      r.warnings.push_back("non_hertzian:ellipse=" + std::to_string(c.ellipse) + ":" + L.validity.describe(opt.validity));
-    r.Fz += L.s.N * c.cg;
-    r.Fy += L.s.N * c.sg;
-    // Case summary shared with the grid methods (case_result.hpp).
-    r.pmax = std::max(r.pmax, L.s.p_max);
-    r.area += units::pi * L.s.a * L.s.b;
-    r.approach = std::max(r.approach, L.s.approach / c.cg + c.g.gap);
-    r.loaded.push_back(L);
+    add_loaded_candidate(G, c.ellipse, c.g, c.A, c.B, c.hertzian ? &c.law : nullptr, h, c.cg, c.sg, opt, r);
   }
   r.n_contacts = static_cast<int>(r.loaded.size());
   flag_climb();
-  return r;
 }
 
 }  // namespace mh

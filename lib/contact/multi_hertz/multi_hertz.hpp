@@ -28,6 +28,25 @@ namespace mh {
 CaseResult solve_multi_hertz(const ContactGeometry& G, const Material& mat, double tY, double Q,
                              const MultiHertzOptions& opt = {});
 
+/// The same into `out`, reset first (every field as a fresh CaseResult) with its vectors keeping
+/// their capacity: a caller that reuses `out` (the C interface's workspace) allocates nothing for
+/// a case without warnings once the vectors have grown. Same bits as the form above.
+void solve_multi_hertz(const ContactGeometry& G, const Material& mat, double tY, double Q,
+                       const MultiHertzOptions& opt, CaseResult& out);
+
+/// A candidate's curvature sums A, B [1/m] (eq. 1) and whether it has a Hertz ellipse (both
+/// positive and finite, λ = A/B within the range of the Hertz coefficients); one code for the
+/// load-given and the approach-given solvers.
+bool candidate_sums(const CandidateGeom& g, double* A, double* B);
+
+/// Adds candidate `g` (1-based index `ellipse`) at h0 = h > 0 to `r`, one code for both solvers:
+/// the warning off_profile when it lies off a profile end; non_hertzian_excluded when it has no
+/// law (`law` null); else its LoadedEllipse (state, Hertz validity and its warning, profile
+/// heights) and its share of Fz, Fy (cos γ = cg, sin γ = sg), pmax, area and approach.
+void add_loaded_candidate(const ContactGeometry& G, int ellipse, const CandidateGeom& g, double A, double B,
+                          const EllipseLaw* law, double h, double cg, double sg, const MultiHertzOptions& opt,
+                          CaseResult& r);
+
 /// One potential ellipse as a candidate at one t_Y: everything about it that does not depend on
 /// the load Q (geometry.csv). The values are those solve_multi_hertz() uses and copies
 /// into a LoadedEllipse (same code, same bits).
