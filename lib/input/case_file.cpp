@@ -367,6 +367,8 @@ nlohmann::json CaseFile::resolved_json() const {
       o["mirror_y"] = s.read.mirror_y;
       o["mirror_z"] = s.read.mirror_z;
       o["scale"] = s.read.scale;
+      // The profile of a multi-profile file: shards that read different sections differ.
+      if (s.read.section > 0) o["section"] = s.read.section;
     }
     return o;
   };

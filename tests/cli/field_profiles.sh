@@ -55,6 +55,8 @@ run mpt "{\"standard\": \"S1002\"}" "{\"file\": \"$F/multi_profile.mpt\"}, \"inc
 grep -q "1 'Base line' 150 mm wide.*2 'Head measured' 72.55 mm wide, 979 points" "$T/mpt.err" || fail "mpt list: $(cat "$T/mpt.err")"
 run mpt2 "{\"standard\": \"S1002\"}" "{\"file\": \"$F/multi_profile.mpt\", \"section\": 2}, \"inclination\": \"as-is\""
 [ $rc -le 1 ] || fail "mpt section 2: exit $rc: $(cat "$T/mpt2.err")"
+# The resolved inputs name the section (shards reading different sections must not merge).
+grep -q '"section": *2' "$T/mpt2/results.json" || fail "results.json: the section is not in the resolved inputs"
 run mpt0 "{\"standard\": \"S1002\"}" "{\"file\": \"$F/multi_profile.mpt\", \"section\": 0}, \"inclination\": \"as-is\""
 [ $rc -eq 2 ] && grep -q "/rail/profile/section" "$T/mpt0.err" || fail "section 0: exit $rc $(cat "$T/mpt0.err")"
 "$MH" profile info --section 2 "$F/multi_profile.mpt" > "$T/info2" || fail "profile info --section 2"
