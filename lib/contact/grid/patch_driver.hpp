@@ -99,6 +99,20 @@ bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, d
 /// (withhold_unconverged_pressures, grid_checks.hpp).
 void finish_grid_case(const ContactGeometry& G, double tY, const GridStart& gs, CaseResult& r);
 
+/// A grid method's entry: begin_grid_case, then body(gs, r) → the solved case, then
+/// finish_grid_case. `method` is the row's method.
+template <class Body>
+CaseResult solve_grid_case(Method method, const ContactGeometry& G, const Material& mat, double tY, double Q,
+                           const CaseResult* elastic_mh, Body&& body) {
+  CaseResult r;
+  r.method = method;
+  GridStart gs;
+  if (!begin_grid_case(G, mat, tY, Q, elastic_mh, r, &gs)) return r;
+  r = body(gs, std::move(r));
+  finish_grid_case(G, tY, gs, r);
+  return r;
+}
+
 /// [m] the vertical approach at which p_lim [Pa] times the horizontal projection of the rigid
 /// interpenetration equals Q [N]: a lower bound of the capped approach (contact needs g + u ≤ δ
 /// with u ≥ 0, and the vertical force is at most p_lim times the projected contact area), found

@@ -239,13 +239,9 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
 
 CaseResult solve_half_space(const ContactGeometry& G, const Material& mat, double tY, double Q,
                             const HalfSpaceOptions& opt, const CaseResult* elastic_mh) {
-  CaseResult r;
-  r.method = Method::HalfSpace;
-  GridStart gs;
-  if (!begin_grid_case(G, mat, tY, Q, elastic_mh, r, &gs)) return r;
-  r = half_space_case(G, mat, tY, Q, opt, gs, std::move(r));
-  finish_grid_case(G, tY, gs, r);
-  return r;
+  return solve_grid_case(Method::HalfSpace, G, mat, tY, Q, elastic_mh, [&](const GridStart& gs, CaseResult r) {
+    return half_space_case(G, mat, tY, Q, opt, gs, std::move(r));
+  });
 }
 
 }  // namespace mh

@@ -221,13 +221,9 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
 
 CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, double tY, double Q,
                               const StripMethodOptions& opt, const CaseResult* elastic_mh) {
-  CaseResult r;
-  r.method = Method::Strips;
-  GridStart gs;
-  if (!begin_grid_case(G, mat, tY, Q, elastic_mh, r, &gs)) return r;
-  r = strip_case(G, mat, tY, Q, opt, gs, std::move(r));
-  finish_grid_case(G, tY, gs, r);
-  return r;
+  return solve_grid_case(Method::Strips, G, mat, tY, Q, elastic_mh, [&](const GridStart& gs, CaseResult r) {
+    return strip_case(G, mat, tY, Q, opt, gs, std::move(r));
+  });
 }
 
 }  // namespace mh
