@@ -1,4 +1,4 @@
-// Issue #13 item 5: every format the tool reads is also written, keeping the kind; read → write →
+// Every format the tool reads is also written, keeping the kind; read → write →
 // read gives the same points to the printed precision (shortest round-trip decimals).
 #include <catch2/catch.hpp>
 
