@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "contact/solve.hpp"
+#include "geometry/gap.hpp"
 #include "input/case_file.hpp"
 #include "jobs/run.hpp"
 #include "output/csv_table.hpp"
@@ -87,4 +88,40 @@ TEST_CASE("flange contact on the vertical 1:20 flank: strips and half-space agai
       CHECK(std::fabs(sa) <= 0.15);
     }
   }
+}
+
+TEST_CASE("the normal gap meets a vertical gauge face on the face", "[flank]") {
+  // Closed form: a normal line (direction (-sin g, cos g), sin g > 0) through the plane point
+  // (qy, qz) crosses y = y_f at height qz + (qy - y_f)/tan g; below the face's top it meets the
+  // rail there, at y_f exactly (the extrapolation of z(y) beyond its first point would give a y
+  // up to 0.04 mm beyond it). Above the top it meets z(y), at y > y_f.
+  const mh::CaseFile cf = pair_case();
+  const mh::PairGeometry pg = mh::build_pair_geometry(cf);
+  const mh::WheelRailGap gap(pg.geo, 7e-3);
+  REQUIRE(gap.has_rail_face());
+  const double yf = gap.rail_face_y(), ztop = gap.z_rail(yf);
+  const mh::PatchPlane P = mh::plane_at(gap, -34.4e-3);  // CONTACT's contact point, gamma ~ 69.5 deg
+  REQUIRE(std::sin(P.gamma) > 0.9);
+  int below = 0, above = 0;
+  for (double s = -8e-3; s <= 0; s += 0.25e-3) {
+    const double qy = P.y_ref + s * std::cos(P.gamma), qz = P.z_ref + s * std::sin(P.gamma);
+    const double z_cross = qz + (qy - yf) / std::tan(P.gamma);
+    double y_rail = 0;
+    mh::normal_gap(gap, P, 0, s, 0, &y_rail);
+    CAPTURE(s, z_cross, ztop);
+    if (z_cross < ztop - 1e-9) {
+      ++below;
+      CHECK(std::fabs(y_rail - yf) <= 1e-12);
+    } else if (z_cross > ztop + 1e-9) {
+      ++above;
+      CHECK(y_rail > yf);
+    }
+  }
+  CHECK(below >= 5);
+  CHECK(above >= 5);
+  // The end of the rail for a grid patch (off_profile:patch=K): at z(y)'s first point by y alone,
+  // but on the face only at its foot (within a strip width).
+  CHECK(pg.geo.off_profile(7e-3, yf));
+  CHECK(!pg.geo.off_profile_at(7e-3, yf, ztop - 2e-3));
+  CHECK(pg.geo.off_profile_at(7e-3, yf, gap.rail_face_foot() + 0.5 * pg.geo.strip_width));
 }

@@ -141,6 +141,15 @@ TEST_CASE("a rail file with a vertical gauge flank is read with its face", "[pro
   CHECK(r.y[0] == Approx(-35.240789e-3).margin(1e-12));
   for (double y : r.face_y) CHECK(y == r.y[0]);
   CHECK(r.warnings.empty());
+  // Canted again (1:40): the face turns with the points, overhanging, and is clipped like any
+  // flank that turns under; no face is left and y stays increasing.
+  mh::Profile twice = r;
+  mh::rotate_towards_track_centre(twice, std::atan(1.0 / 40));
+  CHECK(twice.face_y.empty());
+  CHECK(twice.size() < r.size() + r.face_y.size());
+  for (std::size_t k = 1; k < twice.size(); ++k) REQUIRE(twice.y[k] > twice.y[k - 1]);
+  REQUIRE(twice.warnings.size() == 1);
+  CHECK(twice.warnings[0].find("clipped") != std::string::npos);
   // A face shorter than 2 mm (a measured face repeating a rounded y) is not a face: dropped as jitter.
   std::string text = "y_mm,z_mm\n-30,-20\n-30,-19\n";
   for (int i = 0; i <= 60; ++i) text += std::to_string(-29.5 + i) + "," + std::to_string(-0.001 * (i - 30) * (i - 30)) + "\n";
