@@ -494,7 +494,7 @@ TEST_CASE("profile generate writes what make_standard_profile makes", "[stdprof]
 
 TEST_CASE("a rail canted 1:20 keeps its vertical gauge flank as the face, exactly as defined", "[stdprof][flank]") {
   // Reference: the EN 13674-1 heads' R13 (60E2: R8) / flank tangency points, gauge side, from the
-  // definition values (../shared/docs/rails-en13674.md, "Values to test against", 4 decimals;
+  // definition values (EN 13674-1:2017 as transcribed in rohrbecka/EN13674, derived to 4 decimals;
   // profiles.md §2), and the flank 1:20 to the vertical down to 20 mm below the crown top.
   // Turned back by the cant (clockwise about the crown top, the inverse of
   // rotate_towards_track_centre), every face point must lie on that flank, to 1e-4 mm (the
