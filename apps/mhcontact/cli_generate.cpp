@@ -46,7 +46,8 @@ void generate(const GenerateArgs& a, CliContext& ctx) {
   write_profile(p, a.output);
   for (const auto& w : p.warnings) ctx.err << "warning: " << a.name << ": " << w << "\n";
   ctx.out << "wrote " << a.output << " (" << a.name << " " << to_string(p.kind) << ", inclination "
-          << a.inclination << ", " << p.size() << " points)\n";
+          << a.inclination << ", " << p.size() + p.face_y.size() << " points"
+          << (p.face_y.empty() ? "" : ", " + std::to_string(p.face_y.size()) + " of them on the gauge face") << ")\n";
   ctx.exit_code = kExitOk;
 }
 

@@ -68,6 +68,13 @@ void print_info(const Profile& p, bool json, ProfileNoise noise, std::ostream& o
     j["head_top_y_mm"] = L.y_top * units::per_mm;
     j["head_top_z_mm"] = L.z_top * units::per_mm;
     text += "head_top_mm: y " + mm(L.y_top) + " z " + mm(L.z_top) + "\n";
+    if (!p.face_y.empty()) {  // a vertical gauge face (profiles.md §3)
+      j["gauge_face"] = {{"points", p.face_y.size()},
+                         {"y_mm", p.face_y.front() * units::per_mm},
+                         {"z_foot_mm", p.face_z.back() * units::per_mm}};
+      text += "gauge_face_mm: y " + mm(p.face_y.front()) + " from z " + mm(p.z.front()) + " down to " +
+              mm(p.face_z.back()) + " (" + std::to_string(p.face_y.size()) + " points besides those above)\n";
+    }
     // The cant of the head (profiles.md "Cant estimate"): positive leaning to the gauge side.
     const RailCantCheck cc = check_rail_cant(p, Inclination::AsIs);
     j["cant"] = cant_json(cc.used);
@@ -182,7 +189,8 @@ void add_profile_io_commands(CLI::App& profile, CliContext& ctx) {
       const Profile p = read_profile(*in, *opt);
       write_profile(p, *outp);
       for (const auto& w : p.warnings) ctx.err << "warning: " << *in << ": " << w << "\n";
-      ctx.out << "wrote " << *outp << " (" << to_string(p.kind) << ", " << p.size() << " points)\n";
+      ctx.out << "wrote " << *outp << " (" << to_string(p.kind) << ", " << p.size() + p.face_y.size() << " points"
+              << (p.face_y.empty() ? "" : ", " + std::to_string(p.face_y.size()) + " of them on the gauge face") << ")\n";
       ctx.exit_code = kExitOk;
     });
   }

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
@@ -109,6 +110,13 @@ bool ContactGeometry::off_profile(double t, double y_r) const {
          y_r < strip_y.front() + 0.5 * strip_width || y_r > strip_y.back() - 0.5 * strip_width;
 }
 
+bool ContactGeometry::off_profile_at(double t, double y_r, double z) const {
+  if (!has_rail_face() || !(y_r < strip_y.front() + 0.5 * strip_width)) return off_profile(t, y_r);
+  const ProfileCurve& W = *wheel_curve;
+  const double y_w = y_r - (y_offset + t);
+  return y_w < W.y_min() + strip_width || y_w > W.y_max() - strip_width || z < rail_face_foot + strip_width;
+}
+
 bool ContactGeometry::exact_candidates_at(double t, CandidateGeom* out, int* main) const {
   const std::size_t ne = ellipses.size();
   const std::size_t m = std::min(static_cast<std::size_t>(std::upper_bound(jumps.begin(), jumps.end(), t) - jumps.begin()), ne - 1);
@@ -194,6 +202,12 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   };
   G.wheel_gap_curve = gap_curve(wheel, G.wheel_curve);
   G.rail_gap_curve = gap_curve(rail, G.rail_curve);
+  if (!rail.face_z.empty()) {
+    for (std::size_t i = 0; i < rail.face_z.size(); ++i)
+      if (rail.face_y[i] != rail.y.front() || !(rail.face_z[i] < (i ? rail.face_z[i - 1] : rail.z.front())))
+        throw std::logic_error("build_geometry: the rail's gauge face is not vertical and downwards from its first point");
+    G.rail_face_foot = rail.face_z.back();
+  }
   const ProfileCurve& W = *G.wheel_curve;
   const ProfileCurve& R = *G.rail_curve;
   G.wheel_window = W.window_used();

@@ -5,6 +5,7 @@
 // every case of a sweep only interpolates these tables (it never rescans the profiles).
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -140,6 +141,12 @@ class ContactGeometry {
   /// smoothed for contact (GeometryOptions::contact_smoothing), otherwise the same curve as
   /// wheel_curve / rail_curve.
   std::shared_ptr<const ProfileCurve> wheel_gap_curve, rail_gap_curve;
+  /// [m] The rail's vertical gauge face (Profile::face_z, a 60E1 flank at 1:20): the height of
+  /// its foot; the face hangs from the first point of the rail curves, at their y_min. NaN for a
+  /// rail without one. Only the grid methods see it (their normal gap, gap.hpp, and the patch-end
+  /// test off_profile_at); the tables above are built on z(y), which ends at the face's top.
+  double rail_face_foot = std::numeric_limits<double>::quiet_NaN();
+  bool has_rail_face() const { return rail_face_foot == rail_face_foot; }
   double nominal_radius = 0;             ///< [m] wheel radius at the taping line (y_w = 0)
   double wheel_z0 = 0;                   ///< [m] smoothed wheel height at y_w = 0 (r(y_w) = R0 − (z_w(y_w) − z0))
   /// Curvature samples of both profiles every kappa_dy over each profile's width, in the
@@ -189,6 +196,10 @@ class ContactGeometry {
   /// The rail point y_r, and the wheel point facing it at t, lie off the end of a profile or
   /// within one strip width of it (method.md §3.7; CandidateGeom::off_profile).
   bool off_profile(double t, double y_r) const;
+  /// The same for a point (y_r, z) near the rail surface (a grid patch's end in its plane): a
+  /// point beside the rail's vertical gauge face, above its foot by more than a strip width, lies
+  /// on the rail although y_r is at the end of z(y).
+  bool off_profile_at(double t, double y_r, double z) const;
 
   /// Unique per build_geometry call (copies share it: same content); keys the per-thread cache of
   /// exact_candidates_at, so that a geometry built at the address of a destroyed one (the next

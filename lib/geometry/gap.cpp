@@ -15,7 +15,7 @@ constexpr double kNewtonTol = 1e-13;     // [m]
 WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY)
     : W_(G.wheel_gap_curve ? G.wheel_gap_curve.get() : G.wheel_curve.get()),
       R_(G.rail_gap_curve ? G.rail_gap_curve.get() : G.rail_curve.get()), shift_(G.y_offset + tY),
-      R0_(G.nominal_radius), z0_(G.wheel_z0) {
+      R0_(G.nominal_radius), z0_(G.wheel_z0), face_foot_(G.rail_face_foot) {
   y0_ = std::max(R_->y_min(), W_->y_min() + shift_);
   y1_ = std::min(R_->y_max(), W_->y_max() + shift_);
   // Minimum of the raw gap: sampled, then refined by a parabola through the best sample.
@@ -117,7 +117,14 @@ double normal_gap(const WheelRailGap& gap, const PatchPlane& P, double x, double
     }
     return h;
   };
-  const double h_r = intersect([&](double y, double* d) { return gap.z_rail(y, d); });
+  double h_r = 0;
+  // The rail's vertical gauge face at y_f: a normal line (towards −y as it rises, sin γ > 0) that
+  // crosses y = y_f below the top of the face runs under z(y) on its rail side, so the face is
+  // where it meets the rail: h = (qy − y_f)/sin γ, exactly.
+  const bool on_face = gap.has_rail_face() && sn > 0 &&
+                       qz + (qy - gap.rail_face_y()) / sn * c < gap.z_rail(gap.rail_face_y());
+  if (on_face) h_r = (qy - gap.rail_face_y()) / sn;
+  else h_r = intersect([&](double y, double* d) { return gap.z_rail(y, d); });
   const double h_w = intersect([&](double y, double* d) { return gap.z_wheel(y, x, d) - dz; });
   if (y_rail) *y_rail = qy - h_r * sn;
   return h_w - h_r;

@@ -4,6 +4,7 @@
 // ContactGeometry. Rail frame: y lateral towards the field side, z up, x the rolling direction.
 // The wheel is a body of revolution about the axle (radius r(y) from the nominal radius and the
 // profile), placed at its first-contact height, with no roll and no yaw; the rail is straight in x.
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -28,6 +29,11 @@ class WheelRailGap {
   /// Wheel surface height [m] at rail y and rolling coordinate x (first-contact position) and its
   /// slope dz/dy: z_w(y) + r(y) − √(r(y)² − x²).
   double z_wheel(double y, double x, double* slope = nullptr) const;
+  /// The rail's vertical gauge face (ContactGeometry::rail_face_foot): whether there is one,
+  /// its y [m] (the rail curve's first point, from which it hangs) and its foot's height [m].
+  bool has_rail_face() const { return face_foot_ == face_foot_; }
+  double rail_face_y() const { return R_->y_min(); }
+  double rail_face_foot() const { return face_foot_; }
   /// [m] wheel rolling radius at rail y.
   double rolling_radius(double y) const;
   /// [m] wheel-profile lateral coordinate facing rail y.
@@ -47,6 +53,7 @@ class WheelRailGap {
   double gmin_ = 0;    // minimum of z_w − z_r before normalisation
   double R0_ = 0, z0_ = 0;
   double y0_ = 0, y1_ = 0, y_contact_ = 0;
+  double face_foot_ = std::numeric_limits<double>::quiet_NaN();  // [m] NaN: no gauge face
 };
 
 /// A contact patch's tangent plane (CONTACT's planar contact approach): tangent to the rail at
@@ -60,7 +67,9 @@ PatchPlane plane_at(const WheelRailGap& gap, double y_ref);
 
 /// [m] the undeformed distance between rail and wheel along the plane normal through plane point
 /// (x, s), with the wheel lowered by `dz` [m] from its first-contact position (negative: the
-/// surfaces interpenetrate there); `y_rail` receives the rail y hit by that normal. The wheel moves
+/// surfaces interpenetrate there); `y_rail` receives the rail y hit by that normal. The rail is
+/// z(y) continued by its vertical gauge face where it has one (a normal that crosses the face's y
+/// below the face's top hits the face; below its foot, the face's extension). The wheel moves
 /// vertically, not along the normal: in a conformal flange contact its lateral component in the
 /// plane (dz sin γ) changes the shape of the interpenetration, not only its depth.
 double normal_gap(const WheelRailGap& gap, const PatchPlane& P, double x, double s, double dz = 0,

@@ -14,6 +14,9 @@
 namespace mh {
 namespace {
 
+/// A fitted slope |dz/dy| above this (89.94°) is taken for a vertical tangent (ProfileCurve::build).
+constexpr double kMaxCurveSlope = 1e3;
+
 struct LocalFit {
   bool ok = false;
   double z = 0, slope = 0, kappa = 0, rms = std::numeric_limits<double>::infinity();
@@ -244,6 +247,20 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w) {
     dz_[j] = best.slope;
     k_[j] = best.kappa;
     side_[j] = static_cast<signed char>(side);
+  }
+  // A node where the profile is vertical (the first point of a 60E1 rail at 1:20, at its
+  // R13/flank tangency; S1002 at S = −70) has no finite slope dz/dy: the fit's is ±1e14 or so,
+  // of either sign, and the cubic Hermite cell beside it would swing by metres (and the linear
+  // extrapolation beyond an end rise like a wall). Such a slope is replaced by the largest that
+  // keeps the neighbouring cells monotone, 3 times their secant (Fritsch & Carlson 1980, SIAM J.
+  // Numer. Anal. 17, 238), 0 between secants of opposite signs.
+  for (std::size_t j = 0; j < m; ++j) {
+    if (!(std::fabs(dz_[j]) > kMaxCurveSlope)) continue;
+    const double dl = j > 0 ? (z_[j] - z_[j - 1]) / h_ : NAN, dr = j + 1 < m ? (z_[j + 1] - z_[j]) / h_ : NAN;
+    if (std::isnan(dl) && std::isnan(dr)) continue;
+    if (std::isnan(dl)) dz_[j] = 3 * dr;
+    else if (std::isnan(dr)) dz_[j] = 3 * dl;
+    else dz_[j] = dl * dr > 0 ? std::copysign(3 * std::min(std::fabs(dl), std::fabs(dr)), dl) : 0.0;
   }
   std::nth_element(rms.begin(), rms.begin() + static_cast<std::ptrdiff_t>(rms.size() / 2), rms.end());
   median_rms_ = rms[rms.size() / 2];

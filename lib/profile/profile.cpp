@@ -68,6 +68,14 @@ double inclination_angle(const Inclination& i) {
 
 void rotate_towards_track_centre(Profile& p, double angle) {
   if (angle == 0.0 || p.size() == 0) return;
+  if (!p.face_y.empty()) {
+    // A vertical gauge face turned is no longer vertical: it goes back among the points (foot
+    // first), and the rule below keeps what stays a function z(y).
+    p.y.insert(p.y.begin(), p.face_y.rbegin(), p.face_y.rend());
+    p.z.insert(p.z.begin(), p.face_z.rbegin(), p.face_z.rend());
+    p.face_y.clear();
+    p.face_z.clear();
+  }
   const double c = std::cos(angle), s = std::sin(angle);
   std::vector<double> y(p.size()), z(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {

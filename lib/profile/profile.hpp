@@ -50,6 +50,13 @@ struct Profile {
   /// drawing elements. The curvature fit compares its residual with the rounding error this
   /// step explains (curve.hpp, profiles.md "Measured or exact").
   double print_step = 0;
+  /// [m] Rails: the gauge face below the first point where a function z(y) cannot hold it, as
+  /// the 60E1/54E1/60E2 flank that a 1:20 cant makes vertical (profiles.md "Inclination"): its
+  /// points from the one next to (y[0], z[0]) downwards to its foot, each face_y equal to y[0]
+  /// (vertical). Empty for most profiles. y/z stay the function z(y) that the curvature fit and
+  /// the multi-Hertzian search use; the grid methods' normal gap sees the rail continued by the
+  /// face (geometry/gap.hpp), and the writers put it before the first point (write.hpp).
+  std::vector<double> face_y, face_z;
 
   std::size_t size() const { return y.size(); }
 };
@@ -81,7 +88,8 @@ double inclination_angle(const Inclination& i);
 /// Rotate a rail profile about its origin by `angle` [rad] towards the track centre (the gauge
 /// side, negative y): counter-clockwise in the (y field, z up) plane, so that the crown's tangent
 /// gets the slope +tan(angle) (profiles.md "Inclination"). Expects y increasing; flank points
-/// that become vertical or overhanging are clipped (with a warning), so y stays increasing.
+/// that become vertical or overhanging are clipped (with a warning), so y stays increasing. A
+/// vertical gauge face (face_y, face_z) is turned with the points, among them: no face is left.
 void rotate_towards_track_centre(Profile& p, double angle);
 
 }  // namespace mh

@@ -119,6 +119,8 @@ Profile read_profile(const std::string& path, const ProfileReadOptions& opt) {
   p.y.resize(r.size());
   p.z.resize(r.size());
   for (std::size_t k = 0; k < r.size(); ++k) p.y[k] = r.y[k] / 1000 + 0.0, p.z[k] = r.z[k] / 1000 + 0.0;  // +0.0: no -0; "/ 1000" so that "* 1000" gives the file digits back
+  for (std::size_t k = 0; k < r.face_y.size(); ++k)
+    p.face_y.push_back(r.face_y[k] / 1000 + 0.0), p.face_z.push_back(r.face_z[k] / 1000 + 0.0);
   return p;
 }
 

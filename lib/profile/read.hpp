@@ -58,6 +58,9 @@ struct ProfileCheckLimits {
   /// Inside that region a point that steps back in y by at most this much is measurement jitter
   /// (MiniProf resolution is 0.01 mm) and is dropped with a warning; a larger step is an error.
   static constexpr double kJitter_mm = 0.05;
+  /// Rails: points at the gauge-side start with exactly one y over at least this height are a
+  /// vertical gauge face (Profile::face_y, face_z; profiles.md §4), not jitter.
+  static constexpr double kMinGaugeFace_mm = 2.0;
   /// Clean-up (ProfileCleanup::Envelope): a fold whose y steps back by more than this is not a
   /// measurement artefact that an envelope can honestly remove; rejected.
   static constexpr double kMaxFold_mm = 1.0;

@@ -444,6 +444,29 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
     i0 = a;
     i1 = b;
   }
+  // A vertical gauge face (a 60E1 flank at 1:20, as the writers put it before the first point):
+  // points from the gauge-side start of the region upwards with exactly the same y and rising z,
+  // at least kMinGaugeFace_mm tall (a measured face, never exactly vertical, may repeat a rounded
+  // y over a few points, not over that height). They are kept as the profile's face
+  // (Profile::face_y, face_z), from the top down, and the region starts at the face's top, the
+  // first point of z(y).
+  std::size_t face_from = i0, face_top = i0;
+  if (r.kind == ProfileKind::Rail) {
+    std::size_t itop = i0;
+    for (std::size_t k = i0; k <= i1; ++k)
+      if (r.z[k] > r.z[itop]) itop = k;
+    std::size_t f = i0;
+    for (std::size_t k = i0; k <= itop; ++k)
+      if (r.y[k] < r.y[f]) f = k;
+    std::size_t j = f;
+    while (j < itop && r.y[j + 1] == r.y[f] && r.z[j + 1] > r.z[j]) ++j;
+    if (j > f && r.z[j] - r.z[f] >= L::kMinGaugeFace_mm) {
+      for (std::size_t k = j; k-- > f;) r.face_y.push_back(r.y[k]), r.face_z.push_back(r.z[k]);
+      face_from = f;
+      face_top = j;
+      i0 = j;
+    }
+  }
   // Measurement jitter: inside the region, a point that does not advance in y, and lies at most
   // kJitter_mm behind the last kept point, is dropped (with a warning); a larger backward step
   // is a loop or zig-zag and an error below.
@@ -494,7 +517,12 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
   std::size_t a = i0, b = i1;
   while (a > 0 && r.y[a - 1] < r.y[a]) --a;
   while (b + 1 < r.size() && r.y[b + 1] > r.y[b]) ++b;
-  if (a > 0 && r.cleanup.gauge_undercut)
+  const std::size_t on_face = face_top - face_from;  // the face's points, before a
+  if (on_face > 0) {
+    if (a > on_face)
+      r.warnings.push_back("clipped " + std::to_string(a - on_face) + " points below the gauge face (z < " +
+                           mm(r.face_z.back()) + ")");
+  } else if (a > 0 && r.cleanup.gauge_undercut)
     r.warnings.push_back("clipped " + std::to_string(a) + " points at the gauge side: the gauge face turns under the head below z = " +
                          mm(r.z[a]) + " (hidden from the wheel; the widest point, y = " + mm(r.y[a]) + ", is the gauge point if the face "
                          "does not reach the gauge height, EN 13848-1)");

@@ -399,15 +399,19 @@ Profile make_standard_profile(const std::string& name, Inclination incl, double 
                      "use inclination none (or as-is): it is never applied twice");
   const double angle = inclination_angle(incl);
 
-  // A flank that the rotation makes vertical is not a function z(y): leave it out (1:20, gauge
-  // side; the field flank turns away from the vertical).
-  const bool drop_gauge_flank =
+  // A flank that the rotation makes vertical is not a function z(y): it becomes the profile's
+  // gauge face (Profile::face_y, face_z) and z(y) ends at the tangency point (1:20, gauge side;
+  // the field flank turns away from the vertical).
+  const bool vertical_gauge_flank =
       !wheel && d.flank_n > 0 && std::atan(d.flank_n) + angle >= units::pi / 2 - kVerticalFlankMargin;
 
   const double step_mm = step / units::mm;
-  std::vector<double> ys, zs;
+  std::vector<double> ys, zs, face_ys, face_zs;
   for (const auto& s : d.sections) {
-    if (drop_gauge_flank && s.y1 <= d.gauge_flank_end) continue;
+    if (vertical_gauge_flank && s.y1 <= d.gauge_flank_end) {
+      s.append_nodes(step_mm, face_ys, face_zs);  // foot first, the tangency point excluded
+      continue;
+    }
     s.append_nodes(step_mm, ys, zs);
   }
   ys.push_back(d.sections.back().y1);  // the last section owns its end
@@ -418,9 +422,10 @@ Profile make_standard_profile(const std::string& name, Inclination incl, double 
   p.source = "standard:" + name;
   p.format = "standard";
   if (angle != 0) p.source += " inclined " + to_string(incl);
-  if (drop_gauge_flank)
-    p.warnings.push_back(std::string("gauge-side flank left out: it is vertical at ") + to_string(incl) +
-                         "; the profile ends at the R" + format_number(d.sections[1].R) + "/flank tangency point");
+  if (vertical_gauge_flank)
+    p.warnings.push_back(std::string("gauge-side flank vertical at ") + to_string(incl) +
+                         ": kept as the gauge face below the R" + format_number(d.sections[1].R) +
+                         "/flank tangency point, where z(y) ends");
   p.y.resize(ys.size());
   p.z.resize(zs.size());
   for (std::size_t i = 0; i < ys.size(); ++i) {
@@ -428,6 +433,17 @@ Profile make_standard_profile(const std::string& name, Inclination incl, double 
     p.z[i] = zs[i] * units::mm + 0.0;
   }
   rotate_towards_track_centre(p, angle);
+  if (vertical_gauge_flank) {
+    // The flank nodes turned like the points (profile.cpp rotate_towards_track_centre), from the
+    // tangency point down to the foot. The turned flank is vertical: each face y is the
+    // tangency point's, p.y[0] (the rotation's rounding, ~1e-16 m, is not kept).
+    const double c = std::cos(angle), sn = std::sin(angle);
+    for (std::size_t i = face_ys.size(); i-- > 0;) {
+      const double y = face_ys[i] * units::mm, z = face_zs[i] * units::mm;
+      p.face_y.push_back(p.y[0]);
+      p.face_z.push_back(sn * y + c * z);
+    }
+  }
   for (std::size_t i = 1; i < p.size(); ++i)
     if (!(p.y[i] > p.y[i - 1]))
       throw std::logic_error("make_standard_profile: y not strictly increasing in " + p.source);

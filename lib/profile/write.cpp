@@ -33,6 +33,18 @@ std::string profile_file_text(const Profile& p, const std::string& path) {
                      std::string("use ") + right + " (or .csv)");
   }
   const bool wheel = (fk != ProfileKind::Unknown ? fk : p.kind) == ProfileKind::Wheel;
+  if (!p.face_y.empty()) {
+    // A vertical gauge face is written before the first point, from its foot upwards, so that
+    // the points run along the profile (the readers take it back as the face, profiles.md §4).
+    Profile all = p;
+    all.face_y.clear();
+    all.face_z.clear();
+    all.y.assign(p.face_y.rbegin(), p.face_y.rend());
+    all.z.assign(p.face_z.rbegin(), p.face_z.rend());
+    all.y.insert(all.y.end(), p.y.begin(), p.y.end());
+    all.z.insert(all.z.end(), p.z.begin(), p.z.end());
+    return profile_file_text(all, path);
+  }
   if (e == "csv") return write_table(p, ',', false);
   if (e == "txt" || e == "dat") return write_table(p, ' ', false);
   if (e == "prr" || e == "prw") return write_simpack(p, wheel);

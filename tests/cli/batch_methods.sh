@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Batch manifests with every method (issue 12: strips and auto "through run, batches and shards"):
+# Batch manifests with every method:
 # "method" and its options are shared keys of a manifest; a pair's rows in patches.csv (and, for
 # "auto", in ellipses.csv) are exactly those of the single run of that pair; sharding over pairs
 # + merge and any thread count give the same bytes; a bad method option names its JSON path.

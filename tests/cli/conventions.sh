@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Issue #10 item 9: conventions that can be checked are checked. profile info prints a rail's cant
+# Conventions that can be checked are checked. profile info prints a rail's cant
 # (the Manchester rail: 1:40 in its file, Shackleton & Iwnicki 2008) and warns about a canted rail
 # mirrored in y; a run that cants an already canted rail warns, in results.json's summary too.
-# Issue #10 item 10: measured or exact from the printed digits: S1002 printed with 3 decimals is
+# Measured or exact from the printed digits: S1002 printed with 3 decimals is
 # exact, the choice is reported by profile info and the run, and geometry.noise forces it.
 # Usage: bash conventions.sh <mhcontact-binary> <source-dir>
 set -euo pipefail

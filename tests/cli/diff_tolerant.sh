@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 22 §3: `diff` for CI with a loose tolerance. A copy of the Manchester reference cases.csv
+# `diff` for CI with a loose tolerance. A copy of the Manchester reference cases.csv
 # with last-bit noise in `residual` (1e-16 against 3e-16), a number inside a warning moved by
 # 0.4 % (gap_mean_error=0.314 -> 0.315) and pmax_MPa moved by 0.5 %: `--rtol 1e-2` reports only
 # the residual cells; `--ignore-columns residual` makes it OK; a changed warning class or index,

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 22 §3: `run --fail-on CLASSES` exits 1 when a case carries a warning of one of the classes
+# `run --fail-on CLASSES` exits 1 when a case carries a warning of one of the classes
 # (outputs still written, a line says why), 0 otherwise; an unknown class exits 2 and writes
 # nothing; `--fail-on-warning` still means any warning; a batch obeys it too (docs/status.md).
 # Usage: bash fail_on.sh <mhcontact-binary> <source-dir>

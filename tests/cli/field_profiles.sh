@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Field-like files of tests/data/field (issue #22 §1-2): placement check, MiniProf variants,
+# Field-like files of tests/data/field: placement check, MiniProf variants,
 # worn-rail cant checks, a batch's warnings once. Usage: bash field_profiles.sh <mhcontact> <source-dir>
 set -euo pipefail
 MH=$1; SRC=$2

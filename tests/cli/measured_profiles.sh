@@ -3,7 +3,7 @@
 # counterpart (wheels on 60E1 1:40, rails under S1002), solved over a sweep: exit 0 or 1 (some
 # cases may be no_contact etc.), never 2 or 3, never a crash; every row has a status.
 # avg_HR.BAN is read after dropping one point of 0.01 mm jitter; avg_low2.ban, whose gauge face
-# turns under the head (rejected before issue #13), runs after the clean-up, with its warning.
+# turns under the head (once rejected), runs after the clean-up, with its warning.
 set -euo pipefail
 . "$(dirname "$0")/lib/csv_col.sh"
 bin=$1; src=$2

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue #10 item 4: values no physical case has are refused by `hertz` with the same table as the
+# Values no physical case has are refused by `hertz` with the same table as the
 # case file (core/plausible.hpp), exit 2, a hint at the unit mistake, nothing on stdout; and a
 # case file with Q_kN 1e5 is refused by `run` the same way.
 # Usage: bash plausible_ranges.sh <mhcontact-binary> <source-dir>

@@ -43,7 +43,7 @@ grep -q "use mirror_y" "$T/err" || fail "mirror-y message"
 [ $rc -eq 2 ] || fail "xlsx: exit $rc"
 [ ! -e "$T/x.xlsx" ] || fail "xlsx written"
 
-# issue #13: a wheel is not written into a rail file (exit 2, the right extension named, nothing
+# A wheel is not written into a rail file (exit 2, the right extension named, nothing
 # written); every reading format is also written and reads back with the same points
 "$MH" profile convert "$D/MBench_S1002_v3.prw" -o "$T/out.prr" >"$T/out" 2>"$T/err"; rc=$?
 [ $rc -eq 2 ] || fail "wheel as .prr: exit $rc"

@@ -30,10 +30,13 @@ check "60E1 1:40 crown top stays at the origin" grep -qx "0,0" 60E1_1-40.csv
 
 "$BIN" profile generate 60E1 --inclination 1:20 --step 0.05 -o 60E1_1-20.prr >out.txt 2>err.txt
 check "60E1 1:20 .prr exit 0" test $? -eq 0
-check "60E1 1:20 message" grep -qx "wrote 60E1_1-20.prr (60E1 rail, inclination 1:20, 1836 points)" out.txt
-check "60E1 1:20 warns about the vertical gauge flank" grep -qx "warning: 60E1: gauge-side flank left out: it is vertical at 1:20; the profile ends at the R13/flank tangency point" err.txt
+check "60E1 1:20 message" grep -qx "wrote 60E1_1-20.prr (60E1 rail, inclination 1:20, 1951 points, 115 of them on the gauge face)" out.txt
+check "60E1 1:20 notes the vertical gauge flank kept as the face" grep -qx "warning: 60E1: gauge-side flank vertical at 1:20: kept as the gauge face below the R13/flank tangency point, where z(y) ends" err.txt
 "$BIN" profile info 60E1_1-20.prr >info.txt 2>&1
 check "60E1 1:20 .prr reads back as a rail" grep -qx "kind: rail" info.txt
+check "60E1 1:20 .prr reads back with its gauge face (1836 + 115 points)" grep -qx "points: 1836" info.txt
+check "60E1 1:20 .prr gauge face down to 21.79 mm below the top" grep -q "^gauge_face_mm: y -35.24078.* down to -21.787.* (115 points besides those above)$" info.txt
+check "60E1 1:20 .prr reads back without warnings" bash -c '! grep -q "^warning" info.txt'
 
 "$BIN" profile generate S1002 -o S1002.prw >out.txt 2>err.txt
 check "S1002 .prw exit 0" test $? -eq 0
@@ -41,13 +44,13 @@ check "S1002 .prw exit 0" test $? -eq 0
 check "S1002 .prw flange tip at (-55, -28) mm" grep -qx "flange_tip_mm: y -55 z -28" info.txt
 
 # 60E2 and 49E1 (EN 13674-1:2017) work like 60E1: crown top at the origin; the 60E2 gauge flank
-# turns vertical at 1:20 (left out, the warning names its last arc R8), 49E1's 1:17.2 does not.
+# turns vertical at 1:20 (kept as the gauge face, the note names its last arc R8), 49E1's 1:17.2 does not.
 "$BIN" profile generate 60E2 -o 60E2.csv >out.txt 2>err.txt
 check "60E2 exit 0" test $? -eq 0
 check "60E2 crown top" grep -qx "0,0" 60E2.csv
 check "60E2 ends 20 mm below the crown" awk -F, 'END { exit !($2 + 20 < 1e-9 && $2 + 20 > -1e-9) }' 60E2.csv
 "$BIN" profile generate 60E2 --inclination 1:20 -o 60E2_1-20.csv >out.txt 2>err.txt
-check "60E2 1:20 warns about the vertical gauge flank" grep -qx "warning: 60E2: gauge-side flank left out: it is vertical at 1:20; the profile ends at the R8/flank tangency point" err.txt
+check "60E2 1:20 notes the vertical gauge flank" grep -qx "warning: 60E2: gauge-side flank vertical at 1:20: kept as the gauge face below the R8/flank tangency point, where z(y) ends" err.txt
 "$BIN" profile generate 49E1 --inclination 1:20 -o 49E1_1-20.csv >out.txt 2>err.txt
 check "49E1 1:20 exit 0" test $? -eq 0
 check "49E1 1:20 keeps its 1:17.2 flank (no warning)" test ! -s err.txt

@@ -28,7 +28,7 @@ mkdir -p "$tmp/sub" && mv "$tmp/elsewhere.json" "$tmp/sub/"
 cmp -s "$tmp/manchester/cases.csv" "$tmp/re_stdout/cases.csv" || fail "inputs of -o -: other cases.csv"
 # Units: the tables name the curvature sums as hertz does.
 head -1 "$tmp/manchester/geometry.csv" | grep -q ",A_per_mm,B_per_mm," || fail "geometry.csv: A_per_mm, B_per_mm"
-# The split of issue #14 item 3: geometry columns in geometry.csv only; every loaded ellipse has
+# The split of the tables: geometry columns in geometry.csv only; every loaded ellipse has
 # its (tY_mm, ellipse) row there, each key once; the JSON records mirror both tables.
 for c in manchester manchester-plastic s1002-60e1; do
 python3 - "$tmp/$c" <<'PY' || fail "$c: ellipses.csv / geometry.csv / results.json do not match"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue #10 item 7: the integer fields of shard.json are range-checked as integers before any
+# The integer fields of shard.json are range-checked as integers before any
 # conversion: a count of 4294967297 (which would wrap to 1) or a string index is an input error
 # (exit 2) naming the field, never a wrapped value or an internal error.
 # Usage: bash shard_integer_fields.sh <mhcontact-binary> <source-dir>

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 22 §3: `status` says whether a row can be trusted (docs/status.md). On cases/manchester.json
+# `status` says whether a row can be trusted (docs/status.md). On cases/manchester.json
 # the multi-Hertzian row t_Y = 1 mm, 50 kN (area 56.8 mm² against 113.9 mm² by the half-space
 # method) is `outside_validity`, not `ok`, keeps its numbers, names the failed classes in
 # `message` and keeps the detail in `warnings`; every row with a validity warning is

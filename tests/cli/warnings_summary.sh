@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Issue #10 item 3: warnings reach the user. avg_wheel.whl on site_b_hr.prr has cases with
+# Warnings reach the user. avg_wheel.whl on site_b_hr.prr has cases with
 # non_hertzian_excluded warnings: the summary line and results.json's summary count them by kind,
 # the run exits 0 (the 50 rows outside validity are answers), and --fail-on-warning makes it exit 1
 # (outputs still written). The counts: 5 of the 47 rows outside validity fail only the Hertz
 # test's edge gaps on the contact surface of the measured wheel (docs/method.md §4 item 4).
-# Issue #10 item 6: range values are written as the decimals the user meant (0.9, not
+# Range values are written as the decimals the user meant (0.9, not
 # 0.8999999999999999).
 # Usage: bash warnings_summary.sh <mhcontact-binary> <source-dir>
 set -euo pipefail
@@ -25,7 +25,7 @@ grep -q "402 cases, ok 355, outside_validity 47, .*6 with non_hertzian_excluded"
 python3 - "$tmp/o/results.json" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))["summary"]
-# Rows with a validity warning (issue 22 §3) are outside_validity: answers, not failures.
+# Rows with a validity warning are outside_validity: answers, not failures.
 assert s["by_status"] == {"ok": 355, "outside_validity": 47}, s
 assert s["failed"] == 0, s
 assert s["warnings"]["non_hertzian_excluded"] == 6, s

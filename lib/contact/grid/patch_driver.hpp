@@ -94,7 +94,8 @@ bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, d
                      CaseResult& r, GridStart* gs);
 
 /// What every grid method does after solving a case: the start's flange_climb warning, then
-/// `off_profile:patch=K` for each patch whose contact reaches the end of either profile (method.md
+/// `off_profile:patch=K` for each patch whose contact reaches the end of either profile (of a rail
+/// with a vertical gauge face: its foot; ContactGeometry::off_profile_at) (method.md
 /// §3.7: it stands on extrapolated geometry); a not_converged result then loses its pressures
 /// (withhold_unconverged_pressures, grid_checks.hpp).
 void finish_grid_case(const ContactGeometry& G, double tY, const GridStart& gs, CaseResult& r);

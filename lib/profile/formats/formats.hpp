@@ -41,6 +41,8 @@ struct RawProfile {
   /// Smallest printed step of the coordinates (the most decimals seen), in the file's length
   /// units until the reader scales it to mm; 0: not printed (sampled elements) or unknown.
   double print_step = 0;
+  /// Rails: the vertical gauge face found by the clean-up (Profile::face_y, face_z), mm.
+  std::vector<double> face_y, face_z;
   void add(double yy, double zz, std::size_t ln) { y.push_back(yy); z.push_back(zz); line.push_back(ln); }
   /// The same from the tokens as printed; records their printed step.
   void add(const std::string& ty, const std::string& tz, const std::string& where, std::size_t ln) {

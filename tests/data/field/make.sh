@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Re-creates the field-like test profiles of this folder (issue #22) from the standard profiles
+# Re-creates the field-like test profiles of this folder from the standard profiles
 # that mhcontact generates, with awk/printf only. Usage: bash make.sh <mhcontact binary>
 # Each file shows the features of a measured file seen in the field (README.md in this folder);
 # the points are S1002 (wheels) and 60E1 (rails), so that the tests know the true surface.

@@ -1,4 +1,4 @@
-// The status rule (case_result.hpp judge_validity, docs/status.md; issue 22 §3): a row whose
+// The status rule (case_result.hpp judge_validity, docs/status.md): a row whose
 // method is outside its validity is `outside_validity`, not `ok`, and keeps its numbers; the
 // warnings say why. Applied once, in solve_contact, to every method's result.
 #include <catch2/catch.hpp>

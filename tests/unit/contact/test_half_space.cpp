@@ -1,6 +1,6 @@
 // The half-space method (docs/method.md §8) against CONTACT's exact results on the Manchester
 // pair (tests/data/contact/README.md): right wheel, t_Y = -6 ... 10 mm, Q = 50 kN, dx = ds = 0.2 mm,
-// E = 210 GPa, nu = 0.28. Targets (issue 11): max pressure within 2 %, total area within 4 %, each
+// E = 210 GPa, nu = 0.28. Targets: max pressure within 2 %, total area within 4 %, each
 // patch's normal force within 1 % of the load, vertical approach within 1 %, contact reference
 // point within 0.3 mm.
 #include <catch2/catch.hpp>
@@ -95,7 +95,7 @@ TEST_CASE("half-space plastic: a cap above the elastic peak changes nothing, a l
   CHECK(P.capped_load == Approx(P.plastic_area * low.p_lim).epsilon(1e-9));
 }
 
-// Regression (issue 11): the plastic half-space on strongly capped flange contacts took > 60 s a
+// Regression: the plastic half-space on strongly capped flange contacts took > 60 s a
 // case (Manchester pair, Q = 100 kN, p_lim = 900 MPa, elastic peaks 4–6 GPa): a first approach 4×
 // too deep put the grid over tread and flange, the planes moved every pass, and the capped load
 // control did not converge. Bounded in work, not time (the machine is shared): at most 5 patch

@@ -1,4 +1,4 @@
-// Smoothing of measured profiles for the grid methods (issue 23 §1, profiles.md §7 "Smoothing
+// Smoothing of measured profiles for the grid methods (profiles.md §7 "Smoothing
 // for contact"). Reference: the same pair with the exact S1002 wheel (EN 13715, generated), the
 // grid method's own converged answer on the exact profile. The noisy copy is that S1002 sampled
 // every 0.4 mm along the profile (MiniProf's spacing) with reproducible uniform noise of

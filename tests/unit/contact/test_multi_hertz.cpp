@@ -60,7 +60,7 @@ TEST_CASE("circular profiles: one ellipse equal to closed-form Hertz", "[solver]
 }
 
 TEST_CASE("Manchester pair, t_Y −6 … 10 mm, Q 10/50/100 kN: all ok, equilibrium, contacts", "[solver]") {
-  // Issue 3 §5: all cases ok; one contact on most of the tread; two loaded ellipses next to the
+  // All cases ok; one contact on most of the tread; two loaded ellipses next to the
   // CAF jumps (near t_Y = 0 and 5 mm); vertical equilibrium to 1e−9 relative.
   const ContactGeometry& G = manchester();
   const Material mat = steel();

@@ -239,7 +239,7 @@ TEST_CASE("Plastic cap p_lim = 0.6 p0: max p == p_lim, load kept, h <= 0 on the 
   CHECK(ra.n_plastic == r.n_plastic);
 }
 
-// Regression (issue 11, the > 60 s plastic flange cases): with the cap far below the elastic peak
+// Regression (the > 60 s plastic flange cases): with the cap far below the elastic peak
 // and a grid much larger than the contact, [PK]'s load scaling made tens of thousands of elements
 // jump between 0 and p_lim every step (p0/p_lim = 4 on 250 x 250: not converged in 2000 steps,
 // eps 0.44, no element at the cap). Load control with a cap is now a secant on δ over capped

@@ -1,4 +1,4 @@
-// A grid patch that reaches the end of a profile is never `ok` (issue 23 §1): the gap beyond the
+// A grid patch that reaches the end of a profile is never `ok`: the gap beyond the
 // end is extrapolated, not measured, so the row is flagged off_profile and judged
 // outside_validity (docs/status.md). Reference: S1002 on 60E1 1:40 (generated), flange contact
 // t_Y = 9 mm, Q = 50 kN, solved on the whole rail (ok, one patch), then on the same rail cut at

@@ -1,6 +1,6 @@
 // The strip method (docs/method.md §9) as a method of runs, against CONTACT's exact results on the
 // Manchester pair (tests/data/contact, Q = 50 kN) and against this project's half-space solver.
-// Tolerances of issue 12: single-region contact pmax ±5 %, area ±10 %, approach ±3 %; two regions
+// Targets: single-region contact pmax ±5 %, area ±10 %, approach ±3 %; two regions
 // (gauge shoulder, t_Y = 5 mm) ±10 %, ±15 %, ±5 %. t_Y = 0 mm (wide conformal tread patch) missed
 // them with the estimated strip extents alone (pmax −8.5 %); its extents are now refined until the
 // deformed gap closes at every strip end (docs/strips.md), as are those of t_Y = 1 and 5 mm.

@@ -1,6 +1,6 @@
 // The placement check (geometry/placement_check.hpp, docs/profiles.md "Placement check"): a pair
 // placed by gauge positioning whose main contact at t_Y = 0 is not on the tread of both profiles
-// is refused before any case is solved. Issue #22: a wheel measured from its flange back whose
+// is refused before any case is solved. A wheel measured from its flange back whose
 // taping line was never found stood with its flange tip on the rail crown, and 66 cases ran ok.
 #include <catch2/catch.hpp>
 

@@ -119,7 +119,7 @@ TEST_CASE("conicity: a two-slope Δr against its closed form", "[wheelset][conic
 
 TEST_CASE("EN 15302 wheel A on rail A: Δr and tan γe reproduce the standard's tables", "[wheelset][en15302]") {
   // Reference: tests/data/en15302/ (EN 15302:2021 J.2 and K.2 via rohrbecka/EN15302). The tables
-  // print 3 decimals (rounding ±0.0005). Tolerances of issue 25: Δr within 0.005 mm where the
+  // print 3 decimals (rounding ±0.0005). Targets: Δr within 0.005 mm where the
   // table's Δr changes by less than 1 mm per mm of y; tan γe within 0.005 where the table's
   // changes by less than 0.1 per mm of amplitude, inside the standard's window ± min(0.05,
   // 0.5 tan γe) elsewhere. Steep Δr (the flange root, |y| ≥ 6.2 mm) is held to 0.05 mm.

@@ -6,30 +6,16 @@
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
 #include "input/case_file.hpp"
+#include "support/input_errors.hpp"
 #include "input/manifest.hpp"
 
 using namespace mh;
 using nlohmann::json;
 
 namespace {
-const std::string kPath = std::string(MHCONTACT_SOURCE_DIR) + "/cases/manchester.json";
-
-json base() {
-  json j = read_json_file(kPath);
-  j.erase("cases");
-  j["sweep"] = {{"tY_mm", {0}}, {"Q_kN", {100}}};
-  return j;
-}
-
-// The message of the InputError thrown by parsing j ("" if none).
-std::string error_of(const json& j) {
-  try {
-    parse_case_json(j, kPath, true);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+const std::string kPath = testing::manchester_case_path();
+json base() { return testing::manchester_case_json(); }
+std::string error_of(const json& j) { return testing::case_error(j); }
 }  // namespace
 
 TEST_CASE("implausible values are refused with the likely unit mistake", "[input][plausible]") {

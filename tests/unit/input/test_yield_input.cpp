@@ -8,28 +8,15 @@
 #include "core/numfmt.hpp"
 #include "core/units.hpp"
 #include "input/case_file.hpp"
+#include "support/input_errors.hpp"
 
 using namespace mh;
 using nlohmann::json;
 
 namespace {
-const std::string kPath = std::string(MHCONTACT_SOURCE_DIR) + "/cases/manchester.json";
-
-json base() {
-  json j = read_json_file(kPath);
-  j.erase("cases");
-  j["sweep"] = {{"tY_mm", {0}}, {"Q_kN", {100}}};
-  return j;
-}
-
-std::string error_of(const json& j) {
-  try {
-    parse_case_json(j, kPath, true);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+const std::string kPath = testing::manchester_case_path();
+json base() { return testing::manchester_case_json(); }
+std::string error_of(const json& j) { return testing::case_error(j); }
 }  // namespace
 
 TEST_CASE("yield_MPa derives p_lim for the plastic model", "[input][yield]") {

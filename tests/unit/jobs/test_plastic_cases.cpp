@@ -1,4 +1,4 @@
-// The plastic model through `mhcontact run` (issue 4 §4): Manchester pair, p_lim = 900 MPa.
+// The plastic model through `mhcontact run` : Manchester pair, p_lim = 900 MPa.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>

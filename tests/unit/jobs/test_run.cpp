@@ -113,7 +113,7 @@ TEST_CASE("a failing case is a row with its status, the sweep goes on, exit 1", 
   REQUIRE(cli({"run", cf, "-o", d / "out", "-q"}) == mh::kExitCasesFailed);
   const std::string cases = slurp(d / "out/cases.csv");
   REQUIRE_THAT(cases, Catch::Contains("\n1,5,50,out_of_range,"));
-  // t_Y = 1 mm, 50 kN: solved, outside the multi-Hertzian method's validity (issue 22 §3).
+  // t_Y = 1 mm, 50 kN: solved, outside the multi-Hertzian method's validity.
   REQUIRE_THAT(cases, Catch::Contains("\n2,1,50,outside_validity,"));
 }
 

@@ -497,7 +497,7 @@ TEST_CASE("diff cli: --json report", "[diff][cli]") {
 }
 
 // ------------------------------------------------------------------------------------------
-// Issue 22 §3: --ignore-columns, and warnings compared by their names with the numbers inside
+// --ignore-columns, and warnings compared by their names with the numbers inside
 // within tolerance
 // ------------------------------------------------------------------------------------------
 

@@ -1,4 +1,4 @@
-// Issue #22 §1–2: field-like files of tests/data/field/ (make.sh there says how each was made
+// Field-like files of tests/data/field/ (make.sh there says how each was made
 // from the standard profiles): what the reader makes of each, against the true surface.
 #include <catch2/catch.hpp>
 
@@ -12,25 +12,17 @@
 #include "core/errors.hpp"
 #include "profile/read.hpp"
 #include "profile/standard_profiles.hpp"
+#include "support/input_errors.hpp"
 
 namespace {
 
 const std::string kF = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/field/";
 
 std::string error_of(const std::string& path, const mh::ProfileReadOptions& opt = {}) {
-  try {
-    mh::read_profile(path, opt);
-  } catch (const mh::InputError& e) {
-    return e.what();
-  }
-  return "";
+  return mh::testing::profile_error(path, opt);
 }
 
-bool has_warning(const mh::Profile& p, const std::string& part) {
-  for (const auto& w : p.warnings)
-    if (w.find(part) != std::string::npos) return true;
-  return false;
-}
+bool has_warning(const mh::Profile& p, const std::string& part) { return mh::testing::has_warning(p.warnings, part); }
 
 /// Largest |z − z_S1002(y)| [mm] over ylo … yhi [mm].
 double dev_from_s1002_mm(const mh::Profile& p, double ylo, double yhi) {

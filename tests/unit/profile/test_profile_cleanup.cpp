@@ -1,4 +1,4 @@
-// Issue #13: MiniProf styles, clean-up of folds and loops, spreadsheet files and encodings, on the
+// MiniProf styles, clean-up of folds and loops, spreadsheet files and encodings, on the
 // constructed files of tests/data/profiles/constructed/ (make.sh there says how they were made).
 #include <catch2/catch.hpp>
 
@@ -8,18 +8,14 @@
 #include "core/errors.hpp"
 #include "profile/read.hpp"
 #include "profile/standard_profiles.hpp"
+#include "support/input_errors.hpp"
 
 namespace {
 
 const std::string kC = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/constructed/";
 
 std::string error_of(const std::string& path, const mh::ProfileReadOptions& opt = {}) {
-  try {
-    mh::read_profile(path, opt);
-  } catch (const mh::InputError& e) {
-    return e.what();
-  }
-  return "";
+  return mh::testing::profile_error(path, opt);
 }
 
 /// Largest |z − z_ref(y)| [mm] of a profile against a standard one (linear interpolation);

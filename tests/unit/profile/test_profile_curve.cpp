@@ -94,7 +94,7 @@ TEST_CASE("noise on a crown does not flip the curvature sign", "[curve]") {
 #include "profile/read.hpp"
 
 TEST_CASE("measured rails: no spurious curvature sign change on the crown", "[curve]") {
-  // Criterion (issue 2): on the crown, within ±10 mm of the head top, every 0.01 mm node is
+  // Criterion: on the crown, within ±10 mm of the head top, every 0.01 mm node is
   // convex (kappa < 0): no sign change. As a sanity bound its radius lies between 20 and 1000 mm
   // (nominal crown 300 mm; the worn heavy-haul crown of site_b_hr.prr reaches 49.8 mm).
   // Files: the measured heavy-haul rail site_b_hr.prr, the EN 15302 reference rail A (table),

@@ -1,4 +1,4 @@
-// Issue #13 item 5: every format the tool reads is also written, keeping the kind; read → write →
+// Every format the tool reads is also written, keeping the kind; read → write →
 // read gives the same points to the printed precision (shortest round-trip decimals).
 #include <catch2/catch.hpp>
 
@@ -33,6 +33,7 @@ TEST_CASE("read, write, read gives the same points in every format", "[profile][
   const Src sources[] = {
       {"S1002", mh::make_standard_profile("S1002")},
       {"60E1 1:40", mh::make_standard_profile("60E1", mh::Inclination::In40)},
+      {"60E1 1:20 (vertical gauge face)", mh::make_standard_profile("60E1", mh::Inclination::In20)},
       {"60E1 raised 15 mm", high},
       {"MBench_UIC60_v3.prr", mh::read_profile(kData + "MBench_UIC60_v3.prr")},
       {"worn_high_mileage.prw", mh::read_profile(kData + "worn_high_mileage.prw")},
@@ -53,6 +54,11 @@ TEST_CASE("read, write, read gives the same points in every format", "[profile][
       double d = 0;
       for (std::size_t k = 0; k < q.size(); ++k)
         d = std::max({d, std::abs(q.y[k] - src.p.y[k]), std::abs(q.z[k] - src.p.z[k])});
+      REQUIRE(q.face_y.size() == src.p.face_y.size());
+      for (std::size_t k = 0; k < q.face_y.size(); ++k) {
+        CHECK(q.face_y[k] == q.y[0]);  // still vertical
+        d = std::max({d, std::abs(q.face_y[k] - src.p.face_y[k]), std::abs(q.face_z[k] - src.p.face_z[k])});
+      }
       CHECK(d * 1e3 < 1e-9);  // mm: the shortest round-trip decimals give the doubles back
       CHECK(q.warnings.empty());
     }
@@ -121,4 +127,34 @@ TEST_CASE("any inclination 1:N or an angle, the old strings keep their meaning",
   while (p.y[k + 1] < 0) ++k;
   CHECK((p.z[k + 1] - p.z[k]) / (p.y[k + 1] - p.y[k]) == Approx(1.0 / 30).margin(2e-3));
   CHECK_THROWS_AS(mh::make_standard_profile("S1002", mh::parse_inclination("1:30")), mh::InputError);
+}
+
+TEST_CASE("a rail file with a vertical gauge flank is read with its face", "[profile][write][flank]") {
+  // The rail CONTACT read for the S1002/60E1 1:20 references (tests/data/contact/field/inputs,
+  // README there): the generated 60E1 turned 1:20, its flank written as points of one y, from
+  // 21.787 mm below the top up to the R13/flank tangency (5.7 mm). Read back: that flank is the
+  // face, z(y) starts at the tangency point, and nothing is dropped as jitter.
+  const mh::Profile r = mh::read_profile(std::string(MHCONTACT_SOURCE_DIR) +
+                                         "/tests/data/contact/field/inputs/S1002_60E1_1-20/rail.prr");
+  REQUIRE(r.face_y.size() == 58);
+  CHECK(r.face_z.back() == Approx(-21.787024e-3).margin(1e-12));
+  CHECK(r.y[0] == Approx(-35.240789e-3).margin(1e-12));
+  for (double y : r.face_y) CHECK(y == r.y[0]);
+  CHECK(r.warnings.empty());
+  // Canted again (1:40): the face turns with the points, overhanging, and is clipped like any
+  // flank that turns under; no face is left and y stays increasing.
+  mh::Profile twice = r;
+  mh::rotate_towards_track_centre(twice, std::atan(1.0 / 40));
+  CHECK(twice.face_y.empty());
+  CHECK(twice.size() < r.size() + r.face_y.size());
+  for (std::size_t k = 1; k < twice.size(); ++k) REQUIRE(twice.y[k] > twice.y[k - 1]);
+  REQUIRE(twice.warnings.size() == 1);
+  CHECK(twice.warnings[0].find("clipped") != std::string::npos);
+  // A face shorter than 2 mm (a measured face repeating a rounded y) is not a face: dropped as jitter.
+  std::string text = "y_mm,z_mm\n-30,-20\n-30,-19\n";
+  for (int i = 0; i <= 60; ++i) text += std::to_string(-29.5 + i) + "," + std::to_string(-0.001 * (i - 30) * (i - 30)) + "\n";
+  mh::ProfileReadOptions o;
+  o.kind = mh::ProfileKind::Rail;
+  const mh::Profile m = mh::read_profile(put("short_face.csv", text), o);
+  CHECK(m.face_y.empty());
 }

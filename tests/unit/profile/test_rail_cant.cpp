@@ -8,16 +8,14 @@
 #include "profile/rail_cant.hpp"
 #include "profile/read.hpp"
 #include "profile/standard_profiles.hpp"
+#include "support/input_errors.hpp"
 
 using namespace mh;
 
 namespace {
 const std::string kData = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/";
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
-bool has_warning(const RailCantCheck& c, const std::string& part) {
-  for (const auto& w : c.warnings) if (w.find(part) != std::string::npos) return true;
-  return false;
-}
+bool has_warning(const RailCantCheck& c, const std::string& part) { return testing::has_warning(c.warnings, part); }
 }  // namespace
 
 TEST_CASE("rail cant of the generated 60E1 and 54E1 is the cant they were generated with", "[rail_cant]") {

@@ -374,10 +374,11 @@ TEST_CASE("inclination: crown slope +1/40 and +1/20, none leaves the profile unc
     REQUIRE(q40.y[i] == Approx(c * p0.y[i] - s * p0.z[i]).margin(1e-15));
     REQUIRE(q40.z[i] == Approx(s * p0.y[i] + c * p0.z[i]).margin(1e-15));
   }
-  // 1:20: the gauge flank (1:20 to the vertical) becomes vertical: it is left out, with a
-  // warning, and the rail starts at the rotated R13/flank tangency point.
+  // 1:20: the gauge flank (1:20 to the vertical) becomes vertical: z(y) starts at the rotated
+  // R13/flank tangency point and the flank is the gauge face below it (next test), with a note.
   const Profile q20 = mh::make_standard_profile("54E1", Inclination::In20);
   REQUIRE(q20.warnings.size() == 1);
+  REQUIRE(!q20.face_y.empty());
   const mh::RailHeadConstruction k = mh::construct_rail_head(mh::rail_head_definition("54E1"));
   const double a20 = std::atan(1.0 / 20);
   CHECK(q20.y.front() == Approx(-std::cos(a20) * k.yt - std::sin(a20) * k.zt).margin(1e-15));
@@ -489,4 +490,46 @@ TEST_CASE("profile generate writes what make_standard_profile makes", "[stdprof]
     CHECK(!std::ifstream(base + ".prw").good());
     CHECK(!std::ifstream(base + ".xlsx").good());
   }
+}
+
+TEST_CASE("a rail canted 1:20 keeps its vertical gauge flank as the face, exactly as defined", "[stdprof][flank]") {
+  // Reference: the EN 13674-1 heads' R13 (60E2: R8) / flank tangency points, gauge side, from the
+  // definition values (EN 13674-1:2017 as transcribed in rohrbecka/EN13674, derived to 4 decimals;
+  // profiles.md §2), and the flank 1:20 to the vertical down to 20 mm below the crown top.
+  // Turned back by the cant (clockwise about the crown top, the inverse of
+  // rotate_towards_track_centre), every face point must lie on that flank, to 1e-4 mm (the
+  // rounding of the published values), the face must be vertical (every y the tangency point's),
+  // its foot at 20 mm depth, and its nodes at most `step` apart.
+  struct Row { const char* name; double yt_mm, zt_mm; };
+  const double a = std::atan(1.0 / 20), c = std::cos(a), s = std::sin(a), step = 0.1 * mm;
+  for (const Row& row : {Row{"60E1", -35.9998, -14.3000}, Row{"54E1", -35.0001, -14.1001}, Row{"60E2", -35.9999, -14.3002}}) {
+    CAPTURE(row.name);
+    const Profile q = mh::make_standard_profile(row.name, Inclination::In20, step);
+    REQUIRE(q.warnings.size() == 1);
+    CHECK(q.warnings[0].find("kept as the gauge face") != std::string::npos);
+    REQUIRE(q.face_y.size() == q.face_z.size());
+    REQUIRE(q.face_y.size() >= 57);  // about 5.7 mm of flank at 0.1 mm
+    // z(y) starts at the tangency point.
+    const double yt = row.yt_mm * mm, zt = row.zt_mm * mm;
+    CHECK(std::fabs(c * q.y[0] + s * q.z[0] - yt) <= 1e-4 * mm);
+    CHECK(std::fabs(-s * q.y[0] + c * q.z[0] - zt) <= 1e-4 * mm);
+    double prev_z = q.z[0];
+    for (std::size_t i = 0; i < q.face_y.size(); ++i) {
+      CAPTURE(i);
+      REQUIRE(q.face_y[i] == q.y[0]);          // vertical
+      REQUIRE(q.face_z[i] < prev_z);           // downwards from the tangency point
+      CHECK(prev_z - q.face_z[i] <= step * (1 + 1e-9));
+      prev_z = q.face_z[i];
+      const double y0 = c * q.face_y[i] + s * q.face_z[i], z0 = -s * q.face_y[i] + c * q.face_z[i];
+      // On the flank: 1:20 to the vertical, going down towards the gauge side from (yt, zt).
+      CHECK(std::fabs(y0 - (yt - (zt - z0) / 20)) <= 1e-4 * mm);
+    }
+    // The foot 20 mm below the crown top (upright).
+    CHECK(std::fabs(-s * q.face_y.back() + c * q.face_z.back() - (-20 * mm)) <= 1e-4 * mm);
+  }
+  // 1:40 and upright: the flank is not vertical, it is part of z(y); no face.
+  CHECK(mh::make_standard_profile("60E1", Inclination::In40).face_y.empty());
+  CHECK(mh::make_standard_profile("60E1", Inclination::None).face_y.empty());
+  // 49E1's 1:17.2 flank is not vertical at 1:20: no face either.
+  CHECK(mh::make_standard_profile("49E1", Inclination::In20).face_y.empty());
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Re-creates the constructed test profiles of this folder (issue #13) from the standard profiles
+# Re-creates the constructed test profiles of this folder from the standard profiles
 # that mhcontact generates, with awk/printf only. Usage: bash make.sh <mhcontact binary>
 # Every file shows one feature of real measured files (README.md in this folder); the points are
 # S1002 (wheels) and 60E1 (rails) at 0.5 mm spacing, so that the tests know the true surface.

@@ -1,0 +1,127 @@
+// S1002 on 60E1 canted 1:20, both generated: at 1:20 the rail's gauge flank is vertical, kept as
+// its gauge face (profiles.md §3), which the grid methods' normal gap sees (method.md §8).
+// Reference: CONTACT's exact half-space solutions of the same placed profiles, the rail with its
+// flank (tests/data/contact/field/contact_S1002_60E1_1-20.csv, README there: dx = ds = 0.2 mm,
+// E = 210 GPa, nu = 0.28, frictionless), flange cases t_Y = 6, 7, 8, 10 mm x Q = 20, 60, 120 kN.
+// Tolerances: the field trust table's (docs/trust.md): peak pressure 10 %, area 15 % (CONTACT's
+// peak: the largest of its patches; area: their sum). Every row must be `ok`: the patches stay
+// 4-6 mm above the face's foot, so none reaches a profile's end.
+// One row is not a flange contact: t_Y = 6 mm, 120 kN touches the tread, the middle of the head
+// and the gauge corner 28 mm apart, which CONTACT and the default d_comb (8 mm) both solve as one
+// patch in one plane; the corner then lies 19 deg off that plane, and its load (CONTACT 10.4 kN,
+// here 6.4 kN) follows the plane's angle (0.05 deg apart: 0.024 mm of gap at the corner against
+// an approach of 0.08 mm). There only the area is compared; the peak is compared with the corner
+// as its own patch (d_comb 4 mm, its own plane), which removes that dependence.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <string>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "contact/solve.hpp"
+#include "geometry/gap.hpp"
+#include "input/case_file.hpp"
+#include "jobs/run.hpp"
+#include "output/csv_table.hpp"
+
+namespace {
+
+const std::string kField = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/contact/field/";
+
+// The pair as the trust table runs it (trust.json, pair "S1002/60E1_1:20").
+mh::CaseFile pair_case() {
+  std::ifstream in(kField + "trust.json");
+  const nlohmann::json spec = nlohmann::json::parse(in);
+  for (const auto& p : spec.at("pairs"))
+    if (p.at("name") == "S1002/60E1_1:20") return mh::parse_case_json(p.at("case"), kField + "trust.json", false);
+  FAIL("pair S1002/60E1_1:20 not in trust.json");
+  return {};
+}
+
+}  // namespace
+
+TEST_CASE("flange contact on the vertical 1:20 flank: strips and half-space against CONTACT", "[flank][contact_reference]") {
+  const mh::CsvTable ref = mh::read_csv_file(kField + "contact_S1002_60E1_1-20.csv");
+  auto col = [&](std::size_t i, const char* c) { return std::stod(ref.rows[i][static_cast<std::size_t>(ref.column(c))]); };
+  // CONTACT per case (t_Y mm, Q kN): peak pressure [MPa] (largest patch), area [mm²] (sum).
+  std::map<std::pair<int, int>, std::pair<double, double>> contact;
+  for (std::size_t i = 0; i < ref.rows.size(); ++i) {
+    auto& c = contact[{static_cast<int>(std::lround(col(i, "y_ws_mm"))), static_cast<int>(std::lround(col(i, "Fz_target_N") / 1e3))}];
+    c.first = std::max(c.first, col(i, "pmax_MPa"));
+    c.second += col(i, "area_mm2");
+  }
+  REQUIRE(contact.size() == 12);
+  const mh::CaseFile cf = pair_case();
+  const mh::PairGeometry pg = mh::build_pair_geometry(cf);
+  REQUIRE(pg.geo.has_rail_face());
+  for (mh::Method m : {mh::Method::Strips, mh::Method::HalfSpace}) {
+    for (const auto& [k, c] : contact) {
+      const double tY = k.first * 1e-3, Q = k.second * 1e3;
+      mh::MethodOptions opt = cf.method_options();
+      opt.method = m;
+      const mh::CaseResult r = mh::solve_contact(pg.geo, cf.material, tY, Q, opt);
+      const double dp = r.pmax / 1e6 / c.first - 1, da = r.area / 1e-6 / c.second - 1;
+      INFO(mh::to_string(m) << " t_Y = " << k.first << " mm, Q = " << k.second << " kN: " << mh::to_string(r.status)
+                            << " " << r.message << "; pmax " << r.pmax / 1e6 << " MPa (CONTACT " << c.first << ", "
+                            << 100 * dp << " %), area " << r.area / 1e-6 << " mm2 (CONTACT " << c.second << ", "
+                            << 100 * da << " %)");
+      CHECK(r.status == mh::CaseStatus::Ok);
+      for (const std::string& w : r.warnings) CHECK(w.rfind("off_profile:", 0) != 0);
+      CHECK(std::fabs(da) <= 0.15);
+      if (k != std::make_pair(6, 120)) {
+        CHECK(std::fabs(dp) <= 0.10);
+        continue;
+      }
+      opt.half_space.d_comb = opt.strips.d_comb = 4e-3;
+      const mh::CaseResult split = mh::solve_contact(pg.geo, cf.material, tY, Q, opt);
+      const double sp = split.pmax / 1e6 / c.first - 1, sa = split.area / 1e-6 / c.second - 1;
+      INFO("d_comb 4 mm: " << split.patches.size() << " patches, pmax " << split.pmax / 1e6 << " MPa (" << 100 * sp
+                           << " %), area " << split.area / 1e-6 << " mm2 (" << 100 * sa << " %)");
+      CHECK(split.status == mh::CaseStatus::Ok);
+      CHECK(split.patches.size() == 2);
+      CHECK(std::fabs(sp) <= 0.10);
+      CHECK(std::fabs(sa) <= 0.15);
+    }
+  }
+}
+
+TEST_CASE("the normal gap meets a vertical gauge face on the face", "[flank]") {
+  // Closed form: a normal line (direction (-sin g, cos g), sin g > 0) through the plane point
+  // (qy, qz) crosses y = y_f at height qz + (qy - y_f)/tan g; below the face's top it meets the
+  // rail there, at y_f exactly (the extrapolation of z(y) beyond its first point would give a y
+  // up to 0.04 mm beyond it). Above the top it meets z(y), at y > y_f.
+  const mh::CaseFile cf = pair_case();
+  const mh::PairGeometry pg = mh::build_pair_geometry(cf);
+  const mh::WheelRailGap gap(pg.geo, 7e-3);
+  REQUIRE(gap.has_rail_face());
+  const double yf = gap.rail_face_y(), ztop = gap.z_rail(yf);
+  const mh::PatchPlane P = mh::plane_at(gap, -34.4e-3);  // CONTACT's contact point, gamma ~ 69.5 deg
+  REQUIRE(std::sin(P.gamma) > 0.9);
+  int below = 0, above = 0;
+  for (double s = -8e-3; s <= 0; s += 0.25e-3) {
+    const double qy = P.y_ref + s * std::cos(P.gamma), qz = P.z_ref + s * std::sin(P.gamma);
+    const double z_cross = qz + (qy - yf) / std::tan(P.gamma);
+    double y_rail = 0;
+    mh::normal_gap(gap, P, 0, s, 0, &y_rail);
+    CAPTURE(s, z_cross, ztop);
+    if (z_cross < ztop - 1e-9) {
+      ++below;
+      CHECK(std::fabs(y_rail - yf) <= 1e-12);
+    } else if (z_cross > ztop + 1e-9) {
+      ++above;
+      CHECK(y_rail > yf);
+    }
+  }
+  CHECK(below >= 5);
+  CHECK(above >= 5);
+  // The end of the rail for a grid patch (off_profile:patch=K): at z(y)'s first point by y alone,
+  // but on the face only at its foot (within a strip width).
+  CHECK(pg.geo.off_profile(7e-3, yf));
+  CHECK(!pg.geo.off_profile_at(7e-3, yf, ztop - 2e-3));
+  CHECK(pg.geo.off_profile_at(7e-3, yf, gap.rail_face_foot() + 0.5 * pg.geo.strip_width));
+}
