@@ -25,7 +25,8 @@ Every pair is run with every method (`mhcontact run`, the case's "method" replac
 The reference of a case is CONTACT's (peak pressure: the largest of its patches; area: their sum)
 where the pair has a table with that case, otherwise this project's half-space method on a fine
 grid (dx = ds = fine_half_space_mm, 0.1 mm) when that row is `ok`; a case without a usable
-reference is counted under "no reference" and not judged.
+reference is counted under "no reference" and not judged; "of them ok" counts those whose status
+is `ok` (a row that claims to be usable where nothing can check it; JSON key noref_ok).
 
 Per method it prints: the cases `ok`, the cases of every other status, and the SILENT cases: `ok`
 rows whose peak pressure differs from the reference by more than the pmax tolerance (10 %) or
@@ -186,7 +187,7 @@ def evaluate(spec, spec_dir, mhcontact, methods, pair_names, workdir, jobs):
             results[futs[fu]] = fu.result()
 
     def fresh():
-        return {m: {"n": 0, "status": {}, "silent": 0, "beyond": 0, "noref": 0} for m in methods}
+        return {m: {"n": 0, "status": {}, "silent": 0, "beyond": 0, "noref": 0, "noref_ok": 0} for m in methods}
     stats = fresh()
     by_pair = {}
     silent_list = []
@@ -218,6 +219,8 @@ def evaluate(spec, spec_dir, mhcontact, methods, pair_names, workdir, jobs):
                     s["status"][st] = s["status"].get(st, 0) + 1
                     if refs[k][0] is None:
                         s["noref"] += 1
+                        if st == "ok":
+                            s["noref_ok"] += 1
                     if beyond:
                         s["beyond"] += 1
                         if st == "ok":
@@ -239,11 +242,12 @@ def status_columns(stats):
 
 def print_table(ev, methods, markdown, out=sys.stdout):
     cols = status_columns(ev["stats"])
-    head = ["method", "cases"] + cols + ["beyond tol", "SILENT", "no reference"]
+    head = ["method", "cases"] + cols + ["beyond tol", "SILENT", "no reference", "of them ok"]
     rows = []
     for m in methods:
         s = ev["stats"][m]
-        rows.append([m, s["n"]] + [s["status"].get(c, 0) for c in cols] + [s["beyond"], s["silent"], s["noref"]])
+        rows.append([m, s["n"]] + [s["status"].get(c, 0) for c in cols] + [s["beyond"], s["silent"], s["noref"],
+                                                                        s["noref_ok"]])
     if markdown:
         out.write("| " + " | ".join(head) + " |\n")
         out.write("|" + "---|" * len(head) + "\n")

@@ -212,13 +212,20 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   const ProfileCurve& R = *G.rail_curve;
   G.wheel_window = W.window_used();
   G.rail_window = R.window_used();
-  // Curvature samples for the Hertz validity test (signs as in CandidateGeom).
+  // Curvature samples for the Hertz validity test (signs as in CandidateGeom), of the curves and,
+  // when a profile is smoothed for contact, of the contact surface.
   {
-    std::vector<double> kr, kw;
-    for (double y = R.y_min(); y <= R.y_max() + 1e-12; y += G.kappa_dy) kr.push_back(-R.kappa(std::min(y, R.y_max())));
-    for (double y = W.y_min(); y <= W.y_max() + 1e-12; y += G.kappa_dy) kw.push_back(W.kappa(std::min(y, W.y_max())));
-    G.rail_k = CurvatureSamples(R.y_min(), G.kappa_dy, std::move(kr));
-    G.wheel_k = CurvatureSamples(W.y_min(), G.kappa_dy, std::move(kw));
+    auto samples = [&](const ProfileCurve& C, double sign) {
+      std::vector<double> k;
+      for (double y = C.y_min(); y <= C.y_max() + 1e-12; y += G.kappa_dy) k.push_back(sign * C.kappa(std::min(y, C.y_max())));
+      return CurvatureSamples(C.y_min(), G.kappa_dy, std::move(k));
+    };
+    G.rail_k = samples(R, -1);
+    G.wheel_k = samples(W, 1);
+    if (G.rail_gap_curve != G.rail_curve || G.wheel_gap_curve != G.wheel_curve) {
+      G.rail_gap_k = G.rail_gap_curve == G.rail_curve ? G.rail_k : samples(*G.rail_gap_curve, -1);
+      G.wheel_gap_k = G.wheel_gap_curve == G.wheel_curve ? G.wheel_k : samples(*G.wheel_gap_curve, 1);
+    }
   }
 
   // Positioning at t_Y = 0 (method.md §7): the gauge point of the rail is gauge/2 from the track

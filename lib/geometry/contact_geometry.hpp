@@ -156,6 +156,12 @@ class ContactGeometry {
   double kappa_dy = 0.05e-3;
   CurvatureSamples rail_k, wheel_k;
   bool has_curvature_samples() const { return !rail_k.empty() && !wheel_k.empty(); }
+  /// The same samples of the contact surface, the profiles the grid methods solve on
+  /// (wheel_gap_curve, rail_gap_curve), when a profile is smoothed for contact; empty otherwise
+  /// (the contact surface is then the curves above). The Hertz validity test measures the gap at
+  /// the patch edges on both (contact/ellipse/hertz_validity.hpp).
+  CurvatureSamples rail_gap_k, wheel_gap_k;
+  bool has_contact_surface_samples() const { return !rail_gap_k.empty() && !wheel_gap_k.empty(); }
   /// 1/R_rxx, 1/R_wxx [1/m] at any y, linear between samples, held constant beyond the ends.
   double k_rxx_at(double y_r) const { return rail_k.at(y_r); }
   double k_wxx_at(double y_w) const { return wheel_k.at(y_w); }

@@ -93,12 +93,21 @@ nlohmann::json profiles_json(const PairGeometry& pg) {
 // The profiles as used (rail with its inclination), canonical frame, mm: for plots.
 void write_profiles_csv(const PairGeometry& pg, const std::string& path) {
   OutputFile f(path);
-  std::string s = "kind,y_mm,z_mm\n";
-  for (const Profile* p : {&pg.wheel, &pg.rail}) {
+  std::string s = "kind,y_mm,z_mm,z_contact_mm\n";
+  // z_contact_mm: the surface the grid methods solve on (geometry/gap.hpp) at the point's y, i.e.
+  // a measured profile smoothed for contact (profiles.md, "Smoothing for contact"), else the
+  // profile's smooth curve; what an independent solver must be given to solve the same problem.
+  // Empty where the curve was not built (a wheel's flange back, beyond where it can meet the rail).
+  const ProfileCurve* gap_curve[2] = {pg.geo.wheel_gap_curve.get(), pg.geo.rail_gap_curve.get()};
+  const Profile* prof[2] = {&pg.wheel, &pg.rail};
+  for (int k = 0; k < 2; ++k) {
+    const Profile* p = prof[k];
     for (std::size_t i = 0; i < p->size(); ++i) {
       s += to_string(p->kind);
       s += ','; num(s, p->y[i] * units::per_mm);
       s += ','; num(s, p->z[i] * units::per_mm);
+      s += ',';
+      if (gap_curve[k] && gap_curve[k]->contains(p->y[i])) num(s, gap_curve[k]->z(p->y[i]) * units::per_mm);
       s += '\n';
     }
   }

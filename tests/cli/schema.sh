@@ -76,7 +76,7 @@ grep -q "^1,missing,$tmp/no_such.prw," "$tmp/batch/pairs.csv" || fail "pairs.csv
 "$bin" run "$src/cases/manchester-plastic.json" -o "$tmp/p" --pressure-grid 3 -q
 "$bin" geometry "$src/cases/manchester.json" -o "$tmp/g" -q
 "$bin" run "$src/cases/manchester-strips.json" -o "$tmp/st" --strips -q || fail "strip run"
-for f in "$tmp/p/cases.csv" "$tmp/p/ellipses.csv" "$tmp/p/geometry.csv" "$tmp/p/pressure.csv" "$tmp/g/caf.csv" "$tmp/batch/pairs.csv" "$tmp/batch/geometry.csv" "$tmp/st/patches.csv" "$tmp/st/strips.csv"; do
+for f in "$tmp/p/cases.csv" "$tmp/p/ellipses.csv" "$tmp/p/geometry.csv" "$tmp/p/pressure.csv" "$tmp/g/caf.csv" "$tmp/g/profiles.csv" "$tmp/batch/pairs.csv" "$tmp/batch/geometry.csv" "$tmp/st/patches.csv" "$tmp/st/strips.csv"; do
   for col in $(head -1 "$f" | tr ',' ' '); do
     grep -q "\`$col\`\|[,\`]$col[,\`]" "$src/docs/outputs.md" || fail "docs/outputs.md does not document column $col of $(basename "$f")"
   done

@@ -22,6 +22,14 @@ std::string HertzValidity::describe(const HertzValidityOptions& opt) const {
     if (!s.empty()) s += ':';
     s += "gap_mean_error=" + r(gap_mean_error) + ">" + format_number(opt.max_gap_mean_error);
   }
+  if (surface_gap_error_failed) {
+    if (!s.empty()) s += ':';
+    s += "surface_gap_error=" + r(surface_gap_error) + ">" + format_number(opt.max_gap_error);
+  }
+  if (surface_gap_mean_error_failed) {
+    if (!s.empty()) s += ':';
+    s += "surface_gap_mean_error=" + r(surface_gap_mean_error) + ">" + format_number(opt.max_gap_mean_error);
+  }
   return s;
 }
 
@@ -40,28 +48,44 @@ HertzValidity hertz_validity(double b, double k_rxx, double k_wxx, double gap_er
   return v;
 }
 
+namespace {
+
+// The edge-gap errors of the Hertz quadratic on one pair of curvature samples (rail, wheel):
+// g(±b) = ∫_0^b (b − w) S(±w) dw, S = k_rxx + k_wxx along both profiles from the contact
+// point, exact for the sampled (piecewise linear) curvatures. w runs along the patch, in the
+// contact plane, i.e. along the arc of the profiles, while the samples are uniform in the
+// profiles' lateral y: the arc length w lies at y ± w cos γ (the tangent at the contact point
+// is inclined by γ), so with v = w cos γ, g(±b) = edge_gap(y, b cos γ, ±1) / cos²γ. Without
+// it a flange patch at γ = 70° would be tested 2.9 patch half-widths out.
+void edge_gap_errors(const CurvatureSamples& rail, const CurvatureSamples& wheel, const CandidateGeom& g, double b,
+                     double* err, double* mean_err) {
+  const double S0 = g.k_rxx + g.k_wxx;  // 2B at the contact point
+  const double c = std::cos(g.gamma), bc = b * c;
+  const double quad = 0.5 * S0 * b * b;
+  double e[2];
+  for (int side : {-1, 1}) {
+    const double gb = (rail.edge_gap(g.y_r, bc, side) + wheel.edge_gap(g.y_w, bc, side)) / (c * c);
+    e[side > 0] = S0 > 0 ? (gb - quad) / quad : INFINITY;
+  }
+  *err = std::max(std::fabs(e[0]), std::fabs(e[1]));
+  *mean_err = S0 > 0 ? 0.5 * std::fabs(e[0] + e[1]) : INFINITY;
+}
+
+}  // namespace
+
 HertzValidity hertz_validity(const ContactGeometry& G, const CandidateGeom& g, double b,
                              const HertzValidityOptions& opt) {
-  const double S0 = g.k_rxx + g.k_wxx;  // 2B at the contact point
   double err = 0, mean_err = 0;
-  if (b > 0 && G.has_curvature_samples()) {
-    // g(±b) = ∫_0^b (b − w) S(±w) dw, S = k_rxx + k_wxx along both profiles from the contact
-    // point, exact for the sampled (piecewise linear) curvatures. w runs along the patch, in the
-    // contact plane, i.e. along the arc of the profiles, while the samples are uniform in the
-    // profiles' lateral y: the arc length w lies at y ± w cos γ (the tangent at the contact point
-    // is inclined by γ), so with v = w cos γ, g(±b) = edge_gap(y, b cos γ, ±1) / cos²γ. Without
-    // it a flange patch at γ = 70° would be tested 2.9 patch half-widths out.
-    const double c = std::cos(g.gamma), bc = b * c;
-    const double quad = 0.5 * S0 * b * b;
-    double e[2];
-    for (int side : {-1, 1}) {
-      const double gb = (G.rail_k.edge_gap(g.y_r, bc, side) + G.wheel_k.edge_gap(g.y_w, bc, side)) / (c * c);
-      e[side > 0] = S0 > 0 ? (gb - quad) / quad : INFINITY;
-    }
-    err = std::max(std::fabs(e[0]), std::fabs(e[1]));
-    mean_err = S0 > 0 ? 0.5 * std::fabs(e[0] + e[1]) : INFINITY;
+  if (b > 0 && G.has_curvature_samples()) edge_gap_errors(G.rail_k, G.wheel_k, g, b, &err, &mean_err);
+  HertzValidity v = hertz_validity(b, g.k_rxx, g.k_wxx, err, mean_err, opt);
+  // The contact surface of a profile smoothed for contact, against the same B b² (header).
+  if (b > 0 && G.has_contact_surface_samples()) {
+    edge_gap_errors(G.rail_gap_k, G.wheel_gap_k, g, b, &v.surface_gap_error, &v.surface_gap_mean_error);
+    v.surface_gap_error_failed = !(v.surface_gap_error <= opt.max_gap_error);  // NaN fails
+    v.surface_gap_mean_error_failed = !(v.surface_gap_mean_error <= opt.max_gap_mean_error);
+    v.valid = v.valid && !v.surface_gap_error_failed && !v.surface_gap_mean_error_failed;
   }
-  return hertz_validity(b, g.k_rxx, g.k_wxx, err, mean_err, opt);
+  return v;
 }
 
 std::string GapKink::describe(const HertzValidityOptions& opt) const {

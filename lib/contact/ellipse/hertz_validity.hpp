@@ -28,15 +28,22 @@ namespace mh {
 
 /// The outcome of the test for one ellipse: both measured ratios and which limits failed.
 struct HertzValidity {
-  bool valid = true;              ///< both ratios within their limits
+  bool valid = true;              ///< every ratio within its limit
   double b_over_R = 0;            ///< [-] b / min(|R_rxx|, |R_wxx|)
   double gap_error = 0;    ///< [-] max over u = ±b of |g(u) − B u²| / (B b²)
   double gap_mean_error = 0;  ///< [-] |(g(−b) + g(b))/2 − B b²| / (B b²)
+  /// The same two errors with g(u) from the contact surface, a profile smoothed for contact
+  /// (ContactGeometry::rail_gap_k, wheel_gap_k), against the same B b²; 0 when no profile is
+  /// smoothed for contact (the surface is then the curves). See hertz_validity(G, g, b) below.
+  double surface_gap_error = 0, surface_gap_mean_error = 0;
   bool b_over_R_failed = false;
   bool gap_error_failed = false;
   bool gap_mean_error_failed = false;
-  /// "b_over_R=22.31>0.3", "gap_error=3.1>0.5", "gap_mean_error=0.12>0.1", those that failed,
-  /// joined by ':'; empty when valid.
+  bool surface_gap_error_failed = false;
+  bool surface_gap_mean_error_failed = false;
+  /// "b_over_R=22.31>0.3", "gap_error=3.1>0.5", "gap_mean_error=0.12>0.1",
+  /// "surface_gap_error=…>0.5", "surface_gap_mean_error=…>0.1", those that failed, joined by ':';
+  /// empty when valid.
   std::string describe(const HertzValidityOptions& opt) const;
 };
 
@@ -49,6 +56,16 @@ HertzValidity hertz_validity(double b, double k_rxx, double k_wxx, double gap_er
 /// The test for a candidate g of the geometry G with lateral semi-axis b [m]: the curvature
 /// gap error is measured on G's curvature samples of both profiles (ContactGeometry::rail_k,
 /// wheel_k), integrated exactly over [−b, b] in O(1) (CurvatureSamples::edge_gap).
+/// When a profile is smoothed for contact (a measured profile, profiles.md "Smoothing for
+/// contact"), the edge gaps are measured again on the contact surface (rail_gap_k, wheel_gap_k)
+/// against the same B b², with the same limits. The ellipse's B comes from the curve's
+/// window fit at the contact point; the smoothed surface is the project's definition of a
+/// measured profile for contact, on which the grid methods (and an independent reference) solve.
+/// The two agree wherever the profile's curvature varies over lengths longer than the smoothing
+/// length L; where they disagree over the patch by more than the budget, the curvature there
+/// changes over less than L (a sharp measured gauge corner, a corner near the profile's clipped
+/// end), the measurement does not fix the curvature at the patch's scale, and the Hertz answer is
+/// not the answer on the contact surface: not valid.
 HertzValidity hertz_validity(const ContactGeometry& G, const CandidateGeom& g, double b,
                              const HertzValidityOptions& opt = {});
 

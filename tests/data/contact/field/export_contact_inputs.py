@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Write the profiles of one trust.json pair as CONTACT reads them, placed as mhcontact places them.
 
-    export_contact_inputs.py TRUST.json PAIR_NAME OUTDIR [--mhcontact build/mhcontact]
+    export_contact_inputs.py TRUST.json PAIR_NAME OUTDIR [--mhcontact build/mhcontact] [--surface points|contact]
 
 Runs `mhcontact geometry` on the pair's case and writes, from its profiles.csv (the profiles in
 mhcontact's canonical frame, after the reader's clean-up, the rail canted by the case's
@@ -10,6 +10,14 @@ inclination, the wheel's y = 0 at its taping line), OUTDIR/rail.prr and OUTDIR/w
 CONTACT tools (README.md in this folder) with FBPOS = the case's flange_back_position_mm (the wheel's
 flange back in this frame), CANT = 0 (the rail is canted in the file), GAUGHT and GAUGWD from the
 case, no YTAPE, dx = ds = 0.2 mm, NPOT_MAX 200000. The geometry.json of the run is kept in OUTDIR.
+
+--surface contact (the default) writes a measured profile's `z_contact_mm` column: the surface
+mhcontact's grid methods solve on, i.e. the profile already smoothed for contact by mhcontact's
+spline at the case's geometry.smoothing_mm (default 5 mm), at the points' y; an exact profile, which
+mhcontact does not smooth, as read (z_mm). CONTACT must then read it without smoothing of its own (SMOOTH = 0, the
+default of the deck): both programs solve the same surface. --surface points writes the points as
+read (z_mm), for a reference that smooths with CONTACT's own spline (add "rail_ismooth"/"rail_smooth"
+to the deck by hand).
 """
 import argparse
 import csv
@@ -23,9 +31,10 @@ sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "..", "scripts"))
 import trust_table  # noqa: E402
 
 
-def write_simpack(path, kind, pts, src):
+def write_simpack(path, kind, pts, src, what):
     with open(path, "w") as f:
         f.write("! SIMPACK profile written by export_contact_inputs.py from mhcontact geometry of %s\n" % src)
+        f.write("! z: the %s\n" % what)
         f.write("! canonical points: y towards the field side, z DOWN (SIMPACK), mm; no transformations\n")
         f.write("header.begin\n  version = 1\n  type    = %d\nheader.end\n" % (1 if kind == "wheel" else 0))
         f.write("spline.begin\n  units.len.f = 1000.\n  units.ang.f = 1.\n  point.begin\n")
@@ -40,6 +49,7 @@ def main():
     ap.add_argument("pair")
     ap.add_argument("out")
     ap.add_argument("--mhcontact", default=os.path.join(trust_table.ROOT, "build", "mhcontact"))
+    ap.add_argument("--surface", choices=["contact", "points"], default="contact")
     a = ap.parse_args()
     spec = json.load(open(a.spec))
     sdir = os.path.dirname(os.path.abspath(a.spec))
@@ -51,14 +61,28 @@ def main():
     json.dump(case, open(cpath, "w"), indent=1)
     gdir = os.path.join(a.out, "geometry")
     subprocess.run([a.mhcontact, "geometry", cpath, "-o", gdir], check=True)
+    # A profile smoothed for contact: measured (noise class) with a smoothing length > 0.
+    gj = json.load(open(os.path.join(gdir, "geometry.json")))
+    L = case.get("geometry", {}).get("smoothing_mm", 5)
+    smoothed = {k: a.surface == "contact" and L > 0 and gj["profiles"][k]["noise"]["class"] == "measured"
+                for k in ("wheel", "rail")}
     pts = {"wheel": [], "rail": []}
     for r in csv.DictReader(open(os.path.join(gdir, "profiles.csv"))):
-        pts[r["kind"]].append((float(r["y_mm"]), float(r["z_mm"])))
-    write_simpack(os.path.join(a.out, "rail.prr"), "rail", pts["rail"], pair["name"])
-    write_simpack(os.path.join(a.out, "wheel.prw"), "wheel", pts["wheel"], pair["name"])
+        k = r["kind"]
+        z = r["z_contact_mm"] if smoothed[k] else r["z_mm"]
+        if z != "":  # z_contact_mm is empty where the surface is not built
+            pts[k].append((float(r["y_mm"]), float(z)))
+    for k in ("rail", "wheel"):
+        what = ("surface of mhcontact's grid methods: the points smoothed for contact at L = %g mm (z_contact_mm)" % L
+                if smoothed[k] else "points as read (z_mm)")
+        write_simpack(os.path.join(a.out, "rail.prr" if k == "rail" else "wheel.prw"), k, pts[k], pair["name"], what)
+        print("%s: %d points, %s" % (k, len(pts[k]), what))
     tr = case.get("track", {})
     sweep = {
         "name": pair["name"], "side": "right", "prefix": "r",
+        "surface": {k: ("mhcontact geometry's z_contact_mm: smoothed for contact by mhcontact "
+                        "(geometry.smoothing_mm %g), read by CONTACT without smoothing" % L) if smoothed[k]
+                    else "the points as read (z_mm)" for k in ("rail", "wheel")},
         "profiles": ["rail.prr", "wheel.prw"],
         "deck": {"rail": "rail.prr", "wheel": "wheel.prw",
                  "gaught": tr.get("gauge_height_mm", 14), "gaugwd": tr.get("gauge_mm", 1435),

@@ -1,4 +1,5 @@
 ! SIMPACK profile written by export_contact_inputs.py from mhcontact geometry of S1002/avg_low2
+! z: the points as read (z_mm)
 ! canonical points: y towards the field side, z DOWN (SIMPACK), mm; no transformations
 header.begin
   version = 1
