@@ -7,15 +7,15 @@
 #include <stdexcept>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
-#include <boost/math/tools/roots.hpp>
 
+#include "core/roots.hpp"
 #include "core/units.hpp"
 
 namespace mh {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr std::uintmax_t kMaxIterations = 200;
+constexpr int kMaxIterations = 200;
 }  // namespace
 
 double en15302_window(double t) { return std::min(0.05, 0.5 * t); }
@@ -88,10 +88,12 @@ ConicityResult EquivalentConicity::at(double A) const {
   if (Fl == 0) y2 = l;
   else if (Fh == 0) y2 = h;
   else if (Fl < 0 && Fh > 0) {
-    std::uintmax_t it = kMaxIterations;
-    const double tol = opt_.turning_point_tolerance;
-    const auto s = boost::math::tools::toms748_solve(F, l, h, Fl, Fh, [tol](double a, double b) { return std::fabs(b - a) <= tol; }, it);
-    y2 = 0.5 * (s.first + s.second);
+    RootTolerance tol;
+    tol.abs = opt_.turning_point_tolerance;
+    tol.rel = 0;
+    tol.max_iterations = kMaxIterations;
+    const RootResult s = bracketed_root(F, l, h, Fl, Fh, tol);
+    y2 = 0.5 * (s.lo + s.hi);
   } else {
     r.status = "out_of_range";
     return r;
