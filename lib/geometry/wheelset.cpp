@@ -79,8 +79,7 @@ double Wheelset::RailScan::max_over(double lo, double hi) const {
   const double t_lo = std::floor((lo - y_min) / step) - 1, t_hi = std::floor((hi - y_min) / step) + 2;
   const std::size_t k_lo = t_lo <= 0 ? 0 : std::min(n - 1, static_cast<std::size_t>(t_lo));
   const std::size_t k_hi = t_hi <= 0 ? 0 : std::min(n - 1, static_cast<std::size_t>(t_hi));
-  std::size_t lev = 0;
-  while ((std::size_t{2} << lev) <= k_hi - k_lo + 1) ++lev;
+  const std::size_t lev = static_cast<std::size_t>(63 - __builtin_clzll(static_cast<unsigned long long>(k_hi - k_lo + 1)));
   const double* m = max.data() + lev * n;
   return std::max(m[k_lo], m[k_hi + 1 - (std::size_t{1} << lev)]);
 }
@@ -398,16 +397,51 @@ WheelsetState Wheelset::at(double y) const {
   return st;
 }
 
+bool Wheelset::mirrored() const {
+  // Same profiles, rail scan table and placement on both sides: without roll, the left wheel at
+  // y is the right wheel at −y (contact() sees U0 = −y − c either way, and nothing else of y).
+  const Side &L = side_[0], &R = side_[1];
+  return opt_.roll == WheelsetRoll::None && L.W == R.W && L.R == R.R && L.rail == R.rail && L.R0 == R.R0 &&
+         L.a == R.a && L.c == R.c && L.ys0 == R.ys0 && L.is0 == R.is0;
+}
+
 std::vector<WheelsetState> Wheelset::sweep(const std::vector<double>& ys, unsigned threads) const {
   std::vector<WheelsetState> out(ys.size());
   const std::size_t n = ys.size(), nt = std::max<std::size_t>(1, std::min<std::size_t>(threads, n / 64 + 1));
-  auto work = [&](std::size_t t) {
-    for (std::size_t k = n * t / nt; k < n * (t + 1) / nt; ++k) out[k] = at(ys[k]);
+  auto parallel = [&](auto&& row) {
+    auto work = [&](std::size_t t) {
+      for (std::size_t k = n * t / nt; k < n * (t + 1) / nt; ++k) row(k);
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t t = 1; t < nt; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (auto& th : pool) th.join();
   };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < nt; ++t) pool.emplace_back(work, t);
-  work(0);
-  for (auto& th : pool) th.join();
+  if (!mirrored()) {
+    parallel([&](std::size_t k) { out[k] = at(ys[k]); });
+  } else {
+    // The right wheel at every row, then the left wheel from the row at −y where there is one.
+    std::vector<char> found_right(n), found_left(n);
+    parallel([&](std::size_t k) {
+      bool f = false;
+      out[k].y = ys[k];
+      out[k].right = contact(side_[1], ys[k], 0.0, &f);
+      found_right[k] = f;
+    });
+    parallel([&](std::size_t k) {
+      const auto it = std::lower_bound(ys.begin(), ys.end(), -ys[k]);
+      bool f = false;
+      if (it != ys.end() && *it == -ys[k]) {
+        const std::size_t m = static_cast<std::size_t>(it - ys.begin());
+        out[k].left = out[m].right;
+        f = found_right[m];
+      } else {
+        out[k].left = contact(side_[0], ys[k], 0.0, &f);
+      }
+      found_left[k] = f;
+    });
+    for (std::size_t k = 0; k < n; ++k) out[k].found = found_left[k] && found_right[k];
+  }
   for (std::size_t k = 1; k < n; ++k) {
     WheelsetState& a = out[k];
     const WheelsetState& b = out[k - 1];

@@ -201,6 +201,9 @@ class Wheelset {
   /// The smoothing options of the wheels: opt_.curve limited to the part that can face the
   /// rails (max_displacement), once the rails are placed.
   CurveOptions wheel_curve_options() const;
+  /// Both sides hold the same wheel, rail and placement, and there is no roll: the left wheel's
+  /// contact at y is the right wheel's at −y (sweep() computes it once).
+  bool mirrored() const;
   /// Contact of one wheel with the wheelset at displacement y and roll phi.
   WheelContact contact(const Side& S, double y, double phi, bool* found) const;
 };
