@@ -4,7 +4,8 @@
 // wheels, y = −8 … 8 mm every 0.05 mm, and at the jumps of the contact point, located by
 // bisection on y with the plain scan, where two points touch. The bound only decides which
 // samples are evaluated, so the results must be identical, bit for bit: contact points, radii,
-// angles, two-point and off-profile flags, the second point, and the sweep's jump flags.
+// angles, two-point and off-profile flags, the second point, and the sweep's jump flags. The
+// sweep's rows must also be those of at() (the sweep mirrors the right wheel for the left).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -65,6 +66,15 @@ TEST_CASE("wheelset contact search: the pruned scan gives the plain scan's conta
         CHECK(a[k].found);
         same_contact(a[k].left, b[k].left);
         same_contact(a[k].right, b[k].right);
+        // The sweep (which takes the left wheel at y from the right wheel at −y on these mirrored
+        // wheelsets) gives each row as at() does, but for the jump flags it adds.
+        const mh::WheelsetState one = fast.at(ys[k]);
+        for (int side : {-1, +1}) {
+          mh::WheelContact x = side < 0 ? a[k].left : a[k].right, y1 = side < 0 ? one.left : one.right;
+          CHECK((!y1.two_point || x.two_point));
+          x.two_point = y1.two_point;
+          same_contact(x, y1);
+        }
         ++rows;
         if (k == 0) continue;
         for (int side : {-1, +1}) {
