@@ -5,8 +5,10 @@
 //     over y = −8 … 8 mm every STEP mm (default 0.02: 801 rows; the second argument) and evaluated
 //     at 3 mm and 3 more amplitudes, on 2 threads (the wheels are wheel A scaled in height by
 //     0.9 … 1.1 so that no two are equal); the CPU time per wheel of each stage (the wheel's
-//     smoothing and scan tables, the sweep, the conicity) by thread CPU clocks, with the pruned
-//     scan and, on the first N/10 wheels, the plain scan (WheelsetOptions::full_scan).
+//     smoothing and scan tables, the sweep, the conicity) by thread CPU clocks. Three runs:
+//     "measured" wheels, their points rounded to 0.01 mm as MiniProf files print them (smoothed
+//     as measured profiles: the narrow and the 3 mm window), the fleet figure; the exact wheels;
+//     and the exact wheels with the plain scan (WheelsetOptions::full_scan) on N/10 wheels.
 // Wall-clock figures are medians; on a shared machine the fleet's CPU time (process CPU time over
 // 2 threads: what 2 free cores would take) is printed beside its wall-clock time.
 // Run: build/mhcontact_bench_wheelset [N [STEP]]
@@ -74,7 +76,8 @@ int main(int argc, char** argv) {
   std::vector<double> yf;
   const int kmax = static_cast<int>(std::lround(8 / step_mm));
   for (int k = -kmax; k <= kmax; ++k) yf.push_back(k * step_mm * 1e-3);
-  for (bool full : {false, true}) {
+  for (int variant : {0, 1, 2}) {  // measured, exact, exact with the plain scan
+    const bool full = variant == 2, measured = variant == 0;
     WheelsetOptions Of = O;
     Of.full_scan = full;
     const Wheelset track(w, w, r, r, P, Of);
@@ -89,6 +92,16 @@ int main(int argc, char** argv) {
         Profile q = w;
         const double f = 0.9 + 0.2 * static_cast<double>(i) / static_cast<double>(std::max<std::size_t>(n - 1, 1));
         for (double& z : q.z) z *= f;
+        if (measured) {  // printed to 0.01 mm: points whose rounded y repeats are dropped
+          Profile m = q;
+          m.y.clear(), m.z.clear();
+          for (std::size_t k = 0; k < q.y.size(); ++k) {
+            const double yy = std::round(q.y[k] * 1e5) / 1e5, zz = std::round(q.z[k] * 1e5) / 1e5;
+            if (m.y.empty() || yy > m.y.back()) m.y.push_back(yy), m.z.push_back(zz);
+          }
+          m.print_step = 1e-5;
+          q = m;
+        }
         const double c0 = cpu_seconds(CLOCK_THREAD_CPUTIME_ID);
         const Wheelset ws(track, q, q);
         const double c1 = cpu_seconds(CLOCK_THREAD_CPUTIME_ID);
@@ -112,7 +125,7 @@ int main(int argc, char** argv) {
     std::printf("fleet%s: %zu wheels on one rail pair (%zu rows each, tan γe at 4 amplitudes), 2 threads: %.1f s wall; "
                 "CPU %.1f s, %.2f ms per wheel (smoothing %.2f, sweep %.2f, conicity %.2f): %.1f s per 10,000 wheels on "
                 "2 free cores; %zu ok\n",
-                full ? " (plain scan)" : "", n, yf.size(), sec, cpu, cpu * per, (stage[0][0] + stage[1][0]) * per,
+                measured ? " (measured wheels, 0.01 mm)" : full ? " (exact wheels, plain scan)" : " (exact wheels)", n, yf.size(), sec, cpu, cpu * per, (stage[0][0] + stage[1][0]) * per,
                 (stage[0][1] + stage[1][1]) * per, (stage[0][2] + stage[1][2]) * per, cpu / static_cast<double>(n) * 1e4 / 2,
                 ok.load());
   }

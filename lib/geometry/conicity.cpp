@@ -27,6 +27,7 @@ EquivalentConicity::EquivalentConicity(std::vector<double> y, std::vector<double
     if (!(y_[k] > y_[k - 1])) throw std::invalid_argument("EquivalentConicity: y must increase strictly");
   for (double v : dr_)
     if (!std::isfinite(v)) throw std::invalid_argument("EquivalentConicity: delta_r must be finite");
+  per_step_ = static_cast<double>(y_.size() - 1) / (y_.back() - y_.front());
   // S at the table points (trapezoids: exact for Δr linear between points), S(0) = 0 after the
   // shift below (only differences of S enter I).
   S_.assign(y_.size(), 0.0);
@@ -46,9 +47,16 @@ EquivalentConicity::EquivalentConicity(std::vector<double> y, std::vector<double
 }
 
 std::size_t EquivalentConicity::interval(double y) const {
-  const auto it = std::upper_bound(y_.begin(), y_.end(), y);
-  std::size_t k = static_cast<std::size_t>(it - y_.begin());
-  return std::clamp<std::size_t>(k, 1, y_.size() - 1) - 1;  // y in [y_k, y_k+1]
+  // From the index the mean spacing gives, to the last point at or below y: the interval that
+  // std::upper_bound would find, without its binary search (the integrand asks for it often).
+  const std::size_t n = y_.size();
+  if (std::isnan(y)) return n - 2;  // as upper_bound: no point is above NaN
+  const double t = (y - y_.front()) * per_step_;
+  std::size_t k = !(t > 0) ? 0 : t >= static_cast<double>(n - 1) ? n - 1 : static_cast<std::size_t>(t);
+  while (k > 0 && !(y_[k] <= y)) --k;
+  while (k + 1 < n && y_[k + 1] <= y) ++k;
+  const std::size_t upper = y_[k] <= y ? k + 1 : 0;  // the first point above y
+  return std::clamp<std::size_t>(upper, 1, n - 1) - 1;  // y in [y_k, y_k+1]
 }
 
 double EquivalentConicity::S(double y) const {
