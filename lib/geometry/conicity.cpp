@@ -59,21 +59,22 @@ std::size_t EquivalentConicity::interval(double y) const {
   return std::clamp<std::size_t>(upper, 1, n - 1) - 1;  // y in [y_k, y_k+1]
 }
 
-double EquivalentConicity::S(double y) const {
-  const std::size_t k = interval(y);
+double EquivalentConicity::S(double y) const { return S_in(y, interval(y)); }
+
+double EquivalentConicity::S_in(double y, std::size_t k) const {
   const double h = y_[k + 1] - y_[k], t = y - y_[k];
   const double slope = (dr_[k + 1] - dr_[k]) / h;
   return S_[k] + dr_[k] * t + 0.5 * slope * t * t;
 }
 
 double EquivalentConicity::S_between(double a, double b) const {
-  const std::size_t k = interval(a);
-  if (interval(b) == k) {
+  const std::size_t k = interval(a), kb = interval(b);
+  if (kb == k) {
     // ∫_a^b of the linear Δr: (b − a) times Δr at the midpoint.
     const double slope = (dr_[k + 1] - dr_[k]) / (y_[k + 1] - y_[k]);
     return (b - a) * (dr_[k] + slope * (0.5 * (a + b) - y_[k]));
   }
-  return S(b) - S(a);
+  return S_in(b, kb) - S_in(a, k);
 }
 
 ConicityResult EquivalentConicity::at(double A) const {
