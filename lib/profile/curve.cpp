@@ -16,24 +16,35 @@ namespace {
 
 using curve_detail::LocalFit;
 
+/// The direction of the window [i0, i1) (it depends on the points only, not on the node): the
+/// last one computed for one kind of window, reused while consecutive nodes keep its points.
+struct WindowDirection {
+  std::size_t i0 = 0, i1 = 0;
+  double theta = 0, c = 1, s = 0;
+};
+
 // Fit points [i0, i1) around (yc, zc) in a frame rotated to the window's chord direction.
 LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, std::size_t i0,
-                    std::size_t i1, double yc, double zc) {
+                    std::size_t i1, double yc, double zc, WindowDirection& dir) {
   LocalFit f;
   const std::size_t n = i1 - i0;
   if (n < 3) return f;
-  // Direction of the window: least-squares line through the points (total least squares would
-  // also do; the fit below is exact whatever the rotation, this only conditions it).
-  double my = 0, mz = 0;
-  for (std::size_t i = i0; i < i1; ++i) { my += y[i]; mz += z[i]; }
-  my /= static_cast<double>(n); mz /= static_cast<double>(n);
-  double syy = 0, syz = 0, szz = 0;
-  for (std::size_t i = i0; i < i1; ++i) {
-    const double dy = y[i] - my, dz = z[i] - mz;
-    syy += dy * dy; syz += dy * dz; szz += dz * dz;
+  if (dir.i0 != i0 || dir.i1 != i1) {
+    // Direction of the window: least-squares line through the points (total least squares would
+    // also do; the fit below is exact whatever the rotation, this only conditions it).
+    double my = 0, mz = 0;
+    for (std::size_t i = i0; i < i1; ++i) { my += y[i]; mz += z[i]; }
+    my /= static_cast<double>(n); mz /= static_cast<double>(n);
+    double syy = 0, syz = 0, szz = 0;
+    for (std::size_t i = i0; i < i1; ++i) {
+      const double dy = y[i] - my, dz = z[i] - mz;
+      syy += dy * dy; syz += dy * dz; szz += dz * dz;
+    }
+    dir.theta = 0.5 * std::atan2(2 * syz, syy - szz);  // principal direction
+    dir.c = std::cos(dir.theta), dir.s = std::sin(dir.theta);
+    dir.i0 = i0, dir.i1 = i1;
   }
-  const double theta = 0.5 * std::atan2(2 * syz, syy - szz);  // principal direction
-  const double c = std::cos(theta), s = std::sin(theta);
+  const double theta = dir.theta, c = dir.c, s = dir.s;
   // Normal equations for v = alpha q + beta u + delta, q = u² + v²: M = Σ x xᵀ, r = Σ x v with
   // x = (q, u, 1), its six distinct sums (M is symmetric; products with 1 are exact). The local
   // coordinates are kept for the residual below.
@@ -216,6 +227,7 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w, bo
     }
   };
   rms.reserve(m);
+  WindowDirection dir_centred, dir_left, dir_right;
   for (std::size_t j = 0; j < m; ++j) {
     const double yc = y_first + h_ * static_cast<double>(j_lo + j);
     // Linear interpolation of the raw points as the local origin height.
@@ -230,7 +242,7 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w, bo
     } else {
       std::size_t c0 = lower(sc - w), c1 = upper(sc + w);
       widen(c0, c1, 0);
-      best = fit_window(Y, Z, c0, c1, yc, zc);
+      best = fit_window(Y, Z, c0, c1, yc, zc, dir_centred);
     }
     rms.push_back(best.rms);
     if (centred_only) {
@@ -246,8 +258,8 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w, bo
     std::size_t r0 = ilo, r1 = upper(sc + 2 * w);
     widen(l0, l1, -1);
     widen(r0, r1, +1);
-    const LocalFit left = fit_window(Y, Z, l0, l1, yc, zc);
-    const LocalFit right = fit_window(Y, Z, r0, r1, yc, zc);
+    const LocalFit left = fit_window(Y, Z, l0, l1, yc, zc, dir_left);
+    const LocalFit right = fit_window(Y, Z, r0, r1, yc, zc, dir_right);
     const LocalFit& one = (left.rms <= right.rms) ? left : right;
     if (!best.ok || (one.ok && best.rms > opt.residual_floor && best.rms > opt.one_sided_factor * one.rms)) {
       best = one;
