@@ -35,6 +35,9 @@ struct RootResult {
   double f = NAN;        ///< f(x)
   int iterations = 0;    ///< evaluations of f (beyond the two bracket ends given)
   bool converged = false;  ///< a tolerance of RootTolerance was met within max_iterations
+  /// The last bracket [lo, hi] (bracketed_root, bisected_root): its midpoint is the root where a
+  /// caller wants the bracket's centre rather than the best point evaluated.
+  double lo = NAN, hi = NAN;
 };
 
 namespace roots_detail {
@@ -53,7 +56,7 @@ RootResult bracketed_root(F&& f, double lo, double hi, double f_lo, double f_hi,
   };
   keep(lo, f_lo);
   keep(hi, f_hi);
-  if (std::fabs(r.f) <= tol.f_abs) { r.converged = true; return r; }
+  if (std::fabs(r.f) <= tol.f_abs) { r.converged = true; r.lo = r.hi = r.x; return r; }
   auto g = [&](double x) {
     const double fx = f(x);
     ++r.iterations;
@@ -66,6 +69,8 @@ RootResult bracketed_root(F&& f, double lo, double hi, double f_lo, double f_hi,
   std::uintmax_t n = static_cast<std::uintmax_t>(std::max(tol.max_iterations, 1));
   const std::pair<double, double> ab = boost::math::tools::toms748_solve(g, lo, hi, f_lo, f_hi, done, n, roots_detail::Policy());
   r.converged = done(ab.first, ab.second) || r.f == 0;
+  r.lo = ab.first;
+  r.hi = ab.second;
   return r;
 }
 
@@ -84,6 +89,8 @@ RootResult bisected_root(F&& f, double lo, double hi, const RootTolerance& tol =
   const std::pair<double, double> ab = boost::math::tools::bisect(g, lo, hi, done, n, roots_detail::Policy());
   r.x = 0.5 * (ab.first + ab.second);
   r.converged = done(ab.first, ab.second);
+  r.lo = ab.first;
+  r.hi = ab.second;
   return r;
 }
 

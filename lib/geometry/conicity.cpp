@@ -7,15 +7,15 @@
 #include <stdexcept>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
-#include <boost/math/tools/roots.hpp>
 
+#include "core/roots.hpp"
 #include "core/units.hpp"
 
 namespace mh {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr std::uintmax_t kMaxIterations = 200;
+constexpr int kMaxIterations = 200;
 }  // namespace
 
 double en15302_window(double t) { return std::min(0.05, 0.5 * t); }
@@ -27,6 +27,7 @@ EquivalentConicity::EquivalentConicity(std::vector<double> y, std::vector<double
     if (!(y_[k] > y_[k - 1])) throw std::invalid_argument("EquivalentConicity: y must increase strictly");
   for (double v : dr_)
     if (!std::isfinite(v)) throw std::invalid_argument("EquivalentConicity: delta_r must be finite");
+  per_step_ = static_cast<double>(y_.size() - 1) / (y_.back() - y_.front());
   // S at the table points (trapezoids: exact for Δr linear between points), S(0) = 0 after the
   // shift below (only differences of S enter I).
   S_.assign(y_.size(), 0.0);
@@ -46,26 +47,34 @@ EquivalentConicity::EquivalentConicity(std::vector<double> y, std::vector<double
 }
 
 std::size_t EquivalentConicity::interval(double y) const {
-  const auto it = std::upper_bound(y_.begin(), y_.end(), y);
-  std::size_t k = static_cast<std::size_t>(it - y_.begin());
-  return std::clamp<std::size_t>(k, 1, y_.size() - 1) - 1;  // y in [y_k, y_k+1]
+  // From the index the mean spacing gives, to the last point at or below y: the interval that
+  // std::upper_bound would find, without its binary search (the integrand asks for it often).
+  const std::size_t n = y_.size();
+  if (std::isnan(y)) return n - 2;  // as upper_bound: no point is above NaN
+  const double t = (y - y_.front()) * per_step_;
+  std::size_t k = !(t > 0) ? 0 : t >= static_cast<double>(n - 1) ? n - 1 : static_cast<std::size_t>(t);
+  while (k > 0 && !(y_[k] <= y)) --k;
+  while (k + 1 < n && y_[k + 1] <= y) ++k;
+  const std::size_t upper = y_[k] <= y ? k + 1 : 0;  // the first point above y
+  return std::clamp<std::size_t>(upper, 1, n - 1) - 1;  // y in [y_k, y_k+1]
 }
 
-double EquivalentConicity::S(double y) const {
-  const std::size_t k = interval(y);
+double EquivalentConicity::S(double y) const { return S_in(y, interval(y)); }
+
+double EquivalentConicity::S_in(double y, std::size_t k) const {
   const double h = y_[k + 1] - y_[k], t = y - y_[k];
   const double slope = (dr_[k + 1] - dr_[k]) / h;
   return S_[k] + dr_[k] * t + 0.5 * slope * t * t;
 }
 
 double EquivalentConicity::S_between(double a, double b) const {
-  const std::size_t k = interval(a);
-  if (interval(b) == k) {
+  const std::size_t k = interval(a), kb = interval(b);
+  if (kb == k) {
     // ∫_a^b of the linear Δr: (b − a) times Δr at the midpoint.
     const double slope = (dr_[k + 1] - dr_[k]) / (y_[k + 1] - y_[k]);
     return (b - a) * (dr_[k] + slope * (0.5 * (a + b) - y_[k]));
   }
-  return S(b) - S(a);
+  return S_in(b, kb) - S_in(a, k);
 }
 
 ConicityResult EquivalentConicity::at(double A) const {
@@ -88,10 +97,12 @@ ConicityResult EquivalentConicity::at(double A) const {
   if (Fl == 0) y2 = l;
   else if (Fh == 0) y2 = h;
   else if (Fl < 0 && Fh > 0) {
-    std::uintmax_t it = kMaxIterations;
-    const double tol = opt_.turning_point_tolerance;
-    const auto s = boost::math::tools::toms748_solve(F, l, h, Fl, Fh, [tol](double a, double b) { return std::fabs(b - a) <= tol; }, it);
-    y2 = 0.5 * (s.first + s.second);
+    RootTolerance tol;
+    tol.abs = opt_.turning_point_tolerance;
+    tol.rel = 0;
+    tol.max_iterations = kMaxIterations;
+    const RootResult s = bracketed_root(F, l, h, Fl, Fh, tol);
+    y2 = 0.5 * (s.lo + s.hi);
   } else {
     r.status = "out_of_range";
     return r;

@@ -59,7 +59,11 @@ class EquivalentConicity {
   std::vector<double> y_, dr_, S_;
   double y0_;
   ConicityOptions opt_;
+  double per_step_ = 0;  // [1/m] (n − 1)/(y_n − y_1): the index guess of interval()
+  /// k with y in [y_k, y_k+1], clamped to the table's first and last interval.
   std::size_t interval(double y) const;
+  /// S(y) with y in table interval k.
+  double S_in(double y, std::size_t k) const;
   /// S(b) − S(a), a ≤ b, from the local quadratic when both lie in one interval.
   double S_between(double a, double b) const;
 };

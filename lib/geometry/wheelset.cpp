@@ -10,10 +10,10 @@
 #include <utility>
 
 #include <boost/math/tools/minima.hpp>
-#include <boost/math/tools/roots.hpp>
 
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
+#include "core/roots.hpp"
 
 namespace mh {
 
@@ -22,10 +22,17 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// Iteration cap of TOMS 748 (contact point: a bracket of one scan step to machine precision in
 /// ~10 iterations; roll: ~15). Reaching it is reported, not hidden (WheelsetState::converged).
-constexpr std::uintmax_t kMaxIterations = 100;
+constexpr int kMaxIterations = 100;
+/// The contact point's G'(η) = 0 is solved to a bracket of 2^-49 relative (Boost's
+/// eps_tolerance(50): 1e-16 m on a 70 mm coordinate).
+constexpr double kContactRelTolerance = 0x1p-49;
 /// Local minima of the scanned gap refined: those within two_point_gap plus this of the lowest
 /// sample (the scan's own error at 0.05 mm spacing is below 1e-7 m on an R8 arc: h²/(8R)).
 constexpr double kCandidateMargin = 10e-6;  // [m]
+/// [m] Allowance for rounding in the pruned scan's bounds (the gap and the rail coordinates are
+/// sums of terms below 1 m, each rounded to 1.1e-16 m): a block is skipped only when its bound
+/// exceeds the threshold by this much more.
+constexpr double kBoundSlack = 1e-12;
 
 std::string mm_text(double v) { return format_number(v * 1e3); }
 
@@ -55,13 +62,26 @@ bool WheelsetOptions::valid(std::string* why) const {
 
 double WheelsetState::delta_tan_gamma() const { return std::tan(right.gamma) - std::tan(left.gamma); }
 
-double Wheelset::Side::zr_fast(double yr) const {
-  const double t = (yr - yr_min) / rail_step;
-  const std::size_t n = zr_table.size();
-  if (t <= 0) return zr_table[0];
+double Wheelset::RailScan::z_at(double yr) const {
+  const double t = (yr - y_min) / step;
+  const std::size_t n = z.size();
+  if (t <= 0) return z[0];
   const std::size_t i = std::min(static_cast<std::size_t>(t), n - 2);
   const double f = t - static_cast<double>(i);
-  return zr_table[i] + f * (zr_table[i + 1] - zr_table[i]);
+  return z[i] + f * (z[i + 1] - z[i]);
+}
+
+double Wheelset::RailScan::max_over(double lo, double hi) const {
+  // z_at(y) interpolates between entries i and i + 1, i = floor((y − y_min)/step) clamped to
+  // [0, n − 2]: every entry from floor(t_lo) to floor(t_hi) + 1, widened by one on each side for
+  // the rounding of t.
+  const std::size_t n = z.size();
+  const double t_lo = std::floor((lo - y_min) / step) - 1, t_hi = std::floor((hi - y_min) / step) + 2;
+  const std::size_t k_lo = t_lo <= 0 ? 0 : std::min(n - 1, static_cast<std::size_t>(t_lo));
+  const std::size_t k_hi = t_hi <= 0 ? 0 : std::min(n - 1, static_cast<std::size_t>(t_hi));
+  const std::size_t lev = static_cast<std::size_t>(63 - __builtin_clzll(static_cast<unsigned long long>(k_hi - k_lo + 1)));
+  const double* m = max.data() + lev * n;
+  return std::max(m[k_lo], m[k_hi + 1 - (std::size_t{1} << lev)]);
 }
 
 Wheelset::Wheelset(const Profile& wheel_left, const Profile& wheel_right, const Profile& rail_left,
@@ -97,11 +117,29 @@ Wheelset::Wheelset(const Profile& wheel_left, const Profile& wheel_right, const 
     a_[k] = S.a;
     c_[k] = S.c;
     S.yr_min = S.R->y_min(), S.yr_max = S.R->y_max();
-    S.rail_step = std::min(opt.curve.grid_step, opt.scan_step);
-    const std::size_t nr = static_cast<std::size_t>(std::ceil((S.yr_max - S.yr_min) / S.rail_step)) + 1;
-    S.zr_table.resize(std::max<std::size_t>(nr, 2));
-    for (std::size_t i = 0; i < S.zr_table.size(); ++i)
-      S.zr_table[i] = S.R->z(std::min(S.yr_min + S.rail_step * static_cast<double>(i), S.yr_max));
+    if (k == 1 && rc[1] == rc[0]) {
+      S.rail = side_[0].rail;
+    } else {
+      auto T = std::make_shared<RailScan>();
+      T->y_min = S.yr_min;
+      T->step = std::min(opt.curve.grid_step, opt.scan_step);
+      const std::size_t nr = static_cast<std::size_t>(std::ceil((S.yr_max - S.yr_min) / T->step)) + 1;
+      T->z.resize(std::max<std::size_t>(nr, 2));
+      for (std::size_t i = 0; i < T->z.size(); ++i)
+        T->z[i] = S.R->z(std::min(S.yr_min + T->step * static_cast<double>(i), S.yr_max));
+      const std::size_t n = T->z.size();
+      T->levels = 1;
+      while ((std::size_t{1} << T->levels) <= n) ++T->levels;
+      T->max.resize(T->levels * n);
+      std::copy(T->z.begin(), T->z.end(), T->max.begin());
+      for (std::size_t l = 1; l < T->levels; ++l) {
+        const double* prev = T->max.data() + (l - 1) * n;
+        double* cur = T->max.data() + l * n;
+        const std::size_t half = std::size_t{1} << (l - 1);
+        for (std::size_t i = 0; i < n; ++i) cur[i] = i + half < n ? std::max(prev[i], prev[i + half]) : prev[i];
+      }
+      S.rail = std::move(T);
+    }
   }
   measured_gauge_ = (c_[0] + gauge_y[0]) + (c_[1] + gauge_y[1]);
   const CurveOptions wopt = wheel_curve_options();
@@ -147,6 +185,15 @@ void Wheelset::set_wheel(Side& S, std::shared_ptr<const ProfileCurve> W, const P
   while (S.eta(nw, h) <= S.yw_max) ++nw;
   S.zw_scan.resize(nw);
   for (std::size_t i = 0; i < nw; ++i) S.zw_scan[i] = S.W->z(S.eta(i, h));
+  const std::size_t nb = (nw + kScanBlock - 1) / kScanBlock;
+  S.zw_block_min.assign(nb, std::numeric_limits<double>::infinity());
+  S.zw_block_max.assign(nb, -std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < nw; ++i) {
+    double& lo = S.zw_block_min[i / kScanBlock];
+    double& hi = S.zw_block_max[i / kScanBlock];
+    lo = std::min(lo, S.zw_scan[i]);
+    hi = std::max(hi, S.zw_scan[i]);
+  }
 }
 
 Wheelset::Wheelset(const Wheelset& track, const Profile& wheel_left, const Profile& wheel_right) : Wheelset(track) {
@@ -182,50 +229,108 @@ WheelContact Wheelset::contact(const Side& S, double y, double phi, bool* found)
   const double i_lo = std::floor((e_lo - e0) / h), i_hi = std::ceil((e_hi - e0) / h);
   const std::size_t i0 = i_lo <= 0 ? 0 : std::min(n, static_cast<std::size_t>(i_lo));
   const std::size_t i1 = i_hi < 0 ? 0 : std::min(n, static_cast<std::size_t>(i_hi) + 1);
-  thread_local std::vector<double> G;
-  G.assign(n, kNaN);
-  double gmin = std::numeric_limits<double>::infinity();
-  for (std::size_t i = i0; i < i1; ++i) {
+  // The gap at scan sample i (NaN outside [i0, i1) and where the wheel does not face the rail).
+  const RailScan& Rs = *S.rail;
+  auto sample = [&](std::size_t i) {
+    if (i < i0 || i >= i1) return kNaN;
     const double eta = S.eta(i, h);
     const double p = S.a + eta, q = -S.R0 + (S.zw_scan[i] - S.zw0);
     const double yr = U0 + cs * p - sn * q;
-    if (yr < S.yr_min || yr > S.yr_max) continue;
-    G[i] = sn * p + cs * q - S.zr_fast(yr);
-    gmin = std::min(gmin, G[i]);
+    if (yr < S.yr_min || yr > S.yr_max) return kNaN;
+    return sn * p + cs * q - Rs.z_at(yr);
+  };
+  // Pruned scan. Block b holds samples [b·B, (b+1)·B) ∩ [i0, i1). Over it p = a + η lies in
+  // [p_lo, p_hi] and q = −R0 + (z_w − z_w0) in [q_lo, q_hi] (the block's lowest and highest wheel
+  // samples), so y_r = U0 + cos·p − sin·q stays in a known range and
+  //     G = sin·p + cos·q − z_r(y_r) ≥ min(sin·p) + cos·q_lo − max z_r over that range = lb_b.
+  // The lowest sample G_min ≤ U (the lowest of the blocks evaluated first); a block with
+  // lb_b > U + two_point_gap + kCandidateMargin holds neither G_min nor any sample within the
+  // candidates' limit, so skipping it leaves gmin, the candidates and their neighbours' tests as
+  // in the full scan. A block whose y_r range misses the rail holds only NaN samples.
+  constexpr std::size_t B = kScanBlock;
+  const double inf = std::numeric_limits<double>::infinity();
+  thread_local std::vector<double> G, lb;
+  thread_local std::vector<char> done;
+  if (G.size() < n) G.resize(n);
+  const std::size_t b0 = i0 / B, nb = i1 > i0 ? (i1 - 1) / B + 1 - b0 : 0;
+  lb.assign(nb, inf);
+  done.assign(nb, 0);
+  for (std::size_t k = 0; k < nb; ++k) {
+    const std::size_t b = b0 + k, j0 = std::max(i0, b * B), j1 = std::min(i1, (b + 1) * B);
+    const double p_lo = S.a + S.eta(j0, h), p_hi = S.a + S.eta(j1 - 1, h);
+    const double q_lo = -S.R0 + (S.zw_block_min[b] - S.zw0), q_hi = -S.R0 + (S.zw_block_max[b] - S.zw0);
+    const double sq_lo = std::min(sn * q_lo, sn * q_hi), sq_hi = std::max(sn * q_lo, sn * q_hi);
+    const double y_lo = std::max(U0 + cs * p_lo - sq_hi - kBoundSlack, S.yr_min);
+    const double y_hi = std::min(U0 + cs * p_hi - sq_lo + kBoundSlack, S.yr_max);
+    if (opt_.full_scan) {  // every block evaluated
+      lb[k] = -inf;
+      continue;
+    }
+    if (!(y_lo <= y_hi)) continue;
+    lb[k] = std::min(sn * p_lo, sn * p_hi) + cs * q_lo - Rs.max_over(y_lo, y_hi) - kBoundSlack;
+  }
+  double gmin = inf;
+  auto evaluate = [&](std::size_t k) {
+    const std::size_t b = b0 + k, j1 = std::min(i1, (b + 1) * B);
+    for (std::size_t i = std::max(i0, b * B); i < j1; ++i) {
+      G[i] = sample(i);
+      gmin = std::min(gmin, G[i]);
+    }
+    done[k] = 1;
+  };
+  // U: the blocks of lowest bound first, until one sample faces the rail.
+  while (!std::isfinite(gmin)) {
+    std::size_t best = nb;
+    for (std::size_t k = 0; k < nb; ++k)
+      if (!done[k] && lb[k] < inf && (best == nb || lb[k] < lb[best])) best = k;
+    if (best == nb) break;
+    evaluate(best);
   }
   *found = std::isfinite(gmin);
   WheelContact best;
   if (!*found) return best;
+  const double threshold = gmin + opt_.two_point_gap + kCandidateMargin;
+  for (std::size_t k = 0; k < nb; ++k)
+    if (!done[k] && lb[k] <= threshold) evaluate(k);
+  // A sample's value: from the evaluated blocks, else computed (a neighbour in a skipped block).
+  auto at = [&](std::size_t i) { return i >= i0 && i < i1 && done[i / B - b0] ? G[i] : sample(i); };
 
   struct Cand { double eta, G, yr; bool edge; };
-  std::vector<Cand> cands;
+  thread_local std::vector<Cand> cands;
+  cands.clear();
   const double limit = gmin + opt_.two_point_gap + kCandidateMargin;
-  for (std::size_t i = i0; i < i1; ++i) {
-    if (!(G[i] <= limit)) continue;
-    const bool has_l = i > 0 && !std::isnan(G[i - 1]), has_r = i + 1 < n && !std::isnan(G[i + 1]);
-    if ((has_l && G[i - 1] < G[i]) || (has_r && G[i + 1] < G[i])) continue;  // not a local minimum
-    if (has_l && G[i - 1] == G[i]) continue;                                  // a plateau: its first sample only
-    const double eta_i = S.eta(i, h);
-    Cand c{eta_i, 0, 0, !(has_l && has_r)};
-    if (!c.edge) {
-      // Refine: G'(η) = 0 between the neighbours (TOMS 748), else the minimum of G (Brent).
-      const double lo = eta_i - h, hi = eta_i + h;
-      double dlo = 0, dhi = 0;
-      gap(lo, &dlo, nullptr);
-      gap(hi, &dhi, nullptr);
-      if (dlo < 0 && dhi > 0) {
-        std::uintmax_t it = kMaxIterations;
-        auto f = [&](double e) { double d = 0; gap(e, &d, nullptr); return d; };
-        const auto r = boost::math::tools::toms748_solve(f, lo, hi, dlo, dhi,
-                                                         boost::math::tools::eps_tolerance<double>(50), it);
-        c.eta = 0.5 * (r.first + r.second);
-      } else {
-        const auto r = boost::math::tools::brent_find_minima([&](double e) { return gap(e, nullptr, nullptr); }, lo, hi, 40);
-        c.eta = r.first;
+  for (std::size_t k = 0; k < nb; ++k) {
+    if (!done[k]) continue;
+    const std::size_t b = b0 + k, j1 = std::min(i1, (b + 1) * B);
+    for (std::size_t i = std::max(i0, b * B); i < j1; ++i) {
+      if (!(G[i] <= limit)) continue;
+      const double gl = i > 0 ? at(i - 1) : kNaN, gr = i + 1 < n ? at(i + 1) : kNaN;
+      const bool has_l = !std::isnan(gl), has_r = !std::isnan(gr);
+      if ((has_l && gl < G[i]) || (has_r && gr < G[i])) continue;  // not a local minimum
+      if (has_l && gl == G[i]) continue;                           // a plateau: its first sample only
+      const double eta_i = S.eta(i, h);
+      Cand c{eta_i, 0, 0, !(has_l && has_r)};
+      if (!c.edge) {
+        // Refine: G'(η) = 0 between the neighbours (TOMS 748), else the minimum of G (Brent).
+        const double lo = eta_i - h, hi = eta_i + h;
+        double dlo = 0, dhi = 0;
+        gap(lo, &dlo, nullptr);
+        gap(hi, &dhi, nullptr);
+        if (dlo < 0 && dhi > 0) {
+          RootTolerance tol;
+          tol.rel = kContactRelTolerance;
+          tol.max_iterations = kMaxIterations;
+          auto f = [&](double e) { double d = 0; gap(e, &d, nullptr); return d; };
+          const RootResult r = bracketed_root(f, lo, hi, dlo, dhi, tol);
+          c.eta = 0.5 * (r.lo + r.hi);
+        } else {
+          const auto r = boost::math::tools::brent_find_minima([&](double e) { return gap(e, nullptr, nullptr); }, lo, hi, 40);
+          c.eta = r.first;
+        }
       }
+      c.G = gap(c.eta, nullptr, &c.yr);
+      cands.push_back(c);
     }
-    c.G = gap(c.eta, nullptr, &c.yr);
-    cands.push_back(c);
   }
   std::size_t m = 0;
   for (std::size_t k = 1; k < cands.size(); ++k)
@@ -279,28 +384,64 @@ WheelsetState Wheelset::at(double y) const {
     st.right = contact(side_[1], y, 0.0, &fr);
     return st;
   }
-  std::uintmax_t it = kMaxIterations;
-  const double tol = opt_.roll_tolerance;
-  const auto r = boost::math::tools::toms748_solve(f, lo, hi, flo, fhi,
-                                                   [tol](double a, double b) { return std::fabs(b - a) <= tol; }, it);
-  st.converged = it < kMaxIterations;
-  st.roll = 0.5 * (r.first + r.second);
+  RootTolerance tol;
+  tol.abs = opt_.roll_tolerance;
+  tol.rel = 0;
+  tol.max_iterations = kMaxIterations;
+  const RootResult r = bracketed_root(f, lo, hi, flo, fhi, tol);
+  st.converged = r.converged;
+  st.roll = 0.5 * (r.lo + r.hi);
   st.left = contact(side_[0], y, st.roll, &fl);
   st.right = contact(side_[1], y, st.roll, &fr);
   st.found = ok && fl && fr;
   return st;
 }
 
+bool Wheelset::mirrored() const {
+  // Same profiles, rail scan table and placement on both sides: without roll, the left wheel at
+  // y is the right wheel at −y (contact() sees U0 = −y − c either way, and nothing else of y).
+  const Side &L = side_[0], &R = side_[1];
+  return opt_.roll == WheelsetRoll::None && L.W == R.W && L.R == R.R && L.rail == R.rail && L.R0 == R.R0 &&
+         L.a == R.a && L.c == R.c && L.ys0 == R.ys0 && L.is0 == R.is0;
+}
+
 std::vector<WheelsetState> Wheelset::sweep(const std::vector<double>& ys, unsigned threads) const {
   std::vector<WheelsetState> out(ys.size());
   const std::size_t n = ys.size(), nt = std::max<std::size_t>(1, std::min<std::size_t>(threads, n / 64 + 1));
-  auto work = [&](std::size_t t) {
-    for (std::size_t k = n * t / nt; k < n * (t + 1) / nt; ++k) out[k] = at(ys[k]);
+  auto parallel = [&](auto&& row) {
+    auto work = [&](std::size_t t) {
+      for (std::size_t k = n * t / nt; k < n * (t + 1) / nt; ++k) row(k);
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t t = 1; t < nt; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (auto& th : pool) th.join();
   };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < nt; ++t) pool.emplace_back(work, t);
-  work(0);
-  for (auto& th : pool) th.join();
+  if (!mirrored()) {
+    parallel([&](std::size_t k) { out[k] = at(ys[k]); });
+  } else {
+    // The right wheel at every row, then the left wheel from the row at −y where there is one.
+    std::vector<char> found_right(n), found_left(n);
+    parallel([&](std::size_t k) {
+      bool f = false;
+      out[k].y = ys[k];
+      out[k].right = contact(side_[1], ys[k], 0.0, &f);
+      found_right[k] = f;
+    });
+    parallel([&](std::size_t k) {
+      const auto it = std::lower_bound(ys.begin(), ys.end(), -ys[k]);
+      bool f = false;
+      if (it != ys.end() && *it == -ys[k]) {
+        const std::size_t m = static_cast<std::size_t>(it - ys.begin());
+        out[k].left = out[m].right;
+        f = found_right[m];
+      } else {
+        out[k].left = contact(side_[0], ys[k], 0.0, &f);
+      }
+      found_left[k] = f;
+    });
+    for (std::size_t k = 0; k < n; ++k) out[k].found = found_left[k] && found_right[k];
+  }
   for (std::size_t k = 1; k < n; ++k) {
     WheelsetState& a = out[k];
     const WheelsetState& b = out[k - 1];

@@ -21,10 +21,14 @@
 // touch at one axle height (TOMS 748 on h_right(φ) − h_left(φ)).
 //
 // Contact search (one wheel): the vertical gap G(η) = Z_wheel(η) − z_rail(y_r(η)) along the wheel
-// profile coordinate η; the contact is its minimum. A scan every `scan_step` finds the local
-// minima, each is refined by solving G'(η) = 0 (TOMS 748, Boost.Math) on the smooth profiles
-// (profile/curve.hpp); local minima within `two_point_gap` of the lowest, farther than
-// `jump_distance` along the rail, make a two-point contact.
+// profile coordinate η; the contact is its minimum. The gap is sampled every `scan_step` (the
+// scan) to find its local minima, each is refined by solving G'(η) = 0 (TOMS 748, core/roots.hpp)
+// on the smooth profiles (profile/curve.hpp); local minima within `two_point_gap` of the lowest,
+// farther than `jump_distance` along the rail, make a two-point contact. The scan skips blocks
+// of samples that provably hold no sample within two_point_gap (plus a margin) of the lowest:
+// a block's lowest possible gap is bounded by its lowest wheel sample and the highest rail value
+// it can face (docs/wheelset.md "Contact search"), so the samples it evaluates, and with them the
+// contact points and flags, are those of the full scan.
 #include <memory>
 #include <string>
 #include <vector>
@@ -69,6 +73,9 @@ struct WheelsetOptions {
   /// between neighbouring rows of a sweep marks a jump of the contact point (default 1 mm, as
   /// GeometryOptions::jump_distance).
   double jump_distance = 1e-3;
+  /// Evaluate every scan sample instead of skipping the blocks that the bound excludes (default
+  /// false). Same results, slower: the plain scan that the tests compare the pruned one with.
+  bool full_scan = false;
   /// [rad] largest |roll| searched (default 0.05 rad = 2.9°: a Δr of 75 mm) ...
   double max_roll = 0.05;
   /// ... and the roll's convergence: the bracket of TOMS 748 (default 1e-12 rad: 1 nm at 750 mm).
@@ -150,24 +157,40 @@ class Wheelset {
   /// the 1435.164 mm of the EN 15302 reference placement.
   double measured_gauge() const { return measured_gauge_; }
   const WheelsetOptions& options() const { return opt_; }
+  /// The smooth profiles the contact search works on (side < 0: left, else right).
+  const ProfileCurve& wheel_curve(int side) const { return *side_[side < 0 ? 0 : 1].W; }
+  const ProfileCurve& rail_curve(int side) const { return *side_[side < 0 ? 0 : 1].R; }
 
  private:
+  /// Samples per block of the pruned scan: 1.6 mm at the default scan step.
+  static constexpr std::size_t kScanBlock = 16;
+  /// A rail's scan data, built once per track and shared by every wheel of a fleet: heights
+  /// every `step` from y_min (linear between them: zr_fast), and their running maxima over
+  /// 2^k entries (a sparse table: the highest rail value over any range in two lookups).
+  struct RailScan {
+    double y_min = 0, step = 0;
+    std::vector<double> z;
+    std::vector<double> max;   // level k at [k·n, (k+1)·n): max of z[i .. i + 2^k)
+    std::size_t levels = 0;
+    double z_at(double yr) const;
+    /// [m] An upper bound of z_at over [lo, hi] (every table value that its interpolation uses).
+    double max_over(double lo, double hi) const;
+  };
   struct Side {
     std::shared_ptr<const ProfileCurve> W, R;
+    std::shared_ptr<const RailScan> rail;
     double R0 = 0, zw0 = 0;       // nominal radius, wheel height at its taping line
     double a = 0, c = 0;          // taping line and rail origin |Y|
     double s = 1;                 // +1 right, −1 left
     double yw_min = 0, yw_max = 0, yr_min = 0, yr_max = 0;
     // Scan tables: wheel heights every scan_step on the grid anchored at the wheel profile's first
     // point (ys0; sample i of the table is grid point is0 + i, so a wheel smoothed only in part
-    // is scanned at the same η as in full); rail heights every rail_step.
+    // is scanned at the same η as in full), and their lowest and highest per block of
+    // kScanBlock samples (the bounds of the pruned scan).
     double ys0 = 0;
     std::size_t is0 = 0;
     double eta(std::size_t i, double h) const { return ys0 + h * static_cast<double>(is0 + i); }
-    std::vector<double> zw_scan;
-    double rail_step = 0;
-    std::vector<double> zr_table;
-    double zr_fast(double yr) const;
+    std::vector<double> zw_scan, zw_block_min, zw_block_max;
   };
   Side side_[2];  // 0 left, 1 right
   double a_[2] = {0, 0}, c_[2] = {0, 0};
@@ -178,6 +201,9 @@ class Wheelset {
   /// The smoothing options of the wheels: opt_.curve limited to the part that can face the
   /// rails (max_displacement), once the rails are placed.
   CurveOptions wheel_curve_options() const;
+  /// Both sides hold the same wheel, rail and placement, and there is no roll: the left wheel's
+  /// contact at y is the right wheel's at −y (sweep() computes it once).
+  bool mirrored() const;
   /// Contact of one wheel with the wheelset at displacement y and roll phi.
   WheelContact contact(const Side& S, double y, double phi, bool* found) const;
 };

@@ -17,40 +17,54 @@ namespace {
 /// A fitted slope |dz/dy| above this (89.94°) is taken for a vertical tangent (ProfileCurve::build).
 constexpr double kMaxCurveSlope = 1e3;
 
-struct LocalFit {
-  bool ok = false;
-  double z = 0, slope = 0, kappa = 0, rms = std::numeric_limits<double>::infinity();
+using curve_detail::LocalFit;
+
+/// The direction of the window [i0, i1) (it depends on the points only, not on the node): the
+/// last one computed for one kind of window, reused while consecutive nodes keep its points.
+struct WindowDirection {
+  std::size_t i0 = 0, i1 = 0;
+  double theta = 0, c = 1, s = 0;
 };
 
 // Fit points [i0, i1) around (yc, zc) in a frame rotated to the window's chord direction.
 LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, std::size_t i0,
-                    std::size_t i1, double yc, double zc) {
+                    std::size_t i1, double yc, double zc, WindowDirection& dir) {
   LocalFit f;
   const std::size_t n = i1 - i0;
   if (n < 3) return f;
-  // Direction of the window: least-squares line through the points (total least squares would
-  // also do; the fit below is exact whatever the rotation, this only conditions it).
-  double my = 0, mz = 0;
-  for (std::size_t i = i0; i < i1; ++i) { my += y[i]; mz += z[i]; }
-  my /= static_cast<double>(n); mz /= static_cast<double>(n);
-  double syy = 0, syz = 0, szz = 0;
-  for (std::size_t i = i0; i < i1; ++i) {
-    const double dy = y[i] - my, dz = z[i] - mz;
-    syy += dy * dy; syz += dy * dz; szz += dz * dz;
+  if (dir.i0 != i0 || dir.i1 != i1) {
+    // Direction of the window: least-squares line through the points (total least squares would
+    // also do; the fit below is exact whatever the rotation, this only conditions it).
+    double my = 0, mz = 0;
+    for (std::size_t i = i0; i < i1; ++i) { my += y[i]; mz += z[i]; }
+    my /= static_cast<double>(n); mz /= static_cast<double>(n);
+    double syy = 0, syz = 0, szz = 0;
+    for (std::size_t i = i0; i < i1; ++i) {
+      const double dy = y[i] - my, dz = z[i] - mz;
+      syy += dy * dy; syz += dy * dz; szz += dz * dz;
+    }
+    dir.theta = 0.5 * std::atan2(2 * syz, syy - szz);  // principal direction
+    dir.c = std::cos(dir.theta), dir.s = std::sin(dir.theta);
+    dir.i0 = i0, dir.i1 = i1;
   }
-  const double theta = 0.5 * std::atan2(2 * syz, syy - szz);  // principal direction
-  const double c = std::cos(theta), s = std::sin(theta);
-  // Normal equations for v = alpha q + beta u + delta, q = u² + v².
-  double M[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, r[3] = {0, 0, 0};
+  const double theta = dir.theta, c = dir.c, s = dir.s;
+  // Normal equations for v = alpha q + beta u + delta, q = u² + v²: M = Σ x xᵀ, r = Σ x v with
+  // x = (q, u, 1), its six distinct sums (M is symmetric; products with 1 are exact). The local
+  // coordinates are kept for the residual below.
+  thread_local std::vector<double> uv;
+  uv.resize(2 * n);
+  double Sqq = 0, Squ = 0, Sq = 0, Suu = 0, Su = 0, S1 = 0, Rq = 0, Ru = 0, Rv = 0;
   for (std::size_t i = i0; i < i1; ++i) {
     const double dy = y[i] - yc, dz = z[i] - zc;
     const double u = c * dy + s * dz, v = -s * dy + c * dz;
-    const double x[3] = {u * u + v * v, u, 1.0};
-    for (int a = 0; a < 3; ++a) {
-      r[a] += x[a] * v;
-      for (int b = 0; b < 3; ++b) M[a][b] += x[a] * x[b];
-    }
+    const double q = u * u + v * v;
+    uv[2 * (i - i0)] = u;
+    uv[2 * (i - i0) + 1] = v;
+    Rq += q * v, Sqq += q * q, Squ += q * u, Sq += q;
+    Ru += u * v, Suu += u * u, Su += u;
+    Rv += v, S1 += 1.0;
   }
+  double M[3][3] = {{Sqq, Squ, Sq}, {Squ, Suu, Su}, {Sq, Su, S1}}, r[3] = {Rq, Ru, Rv};
   // Solve by Gaussian elimination with partial pivoting (3×3).
   int p[3] = {0, 1, 2};
   double A[3][4];
@@ -84,9 +98,8 @@ LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, 
   const double alpha = sol[0], beta = sol[1], delta = sol[2];
   // Residual (in v, i.e. normal to the chord).
   double ss = 0;
-  for (std::size_t i = i0; i < i1; ++i) {
-    const double dy = y[i] - yc, dz = z[i] - zc;
-    const double u = c * dy + s * dz, v = -s * dy + c * dz;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double u = uv[2 * k], v = uv[2 * k + 1];
     const double e = v - (alpha * (u * u + v * v) + beta * u + delta);
     ss += e * e;
   }
@@ -134,7 +147,10 @@ std::string um(double v_m) { return format_number(std::round(v_m * 1e9) / 1e3) +
 }  // namespace
 
 ProfileCurve::ProfileCurve(const Profile& p, const CurveOptions& opt) {
-  build(p, opt, opt.window_half_width);
+  // The narrow window's centred fits first: their median residual decides measured or exact, and
+  // only an exact profile needs the rest of the narrow curve (a measured one is refitted wide).
+  std::vector<LocalFit> centred;
+  build(p, opt, opt.window_half_width, true, &centred);
   // Measured or exact (profiles.md "Measured or exact"): the residual against what rounding the
   // printed coordinates explains.
   NoiseDecision& d = noise_;
@@ -161,9 +177,11 @@ ProfileCurve::ProfileCurve(const Profile& p, const CurveOptions& opt) {
     d.reason = std::string(d.measured ? "measured" : "exact") + ": forced by the noise option; " + rule;
   }
   if (d.measured && opt.measured_window_half_width > opt.window_half_width) build(p, opt, opt.measured_window_half_width);
+  else build(p, opt, opt.window_half_width, false, &centred);
 }
 
-void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w) {
+void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w, bool centred_only,
+                         std::vector<LocalFit>* centred) {
   window_ = w;
   std::vector<double> rms;
   const std::size_t n = p.size();
@@ -212,6 +230,7 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w) {
     }
   };
   rms.reserve(m);
+  WindowDirection dir_centred, dir_left, dir_right;
   for (std::size_t j = 0; j < m; ++j) {
     const double yc = y_first + h_ * static_cast<double>(j_lo + j);
     // Linear interpolation of the raw points as the local origin height.
@@ -220,10 +239,19 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w) {
     const double zc = Z[k - 1] + t * (Z[k] - Z[k - 1]);
     const double sc = S[k - 1] + t * (S[k] - S[k - 1]);
 
-    std::size_t c0 = lower(sc - w), c1 = upper(sc + w);
-    widen(c0, c1, 0);
-    LocalFit best = fit_window(Y, Z, c0, c1, yc, zc);
+    LocalFit best;
+    if (centred && !centred_only) {
+      best = (*centred)[j];
+    } else {
+      std::size_t c0 = lower(sc - w), c1 = upper(sc + w);
+      widen(c0, c1, 0);
+      best = fit_window(Y, Z, c0, c1, yc, zc, dir_centred);
+    }
     rms.push_back(best.rms);
+    if (centred_only) {
+      centred->push_back(best);
+      if (best.ok) continue;  // else the one-sided fits below, which throw if they fail too
+    }
     int side = 0;
     // One-sided windows reach one data point past yc, so that a window on the wrong side of a
     // junction always holds a point of the other arc (and shows it in its residual).
@@ -233,8 +261,8 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w) {
     std::size_t r0 = ilo, r1 = upper(sc + 2 * w);
     widen(l0, l1, -1);
     widen(r0, r1, +1);
-    const LocalFit left = fit_window(Y, Z, l0, l1, yc, zc);
-    const LocalFit right = fit_window(Y, Z, r0, r1, yc, zc);
+    const LocalFit left = fit_window(Y, Z, l0, l1, yc, zc, dir_left);
+    const LocalFit right = fit_window(Y, Z, r0, r1, yc, zc, dir_right);
     const LocalFit& one = (left.rms <= right.rms) ? left : right;
     if (!best.ok || (one.ok && best.rms > opt.residual_floor && best.rms > opt.one_sided_factor * one.rms)) {
       best = one;

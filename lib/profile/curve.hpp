@@ -83,6 +83,14 @@ struct NoiseDecision {
   std::string reason;
 };
 
+namespace curve_detail {
+/// One node's local fit (curve.cpp): z, dz/dy, kappa and the RMS residual of the window.
+struct LocalFit {
+  bool ok = false;
+  double z = 0, slope = 0, kappa = 0, rms = std::numeric_limits<double>::infinity();
+};
+}  // namespace curve_detail
+
 class ProfileCurve {
  public:
   ProfileCurve() = default;
@@ -131,7 +139,11 @@ class ProfileCurve {
   double window_ = 0, median_rms_ = 0;
   NoiseDecision noise_;
   double smoothing_L_ = 0, smoothing_rms_ = 0, smoothing_max_ = 0;
-  void build(const Profile& p, const CurveOptions& opt, double w);
+  /// Fit every node with window half-width w. `centred_only`: only the centred fits, into
+  /// `*centred` (enough for the median residual that decides measured or exact); else the whole
+  /// curve, taking the centred fits from `*centred` when given (the same window, fitted before).
+  void build(const Profile& p, const CurveOptions& opt, double w, bool centred_only = false,
+             std::vector<curve_detail::LocalFit>* centred = nullptr);
 };
 
 }  // namespace mh
