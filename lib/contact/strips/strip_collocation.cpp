@@ -148,7 +148,29 @@ double Solver::K_end(int i, double ai, int j, double aj, double rcap) const {
   const double e1 = geo.s[j] - 0.5 * geo.ds - geo.s[i], e2 = e1 + geo.ds;
   const double X = geo.xc[i] - geo.xc[j];
   if (ai == 0.0) return H * influence(X, aj, e1, e2, rcap, gx, gw);  // the centre: one quadrature, not two
+  if (X == 0.0) return H * influence(ai, aj, e1, e2, rcap, gx, gw);   // both ends alike (the pressure is even)
   return 0.5 * H * (influence(X + ai, aj, e1, e2, rcap, gx, gw) + influence(X - ai, aj, e1, e2, rcap, gx, gw));
+}
+
+void Solver::capped_column(Collocation& c, int jj) const {
+  const int m = static_cast<int>(c.cand.size()), j = c.cand[jj];
+  const double f = H * c.q[jj];
+  if (same_xc) {  // on the centre lines: a function of the distance |i − j| only
+    int dmax = 0;
+    for (int r = 0; r < m; ++r)
+      if (!c.capped[r] && (opt.coupling || r == jj)) dmax = std::max(dmax, std::abs(c.cand[r] - j));
+    thread_local std::vector<double> col;
+    influence_centre_line(c.aeff[jj], geo.ds, c.rcap[jj], dmax, gx, gw, col);
+    for (int r = 0; r < m; ++r)
+      if (!c.capped[r] && (opt.coupling || r == jj)) c.Ucap(r, jj) = f * col[std::abs(c.cand[r] - j)];
+    return;
+  }
+  for (int r = 0; r < m; ++r) {
+    if (c.capped[r] || (!opt.coupling && r != jj)) continue;
+    const int i = c.cand[r];
+    c.Ucap(r, jj) = f * influence(geo.xc[i] - geo.xc[j], c.aeff[jj], geo.s[j] - 0.5 * geo.ds - geo.s[i],
+                                  geo.s[j] + 0.5 * geo.ds - geo.s[i], c.rcap[jj], gx, gw);
+  }
 }
 
 void Solver::build_K(Collocation& c, std::vector<double>& built) const {
@@ -184,7 +206,7 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
   if (std::isfinite(p_lim)) c.Ucap = Eigen::MatrixXd::Zero(m, m);  // column j: displacement from capped strip j
   c.settled = false;
   c.as_ok = true;
-  std::vector<int> act, E;
+  std::vector<int> act, E, newly;
   for (int pass = 0; pass < opt.max_active_set && !c.settled; ++pass) {
     // The elastic strips E of this pass (each plastic pass drops the newly capped ones) and
     // their equations K_EE q_E = delta - g - u_cap, solved for q >= 0 from the previous pass's
@@ -220,24 +242,20 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
     // Newly capped strips.
     bool any = false;
     if (std::isfinite(p_lim)) {
+      newly.clear();
       for (int ii : act) {
         if (c.q[ii] > p_lim) {
           c.capped[ii] = 1;
           any = true;
+          newly.push_back(ii);
           c.rcap[ii] = p_lim / c.q[ii];
           const int j = c.cand[ii];
           const double pen = delta - geo.g[j];
           c.aeff[ii] = std::min(c.a[ii] * (0.5 * kPi) / Phi(c.rcap[ii]), std::sqrt(std::max(pen, 0.0) / geo.A[j]));
           c.aeff[ii] = std::max(c.aeff[ii], c.a[ii]);  // never shorter than its elastic extent
-          for (int r = 0; r < m; ++r) {
-            if (!opt.coupling && r != ii) continue;
-            const int i = c.cand[r];
-            c.Ucap(r, ii) = H * c.q[ii] *
-                            influence(geo.xc[i] - geo.xc[j], c.aeff[ii], geo.s[j] - 0.5 * geo.ds - geo.s[i],
-                                      geo.s[j] + 0.5 * geo.ds - geo.s[i], c.rcap[ii], gx, gw);
-          }
         }
       }
+      for (int ii : newly) capped_column(c, ii);
     }
     if (!any) c.settled = true;
   }

@@ -65,13 +65,23 @@ void drops(const Solver& S, const std::vector<int>& field, const std::vector<dou
   D.assign(nf, 0.0);
   if (nf == 0) return;
   std::vector<StripDropR> R;
+  std::vector<double> centre;
   std::vector<int> kk(nf);
   std::vector<double> t(nf);
   for (const Source& sj : src) {
     if (!(sj.a > 0) || !(sj.q > 0)) continue;
-    if (sj.rcap < 1.0 || !S.same_xc) {
+    if (!S.same_xc) {
       for (int k = 0; k < nf; ++k)
         D[k] += sj.q * (S.K_end(field[k], 0.0, sj.j, sj.a, sj.rcap) - S.K_end(field[k], end[k], sj.j, sj.a, sj.rcap));
+      continue;
+    }
+    if (sj.rcap < 1.0) {
+      // A capped source (no table for its flat top): the centres by distance, one column
+      // (strip_influence.hpp), the ends by quadrature.
+      const int dmax = std::max(std::abs(sj.j - field.front()), std::abs(sj.j - field.back()));
+      influence_centre_line(sj.a, geo.ds, sj.rcap, dmax, S.gx, S.gw, centre);
+      for (int k = 0; k < nf; ++k)
+        D[k] += sj.q * (S.H * centre[std::abs(sj.j - field[k])] - S.K_end(field[k], end[k], sj.j, sj.a, sj.rcap));
       continue;
     }
     // Uniform strips: the field strip i sees the source's edges at (j − i ∓ ½) ds; each edge

@@ -112,9 +112,13 @@ double influence(double X0, double a, double e1, double e2, double rcap,
     br[nb++] = th;
   }
   std::sort(br, br + nb);
+  // A point inside the flat top (f0 = rcap) sees f − f0 = 0 on all of it, |theta| <= th: those
+  // sub-intervals add nothing (the rectangle term holds the flat top) and are skipped.
+  const double flat = rcap < 1.0 && f0 == rcap ? std::asin(std::sqrt(1.0 - rcap * rcap)) : -1.0;
   for (int k = 0; k + 1 < nb; ++k) {
     const double lo = br[k], hi = br[k + 1];
     if (!(hi > lo)) continue;
+    if (lo >= -flat && hi <= flat) continue;
     const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
     double acc = 0.0;
     for (std::size_t n = 0; n < gx.size(); ++n) {
@@ -126,6 +130,42 @@ double influence(double X0, double a, double e1, double e2, double rcap,
     total += acc * half * (even ? 2.0 : 1.0);
   }
   return total;
+}
+
+void influence_centre_line(double a, double ds, double rcap, int dmax, const std::vector<double>& gx,
+                           const std::vector<double>& gw, std::vector<double>& out) {
+  out.assign(static_cast<std::size_t>(dmax) + 1, 0.0);
+  if (!(a > 0.0)) return;
+  const double r = std::min(rcap, 1.0);
+  // f0 = f(0) = r. The rectangle term: with X1 = −a, X2 = a and P odd in X,
+  // R = 2 [P(a, e2) − P(a, e1)]; P odd in eta, so that at d = 0 (e1 = −e2) R = 4 P(a, ds/2).
+  thread_local std::vector<double> Pe, nm;
+  Pe.resize(static_cast<std::size_t>(dmax) + 1);
+  for (int m = 0; m <= dmax; ++m) Pe[m] = P_rect(a, (m + 0.5) * ds);
+  for (int d = 0; d <= dmax; ++d) out[d] = r * 2.0 * (d == 0 ? 2.0 * Pe[0] : Pe[d] - Pe[d - 1]);
+  // The remainder f − r vanishes on the flat top |theta| <= th (all of the strip's centre when
+  // r = 1: th = 0) and is integrated over [th, pi/2], doubled (even in theta). The lateral kernel
+  // of a node at X = a sin theta, as lateral_kernel above with the edges' n_m = e_m + sqrt(e_m² + X²),
+  // e_m = (m + ½) ds, taken once: F(0) = ln(n_0² / X²), F(d) = ln(n_d / n_{d−1}).
+  const double th = r < 1.0 ? std::asin(std::sqrt(1.0 - r * r)) : 0.0;
+  const double mid = 0.5 * (th + 0.5 * kPi), half = 0.5 * (0.5 * kPi - th);
+  if (!(half > 0.0)) return;
+  nm.resize(static_cast<std::size_t>(dmax) + 1);
+  for (std::size_t k = 0; k < gx.size(); ++k) {
+    const double theta = mid + half * gx[k];
+    const double t = std::sin(theta);
+    const double f = std::min(std::sqrt(std::max(0.0, 1.0 - t * t)), r);
+    const double X = a * t;
+    const double w = 2.0 * half * gw[k] * (f - r) * a * std::cos(theta);
+    if (w == 0.0) continue;
+    const double X2 = X * X;
+    for (int m = 0; m <= dmax; ++m) {
+      const double e = (m + 0.5) * ds;
+      nm[m] = e + std::sqrt(e * e + X2);
+    }
+    out[0] += w * std::log(nm[0] * nm[0] / X2);
+    for (int d = 1; d <= dmax; ++d) out[d] += w * std::log(nm[d] / nm[d - 1]);
+  }
 }
 
 double strip_influence(double X0, double a, double eta1, double eta2, double r_cap, int gauss_points) {

@@ -26,6 +26,16 @@ void gauss_legendre(int n, std::vector<double>* x, std::vector<double>* w);
 double influence(double X0, double a, double e1, double e2, double rcap,
                  const std::vector<double>& gx, const std::vector<double>& gw);
 
+/// The same integral on the strip's centre line (X0 = 0) for a whole column of strips of width ds:
+/// out[d] = influence(0, a, (d − ½) ds, (d + ½) ds, rcap) for d = 0 … dmax (a point d strips away,
+/// either side). The rectangle term and the root of the lateral kernel are taken once per strip
+/// edge, the Gauss nodes (sin, cos, f) once per column, and the flat top (f − f0 = 0 there) is
+/// not integrated: per distance one logarithm per node of one interval, where influence() takes
+/// two intervals, a sine, a cosine and two roots per node. A capped strip's column of the
+/// collocation (docs/method.md §9 item 6) and its displacement at the centres in the end-gap drops.
+void influence_centre_line(double a, double ds, double rcap, int dmax, const std::vector<double>& gx,
+                           const std::vector<double>& gw, std::vector<double>& out);
+
 /// Integral over one strip of f(t)/r, f(t) = min(sqrt(1 - t^2), r_cap),
 /// t = (xi - c_j)/a_j, for a point at x-offset X0 = x_i - c_j and lateral
 /// offsets eta1 < eta2 of the strip edges from the point (eta = s_j +- ds/2 - s_i).
