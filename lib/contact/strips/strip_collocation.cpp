@@ -160,7 +160,11 @@ void Solver::capped_column(Collocation& c, int jj) const {
     for (int r = 0; r < m; ++r)
       if (!c.capped[r] && (opt.coupling || r == jj)) dmax = std::max(dmax, std::abs(c.cand[r] - j));
     thread_local std::vector<double> col;
-    influence_centre_line(c.aeff[jj], geo.ds, c.rcap[jj], dmax, gx, gw, col);
+    thread_local std::vector<char> need;  // the distances of the elastic strips (few on a mostly capped patch)
+    need.assign(static_cast<std::size_t>(dmax) + 1, 0);
+    for (int r = 0; r < m; ++r)
+      if (!c.capped[r] && (opt.coupling || r == jj)) need[static_cast<std::size_t>(std::abs(c.cand[r] - j))] = 1;
+    influence_centre_line(c.aeff[jj], geo.ds, c.rcap[jj], dmax, gx, gw, col, &need);
     for (int r = 0; r < m; ++r)
       if (!c.capped[r] && (opt.coupling || r == jj)) c.Ucap(r, jj) = f * col[std::abs(c.cand[r] - j)];
     return;
@@ -184,6 +188,7 @@ void Solver::build_K(Collocation& c, std::vector<double>& built) const {
       elastic_column(*this, c.cand, jj, c.a[jj], c.K);
       built[jj] = c.a[jj];
       c.lu_of.clear();
+      c.lu_other_of.clear();
     }
 }
 
@@ -227,8 +232,14 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
       in_act[cc] = start[E[cc]];
     }
     if (e > 0 && c.lu_of != E) {
-      c.lu.compute(KE);
-      c.lu_of = E;
+      // Two factorisations are kept: along a load iteration each collocation starts on every
+      // strip (the same set as the previous one's first pass) and ends on the elastic ones.
+      std::swap(c.lu, c.lu_other);
+      std::swap(c.lu_of, c.lu_other_of);
+      if (c.lu_of != E) {
+        c.lu.compute(KE);
+        c.lu_of = E;
+      }
     }
     c.as_ok = e == 0 || solve_active_set(KE, c.lu, rhs, kPenetrationRtol * (delta - gmin), opt.max_active_set, in_act, qE);
     if (!c.as_ok) break;

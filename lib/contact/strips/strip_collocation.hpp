@@ -47,6 +47,8 @@ struct Collocation {
   bool settled = true;          ///< the plastic set settled
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;  ///< factorisation of K restricted to lu_of (reused across approaches)
   std::vector<int> lu_of;       ///< the candidates (indices ii) lu factorises; empty: none
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_other;  ///< the factorisation before lu (of another set of the same K)
+  std::vector<int> lu_other_of; ///< its candidates; empty: none
 };
 
 /// The load [N] of candidate ii of a collocation on strips of width ds: (π/2) q a ds elastic,

@@ -133,16 +133,19 @@ double influence(double X0, double a, double e1, double e2, double rcap,
 }
 
 void influence_centre_line(double a, double ds, double rcap, int dmax, const std::vector<double>& gx,
-                           const std::vector<double>& gw, std::vector<double>& out) {
+                           const std::vector<double>& gw, std::vector<double>& out, const std::vector<char>* need) {
   out.assign(static_cast<std::size_t>(dmax) + 1, 0.0);
   if (!(a > 0.0)) return;
+  auto wanted = [need](int d) { return !need || (*need)[static_cast<std::size_t>(d)] != 0; };
   const double r = std::min(rcap, 1.0);
   // f0 = f(0) = r. The rectangle term: with X1 = −a, X2 = a and P odd in X,
   // R = 2 [P(a, e2) − P(a, e1)]; P odd in eta, so that at d = 0 (e1 = −e2) R = 4 P(a, ds/2).
   thread_local std::vector<double> Pe, nm;
   Pe.resize(static_cast<std::size_t>(dmax) + 1);
-  for (int m = 0; m <= dmax; ++m) Pe[m] = P_rect(a, (m + 0.5) * ds);
-  for (int d = 0; d <= dmax; ++d) out[d] = r * 2.0 * (d == 0 ? 2.0 * Pe[0] : Pe[d] - Pe[d - 1]);
+  for (int m = 0; m <= dmax; ++m)
+    Pe[m] = wanted(m) || (m < dmax && wanted(m + 1)) ? P_rect(a, (m + 0.5) * ds) : 0.0;
+  for (int d = 0; d <= dmax; ++d)
+    if (wanted(d)) out[d] = r * 2.0 * (d == 0 ? 2.0 * Pe[0] : Pe[d] - Pe[d - 1]);
   // The remainder f − r vanishes on the flat top |theta| <= th (all of the strip's centre when
   // r = 1: th = 0) and is integrated over [th, pi/2], doubled (even in theta). The lateral kernel
   // of a node at X = a sin theta, as lateral_kernel above with the edges' n_m = e_m + sqrt(e_m² + X²),
@@ -163,9 +166,38 @@ void influence_centre_line(double a, double ds, double rcap, int dmax, const std
       const double e = (m + 0.5) * ds;
       nm[m] = e + std::sqrt(e * e + X2);
     }
-    out[0] += w * std::log(nm[0] * nm[0] / X2);
-    for (int d = 1; d <= dmax; ++d) out[d] += w * std::log(nm[d] / nm[d - 1]);
+    if (wanted(0)) out[0] += w * std::log(nm[0] * nm[0] / X2);
+    for (int d = 1; d <= dmax; ++d)
+      if (wanted(d)) out[d] += w * std::log(nm[d] / nm[d - 1]);
   }
+}
+
+void capped_source(double a, double rcap, const std::vector<double>& gx, const std::vector<double>& gw,
+                   CappedSource& out) {
+  out.a = a;
+  out.r = rcap;
+  const double th = std::asin(std::sqrt(1.0 - rcap * rcap));
+  out.x_flat = a * std::sin(th);
+  out.x.clear();
+  out.w.clear();
+  const double half = 0.5 * (0.5 * kPi - th);
+  for (double side : {-1.0, 1.0}) {
+    const double mid = side * 0.5 * (th + 0.5 * kPi);
+    for (std::size_t n = 0; n < gx.size(); ++n) {
+      const double theta = mid + half * gx[n];
+      const double t = std::sin(theta);
+      const double f = std::min(std::sqrt(std::max(0.0, 1.0 - t * t)), rcap);
+      out.x.push_back(a * t);
+      out.w.push_back(half * gw[n] * (f - rcap) * a * std::cos(theta));
+    }
+  }
+}
+
+double capped_source_influence(const CappedSource& src, double X0, double e1, double e2) {
+  const double X1 = -src.a - X0, X2 = src.a - X0;
+  double total = src.r * (P_rect(X2, e2) - P_rect(X1, e2) - P_rect(X2, e1) + P_rect(X1, e1));
+  for (std::size_t n = 0; n < src.x.size(); ++n) total += src.w[n] * lateral_kernel(src.x[n] - X0, e1, e2);
+  return total;
 }
 
 double strip_influence(double X0, double a, double eta1, double eta2, double r_cap, int gauss_points) {

@@ -33,8 +33,22 @@ double influence(double X0, double a, double e1, double e2, double rcap,
 /// not integrated: per distance one logarithm per node of one interval, where influence() takes
 /// two intervals, a sine, a cosine and two roots per node. A capped strip's column of the
 /// collocation (docs/method.md §9 item 6) and its displacement at the centres in the end-gap drops.
+/// `need` (size dmax + 1): only the distances d with need[d] are computed, the others left 0.
 void influence_centre_line(double a, double ds, double rcap, int dmax, const std::vector<double>& gx,
-                           const std::vector<double>& gw, std::vector<double>& out);
+                           const std::vector<double>& gw, std::vector<double>& out,
+                           const std::vector<char>* need = nullptr);
+
+/// A capped strip (flat top at rcap < 1) seen from points inside its flat top, |X0| < a sqrt(1 − rcap²):
+/// there f − f0 vanishes on the whole flat top and influence() integrates the two tails only, on nodes
+/// that do not depend on the point. They are prepared once per strip (sin, cos, f, weights).
+struct CappedSource {
+  double a = 0, r = 1, x_flat = 0;  ///< half-length, flat top, the flat top's half-length a sqrt(1 − r²)
+  std::vector<double> x, w;         ///< the tails' nodes (x = a sin theta) and weights (f − r) a cos theta dtheta
+};
+void capped_source(double a, double rcap, const std::vector<double>& gx, const std::vector<double>& gw,
+                   CappedSource& out);
+/// influence(X0, a, e1, e2, rcap) of a prepared source for |X0| < src.x_flat.
+double capped_source_influence(const CappedSource& src, double X0, double e1, double e2);
 
 /// Integral over one strip of f(t)/r, f(t) = min(sqrt(1 - t^2), r_cap),
 /// t = (xi - c_j)/a_j, for a point at x-offset X0 = x_i - c_j and lateral
