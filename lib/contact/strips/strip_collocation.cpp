@@ -299,6 +299,7 @@ StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>*
   }
   std::vector<char> start(m, 1);
   std::vector<double> built;  // the extent each column of K was built for
+  std::vector<double> a_prev(n, NAN), phi_prev(n, NAN);  // per strip: the last widening pass's extent and phi there
   c.a.resize(m);
   for (int widen = 0;; ++widen) {
     for (int ii = 0; ii < m; ++ii) c.a[ii] = a[c.cand[ii]];
@@ -326,6 +327,7 @@ StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>*
     // length it is not, and without this the amplitude there grows like 1/(a ln(1/a)) and the
     // load jumps when a strip enters (docs/strips.md "Load jumps").
     bool widened = false;
+    const bool any_capped = std::find(c.capped.begin(), c.capped.end(), 1) != c.capped.end();
     for (int ii = 0; ii < m; ++ii) {
       const int i = c.cand[ii];
       if (c.capped[ii]) continue;
@@ -335,9 +337,27 @@ StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>*
         u += c.capped[jj] ? c.Ucap(ii, jj) : c.K(ii, jj) * c.q[jj];
       }
       const double r = delta - geo.g[i] - u;
-      if (!(r > 0.0)) continue;
-      const double aw = std::sqrt(r / geo.A[i]);
-      if (aw > a[i] * (1.0 + kWidenRtol)) { a[i] = aw; widened = true; }
+      const double aw = r > 0.0 ? std::sqrt(r / geo.A[i]) : 0.0;
+      if (!(aw > a[i] * (1.0 + kWidenRtol))) {
+        a_prev[i] = NAN;
+        continue;
+      }
+      // The strip's extent is the fixed point a = phi(a), phi(a) = aw at a. The plain iteration
+      // contracts by about 0.1 per pass at a tail strip (Manchester plastic sweep: 7-8 passes at
+      // t_Y = 1.5 mm), and with capped strips each pass is a whole collocation with their columns
+      // (their elastic amplitudes move with every widening); there a secant step on the last two
+      // passes settles it in about half the passes (its slope in [0, 0.5): a contraction). It may
+      // overshoot the fixed point by its second-order error, so it is kept to the plastic model:
+      // elastic patches widen as before, in passes that cost one column of K each.
+      double next = aw;
+      if (any_capped && std::isfinite(a_prev[i]) && a[i] != a_prev[i]) {
+        const double slope = (aw - phi_prev[i]) / (a[i] - a_prev[i]);
+        if (slope >= 0.0 && slope < 0.5) next = a[i] + (aw - a[i]) / (1.0 - slope);
+      }
+      a_prev[i] = a[i];
+      phi_prev[i] = aw;
+      a[i] = next;
+      widened = true;
     }
     if (!widened) break;
     for (int ii = 0; ii < m; ++ii) start[ii] = c.q[ii] > 0.0 || c.capped[ii];
