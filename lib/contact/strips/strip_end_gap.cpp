@@ -77,15 +77,14 @@ void drops(const Solver& S, const std::vector<int>& field, const std::vector<dou
       continue;
     }
     if (sj.rcap < 1.0) {
-      // A capped source (no table for its flat top): the centres by distance, one column
-      // (strip_influence.hpp), the ends by quadrature.
+      // A capped source (no table for its flat top): the centres by distance, one column, the
+      // ends by quadrature on its prepared nodes (strip_influence.hpp).
       const int dmax = std::max(std::abs(sj.j - field.front()), std::abs(sj.j - field.back()));
       influence_centre_line(sj.a, geo.ds, sj.rcap, dmax, S.gx, S.gw, centre);
       capped_source(sj.a, sj.rcap, S.gx, S.gw, cs);
       for (int k = 0; k < nf; ++k) {
         const double e1 = geo.s[sj.j] - 0.5 * geo.ds - geo.s[field[k]];
-        const double uend = end[k] < cs.x_flat ? S.H * capped_source_influence(cs, end[k], e1, e1 + geo.ds)
-                                               : S.K_end(field[k], end[k], sj.j, sj.a, sj.rcap);
+        const double uend = S.H * capped_source_influence(cs, end[k], e1, e1 + geo.ds);
         D[k] += sj.q * (S.H * centre[std::abs(sj.j - field[k])] - uend);
       }
       continue;

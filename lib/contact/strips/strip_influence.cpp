@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include "core/units.hpp"
 
 namespace mh {
@@ -176,27 +177,65 @@ void capped_source(double a, double rcap, const std::vector<double>& gx, const s
                    CappedSource& out) {
   out.a = a;
   out.r = rcap;
-  const double th = std::asin(std::sqrt(1.0 - rcap * rcap));
-  out.x_flat = a * std::sin(th);
-  out.x.clear();
-  out.w.clear();
-  const double half = 0.5 * (0.5 * kPi - th);
-  for (double side : {-1.0, 1.0}) {
-    const double mid = side * 0.5 * (th + 0.5 * kPi);
+  out.th = std::asin(std::sqrt(1.0 - rcap * rcap));
+  out.x_flat = a * std::sin(out.th);
+  out.gx = &gx;
+  out.gw = &gw;
+  // The sub-intervals of influence() that do not depend on the point: the two tails and the flat
+  // top, with the same nodes (mid + half gx) and weights (gw half a cos theta), and f there.
+  const double th = out.th;
+  const double lo[3] = {-0.5 * kPi, th, -th}, hi[3] = {-th, 0.5 * kPi, th};
+  for (int piece = 0; piece < 3; ++piece) {
+    std::vector<double>& x = piece == 2 ? out.x_flat_nodes : out.x;
+    std::vector<double>& f = piece == 2 ? out.f_flat_nodes : out.f;
+    std::vector<double>& w = piece == 2 ? out.w_flat_nodes : out.w;
+    if (piece != 1) { x.clear(); f.clear(); w.clear(); }
+    const double mid = 0.5 * (lo[piece] + hi[piece]), half = 0.5 * (hi[piece] - lo[piece]);
+    if (!(half > 0.0)) continue;
     for (std::size_t n = 0; n < gx.size(); ++n) {
       const double theta = mid + half * gx[n];
       const double t = std::sin(theta);
-      const double f = std::min(std::sqrt(std::max(0.0, 1.0 - t * t)), rcap);
-      out.x.push_back(a * t);
-      out.w.push_back(half * gw[n] * (f - rcap) * a * std::cos(theta));
+      x.push_back(a * t);
+      f.push_back(std::min(std::sqrt(std::max(0.0, 1.0 - t * t)), rcap));
+      w.push_back(half * gw[n] * a * std::cos(theta));
     }
   }
 }
 
 double capped_source_influence(const CappedSource& src, double X0, double e1, double e2) {
-  const double X1 = -src.a - X0, X2 = src.a - X0;
-  double total = src.r * (P_rect(X2, e2) - P_rect(X1, e2) - P_rect(X2, e1) + P_rect(X1, e1));
-  for (std::size_t n = 0; n < src.x.size(); ++n) total += src.w[n] * lateral_kernel(src.x[n] - X0, e1, e2);
+  const double a = src.a, r = src.r;
+  const double t0 = X0 / a;  // >= 0
+  const bool inside = t0 < 1.0;
+  const double f0 = inside ? std::min(std::sqrt(std::max(0.0, 1.0 - t0 * t0)), r) : 0.0;
+  double total = 0.0;
+  if (f0 != 0.0) {
+    const double X1 = -a - X0, X2 = a - X0;
+    total += f0 * (P_rect(X2, e2) - P_rect(X1, e2) - P_rect(X2, e1) + P_rect(X1, e1));
+  }
+  // Both tails: prepared, except the right one when the point lies on it (split there).
+  const bool on_tail = inside && f0 < r;
+  const std::size_t ng = src.gx->size();
+  for (std::size_t n = 0; n < src.x.size(); ++n) {
+    if (on_tail && n >= ng) break;  // the right tail: below
+    total += src.w[n] * (src.f[n] - f0) * lateral_kernel(src.x[n] - X0, e1, e2);
+  }
+  // The flat top: f − f0 = 0 when the point is on it.
+  if (f0 != r)
+    for (std::size_t n = 0; n < src.x_flat_nodes.size(); ++n)
+      total += src.w_flat_nodes[n] * (src.f_flat_nodes[n] - f0) * lateral_kernel(src.x_flat_nodes[n] - X0, e1, e2);
+  if (on_tail) {
+    const double split = std::asin(t0);
+    for (const auto& iv : {std::pair<double, double>{src.th, split}, std::pair<double, double>{split, 0.5 * kPi}}) {
+      const double mid = 0.5 * (iv.first + iv.second), half = 0.5 * (iv.second - iv.first);
+      if (!(half > 0.0)) continue;
+      for (std::size_t n = 0; n < ng; ++n) {
+        const double theta = mid + half * (*src.gx)[n];
+        const double t = std::sin(theta);
+        const double f = std::min(std::sqrt(std::max(0.0, 1.0 - t * t)), r);
+        total += half * (*src.gw)[n] * a * std::cos(theta) * (f - f0) * lateral_kernel(a * t - X0, e1, e2);
+      }
+    }
+  }
   return total;
 }
 

@@ -38,16 +38,22 @@ void influence_centre_line(double a, double ds, double rcap, int dmax, const std
                            const std::vector<double>& gw, std::vector<double>& out,
                            const std::vector<char>* need = nullptr);
 
-/// A capped strip (flat top at rcap < 1) seen from points inside its flat top, |X0| < a sqrt(1 − rcap²):
-/// there f − f0 vanishes on the whole flat top and influence() integrates the two tails only, on nodes
-/// that do not depend on the point. They are prepared once per strip (sin, cos, f, weights).
+/// A capped strip (flat top at rcap < 1) as a source seen from many points of its own centre line's
+/// direction (the ends of other strips, X0 >= 0): influence()'s sub-intervals that do not depend on
+/// the point (the two tails |t| > sqrt(1 − rcap²) and the flat top), their nodes, f and weights,
+/// prepared once per strip. At a point inside the flat top (|X0| < x_flat) f − f0 vanishes on it
+/// and only the tails are summed; at a point on a tail that tail is split there as influence()
+/// does; beyond the strip's end every piece is prepared.
 struct CappedSource {
-  double a = 0, r = 1, x_flat = 0;  ///< half-length, flat top, the flat top's half-length a sqrt(1 − r²)
-  std::vector<double> x, w;         ///< the tails' nodes (x = a sin theta) and weights (f − r) a cos theta dtheta
+  double a = 0, r = 1, th = 0, x_flat = 0;  ///< half-length, flat top, asin sqrt(1 − r²), a sqrt(1 − r²)
+  const std::vector<double>* gx = nullptr;  ///< the Gauss nodes and weights per sub-interval
+  const std::vector<double>* gw = nullptr;
+  std::vector<double> x, f, w;              ///< the tails' nodes (left, then right): x = a sin theta, f, gw half a cos theta
+  std::vector<double> x_flat_nodes, f_flat_nodes, w_flat_nodes;  ///< the same on the flat top
 };
 void capped_source(double a, double rcap, const std::vector<double>& gx, const std::vector<double>& gw,
                    CappedSource& out);
-/// influence(X0, a, e1, e2, rcap) of a prepared source for |X0| < src.x_flat.
+/// influence(X0, a, e1, e2, rcap) of a prepared source, X0 >= 0.
 double capped_source_influence(const CappedSource& src, double X0, double e1, double e2);
 
 /// Integral over one strip of f(t)/r, f(t) = min(sqrt(1 - t^2), r_cap),

@@ -1,6 +1,6 @@
 // The displacement of a capped strip (docs/method.md §9 item 6: pressure min(q sqrt(1 − t²), p_lim),
 // r = p_lim / q) as the strip solver takes it, whole columns at once on the centre lines
-// (strips_detail::influence_centre_line) and at the ends of other strips inside its flat top
+// (strips_detail::influence_centre_line) and at the ends of other strips, on its prepared nodes
 // (strips_detail::capped_source_influence), against tanh-sinh quadrature of the definition
 // (Boost.Math, independent of the solver's Gauss–Legendre nodes, of its subtraction of the
 // singular part and of its rectangle closed form):
@@ -29,6 +29,12 @@ constexpr double kEstar = 210e9 / (2 * (1 - 0.28 * 0.28));  // steel on steel, E
 constexpr double kH = 1.0 / (kPi * kEstar);                // compliance of the strip solver [m/Pa · 1/m]
 constexpr double kPlim = 900e6;                            // [Pa]
 constexpr double kTol = 1e-9;                              // [m]: 1 nm
+// [m]: 20 nm at points on a tail of the capped pressure or beyond the strip's end. There the
+// solver's quadrature (gauss_points, influence()) is measured 17 nm off at r = 0.1 (a tail of a
+// twentieth of the strip, the point within it next to the strip's end; 0.4 % of 4.4 µm) and
+// within 2.5 nm elsewhere: the limit of 8 Gauss–Legendre nodes beside a logarithmic peak, the same
+// in the prepared nodes as in influence() (checked below to 1e-6 nm), not a cost of preparing them.
+constexpr double kTolTail = 2e-8;
 
 /// asinh(e/|x|), also where e/|x| overflows.
 double asinh_over(double e, double x) {
@@ -94,31 +100,38 @@ TEST_CASE("capped strip: displacement columns on the centre lines against tanh-s
   std::printf("  capped strip, centre-line columns: worst deviation from tanh-sinh %.2e m\n", worst);
 }
 
-TEST_CASE("capped strip: displacement at points inside its flat top against tanh-sinh quadrature", "[strips][plastic]") {
+TEST_CASE("capped strip: displacement at the ends of other strips against tanh-sinh quadrature", "[strips][plastic]") {
   std::vector<double> gx, gw;
   mh::strips_detail::gauss_legendre(8, &gx, &gw);
   const double ds = 0.2e-3;
-  double worst = 0;
+  double worst = 0, worst_tail = 0;
   for (double a : {3e-3, 25e-3})
     for (double r : {0.1, 0.45, 0.95}) {
       const double q = kPlim / r;
       mh::strips_detail::CappedSource src;
       mh::strips_detail::capped_source(a, r, gx, gw, src);
       CHECK(src.x_flat == Approx(a * std::sqrt(1 - r * r)).epsilon(1e-14));
-      // The ends of elastic strips beside it: inside the flat top, from its centre to near its kink.
-      for (double frac : {0.05, 0.5, 0.97})
+      // The ends of elastic strips beside it: inside the flat top, from its centre to near its
+      // kink; on its tail; at and beyond its end.
+      for (double frac : {0.05, 0.5, 0.97, -0.3, -0.9, -1.0, -1.2, -3.0})
         for (int d : {0, 1, 4, 30}) {
-          const double X0 = frac * src.x_flat, e1 = (d - 0.5) * ds, e2 = (d + 0.5) * ds;
+          if (d == 0 && frac == -1.0) continue;  // the strip's own end: the kernel is singular there
+          // frac > 0: a fraction of the flat top; frac < 0: |frac| > 1 beyond the end, else the
+          // point that fraction of the way along the tail.
+          const double X0 = frac > 0 ? frac * src.x_flat
+                                     : (-frac >= 1 ? -frac * a : src.x_flat + (-frac) * (a - src.x_flat));
+          const double e1 = (d - 0.5) * ds, e2 = (d + 0.5) * ds;
           const double ref = kH * q * reference(X0, a, e1, e2, r);
           const double lib = kH * q * mh::strips_detail::capped_source_influence(src, X0, e1, e2);
           // The general quadrature of the solver (influence) on the same point.
           const double gen = kH * q * mh::strips_detail::influence(X0, a, e1, e2, r, gx, gw);
           INFO("a = " << a * 1e3 << " mm, r = " << r << ", X0 = " << X0 * 1e3 << " mm, d = " << d << ": prepared " << lib
                       << " m, general " << gen << " m, quadrature " << ref << " m");
-          CHECK(std::fabs(lib - ref) < kTol);
+          CHECK(std::fabs(lib - ref) < (frac > 0 ? kTol : kTolTail));
           CHECK(std::fabs(lib - gen) < 1e-6 * kTol);  // the same nodes, summed in another order
-          worst = std::max(worst, std::fabs(lib - ref));
+          (frac > 0 ? worst : worst_tail) = std::max(frac > 0 ? worst : worst_tail, std::fabs(lib - ref));
         }
     }
-  std::printf("  capped strip, points in the flat top: worst deviation from tanh-sinh %.2e m\n", worst);
+  std::printf("  capped strip, ends of other strips: worst deviation from tanh-sinh %.2e m in the flat top, %.2e m on "
+              "a tail or beyond\n", worst, worst_tail);
 }
