@@ -47,6 +47,18 @@ ContactHole find_contact_hole(const PatchCheckInput& in) {
   return h;
 }
 
+void close_grid_case(const std::vector<PatchCheckInput>& in, double Q, double residual_tol, CaseResult& r) {
+  int index = 0;
+  for (PatchResult& P : r.patches) P.patch = ++index;
+  r.n_contacts = static_cast<int>(r.patches.size());
+  r.residual = (r.Fz - Q) / Q;
+  if (r.status == CaseStatus::Ok && std::fabs(r.residual) > residual_tol) {
+    r.status = CaseStatus::NotConverged;
+    r.message = "force balance residual " + format_number(r.residual);
+  }
+  check_grid_result(in, Q, r);
+}
+
 void check_grid_result(const std::vector<PatchCheckInput>& in, double Q, CaseResult& r) {
   if (r.status != CaseStatus::Ok) return;
   // Force balance (eq. 10), from the patches as reported.

@@ -79,6 +79,15 @@ ContactHole find_contact_hole(const PatchCheckInput& in);
 /// does, once, for every method).
 void check_grid_result(const std::vector<PatchCheckInput>& in, double Q, CaseResult& r);
 
+/// The end of a grid method's case body, once for both methods: the reported patches numbered
+/// 1 … n in their order, n_contacts, the residual (Fz − Q)/Q, and the method's convergence rule on
+/// it: an ok row whose |residual| exceeds `residual_tol` did not settle the load (not_converged,
+/// "force balance residual R"); then check_grid_result, whose force_balance check holds the rows
+/// left ok to kForceBalanceRtol. `residual_tol`: the half-space method 10 force_rtol across
+/// several patches (one patch carries the load by its own solve) and no bound on one patch, so
+/// that force_balance judges it; the strip method kForceBalanceRtol.
+void close_grid_case(const std::vector<PatchCheckInput>& in, double Q, double residual_tol, CaseResult& r);
+
 /// A grid result whose status is not_converged carries no pressures that look like an answer
 /// (docs/outputs.md, "Failed rows"): its last iterate's approach, forces and residual stay (they
 /// say how far it is from equilibrium), its peak pressure and area become NaN (empty cells, null)

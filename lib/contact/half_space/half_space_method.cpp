@@ -9,7 +9,6 @@
 #include "contact/grid/grid_checks.hpp"
 #include "contact/grid/patch_driver.hpp"
 #include "contact/multi_hertz/multi_hertz.hpp"
-#include "core/numfmt.hpp"
 #include "geometry/gap.hpp"
 
 namespace mh {
@@ -175,12 +174,10 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
   // Results per patch and for the case.
   r.approach = dz;
   r.iterations = outer;
-  int index = 0;
   std::vector<PatchCheckInput> checks;  // of the reported patches, for the physical checks
   for (const auto& solver : D.solvers) {
     const HalfSpacePatch& k = static_cast<const HalfSpacePatch&>(*solver);
     PatchResult pr;
-    pr.patch = ++index;
     pr.y_r = k.P.y_ref;
     pr.z_r = gap.z_rail(k.P.y_ref);  // the reference point on the rail profile (as CONTACT reports it)
     pr.y_w = gap.y_wheel(k.P.y_ref);
@@ -223,15 +220,7 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
     r.area += pr.area;
     r.patches.push_back(std::move(pr));
   }
-  index = 0;
-  for (auto& pr : r.patches) pr.patch = ++index;
-  r.n_contacts = static_cast<int>(r.patches.size());
-  r.residual = (r.Fz - Q) / Q;
-  if (r.status == CaseStatus::Ok && std::fabs(r.residual) > 10 * opt.force_rtol && D.solvers.size() > 1) {
-    r.status = CaseStatus::NotConverged;
-    r.message = "force balance residual " + format_number(r.residual);
-  }
-  check_grid_result(checks, Q, r);
+  close_grid_case(checks, Q, D.solvers.size() > 1 ? 10 * opt.force_rtol : INFINITY, r);
   return r;
 }
 

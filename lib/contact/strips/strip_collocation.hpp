@@ -41,11 +41,14 @@ struct Collocation {
   std::vector<double> aeff;     ///< [m] extents as loaded (capped strips lengthened, at most to their overlap)
   std::vector<double> rcap;     ///< p_lim / q for capped strips, 1 otherwise
   std::vector<char> capped;     ///< flat-topped at p_lim
-  Eigen::MatrixXd Ucap;         ///< [m] column jj: displacement at the centres from capped strip jj
+  Eigen::MatrixXd Ucap;         ///< [m] column jj: displacement at the centres of the elastic strips from capped strip jj
+                                ///< (rows of capped strips, whose equations are dropped, are not computed)
   bool as_ok = true;            ///< the active set settled
   bool settled = true;          ///< the plastic set settled
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;  ///< factorisation of K restricted to lu_of (reused across approaches)
   std::vector<int> lu_of;       ///< the candidates (indices ii) lu factorises; empty: none
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_other;  ///< the factorisation before lu (of another set of the same K)
+  std::vector<int> lu_other_of; ///< its candidates; empty: none
 };
 
 /// The load [N] of candidate ii of a collocation on strips of width ds: (π/2) q a ds elastic,
@@ -70,6 +73,9 @@ struct Solver : StripExtents {
   /// capped strips and unequal row centres (the elastic, no-yaw case reads the tabulated drop).
   double K_end(int i, double ai, int j, double aj, double rcap) const;
 
+  /// Column jj of c.Ucap for the newly capped strip jj (c.aeff, c.rcap, c.q set), in the rows of
+  /// the strips not capped.
+  void capped_column(Collocation& c, int jj) const;
   /// Build c.K for c.a (the columns whose extent differs from `built`, all when it is empty).
   void build_K(Collocation& c, std::vector<double>& built) const;
   /// The amplitudes at approach delta for c's extents: active set and plastic cap. `start`: the

@@ -65,13 +65,28 @@ void drops(const Solver& S, const std::vector<int>& field, const std::vector<dou
   D.assign(nf, 0.0);
   if (nf == 0) return;
   std::vector<StripDropR> R;
+  std::vector<double> centre;
+  CappedSource cs;
   std::vector<int> kk(nf);
   std::vector<double> t(nf);
   for (const Source& sj : src) {
     if (!(sj.a > 0) || !(sj.q > 0)) continue;
-    if (sj.rcap < 1.0 || !S.same_xc) {
+    if (!S.same_xc) {
       for (int k = 0; k < nf; ++k)
         D[k] += sj.q * (S.K_end(field[k], 0.0, sj.j, sj.a, sj.rcap) - S.K_end(field[k], end[k], sj.j, sj.a, sj.rcap));
+      continue;
+    }
+    if (sj.rcap < 1.0) {
+      // A capped source (no table for its flat top): the centres by distance, one column, the
+      // ends by quadrature on its prepared nodes (strip_influence.hpp).
+      const int dmax = std::max(std::abs(sj.j - field.front()), std::abs(sj.j - field.back()));
+      influence_centre_line(sj.a, geo.ds, sj.rcap, dmax, S.gx, S.gw, centre);
+      capped_source(sj.a, sj.rcap, S.gx, S.gw, cs);
+      for (int k = 0; k < nf; ++k) {
+        const double e1 = geo.s[sj.j] - 0.5 * geo.ds - geo.s[field[k]];
+        const double uend = S.H * capped_source_influence(cs, end[k], e1, e1 + geo.ds);
+        D[k] += sj.q * (S.H * centre[std::abs(sj.j - field[k])] - uend);
+      }
       continue;
     }
     // Uniform strips: the field strip i sees the source's edges at (j − i ∓ ½) ds; each edge
@@ -136,16 +151,17 @@ double end_gap_error(const Solver& S, const StripResult& r, double p_lim) {
   std::vector<Source> src;
   for (const StripState& st : r.strips) {
     src.push_back({st.index, st.a, st.q, st.plastic ? p_lim / st.q : 1.0});
+    if (st.plastic) continue;  // a capped strip's length follows from its load and overlap, not its end gap
     field.push_back(st.index);
     end.push_back(st.a);
   }
   drops(S, field, end, src, D);
   double wsum = 0, werr = 0;
-  for (std::size_t k = 0; k < r.strips.size(); ++k) {
+  for (std::size_t k = 0, f = 0; k < r.strips.size(); ++k) {
     const StripState& st = r.strips[k];
     if (st.plastic) continue;
     // The centre's collocation holds (δ − g_i = u_centre), so the end's interpenetration is the drop.
-    const double err = std::fabs(1.0 - D[k] / (S.geo.A[st.index] * st.a * st.a));
+    const double err = std::fabs(1.0 - D[f++] / (S.geo.A[st.index] * st.a * st.a));
     wsum += st.load;
     werr += st.load * err;
   }

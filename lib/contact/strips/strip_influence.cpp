@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include "core/units.hpp"
 
 namespace mh {
@@ -112,9 +113,13 @@ double influence(double X0, double a, double e1, double e2, double rcap,
     br[nb++] = th;
   }
   std::sort(br, br + nb);
+  // A point inside the flat top (f0 = rcap) sees f − f0 = 0 on all of it, |theta| <= th: those
+  // sub-intervals add nothing (the rectangle term holds the flat top) and are skipped.
+  const double flat = rcap < 1.0 && f0 == rcap ? std::asin(std::sqrt(1.0 - rcap * rcap)) : -1.0;
   for (int k = 0; k + 1 < nb; ++k) {
     const double lo = br[k], hi = br[k + 1];
     if (!(hi > lo)) continue;
+    if (lo >= -flat && hi <= flat) continue;
     const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
     double acc = 0.0;
     for (std::size_t n = 0; n < gx.size(); ++n) {
@@ -124,6 +129,112 @@ double influence(double X0, double a, double e1, double e2, double rcap,
       acc += gw[n] * (fcap(t) - f0) * lateral_kernel(X, e1, e2) * a * std::cos(th);
     }
     total += acc * half * (even ? 2.0 : 1.0);
+  }
+  return total;
+}
+
+void influence_centre_line(double a, double ds, double rcap, int dmax, const std::vector<double>& gx,
+                           const std::vector<double>& gw, std::vector<double>& out, const std::vector<char>* need) {
+  out.assign(static_cast<std::size_t>(dmax) + 1, 0.0);
+  if (!(a > 0.0)) return;
+  auto wanted = [need](int d) { return !need || (*need)[static_cast<std::size_t>(d)] != 0; };
+  const double r = std::min(rcap, 1.0);
+  // f0 = f(0) = r. The rectangle term: with X1 = −a, X2 = a and P odd in X,
+  // R = 2 [P(a, e2) − P(a, e1)]; P odd in eta, so that at d = 0 (e1 = −e2) R = 4 P(a, ds/2).
+  thread_local std::vector<double> Pe, nm;
+  Pe.resize(static_cast<std::size_t>(dmax) + 1);
+  for (int m = 0; m <= dmax; ++m)
+    Pe[m] = wanted(m) || (m < dmax && wanted(m + 1)) ? P_rect(a, (m + 0.5) * ds) : 0.0;
+  for (int d = 0; d <= dmax; ++d)
+    if (wanted(d)) out[d] = r * 2.0 * (d == 0 ? 2.0 * Pe[0] : Pe[d] - Pe[d - 1]);
+  // The remainder f − r vanishes on the flat top |theta| <= th (all of the strip's centre when
+  // r = 1: th = 0) and is integrated over [th, pi/2], doubled (even in theta). The lateral kernel
+  // of a node at X = a sin theta, as lateral_kernel above with the edges' n_m = e_m + sqrt(e_m² + X²),
+  // e_m = (m + ½) ds, taken once: F(0) = ln(n_0² / X²), F(d) = ln(n_d / n_{d−1}).
+  const double th = r < 1.0 ? std::asin(std::sqrt(1.0 - r * r)) : 0.0;
+  const double mid = 0.5 * (th + 0.5 * kPi), half = 0.5 * (0.5 * kPi - th);
+  if (!(half > 0.0)) return;
+  nm.resize(static_cast<std::size_t>(dmax) + 1);
+  for (std::size_t k = 0; k < gx.size(); ++k) {
+    const double theta = mid + half * gx[k];
+    const double t = std::sin(theta);
+    const double f = std::min(std::sqrt(std::max(0.0, 1.0 - t * t)), r);
+    const double X = a * t;
+    const double w = 2.0 * half * gw[k] * (f - r) * a * std::cos(theta);
+    if (w == 0.0) continue;
+    const double X2 = X * X;
+    for (int m = 0; m <= dmax; ++m) {
+      const double e = (m + 0.5) * ds;
+      nm[m] = e + std::sqrt(e * e + X2);
+    }
+    if (wanted(0)) out[0] += w * std::log(nm[0] * nm[0] / X2);
+    for (int d = 1; d <= dmax; ++d)
+      if (wanted(d)) out[d] += w * std::log(nm[d] / nm[d - 1]);
+  }
+}
+
+void capped_source(double a, double rcap, const std::vector<double>& gx, const std::vector<double>& gw,
+                   CappedSource& out) {
+  out.a = a;
+  out.r = rcap;
+  out.th = std::asin(std::sqrt(1.0 - rcap * rcap));
+  out.x_flat = a * std::sin(out.th);
+  out.gx = &gx;
+  out.gw = &gw;
+  // The sub-intervals of influence() that do not depend on the point: the two tails and the flat
+  // top, with the same nodes (mid + half gx) and weights (gw half a cos theta), and f there.
+  const double th = out.th;
+  const double lo[3] = {-0.5 * kPi, th, -th}, hi[3] = {-th, 0.5 * kPi, th};
+  for (int piece = 0; piece < 3; ++piece) {
+    std::vector<double>& x = piece == 2 ? out.x_flat_nodes : out.x;
+    std::vector<double>& f = piece == 2 ? out.f_flat_nodes : out.f;
+    std::vector<double>& w = piece == 2 ? out.w_flat_nodes : out.w;
+    if (piece != 1) { x.clear(); f.clear(); w.clear(); }
+    const double mid = 0.5 * (lo[piece] + hi[piece]), half = 0.5 * (hi[piece] - lo[piece]);
+    if (!(half > 0.0)) continue;
+    for (std::size_t n = 0; n < gx.size(); ++n) {
+      const double theta = mid + half * gx[n];
+      const double t = std::sin(theta);
+      x.push_back(a * t);
+      f.push_back(std::min(std::sqrt(std::max(0.0, 1.0 - t * t)), rcap));
+      w.push_back(half * gw[n] * a * std::cos(theta));
+    }
+  }
+}
+
+double capped_source_influence(const CappedSource& src, double X0, double e1, double e2) {
+  const double a = src.a, r = src.r;
+  const double t0 = X0 / a;  // >= 0
+  const bool inside = t0 < 1.0;
+  const double f0 = inside ? std::min(std::sqrt(std::max(0.0, 1.0 - t0 * t0)), r) : 0.0;
+  double total = 0.0;
+  if (f0 != 0.0) {
+    const double X1 = -a - X0, X2 = a - X0;
+    total += f0 * (P_rect(X2, e2) - P_rect(X1, e2) - P_rect(X2, e1) + P_rect(X1, e1));
+  }
+  // Both tails: prepared, except the right one when the point lies on it (split there).
+  const bool on_tail = inside && f0 < r;
+  const std::size_t ng = src.gx->size();
+  for (std::size_t n = 0; n < src.x.size(); ++n) {
+    if (on_tail && n >= ng) break;  // the right tail: below
+    total += src.w[n] * (src.f[n] - f0) * lateral_kernel(src.x[n] - X0, e1, e2);
+  }
+  // The flat top: f − f0 = 0 when the point is on it.
+  if (f0 != r)
+    for (std::size_t n = 0; n < src.x_flat_nodes.size(); ++n)
+      total += src.w_flat_nodes[n] * (src.f_flat_nodes[n] - f0) * lateral_kernel(src.x_flat_nodes[n] - X0, e1, e2);
+  if (on_tail) {
+    const double split = std::asin(t0);
+    for (const auto& iv : {std::pair<double, double>{src.th, split}, std::pair<double, double>{split, 0.5 * kPi}}) {
+      const double mid = 0.5 * (iv.first + iv.second), half = 0.5 * (iv.second - iv.first);
+      if (!(half > 0.0)) continue;
+      for (std::size_t n = 0; n < ng; ++n) {
+        const double theta = mid + half * (*src.gx)[n];
+        const double t = std::sin(theta);
+        const double f = std::min(std::sqrt(std::max(0.0, 1.0 - t * t)), r);
+        total += half * (*src.gw)[n] * a * std::cos(theta) * (f - f0) * lateral_kernel(a * t - X0, e1, e2);
+      }
+    }
   }
   return total;
 }

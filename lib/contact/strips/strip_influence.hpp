@@ -26,6 +26,36 @@ void gauss_legendre(int n, std::vector<double>* x, std::vector<double>* w);
 double influence(double X0, double a, double e1, double e2, double rcap,
                  const std::vector<double>& gx, const std::vector<double>& gw);
 
+/// The same integral on the strip's centre line (X0 = 0) for a whole column of strips of width ds:
+/// out[d] = influence(0, a, (d − ½) ds, (d + ½) ds, rcap) for d = 0 … dmax (a point d strips away,
+/// either side). The rectangle term and the root of the lateral kernel are taken once per strip
+/// edge, the Gauss nodes (sin, cos, f) once per column, and the flat top (f − f0 = 0 there) is
+/// not integrated: per distance one logarithm per node of one interval, where influence() takes
+/// two intervals, a sine, a cosine and two roots per node. A capped strip's column of the
+/// collocation (docs/method.md §9 item 6) and its displacement at the centres in the end-gap drops.
+/// `need` (size dmax + 1): only the distances d with need[d] are computed, the others left 0.
+void influence_centre_line(double a, double ds, double rcap, int dmax, const std::vector<double>& gx,
+                           const std::vector<double>& gw, std::vector<double>& out,
+                           const std::vector<char>* need = nullptr);
+
+/// A capped strip (flat top at rcap < 1) as a source seen from many points of its own centre line's
+/// direction (the ends of other strips, X0 >= 0): influence()'s sub-intervals that do not depend on
+/// the point (the two tails |t| > sqrt(1 − rcap²) and the flat top), their nodes, f and weights,
+/// prepared once per strip. At a point inside the flat top (|X0| < x_flat) f − f0 vanishes on it
+/// and only the tails are summed; at a point on a tail that tail is split there as influence()
+/// does; beyond the strip's end every piece is prepared.
+struct CappedSource {
+  double a = 0, r = 1, th = 0, x_flat = 0;  ///< half-length, flat top, asin sqrt(1 − r²), a sqrt(1 − r²)
+  const std::vector<double>* gx = nullptr;  ///< the Gauss nodes and weights per sub-interval
+  const std::vector<double>* gw = nullptr;
+  std::vector<double> x, f, w;              ///< the tails' nodes (left, then right): x = a sin theta, f, gw half a cos theta
+  std::vector<double> x_flat_nodes, f_flat_nodes, w_flat_nodes;  ///< the same on the flat top
+};
+void capped_source(double a, double rcap, const std::vector<double>& gx, const std::vector<double>& gw,
+                   CappedSource& out);
+/// influence(X0, a, e1, e2, rcap) of a prepared source, X0 >= 0.
+double capped_source_influence(const CappedSource& src, double X0, double e1, double e2);
+
 /// Integral over one strip of f(t)/r, f(t) = min(sqrt(1 - t^2), r_cap),
 /// t = (xi - c_j)/a_j, for a point at x-offset X0 = x_i - c_j and lateral
 /// offsets eta1 < eta2 of the strip edges from the point (eta = s_j +- ds/2 - s_i).

@@ -204,16 +204,8 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
     r.patches.push_back(std::move(pr));
     checks.push_back(k.check_input(opt.strips));
   }
-  int index = 0;
-  for (auto& pr : r.patches) pr.patch = ++index;
-  r.n_contacts = static_cast<int>(r.patches.size());
   r.iterations = evaluations;
-  r.residual = (r.Fz - Q) / Q;
-  if (r.status == CaseStatus::Ok && std::fabs(r.residual) > 1e-5) {
-    r.status = CaseStatus::NotConverged;
-    r.message = "force balance residual " + format_number(r.residual);
-  }
-  check_grid_result(checks, Q, r);
+  close_grid_case(checks, Q, kForceBalanceRtol, r);
   return r;
 }
 
