@@ -34,7 +34,8 @@ def run(name):
     if os.path.exists(name + ".inp.done") and open(name + ".inp.done").read() == deck:
         return
     env = dict(os.environ, OMP_NUM_THREADS="1")
-    p = subprocess.run(["nice", "-n", "10", "ccx", "-i", name], env=env, capture_output=True, text=True)
+    p = subprocess.run(["nice", "-n", "10", "ccx", "-i", os.path.abspath(name)], env=env, capture_output=True, text=True,
+                       cwd=os.path.dirname(os.path.abspath(name)))   # ccx writes spooles.out etc. into its cwd
     if "Job finished" not in p.stdout:
         sys.stderr.write(p.stdout[-3000:])
         raise RuntimeError("ccx failed on " + name)

@@ -293,8 +293,10 @@ def cmd_plastic(args):
     A, B = pair_curvatures(args.Rw, args.Rr)
     sy = args.sy
     # block correction: elastic run on the mesh of the largest load (self-similar meshes: c_hat holds for all)
-    etag = f"/tmp/fe_runs/e3el_{args.n}_{max(args.ratios) * sy:g}_{int(args.Rw)}x{int(args.Rr)}"
-    einfo = elastic_deck(A, B, max(args.ratios) * sy, args.n, etag)
+    # the block correction from the elastic run of `elastic --p0` on the same n: the meshes are
+    # scaled copies, so c_hat = c E' L holds for every row
+    etag = f"/tmp/fe_runs/e3el_{args.n}_{args.p0:g}_{int(args.Rw)}x{int(args.Rr)}"
+    einfo = elastic_deck(A, B, args.p0, args.n, etag)
     run(etag)
     el = rows_of(etag, einfo, None)
     c_hat = block_fit(el, einfo)
@@ -327,8 +329,8 @@ def cmd_plastic(args):
            f"# model: {model_line(A, B)}",
            f"# mesh: one run per row, scaled to the elastic Hertz patch of the row's prescribed load: n = {args.n} elements per semi-axis,"
            f" uniform zone {FINE:g} a x {FINE:g} b x {FINE:g} b, growth {GROWTH:g}, block {L_OVER_A:g} a (validated elastic: ellip3d_hertz.csv)",
-           f"# approach corrected for the finite block: delta = u_centre + c N, c = c_hat/(E' L), c_hat = {c_hat:.5g} fitted on an elastic"
-           f" run of the same mesh at peak {max(args.ratios) * sy:g} MPa (and 0.8 of it)",
+           f"# approach corrected for the finite block: delta = u_centre + c N, c = c_hat/(E' L), c_hat = {c_hat:.5g} fitted on the elastic"
+           f" run of the same n at peak {args.p0:g} MPa and 0.8 of it (ellip3d_hertz.csv; the meshes are scaled copies)",
            "# elastic run, FE/Hertz - 1 at the two loads (a, b, p_centre, delta after correction): "
            + "; ".join(", ".join(f"{v:+.4f}" for v in e) for e in Ee),
            "# columns (the PAIR): sigma_y [MPa]; p0el_over_sy = elastic Hertz peak at the FE load / sigma_y; N [N]; a, b [mm] semi-axes"
@@ -349,7 +351,7 @@ def main():
     ap.add_argument("--sy", type=float, default=350.0)
     ap.add_argument("--ratios", type=float, nargs="+", default=[1, 1.5, 2, 2.5, 3, 3.5, 4])
     ap.add_argument("--n", type=int, nargs="+", default=None, help="elements per semi-axis (elastic: several levels)")
-    ap.add_argument("--p0", type=float, default=1400.0, help="elastic: Hertz peak of the mesh's patch [MPa]")
+    ap.add_argument("--p0", type=float, default=1400.0, help="Hertz peak of the elastic runs' patch [MPa]")
     ap.add_argument("--Rw", type=float, default=460.0)
     ap.add_argument("--Rr", type=float, default=300.0)
     ap.add_argument("--out", default=None)
