@@ -1,0 +1,95 @@
+// The ellipse law against the project's own 3-D finite-element reference (scripts/fe/ellip3d.py,
+// tables in tests/data/fe/, their provenance in their '#' lines; scripts/fe/README.md says what
+// was validated and to what accuracy). Crossed cylinders R 460 x 300 mm, E = 210 GPa, nu = 0.3.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "contact/ellipse/ellipse_law.hpp"
+#include "contact/options.hpp"
+#include "output/csv_table.hpp"
+
+using namespace mh;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+// A table of tests/data/fe: '#' provenance lines, then a CSV with a header.
+CsvTable read_fe_table(const std::string& name) {
+  const std::string path = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/fe/" + name;
+  std::ifstream in(path);
+  REQUIRE(in.good());
+  std::string line, text;
+  while (std::getline(in, line))
+    if (line.empty() || line[0] != '#') text += line + "\n";
+  return parse_csv(text, path);
+}
+
+double num(const CsvTable& t, std::size_t row, const char* col) {
+  REQUIRE(t.has_column(col));
+  return std::stod(t.rows[row][static_cast<std::size_t>(t.column(col))]);
+}
+
+Material steel() {
+  Material m;
+  m.E = 210e9;
+  m.nu = 0.3;
+  return m;
+}
+
+// The pair's curvature sums [1/m] of the crossed cylinders R 460 x 300 mm (method.md §2, eq. 1).
+constexpr double kA = 1.0 / (2 * 0.460), kB = 1.0 / (2 * 0.300);
+}  // namespace
+
+TEST_CASE("elastic ellipse against the 3-D FE model (validation of the FE, ellip3d_hertz.csv)", "[plastic][fe]") {
+  // The FE model on its finest mesh (n = 8 elements per semi-axis) against the library's Hertz
+  // ellipse at the FE load (scripts/fe/README.md): semi-axes within 2.5 % (the FE patch ends
+  // between two surface nodes; measured +0.7 … +2.3 %), centre pressure within 0.5 % (measured
+  // −0.24 … +0.03 %).
+  const CsvTable t = read_fe_table("ellip3d_hertz.csv");
+  REQUIRE(t.rows.size() >= 4);
+  // (the library's p0 at the FE load is Hertz's 3N/(2π a b); kA, kB are the pair's sums)
+  const EllipseLaw L = make_ellipse_law(kA, kB, steel(), true);
+  double n_max = 0;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) n_max = std::max(n_max, num(t, i, "n"));
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    if (num(t, i, "n") != n_max) continue;
+    const EllipseState s = ellipse_state_for_force(L, num(t, i, "N_N"));
+    CAPTURE(i, num(t, i, "N_N"));
+    CHECK(std::fabs(num(t, i, "a_fe_mm") / (s.a * 1e3) - 1) <= 0.025);
+    CHECK(std::fabs(num(t, i, "b_fe_mm") / (s.b * 1e3) - 1) <= 0.025);
+    CHECK(std::fabs(num(t, i, "p_centre_fe_MPa") / (s.p0 * 1e-6) - 1) <= 0.005);
+  }
+}
+
+TEST_CASE("plastic ellipse law against the 3-D FE table: the deviations method.md §5.1 states", "[plastic][fe]") {
+  // Elastic–perfectly-plastic crossed cylinders (ellip3d_R460x300_sy350.csv, and two rows at
+  // sigma_y = 500 MPa in ellip3d_R460x300_sy500.csv; in the dimensionless
+  // form area/area_el, δ/δ_el against p0_el/σ_y the rows hold for every σ_y: the model is
+  // self-similar, scripts/fe/README.md). The shipped law with p_lim = 2.1 σ_y (p_lim_from_yield)
+  // at the FE load, against the FE area π a b and the FE approach (block-corrected). This pins
+  // the law's deviation to what method.md §5.1 states (a law revision must move these bands with
+  // the docs): area 2 … 9 % smaller than the FE's, approach within 2 % (measured −8.8 … −1.9 % and
+  // −1.9 … +0.1 %); bands with 0.5 % of room.
+  for (const char* name : {"ellip3d_R460x300_sy350.csv", "ellip3d_R460x300_sy500.csv"}) {
+    const CsvTable t = read_fe_table(name);
+    REQUIRE(t.rows.size() >= 2);
+    for (std::size_t i = 0; i < t.rows.size(); ++i) {
+      Material mat = steel();
+      mat.yield = num(t, i, "sigma_y_MPa") * 1e6;
+      mat.p_lim = p_lim_from_yield(mat.yield);
+      const EllipseLaw L = make_ellipse_law(kA, kB, mat, true);
+      const EllipseState s = ellipse_state_for_force(L, num(t, i, "N_N"));
+      const double area = kPi * s.a * s.b * 1e6, area_fe = num(t, i, "area_mm2");
+      const double approach = s.approach * 1e3, approach_fe = num(t, i, "delta_mm");
+      CAPTURE(name, i, num(t, i, "p0el_over_sy"), area / area_fe - 1, approach / approach_fe - 1);
+      CHECK(area / area_fe - 1 >= -0.095);
+      CHECK(area / area_fe - 1 <= -0.015);
+      CHECK(approach / approach_fe - 1 >= -0.025);
+      CHECK(approach / approach_fe - 1 <= 0.005);
+    }
+  }
+}
