@@ -66,6 +66,7 @@ void drops(const Solver& S, const std::vector<int>& field, const std::vector<dou
   if (nf == 0) return;
   std::vector<StripDropR> R;
   std::vector<double> centre;
+  std::vector<char> need;
   CappedSource cs;
   std::vector<int> kk(nf);
   std::vector<double> t(nf);
@@ -80,7 +81,11 @@ void drops(const Solver& S, const std::vector<int>& field, const std::vector<dou
       // A capped source (no table for its flat top): the centres by distance, one column, the
       // ends by quadrature on its prepared nodes (strip_influence.hpp).
       const int dmax = std::max(std::abs(sj.j - field.front()), std::abs(sj.j - field.back()));
-      influence_centre_line(sj.a, geo.ds, sj.rcap, dmax, S.gx, S.gw, centre);
+      // Only the field strips' distances: capped strips are no field points, and the field of a
+      // mostly capped patch is a few tail strips either side.
+      need.assign(static_cast<std::size_t>(dmax) + 1, 0);
+      for (int k = 0; k < nf; ++k) need[static_cast<std::size_t>(std::abs(sj.j - field[k]))] = 1;
+      influence_centre_line(sj.a, geo.ds, sj.rcap, dmax, S.gx, S.gw, centre, &need);
       capped_source(sj.a, sj.rcap, S.gx, S.gw, cs);
       for (int k = 0; k < nf; ++k) {
         const double e1 = geo.s[sj.j] - 0.5 * geo.ds - geo.s[field[k]];

@@ -155,6 +155,12 @@ void influence_centre_line(double a, double ds, double rcap, int dmax, const std
   const double mid = 0.5 * (th + 0.5 * kPi), half = 0.5 * (0.5 * kPi - th);
   if (!(half > 0.0)) return;
   nm.resize(static_cast<std::size_t>(dmax) + 1);
+  // The edges a wanted distance uses (d: m = d and d − 1): a sparse `need` (the elastic rows of a
+  // mostly capped patch) takes few of the dmax roots per node.
+  thread_local std::vector<int> edges;
+  edges.clear();
+  for (int m = 0; m <= dmax; ++m)
+    if (wanted(m) || (m < dmax && wanted(m + 1))) edges.push_back(m);
   for (std::size_t k = 0; k < gx.size(); ++k) {
     const double theta = mid + half * gx[k];
     const double t = std::sin(theta);
@@ -163,7 +169,7 @@ void influence_centre_line(double a, double ds, double rcap, int dmax, const std
     const double w = 2.0 * half * gw[k] * (f - r) * a * std::cos(theta);
     if (w == 0.0) continue;
     const double X2 = X * X;
-    for (int m = 0; m <= dmax; ++m) {
+    for (const int m : edges) {
       const double e = (m + 0.5) * ds;
       nm[m] = e + std::sqrt(e * e + X2);
     }

@@ -33,7 +33,9 @@ double influence(double X0, double a, double e1, double e2, double rcap,
 /// not integrated: per distance one logarithm per node of one interval, where influence() takes
 /// two intervals, a sine, a cosine and two roots per node. A capped strip's column of the
 /// collocation (docs/method.md §9 item 6) and its displacement at the centres in the end-gap drops.
-/// `need` (size dmax + 1): only the distances d with need[d] are computed, the others left 0.
+/// `need` (size dmax + 1): only the distances d with need[d] are computed, the others left 0, and
+/// only their edges' roots are taken (the collocation passes its elastic rows, the drops their
+/// field strips: few of dmax on a mostly capped patch).
 void influence_centre_line(double a, double ds, double rcap, int dmax, const std::vector<double>& gx,
                            const std::vector<double>& gw, std::vector<double>& out,
                            const std::vector<char>* need = nullptr);
