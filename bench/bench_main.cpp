@@ -41,14 +41,19 @@ int main(int argc, char** argv) {
               G.tY.size(), G.strip_y.size(), median(tg) * 1e3, reps);
 
   // 2. One case solved from the table, elastic and plastic: t_Y over −6 … 10 mm, Q 10 … 150 kN.
-  Material el = cf.material, pl = cf.material;
+  //    Plastic: the capped law (p_lim 900 MPa) and the yield law (σ_y = 900/2.1 MPa: the same
+  //    grid cap, first yield at 1.6 σ_y = 686 MPa; method.md §5.1).
+  Material el = cf.material, pl = cf.material, yl = cf.material;
   pl.p_lim = 900e6;
+  yl.yield = 900e6 / kPlimPerYield;
+  yl.p_lim = p_lim_from_yield(yl.yield);
+  yl.yield_law = true;
   const int n = 200000;
-  std::vector<double> te, tp;
+  std::vector<double> te, tp, ty;
   double sink = 0;
   for (int r = 0; r < reps; ++r) {
-    for (int model = 0; model < 2; ++model) {
-      const Material& m = model ? pl : el;
+    for (int model = 0; model < 3; ++model) {
+      const Material& m = model == 2 ? yl : model ? pl : el;
       const auto t0 = clk::now();
       for (int i = 0; i < n; ++i) {
         const double tY = (-6.0 + 16.0 * (i % 1000) / 999.0) * 1e-3;
@@ -57,11 +62,12 @@ int main(int argc, char** argv) {
         sink += res.dz;
       }
       const double ns = std::chrono::duration<double, std::nano>(clk::now() - t0).count() / n;
-      (model ? tp : te).push_back(ns);
+      (model == 2 ? ty : model ? tp : te).push_back(ns);
     }
   }
   std::printf("one case from the table (%d cases per run): elastic median %.0f ns, plastic median %.0f ns, "
-              "plastic/elastic %.2f\n", n, median(te), median(tp), median(tp) / median(te));
+              "plastic/elastic %.2f; yield law median %.0f ns, yield/elastic %.2f\n", n, median(te), median(tp),
+              median(tp) / median(te), median(ty), median(ty) / median(te));
   if (sink == 42) std::printf(" ");
   return 0;
 }

@@ -111,6 +111,8 @@ void run_hertz(const HertzCliOptions& o, CliContext& ctx) {
   mat.p_lim = !std::isnan(o.p_lim_MPa) ? o.p_lim_MPa * units::MPa
               : by_yield               ? p_lim_from_yield(mat.yield)
                                        : INFINITY;
+  // --yield alone: the yield law (method.md §5.1); --p-lim: the law capped at the user's p_lim.
+  mat.yield_law = by_yield && std::isnan(o.p_lim_MPa);
 
   EllipseLaw law;
   try {
@@ -152,7 +154,12 @@ void run_hertz(const HertzCliOptions& o, CliContext& ctx) {
     for (const Item& it : elastic_items) j[it.key] = it.value;
     if (by_yield) {
       j["yield_MPa"] = o.yield_MPa;
-      j["p_lim_MPa"] = mat.p_lim / units::MPa;
+      if (mat.yield_law) {
+        j["p_y_MPa"] = law.p_lim / units::MPa;
+        j["beta"] = law.beta;
+      } else {
+        j["p_lim_MPa"] = mat.p_lim / units::MPa;
+      }
     }
     if (plastic) {
       j["plastic"] = s.plastic;
@@ -166,7 +173,12 @@ void run_hertz(const HertzCliOptions& o, CliContext& ctx) {
     for (const Item& it : elastic_items) line(it.name, it.value, it.unit);
     if (by_yield) {
       line("yield", o.yield_MPa, "MPa");
-      line("p_lim", mat.p_lim / units::MPa, "MPa");
+      if (mat.yield_law) {
+        line("p_y", law.p_lim / units::MPa, "MPa");
+        line("beta", law.beta, "-");
+      } else {
+        line("p_lim", mat.p_lim / units::MPa, "MPa");
+      }
     }
     if (plastic) {
       ctx.out << "plastic = " << (s.plastic ? "true" : "false") << " -\n";

@@ -46,6 +46,9 @@ bool Material::valid(std::string* why) const {
   if (!(p_lim > 0))
     return fail("Material.p_lim = " + format_number(p_lim) +
                 " Pa: the limit pressure must be > 0 (INFINITY for an elastic contact)");
+  if (yield_law && std::isnan(yield_min()))
+    return fail("Material.yield_law = true without a yield stress: set Material.yield (the yield law's first "
+                "yield is 1.6 sigma_y) or clear yield_law for the law capped at p_lim");
   return true;
 }
 

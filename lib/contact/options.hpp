@@ -23,6 +23,12 @@ struct Material {
   /// it when p_lim_MPa is not given (docs/method.md §5). Also the basis of k = σ_y/√3 (RCF indicators).
   double yield = NAN;
   double yield_rail = NAN;   ///< [Pa] the rail's yield stress when it differs (NaN: same as yield)
+  /// The plastic ellipse law of the multi-Hertzian method (method.md §5.1): false = the Hertz
+  /// pressure capped at p_lim (Thornton's law for a sphere; the law of a user's own p_lim_MPa);
+  /// true = the yield law, Hertz up to first yield p_y = kFirstYieldPerYield σ_y (softer body),
+  /// slope kYieldLawSlope above it. Set when p_lim is derived from the yield stress; needs a
+  /// yield stress and a finite p_lim (which the grid methods keep as their cap).
+  bool yield_law = false;
   double yield_r() const { return std::isnan(yield_rail) ? yield : yield_rail; }
   /// [Pa] the yield stress of the softer body (NaN when none is given): the one that yields first
   /// in a frictionless contact of bodies of equal elasticity.
@@ -48,16 +54,21 @@ struct Material {
   bool valid(std::string* why = nullptr) const;
 };
 
-/// [-] p_lim / σ_y of the plastic law when only the yield stress is given (docs/method.md §5.1).
-/// Basis: an elastic–perfectly-plastic FE measurement reported to the project (crossed cylinders
-/// R 460 × 300 mm, E = 210 GPa, ν = 0.3, σ_y 350 and 500 MPa, p0_el/σ_y 1 … 4): with this law
-/// p_lim ≈ 2.1 σ_y matches the FE contact area within −3 … +9 % (the approach is then up to 24 %
-/// off; 2.7 σ_y would match the approach within ±4 % but give areas 15 % low). The area, and with
-/// it the peak and mean pressure, is what stresses and RCF indicators need, hence 2.1. Valid for
-/// non-conformal steel contacts with p0_el/σ_y ≤ 4 and E/σ_y ≈ 400–600; outside, give p_lim_MPa.
+/// [-] p_lim / σ_y when only the yield stress is given: the cap of the grid methods (half-space,
+/// strips) (docs/method.md §5.1). Basis: the project's elastic–perfectly-plastic FE of crossed
+/// cylinders R 460 × 300 mm (tests/data/fe): the capped ellipse law with 2.1 σ_y gives areas
+/// 2 … 9 % smaller than the FE and approaches within 2 % (p0_el/σ_y 1.5 … 3.9). The multi-Hertzian
+/// ellipse uses the yield law instead (Material::yield_law).
 inline constexpr double kPlimPerYield = 2.1;
 /// [Pa] p_lim derived from a yield stress σ_y [Pa] (kPlimPerYield σ_y).
 inline double p_lim_from_yield(double sigma_y) { return kPlimPerYield * sigma_y; }
+/// [-] p_y / σ_y of the yield law: the Hertz peak at first yield below the surface (Johnson,
+/// Contact Mechanics (1985) §6.2: p0 ≈ 1.6 σ_y for a circular contact, ν = 0.3; not fitted).
+inline constexpr double kFirstYieldPerYield = 1.6;
+/// [-] slope β of the yield law above first yield, p = p_y + β (p_H − p_y) (docs/method.md §5.1):
+/// the one calibration, against the FE table tests/data/fe/ellip3d_R460x300_sy{350,500}.csv
+/// (area and approach within 5 % for p0_el/σ_y ≤ 3.9, both yield stresses).
+inline constexpr double kYieldLawSlope = 0.3;
 
 /// The solution method of a case (case file "method"). Auto chooses per case (docs/method.md).
 enum class Method { MultiHertzian, HalfSpace, Strips, Auto };

@@ -263,11 +263,14 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
       cf.material.p_lim = p * units::MPa;
     }
   }
-  // p_lim: p_lim_MPa when given (it takes precedence: the user's own limit pressure), otherwise
-  // derived from the softer body's yield stress by the calibration p_lim = kPlimPerYield σ_y
-  // (docs/method.md §5.1). The yield stress stays in Material for the indicators that need it.
-  if (cf.model == Model::Plastic && !std::isfinite(cf.material.p_lim) && !std::isnan(cf.material.yield_min()))
+  // p_lim_MPa when given (it takes precedence: the user's own limit pressure, the capped law).
+  // Otherwise the yield law from the softer body's yield stress: the ellipse leaves Hertz at first
+  // yield 1.6 σ_y, the grid methods cap at p_lim = kPlimPerYield σ_y (docs/method.md §5.1). The
+  // yield stress stays in Material for the indicators that need it.
+  if (cf.model == Model::Plastic && !std::isfinite(cf.material.p_lim) && !std::isnan(cf.material.yield_min())) {
     cf.material.p_lim = p_lim_from_yield(cf.material.yield_min());
+    cf.material.yield_law = true;
+  }
   if (cf.model == Model::Plastic && !std::isfinite(cf.material.p_lim))
     c.fail("/material/p_lim_MPa", nullptr, "required for the plastic model: give the steel's yield stress "
            "\"yield_MPa\" (p_lim is derived from it) or your own \"p_lim_MPa\"");
@@ -398,7 +401,8 @@ nlohmann::json CaseFile::resolved_json() const {
   if (!std::isnan(material.E_rail))
     mat = {{"wheel", {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}}},
            {"rail", {{"E_GPa", material.E_rail / units::GPa}, {"nu", material.nu_rail}}}};
-  if (model == Model::Plastic) mat["p_lim_MPa"] = material.p_lim / units::MPa;
+  // The yield law is re-read from yield_MPa alone (a p_lim_MPa would select the capped law).
+  if (model == Model::Plastic && !material.yield_law) mat["p_lim_MPa"] = material.p_lim / units::MPa;
   if (!std::isnan(material.yield) && std::isnan(material.yield_rail)) {
     mat["yield_MPa"] = material.yield / units::MPa;
   } else if (!std::isnan(material.yield_rail)) {  // per body (the reader requires both)

@@ -460,7 +460,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
           if (want_json) B.json.push_back(std::move(f.json));
           if (np && opt.pressure_cases.contains(c0 + i)) {
             if (grid_method) format_patch_pressure(c0 + i, r, f.pressure);
-            else format_pressure(c0 + i, r, cf.material, plastic, np, f.pressure);
+            else format_pressure(c0 + i, r, plastic, np, f.pressure);
             append_prefixed(B.pressure, out.prefix, f.pressure);
           }
           if (out.strips) {

@@ -103,10 +103,11 @@ void patch_axes(const PatchResult& P, double* a, double* b) {
 }  // namespace
 
 
-// Pressure of each loaded ellipse on an N × N grid over its patch (method.md §5): the capped
-// Hertz pressure min(p0 √(1 − x²/a² − y²/b²), p_lim) and, in plastic mode, the elastic Hertz
+// Pressure of each loaded ellipse on an N × N grid over its patch (method.md §5, §5.1): the
+// ellipse law's pressure of the Hertz pressure p0 √(1 − x²/a² − y²/b²) (capped at p_lim, or
+// flattened above first yield by the yield law) and, in plastic mode, the elastic Hertz
 // pressure at the same load on the elastic patch (a_el, b_el).
-void format_pressure(std::uint64_t idx, const CaseResult& r, const Material& mat, bool plastic, int N,
+void format_pressure(std::uint64_t idx, const CaseResult& r, bool plastic, int N,
                      std::string& s) {
   s.clear();
   for (const LoadedEllipse& L : r.loaded) {
@@ -118,7 +119,7 @@ void format_pressure(std::uint64_t idx, const CaseResult& r, const Material& mat
         const double y = -b + 2 * b * j / (N - 1);
         const double q = 1 - (x * x) / (a * a) - (y * y) / (b * b);
         double p = q > 0 ? L.s.p0 * std::sqrt(q) : 0.0;
-        if (plastic) p = std::min(p, mat.p_lim);
+        if (plastic) p = L.s.pressure_at(p);  // the ellipse law's pressure (method.md §5, §5.1)
         append_number(s, static_cast<long long>(idx));
         s += ','; append_number(s, static_cast<long long>(L.ellipse));
         s += ','; num(s, x * units::per_mm);

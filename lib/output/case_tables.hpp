@@ -29,7 +29,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
 
 /// The pressure of each loaded ellipse of `r` on an N × N grid over its patch (method.md §5),
 /// into `s` (pressure.csv rows).
-void format_pressure(std::uint64_t idx, const CaseResult& r, const Material& mat, bool plastic, int N,
+void format_pressure(std::uint64_t idx, const CaseResult& r, bool plastic, int N,
                      std::string& s);
 
 /// patches.csv rows of a grid method's case (one row per contact patch), into `s`.

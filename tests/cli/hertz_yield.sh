@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# `mhcontact hertz --yield`: the yield stress as input. p_lim = 2.1 sigma_y
-# (method.md §5.1); --p-lim takes precedence; errors name the option. Worked example of
-# method.md §5 (R_wyy 460, R_rxx 300, N 100 kN, E 210 GPa, nu 0.3) with sigma_y = 380 MPa:
-# p_lim = 798 MPa, the same law as --p-lim 798.
+# `mhcontact hertz --yield`: the yield stress as input selects the yield law (method.md §5.1:
+# Hertz up to p_y = 1.6 sigma_y, slope beta = 0.3 above); --p-lim takes precedence (the capped
+# law); errors name the option. Worked example of method.md §5 (R_wyy 460, R_rxx 300, N 100 kN,
+# E 210 GPa, nu 0.3) with sigma_y = 380 MPa: p_y = 608 MPa, h_y that of --p-lim 608 (the Hertz
+# peak reaches p_y there), and p_max = p_y + 0.3 (p0 - p_y) of the patch.
 # Usage: bash hertz_yield.sh <mhcontact-binary> <source-dir>
 set -euo pipefail
 bin="$1"
@@ -11,16 +12,19 @@ py=/usr/bin/python3
 args=(hertz --R-wyy 460 --R-rxx 300 --N 100 --E 210 --nu 0.3)
 
 y="$("$bin" "${args[@]}" --yield 380 --json)"
-p="$("$bin" "${args[@]}" --p-lim 798 --json)"
+p="$("$bin" "${args[@]}" --p-lim 608 --json)"
 both="$("$bin" "${args[@]}" --yield 380 --p-lim 900 --json)"
 "$py" - "$y" "$p" "$both" <<'PY'
 import json, sys
 y, p, both = (json.loads(a) for a in sys.argv[1:4])
 bad = []
-if abs(y["p_lim_MPa"] - 798) > 1e-9: bad.append(f"p_lim_MPa = {y['p_lim_MPa']}, expected 2.1 x 380 = 798")
+if abs(y["p_y_MPa"] - 608) > 1e-9: bad.append(f"p_y_MPa = {y['p_y_MPa']}, expected 1.6 x 380 = 608")
+if y["beta"] != 0.3: bad.append(f"beta = {y['beta']}, expected 0.3")
+if "p_lim_MPa" in y: bad.append("--yield alone reports a p_lim_MPa the ellipse does not use")
 if y["yield_MPa"] != 380: bad.append("yield_MPa not echoed")
-for k in ("a_mm", "b_mm", "p_max_MPa", "area_ratio", "approach_mm", "h_y_mm"):
-    if abs(y[k] - p[k]) > 1e-12 * max(1, abs(p[k])): bad.append(f"{k}: --yield 380 gives {y[k]}, --p-lim 798 gives {p[k]}")
+if abs(y["h_y_mm"] - p["h_y_mm"]) > 1e-12 * p["h_y_mm"]: bad.append(f"h_y: --yield 380 gives {y['h_y_mm']}, --p-lim 608 gives {p['h_y_mm']}")
+if abs(y["p_max_MPa"] - (608 + 0.3 * (y["p0_MPa"] - 608))) > 1e-6: bad.append(f"p_max_MPa = {y['p_max_MPa']}, not p_y + 0.3 (p0 - p_y)")
+if not (y["area_ratio"] > 1 and y["plastic"]): bad.append("sigma_y 380 at 100 kN (p0_el/sigma_y = 3.3) should be plastic")
 if abs(both["p_lim_MPa"] - 900) > 1e-9 or abs(both["p_max_MPa"] - 900) > 1e-6:
     bad.append(f"--p-lim should take precedence: p_lim {both['p_lim_MPa']}, p_max {both['p_max_MPa']}")
 if bad:
@@ -28,7 +32,7 @@ if bad:
 PY
 txt="$("$bin" "${args[@]}" --yield 380)"
 printf '%s\n' "$txt" | grep -q '^yield = 380 MPa$' || { echo "no 'yield = 380 MPa' line"; exit 1; }
-printf '%s\n' "$txt" | grep -Eq '^p_lim = 798(\.0*[0-9]?)? MPa$' || { echo "no 'p_lim = 798 MPa' line"; exit 1; }
+printf '%s\n' "$txt" | grep -Eq '^p_y = 608(\.0*[0-9]?)? MPa$' || { echo "no 'p_y = 608 MPa' line"; exit 1; }
 set +e
 err="$("$bin" "${args[@]}" --yield 0.4 2>&1)"; rc=$?
 set -e

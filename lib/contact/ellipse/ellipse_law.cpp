@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "core/numfmt.hpp"
+#include "core/roots.hpp"
 #include "core/units.hpp"
 
 namespace mh {
@@ -29,8 +31,12 @@ EllipseLaw make_ellipse_law(double A, double B, const Material& mat, bool exact)
   L.E_star = mat.E_star();
   const double n3 = L.c.n * L.c.n * L.c.n;
   L.k_e = (2.0 / 3.0) * (1.0 + lambda) / n3 * L.E_star / std::sqrt(B);  // (eq. 8)
-  L.p_lim = mat.p_lim;
-  const PlasticBranch p = plastic_branch(L.c.m, L.c.n, B, L.k_e, mat.p_lim);  // method.md §5
+  // The yield law (method.md §5.1) leaves Hertz at first yield p_y = 1.6 σ_y with slope β; the
+  // capped law (method.md §5) at p_lim. An elastic material (p_lim = INFINITY) stays elastic.
+  const bool yield_law = mat.yield_law && std::isfinite(mat.p_lim);
+  L.p_lim = yield_law ? kFirstYieldPerYield * mat.yield_min() : mat.p_lim;
+  L.beta = yield_law ? kYieldLawSlope : 0.0;
+  const PlasticBranch p = plastic_branch(L.c.m, L.c.n, B, L.k_e, L.p_lim);  // method.md §5
   L.h_y = p.h_y;
   L.k_p = p.k_p;
   L.N_y = p.N_y;
@@ -56,7 +62,9 @@ EllipseState ellipse_state(const EllipseLaw& L, double h0) {
   const double C = s.b / L.c.n;                       // b = n C (eq. 3)
   s.approach = L.c.rho * C * C * (L.A + L.B);         // δ = ρ C² (A+B) (method.md §2)
   s.plastic = h0 > L.h_y;
-  s.p_max = std::min(s.p0, L.p_lim);
+  s.p_knee = L.p_lim;
+  s.beta = L.beta;
+  s.p_max = s.pressure_at(s.p0);
   if (s.plastic) {
     const double q = plateau_fraction(s.p0, L.p_lim);  // √(1 − s²) (method.md §5)
     s.plateau_a = s.a * q;
@@ -68,6 +76,8 @@ EllipseState ellipse_state(const EllipseLaw& L, double h0) {
     s.a_el = (L.c.m / L.c.n) * s.b_el;
     s.area_ratio = (s.a * s.b) / (s.a_el * s.b_el);
     // Approach and shape held by the overlap (method.md §5, "approach and overlap").
+    s.dN_dh0 = L.beta == 0 ? s.N / (h0 - L.h_y / 3.0) : 0;  // capped: N = k_p (h0 − h_y/3)
+    if (L.beta != 0) L.force(h0, &s.dN_dh0);
     const PlasticPatch h = plastic_patch_in_overlap(s.a, s.b, L.A, L.B, s.approach, s.N / N_hertz);
     s.approach = h.approach;
     s.plateau_a *= h.a / s.a;
@@ -78,9 +88,28 @@ EllipseState ellipse_state(const EllipseLaw& L, double h0) {
     s.a_el = s.a;
     s.b_el = s.b;
     s.area_ratio = 1.0;
+    s.dN_dh0 = 1.5 * s.N / h0;  // eq. 8: N = k_e h0^(3/2)
   }
   s.p0_el = 1.5 * s.N / (pi * s.a_el * s.b_el);
   return s;
+}
+
+double EllipseLaw::h0_for_force_yield_law(double N) const {
+  // g(u) = β k_e u³ + (1 − β) k_p (u² − h_y/3) − N, u = √h0 ≥ √h_y (method.md §5.1). Each term
+  // alone bounds u from above: u ≤ (N/(β k_e))^(1/3) and u ≤ √(N/((1 − β) k_p) + h_y/3); Newton
+  // from the smaller bound descends monotonically (g increasing and convex).
+  const double u_lo = std::sqrt(h_y);
+  const double u_hi = std::min(std::cbrt(N / (beta * k_e)), std::sqrt(N / ((1.0 - beta) * k_p) + h_y / 3.0));
+  auto g = [&](double u) {
+    const double u2 = u * u;
+    return std::pair<double, double>(beta * k_e * u2 * u + (1.0 - beta) * k_p * (u2 - h_y / 3.0) - N,
+                                     3.0 * beta * k_e * u2 + 2.0 * (1.0 - beta) * k_p * u);
+  };
+  RootTolerance tol;
+  tol.rel = 1e-15;
+  tol.f_abs = 1e-14 * N;
+  const RootResult r = newton_root(g, u_hi, u_lo, std::max(u_hi, u_lo), tol);
+  return r.x * r.x;
 }
 
 EllipseState ellipse_state_for_force(const EllipseLaw& law, double N) {

@@ -4,6 +4,7 @@
 //
 // Convention: h0 is the virtual interpenetration of eq. 6 (h0 = b² B), NOT the true Hertz approach
 // δ = ρ C² (A+B) (for a circular contact h0 = δ/2). Both are reported, under different names.
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -18,14 +19,20 @@ struct EllipseLaw {
   HertzCoefficients c;        ///< m, n, ρ of λ = A/B
   double E_star = 0;          ///< [Pa] E/(1−ν²)
   double k_e = 0;             ///< [N/m^1.5] elastic stiffness (eq. 8)
-  double p_lim = INFINITY;    ///< [Pa] limit pressure; INFINITY = elastic
+  /// [Pa] the pressure where the law leaves Hertz: p_lim (capped law) or p_y = 1.6 σ_y (yield law,
+  /// method.md §5.1); INFINITY = elastic
+  double p_lim = INFINITY;
+  /// [-] slope β of the pressure above p_lim: 0 = capped (method.md §5), kYieldLawSlope = yield law
+  /// p = p_lim + β (p_H − p_lim) (method.md §5.1)
+  double beta = 0;
   double h_y = INFINITY;      ///< [m] h0 at which the Hertz peak reaches p_lim (method.md §5)
-  double k_p = 0;             ///< [N/m] plastic stiffness dN/dh0 above h_y (method.md §5)
+  double k_p = 0;             ///< [N/m] slope dN/dh0 of the capped load above h_y (method.md §5)
   double N_y = INFINITY;      ///< [N] load at h_y, (2/3) k_p h_y
 
   /// N(h0) [N] and, if dN_dh0 is given, dN/dh0 [N/m] at virtual penetration h0 [m]; both 0 for
-  /// h0 ≤ 0 (and NaN h0). N = k_e h0^(3/2) (eq. 8) up to h_y, N = k_p (h0 − h_y/3) above
-  /// (method.md §5). C¹ at h_y. Inline, allocation-free: the solver's inner loop.
+  /// h0 ≤ 0 (and NaN h0). N = k_e h0^(3/2) (eq. 8) up to h_y, above it the capped load
+  /// N_c = k_p (h0 − h_y/3) (method.md §5) or, for the yield law, β k_e h0^(3/2) + (1 − β) N_c
+  /// (method.md §5.1). C¹ at h_y. Inline, allocation-free: the solver's inner loop.
   double force(double h0, double* dN_dh0 = nullptr) const {
     if (!(h0 > 0)) {
       if (dN_dh0) *dN_dh0 = 0;
@@ -36,13 +43,18 @@ struct EllipseLaw {
       if (dN_dh0) *dN_dh0 = 1.5 * k_e * r;
       return k_e * h0 * r;
     }
-    if (dN_dh0) *dN_dh0 = k_p;
-    return k_p * (h0 - h_y / 3.0);
+    if (beta == 0) {
+      if (dN_dh0) *dN_dh0 = k_p;
+      return k_p * (h0 - h_y / 3.0);
+    }
+    const double r = std::sqrt(h0);
+    if (dN_dh0) *dN_dh0 = 1.5 * beta * k_e * r + (1.0 - beta) * k_p;
+    return beta * k_e * h0 * r + (1.0 - beta) * k_p * (h0 - h_y / 3.0);
   }
 
-  /// The h0 [m] that carries the load N [N] (inverse of force()), closed form in both regimes:
-  /// (N/k_e)^(2/3) up to N_y, N/k_p + h_y/3 above. 0 for N = 0. Throws std::invalid_argument
-  /// for N < 0 or NaN.
+  /// The h0 [m] that carries the load N [N] (inverse of force()): (N/k_e)^(2/3) up to N_y,
+  /// N/k_p + h_y/3 above for the capped law, a bracketed Newton solve for the yield law
+  /// (h0_for_force_yield_law). 0 for N = 0. Throws std::invalid_argument for N < 0 or NaN.
   double h0_for_force(double N) const {
     if (!(N >= 0)) throw std::invalid_argument("h0_for_force: the normal load N must be >= 0 N");
     if (N == 0) return 0;
@@ -50,8 +62,12 @@ struct EllipseLaw {
       const double q = N / k_e;
       return std::cbrt(q * q);
     }
-    return N / k_p + h_y / 3.0;
+    if (beta == 0) return N / k_p + h_y / 3.0;
+    return h0_for_force_yield_law(N);
   }
+  /// h0 above h_y for the yield law: the root u = √h0 of β k_e u³ + (1 − β) k_p (u² − h_y/3) = N,
+  /// increasing and convex in u, by Newton (core/roots.hpp) from an upper bound.
+  double h0_for_force_yield_law(double N) const;
 
   bool is_plastic_law() const { return std::isfinite(p_lim); }
 };
@@ -77,8 +93,18 @@ struct EllipseState {
   double approach = 0;    ///< [m] true Hertz approach δ = ρ C² (A+B) with C = b/n (= 2 h0 for a
                           ///<     sphere); in the plastic regime that of the patch (Thornton's δ)
   bool plastic = false;   ///< h0 > h_y (p0 > p_lim)
-  double p_max = 0;       ///< [Pa] min(p0, p_lim), the largest pressure actually carried
-  double plateau_a = 0, plateau_b = 0;  ///< [m] semi-axes a√(1−s²), b√(1−s²) where p = p_lim; 0 if elastic
+  double p_max = 0;       ///< [Pa] the largest pressure carried: min(p0, p_lim) (capped law),
+                          ///<     p_y + β (p0 − p_y) above p_y (yield law)
+  double plateau_a = 0, plateau_b = 0;  ///< [m] semi-axes a√(1−s²), b√(1−s²) where the Hertz pressure of
+                                        ///<     the patch exceeds p_lim (capped: p = p_lim there); 0 if elastic
+  double dN_dh0 = 0;      ///< [N/m] slope of the force law at h0 (the normal stiffness in h0)
+  double p_knee = INFINITY;  ///< [Pa] the law's p_lim (p_y for the yield law), for pressure_at
+  double beta = 0;           ///< [-] the law's slope above p_knee, for pressure_at
+  /// [Pa] the pressure the law carries where the Hertz pressure of the patch is p_H [Pa].
+  double pressure_at(double p_H) const {
+    if (beta == 0) return std::min(p_H, p_knee);
+    return p_H <= p_knee ? p_H : p_knee + beta * (p_H - p_knee);
+  }
   double a_el = 0, b_el = 0;            ///< [m] elastic Hertz semi-axes at the same load N
   double area_ratio = 1;                ///< [-] a b / (a_el b_el); 1 if elastic
   double p0_el = 0;                     ///< [Pa] elastic Hertz peak at the same load N, 3N/(2π a_el b_el)

@@ -11,8 +11,7 @@ namespace mh {
 
 double normal_stiffness(const LoadedEllipse& L) {
   if (!(L.s.h0 > 0)) return 0;
-  if (L.s.plastic) return L.s.N / (L.s.h0 - L.h_y / 3.0);  // method.md §5: N = k_p (h0 − h_y/3)
-  return 1.5 * L.s.N / L.s.h0;                              // eq. 8: N = k_e h0^(3/2)
+  return L.s.dN_dh0;  // dN/dh0 of the ellipse law (eq. 8, method.md §5, §5.1)
 }
 
 void solve_multi_hertz_approach(const ContactGeometry& G, const Material& mat, double tY, double dz,

@@ -41,15 +41,17 @@ struct LawSlot {
   EllipseLaw law;
 };
 struct LawCache {
-  std::uint64_t E = 0, nu = 0, E_rail = 0, nu_rail = 0, p_lim = 0;
-  bool exact = false;
+  std::uint64_t E = 0, nu = 0, E_rail = 0, nu_rail = 0, p_lim = 0, yield = 0;
+  bool exact = false, yield_law = false;
   std::vector<LawSlot> slots;
   // Forget every slot when the material or the coefficient path changed.
   void key(const Material& m, bool ex, std::size_t ne) {
     const bool same = bits(m.E) == E && bits(m.nu) == nu && bits(m.E_rail) == E_rail &&
-                      bits(m.nu_rail) == nu_rail && bits(m.p_lim) == p_lim && ex == exact;
+                      bits(m.nu_rail) == nu_rail && bits(m.p_lim) == p_lim && ex == exact &&
+                      m.yield_law == yield_law && bits(m.yield_min()) == yield;
     if (!same) {
       E = bits(m.E); nu = bits(m.nu); E_rail = bits(m.E_rail); nu_rail = bits(m.nu_rail); p_lim = bits(m.p_lim);
+      yield_law = m.yield_law; yield = bits(m.yield_min());
       exact = ex;
       slots.clear();
     }

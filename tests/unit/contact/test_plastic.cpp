@@ -257,3 +257,47 @@ TEST_CASE("a capped flange ellipse stays inside its overlap, area and load kept"
   CHECK(s.approach > d_ov);
   CHECK(s.approach < 0.6 * d_H);  // Thornton's δ of the grown patch was d_H
 }
+
+TEST_CASE("yield law: the stiffness law equals the load of its flattened pressure, C¹, inverse", "[plastic][yield]") {
+  // method.md §5.1: above p_y = 1.6 σ_y the pressure is p = p_y + β (p_H − p_y), β = 0.3, on the
+  // patch of h0 (p_H its Hertz pressure). Reference: 2-D quadrature of that pressure, written as
+  // β p_H + (1 − β) min(p_H, p_y) (the same function pointwise): β times the Hertz load
+  // (2/3) π a b p0 plus (1 − β) times the quadrature of the capped pressure. Tolerance 1e-8
+  // relative (the quadrature's). Also p_max = p_y + β (p0 − p_y); C¹ at h_y (1e-10 between
+  // h_y (1 ∓ 1e-13)); force(h0_for_force(N)) = N to 1e-12 from just above N_y to 10⁴ N_y.
+  Material mat;
+  mat.E = 210e9;
+  mat.nu = 0.3;
+  mat.yield = 350e6;
+  mat.p_lim = p_lim_from_yield(mat.yield);
+  mat.yield_law = true;
+  const double p_y = kFirstYieldPerYield * mat.yield, beta = kYieldLawSlope;
+  for (double l : {1e-3, 0.1, 0.652, 1.0, 7.0, 300.0}) {
+    const EllipseLaw L = make_ellipse_law(l * 2.0, 2.0, mat, true);
+    CAPTURE(l);
+    CHECK(rel(L.p_lim, p_y) <= 1e-15);
+    CHECK(rel(ellipse_state(L, L.h_y).p0, p_y) <= 1e-12);
+    double d1 = 0, d2 = 0;
+    CHECK(rel(L.force(L.h_y * (1 - 1e-13), &d1), L.force(L.h_y * (1 + 1e-13), &d2)) <= 1e-10);
+    CHECK(rel(d1, d2) <= 1e-10);
+    for (double f : {0.5, 1.0, 1.01, 3.0, 50.0}) {
+      CAPTURE(f);
+      const EllipseState s = ellipse_state(L, f * L.h_y);
+      const double a = std::sqrt(s.h0 / 2.0) * L.c.m / L.c.n, b = std::sqrt(s.h0 / 2.0);  // patch of h0
+      const double ref = beta * (2.0 / 3.0) * kPi * a * b * s.p0 + (1 - beta) * capped_load_quadrature(a, b, s.p0, p_y);
+      CHECK(rel(s.N, ref) <= 1e-8);
+      CHECK(rel(s.p_max, s.p0 <= p_y ? s.p0 : p_y + beta * (s.p0 - p_y)) <= 1e-12);
+      CHECK(s.plastic == (f > 1.0));
+    }
+    for (double q : {1.0 + 1e-9, 1.001, 1.5, 10.0, 1e2, 1e4}) {
+      CAPTURE(q);
+      const double N = q * L.N_y;
+      CHECK(rel(L.force(L.h0_for_force(N)), N) <= 1e-12);
+    }
+  }
+  // Without a finite p_lim the material is elastic, yield law or not (the grid methods' elastic
+  // starts copy the material with p_lim = INFINITY).
+  Material el = mat;
+  el.p_lim = INFINITY;
+  CHECK_FALSE(make_ellipse_law(1.0, 2.0, el).is_plastic_law());
+}

@@ -1,5 +1,6 @@
-// material.yield_MPa: the yield stress as input. p_lim is derived from it by the
-// calibration p_lim = kPlimPerYield σ_y (docs/method.md §5.1) unless p_lim_MPa is given.
+// material.yield_MPa: the yield stress as input. Unless p_lim_MPa is given it selects the yield
+// law of the ellipse (Material::yield_law) and the grid methods' cap p_lim = kPlimPerYield σ_y
+// (docs/method.md §5.1); p_lim_MPa selects the capped law.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -27,10 +28,12 @@ TEST_CASE("yield_MPa derives p_lim for the plastic model", "[input][yield]") {
   CHECK(cf.material.yield == Approx(500e6));
   CHECK(std::isnan(cf.material.yield_rail));
   CHECK(cf.material.p_lim == Approx(kPlimPerYield * 500e6));
-  // p_lim_MPa takes precedence; the yield stress is kept
+  CHECK(cf.material.yield_law);
+  // p_lim_MPa takes precedence (the capped law); the yield stress is kept
   j["material"]["p_lim_MPa"] = 1200;
   cf = parse_case_json(j, kPath, true);
   CHECK(cf.material.p_lim == Approx(1200e6));
+  CHECK_FALSE(cf.material.yield_law);
   CHECK(cf.material.yield == Approx(500e6));
 }
 
@@ -57,6 +60,7 @@ TEST_CASE("yield_MPa per body: the softer body sets p_lim", "[input][yield]") {
   CHECK(back.material.yield == Approx(cf.material.yield));
   CHECK(back.material.yield_rail == Approx(cf.material.yield_rail));
   CHECK(back.material.p_lim == Approx(cf.material.p_lim));
+  CHECK(back.material.yield_law);  // the echo has no p_lim_MPa, which would select the capped law
 }
 
 TEST_CASE("yield_MPa input errors name the field", "[input][yield]") {
