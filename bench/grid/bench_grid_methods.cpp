@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     ms_st.push_back(best);
   }
   // "auto" on the same cases: the multi-Hertzian answer where it is valid, strips elsewhere.
-  // Issue 12 asks its mean cost per case to stay within a third of the strip method's.
+  // Its mean cost per case is meant to stay within a third of the strip method's.
   mh::MethodOptions mo = cs.method_options();
   mo.method = mh::Method::Auto;
   std::vector<double> ms_auto;

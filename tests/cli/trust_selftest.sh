@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Self-test of scripts/trust_table.py (issue 23 §3): on two cases of the Manchester pair (Q = 50 kN),
+# Self-test of scripts/trust_table.py: on two cases of the Manchester pair (Q = 50 kN),
 # against CONTACT's table, strips and auto have no silent case; against a constructed copy of that
 # table with one peak pressure raised by 30 % and one area by 25 %, every `ok` row of those two
 # cases is counted silent, and --assert-targets fails.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The field trust table's targets (issue 23 §3) on a subset, against the stored CONTACT tables
+# The field trust table's targets on a subset, against the stored CONTACT tables
 # (tests/data/contact/field, README there): no `ok` row of strips or auto more than 10 % off in
 # peak pressure or 15 % in area, and every multi-Hertzian row beyond those tolerances not `ok`
 # (scripts/trust_table.py --assert-targets).

@@ -5,10 +5,6 @@
 // stay multi-Hertzian where they are accurate against CONTACT.
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
-
-#include <cstdio>
-#include <fstream>
 #include <string>
 
 #include "contact/ellipse/hertz_validity.hpp"
@@ -16,6 +12,7 @@
 #include "geometry/gap.hpp"
 #include "input/case_file.hpp"
 #include "jobs/run.hpp"
+#include "support/measured_pair.hpp"
 
 namespace {
 
@@ -39,18 +36,11 @@ struct Measured {
 };
 const Measured& measured() {
   static const Measured m = [] {
-    const std::string data = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/";
-    const std::string path = "/tmp/mhcontact_auto_rule_" + std::to_string(::getpid()) + ".json";
-    std::ofstream(path) << "{\"wheel\": {\"profile\": \"" << data << "avg_wheel.whl\", \"nominal_radius_mm\": 460}, "
-                        << "\"rail\": {\"profile\": \"" << data << "avg_HR.BAN\", \"inclination\": \"1:40\"}, "
-                        << "\"material\": {\"E_GPa\": 210, \"nu\": 0.28}, \"sweep\": {\"tY_mm\": [13.5], \"Q_kN\": [50]}, "
-                        // Unsmoothed for contact: the measured scatter leaves corners in the gap the
-                        // grid methods solve on. Smoothed (the default 5 mm) the gap has none at
-                        // 13.5 mm (kink ratio 3e-4) and the multi-Hertzian answer agrees with both grid
-                        // methods within 0.3 % in peak pressure (6,709 against 6,668 and 6,725 MPa).
-                        << "\"geometry\": {\"smoothing_mm\": 0}}";
-    Measured r{mh::load_case_file(path, true), {}};
-    std::remove(path.c_str());
+    // Unsmoothed for contact: the measured scatter leaves corners in the gap the grid methods
+    // solve on. Smoothed (the default 5 mm) the gap has none at 13.5 mm (kink ratio 3e-4) and the
+    // multi-Hertzian answer agrees with both grid methods within 0.3 % in peak pressure (6,709
+    // against 6,668 and 6,725 MPa).
+    Measured r{mh::testing::measured_pair_case("avg_wheel.whl", "avg_HR.BAN", 13.5, 50, {{"smoothing_mm", 0}}), {}};
     r.pg = mh::build_pair_geometry(r.cf);
     return r;
   }();

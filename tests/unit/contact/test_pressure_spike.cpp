@@ -4,11 +4,7 @@
 // (docs/strips.md, "Measured pairs").
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
-
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -16,6 +12,7 @@
 #include "contact/grid/pressure_spike.hpp"
 #include "input/case_file.hpp"
 #include "jobs/run.hpp"
+#include "support/measured_pair.hpp"
 
 namespace {
 // Hertz pressure p0 sqrt(1 − x²/a² − s²/b²) on an nx × ns grid of spacing h, centred.
@@ -50,14 +47,7 @@ TEST_CASE("pressure spike: smooth Hertz pressures have none, a towering element 
 }
 
 TEST_CASE("pressure spike: the half-space case with a single-element peak warns", "[half_space][spike]") {
-  const std::string data = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/";
-  const std::string path = "/tmp/mhcontact_spike_" + std::to_string(::getpid()) + ".json";
-  std::ofstream(path) << "{\"wheel\": {\"profile\": \"" << data << "avg_wheel.whl\", \"nominal_radius_mm\": 460}, "
-                      << "\"rail\": {\"profile\": \"" << data << "avg_HR.BAN\", \"inclination\": \"1:40\"}, "
-                      << "\"material\": {\"E_GPa\": 210, \"nu\": 0.28}, \"sweep\": {\"tY_mm\": [0], \"Q_kN\": [50]}, "
-                      << "\"geometry\": {\"smoothing_mm\": 0}}";
-  const mh::CaseFile cf = mh::load_case_file(path, true);
-  std::remove(path.c_str());
+  const mh::CaseFile cf = mh::testing::measured_pair_case("avg_wheel.whl", "avg_HR.BAN", 0, 50, {{"smoothing_mm", 0}});
   const mh::PairGeometry pg = mh::build_pair_geometry(cf);
   // Unsmoothed (smoothing_mm 0): the spike comes from the measured scatter of the gauge corner;
   // smoothed for contact (the default 5 mm) the same row has a 3.4 GPa peak and no spike.

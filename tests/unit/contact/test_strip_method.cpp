@@ -6,12 +6,8 @@
 // deformed gap closes at every strip end (docs/strips.md), as are those of t_Y = 1 and 5 mm.
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -21,6 +17,7 @@
 #include "geometry/gap.hpp"
 #include "input/case_file.hpp"
 #include "jobs/run.hpp"
+#include "support/measured_pair.hpp"
 #include "output/csv_table.hpp"
 
 namespace {
@@ -132,13 +129,7 @@ TEST_CASE("strip method against the half-space solver on two measured pairs", "[
   // on all of them.
   struct Pair { const char* wheel; const char* rail; };
   for (const Pair& p : {Pair{"worn_high_mileage.prw", "site_b_hr.prr"}, Pair{"avg_wheel.whl", "avg_HR.BAN"}}) {
-    const std::string data = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/profiles/";
-    const std::string path = "/tmp/mhcontact_strip_measured_" + std::to_string(::getpid()) + ".json";
-    std::ofstream(path) << "{\"wheel\": {\"profile\": \"" << data << p.wheel << "\", \"nominal_radius_mm\": 460}, "
-                        << "\"rail\": {\"profile\": \"" << data << p.rail << "\", \"inclination\": \"1:40\"}, "
-                        << "\"material\": {\"E_GPa\": 210, \"nu\": 0.28}, \"sweep\": {\"tY_mm\": [0], \"Q_kN\": [50]}}";
-    const mh::CaseFile cf = mh::load_case_file(path, true);
-    std::remove(path.c_str());
+    const mh::CaseFile cf = mh::testing::measured_pair_case(p.wheel, p.rail, 0, 50);
     const mh::PairGeometry pg = mh::build_pair_geometry(cf);
     const bool miniprof = std::string(p.wheel) == "avg_wheel.whl";
     std::vector<double> tYs = {-6.0, -2.0, 2.0, 6.0, 8.0};
