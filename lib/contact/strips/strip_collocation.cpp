@@ -164,7 +164,7 @@ void Solver::capped_column(Collocation& c, int jj) const {
     need.assign(static_cast<std::size_t>(dmax) + 1, 0);
     for (int r = 0; r < m; ++r)
       if (!c.capped[r] && (opt.coupling || r == jj)) need[static_cast<std::size_t>(std::abs(c.cand[r] - j))] = 1;
-    capped_centre_line(c.aeff[jj], geo.ds, c.rcap[jj], dmax, gx, gw, col, &need);
+    capped_centre_line(c.aeff[jj], geo.ds, c.rcap[jj], dmax, gx, gw, col, &need, log2_edge.data() + n + 1);
     for (int r = 0; r < m; ++r)
       if (!c.capped[r] && (opt.coupling || r == jj)) c.Ucap(r, jj) = f * col[std::abs(c.cand[r] - j)];
     return;

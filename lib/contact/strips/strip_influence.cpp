@@ -241,7 +241,8 @@ const CappedCentreTable& capped_centre_table() {
 }  // namespace
 
 void capped_centre_line(double a, double ds, double rcap, int dmax, const std::vector<double>& gx,
-                        const std::vector<double>& gw, std::vector<double>& out, const std::vector<char>* need) {
+                        const std::vector<double>& gw, std::vector<double>& out, const std::vector<char>* need,
+                        const double* log2_edge) {
   using T = CappedCentreTable;
   auto wanted = [need](int d) { return !need || (*need)[static_cast<std::size_t>(d)] != 0; };
   // The edges m = 0 … mmax the wanted distances use; the table serves when their rho lie in it.
@@ -271,7 +272,7 @@ void capped_centre_line(double a, double ds, double rcap, int dmax, const std::v
   for (int k = 0; k < 4; ++k) row[k] = tab.row(i0 + k);
   const double hu = 1.0 / T::kPerBinade, la = std::log2(a);
   auto F = [&](int m) {  // F(th, (m + ½) ds / a)
-    const double pos = (std::log2((m + 0.5) * ds) - la - T::kULo) * T::kPerBinade;
+    const double pos = ((log2_edge ? log2_edge[m] : std::log2((m + 0.5) * ds)) - la - T::kULo) * T::kPerBinade;
     const int j = std::min(std::max(static_cast<int>(pos), 0), T::ny - 2);
     const double t = pos - j, t1 = 1.0 - t;
     const double h00 = (1 + 2 * t) * t1 * t1, h01 = t * t * (3 - 2 * t), h10 = hu * t * t1 * t1, h11 = -hu * t * t * t1;

@@ -52,9 +52,10 @@ void influence_centre_line(double a, double ds, double rcap, int dmax, const std
 /// each row built on first use; read by cubic Lagrange interpolation across rows and cubic Hermite
 /// in log2 rho: per distance one log2 and 16 table values instead of 8 roots, 8 logarithms and two
 /// asinh. Other node counts, and rho outside the table, take the quadrature.
+/// `log2_edge` (optional): log2((m + ½) ds) for m = 0 … dmax, which the solver keeps (Solver::log2_edge).
 void capped_centre_line(double a, double ds, double rcap, int dmax, const std::vector<double>& gx,
                         const std::vector<double>& gw, std::vector<double>& out,
-                        const std::vector<char>* need = nullptr);
+                        const std::vector<char>* need = nullptr, const double* log2_edge = nullptr);
 
 /// A capped strip (flat top at rcap < 1) as a source seen from many points of its own centre line's
 /// direction (the ends of other strips, X0 >= 0): influence()'s sub-intervals that do not depend on

@@ -177,6 +177,12 @@ TEST_CASE("capped strip: the tabulated centre-line column against its quadrature
       mh::strips_detail::capped_centre_line(a, ds, r, dmax, gx, gw, some, &need);
       for (int d = 0; d <= dmax; ++d)
         CHECK(some[static_cast<std::size_t>(d)] == (need[static_cast<std::size_t>(d)] ? tab[static_cast<std::size_t>(d)] : 0.0));
+      // The edges' log2 given, as the solver keeps them: the same values.
+      std::vector<double> l2;
+      for (int m = 0; m <= dmax; ++m) l2.push_back(std::log2((m + 0.5) * ds));
+      std::vector<double> given;
+      mh::strips_detail::capped_centre_line(a, ds, r, dmax, gx, gw, given, nullptr, l2.data());
+      CHECK(given == tab);
     }
   std::printf("  capped strip, tabulated centre-line columns: worst %.2e m from the quadrature, %.2e m from tanh-sinh\n",
               worst, worst_ts);
