@@ -183,10 +183,11 @@ void influence_centre_line(double a, double ds, double rcap, int dmax, const std
 namespace {
 
 /// F(th, rho) of capped_centre_line (strip_influence.hpp) and dF/du, u = log2 rho, at the nodes of
-/// a grid: th_i = (π/4) (1 − cos π xi_i), xi_i = i / kTh, i = 0 … kTh (graded towards th = 0, r = 1,
-/// where the first node nears the kink of the pressure, and towards th = π/2, r = 0, where F ∝ r
-/// and the displacement q F = p_lim F / r wants F to its relative precision); u_j = kULo + j / kPerBinade, j = 0 … ny − 1; for the
-/// Gauss–Legendre nodes gx, gw of influence_centre_line (one sub-interval [th, π/2]).
+/// a grid, for the Gauss–Legendre nodes gx, gw of influence_centre_line (one sub-interval [th, π/2]):
+///  - th_i = (π/4) (1 − cos π xi_i), xi_i = i / kTh, i = 0 … kTh: graded towards th = 0 (r = 1),
+///    where the first node nears the kink of the pressure, and towards th = π/2 (r = 0), where
+///    F ∝ r and the displacement q F = p_lim F / r wants F to its relative precision;
+///  - u_j = kULo + j / kPerBinade, j = 0 … ny − 1.
 struct CappedCentreTable {
   static constexpr int kTh = 256;
   static constexpr int kPerBinade = 16;
