@@ -164,7 +164,7 @@ void Solver::capped_column(Collocation& c, int jj) const {
     need.assign(static_cast<std::size_t>(dmax) + 1, 0);
     for (int r = 0; r < m; ++r)
       if (!c.capped[r] && (opt.coupling || r == jj)) need[static_cast<std::size_t>(std::abs(c.cand[r] - j))] = 1;
-    influence_centre_line(c.aeff[jj], geo.ds, c.rcap[jj], dmax, gx, gw, col, &need);
+    capped_centre_line(c.aeff[jj], geo.ds, c.rcap[jj], dmax, gx, gw, col, &need, log2_edge.data() + n + 1);
     for (int r = 0; r < m; ++r)
       if (!c.capped[r] && (opt.coupling || r == jj)) c.Ucap(r, jj) = f * col[std::abs(c.cand[r] - j)];
     return;
@@ -187,8 +187,7 @@ void Solver::build_K(Collocation& c, std::vector<double>& built) const {
     if (built[jj] != c.a[jj]) {
       elastic_column(*this, c.cand, jj, c.a[jj], c.K);
       built[jj] = c.a[jj];
-      c.lu_of.clear();
-      c.lu_other_of.clear();
+      c.lus.clear();
     }
 }
 
@@ -231,17 +230,18 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
       rhs(cc) = delta - geo.g[c.cand[E[cc]]] - ucap(E[cc]);
       in_act[cc] = start[E[cc]];
     }
-    if (e > 0 && c.lu_of != E) {
-      // Two factorisations are kept: along a load iteration each collocation starts on every
-      // strip (the same set as the previous one's first pass) and ends on the elastic ones.
-      std::swap(c.lu, c.lu_other);
-      std::swap(c.lu_of, c.lu_other_of);
-      if (c.lu_of != E) {
-        c.lu.compute(KE);
-        c.lu_of = E;
+    // The factorisation of K_EE: one of an earlier pass or collocation on the same set and K, else new.
+    const Eigen::PartialPivLU<Eigen::MatrixXd>* lu = nullptr;
+    if (e > 0) {
+      for (const Collocation::Factorisation& f : c.lus)
+        if (f.of == E) { lu = &f.lu; break; }
+      if (!lu) {
+        if (c.lus.size() >= Collocation::kMaxFactorisations) c.lus.erase(c.lus.begin());
+        c.lus.push_back({E, Eigen::PartialPivLU<Eigen::MatrixXd>(KE)});
+        lu = &c.lus.back().lu;
       }
     }
-    c.as_ok = e == 0 || solve_active_set(KE, c.lu, rhs, kPenetrationRtol * (delta - gmin), opt.max_active_set, in_act, qE);
+    c.as_ok = e == 0 || solve_active_set(KE, *lu, rhs, kPenetrationRtol * (delta - gmin), opt.max_active_set, in_act, qE);
     if (!c.as_ok) break;
     act.clear();
     for (int cc = 0; cc < e; ++cc) {

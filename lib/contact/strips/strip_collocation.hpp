@@ -45,10 +45,16 @@ struct Collocation {
                                 ///< (rows of capped strips, whose equations are dropped, are not computed)
   bool as_ok = true;            ///< the active set settled
   bool settled = true;          ///< the plastic set settled
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu;  ///< factorisation of K restricted to lu_of (reused across approaches)
-  std::vector<int> lu_of;       ///< the candidates (indices ii) lu factorises; empty: none
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_other;  ///< the factorisation before lu (of another set of the same K)
-  std::vector<int> lu_other_of; ///< its candidates; empty: none
+  /// Factorisations of K restricted to sets of candidates (indices ii), reused across approaches:
+  /// each collocation restarts its plastic passes from the elastic set, and along a load iteration
+  /// at fixed extents the passes meet the same sets again. Cleared when K changes; at most
+  /// kMaxFactorisations, the oldest dropped first.
+  struct Factorisation {
+    std::vector<int> of;
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  };
+  std::vector<Factorisation> lus;
+  static constexpr std::size_t kMaxFactorisations = 16;
 };
 
 /// The load [N] of candidate ii of a collocation on strips of width ds: (π/2) q a ds elastic,

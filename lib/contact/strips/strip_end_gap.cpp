@@ -85,7 +85,7 @@ void drops(const Solver& S, const std::vector<int>& field, const std::vector<dou
       // mostly capped patch is a few tail strips either side.
       need.assign(static_cast<std::size_t>(dmax) + 1, 0);
       for (int k = 0; k < nf; ++k) need[static_cast<std::size_t>(std::abs(sj.j - field[k]))] = 1;
-      influence_centre_line(sj.a, geo.ds, sj.rcap, dmax, S.gx, S.gw, centre, &need);
+      capped_centre_line(sj.a, geo.ds, sj.rcap, dmax, S.gx, S.gw, centre, &need, S.log2_edge.data() + S.n + 1);
       capped_source(sj.a, sj.rcap, S.gx, S.gw, cs);
       for (int k = 0; k < nf; ++k) {
         const double e1 = geo.s[sj.j] - 0.5 * geo.ds - geo.s[field[k]];

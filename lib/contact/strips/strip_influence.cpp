@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <utility>
 #include "core/units.hpp"
 
@@ -176,6 +177,127 @@ void influence_centre_line(double a, double ds, double rcap, int dmax, const std
     if (wanted(0)) out[0] += w * std::log(nm[0] * nm[0] / X2);
     for (int d = 1; d <= dmax; ++d)
       if (wanted(d)) out[d] += w * std::log(nm[d] / nm[d - 1]);
+  }
+}
+
+namespace {
+
+/// F(th, rho) of capped_centre_line (strip_influence.hpp) and dF/du, u = log2 rho, at the nodes of
+/// a grid, for the Gauss–Legendre nodes gx, gw of influence_centre_line (one sub-interval [th, π/2]):
+///  - th_i = (π/4) (1 − cos π xi_i), xi_i = i / kTh, i = 0 … kTh: graded towards th = 0 (r = 1),
+///    where the first node nears the kink of the pressure, and towards th = π/2 (r = 0), where
+///    F ∝ r and the displacement q F = p_lim F / r wants F to its relative precision;
+///  - u_j = kULo + j / kPerBinade, j = 0 … ny − 1.
+struct CappedCentreTable {
+  static constexpr int kTh = 256;
+  static constexpr int kPerBinade = 16;
+  static constexpr int kULo = -10, kUHi = 7;
+  static constexpr int ny = (kUHi - kULo) * kPerBinade + 1;
+  std::vector<double> gx, gw;  ///< the nodes tabulated
+  mutable std::vector<double> v;  ///< node (i, j): v[2 (i ny + j)] = F, v[2 (i ny + j) + 1] = dF/du (rows built on first use)
+
+  CappedCentreTable() : v(static_cast<std::size_t>(2 * (kTh + 1) * ny), 0.0), once(kTh + 1) {
+    gauss_legendre(8, &gx, &gw);  // StripOptions::gauss_points / 2 (options.hpp)
+  }
+  /// Row i, built on first use (a run touches the rows of its capped strips' r only).
+  const double* row(int i) const {
+    std::call_once(once[static_cast<std::size_t>(i)], [this, i] { build_row(i); });
+    return v.data() + 2 * static_cast<std::size_t>(i) * ny;
+  }
+
+ private:
+  mutable std::vector<std::once_flag> once;
+  void build_row(int i) const {
+    const std::size_t ng = gx.size();
+    std::vector<double> sk(ng), Wk(ng);
+    const double th = 0.25 * kPi * (1.0 - std::cos(kPi * i / kTh)), r = std::cos(th);
+    // The nodes and weights of influence_centre_line on [th, π/2], without the factor a.
+    const double mid = 0.5 * (th + 0.5 * kPi), half = 0.5 * (0.5 * kPi - th);
+    for (std::size_t k = 0; k < ng; ++k) {
+      const double theta = mid + half * gx[k];
+      sk[k] = std::sin(theta);
+      const double f = std::min(std::sqrt(std::max(0.0, 1.0 - sk[k] * sk[k])), r);
+      Wk[k] = 2.0 * half * gw[k] * (f - r) * std::cos(theta);
+    }
+    double* out = v.data() + 2 * static_cast<std::size_t>(i) * ny;
+    for (int j = 0; j < ny; ++j) {
+      const double u = kULo + static_cast<double>(j) / kPerBinade, rho = std::exp2(u);
+      // F = 2 r P(1, rho) + Σ W_k asinh(rho / s_k); dF/drho = 2 r asinh(1/rho) + Σ W_k / sqrt(rho² + s_k²).
+      double F = 2.0 * r * P_rect(1.0, rho), Fr = 2.0 * r * std::asinh(1.0 / rho);
+      for (std::size_t k = 0; k < ng; ++k) {
+        F += Wk[k] * std::asinh(rho / sk[k]);
+        Fr += Wk[k] / std::sqrt(rho * rho + sk[k] * sk[k]);
+      }
+      out[2 * j] = F;
+      out[2 * j + 1] = Fr * rho * std::log(2.0);
+    }
+  }
+};
+
+const CappedCentreTable& capped_centre_table() {
+  static const CappedCentreTable t;
+  return t;
+}
+
+}  // namespace
+
+void capped_centre_line(double a, double ds, double rcap, int dmax, const std::vector<double>& gx,
+                        const std::vector<double>& gw, std::vector<double>& out, const std::vector<char>* need,
+                        const double* log2_edge) {
+  using T = CappedCentreTable;
+  auto wanted = [need](int d) { return !need || (*need)[static_cast<std::size_t>(d)] != 0; };
+  // The edges m = 0 … mmax the wanted distances use; the table serves when their rho lie in it.
+  int mmax = -1;
+  for (int d = dmax; d >= 0; --d)
+    if (wanted(d)) { mmax = d; break; }
+  const double r = std::min(rcap, 1.0);
+  if (mmax < 0 || !(a > 0.0) || !(r > 0.0) || gx.size() != 8) {
+    influence_centre_line(a, ds, rcap, dmax, gx, gw, out, need);
+    return;
+  }
+  const T& tab = capped_centre_table();
+  if (gx != tab.gx || gw != tab.gw || !(0.5 * ds / a >= std::exp2(T::kULo)) ||
+      !((mmax + 0.5) * ds / a <= std::exp2(T::kUHi))) {
+    influence_centre_line(a, ds, rcap, dmax, gx, gw, out, need);
+    return;
+  }
+  out.assign(static_cast<std::size_t>(dmax) + 1, 0.0);
+  // Cubic Lagrange weights in xi = acos(1 − 4 th / π) / π on the four nodes i0 … i0 + 3 around it.
+  const double th = r < 1.0 ? std::asin(std::sqrt(1.0 - r * r)) : 0.0;
+  const double x = std::acos(std::min(std::max(1.0 - th * (4.0 / kPi), -1.0), 1.0)) * (T::kTh / kPi);
+  const int i0 = std::min(std::max(static_cast<int>(x) - 1, 0), T::kTh - 3);
+  const double p = x - i0;  // in [0, 3]
+  const double L[4] = {-(p - 1) * (p - 2) * (p - 3) / 6, p * (p - 2) * (p - 3) / 2, -p * (p - 1) * (p - 3) / 2,
+                       p * (p - 1) * (p - 2) / 6};
+  const double* row[4];
+  for (int k = 0; k < 4; ++k) row[k] = tab.row(i0 + k);
+  const double hu = 1.0 / T::kPerBinade, la = std::log2(a);
+  auto F = [&](int m) {  // F(th, (m + ½) ds / a)
+    const double pos = ((log2_edge ? log2_edge[m] : std::log2((m + 0.5) * ds)) - la - T::kULo) * T::kPerBinade;
+    const int j = std::min(std::max(static_cast<int>(pos), 0), T::ny - 2);
+    const double t = pos - j, t1 = 1.0 - t;
+    const double h00 = (1 + 2 * t) * t1 * t1, h01 = t * t * (3 - 2 * t), h10 = hu * t * t1 * t1, h11 = -hu * t * t * t1;
+    double s = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const double* c = row[k] + 2 * j;
+      s += L[k] * (h00 * c[0] + h10 * c[1] + h01 * c[2] + h11 * c[3]);
+    }
+    return s;
+  };
+  double Fprev = 0.0;
+  int mprev = -2;
+  for (int d = 0; d <= mmax; ++d) {
+    if (!wanted(d)) continue;
+    if (d == 0) {
+      Fprev = F(0);
+      mprev = 0;
+      out[0] = 2.0 * a * Fprev;
+      continue;
+    }
+    const double Flo = mprev == d - 1 ? Fprev : F(d - 1);
+    Fprev = F(d);
+    mprev = d;
+    out[d] = a * (Fprev - Flo);
   }
 }
 

@@ -135,3 +135,55 @@ TEST_CASE("capped strip: displacement at the ends of other strips against tanh-s
   std::printf("  capped strip, ends of other strips: worst deviation from tanh-sinh %.2e m in the flat top, %.2e m on "
               "a tail or beyond\n", worst, worst_tail);
 }
+
+TEST_CASE("capped strip: the tabulated centre-line column against its quadrature and tanh-sinh", "[strips][plastic]") {
+  // strips_detail::capped_centre_line reads the column of influence_centre_line from a table in
+  // (th, log2 rho) (strip_influence.hpp). Against the quadrature it replaces, over capped strips
+  // from r = 0.02 to 0.9999 (th off the table's nodes), half-lengths 0.5 … 25 mm, every distance
+  // across 150 strips of 0.2 mm: within kTolTable of displacement per unit amplitude times
+  // p_lim / r, the displacement of the strip's pressure (H q a · difference of F). Against
+  // tanh-sinh quadrature of the definition it keeps the 1 nm of the quadrature's own test above.
+  constexpr double kTolTable = 5e-13;  // [m]: 5e-4 nm
+  std::vector<double> gx, gw;
+  mh::strips_detail::gauss_legendre(8, &gx, &gw);
+  const double ds = 0.2e-3;
+  double worst = 0, worst_ts = 0;
+  for (double a : {0.5e-3, 1.7e-3, 3e-3, 7.3e-3, 25e-3})
+    for (double r : {0.02, 0.1, 0.2371, 0.45, 0.7, 0.913, 0.99, 0.9999}) {
+      const double q = kPlim / r;
+      const int dmax = 150;
+      std::vector<double> tab, quad;
+      mh::strips_detail::capped_centre_line(a, ds, r, dmax, gx, gw, tab);
+      mh::strips_detail::influence_centre_line(a, ds, r, dmax, gx, gw, quad);
+      for (int d = 0; d <= dmax; ++d) {
+        const double dev = kH * q * std::fabs(tab[static_cast<std::size_t>(d)] - quad[static_cast<std::size_t>(d)]);
+        INFO("a = " << a * 1e3 << " mm, r = " << r << ", d = " << d << ": table " << tab[static_cast<std::size_t>(d)]
+                    << ", quadrature " << quad[static_cast<std::size_t>(d)]);
+        CHECK(dev < kTolTable);
+        worst = std::max(worst, dev);
+      }
+      for (int d : {0, 1, 7, 40, 150}) {
+        const double ref = kH * q * reference(0, a, (d - 0.5) * ds, (d + 0.5) * ds, r);
+        const double dev = std::fabs(kH * q * tab[static_cast<std::size_t>(d)] - ref);
+        INFO("a = " << a * 1e3 << " mm, r = " << r << ", d = " << d << ": table " << kH * q * tab[static_cast<std::size_t>(d)]
+                    << " m, tanh-sinh " << ref << " m");
+        CHECK(dev < kTol);
+        worst_ts = std::max(worst_ts, dev);
+      }
+      // Some distances only, as the collocation asks: the same values, zero elsewhere.
+      std::vector<char> need(dmax + 1, 0);
+      need[0] = need[5] = need[6] = need[90] = 1;
+      std::vector<double> some;
+      mh::strips_detail::capped_centre_line(a, ds, r, dmax, gx, gw, some, &need);
+      for (int d = 0; d <= dmax; ++d)
+        CHECK(some[static_cast<std::size_t>(d)] == (need[static_cast<std::size_t>(d)] ? tab[static_cast<std::size_t>(d)] : 0.0));
+      // The edges' log2 given, as the solver keeps them: the same values.
+      std::vector<double> l2;
+      for (int m = 0; m <= dmax; ++m) l2.push_back(std::log2((m + 0.5) * ds));
+      std::vector<double> given;
+      mh::strips_detail::capped_centre_line(a, ds, r, dmax, gx, gw, given, nullptr, l2.data());
+      CHECK(given == tab);
+    }
+  std::printf("  capped strip, tabulated centre-line columns: worst %.2e m from the quadrature, %.2e m from tanh-sinh\n",
+              worst, worst_ts);
+}
