@@ -53,8 +53,8 @@ struct EllipseLaw {
   }
 
   /// The h0 [m] that carries the load N [N] (inverse of force()): (N/k_e)^(2/3) up to N_y,
-  /// N/k_p + h_y/3 above for the capped law, a bracketed Newton solve for the yield law
-  /// (h0_for_force_yield_law). 0 for N = 0. Throws std::invalid_argument for N < 0 or NaN.
+  /// N/k_p + h_y/3 above for the capped law, for the yield law an explicit root polished by
+  /// Newton (h0_for_force_yield_law). 0 for N = 0. Throws std::invalid_argument for N < 0 or NaN.
   double h0_for_force(double N) const {
     if (!(N >= 0)) throw std::invalid_argument("h0_for_force: the normal load N must be >= 0 N");
     if (N == 0) return 0;
@@ -66,7 +66,8 @@ struct EllipseLaw {
     return h0_for_force_yield_law(N);
   }
   /// h0 above h_y for the yield law: the root u = √h0 of β k_e u³ + (1 − β) k_p (u² − h_y/3) = N,
-  /// increasing and convex in u, by Newton (core/roots.hpp) from an upper bound.
+  /// increasing and convex in u. Cardano's root of the cubic (or, just above h_y, a quadratic
+  /// approximation of it), then Newton steps (core/roots.hpp newton_polish) to machine precision.
   double h0_for_force_yield_law(double N) const;
 
   bool is_plastic_law() const { return std::isfinite(p_lim); }
