@@ -12,7 +12,8 @@
 
 namespace mh {
 
-EllipseLaw make_ellipse_law(double A, double B, const Material& mat, bool exact) {
+namespace {
+void check_curvature_sums(double A, double B) {
   if (!(B > 0) || !std::isfinite(B))
     throw std::invalid_argument("B = " + format_number(B) +
                                 " 1/m: the lateral curvature sum B = (1/R_wxx + 1/R_rxx)/2 must be > 0 and finite "
@@ -21,21 +22,39 @@ EllipseLaw make_ellipse_law(double A, double B, const Material& mat, bool exact)
     throw std::invalid_argument("A = " + format_number(A) +
                                 " 1/m: the rolling-direction curvature sum A = 1/(2 R_wyy) must be > 0 and finite "
                                 "(A = 0 is a line contact, A < 0 a concave wheel in the rolling direction)");
+}
+}  // namespace
+
+LawMaterial law_material(const Material& mat) {
   std::string why;
   if (!mat.valid(&why)) throw std::invalid_argument(why);
+  LawMaterial lm;
+  lm.E_star = mat.E_star();
+  // The yield law (method.md §5.1) leaves Hertz at first yield p_y = 1.6 σ_y with slope β; the
+  // capped law (method.md §5) at p_lim. An elastic material (p_lim = INFINITY) stays elastic.
+  const bool yield_law = mat.yield_law && std::isfinite(mat.p_lim);
+  lm.p_lim = yield_law ? kFirstYieldPerYield * mat.yield_min() : mat.p_lim;
+  lm.beta = yield_law ? kYieldLawSlope : 0.0;
+  return lm;
+}
+
+EllipseLaw make_ellipse_law(double A, double B, const Material& mat, bool exact) {
+  check_curvature_sums(A, B);  // before the material, as its errors always were
+  return make_ellipse_law(A, B, law_material(mat), exact);
+}
+
+EllipseLaw make_ellipse_law(double A, double B, const LawMaterial& mat, bool exact) {
+  check_curvature_sums(A, B);
   const double lambda = A / B;
   EllipseLaw L;
   L.A = A;
   L.B = B;
   L.c = exact ? hertz_coefficients_exact(lambda) : hertz_coefficients(lambda);
-  L.E_star = mat.E_star();
+  L.E_star = mat.E_star;
   const double n3 = L.c.n * L.c.n * L.c.n;
   L.k_e = (2.0 / 3.0) * (1.0 + lambda) / n3 * L.E_star / std::sqrt(B);  // (eq. 8)
-  // The yield law (method.md §5.1) leaves Hertz at first yield p_y = 1.6 σ_y with slope β; the
-  // capped law (method.md §5) at p_lim. An elastic material (p_lim = INFINITY) stays elastic.
-  const bool yield_law = mat.yield_law && std::isfinite(mat.p_lim);
-  L.p_lim = yield_law ? kFirstYieldPerYield * mat.yield_min() : mat.p_lim;
-  L.beta = yield_law ? kYieldLawSlope : 0.0;
+  L.p_lim = mat.p_lim;
+  L.beta = mat.beta;
   const PlasticBranch p = plastic_branch(L.c.m, L.c.n, B, L.k_e, L.p_lim);  // method.md §5
   L.h_y = p.h_y;
   L.k_p = p.k_p;

@@ -73,6 +73,17 @@ struct EllipseLaw {
   bool is_plastic_law() const { return std::isfinite(p_lim); }
 };
 
+/// The part of every ellipse's law that depends only on the material, for a solver that builds
+/// many laws of one material (the multi-Hertzian solver: one per potential ellipse and t_Y).
+struct LawMaterial {
+  double E_star = 0;          ///< [Pa] Material::E_star()
+  double p_lim = INFINITY;    ///< [Pa] EllipseLaw::p_lim: p_lim (capped law), p_y = 1.6 σ_y (yield law) or INFINITY
+  double beta = 0;            ///< [-] EllipseLaw::beta: 0 (capped or elastic) or kYieldLawSlope (yield law)
+};
+/// `mat` checked (Material::valid; throws std::invalid_argument with its message) and reduced to
+/// what an ellipse law needs (method.md §5, §5.1).
+LawMaterial law_material(const Material& mat);
+
 /// Build the law of an ellipse with curvature sums A, B [1/m] (eq. 1) for `mat`: λ = A/B, m, n, ρ
 /// (fast path, or the exact path when `exact`), k_e (eq. 8), and with a finite mat.p_lim the
 /// plastic branch (method.md §5). Throws std::invalid_argument with the rule for a
@@ -81,6 +92,8 @@ struct EllipseLaw {
 /// [kLambdaMinExact, kLambdaMaxExact], non-finite A or B, and an invalid material
 /// (Material::is_valid).
 EllipseLaw make_ellipse_law(double A, double B, const Material& mat, bool exact = false);
+/// The same from the material's part, law_material(mat), computed once for many ellipses.
+EllipseLaw make_ellipse_law(double A, double B, const LawMaterial& mat, bool exact = false);
 
 /// One loaded ellipse at virtual penetration h0 (all SI). For h0 ≤ 0 everything is 0 (area_ratio 1).
 struct EllipseState {
