@@ -1,14 +1,16 @@
 #pragma once
 // The project's one home for root finding in one variable: every solver that looks for a root
-// calls these, never a loop of its own. Both wrap Boost.Math (header-only, Boost licence):
+// calls these, never a loop of its own. The first three wrap Boost.Math (header-only, Boost licence):
 //  - bracketed_root: TOMS 748 (Alefeld, Potra & Shi, ACM TOMS 21 (1995) 327–344;
 //    boost::math::tools::toms748_solve), for a continuous f with a sign change in [lo, hi];
 //  - newton_root: Newton–Raphson kept inside a bracket, with bisection where a step would leave it
 //    (boost::math::tools::newton_raphson_iterate), for a monotone f whose derivative is at hand;
 //  - bisected_root: plain bisection (boost::math::tools::bisect), where the root of interest is
 //    the one bisection finds among several in the bracket (it keeps the same one whatever f's
-//    shape between them), or where f may be discontinuous.
-// Both stop on whichever comes first: the bracket (or step) below abs + rel·|x|, or |f| ≤ f_abs.
+//    shape between them), or where f may be discontinuous;
+//  - newton_polish: a few plain Newton steps from an explicit approximation of the root, for an
+//    increasing convex f (the closed-form inverses of the force laws).
+// All stop on whichever comes first: the bracket (or step) below abs + rel·|x|, or |f| ≤ f_abs.
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -116,6 +118,41 @@ RootResult newton_root(F&& f_df, double guess, double lo, double hi, const RootT
   // so that x and f belong together (a caller builds its solution at x).
   (void)boost::math::tools::newton_raphson_iterate(g, guess, lo, hi, digits, n);
   r.converged = std::fabs(r.f) <= tol.f_abs || n < static_cast<std::uintmax_t>(tol.max_iterations);
+  return r;
+}
+
+/// Newton's method from a guess already close to a simple root (an explicit approximation of it),
+/// for f increasing and convex on [lo, hi] with the root inside; f_df(x) returns {f(x), f'(x)}.
+/// For such an f every step after the first lands at or above the root and descends to it, so
+/// clamping the iterates to [lo, hi] is the only safeguard needed. Converged when a step is at
+/// most tol.abs + tol.rel·|x| (x is then the iterate after that step, f the value before it) or
+/// |f| ≤ tol.f_abs (x the point evaluated); otherwise it stops after tol.max_iterations
+/// evaluations, or where f' ≤ 0, not converged. Without
+/// newton_root's set-up (Boost's digit count, bracket bookkeeping): for closed-form inverses
+/// whose guess is so good that one or two steps reach machine precision.
+template <class F>
+RootResult newton_polish(F&& f_df, double guess, double lo, double hi, const RootTolerance& tol = {}) {
+  RootResult r;
+  double x = std::min(std::max(guess, lo), hi);
+  while (r.iterations < tol.max_iterations) {
+    const std::pair<double, double> v = f_df(x);
+    ++r.iterations;
+    r.f = v.first;
+    if (std::fabs(v.first) <= tol.f_abs) {
+      r.converged = true;
+      break;
+    }
+    if (!(v.second > 0)) break;  // not increasing here: not the function this is for
+    const double step = v.first / v.second;
+    const double next = std::min(std::max(x - step, lo), hi);
+    const bool small = std::fabs(step) <= tol.abs + tol.rel * std::fabs(next);  // unclamped: a root beyond lo or hi is not one
+    x = next;
+    if (small) {
+      r.converged = true;
+      break;
+    }
+  }
+  r.x = x;
   return r;
 }
 

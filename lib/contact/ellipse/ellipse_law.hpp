@@ -53,8 +53,8 @@ struct EllipseLaw {
   }
 
   /// The h0 [m] that carries the load N [N] (inverse of force()): (N/k_e)^(2/3) up to N_y,
-  /// N/k_p + h_y/3 above for the capped law, a bracketed Newton solve for the yield law
-  /// (h0_for_force_yield_law). 0 for N = 0. Throws std::invalid_argument for N < 0 or NaN.
+  /// N/k_p + h_y/3 above for the capped law, for the yield law an explicit root polished by
+  /// Newton (h0_for_force_yield_law). 0 for N = 0. Throws std::invalid_argument for N < 0 or NaN.
   double h0_for_force(double N) const {
     if (!(N >= 0)) throw std::invalid_argument("h0_for_force: the normal load N must be >= 0 N");
     if (N == 0) return 0;
@@ -66,11 +66,23 @@ struct EllipseLaw {
     return h0_for_force_yield_law(N);
   }
   /// h0 above h_y for the yield law: the root u = √h0 of β k_e u³ + (1 − β) k_p (u² − h_y/3) = N,
-  /// increasing and convex in u, by Newton (core/roots.hpp) from an upper bound.
+  /// increasing and convex in u. Cardano's root of the cubic (or, just above h_y, a quadratic
+  /// approximation of it), then Newton steps (core/roots.hpp newton_polish) to machine precision.
   double h0_for_force_yield_law(double N) const;
 
   bool is_plastic_law() const { return std::isfinite(p_lim); }
 };
+
+/// The part of every ellipse's law that depends only on the material, for a solver that builds
+/// many laws of one material (the multi-Hertzian solver: one per potential ellipse and t_Y).
+struct LawMaterial {
+  double E_star = 0;          ///< [Pa] Material::E_star()
+  double p_lim = INFINITY;    ///< [Pa] EllipseLaw::p_lim: p_lim (capped law), p_y = 1.6 σ_y (yield law) or INFINITY
+  double beta = 0;            ///< [-] EllipseLaw::beta: 0 (capped or elastic) or kYieldLawSlope (yield law)
+};
+/// `mat` checked (Material::valid; throws std::invalid_argument with its message) and reduced to
+/// what an ellipse law needs (method.md §5, §5.1).
+LawMaterial law_material(const Material& mat);
 
 /// Build the law of an ellipse with curvature sums A, B [1/m] (eq. 1) for `mat`: λ = A/B, m, n, ρ
 /// (fast path, or the exact path when `exact`), k_e (eq. 8), and with a finite mat.p_lim the
@@ -80,6 +92,8 @@ struct EllipseLaw {
 /// [kLambdaMinExact, kLambdaMaxExact], non-finite A or B, and an invalid material
 /// (Material::is_valid).
 EllipseLaw make_ellipse_law(double A, double B, const Material& mat, bool exact = false);
+/// The same from the material's part, law_material(mat), computed once for many ellipses.
+EllipseLaw make_ellipse_law(double A, double B, const LawMaterial& mat, bool exact = false);
 
 /// One loaded ellipse at virtual penetration h0 (all SI). For h0 ≤ 0 everything is 0 (area_ratio 1).
 struct EllipseState {

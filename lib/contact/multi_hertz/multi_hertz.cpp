@@ -43,6 +43,7 @@ struct LawSlot {
 struct LawCache {
   std::uint64_t E = 0, nu = 0, E_rail = 0, nu_rail = 0, p_lim = 0, yield = 0;
   bool exact = false, yield_law = false;
+  LawMaterial lm;  // law_material() of the material of the key: checked once, not per law
   std::vector<LawSlot> slots;
   // Forget every slot when the material or the coefficient path changed.
   void key(const Material& m, bool ex, std::size_t ne) {
@@ -50,6 +51,7 @@ struct LawCache {
                       bits(m.nu_rail) == nu_rail && bits(m.p_lim) == p_lim && ex == exact &&
                       m.yield_law == yield_law && bits(m.yield_min()) == yield;
     if (!same) {
+      lm = law_material(m);  // first: an invalid material throws with the key unchanged
       E = bits(m.E); nu = bits(m.nu); E_rail = bits(m.E_rail); nu_rail = bits(m.nu_rail); p_lim = bits(m.p_lim);
       yield_law = m.yield_law; yield = bits(m.yield_min());
       exact = ex;
@@ -188,7 +190,7 @@ void solve_multi_hertz(const ContactGeometry& G, const Material& mat, double tY,
         c.hertzian = slot.hertzian;
         c.law = slot.law;
       } else {
-        c.law = make_ellipse_law(c.A, c.B, mat, opt.exact_coefficients);
+        c.law = make_ellipse_law(c.A, c.B, cache.lm, opt.exact_coefficients);
         slot.used = true;
         slot.A = bits(c.A);
         slot.B = bits(c.B);

@@ -448,6 +448,13 @@ TEST_CASE("an invalid material is a bug of the caller, not a non-Hertzian case",
   Material bad = steel();
   bad.nu = 0.7;  // Poisson's ratio outside (0, 0.5)
   CHECK_THROWS_AS(solve_multi_hertz(G, bad, 0.0, 50e3), std::invalid_argument);
+  // The material is checked once per material, where the law cache takes it (law_material):
+  // after a good material, the same bad material a second time, or at another t_Y, throws again
+  // (the cache keeps no half-taken key, so no law of the good material is reused for it).
+  REQUIRE(solve_multi_hertz(G, steel(), 0.0, 50e3).status == CaseStatus::Ok);
+  CHECK_THROWS_AS(solve_multi_hertz(G, bad, 0.0, 50e3), std::invalid_argument);
+  CHECK_THROWS_AS(solve_multi_hertz(G, bad, 0.0, 50e3), std::invalid_argument);
+  CHECK_THROWS_AS(solve_multi_hertz(G, bad, 1.0e-3, 60e3), std::invalid_argument);
   REQUIRE(solve_multi_hertz(G, steel(), 0.0, 50e3).status == CaseStatus::Ok);
 }
 

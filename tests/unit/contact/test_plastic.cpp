@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "contact/ellipse/ellipse_law.hpp"
 
@@ -300,4 +301,40 @@ TEST_CASE("yield law: the stiffness law equals the load of its flattened pressur
   Material el = mat;
   el.p_lim = INFINITY;
   CHECK_FALSE(make_ellipse_law(1.0, 2.0, el).is_plastic_law());
+}
+
+TEST_CASE("yield law: the inverse h0_for_force against a long-double bisection of its cubic", "[plastic][yield]") {
+  // Reference: the root u = √h0 of β k_e u³ + (1 − β) k_p (u² − h_y/3) = N (method.md §5.1; k_e,
+  // k_p, h_y, β of the law), bisected in long double over [0, u_hi], u_hi the larger of the two
+  // bounds each term gives alone (the other term is ≥ 0 above h_y), 200 halvings. Loads N from
+  // just above N_y to 10⁶ N_y, denser around ν = N/N_y = 1.556, where the library's first guess
+  // changes from a quadratic approximation to Cardano's root. Tolerance 1e-15 relative in h0
+  // (a few ulps: the library polishes its guess to a Newton step of 4 ε in u).
+  Material mat;
+  mat.E = 210e9;
+  mat.nu = 0.3;
+  mat.yield = 350e6;
+  mat.p_lim = p_lim_from_yield(mat.yield);
+  mat.yield_law = true;
+  std::vector<double> nus = {1.0 + 1e-13, 1.0 + 1e-9, 1.0 + 1e-6};
+  for (int i = 0; i <= 600; ++i) nus.push_back(std::pow(10.0, 6.0 * i / 600.0));
+  for (int i = -20; i <= 20; ++i) nus.push_back(1.5556 * (1.0 + 1e-3 * i));
+  for (double l : {1e-3, 0.1, 0.652, 1.0, 7.0, 300.0}) {
+    const EllipseLaw L = make_ellipse_law(l * 2.0, 2.0, mat, true);
+    const long double b = L.beta, ke = L.k_e, kp = L.k_p, hy = L.h_y;
+    for (double nu : nus) {
+      const double N = nu * L.N_y;
+      if (!(N > L.N_y)) continue;
+      const long double Nl = N;
+      auto g = [&](long double u) { return b * ke * u * u * u + (1 - b) * kp * (u * u - hy / 3) - Nl; };
+      long double lo = 0, hi = std::max(std::cbrt(Nl / (b * ke)), std::sqrt(Nl / ((1 - b) * kp) + hy / 3)) * 1.01L;
+      for (int k = 0; k < 200; ++k) {
+        const long double mid = 0.5L * (lo + hi);
+        (g(mid) < 0 ? lo : hi) = mid;
+      }
+      const double h0_ref = static_cast<double>(lo * lo);
+      CAPTURE(l, nu);
+      CHECK(rel(L.h0_for_force(N), h0_ref) <= 1e-15);
+    }
+  }
 }
