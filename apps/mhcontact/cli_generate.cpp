@@ -56,8 +56,8 @@ void generate(const GenerateArgs& a, CliContext& ctx) {
 void add_profile_generate_command(CLI::App& profile, CliContext& ctx) {
   auto a = std::make_shared<GenerateArgs>();
   CLI::App* c = profile.add_subcommand(
-      "generate", "write a standard profile (S1002 wheel; 60E1, 54E1 rails) generated from its definition");
-  c->add_option("NAME", a->name, "S1002 (wheel, EN 13715), 60E1 or 54E1 (rails, EN 13674-1)")->required();
+      "generate", "write a standard profile (S1002 wheel; 60E1, 54E1, 60E2, 49E1 rails; EN 15302 wheel A, rail A) generated from its definition");
+  c->add_option("NAME", a->name, "S1002 (wheel, EN 13715), 60E1, 54E1, 60E2 or 49E1 (rails, EN 13674-1), EN15302-wheel-A or EN15302-rail-A")->required();
   c->add_option("--inclination", a->inclination,
                 "rails: none (vertical, default), 1:N (1:40, 1:30, 1:20, N >= 5) or an angle (2.5deg), rotated about the crown top towards the "
                 "track centre; wheels: none only")

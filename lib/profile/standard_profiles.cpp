@@ -228,13 +228,19 @@ RailHeadDefinition rail_definition_mm(const std::string& name) {
   // EN 13674-1 heads (profiles.md "Rail 60E1"; rails-en13674.md for 60E2 and 49E1: the
   // EN 13674-1:2017 profiles as transcribed in rohrbecka/EN13674, P60E2.swift, P49E1.swift).
   // Junctions are given as |y| = w/2 of the published junction widths w.
+  // The head's lower corner (rails-en13674.md): flank, fillet R3 and the under-head line 1:2.75
+  // through (0, −51) (54E1: −49.4); 49E1: R2 and 1:3 through (0, −51.5).
   RailHeadDefinition d;
-  d.flank_n = 20, d.depth = 20;
+  d.flank_n = 20, d.depth = 20, d.fillet_R = 3, d.underhead_n = 2.75, d.underhead_z0 = -51;
   if (name == "60E1") d.R = {300, 80, 13}, d.y_junction = {10.228, 26.0265};
-  else if (name == "54E1") d.R = {300, 80, 13}, d.y_junction = {10.012, 24.8635};
+  else if (name == "54E1") d.R = {300, 80, 13}, d.y_junction = {10.012, 24.8635}, d.underhead_z0 = -49.4;
   else if (name == "60E2") d.R = {200, 70, 16, 8}, d.y_junction = {23.778 / 2, 48.913 / 2, 70.774 / 2};
-  else if (name == "49E1") d.R = {300, 80, 13}, d.y_junction = {15.267 / 2, 46.835 / 2}, d.flank_n = 17.2;
-  else throw std::logic_error("rail_definition_mm: " + name);
+  else if (name == "49E1") {
+    d.R = {300, 80, 13}, d.y_junction = {15.267 / 2, 46.835 / 2};
+    d.flank_n = 17.2, d.fillet_R = 2, d.underhead_n = 3, d.underhead_z0 = -51.5;
+  } else {
+    throw std::logic_error("rail_definition_mm: " + name);
+  }
   return d;
 }
 
@@ -271,6 +277,20 @@ RailHeadConstruction construct(const RailHeadDefinition& d) {
   c.yt = a.y1, c.zt = a.z1;
   c.z_end = -d.depth;
   c.y_end = c.yt + (c.zt - c.z_end) / d.flank_n;
+  // The fillet's centre lies R_f inside both the flank and the under-head line: with the outward
+  // unit normals n1 = (n, 1)/h of the flank (through the tangency point) and
+  // n2 = (1, −m)/√(1 + m²) of the under-head line (through (0, z0)), n_i · centre = n_i · P_i − R_f.
+  const double m = d.underhead_n, g = std::sqrt(1 + m * m), Rf = d.fillet_R;
+  const double a11 = d.flank_n / h, a12 = 1 / h, b1 = a11 * c.yt + a12 * c.zt - Rf;
+  const double a21 = 1 / g, a22 = -m / g, b2 = a22 * d.underhead_z0 - Rf;
+  const double det = a11 * a22 - a12 * a21;
+  RailArc& f = c.fillet;
+  f.R = Rf;
+  f.yc = (b1 * a22 - a12 * b2) / det;
+  f.zc = (a11 * b2 - b1 * a21) / det;
+  f.y0 = f.yc + Rf * a11, f.z0 = f.zc + Rf * a12;  // on the flank
+  f.y1 = f.yc + Rf, f.z1 = f.zc;                   // the vertical tangent
+  c.y_under = f.yc + Rf * a21, c.z_under = f.zc + Rf * a22;
   return c;
 }
 
@@ -485,6 +505,8 @@ RailHeadDefinition rail_head_definition(const std::string& name) {
   for (double& R : d.R) R *= units::mm;
   for (double& y : d.y_junction) y *= units::mm;
   d.depth *= units::mm;
+  d.fillet_R *= units::mm;
+  d.underhead_z0 *= units::mm;
   return d;
 }
 

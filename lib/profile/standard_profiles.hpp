@@ -84,13 +84,19 @@ double standard_profile_radius(const std::string& name, double y, int side = +1)
 /// (internal tangency: the new centre lies on the previous radius through the junction, at
 /// R_k − R_{k+1} from the previous centre). Arc 0 is centred on (0, −R[0]); arc k ends at
 /// |y| = y_junction[k]; the last arc ends where its tangent reaches the flank, inclined
-/// 1 : flank_n to the vertical, which runs down to `depth` below the crown top (the fillet and the
-/// under-head line lie lower, 35–40 mm below the top, out of reach of a wheel). Lengths [m].
+/// 1 : flank_n to the vertical, which the profiles continue down to `depth` below the crown top.
+/// Lower, the fillet rounds the head's corner where the flank meets the under-head line
+/// (1 : underhead_n to the horizontal, rising outwards, through (0, underhead_z0)): the
+/// construction derives it (60E1: from 35.3 mm below the top), the profiles leave it out, as a
+/// wheel cannot reach it (docs/profiles.md, "Rail 60E1"). Lengths [m].
 struct RailHeadDefinition {
   std::vector<double> R;           ///< [m] radii from the crown outwards (60E1: 300, 80, 13 mm)
   std::vector<double> y_junction;  ///< [m] |y| of the junction of arc k and k+1 (60E1: 10.228, 26.0265 mm)
   double flank_n = 20.0;           ///< flank inclination 1 : flank_n to the vertical (1:20; 49E1 1:17.2)
-  double depth = 0.020;            ///< [m] the flank ends this far below the crown top (default 20 mm)
+  double depth = 0.020;            ///< [m] the profiles' flank ends this far below the crown top (20 mm)
+  double fillet_R = 3e-3;          ///< [m] radius of the fillet at the head's lower corner (R3; 49E1 R2)
+  double underhead_n = 2.75;       ///< under-head line 1 : underhead_n to the horizontal (1:2.75; 49E1 1:3)
+  double underhead_z0 = -51e-3;    ///< [m] its height at y = 0 (60E1, 60E2 −51; 54E1 −49.4; 49E1 −51.5 mm)
 };
 
 /// One arc of the construction, field side (the gauge side is its mirror y → −y). Lengths [m].
@@ -105,12 +111,17 @@ struct RailArc {
 struct RailHeadConstruction {
   std::vector<RailArc> arcs;     ///< from the crown outwards (60E1: centres (0, −300), (7.5005, −80.1279), (23.0160, −14.9491) mm)
   double yt = 0, zt = 0;         ///< [m] last arc/flank tangency point (60E1: about 36.000, −14.300 mm)
-  double y_end = 0, z_end = 0;   ///< [m] end of the flank, `depth` below the crown top
+  double y_end = 0, z_end = 0;   ///< [m] end of the profiles' flank, `depth` below the crown top
+  /// The fillet, from its tangency point with the flank (y0, z0; 60E1: 37.049, −35.275 mm) to the
+  /// head's widest point (y1, z1: the vertical tangent, level with the centre); below that it
+  /// turns under the head to the under-head line (60E1: centre (34.052, −35.425) mm).
+  RailArc fillet;
+  double y_under = 0, z_under = 0;  ///< [m] the fillet's tangency point with the under-head line
 };
 
 /// The definitions of "60E1", "54E1", "60E2", "49E1" (InputError for other names).
 RailHeadDefinition rail_head_definition(const std::string& name);
-/// Centres, junction points and the tangency point from the definition.
+/// Centres, junction points, the tangency points and the fillet from the definition.
 RailHeadConstruction construct_rail_head(const RailHeadDefinition& d);
 
 }  // namespace mh

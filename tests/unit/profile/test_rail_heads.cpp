@@ -127,6 +127,44 @@ TEST_CASE("60E2, 49E1 (and 60E1, 54E1): every arc's centre and end point to 1e-4
   }
 }
 
+TEST_CASE("the head's lower corner: fillet centre and tangency points to 1e-4 mm, below what a wheel reaches", "[stdprof][rails]") {
+  // Reference: an independent construction (corner point K of the flank and the under-head line,
+  // the centre on the corner's bisector at R_f / sin(half the corner angle) from K, the tangency
+  // points at R_f / tan(half angle) from K along each edge), from the same definition
+  // (rails-en13674.md: flank 1:20, R3, under-head line 1:2.75 through (0, −51), 54E1 (0, −49.4);
+  // 49E1 1:17.2, R2, 1:3 through (0, −51.5)), evaluated in double precision on 28 Nov 2026 and
+  // printed to 4 decimals. The construction (construct_rail_head) solves the two offset lines.
+  struct Row {
+    const char* name;
+    double R, yc, zc, y_flank, z_flank, y_under, z_under;  // [mm]
+  };
+  const Row rows[] = {
+      {"60E1", 3, 34.0523, -35.4251, 37.0486, -35.2753, 35.0776, -38.2445},
+      {"54E1", 3, 33.0017, -34.2072, 35.9979, -34.0574, 34.0269, -37.0266},
+      {"60E2", 3, 34.0524, -35.4251, 37.0487, -35.2753, 35.0777, -38.2445},
+      {"49E1", 2, 32.9163, -38.4197, 34.9129, -38.3036, 33.5487, -40.3171},
+  };
+  const double tol = 1.0001 * kTol_mm * mm;  // the reference's rounding: ≤ 5e-5 mm
+  for (const Row& r : rows) {
+    CAPTURE(r.name);
+    const mh::RailHeadConstruction c = mh::construct_rail_head(mh::rail_head_definition(r.name));
+    const mh::RailArc& f = c.fillet;
+    CHECK(f.R == Approx(r.R * mm).margin(1e-15));
+    CHECK(f.yc == Approx(r.yc * mm).margin(tol));
+    CHECK(f.zc == Approx(r.zc * mm).margin(tol));
+    CHECK(f.y0 == Approx(r.y_flank * mm).margin(tol));
+    CHECK(f.z0 == Approx(r.z_flank * mm).margin(tol));
+    CHECK(c.y_under == Approx(r.y_under * mm).margin(tol));
+    CHECK(c.z_under == Approx(r.z_under * mm).margin(tol));
+    CHECK(f.y1 == Approx((r.yc + r.R) * mm).margin(tol));  // the widest point, level with the centre
+    CHECK(f.z1 == Approx(r.zc * mm).margin(tol));
+    // The fillet starts below the flank the profiles keep (20 mm) and below the region a read
+    // rail keeps as touchable (ProfileCheckLimits::kRailContactDepth_mm, 25 mm).
+    CHECK(f.z0 < -mh::ProfileCheckLimits::kRailContactDepth_mm * mm);
+    CHECK(f.z0 < c.z_end);
+  }
+}
+
 TEST_CASE("60E2 and 49E1 generated: junctions are nodes, value and slope continuous, symmetric", "[stdprof][rails]") {
   for (const std::string name : {"60E2", "49E1"}) {
     CAPTURE(name);
