@@ -26,10 +26,19 @@ struct WindowDirection {
   double theta = 0, c = 1, s = 0;
 };
 
+/// The least-squares circle-or-line of one window in its local frame, before the node's z, slope
+/// and kappa are taken from it (finish_fit): a window that only competes by its residual (the
+/// one-sided windows) needs no more.
+struct WindowFit {
+  bool solved = false;
+  double rms = std::numeric_limits<double>::infinity();
+  double alpha = 0, beta = 0, delta = 0, theta = 0, c = 1, s = 0, yc = 0, zc = 0;
+};
+
 // Fit points [i0, i1) around (yc, zc) in a frame rotated to the window's chord direction.
-LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, std::size_t i0,
-                    std::size_t i1, double yc, double zc, WindowDirection& dir) {
-  LocalFit f;
+WindowFit solve_window(const std::vector<double>& y, const std::vector<double>& z, std::size_t i0,
+                       std::size_t i1, double yc, double zc, WindowDirection& dir) {
+  WindowFit f;
   const std::size_t n = i1 - i0;
   if (n < 3) return f;
   if (dir.i0 != i0 || dir.i1 != i1) {
@@ -104,6 +113,17 @@ LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, 
     ss += e * e;
   }
   f.rms = std::sqrt(ss / static_cast<double>(n));
+  f.solved = true;
+  f.alpha = alpha, f.beta = beta, f.delta = delta, f.theta = theta, f.c = c, f.s = s, f.yc = yc, f.zc = zc;
+  return f;
+}
+
+// The node's z, slope and kappa from its window's circle-or-line.
+LocalFit finish_fit(const WindowFit& w) {
+  LocalFit f;
+  if (!w.solved) return f;
+  f.rms = w.rms;
+  const double alpha = w.alpha, beta = w.beta, delta = w.delta, theta = w.theta, c = w.c, s = w.s, yc = w.yc, zc = w.zc;
   // Curve point at u = 0: alpha v² − v + delta = 0, the small root (stable form).
   const double disc = 1.0 - 4.0 * alpha * delta;
   if (disc <= 0) return f;
@@ -122,6 +142,11 @@ LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, 
   f.slope = slope_p + zpp * (yc - yp);
   f.ok = std::isfinite(f.z) && std::isfinite(f.slope) && std::isfinite(f.kappa);
   return f;
+}
+
+LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, std::size_t i0, std::size_t i1,
+                    double yc, double zc, WindowDirection& dir) {
+  return finish_fit(solve_window(y, z, i0, i1, yc, zc, dir));
 }
 
 }  // namespace
@@ -275,12 +300,17 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w, bo
     std::size_t r0 = ilo, r1 = upper_at(S, sc + 2 * w, at_r1);
     widen(l0, l1, -1);
     widen(r0, r1, +1);
-    const LocalFit left = fit_window(Y, Z, l0, l1, yc, zc, dir_left);
-    const LocalFit right = fit_window(Y, Z, r0, r1, yc, zc, dir_right);
-    const LocalFit& one = (left.rms <= right.rms) ? left : right;
-    if (!best.ok || (one.ok && best.rms > opt.residual_floor && best.rms > opt.one_sided_factor * one.rms)) {
-      best = one;
-      side = (&one == &left) ? -1 : +1;
+    const WindowFit left = solve_window(Y, Z, l0, l1, yc, zc, dir_left);
+    const WindowFit right = solve_window(Y, Z, r0, r1, yc, zc, dir_right);
+    const WindowFit& one = (left.rms <= right.rms) ? left : right;
+    // The better one-sided fit replaces a failed centred one, or one whose residual is above the
+    // floor and one_sided_factor times its own when it gives a point (only then is it finished).
+    if (!best.ok || (best.rms > opt.residual_floor && best.rms > opt.one_sided_factor * one.rms)) {
+      const LocalFit f = finish_fit(one);
+      if (!best.ok || f.ok) {
+        best = f;
+        side = (&one == &left) ? -1 : +1;
+      }
     }
     if (!best.ok)
       throw InputError(where, "y = " + std::to_string(yc * 1e3) + " mm",
