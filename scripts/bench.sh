@@ -39,3 +39,5 @@ ls -la "$tmp/out" | awk 'NR>1{print "  " $5 " bytes  " $9}'
 ./build/mhcontact_bench_grid . 3
 # The wheelset: one pair, and a fleet of 1000 wheels with its CPU time per wheel by stage.
 ./build/mhcontact_bench_wheelset 1000
+# The wheelset fleet of measured files through the command (CPU per wheel, 10,000 on 2 cores).
+bash scripts/bench_fleet.sh 1000 5

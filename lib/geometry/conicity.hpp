@@ -12,8 +12,11 @@
 // Δr is a table (y_k, Δr_k), linear between its points, so S is exactly piecewise quadratic.
 // The end singularities of the integrand (1/√ at both turning points) are removed by
 // y = m + ŷ sin θ (m = (y1 + y2)/2), which leaves a bounded integrand on θ ∈ [−π/2, π/2];
-// adaptive Gauss–Kronrod (Boost.Math) integrates it, S(y2) − S(y) is evaluated from the local
-// quadratic where both points share a table interval (no cancellation next to y2). The turning
+// it is integrated by Gauss–Kronrod (Boost.Math) on spans of the table split at rows only (S is
+// one quadratic between two rows, the integrand analytic there): a span is accepted when its two
+// halves agree with it, else split down to one interval, which the adaptive rule finishes;
+// S(y2) − S(y) from the nearer turning point and from the local quadratic where both points
+// share a table interval (no cancellation next to y2). The turning
 // points come from TOMS 748 (Boost.Math) on S(y2) − S(y2 − 2ŷ) = 0, y2 ∈ [y0, y0 + 2ŷ], with
 // y0 the minimum of S (where Δr changes sign from − to +, the one nearest y = 0).
 #include <string>
@@ -23,8 +26,8 @@ namespace mh {
 
 /// Options with their documented defaults.
 struct ConicityOptions {
-  double quadrature_tolerance = 1e-7;   ///< relative error goal of I (default 1e-7: tan γe to 2e-7 relative)
-  unsigned quadrature_depth = 15;       ///< largest bisection depth of the adaptive quadrature (default 15)
+  double quadrature_tolerance = 1e-7;   ///< relative error goal of I on each span, so of I (default 1e-7: tan γe to 2e-7 relative)
+  unsigned quadrature_depth = 15;       ///< largest bisection depth of the adaptive quadrature on one table interval (default 15)
   /// [m] turning points located to this (default 1e-12 m; tan γe moves by < 1e-9).
   double turning_point_tolerance = 1e-12;
 };

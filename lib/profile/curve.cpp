@@ -26,10 +26,19 @@ struct WindowDirection {
   double theta = 0, c = 1, s = 0;
 };
 
+/// The least-squares circle-or-line of one window in its local frame, before the node's z, slope
+/// and kappa are taken from it (finish_fit): a window that only competes by its residual (the
+/// one-sided windows) needs no more.
+struct WindowFit {
+  bool solved = false;
+  double rms = std::numeric_limits<double>::infinity();
+  double alpha = 0, beta = 0, delta = 0, theta = 0, c = 1, s = 0, yc = 0, zc = 0;
+};
+
 // Fit points [i0, i1) around (yc, zc) in a frame rotated to the window's chord direction.
-LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, std::size_t i0,
-                    std::size_t i1, double yc, double zc, WindowDirection& dir) {
-  LocalFit f;
+WindowFit solve_window(const std::vector<double>& y, const std::vector<double>& z, std::size_t i0,
+                       std::size_t i1, double yc, double zc, WindowDirection& dir) {
+  WindowFit f;
   const std::size_t n = i1 - i0;
   if (n < 3) return f;
   if (dir.i0 != i0 || dir.i1 != i1) {
@@ -104,6 +113,17 @@ LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, 
     ss += e * e;
   }
   f.rms = std::sqrt(ss / static_cast<double>(n));
+  f.solved = true;
+  f.alpha = alpha, f.beta = beta, f.delta = delta, f.theta = theta, f.c = c, f.s = s, f.yc = yc, f.zc = zc;
+  return f;
+}
+
+// The node's z, slope and kappa from its window's circle-or-line.
+LocalFit finish_fit(const WindowFit& w) {
+  LocalFit f;
+  if (!w.solved) return f;
+  f.rms = w.rms;
+  const double alpha = w.alpha, beta = w.beta, delta = w.delta, theta = w.theta, c = w.c, s = w.s, yc = w.yc, zc = w.zc;
   // Curve point at u = 0: alpha v² − v + delta = 0, the small root (stable form).
   const double disc = 1.0 - 4.0 * alpha * delta;
   if (disc <= 0) return f;
@@ -122,6 +142,11 @@ LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, 
   f.slope = slope_p + zpp * (yc - yp);
   f.ok = std::isfinite(f.z) && std::isfinite(f.slope) && std::isfinite(f.kappa);
   return f;
+}
+
+LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, std::size_t i0, std::size_t i1,
+                    double yc, double zc, WindowDirection& dir) {
+  return finish_fit(solve_window(y, z, i0, i1, yc, zc, dir));
 }
 
 }  // namespace
@@ -215,9 +240,23 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w, bo
   // short a window as the tread.
   std::vector<double> S(n, 0.0);
   for (std::size_t i = 1; i < n; ++i) S[i] = S[i - 1] + std::hypot(Y[i] - Y[i - 1], Z[i] - Z[i - 1]);
-  auto lower = [&](double v) { return static_cast<std::size_t>(std::lower_bound(S.begin(), S.end(), v) - S.begin()); };
-  auto upper = [&](double v) { return static_cast<std::size_t>(std::upper_bound(S.begin(), S.end(), v) - S.begin()); };
-  auto upper_y = [&](double v) { return static_cast<std::size_t>(std::upper_bound(Y.begin(), Y.end(), v) - Y.begin()); };
+  // std::lower_bound / upper_bound of v, walked from where the same search stopped at the previous
+  // node (`at`): the nodes advance by less than a point spacing, so a step or two instead of a
+  // binary search; the same index (the walk stops where the bound's definition holds; NaN, which
+  // compares false to everything, takes the binary search).
+  auto lower_at = [&](const std::vector<double>& A, double v, std::size_t& at) {
+    if (std::isnan(v)) return at = static_cast<std::size_t>(std::lower_bound(A.begin(), A.end(), v) - A.begin());
+    while (at > 0 && A[at - 1] >= v) --at;
+    while (at < A.size() && A[at] < v) ++at;
+    return at;
+  };
+  auto upper_at = [&](const std::vector<double>& A, double v, std::size_t& at) {
+    if (std::isnan(v)) return at = static_cast<std::size_t>(std::upper_bound(A.begin(), A.end(), v) - A.begin());
+    while (at > 0 && A[at - 1] > v) --at;
+    while (at < A.size() && A[at] <= v) ++at;
+    return at;
+  };
+  std::size_t at_c0 = 0, at_c1 = 0, at_l0 = 0, at_r1 = 0, at_sc = 0, at_y = 0;
   // Widen [i0, i1) symmetrically (within the data) until it holds min_points.
   auto widen = [&](std::size_t& i0, std::size_t& i1, int dir) {
     const std::size_t need = static_cast<std::size_t>(opt.min_points);
@@ -234,7 +273,7 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w, bo
   for (std::size_t j = 0; j < m; ++j) {
     const double yc = y_first + h_ * static_cast<double>(j_lo + j);
     // Linear interpolation of the raw points as the local origin height.
-    std::size_t k = std::min(std::max<std::size_t>(upper_y(yc), 1), n - 1);
+    std::size_t k = std::min(std::max<std::size_t>(upper_at(Y, yc, at_y), 1), n - 1);
     const double t = (yc - Y[k - 1]) / (Y[k] - Y[k - 1]);
     const double zc = Z[k - 1] + t * (Z[k] - Z[k - 1]);
     const double sc = S[k - 1] + t * (S[k] - S[k - 1]);
@@ -243,7 +282,7 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w, bo
     if (centred && !centred_only) {
       best = (*centred)[j];
     } else {
-      std::size_t c0 = lower(sc - w), c1 = upper(sc + w);
+      std::size_t c0 = lower_at(S, sc - w, at_c0), c1 = upper_at(S, sc + w, at_c1);
       widen(c0, c1, 0);
       best = fit_window(Y, Z, c0, c1, yc, zc, dir_centred);
     }
@@ -255,18 +294,23 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w, bo
     int side = 0;
     // One-sided windows reach one data point past yc, so that a window on the wrong side of a
     // junction always holds a point of the other arc (and shows it in its residual).
-    const std::size_t ihi = std::min(upper(sc), n - 1);
+    const std::size_t ihi = std::min(upper_at(S, sc, at_sc), n - 1);
     const std::size_t ilo = ihi > 0 ? ihi - 1 : 0;
-    std::size_t l0 = lower(sc - 2 * w), l1 = ihi + 1;
-    std::size_t r0 = ilo, r1 = upper(sc + 2 * w);
+    std::size_t l0 = lower_at(S, sc - 2 * w, at_l0), l1 = ihi + 1;
+    std::size_t r0 = ilo, r1 = upper_at(S, sc + 2 * w, at_r1);
     widen(l0, l1, -1);
     widen(r0, r1, +1);
-    const LocalFit left = fit_window(Y, Z, l0, l1, yc, zc, dir_left);
-    const LocalFit right = fit_window(Y, Z, r0, r1, yc, zc, dir_right);
-    const LocalFit& one = (left.rms <= right.rms) ? left : right;
-    if (!best.ok || (one.ok && best.rms > opt.residual_floor && best.rms > opt.one_sided_factor * one.rms)) {
-      best = one;
-      side = (&one == &left) ? -1 : +1;
+    const WindowFit left = solve_window(Y, Z, l0, l1, yc, zc, dir_left);
+    const WindowFit right = solve_window(Y, Z, r0, r1, yc, zc, dir_right);
+    const WindowFit& one = (left.rms <= right.rms) ? left : right;
+    // The better one-sided fit replaces a failed centred one, or one whose residual is above the
+    // floor and one_sided_factor times its own when it gives a point (only then is it finished).
+    if (!best.ok || (best.rms > opt.residual_floor && best.rms > opt.one_sided_factor * one.rms)) {
+      const LocalFit f = finish_fit(one);
+      if (!best.ok || f.ok) {
+        best = f;
+        side = (&one == &left) ? -1 : +1;
+      }
     }
     if (!best.ok)
       throw InputError(where, "y = " + std::to_string(yc * 1e3) + " mm",

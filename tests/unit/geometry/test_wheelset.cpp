@@ -22,9 +22,9 @@ namespace {
 constexpr double mm = 1e-3;
 
 struct Table { std::vector<double> x, v; };
-/// First two columns of a CSV with a header line (tests/data/en15302/).
-Table read_table(const std::string& name) {
-  std::ifstream in(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/en15302/" + name);
+/// First two columns of a CSV with a header line (tests/data/en15302/, or `dir`).
+Table read_table(const std::string& name, const std::string& dir = "en15302") {
+  std::ifstream in(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/" + dir + "/" + name);
   REQUIRE(in.good());
   Table t;
   std::string line;
@@ -115,6 +115,38 @@ TEST_CASE("conicity: a two-slope Δr against its closed form", "[wheelset][conic
     dr.push_back(u <= b ? 2 * l1 * y : std::copysign(2 * l1 * b + 2 * l2 * (u - b), y));
   }
   CHECK(mh::EquivalentConicity(ys, dr).at(A).tan_gamma_e == Approx(ref).epsilon(1e-5));
+}
+
+TEST_CASE("conicity of a rough measured Δr against 30-digit quadrature", "[wheelset][conicity]") {
+  // Δr of a measured MiniProf wheel on EN 15302 rail A (801 rows, 0.02 mm: a kink at every row)
+  // and tan γe at the 28 of 33 amplitudes where the oscillation exists, by scripts/conicity_reference.py (mpmath, 30 digits: its own S,
+  // turning points and tanh–sinh on every table interval; tests/data/conicity/README.md).
+  // Tolerance 1e-7 relative: the goal of I is 1e-7 (tan γe 2e-7), met here with a factor 5 to
+  // spare; the adaptive rule over the whole θ range at once missed it (1.9e-7 at 1.8 mm).
+  const Table D = read_table("mbench_s1002_v3_rail_a_delta_r.csv", "conicity");
+  std::vector<double> ys, dr;
+  for (std::size_t i = 0; i < D.x.size(); ++i) ys.push_back(D.x[i] * mm), dr.push_back(D.v[i] * mm);
+  const mh::EquivalentConicity C(ys, dr);
+  // amplitude_mm, tan_gamma_e, well_posed: only where the oscillation exists (S below S(y2)
+  // between the turning points; 28 of the 33).
+  std::ifstream in(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/conicity/mbench_s1002_v3_rail_a_conicity.csv");
+  REQUIRE(in.good());
+  Table K;
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    double a = 0, t = 0;
+    int ok = 0;
+    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%d", &a, &t, &ok) == 3);
+    if (ok) K.x.push_back(a), K.v.push_back(t);
+  }
+  REQUIRE(K.x.size() == 28);
+  for (std::size_t i = 0; i < K.x.size(); ++i) {
+    INFO("amplitude " << K.x[i] << " mm");
+    const mh::ConicityResult c = C.at(K.x[i] * mm);
+    REQUIRE(c.status == "ok");
+    CHECK(std::fabs(c.tan_gamma_e / K.v[i] - 1) <= 1e-7);
+  }
 }
 
 TEST_CASE("EN 15302 wheel A on rail A: Δr and tan γe reproduce the standard's tables", "[wheelset][en15302]") {
