@@ -16,6 +16,9 @@ namespace mh {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kMaxIterations = 200;
+/// A maximum of S between the turning points higher than S(y2) by more than this fraction of the
+/// well's depth S(y2) − S(y0) is real, not rounding (S is exact to ~1e-16 of its values).
+constexpr double kNoOscillation = 1e-9;
 }  // namespace
 
 double en15302_window(double t) { return std::min(0.05, 0.5 * t); }
@@ -122,6 +125,30 @@ ConicityResult EquivalentConicity::at(double A) const {
   // range at once. Each span meets the relative goal, so I does.
   const std::size_t k1 = interval(y1), k2 = interval(y2);
   const double S2 = S_in(y2, k2), S1 = S_in(y1, k1);
+  // S(y2) − S(y) for y in table interval k, with S(y1) = S(y2) (the turning points' definition):
+  // from the nearer turning point, so that the difference does not cancel next to it; within the
+  // turning point's own interval ∫ of the linear Δr is (b − a) times Δr at the midpoint.
+  auto below_turning = [&](double y, std::size_t k) {
+    const double sl = (dr_[k + 1] - dr_[k]) / (y_[k + 1] - y_[k]);
+    if (y >= m) return k == k2 ? (y2 - y) * (dr_[k] + sl * (0.5 * (y + y2) - y_[k])) : S2 - S_in(y, k);
+    return k == k1 ? -(y - y1) * (dr_[k] + sl * (0.5 * (y1 + y) - y_[k])) : S1 - S_in(y, k);
+  };
+  // The wheelset swings between y1 and y2 only if S stays below S(y2) between them (the integrand
+  // is real): S' = Δr, so S's maxima lie where Δr, linear on each interval, falls through zero.
+  // A maximum above the turning level by more than the rounding (kNoOscillation of the well's
+  // depth S(y2) − S(y0)) stops the wheelset short of y1 or y2: no oscillation of amplitude ŷ.
+  {
+    const double depth = S2 - S(y0_);
+    for (std::size_t k = k1; k <= k2; ++k) {
+      if (!(dr_[k] > 0 && dr_[k + 1] <= 0)) continue;
+      const double y = y_[k] + dr_[k] / (dr_[k] - dr_[k + 1]) * (y_[k + 1] - y_[k]);
+      if (!(y > y1 && y < y2)) continue;
+      if (below_turning(y, k) < -kNoOscillation * depth) {
+        r.status = "no_oscillation";
+        return r;
+      }
+    }
+  }
   const double half = units::pi / 2, tol = opt_.quadrature_tolerance;
   using GK = boost::math::quadrature::gauss_kronrod<double, 15>;
   // Gauss–Kronrod over θ ∈ [θa, θb], which spans table intervals ka … kb (err: |Kronrod − Gauss|),
@@ -130,15 +157,9 @@ ConicityResult EquivalentConicity::at(double A) const {
     if (err) *err = 0;
     if (!(tb > ta)) return 0.0;
     auto g = [&](double th) {
-      // S(y2) − S(y), with S(y1) = S(y2) (the turning points' definition): from the nearer
-      // turning point, so that the difference does not cancel next to it; within the turning
-      // point's own interval ∫ of the linear Δr is (b − a) times Δr at the midpoint.
       const double y = std::clamp(m + A * std::sin(th), y1, y2);
       const std::size_t k = ka == kb ? ka : std::clamp(interval(y), ka, kb);
-      const double sl = (dr_[k + 1] - dr_[k]) / (y_[k + 1] - y_[k]);
-      double d;
-      if (y >= m) d = k == k2 ? (y2 - y) * (dr_[k] + sl * (0.5 * (y + y2) - y_[k])) : S2 - S_in(y, k);
-      else d = k == k1 ? -(y - y1) * (dr_[k] + sl * (0.5 * (y1 + y) - y_[k])) : S1 - S_in(y, k);
+      const double d = below_turning(y, k);
       if (!(d > 0)) return 0.0;  // only at θ = ±π/2 to rounding, where the limit is finite and the weight 0
       return A * std::cos(th) / std::sqrt(d);
     };

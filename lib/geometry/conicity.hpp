@@ -38,7 +38,9 @@ struct ConicityResult {
   double y1 = 0, y2 = 0;    ///< [m] turning points
   double I = 0;             ///< I(ŷ) (dimensionless)
   /// "ok"; "out_of_range": the turning points lie outside the Δr table; "no_centre": Δr does not
-  /// change sign from − to + in the table (no equilibrium position).
+  /// change sign from − to + in the table (no equilibrium position); "no_oscillation": S rises
+  /// above S(y2) between the turning points (y1, y2 given), so the wheelset cannot swing between
+  /// them: no tan γe at this amplitude.
   std::string status = "ok";
 };
 

@@ -91,6 +91,36 @@ TEST_CASE("conicity of a cone: tan γe = λ at every amplitude, symmetric and of
   CHECK(mh::EquivalentConicity(ys, dr).at(3 * mm).status == "no_centre");
 }
 
+TEST_CASE("conicity: no tan γe where S rises above the turning level between the turning points", "[wheelset][conicity]") {
+  // Δr = 2λ y (y − p)(y − q)/(p q), 0 < p < q: S(y) = (2λ/(p q)) (y⁴/4 − (p + q) y³/3 + p q y²/2)
+  // has its minimum at y0 = 0, a maximum at p and a second, higher minimum at q (p = 2, q = 3.5
+  // mm: S(q) − S(0) is 0.54 of S(p) − S(0)). Where the turning
+  // points enclose p and S(p) > S(y2), the wheelset would turn back at the hump before reaching
+  // y2: no oscillation of that amplitude exists, and the status says so (no number). The closed
+  // form decides, at the turning points the code reports (which it checks: S(y1) = S(y2)).
+  const double lambda = 0.05, p = 2 * mm, q = 3.5 * mm;
+  auto S = [&](double y) { return 2 * lambda / (p * q) * (y * y * y * y / 4 - (p + q) * y * y * y / 3 + p * q * y * y / 2); };
+  std::vector<double> ys = sweep_y(), dr;
+  for (double y : ys) dr.push_back(2 * lambda * y * (y - p) * (y - q) / (p * q));
+  const mh::EquivalentConicity C(ys, dr);
+  int n_ok = 0, n_none = 0;
+  for (double A_mm = 0.5; A_mm <= 5.51; A_mm += 0.25) {
+    CAPTURE(A_mm);
+    const mh::ConicityResult r = C.at(A_mm * mm);
+    REQUIRE((r.status == "ok" || r.status == "no_oscillation"));
+    const double depth = S(r.y2) - S(0);
+    REQUIRE(depth > 0);
+    CHECK(S(r.y1) == Approx(S(r.y2)).margin(1e-3 * depth));  // the table's S: the trapezoid rule's
+    const bool hump = r.y1 < p && p < r.y2 && S(p) > S(r.y2);
+    if (std::fabs(S(p) - S(r.y2)) < 1e-3 * depth) continue;  // at the boundary the table's S decides
+    CHECK(r.status == (hump ? "no_oscillation" : "ok"));
+    CHECK(std::isfinite(r.tan_gamma_e) == !hump);
+    (hump ? n_none : n_ok)++;
+  }
+  CHECK(n_ok >= 3);
+  CHECK(n_none >= 3);
+}
+
 TEST_CASE("conicity: a two-slope Δr against its closed form", "[wheelset][conicity]") {
   // Δr = 2 λ1 y for |y| ≤ b, steeper (2 λ2) beyond: S is λ1 y² inside and a second parabola
   // outside, continuous with its slope. Reference: I from S written in closed form, integrated
