@@ -6,7 +6,8 @@ sign from − to +, nearest y = 0, as docs/wheelset.md states), I = ∫ dy / √
 tanh–sinh on every table interval (S(y2) − S(y) taken from the nearer turning point), tan γe = π²/I².
 Usage: conicity_reference.py DELTA_R.csv AMPLITUDE_mm... > reference.csv
 DELTA_R.csv: columns y_mm, delta_r_mm (header line). Prints amplitude_mm,tan_gamma_e,
-well_posed (0 where S rises above S(y2) between the turning points: no oscillation exists)."""
+well_posed (0 where S rises above S(y2) between the turning points, by more than 1e-25 m²:
+no oscillation exists)."""
 import bisect, csv, sys
 import mpmath as mp
 
@@ -48,7 +49,16 @@ for a in sys.argv[2:]:
     for p, q in zip(pts[:-1], pts[1:]):
         k = interval((p + q) / 2)
         top = lambda x: S2 if x >= m else S1
-        if top((p + q) / 2) - S_at((p + q) / 2, k) <= 0:
+        # S is one quadratic on the piece: its largest value is at an end or where Δr = 0. The
+        # turning points themselves are where S meets the level by definition (a piece of zero
+        # width at a turning point that is a table row has nothing inside).
+        sl = (dr[k + 1] - dr[k]) / (y[k + 1] - y[k])
+        cand = [x for x in (p, q) if x != y1 and x != y2]
+        if sl != 0:
+            v = y[k] - dr[k] / sl
+            if p < v < q:
+                cand.append(v)
+        if any(top(x) - S_at(x, k) < -mp.mpf('1e-25') for x in cand):
             ok = False
         I += mp.quad(lambda x: (lambda d: 1 / mp.sqrt(d) if d > 0 else mp.mpf(0))(top(x) - S_at(x, k)), [p, q])
     print('%s,%s,%d' % (a, mp.nstr(mp.pi ** 2 / I ** 2, 20), ok))

@@ -149,7 +149,7 @@ TEST_CASE("conicity: a two-slope Δr against its closed form", "[wheelset][conic
 
 TEST_CASE("conicity of a rough measured Δr against 30-digit quadrature", "[wheelset][conicity]") {
   // Δr of a measured MiniProf wheel on EN 15302 rail A (801 rows, 0.02 mm: a kink at every row)
-  // and tan γe at the 28 of 33 amplitudes where the oscillation exists, by scripts/conicity_reference.py (mpmath, 30 digits: its own S,
+  // and tan γe at its 33 amplitudes (an oscillation exists at each), by scripts/conicity_reference.py (mpmath, 30 digits: its own S,
   // turning points and tanh–sinh on every table interval; tests/data/conicity/README.md).
   // Tolerance 1e-7 relative: the goal of I is 1e-7 (tan γe 2e-7), met here with a factor 5 to
   // spare; the adaptive rule over the whole θ range at once missed it (1.9e-7 at 1.8 mm).
@@ -157,8 +157,7 @@ TEST_CASE("conicity of a rough measured Δr against 30-digit quadrature", "[whee
   std::vector<double> ys, dr;
   for (std::size_t i = 0; i < D.x.size(); ++i) ys.push_back(D.x[i] * mm), dr.push_back(D.v[i] * mm);
   const mh::EquivalentConicity C(ys, dr);
-  // amplitude_mm, tan_gamma_e, well_posed: only where the oscillation exists (S below S(y2)
-  // between the turning points; 28 of the 33).
+  // amplitude_mm, tan_gamma_e, well_posed (S below S(y2) between the turning points: all 33).
   std::ifstream in(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/conicity/mbench_s1002_v3_rail_a_conicity.csv");
   REQUIRE(in.good());
   Table K;
@@ -170,7 +169,7 @@ TEST_CASE("conicity of a rough measured Δr against 30-digit quadrature", "[whee
     REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%d", &a, &t, &ok) == 3);
     if (ok) K.x.push_back(a), K.v.push_back(t);
   }
-  REQUIRE(K.x.size() == 28);
+  REQUIRE(K.x.size() == 33);
   for (std::size_t i = 0; i < K.x.size(); ++i) {
     INFO("amplitude " << K.x[i] << " mm");
     const mh::ConicityResult c = C.at(K.x[i] * mm);
