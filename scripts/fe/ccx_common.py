@@ -33,7 +33,7 @@ def run(name):
     deck = open(name + ".inp").read()
     if os.path.exists(name + ".inp.done") and open(name + ".inp.done").read() == deck:
         return
-    env = dict(os.environ, OMP_NUM_THREADS="1")
+    env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
     p = subprocess.run(["nice", "-n", "10", "ccx", "-i", os.path.abspath(name)], env=env, capture_output=True, text=True,
                        cwd=os.path.dirname(os.path.abspath(name)))   # ccx writes spooles.out etc. into its cwd
     if "Job finished" not in p.stdout:

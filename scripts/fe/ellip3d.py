@@ -33,9 +33,10 @@ CONTACT = 1.6          # gap elements on [0, CONTACT a] x [0, CONTACT b]
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def build(A, B, a, b, n, steps, sy, name):
+def build(A, B, a, b, n, steps, sy, name, kpen=K_PEN):
     """Writes name.inp: block [0, L]^2 x [-L, 0], n elements per semi-axis a, b of the elastic
-    patch, one step per flat displacement in `steps` [mm]. sy None: elastic."""
+    patch, one step per flat displacement in `steps` [mm]. sy None: elastic. kpen: penalty slope
+    [MPa/mm] of the contact."""
     hx, hy = a / n, b / n
     hz = min(hx, hy)
     L = L_OVER_A * a
@@ -101,7 +102,7 @@ def build(A, B, a, b, n, steps, sy, name):
             w(", ".join(map(str, tops[kk:kk + 12])) + ",\n")
         w("*SURFACE, NAME=SLAVE\nTOPEL, S2\n*SURFACE, NAME=MASTER\nRIGID, S1\n")
         w("*CONTACT PAIR, INTERACTION=SI, TYPE=NODE TO SURFACE\nSLAVE, MASTER\n")
-        w(f"*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{K_PEN:g}, 0.1\n")
+        w(f"*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{kpen:.6g}, 0.1\n")
         w(f"*MATERIAL, NAME=STEEL\n*ELASTIC\n{E:g}, {NU:g}\n")
         if sy is not None:
             w(f"*PLASTIC\n{sy:g}, 0.0\n")
@@ -114,7 +115,7 @@ def build(A, B, a, b, n, steps, sy, name):
             w(f"*BOUNDARY\nRIGN, 3, 3, {-dz:.10g}\n")
             w("*NODE PRINT, NSET=CENTER\nU\n*NODE PRINT, NSET=RIGN, TOTALS=ONLY\nRF\n*NODE PRINT, NSET=AXES\nU\n")
             w("*CONTACT FILE\nCSTR\n*EL FILE\nS" + (", PEEQ" if sy is not None else "") + "\n*END STEP\n")
-    return dict(steps=list(steps), AB=(A, B), coord=coord, clr=clr, body_max=body_max, nodes=body_max, elements=ne, h=(hx, hy, hz), L=L)
+    return dict(kpen=kpen, steps=list(steps), AB=(A, B), coord=coord, clr=clr, body_max=body_max, nodes=body_max, elements=ne, h=(hx, hy, hz), L=L)
 
 
 def parse_dat(name, info):
@@ -218,18 +219,38 @@ def rows_of(name, info, sy):
 
 
 def pair_curvatures(Rw, Rr):
-    """Body curvature sums (half the pair's): A along x (the larger semi-axis), B along y."""
-    A, B = 1 / (4 * Rw), 1 / (4 * Rr)
-    if A > B:
-        sys.exit("give Rw >= Rr (a along x)")
-    return A, B
+    """Body curvature sums (half the pair's) from the pair's principal relative radii: Rw along the
+    rolling direction, Rr across it (crossed cylinders: the wheel's rolling radius and the rail's
+    profile radius; in general 1/Rr = 1/R_rail,transverse + 1/R_wheel,transverse). The model's x
+    axis carries the smaller curvature A (the larger semi-axis a), y the larger B: x is the rolling
+    direction when Rw >= Rr, the transverse one otherwise (a patch wider than long)."""
+    cw, cr = 1 / (4 * Rw), 1 / (4 * Rr)
+    return min(cw, cr), max(cw, cr)
 
 
-def elastic_deck(A, B, p0, n, tag):
+def hertz_table(Rw, Rr):
+    """Name of the elastic validation table of a shape."""
+    return "ellip3d_hertz.csv" if (Rw, Rr) == (460, 300) else f"ellip3d_R{int(Rw)}x{int(Rr)}_hertz.csv"
+
+
+def x_axis(Rw, Rr):
+    return "rolling" if Rw >= Rr else "transverse"
+
+
+def penalty(b, k_hat):
+    """Penalty slope [MPa/mm] of a mesh scaled to the elastic semi-axis b: K_PEN, or k_hat E'/b.
+    The penalty lets the surface sink p/K into the indenter, against an approach of about
+    p0 b K(e)/E' (Hertz): a fixed K is a larger error on a smaller patch (a flange's b of 0.2-0.4 mm:
+    K_PEN gave the peak 2 % low and b 5-9 % wide), k_hat E'/b the same on every patch and keeps the
+    model self-similar."""
+    return K_PEN if k_hat is None else k_hat * ESTAR / b
+
+
+def elastic_deck(A, B, p0, n, tag, k_hat=None):
     """Elastic deck on the mesh of the Hertz patch at peak p0, two loads (0.8 p0 and p0)."""
     H = hertz_at_p0(A, B, p0)
     steps = [hertz_at_p0(A, B, f * p0)["delta"] for f in (0.8, 1.0)]
-    info = build(A, B, H["a"], H["b"], n, steps, None, tag)
+    info = build(A, B, H["a"], H["b"], n, steps, None, tag, penalty(H["b"], k_hat))
     info["AB"] = (A, B)
     return info
 
@@ -244,8 +265,9 @@ def block_fit(el, info):
 def cmd_elastic(args):
     A, B = pair_curvatures(args.Rw, args.Rr)
     p0 = args.p0
-    decks = [(f"/tmp/fe_runs/e3el_{n}_{p0:g}_{int(args.Rw)}x{int(args.Rr)}", n) for n in args.n]
-    infos = [elastic_deck(A, B, p0, n, tag) for tag, n in decks]
+    kt = "" if args.k_pen is None else f"_k{args.k_pen:g}"
+    decks = [(f"/tmp/fe_runs/e3el_{n}_{p0:g}_{int(args.Rw)}x{int(args.Rr)}{kt}", n) for n in args.n]
+    infos = [elastic_deck(A, B, p0, n, tag, args.k_pen) for tag, n in decks]
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:   # ccx runs are separate processes
         list(pool.map(run, [t for t, _ in decks]))
     res = []
@@ -254,11 +276,13 @@ def cmd_elastic(args):
         res.append((n, el, info, block_fit(el, info)))
         print(n, info["nodes"], info["elements"], [(o["N"], o["a"], o["b"], o["pc"], o["pmax"], o["u"]) for o in el], flush=True)
     c_hat = res[-1][3]      # the finest mesh's block correction, applied to every level
-    out = args.out or os.path.join(HERE, "..", "..", "tests", "data", "fe", "ellip3d_hertz.csv")
+    out = args.out or os.path.join(HERE, "..", "..", "tests", "data", "fe", hertz_table(args.Rw, args.Rr))
     hdr = [f"# generated by scripts/fe/ellip3d.py elastic --n {' '.join(map(str, args.n))} --p0 {p0:g}"
-           f" --Rw {args.Rw:g} --Rr {args.Rr:g} on {datetime.date.today().isoformat()}",
-           f"# solver: CalculiX ccx {ccx_version()} (nice -n 10, OMP_NUM_THREADS=1)",
-           f"# model: {model_line(A, B)}",
+           f" --Rw {args.Rw:g} --Rr {args.Rr:g}" + ("" if args.k_pen is None else f" --k-pen {args.k_pen:g}")
+           + f" on {datetime.date.today().isoformat()}",
+           f"# solver: CalculiX ccx {ccx_version()} (one thread: OMP_NUM_THREADS=1, CCX_NPROC_EQUATION_SOLVER=1)",
+           f"# case: {case_line(args.Rw, args.Rr, A, B)}",
+           f"# model: {model_line(A, B, args.k_pen)}",
            f"# mesh: quarter block [0, {L_OVER_A:g} a]^2 x [-{L_OVER_A:g} a, 0] fixed in z at its bottom, uniform zone "
            f"{FINE:g} a x {FINE:g} b x {FINE:g} b with h = a/n, b/n, min of both in depth, growth {GROWTH:g} outside; a, b the Hertz"
            f" semi-axes at the prescribed peak; two loads per mesh (peak 0.8 p0 and p0)",
@@ -283,10 +307,17 @@ def cmd_elastic(args):
                 print(row, flush=True)
 
 
-def model_line(A, B):
+def case_line(Rw, Rr, A, B):
+    return (f"wheel and rail of one steel, principal relative radii {Rw:g} mm (rolling) x {Rr:g} mm (transverse) (pair curvature"
+            f" sums {2 * A:.6g}, {2 * B:.6g} 1/mm along the model's x and y); x, the larger semi-axis a, is the {x_axis(Rw, Rr)} direction")
+
+
+def model_line(A, B, k_hat=None):
     return (f"one body with half the pair's curvature sums (A = {A:.6g}, B = {B:.6g} 1/mm) on a rigid frictionless flat,"
             f" half-space idealisation: flat-topped quarter block pressed by a rigid indenter of surface z = A x^2 + B y^2"
-            f" (facet corners on the block's (x, y) grid; node-to-surface contact, slave: the block's top faces, penalty {K_PEN:g} MPa/mm), C3D8I, E = {E:g} MPa, nu = {NU:g}, small strain")
+            f" (facet corners on the block's (x, y) grid; node-to-surface contact, slave: the block's top faces, penalty "
+            + (f"{K_PEN:g} MPa/mm" if k_hat is None else f"K = k_hat E'/b_el = {k_hat:g} E'/b_el, b_el the elastic semi-axis the mesh is scaled to")
+            + f"), C3D8I, E = {E:g} MPa, nu = {NU:g}, small strain")
 
 
 def cmd_plastic(args):
@@ -295,16 +326,17 @@ def cmd_plastic(args):
     # block correction: elastic run on the mesh of the largest load (self-similar meshes: c_hat holds for all)
     # the block correction from the elastic run of `elastic --p0` on the same n: the meshes are
     # scaled copies, so c_hat = c E' L holds for every row
-    etag = f"/tmp/fe_runs/e3el_{args.n}_{args.p0:g}_{int(args.Rw)}x{int(args.Rr)}"
-    einfo = elastic_deck(A, B, args.p0, args.n, etag)
+    kt = "" if args.k_pen is None else f"_k{args.k_pen:g}"
+    etag = f"/tmp/fe_runs/e3el_{args.n}_{args.p0:g}_{int(args.Rw)}x{int(args.Rr)}{kt}"
+    einfo = elastic_deck(A, B, args.p0, args.n, etag, args.k_pen)
     run(etag)
     el = rows_of(etag, einfo, None)
     c_hat = block_fit(el, einfo)
     runs = []
     for r in args.ratios:
         H = hertz_at_p0(A, B, r * sy)
-        tag = f"/tmp/fe_runs/e3pl_{args.n}_{int(sy)}_{int(args.Rw)}x{int(args.Rr)}_{r:g}"
-        runs.append((tag, build(A, B, H["a"], H["b"], args.n, [H["delta"]], sy, tag)))
+        tag = f"/tmp/fe_runs/e3pl_{args.n}_{int(sy)}_{int(args.Rw)}x{int(args.Rr)}{kt}_{r:g}"
+        runs.append((tag, build(A, B, H["a"], H["b"], args.n, [H["delta"]], sy, tag, penalty(H["b"], args.k_pen))))
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:   # ccx runs are separate processes
         list(pool.map(run, [t for t, _ in runs]))
     rows = []
@@ -322,15 +354,16 @@ def cmd_plastic(args):
     out = args.out or os.path.join(HERE, "..", "..", "tests", "data", "fe",
                                    f"ellip3d_R{int(args.Rw)}x{int(args.Rr)}_sy{int(sy)}.csv")
     hdr = [f"# generated by scripts/fe/ellip3d.py plastic --sy {sy:g} --ratios {' '.join(f'{r:g}' for r in args.ratios)} --n {args.n}"
-           f" --Rw {args.Rw:g} --Rr {args.Rr:g} on {datetime.date.today().isoformat()}",
-           f"# solver: CalculiX ccx {ccx_version()} (nice -n 10, OMP_NUM_THREADS=1)",
-           f"# case: wheel and rail of one steel, R {args.Rw:g} x {args.Rr:g} mm (pair curvature sums {2 * A:.6g}, {2 * B:.6g} 1/mm),"
+           f" --Rw {args.Rw:g} --Rr {args.Rr:g}" + ("" if args.k_pen is None else f" --k-pen {args.k_pen:g}")
+           + f" on {datetime.date.today().isoformat()}",
+           f"# solver: CalculiX ccx {ccx_version()} (one thread: OMP_NUM_THREADS=1, CCX_NPROC_EQUATION_SOLVER=1)",
+           f"# case: {case_line(args.Rw, args.Rr, A, B)},"
            f" elastic-perfectly plastic (von Mises, sigma_y = {sy:g} MPa, no hardening)",
-           f"# model: {model_line(A, B)}",
+           f"# model: {model_line(A, B, args.k_pen)}",
            f"# mesh: one run per row, scaled to the elastic Hertz patch of the row's prescribed load: n = {args.n} elements per semi-axis,"
-           f" uniform zone {FINE:g} a x {FINE:g} b x {FINE:g} b, growth {GROWTH:g}, block {L_OVER_A:g} a (validated elastic: ellip3d_hertz.csv)",
+           f" uniform zone {FINE:g} a x {FINE:g} b x {FINE:g} b, growth {GROWTH:g}, block {L_OVER_A:g} a (validated elastic: {hertz_table(args.Rw, args.Rr)})",
            f"# approach corrected for the finite block: delta = u_centre + c N, c = c_hat/(E' L), c_hat = {c_hat:.5g} fitted on the elastic"
-           f" run of the same n at peak {args.p0:g} MPa and 0.8 of it (ellip3d_hertz.csv; the meshes are scaled copies)",
+           f" run of the same n at peak {args.p0:g} MPa and 0.8 of it ({hertz_table(args.Rw, args.Rr)}; the meshes are scaled copies)",
            "# elastic run, FE/Hertz - 1 at the two loads (a, b, p_centre, delta after correction): "
            + "; ".join(", ".join(f"{v:+.4f}" for v in e) for e in Ee),
            "# columns (the PAIR): sigma_y [MPa]; p0el_over_sy = elastic Hertz peak at the FE load / sigma_y; N [N]; a, b [mm] semi-axes"
@@ -354,6 +387,8 @@ def main():
     ap.add_argument("--p0", type=float, default=1400.0, help="Hertz peak of the elastic runs' patch [MPa]")
     ap.add_argument("--Rw", type=float, default=460.0)
     ap.add_argument("--Rr", type=float, default=300.0)
+    ap.add_argument("--k-pen", type=float, default=None,
+                    help="penalty slope K = k_pen E'/b_el per mesh (default: the fixed K_PEN of ccx_common.py)")
     ap.add_argument("--out", default=None)
     ap.add_argument("--jobs", type=int, default=1, help="ccx runs at a time (one thread each)")
     args = ap.parse_args()

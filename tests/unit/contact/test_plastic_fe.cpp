@@ -42,6 +42,58 @@ Material steel() {
 
 // The pair's curvature sums [1/m] of the crossed cylinders R 460 x 300 mm (method.md §2, eq. 1).
 constexpr double kA = 1.0 / (2 * 0.460), kB = 1.0 / (2 * 0.300);
+
+// The pair's curvature sums [1/m] from the principal relative radii [m]: R_roll along the rolling
+// direction (A, the library's x), R_trans across it (B) (method.md §2, eq. 1).
+struct Shape {
+  const char* name;
+  double A, B;
+};
+constexpr Shape kFlange{"flange-like R 460 x 15 mm", 1.0 / (2 * 0.460), 1.0 / (2 * 0.015)};
+constexpr Shape kConformal{"conformal-ish R 460 x 3000 mm", 1.0 / (2 * 0.460), 1.0 / (2 * 3.000)};
+
+// Hertz of the library at the FE load against an elastic FE table (the FE's validation): semi-axes
+// sorted (the FE's a is the larger one, along the model's x), centre pressure.
+void check_elastic(const char* table, const Shape& g, double tol_axes, double tol_p) {
+  const CsvTable t = read_fe_table(table);
+  REQUIRE(t.rows.size() >= 2);
+  const EllipseLaw L = make_ellipse_law(g.A, g.B, steel(), true);
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const EllipseState s = ellipse_state_for_force(L, num(t, i, "N_N"));
+    const double a = std::max(s.a, s.b) * 1e3, b = std::min(s.a, s.b) * 1e3;
+    CAPTURE(table, i, num(t, i, "N_N"), num(t, i, "a_fe_mm") / a - 1, num(t, i, "b_fe_mm") / b - 1);
+    CHECK(std::fabs(num(t, i, "a_fe_mm") / a - 1) <= tol_axes);
+    CHECK(std::fabs(num(t, i, "b_fe_mm") / b - 1) <= tol_axes);
+    CHECK(std::fabs(num(t, i, "p_centre_fe_MPa") / (s.p0 * 1e-6) - 1) <= tol_p);
+  }
+}
+
+// Bands [lo, hi] of law/FE - 1 for the area pi a b and the approach.
+struct Band {
+  double area_lo, area_hi, approach_lo, approach_hi;
+};
+
+// The ellipse law (yield law, or the capped law with p_lim = 2.1 sigma_y) at the FE load of every
+// row of a plastic FE table, against the FE area and block-corrected approach.
+void check_law(const char* table, const Shape& g, bool yield_law, const Band& band) {
+  const CsvTable t = read_fe_table(table);
+  REQUIRE(t.rows.size() >= 2);
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    Material mat = steel();
+    mat.yield = num(t, i, "sigma_y_MPa") * 1e6;
+    mat.p_lim = p_lim_from_yield(mat.yield);
+    mat.yield_law = yield_law;
+    const EllipseLaw L = make_ellipse_law(g.A, g.B, mat, true);
+    const EllipseState s = ellipse_state_for_force(L, num(t, i, "N_N"));
+    const double area = kPi * s.a * s.b * 1e6, area_fe = num(t, i, "area_mm2");
+    const double approach = s.approach * 1e3, approach_fe = num(t, i, "delta_mm");
+    CAPTURE(table, g.name, yield_law, i, num(t, i, "p0el_over_sy"), area / area_fe - 1, approach / approach_fe - 1);
+    CHECK(area / area_fe - 1 >= band.area_lo);
+    CHECK(area / area_fe - 1 <= band.area_hi);
+    CHECK(approach / approach_fe - 1 >= band.approach_lo);
+    CHECK(approach / approach_fe - 1 <= band.approach_hi);
+  }
+}
 }  // namespace
 
 TEST_CASE("elastic ellipse against the 3-D FE model (validation of the FE, ellip3d_hertz.csv)", "[plastic][fe]") {
@@ -63,6 +115,16 @@ TEST_CASE("elastic ellipse against the 3-D FE model (validation of the FE, ellip
     CHECK(std::fabs(num(t, i, "b_fe_mm") / (s.b * 1e3) - 1) <= 0.025);
     CHECK(std::fabs(num(t, i, "p_centre_fe_MPa") / (s.p0 * 1e-6) - 1) <= 0.005);
   }
+}
+
+TEST_CASE("elastic ellipse against the 3-D FE model, flange-like and conformal-ish shapes", "[plastic][fe]") {
+  // The same FE model on two other shapes (scripts/fe/README.md), n = 8, two loads each, against
+  // the library's Hertz at the FE load: the flange-like R 460 x 15 mm (a/b = 9.0, elongated
+  // bricks; with a penalty scaled to the patch) and the conformal-ish R 460 x 3000 mm (a/b = 3.4,
+  // a across the track). Measured: semi-axes -1.2 … +2.3 % (flange), +0.03 … +2.2 % (conformal);
+  // centre pressure -0.27 … -0.05 % and -0.17 … +0.05 %. Held as the R 460 x 300 table is.
+  check_elastic("ellip3d_R460x15_hertz.csv", kFlange, 0.025, 0.005);
+  check_elastic("ellip3d_R460x3000_hertz.csv", kConformal, 0.025, 0.005);
 }
 
 TEST_CASE("capped ellipse law (p_lim = 2.1 sigma_y) against the 3-D FE table: the deviations method.md §5.1 states", "[plastic][fe]") {
@@ -115,4 +177,27 @@ TEST_CASE("yield law against the 3-D FE table: area and approach within 5 %", "[
       CHECK(std::fabs(approach / approach_fe - 1) <= 0.05);
     }
   }
+}
+
+TEST_CASE("yield law against the 3-D FE tables of a flange-like and a conformal-ish ellipse", "[plastic][fe][yield]") {
+  // The same law (method.md §5.1), not re-calibrated, against the FE of two other shapes at
+  // sigma_y = 350 MPa (scripts/fe/README.md): the flange-like R 460 x 15 mm (a/b = 9, a along the
+  // rolling direction) and the conformal-ish R 460 x 3000 mm (a/b = 3.4, a across the track).
+  // Flange: area and approach within the 5 % aim (measured area +2.2 … +2.4 %, approach
+  // +0.4 … +0.8 %, p0_el/σ_y = 2.0 and 3.0).
+  check_law("ellip3d_R460x15_sy350.csv", kFlange, true, {-0.05, 0.05, -0.05, 0.05});
+  // Conformal: approach within 5 % (measured −0.6 … +0.4 %, p0_el/σ_y = 2.0 … 3.9). The area
+  // misses the aim at the highest load: a KNOWN LIMIT, held at its measured value, not tuned away:
+  // −5.4 % at 3.9 (+0.6 %, +1.1 % at 2.0, 3.0). The FE patch grows along its short axis
+  // (b/b_el = 1.28 against a/a_el = 1.09 at 3.9), the law keeps its elastic shape. Lower band:
+  // the measured deviation with 0.6 % of room.
+  check_law("ellip3d_R460x3000_sy350.csv", kConformal, true, {-0.06, 0.05, -0.05, 0.05});
+}
+
+TEST_CASE("capped ellipse law (p_lim = 2.1 sigma_y) against the flange-like and conformal-ish FE tables", "[plastic][fe]") {
+  // The deviations method.md §5.1 states for the other shapes: area 1 … 5 % smaller than the
+  // FE's (measured flange −3.8 … −1.1 %, conformal −5.1 … −2.7 %), approach −1.3 … −0.2 %; bands
+  // with 0.5 % of room or more.
+  check_law("ellip3d_R460x15_sy350.csv", kFlange, false, {-0.045, -0.005, -0.02, 0.005});
+  check_law("ellip3d_R460x3000_sy350.csv", kConformal, false, {-0.058, -0.02, -0.02, 0.005});
 }
