@@ -93,6 +93,17 @@ double capped_load_quadrature(double a, double b, double p0, double plim) {
   const double yk = b * std::sqrt(std::max(0.0, 1 - s * s));  // the plateau edge on the y axis
   return 2 * (between(outer, line_load, 0, yk) + between(outer, line_load, yk, b));
 }
+
+// Steel (E 210 GPa, ν 0.3) with σ_y = 350 MPa and the yield law (material.yield_MPa alone).
+Material yield_law_steel() {
+  Material mat;
+  mat.E = 210e9;
+  mat.nu = 0.3;
+  mat.yield = 350e6;
+  mat.p_lim = p_lim_from_yield(mat.yield);
+  mat.yield_law = true;
+  return mat;
+}
 }  // namespace
 
 TEST_CASE("plastic law: closed-form N against quadrature of the capped pressure", "[plastic]") {
@@ -266,12 +277,7 @@ TEST_CASE("yield law: the stiffness law equals the load of its flattened pressur
   // (2/3) π a b p0 plus (1 − β) times the quadrature of the capped pressure. Tolerance 1e-8
   // relative (the quadrature's). Also p_max = p_y + β (p0 − p_y); C¹ at h_y (1e-10 between
   // h_y (1 ∓ 1e-13)); force(h0_for_force(N)) = N to 1e-12 from just above N_y to 10⁴ N_y.
-  Material mat;
-  mat.E = 210e9;
-  mat.nu = 0.3;
-  mat.yield = 350e6;
-  mat.p_lim = p_lim_from_yield(mat.yield);
-  mat.yield_law = true;
+  const Material mat = yield_law_steel();
   const double p_y = kFirstYieldPerYield * mat.yield, beta = kYieldLawSlope;
   for (double l : {1e-3, 0.1, 0.652, 1.0, 7.0, 300.0}) {
     const EllipseLaw L = make_ellipse_law(l * 2.0, 2.0, mat, true);
@@ -310,12 +316,7 @@ TEST_CASE("yield law: the inverse h0_for_force against a long-double bisection o
   // just above N_y to 10⁶ N_y, denser around ν = N/N_y = 1.556, where the library's first guess
   // changes from a quadratic approximation to Cardano's root. Tolerance 1e-15 relative in h0
   // (a few ulps: the library polishes its guess to a Newton step of 4 ε in u).
-  Material mat;
-  mat.E = 210e9;
-  mat.nu = 0.3;
-  mat.yield = 350e6;
-  mat.p_lim = p_lim_from_yield(mat.yield);
-  mat.yield_law = true;
+  const Material mat = yield_law_steel();
   std::vector<double> nus = {1.0 + 1e-13, 1.0 + 1e-9, 1.0 + 1e-6};
   for (int i = 0; i <= 600; ++i) nus.push_back(std::pow(10.0, 6.0 * i / 600.0));
   for (int i = -20; i <= 20; ++i) nus.push_back(1.5556 * (1.0 + 1e-3 * i));
