@@ -79,18 +79,48 @@ const Col kPlasticTailCols[] = {
 // has area_mm2).
 const Col kAreaCol = {"area_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a * e.s.b * units::per_mm2; }};
 
-// The RCF columns (docs/outputs.md "RCF columns"), appended last to ellipses.csv and patches.csv.
-const char* const kRcfHeader = ",traction_coefficient,k_MPa,p0_over_k,elastic_limit_p0_over_k,"
-                               "shakedown_limit_p0_over_k,shakedown_regime,FI_surf";
-void rcf_cells(std::string& s, const RcfOptions& o, double N, double a, double b) {
+// The columns of a contact written by field, in order, to a sink: one home for the names and
+// the order of patches.csv and the "patches" records of results.json, and of the RCF columns of
+// both per-contact tables. A sink has number(name, v) (as num() writes it in CSV; null in JSON when
+// not finite), optional(name, v) (empty in CSV and null in JSON when v is not finite),
+// integer(name, i) and text(name, t) (t null: empty in CSV, null in JSON).
+struct CsvSink {
+  std::string& s;
+  void number(const char*, double v) { s += ','; num(s, v); }
+  void optional(const char*, double v) { s += ','; if (std::isfinite(v)) num(s, v); }
+  void integer(const char*, long long i) { s += ','; append_number(s, i); }
+  void text(const char*, const char* t) { s += ','; if (t) s += t; }
+};
+struct HeaderSink {
+  std::string& s;
+  void number(const char* n, double) { s += ','; s += n; }
+  void optional(const char* n, double) { s += ','; s += n; }
+  void integer(const char* n, long long) { s += ','; s += n; }
+  void text(const char* n, const char*) { s += ','; s += n; }
+};
+struct JsonSink {
+  nlohmann::ordered_json& j;
+  static nlohmann::ordered_json value(double v) {
+    return std::isfinite(v) ? nlohmann::ordered_json(rounded(v)) : nlohmann::ordered_json(nullptr);
+  }
+  void number(const char* n, double v) { j[n] = value(v); }
+  void optional(const char* n, double v) { j[n] = value(v); }
+  void integer(const char* n, long long i) { j[n] = i; }
+  void text(const char* n, const char* t) { j[n] = t ? nlohmann::ordered_json(t) : nlohmann::ordered_json(nullptr); }
+};
+
+// The RCF columns (docs/outputs.md "RCF columns"), appended last to ellipses.csv and patches.csv
+// and to their JSON records.
+template <class Sink>
+void rcf_fields(Sink& k, const RcfOptions& o, double N, double a, double b) {
   const RcfPoint p = rcf_point(o.f, o.k, N, a, b);
-  s += ','; num(s, o.f);
-  s += ','; num(s, o.k / units::MPa);
-  s += ','; num(s, p.p0_over_k);
-  s += ','; num(s, p.elastic_limit);
-  s += ','; num(s, p.shakedown_limit);
-  s += ','; if (std::isfinite(p.p0_over_k)) s += to_string(p.regime);
-  s += ','; num(s, p.fi_surf);
+  k.number("traction_coefficient", o.f);
+  k.number("k_MPa", o.k / units::MPa);
+  k.number("p0_over_k", p.p0_over_k);
+  k.number("elastic_limit_p0_over_k", p.elastic_limit);
+  k.number("shakedown_limit_p0_over_k", p.shakedown_limit);
+  k.text("shakedown_regime", std::isfinite(p.p0_over_k) ? to_string(p.regime) : nullptr);
+  k.number("FI_surf", p.fi_surf);
 }
 // A grid patch as an ellipse: π a b its area, a/b its length over its width.
 void patch_axes(const PatchResult& P, double* a, double* b) {
@@ -98,6 +128,41 @@ void patch_axes(const PatchResult& P, double* a, double* b) {
   const double ratio = P.width_s > 0 ? P.length_x / P.width_s : NAN;
   *a = std::sqrt(ab * ratio);
   *b = ab / *a;
+}
+
+// One contact patch of a grid method, after its case, t_Y and Q (patches.csv) or in its case's
+// record (results.json).
+template <class Sink>
+void patch_fields(Sink& k, const PatchResult& P, bool plastic, const RcfOptions& rcf) {
+  k.integer("patch", static_cast<long long>(P.patch));
+  k.number("y_rail_mm", P.y_r * units::per_mm);
+  k.number("z_rail_mm", P.z_r * units::per_mm);
+  k.number("y_wheel_mm", P.y_w * units::per_mm);
+  k.number("gamma_deg", P.gamma / units::deg);
+  k.number("N_kN", P.N / units::kN);
+  k.number("pmax_MPa", P.pmax / units::MPa);
+  k.number("area_mm2", P.area * units::per_mm2);
+  k.number("length_x_mm", P.length_x * units::per_mm);
+  k.number("width_s_mm", P.width_s * units::per_mm);
+  k.number("approach_mm", P.approach * units::per_mm);
+  k.number("x_centroid_mm", P.x_centroid * units::per_mm);
+  k.number("s_centroid_mm", P.s_centroid * units::per_mm);
+  k.integer("n_elements", static_cast<long long>(P.n_elements));
+  k.integer("iterations", static_cast<long long>(P.iterations));
+  // Strip method: which extents the patch kept, and the estimate's end-gap error (empty, null,
+  // for the half-space method).
+  const bool strips = std::isfinite(P.end_gap_error);
+  k.text("extents", strips ? (P.refined ? "end_gap" : "estimate") : nullptr);
+  k.optional("end_gap_error", P.end_gap_error);
+  if (plastic) {
+    k.number("plastic_area_mm2", P.plastic_area * units::per_mm2);
+    k.number("capped_load_kN", P.capped_load / units::kN);
+  }
+  if (rcf.enabled()) {
+    double a, b;
+    patch_axes(P, &a, &b);
+    rcf_fields(k, rcf, P.N, a, b);
+  }
 }
 
 }  // namespace
@@ -213,7 +278,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (plastic)
         for (const Col& c : kPlasticTailCols) { e += ','; num(e, c.get(L)); }
       if (!plastic) { e += ','; num(e, kAreaCol.get(L)); }
-      if (rcf.enabled()) rcf_cells(e, rcf, L.s.N, L.s.a, L.s.b);
+      if (rcf.enabled()) {
+        CsvSink k{e};
+        rcf_fields(k, rcf, L.s.N, L.s.a, L.s.b);
+      }
       e += '\n';
     }
   }
@@ -257,9 +325,22 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (plastic)
         for (const Col& c : kPlasticTailCols) e[c.name] = jv(c.get(L));
       if (!plastic) e[kAreaCol.name] = jv(kAreaCol.get(L));
+      if (rcf.enabled()) {
+        JsonSink k{e};
+        rcf_fields(k, rcf, L.s.N, L.s.a, L.s.b);
+      }
       el.push_back(std::move(e));
     }
     j["ellipses"] = std::move(el);
+    // The grid methods' patches (the rows of patches.csv; empty for the multi-Hertzian method).
+    nlohmann::ordered_json pa = nlohmann::ordered_json::array();
+    for (const PatchResult& P : r.patches) {
+      nlohmann::ordered_json e;
+      JsonSink k{e};
+      patch_fields(k, P, plastic, rcf);
+      pa.push_back(std::move(e));
+    }
+    j["patches"] = std::move(pa);
     f.json = j.dump();
   }
 }
@@ -271,36 +352,8 @@ void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     append_number(s, static_cast<long long>(idx));
     s += ','; num(s, cp.tY_mm);
     s += ','; num(s, cp.Q_kN);
-    s += ','; append_number(s, static_cast<long long>(P.patch));
-    s += ','; num(s, P.y_r * units::per_mm);
-    s += ','; num(s, P.z_r * units::per_mm);
-    s += ','; num(s, P.y_w * units::per_mm);
-    s += ','; num(s, P.gamma / units::deg);
-    s += ','; num(s, P.N / units::kN);
-    s += ','; num(s, P.pmax / units::MPa);
-    s += ','; num(s, P.area * units::per_mm2);
-    s += ','; num(s, P.length_x * units::per_mm);
-    s += ','; num(s, P.width_s * units::per_mm);
-    s += ','; num(s, P.approach * units::per_mm);
-    s += ','; num(s, P.x_centroid * units::per_mm);
-    s += ','; num(s, P.s_centroid * units::per_mm);
-    s += ','; append_number(s, static_cast<long long>(P.n_elements));
-    s += ','; append_number(s, static_cast<long long>(P.iterations));
-    // Strip method: which extents the patch kept, and the estimate's end-gap error (empty for the
-    // half-space method).
-    s += ',';
-    if (std::isfinite(P.end_gap_error)) s += P.refined ? "end_gap" : "estimate";
-    s += ',';
-    if (std::isfinite(P.end_gap_error)) num(s, P.end_gap_error);
-    if (plastic) {
-      s += ','; num(s, P.plastic_area * units::per_mm2);
-      s += ','; num(s, P.capped_load / units::kN);
-    }
-    if (rcf.enabled()) {
-      double a, b;
-      patch_axes(P, &a, &b);
-      rcf_cells(s, rcf, P.N, a, b);
-    }
+    CsvSink k{s};
+    patch_fields(k, P, plastic, rcf);
     s += '\n';
   }
 }
@@ -346,11 +399,11 @@ void format_strips(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, 
 std::string strips_csv_header() { return "case,tY_mm,Q_kN,patch,s_mm,y_rail_mm,x_centre_mm,half_length_mm,amplitude_MPa,plastic\n"; }
 
 std::string patches_csv_header(bool plastic, bool rcf) {
-  std::string s = "case,tY_mm,Q_kN,patch,y_rail_mm,z_rail_mm,y_wheel_mm,gamma_deg,N_kN,pmax_MPa,area_mm2,"
-                  "length_x_mm,width_s_mm,approach_mm,x_centroid_mm,s_centroid_mm,n_elements,iterations,extents,"
-                  "end_gap_error";
-  if (plastic) s += ",plastic_area_mm2,capped_load_kN";
-  if (rcf) s += kRcfHeader;
+  std::string s = "case,tY_mm,Q_kN";
+  HeaderSink k{s};
+  RcfOptions o;
+  if (rcf) o.f = 0;  // enabled: the header has the names only
+  patch_fields(k, PatchResult{}, plastic, o);
   return s + "\n";
 }
 
@@ -382,7 +435,10 @@ std::string ellipses_csv_header(bool plastic, bool rcf) {
   if (plastic)
     for (const Col& c : kPlasticTailCols) { s += ','; s += c.name; }
   if (!plastic) { s += ','; s += kAreaCol.name; }
-  if (rcf) s += kRcfHeader;
+  if (rcf) {
+    HeaderSink k{s};
+    rcf_fields(k, RcfOptions{}, 0, 0, 0);
+  }
   return s + "\n";
 }
 

@@ -15,7 +15,7 @@ extract() {  # results.json -> its inputs as a case file beside it
 }
 for c in manchester manchester-plastic s1002-60e1; do
   "$bin" run "$src/cases/$c.json" -o "$tmp/$c" -q || fail "$c"
-  grep -q '"schema": "mhcontact.results/6"' "$tmp/$c/results.json" || fail "$c: schema version"
+  grep -q '"schema": "mhcontact.results/7"' "$tmp/$c/results.json" || fail "$c: schema version"
   extract "$tmp/$c/results.json" "$tmp/$c/inputs.json"
   (cd "$tmp" && "$bin" run "$c/inputs.json" -o "re_$c" -q) || fail "$c: the inputs of results.json do not run"
   for t in cases.csv ellipses.csv geometry.csv; do cmp -s "$tmp/$c/$t" "$tmp/re_$c/$t" || fail "$c: rerunning the inputs gives another $t"; done
@@ -91,4 +91,54 @@ assert all(float(r["end_gap_error"]) >= 0 for r in rows)
 assert all((r["extents"] == "end_gap") == (float(r["end_gap_error"]) > 0.05) for r in rows)
 assert any(r["extents"] == "end_gap" for r in rows) and any(r["extents"] == "estimate" for r in rows)
 PY
+# results.json's case records carry the grid methods' patches as patches.csv has them (the same
+# keys in the same order, the same numbers; empty cells null), and with the case-file key "rcf"
+# the RCF columns of both per-contact tables; FI_surf = f - 2 pi a b k / (3 N) = f - k/p0 from the
+# record's own p0_over_k (Ekberg, Kabo & Andersson 2002; docs/outputs.md "RCF columns").
+for m in strips half-space multi-hertzian; do
+python3 - "$src" "$tmp/rcf_$m.json" "$m" <<'PY'
+import json, sys
+src, out, m = sys.argv[1:]
+c = json.load(open(f"{src}/cases/manchester-strips.json"))
+for side in ("wheel", "rail"):
+    c[side]["profile"] = f"{src}/profiles/" + c[side]["profile"].split("/")[-1]
+c["method"] = m
+c["material"]["yield_MPa"] = 400
+c["rcf"] = {"traction_coefficient": 0.3}
+c["sweep"] = {"tY_mm": [0, 7], "Q_kN": [100]}
+json.dump(c, open(out, "w"))
+PY
+"$bin" run "$tmp/rcf_$m.json" -o "$tmp/rcf_$m" -q || fail "rcf run, $m"
+python3 - "$tmp/rcf_$m" "$m" <<'PY' || fail "results.json: the $m records do not mirror the per-contact tables"
+import csv, json, math, sys
+d, m = sys.argv[1:]
+j = json.load(open(f"{d}/results.json"))
+table, key = ("ellipses.csv", "ellipses") if m == "multi-hertzian" else ("patches.csv", "patches")
+rows = list(csv.DictReader(open(f"{d}/{table}")))
+recs = [(c["case"], r) for c in j["cases"] for r in c[key]]
+assert rows and len(rows) == len(recs), (len(rows), len(recs))
+other = "patches" if key == "ellipses" else "ellipses"
+assert all(c[other] == [] for c in j["cases"]), f"{other} records in a {m} run"
+for row, (case, rec) in zip(rows, recs):
+    assert int(row["case"]) == case
+    cols = [k for k in row if k not in ("case", "tY_mm", "Q_kN")]
+    assert cols == list(rec.keys()), (cols, list(rec.keys()))
+    for k in cols:
+        v, t = rec[k], row[k]
+        if t == "":
+            assert v is None, (k, v)
+        elif isinstance(v, bool):
+            assert t == ("1" if v else "0"), (k, t, v)
+        elif isinstance(v, str):
+            assert t == v, (k, t, v)
+        else:
+            assert math.isclose(float(t), v, rel_tol=1e-9, abs_tol=0), (k, t, v)
+    f, k_MPa, p0k = rec["traction_coefficient"], rec["k_MPa"], rec["p0_over_k"]
+    assert f == 0.3 and math.isclose(k_MPa, 400 / math.sqrt(3), rel_tol=1e-9), (f, k_MPa)
+    assert math.isclose(rec["FI_surf"], f - 1 / p0k, rel_tol=0, abs_tol=1e-9), (rec["FI_surf"], f - 1 / p0k)
+    # p0 = 3N/(2 pi a b): from the patch's area (grid) or its semi-axes (ellipse)
+    area = rec["area_mm2"] if "area_mm2" in rec else math.pi * rec["a_mm"] * rec["b_mm"]
+    assert math.isclose(p0k, 1.5 * rec["N_kN"] * 1e3 / area / k_MPa, rel_tol=1e-8), (p0k,)
+PY
+done
 exit $fails

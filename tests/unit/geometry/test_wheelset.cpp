@@ -4,7 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -21,21 +21,32 @@ namespace {
 
 constexpr double mm = 1e-3;
 
-struct Table { std::vector<double> x, v; };
-/// First two columns of a CSV with a header line (tests/data/en15302/, or `dir`).
-Table read_table(const std::string& name, const std::string& dir = "en15302") {
+/// The first `ncols` columns of a CSV of numbers with a header line (tests/data/<dir>/<name>),
+/// column by column.
+std::vector<std::vector<double>> read_columns(const std::string& name, const std::string& dir, std::size_t ncols) {
   std::ifstream in(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/" + dir + "/" + name);
   REQUIRE(in.good());
-  Table t;
+  std::vector<std::vector<double>> cols(ncols);
   std::string line;
   std::getline(in, line);
   while (std::getline(in, line)) {
-    double a = 0, b = 0;
-    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf", &a, &b) == 2);
-    t.x.push_back(a);
-    t.v.push_back(b);
+    const char* p = line.c_str();
+    for (std::size_t c = 0; c < ncols; ++c) {
+      char* end = nullptr;
+      cols[c].push_back(std::strtod(p, &end));
+      INFO(name << ": " << line);
+      REQUIRE(end != p);
+      p = *end == ',' ? end + 1 : end;
+    }
   }
-  return t;
+  return cols;
+}
+
+struct Table { std::vector<double> x, v; };
+/// First two columns of a CSV with a header line (tests/data/en15302/, or `dir`).
+Table read_table(const std::string& name, const std::string& dir = "en15302") {
+  auto c = read_columns(name, dir, 2);
+  return {std::move(c[0]), std::move(c[1])};
 }
 
 /// Largest |Δv/Δx| of the table on either side of point i.
@@ -158,17 +169,10 @@ TEST_CASE("conicity of a rough measured Δr against 30-digit quadrature", "[whee
   for (std::size_t i = 0; i < D.x.size(); ++i) ys.push_back(D.x[i] * mm), dr.push_back(D.v[i] * mm);
   const mh::EquivalentConicity C(ys, dr);
   // amplitude_mm, tan_gamma_e, well_posed (S below S(y2) between the turning points: all 33).
-  std::ifstream in(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/conicity/mbench_s1002_v3_rail_a_conicity.csv");
-  REQUIRE(in.good());
+  const auto R = read_columns("mbench_s1002_v3_rail_a_conicity.csv", "conicity", 3);
   Table K;
-  std::string line;
-  std::getline(in, line);
-  while (std::getline(in, line)) {
-    double a = 0, t = 0;
-    int ok = 0;
-    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%d", &a, &t, &ok) == 3);
-    if (ok) K.x.push_back(a), K.v.push_back(t);
-  }
+  for (std::size_t i = 0; i < R[0].size(); ++i)
+    if (R[2][i] != 0) K.x.push_back(R[0][i]), K.v.push_back(R[1][i]);
   REQUIRE(K.x.size() == 33);
   for (std::size_t i = 0; i < K.x.size(); ++i) {
     INFO("amplitude " << K.x[i] << " mm");
