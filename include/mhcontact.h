@@ -89,7 +89,9 @@ typedef enum mhc_method {
 #define MHC_WARN_STRIP_OUTLIER 0x100u       /**< a strip's peak stands far above its neighbours' */
 
 /** Per-contact flags (mhc_contact.flags). */
-#define MHC_CONTACT_PLASTIC 0x1u      /**< the plastic law caps its pressure (p0 > p_lim) */
+#define MHC_CONTACT_PLASTIC 0x1u      /**< beyond the elastic range of its plastic law: the Hertz
+                                           peak above p_lim (capped law), above first yield
+                                           1.6 sigma_y (yield law), or capped elements (grid) */
 #define MHC_CONTACT_NON_HERTZIAN 0x2u /**< fails a Hertz assumption (docs/method.md §4) */
 #define MHC_CONTACT_OFF_PROFILE 0x4u  /**< lies off the end of a profile (docs/method.md §3.7) */
 
@@ -141,13 +143,15 @@ typedef struct mhc_result {
   double r_roll_main_m;      /**< rolling radius there (NaN: none) */
   double dFz_ddz_N_per_m;    /**< vertical contact stiffness dFz/d(dz) at fixed t_Y, for implicit
                                   integrators (multi-Hertzian; NaN for the grid methods) */
-  int32_t plastic;           /**< 1 when a contact is capped by the plastic law */
+  int32_t plastic;           /**< 1 when a contact has MHC_CONTACT_PLASTIC (the plastic column of
+                                  cases.csv) */
   int32_t reserved;
   mhc_contact contact[MHC_MAX_CONTACTS];  /**< the first min(n_contacts, MHC_MAX_CONTACTS) */
 } mhc_result;
 
 /** What a pair is built from besides its two profiles. mhc_pair_options_init fills the defaults
- *  of the command's case file (README "Case file") and struct_size. */
+ *  of the command's case file (README "Case file") and struct_size. Fields are only ever
+ *  appended; mhc_pair_create accepts the struct_size of every earlier version of this struct. */
 typedef struct mhc_pair_options {
   size_t struct_size;             /**< sizeof(mhc_pair_options), set by mhc_pair_options_init */
   /* track and wheelset (docs/method.md §7) */
@@ -163,7 +167,9 @@ typedef struct mhc_pair_options {
   double nu_wheel;                /**< Poisson's ratio (default 0.28) */
   double E_rail_Pa;               /**< default NaN: as the wheel */
   double nu_rail;                 /**< default NaN: as the wheel */
-  double p_lim_Pa;                /**< limit pressure of the plastic model; INFINITY: elastic (default) */
+  double p_lim_Pa;                /**< limit pressure of the plastic model, the law capped at it;
+                                       INFINITY (default): elastic, or the yield law when
+                                       yield_wheel_Pa is given */
   int32_t method;                 /**< mhc_method (default MHC_METHOD_MULTI_HERTZIAN) */
   int32_t reserved;
   /* the geometry table: t_Y range and step */
@@ -173,6 +179,15 @@ typedef struct mhc_pair_options {
   /* the grid methods' element size */
   double grid_dx_m;               /**< default 0.2e-3 */
   double grid_ds_m;               /**< default 0.2e-3 */
+  /* Appended after the first release: a caller compiled against a header without them passes
+     struct_size = offsetof(mhc_pair_options, yield_wheel_Pa) and gets them as not given.
+     The yield stress, as the case file's material.yield_MPa (docs/method.md §5.1): with p_lim_Pa
+     INFINITY, a yield stress makes the pair plastic with the yield law of the multi-Hertzian
+     ellipse (Hertz up to first yield 1.6 sigma_y, slope 0.3 above), and the grid methods cap the
+     pressure at p_lim = 2.1 sigma_y, sigma_y of the softer body; with p_lim_Pa finite the law is
+     capped at p_lim_Pa and the yield stress only kept. NaN, or > 0 and finite. */
+  double yield_wheel_Pa;          /**< the wheel's yield stress sigma_y (default NaN: not given) */
+  double yield_rail_Pa;           /**< the rail's (default NaN: as the wheel's; given alone: an error) */
 } mhc_pair_options;
 
 typedef struct mhc_profile mhc_profile;

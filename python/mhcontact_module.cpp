@@ -206,6 +206,8 @@ PYBIND11_MODULE(_core, m) {
                else if (k == "E_rail_Pa") o.E_rail_Pa = v;
                else if (k == "nu_rail") o.nu_rail = v;
                else if (k == "p_lim_Pa") o.p_lim_Pa = v;
+               else if (k == "yield_wheel_Pa") o.yield_wheel_Pa = v;
+               else if (k == "yield_rail_Pa") o.yield_rail_Pa = v;
                else if (k == "tY_min_m") o.tY_min_m = v;
                else if (k == "tY_max_m") o.tY_max_m = v;
                else if (k == "tY_step_m") o.tY_step_m = v;
@@ -223,7 +225,14 @@ PYBIND11_MODULE(_core, m) {
                }
              }
              return p;
-           }), py::arg("wheel"), py::arg("rail"), py::arg("options") = py::dict())
+           }), py::arg("wheel"), py::arg("rail"), py::arg("options") = py::dict(),
+           "Pair(wheel, rail, options={}): options are fields of mhc_pair_options, SI (docs/python.md):\n"
+           "gauge_m, gauge_height_m, flange_back_distance_m, flange_back_position_m, nominal_radius_m,\n"
+           "rail_inclination, E_wheel_Pa, nu_wheel, E_rail_Pa, nu_rail, p_lim_Pa, yield_wheel_Pa,\n"
+           "yield_rail_Pa, method (a name), tY_min_m, tY_max_m, tY_step_m, grid_dx_m, grid_ds_m.\n"
+           "yield_wheel_Pa (and yield_rail_Pa when the rail's differs), as a case file's\n"
+           "material.yield_MPa: the plastic model with the yield law of docs/method.md 5.1 (grid\n"
+           "methods: p_lim = 2.1 sigma_y); p_lim_Pa, when given, takes precedence (the capped law).")
       .def_static("from_case_file", [](const std::string& path) {
             auto p = std::make_unique<Pair>();
             check(mhc_pair_from_case_file(path.c_str(), &p->p));

@@ -107,12 +107,10 @@ void run_hertz(const HertzCliOptions& o, CliContext& ctx) {
   mat.E = o.E_GPa * units::GPa;
   mat.nu = o.nu;
   if (by_yield) mat.yield = o.yield_MPa * units::MPa;
-  // --p-lim takes precedence over the limit pressure derived from --yield (as in the case file)
-  mat.p_lim = !std::isnan(o.p_lim_MPa) ? o.p_lim_MPa * units::MPa
-              : by_yield               ? p_lim_from_yield(mat.yield)
-                                       : INFINITY;
-  // --yield alone: the yield law (method.md §5.1); --p-lim: the law capped at the user's p_lim.
-  mat.yield_law = by_yield && std::isnan(o.p_lim_MPa);
+  // --p-lim takes precedence over --yield (the law capped at the user's p_lim); --yield alone: the
+  // yield law (method.md §5.1), as in the case file.
+  mat.p_lim = !std::isnan(o.p_lim_MPa) ? o.p_lim_MPa * units::MPa : INFINITY;
+  derive_plastic_law(mat);
 
   EllipseLaw law;
   try {

@@ -26,7 +26,7 @@ struct mhc_pair {
   mh::PairGeometry pg;
   mh::Material material;
   mh::MethodOptions options;
-  bool plastic = false;  ///< the plastic model (material.p_lim finite)
+  bool plastic = false;  ///< the plastic model (material.p_lim finite: given, or from the yield stress)
 };
 
 /// One thread's scratch memory for calls on one pair.

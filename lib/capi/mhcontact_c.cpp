@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <exception>
 #include <limits>
@@ -12,6 +13,7 @@
 #include <new>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "contact/half_space/influence.hpp"
@@ -429,6 +431,8 @@ void mhc_pair_options_init(mhc_pair_options* o) {
   o->E_rail_Pa = m.E_rail;
   o->nu_rail = m.nu_rail;
   o->p_lim_Pa = m.p_lim;
+  o->yield_wheel_Pa = m.yield;
+  o->yield_rail_Pa = m.yield_rail;
   o->method = MHC_METHOD_MULTI_HERTZIAN;
   const GeometryOptions g;
   o->tY_min_m = g.tY_min;
@@ -447,11 +451,29 @@ mhc_error mhc_pair_create(const mhc_profile* wheel, const mhc_profile* rail, con
   if (mhc_error e = need(opt, "options")) return e;
   if (mhc_error e = need(out, "out")) return e;
   *out = nullptr;
-  if (opt->struct_size != sizeof(mhc_pair_options))
+  // The struct of a header before the yield stress ends where yield_wheel_Pa begins: its fields
+  // are read, the later ones (not in the caller's memory) are taken as not given.
+  constexpr std::size_t kSizeBeforeYield = offsetof(mhc_pair_options, yield_wheel_Pa);
+  const bool has_yield = opt->struct_size == sizeof(mhc_pair_options);
+  if (!has_yield && opt->struct_size != kSizeBeforeYield)
     return fail(MHC_ERR_ARGUMENT, "options: struct_size = " + std::to_string(opt->struct_size) +
                                       ": must be sizeof(mhc_pair_options) = " +
-                                      std::to_string(sizeof(mhc_pair_options)) + " (call mhc_pair_options_init)");
+                                      std::to_string(sizeof(mhc_pair_options)) + ", or " +
+                                      std::to_string(kSizeBeforeYield) +
+                                      " of a header without the yield stress (call mhc_pair_options_init)");
   return guarded([&] {
+    const double not_given = std::numeric_limits<double>::quiet_NaN();
+    const double yield_wheel = has_yield ? opt->yield_wheel_Pa : not_given;
+    const double yield_rail = has_yield ? opt->yield_rail_Pa : not_given;
+    for (const auto& [field, v] : {std::pair<const char*, double>{"yield_wheel_Pa", yield_wheel}, {"yield_rail_Pa", yield_rail}})
+      if (!std::isnan(v) && !(v > 0 && std::isfinite(v)))
+        return fail(MHC_ERR_ARGUMENT, std::string("options.") + field + " = " + format_number(v) +
+                                          " Pa: a yield stress must be > 0 and finite, or NaN (not given); "
+                                          "give it in Pa (350 MPa: 350e6)");
+    if (std::isnan(yield_wheel) && !std::isnan(yield_rail))
+      return fail(MHC_ERR_ARGUMENT, "options.yield_rail_Pa = " + format_number(yield_rail) +
+                                        " Pa without yield_wheel_Pa: give the wheel's yield stress too "
+                                        "(one value for both bodies: yield_wheel_Pa alone)");
     if (wheel->profile.kind != ProfileKind::Wheel)
       return fail(MHC_ERR_ARGUMENT, "wheel: " + wheel->profile.source + " is a " + to_string(wheel->profile.kind) +
                                         " profile, but a wheel is needed here");
@@ -466,8 +488,12 @@ mhc_error mhc_pair_create(const mhc_profile* wheel, const mhc_profile* rail, con
     m.E_rail = opt->E_rail_Pa;
     m.nu_rail = opt->nu_rail;
     m.p_lim = opt->p_lim_Pa;
+    m.yield = yield_wheel;
+    m.yield_rail = yield_rail;
     if (!m.valid(&why)) return fail(MHC_ERR_ARGUMENT, "material: " + why);
-    pair->plastic = std::isfinite(m.p_lim);
+    // As the case file's plastic model (docs/method.md §5.1): p_lim_Pa given, the capped law;
+    // else a yield stress gives the yield law (ellipse) and p_lim = 2.1 sigma_y (grid methods).
+    pair->plastic = derive_plastic_law(m);
     if (opt->method < MHC_METHOD_MULTI_HERTZIAN || opt->method > MHC_METHOD_AUTO)
       return fail(MHC_ERR_ARGUMENT, "method = " + std::to_string(opt->method) + ": must be an mhc_method (0 to 3)");
     MethodOptions& mo = pair->options;

@@ -52,6 +52,14 @@ bool Material::valid(std::string* why) const {
   return true;
 }
 
+bool derive_plastic_law(Material& m) {
+  if (!std::isfinite(m.p_lim) && !std::isnan(m.yield_min())) {
+    m.p_lim = p_lim_from_yield(m.yield_min());
+    m.yield_law = true;
+  }
+  return std::isfinite(m.p_lim);
+}
+
 bool HertzValidityOptions::valid(std::string* why) const {
   if (!(max_b_over_R > 0) || !std::isfinite(max_b_over_R)) {
     if (why) *why = "max_b_over_R must be > 0 and finite";

@@ -62,6 +62,16 @@ struct Material {
 inline constexpr double kPlimPerYield = 2.1;
 /// [Pa] p_lim derived from a yield stress σ_y [Pa] (kPlimPerYield σ_y).
 inline double p_lim_from_yield(double sigma_y) { return kPlimPerYield * sigma_y; }
+/// The plastic law of a material from what was given (docs/method.md §5.1), the one home of the
+/// rule that the case file, `hertz --yield` and the C interface share:
+/// - a finite p_lim (the user's own limit pressure) takes precedence: the law capped at p_lim
+///   (§5); a yield stress given with it is kept for k = σ_y/√3;
+/// - otherwise, with a yield stress, p_lim = kPlimPerYield σ_y of the softer body (the grid
+///   methods' cap) and yield_law = true (the multi-Hertzian ellipse's law);
+/// - otherwise the material stays elastic (p_lim = INFINITY).
+/// Call it only when the plastic model is wanted. Returns whether the material is plastic
+/// (p_lim finite).
+bool derive_plastic_law(Material& m);
 /// [-] p_y / σ_y of the yield law: the Hertz peak at first yield below the surface (Johnson,
 /// Contact Mechanics (1985) §6.2: p0 ≈ 1.6 σ_y for a circular contact, ν = 0.3; not fitted).
 inline constexpr double kFirstYieldPerYield = 1.6;

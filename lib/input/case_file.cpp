@@ -267,11 +267,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   // Otherwise the yield law from the softer body's yield stress: the ellipse leaves Hertz at first
   // yield 1.6 σ_y, the grid methods cap at p_lim = kPlimPerYield σ_y (docs/method.md §5.1). The
   // yield stress stays in Material for the indicators that need it.
-  if (cf.model == Model::Plastic && !std::isfinite(cf.material.p_lim) && !std::isnan(cf.material.yield_min())) {
-    cf.material.p_lim = p_lim_from_yield(cf.material.yield_min());
-    cf.material.yield_law = true;
-  }
-  if (cf.model == Model::Plastic && !std::isfinite(cf.material.p_lim))
+  if (cf.model == Model::Plastic && !derive_plastic_law(cf.material))
     c.fail("/material/p_lim_MPa", nullptr, "required for the plastic model: give the steel's yield stress "
            "\"yield_MPa\" (p_lim is derived from it) or your own \"p_lim_MPa\"");
   // solver

@@ -5,6 +5,8 @@ elastic half-space and the strip method, for scripts and vehicle-dynamics loops 
     pair = mhcontact.Pair(mhcontact.Profile.standard("S1002"), mhcontact.Profile.standard("60E1"),
                           {"rail_inclination": 40})
     pair.solve(2e-3, Q_N=50e3)["Fy_kN"]
+    steel = mhcontact.Pair(mhcontact.Profile.standard("S1002"), mhcontact.Profile.standard("60E1"),
+                           {"rail_inclination": 40, "yield_wheel_Pa": 350e6})   # plastic: yield law
     cols = pair.solve_many(np.linspace(-6e-3, 10e-3, 1000), Q_N=50e3)   # columns of cases.csv
 
 Inputs are SI (m, N, rad); results carry the names and units of the command's tables (cases.csv:
@@ -32,8 +34,10 @@ def _prescribed(Q_N, dz_m):
 
 
 # Pair (the extension's class): Pair(wheel, rail, options) with options the fields of
-# mhc_pair_options (SI: gauge_m, rail_inclination, E_wheel_Pa, p_lim_Pa, method, tY_min_m, ...), or
-# Pair.from_case_file(path). Immutable; share it between threads. Its solve methods are these:
+# mhc_pair_options (SI: gauge_m, rail_inclination, E_wheel_Pa, p_lim_Pa, yield_wheel_Pa,
+# yield_rail_Pa, method, tY_min_m, ...), or Pair.from_case_file(path). A yield stress alone gives
+# the plastic model with the yield law, as material.yield_MPa in a case file (docs/method.md §5.1).
+# Immutable; share it between threads. Its solve methods are these:
 
 
 def _pair_solve(self, tY_m, Q_N=None, dz_m=None, roll_rad=0.0):

@@ -117,3 +117,128 @@ def test_profiles_from_standard_and_points():
     assert a["contacts"] and a["contacts"][0]["N_kN"] > 0
     with pytest.raises(TypeError, match="unknown option"):
         mhcontact.Pair(w, r, {"gage_m": 1.435})
+
+
+def _manchester_profiles():
+    return (mhcontact.Profile.read(os.path.join(SRC, "profiles", "MBench_S1002_v3.prw"), "wheel"),
+            mhcontact.Profile.read(os.path.join(SRC, "profiles", "MBench_UIC60_v3.prr"), "rail"))
+
+
+def _case_file(d, material):
+    """cases/manchester.json, plastic, with `material`, profiles by absolute path."""
+    path = os.path.join(d, "case.json")
+    with open(path, "w") as f:
+        f.write('{"wheel": {"profile": "%s", "nominal_radius_mm": 460},'
+                ' "rail": {"profile": "%s", "inclination": "as-is"},'
+                ' "material": %s, "model": "plastic", "sweep": {"tY_mm": [0], "Q_kN": [100]}}'
+                % (os.path.join(SRC, "profiles", "MBench_S1002_v3.prw"),
+                   os.path.join(SRC, "profiles", "MBench_UIC60_v3.prr"), material))
+    return path
+
+
+def test_yield_stress_as_the_case_file():
+    # Interface equivalence: yield_wheel_Pa / yield_rail_Pa give the pair of a case file's yield_MPa.
+    w, r = _manchester_profiles()
+    tY = np.linspace(-6e-3, 10e-3, 33)
+    with tempfile.TemporaryDirectory() as d:
+        for options, material in (({"yield_wheel_Pa": 350e6}, '{"yield_MPa": 350}'),
+                                  ({"yield_wheel_Pa": 350e6, "yield_rail_Pa": 500e6},
+                                   '{"wheel": {"yield_MPa": 350}, "rail": {"yield_MPa": 500}}')):
+            ours = mhcontact.Pair(w, r, options).solve_many(tY, Q_N=100e3, threads=1)
+            ref = mhcontact.Pair.from_case_file(_case_file(d, material)).solve_many(tY, Q_N=100e3, threads=1)
+            for name in mhcontact.CASE_COLUMNS:
+                np.testing.assert_array_equal(ours[name], ref[name], err_msg=f"{options}: {name}")
+            assert ours["plastic"].sum() > 0
+
+
+def _ellip_KE(k):
+    """Complete elliptic integrals K(k), E(k) by the arithmetic-geometric mean (Abramowitz &
+    Stegun 17.6.3-4): E/K = 1 - sum 2^(n-1) c_n^2."""
+    a, b, c, s, w = 1.0, math.sqrt(1 - k * k), k, 0.5 * k * k, 0.5
+    for _ in range(40):  # quadratic convergence: c is at round-off after about 6 steps
+        a, b, c = 0.5 * (a + b), math.sqrt(a * b), 0.5 * (a - b)
+        w *= 2
+        s += w * c * c
+    K = math.pi / (2 * a)
+    return K, K * (1 - s)
+
+
+def _hertz(A, B, N, E_J):
+    """Hertz's ellipse of the gap A x^2 + B y^2 under N (Johnson, Contact Mechanics, eqs. 3.69-3.71):
+    (a along x, b along y, p0). For A <= B, g = b/a from B/A = (K - D)/(g^2 D), D = (K - E)/e^2,
+    e^2 = 1 - g^2; a^3 = 3 N D / (2 pi E* A), p0 = 3 N / (2 pi a b)."""
+    if A > B:
+        b, a, p0 = _hertz(B, A, N, E_J)
+        return a, b, p0
+
+    def ratio(g):
+        e2 = 1 - g * g
+        K, E = _ellip_KE(math.sqrt(e2))
+        D = (K - E) / e2
+        return (K - D) / (g * g * D), D
+
+    lo, hi = 1e-6, 1 - 1e-9  # ratio falls from large to 1 as g rises to 1
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if ratio(mid)[0] > B / A:
+            lo = mid
+        else:
+            hi = mid
+    g = 0.5 * (lo + hi)
+    D = ratio(g)[1]
+    a = (3 * N * D / (2 * math.pi * E_J * A)) ** (1.0 / 3.0)
+    return a, g * a, 3 * N / (2 * math.pi * a * g * a)
+
+
+def test_yield_law_against_its_closed_form():
+    # method.md §5.1 written out, independent of the library: the patch of penetration h0 is the
+    # Hertz patch of some load N_H (_hertz), its pressure flattened above p_y = 1.6 sigma_y with
+    # slope 0.3, so N = 0.3 N_H + 0.7 pi a b p_y (1 - s^2/3), s = p_y/p0 (N = N_H for p0 <= p_y),
+    # and p_max = p_y + 0.3 (p0 - p_y). N_H is bisected from the contact's N. Tolerance 1e-7
+    # relative (the bisection of g above is good to about 1e-9).
+    sigma_y, beta = 350e6, 0.3
+    p_y = 1.6 * sigma_y
+    w, r = _manchester_profiles()
+    pair = mhcontact.Pair(w, r, {"yield_wheel_Pa": sigma_y})
+    E_J = 1.0 / (2 * (1 - 0.28 ** 2) / 210e9)  # Johnson's E* of two steels, E 210 GPa, nu 0.28
+    beyond = 0
+    for tY in (0.0, 3e-3, 6.5e-3):
+        for c in pair.solve(tY, Q_N=100e3)["contacts"]:
+            A, B, N = c["A_per_mm"] * 1e3, c["B_per_mm"] * 1e3, c["N_kN"] * 1e3
+
+            def law(N_H):
+                a, b, p0 = _hertz(A, B, N_H, E_J)
+                if p0 <= p_y:
+                    return N_H
+                s = p_y / p0
+                return beta * N_H + (1 - beta) * math.pi * a * b * p_y * (1 - s * s / 3)
+
+            lo, hi = N, N / beta  # 0.3 N_H <= N <= N_H
+            for _ in range(100):
+                mid = 0.5 * (lo + hi)
+                if law(mid) < N:
+                    lo = mid
+                else:
+                    hi = mid
+            a, b, p0 = _hertz(A, B, 0.5 * (lo + hi), E_J)
+            assert c["plastic"] == (p0 > p_y)
+            beyond += p0 > p_y
+            assert c["a_mm"] * 1e-3 == pytest.approx(a, rel=1e-7)
+            assert c["b_mm"] * 1e-3 == pytest.approx(b, rel=1e-7)
+            assert c["pmax_MPa"] * 1e6 == pytest.approx(p_y + beta * (p0 - p_y) if p0 > p_y else p0, rel=1e-7)
+    assert beyond >= 3
+
+
+def test_yield_stress_errors_and_defaults():
+    w, r = _manchester_profiles()
+    with pytest.raises(ValueError, match=r"options.yield_wheel_Pa = -1 Pa: a yield stress must be > 0 and finite"):
+        mhcontact.Pair(w, r, {"yield_wheel_Pa": -1.0})
+    with pytest.raises(ValueError, match="without yield_wheel_Pa"):
+        mhcontact.Pair(w, r, {"yield_rail_Pa": 500e6})
+    # p_lim_Pa given takes precedence: the capped law, as p_lim_MPa in a case file.
+    with tempfile.TemporaryDirectory() as d:
+        ours = mhcontact.Pair(w, r, {"yield_wheel_Pa": 350e6, "p_lim_Pa": 900e6}).solve(0.0, Q_N=100e3)
+        ref = mhcontact.Pair.from_case_file(_case_file(d, '{"yield_MPa": 350, "p_lim_MPa": 900}')).solve(0.0, Q_N=100e3)
+    assert ours["pmax_MPa"] == ref["pmax_MPa"]
+    assert ours["contacts"] == ref["contacts"]
+    assert mhcontact.Pair(w, r, {}).solve(0.0, Q_N=100e3)["plastic"] == 0  # no yield stress: elastic

@@ -1,12 +1,15 @@
 // The C interface (include/mhcontact.h) as a host program uses it: errors crossing the boundary
 // with the command's wording, unsupported input refused, no-contact cases, identical numbers
 // through the command and the C interface, the approach-prescribed solve against the
-// load-prescribed one, and two threads on one pair.
+// load-prescribed one, two threads on one pair, and the yield stress: the case file's plastic
+// model, the yield law against its closed form, and the options of an older header.
 #include <catch2/catch.hpp>
 
 #include <mhcontact.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -22,6 +25,7 @@
 #include "cli.hpp"
 #include "core/errors.hpp"
 #include "profile/read.hpp"
+#include "support/hertz_reference.hpp"
 
 namespace fs = std::filesystem;
 
@@ -323,4 +327,208 @@ TEST_CASE("C interface: profiles from points and standard names build a pair", "
   CHECK(b.Fy_N == Approx(a.Fy_N).epsilon(1e-6));  // the same profile, read back through points
   mhc_pair_free(p1);
   mhc_pair_free(p2);
+}
+
+namespace {
+/// The Manchester pair of cases/manchester.json built through mhc_pair_create from `o` (the
+/// case's track and radius are the defaults of mhc_pair_options_init; its rail is used as-is).
+mhc_pair* manchester_created(const mhc_pair_options& o) {
+  mhc_profile *w = nullptr, *r = nullptr;
+  REQUIRE(mhc_profile_read((kSrc + "/profiles/MBench_S1002_v3.prw").c_str(), MHC_WHEEL, &w) == MHC_OK);
+  REQUIRE(mhc_profile_read((kSrc + "/profiles/MBench_UIC60_v3.prr").c_str(), MHC_RAIL, &r) == MHC_OK);
+  mhc_pair* p = nullptr;
+  const mhc_error e = mhc_pair_create(w, r, &o, &p);
+  mhc_profile_free(w);
+  mhc_profile_free(r);
+  INFO(mhc_last_message());
+  REQUIRE(e == MHC_OK);
+  return p;
+}
+
+/// cases/manchester.json with its "material", "model" and "method" replaced, written to `dir`
+/// (profiles by absolute path), read by mhc_pair_from_case_file.
+mhc_pair* manchester_case(const std::string& dir, const std::string& material, const std::string& model,
+                          const std::string& method) {
+  const std::string path = dir + "/case.json";
+  std::ofstream(path) << "{\"wheel\": {\"profile\": \"" << kSrc << "/profiles/MBench_S1002_v3.prw\", \"nominal_radius_mm\": 460},"
+                      << "\"rail\": {\"profile\": \"" << kSrc << "/profiles/MBench_UIC60_v3.prr\", \"inclination\": \"as-is\"},"
+                      << "\"track\": {\"gauge_mm\": 1435, \"gauge_height_mm\": 14, \"flange_back_distance_mm\": 1360,"
+                      << " \"flange_back_position_mm\": -70},"
+                      << "\"material\": " << material << ", \"model\": \"" << model << "\", \"method\": \"" << method << "\","
+                      << "\"sweep\": {\"tY_mm\": [0], \"Q_kN\": [100]}}";
+  mhc_pair* p = nullptr;
+  const mhc_error e = mhc_pair_from_case_file(path.c_str(), &p);
+  INFO(mhc_last_message());
+  REQUIRE(e == MHC_OK);
+  return p;
+}
+}  // namespace
+
+TEST_CASE("C interface: a yield stress gives the case file's plastic model (yield law, capped law, grid cap)",
+          "[capi][yield]") {
+  // Interface equivalence: the same material through mhc_pair_options and through the case file's
+  // "material" give the same bytes, case by case. The accuracy of the law itself is the next test's.
+  const std::string dir = fs::temp_directory_path() / ("mhcontact_capi_yield_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  struct Variant {
+    const char* what;
+    double yield_wheel, yield_rail, p_lim;
+    int32_t method;
+    const char* material;
+    const char* method_name;
+    bool plastic_at_100kN;  // some contact beyond its elastic range at t_Y = 0, 100 kN
+  };
+  const Variant variants[] = {
+      {"yield law", 350e6, NAN, INFINITY, MHC_METHOD_MULTI_HERTZIAN, R"({"E_GPa": 210, "nu": 0.28, "yield_MPa": 350})",
+       "multi-hertzian", true},
+      {"yield law, per body (the softer wheel's)", 350e6, 500e6, INFINITY, MHC_METHOD_MULTI_HERTZIAN,
+       R"({"E_GPa": 210, "nu": 0.28, "wheel": {"yield_MPa": 350}, "rail": {"yield_MPa": 500}})", "multi-hertzian", true},
+      {"capped law: p_lim given, yield kept", 350e6, NAN, 1500e6, MHC_METHOD_MULTI_HERTZIAN,
+       R"({"E_GPa": 210, "nu": 0.28, "yield_MPa": 350, "p_lim_MPa": 1500})", "multi-hertzian", false},
+      {"half-space, cap 2.1 sigma_y", 350e6, NAN, INFINITY, MHC_METHOD_HALF_SPACE,
+       R"({"E_GPa": 210, "nu": 0.28, "yield_MPa": 350})", "half-space", true},
+  };
+  for (const Variant& v : variants) {
+    INFO(v.what);
+    mhc_pair_options o;
+    mhc_pair_options_init(&o);
+    o.yield_wheel_Pa = v.yield_wheel;
+    o.yield_rail_Pa = v.yield_rail;
+    o.p_lim_Pa = v.p_lim;
+    o.method = v.method;
+    mhc_pair* created = manchester_created(o);
+    mhc_pair* from_file = manchester_case(dir, v.material, "plastic", v.method_name);
+    Workspace wc(created), wf(from_file);
+    const bool grid = v.method == MHC_METHOD_HALF_SPACE;
+    const std::vector<double> tYs = grid ? std::vector<double>{0.0} : std::vector<double>{-4e-3, 0.0, 3e-3, 6.5e-3, 8.5e-3};
+    for (double tY : tYs) {
+      for (double Q : {50e3, 100e3}) {
+        INFO("tY " << tY << " m, Q " << Q << " N");
+        mhc_result a = fresh(), b = fresh();
+        REQUIRE(mhc_solve_load(created, wc.ws, tY, 0.0, Q, &a) == MHC_OK);
+        REQUIRE(mhc_solve_load(from_file, wf.ws, tY, 0.0, Q, &b) == MHC_OK);
+        REQUIRE((a.status == MHC_STATUS_OK || a.status == MHC_STATUS_OUTSIDE_VALIDITY));
+        CHECK(a.n_contacts == b.n_contacts);
+        CHECK(a.plastic == b.plastic);
+        CHECK(a.p_max_Pa == b.p_max_Pa);
+        CHECK(std::memcmp(&a, &b, sizeof a) == 0);
+        if (tY == 0.0 && Q == 100e3) CHECK(a.plastic == (v.plastic_at_100kN ? 1 : 0));
+        // The grid methods cap at p_lim = 2.1 sigma_y (method.md §5.1), 735 MPa here.
+        if (grid) CHECK(a.p_max_Pa <= 2.1 * 350e6 * (1 + 1e-12));
+        if (grid && Q == 100e3) CHECK(a.p_max_Pa == Approx(2.1 * 350e6).epsilon(1e-12));
+      }
+    }
+    mhc_pair_free(created);
+    mhc_pair_free(from_file);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("C interface: the yield law of a contact against its closed form (method.md §5.1)", "[capi][yield]") {
+  // The law written out here, independent of lib/contact/ellipse: the patch of virtual penetration
+  // h0 is the Hertz patch of some load N_H (a, b, p0 from tests/support/hertz_reference, Johnson
+  // §3.6), its pressure flattened above p_y = 1.6 sigma_y with slope 0.3, so the load carried is
+  //     N = 0.3 N_H + 0.7 pi a b p_y (1 - s^2/3),  s = p_y/p0   (p0 > p_y; N = N_H otherwise)
+  // and p_max = p_y + 0.3 (p0 - p_y). Given N (the contact's), N_H is bisected.
+  // Tolerance 1e-9 relative: the library's fast m, n table (4.7e-11) and the solver's 1e-12.
+  const double sigma_y = 350e6, p_y = 1.6 * sigma_y, beta = 0.3;
+  const double E_J = mh::testing::johnson_modulus(210e9, 0.28, 210e9, 0.28);
+  mhc_pair_options o;
+  mhc_pair_options_init(&o);
+  o.yield_wheel_Pa = sigma_y;
+  mhc_pair* pair = manchester_created(o);
+  Workspace w(pair);
+  int plastic_contacts = 0;
+  for (double tY : {0.0, 3e-3, 6.5e-3}) {
+    for (double Q : {20e3, 100e3}) {
+      mhc_result r = fresh();
+      REQUIRE(mhc_solve_load(pair, w.ws, tY, 0.0, Q, &r) == MHC_OK);
+      REQUIRE((r.status == MHC_STATUS_OK || r.status == MHC_STATUS_OUTSIDE_VALIDITY));
+      for (int k = 0; k < std::min(r.n_contacts, MHC_MAX_CONTACTS); ++k) {
+        const mhc_contact& c = r.contact[k];
+        INFO("tY " << tY << " m, Q " << Q << " N, contact " << c.index << ", N " << c.N_N << " N");
+        auto law = [&](double N_H) {
+          const auto h = mh::testing::hertz_reference(c.A_per_m, c.B_per_m, N_H, E_J);
+          if (h.p0 <= p_y) return N_H;
+          const double s = p_y / h.p0;
+          return beta * N_H + (1 - beta) * M_PI * h.a * h.b * p_y * (1 - s * s / 3);
+        };
+        double lo = c.N_N, hi = c.N_N / beta;  // 0.3 N_H <= N <= N_H
+        for (int i = 0; i < 200 && hi - lo > 1e-14 * hi; ++i) {
+          const double mid = 0.5 * (lo + hi);
+          (law(mid) < c.N_N ? lo : hi) = mid;
+        }
+        const auto h = mh::testing::hertz_reference(c.A_per_m, c.B_per_m, 0.5 * (lo + hi), E_J);
+        const bool beyond = h.p0 > p_y;
+        plastic_contacts += beyond;
+        CHECK(((c.flags & MHC_CONTACT_PLASTIC) != 0) == beyond);
+        CHECK(c.a_m == Approx(h.a).epsilon(1e-9));
+        CHECK(c.b_m == Approx(h.b).epsilon(1e-9));
+        CHECK(c.p_max_Pa == Approx(beyond ? p_y + beta * (h.p0 - p_y) : h.p0).epsilon(1e-9));
+        CHECK(c.h0_m == Approx(h.b * h.b * c.B_per_m).epsilon(1e-9));  // b = sqrt(h0/B), eq. 6
+      }
+      if (plastic_contacts > 0) CHECK(r.plastic == 1);
+    }
+  }
+  CHECK(plastic_contacts >= 4);  // the law's plastic branch is what is tested
+  mhc_pair_free(pair);
+}
+
+TEST_CASE("C interface: options of a header without the yield stress are read, other sizes refused",
+          "[capi][yield]") {
+  mhc_profile *w = nullptr, *r = nullptr;
+  REQUIRE(mhc_profile_read((kSrc + "/profiles/MBench_S1002_v3.prw").c_str(), MHC_WHEEL, &w) == MHC_OK);
+  REQUIRE(mhc_profile_read((kSrc + "/profiles/MBench_UIC60_v3.prr").c_str(), MHC_RAIL, &r) == MHC_OK);
+  mhc_pair_options o;
+  mhc_pair_options_init(&o);
+  CHECK(o.struct_size == sizeof(mhc_pair_options));
+  CHECK(std::isnan(o.yield_wheel_Pa));
+  CHECK(std::isnan(o.yield_rail_Pa));
+  mhc_pair* elastic = nullptr;
+  REQUIRE(mhc_pair_create(w, r, &o, &elastic) == MHC_OK);
+  // An older caller's struct ends before yield_wheel_Pa: whatever lies beyond is not read (here a
+  // yield stress that would make the pair plastic), the pair is elastic.
+  mhc_pair_options old = o;
+  old.struct_size = offsetof(mhc_pair_options, yield_wheel_Pa);
+  old.yield_wheel_Pa = 350e6;
+  mhc_pair* from_old = nullptr;
+  REQUIRE(mhc_pair_create(w, r, &old, &from_old) == MHC_OK);
+  {
+    Workspace we(elastic), wo(from_old);
+    mhc_result a = fresh(), b = fresh();
+    REQUIRE(mhc_solve_load(elastic, we.ws, 0.0, 0.0, 100e3, &a) == MHC_OK);
+    REQUIRE(mhc_solve_load(from_old, wo.ws, 0.0, 0.0, 100e3, &b) == MHC_OK);
+    CHECK(b.plastic == 0);
+    CHECK(std::memcmp(&a, &b, sizeof a) == 0);
+  }
+  mhc_pair_free(elastic);
+  mhc_pair_free(from_old);
+  mhc_pair* none = nullptr;
+  for (std::size_t size : {sizeof(mhc_pair_options) - 8, sizeof(mhc_pair_options) + 8, std::size_t{0}}) {
+    mhc_pair_options bad = o;
+    bad.struct_size = size;
+    INFO("struct_size " << size);
+    CHECK(mhc_pair_create(w, r, &bad, &none) == MHC_ERR_ARGUMENT);
+    CHECK_THAT(mhc_last_message(), Catch::Contains("struct_size = " + std::to_string(size)));
+    CHECK(none == nullptr);
+  }
+  // A yield stress must be > 0 and finite or NaN; the rail's alone is refused (as a case file's
+  // per-body yield_MPa needs both).
+  struct Bad {
+    double wheel, rail;
+    const char* message;
+  };
+  for (const Bad& b : {Bad{-350e6, NAN, "options.yield_wheel_Pa = -3.5e+08 Pa: a yield stress must be > 0 and finite"},
+                       Bad{0, NAN, "options.yield_wheel_Pa = 0 Pa"}, Bad{INFINITY, NAN, "options.yield_wheel_Pa = inf Pa"},
+                       Bad{350e6, -1, "options.yield_rail_Pa = -1 Pa"},
+                       Bad{NAN, 500e6, "options.yield_rail_Pa = 5e+08 Pa without yield_wheel_Pa"}}) {
+    mhc_pair_options bad = o;
+    bad.yield_wheel_Pa = b.wheel;
+    bad.yield_rail_Pa = b.rail;
+    CHECK(mhc_pair_create(w, r, &bad, &none) == MHC_ERR_ARGUMENT);
+    CHECK_THAT(mhc_last_message(), Catch::Contains(b.message));
+    CHECK(none == nullptr);
+  }
+  mhc_profile_free(w);
+  mhc_profile_free(r);
 }
