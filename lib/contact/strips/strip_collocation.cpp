@@ -34,12 +34,14 @@ constexpr double kPenetrationRtol = 1e-9;  // an unloaded strip counts as penetr
 /// inactive strips, q = K⁻¹(z + E_R mu), z = rhs with z_R = 0, and mu from q_R = 0,
 /// (K⁻¹)_RR mu = −(K⁻¹ z)_R: a |R|×|R| system and one back-substitution per strip of R (the
 /// capacitance matrix method); (K q)_R = mu is the displacement the add-back test needs.
-/// A large R (over a third of E) is solved directly on the active strips instead.
+/// A large R (over a third of E) is solved directly on the active strips instead. `col` holds the
+/// columns K⁻¹ e_r taken so far with this factorisation (empty ones not yet taken): the
+/// collocations that reuse a factorisation reuse them.
 bool solve_active_set(const Eigen::MatrixXd& K, const Eigen::PartialPivLU<Eigen::MatrixXd>& lu,
-                      const Eigen::VectorXd& rhs, double tol, int max_iter, std::vector<char>& in_act,
-                      Eigen::VectorXd& q) {
+                      std::vector<Eigen::VectorXd>& col, const Eigen::VectorXd& rhs, double tol, int max_iter,
+                      std::vector<char>& in_act, Eigen::VectorXd& q) {
   const int e = static_cast<int>(K.rows());
-  std::vector<Eigen::VectorXd> col(static_cast<std::size_t>(e));  // K⁻¹ e_r, when r is first inactive
+  col.resize(static_cast<std::size_t>(e));  // K⁻¹ e_r, when r is first inactive (kept with the factorisation)
   std::vector<int> R, A;
   Eigen::VectorXd KqR;
   for (int it = 0; it < max_iter; ++it) {
@@ -155,6 +157,7 @@ double Solver::K_end(int i, double ai, int j, double aj, double rcap) const {
 void Solver::capped_column(Collocation& c, int jj) const {
   const int m = static_cast<int>(c.cand.size()), j = c.cand[jj];
   const double f = H * c.q[jj];
+  c.Ucap.col(jj).setZero();
   if (same_xc) {  // on the centre lines: a function of the distance |i − j| only
     int dmax = 0;
     for (int r = 0; r < m; ++r)
@@ -207,7 +210,9 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
   c.q.assign(m, 0.0);
   c.aeff = c.a;
   c.rcap.assign(m, 1.0);
-  if (std::isfinite(p_lim)) c.Ucap = Eigen::MatrixXd::Zero(m, m);  // column j: displacement from capped strip j
+  // Column j: displacement from capped strip j, zeroed when j is capped (capped_column); only
+  // capped strips' columns are read.
+  if (std::isfinite(p_lim) && (c.Ucap.rows() != m || c.Ucap.cols() != m)) c.Ucap.resize(m, m);
   c.settled = false;
   c.as_ok = true;
   std::vector<int> act, E, newly;
@@ -231,17 +236,18 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
       in_act[cc] = start[E[cc]];
     }
     // The factorisation of K_EE: one of an earlier pass or collocation on the same set and K, else new.
-    const Eigen::PartialPivLU<Eigen::MatrixXd>* lu = nullptr;
+    Collocation::Factorisation* fac = nullptr;
     if (e > 0) {
-      for (const Collocation::Factorisation& f : c.lus)
-        if (f.of == E) { lu = &f.lu; break; }
-      if (!lu) {
+      for (Collocation::Factorisation& f : c.lus)
+        if (f.of == E) { fac = &f; break; }
+      if (!fac) {
         if (c.lus.size() >= Collocation::kMaxFactorisations) c.lus.erase(c.lus.begin());
-        c.lus.push_back({E, Eigen::PartialPivLU<Eigen::MatrixXd>(KE)});
-        lu = &c.lus.back().lu;
+        c.lus.push_back({E, Eigen::PartialPivLU<Eigen::MatrixXd>(KE), {}});
+        fac = &c.lus.back();
       }
     }
-    c.as_ok = e == 0 || solve_active_set(KE, *lu, rhs, kPenetrationRtol * (delta - gmin), opt.max_active_set, in_act, qE);
+    c.as_ok = e == 0 || solve_active_set(KE, fac->lu, fac->inv_col, rhs, kPenetrationRtol * (delta - gmin),
+                                         opt.max_active_set, in_act, qE);
     if (!c.as_ok) break;
     act.clear();
     for (int cc = 0; cc < e; ++cc) {
