@@ -54,6 +54,7 @@ struct Collocation {
     std::vector<int> of;
     Eigen::PartialPivLU<Eigen::MatrixXd> lu;
     std::vector<Eigen::VectorXd> inv_col;  ///< K⁻¹ e_r of the active-set solves, for the strips r taken so far
+    bool factorised = false;               ///< lu holds K_EE (taken on first use)
   };
   std::vector<Factorisation> lus;
   static constexpr std::size_t kMaxFactorisations = 16;
