@@ -56,13 +56,26 @@ double WheelRailGap::z_wheel(double y, double x, double* slope) const {
   return zw + r - root;
 }
 
-double WheelRailGap::projected_interpenetration_area(double dz, double step) const {
-  const int n = std::max(2, static_cast<int>(std::ceil((y1_ - y0_) / step)));
-  const double h = (y1_ - y0_) / n;
-  double A = 0;
+ProjectedInterpenetration::ProjectedInterpenetration(const WheelRailGap& gap, double step) : gap_(&gap) {
+  const double y0 = gap.y_min(), y1 = gap.y_max();
+  const int n = std::max(2, static_cast<int>(std::ceil((y1 - y0) / step)));
+  h_ = (y1 - y0) / n;
+  y_.resize(static_cast<std::size_t>(n));
+  g_.resize(static_cast<std::size_t>(n));
+  r_.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::quiet_NaN());
   for (int i = 0; i < n; ++i) {
-    const double y = y0_ + h * (i + 0.5), e = dz - g(y);
-    if (e > 0) A += 2 * std::sqrt(2 * rolling_radius(y) * e) * h;
+    y_[i] = y0 + h_ * (i + 0.5);
+    g_[i] = gap.g(y_[i]);
+  }
+}
+
+double ProjectedInterpenetration::area(double dz) const {
+  double A = 0;
+  for (std::size_t i = 0; i < g_.size(); ++i) {
+    const double e = dz - g_[i];
+    if (!(e > 0)) continue;
+    if (std::isnan(r_[i])) r_[i] = gap_->rolling_radius(y_[i]);
+    A += 2 * std::sqrt(2 * r_[i] * e) * h_;
   }
   return A;
 }

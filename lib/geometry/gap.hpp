@@ -41,10 +41,6 @@ class WheelRailGap {
   /// Intervals [a, b] of rail y where g(y) < dz (the interpenetration of a rigid vertical approach
   /// dz), found on a sampling of step `step` [m], in increasing y.
   std::vector<std::pair<double, double>> interpenetration(double dz, double step) const;
-  /// [m²] the horizontal projection of the interpenetration of a rigid vertical approach dz:
-  /// ∫ 2 √(2 r(y) (dz − g(y))) dy over g(y) < dz (the wheel's x-extent g + x²/2r < dz, as in
-  /// find_patch_regions), midpoint rule on a sampling of step `step` [m].
-  double projected_interpenetration_area(double dz, double step) const;
 
  private:
   const ProfileCurve* W_;
@@ -54,6 +50,23 @@ class WheelRailGap {
   double R0_ = 0, z0_ = 0;
   double y0_ = 0, y1_ = 0, y_contact_ = 0;
   double face_foot_ = std::numeric_limits<double>::quiet_NaN();  // [m] NaN: no gauge face
+};
+
+/// The horizontal projection of the interpenetration of a rigid vertical approach dz [m²]:
+/// ∫ 2 √(2 r(y) (dz − g(y))) dy over g(y) < dz (the wheel's x-extent g + x²/2r < dz, as in
+/// find_patch_regions), midpoint rule on a sampling of step `step` [m] of the gap's y range.
+/// g at the midpoints is sampled once (it does not depend on dz), r where first needed: a root
+/// search on dz (rigid_plastic_approach) evaluates the profiles once, not once per dz.
+class ProjectedInterpenetration {
+ public:
+  ProjectedInterpenetration(const WheelRailGap& gap, double step);
+  double area(double dz) const;
+
+ private:
+  const WheelRailGap* gap_;
+  double h_ = 0;
+  std::vector<double> y_, g_;
+  mutable std::vector<double> r_;  // NaN until first needed
 };
 
 /// A contact patch's tangent plane (CONTACT's planar contact approach): tangent to the rail at

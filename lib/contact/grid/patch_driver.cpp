@@ -52,7 +52,8 @@ void finish_grid_case(const ContactGeometry& G, double tY, const GridStart& gs, 
 
 double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim) {
   constexpr double kStep = 0.02e-3;  // [m] as find_patch_regions samples g(y)
-  auto F = [&](double z) { return p_lim * gap.projected_interpenetration_area(z, kStep) - Q; };
+  const ProjectedInterpenetration area(gap, kStep);  // the profiles sampled once for the whole search
+  auto F = [&](double z) { return p_lim * area.area(z) - Q; };
   double lo = 0, hi = 0.05e-3, F_lo = -Q, F_hi = F(hi);
   while (F_hi < 0 && hi < 0.1) {
     lo = hi;

@@ -26,7 +26,7 @@ constexpr int kMaxWiden = 12;         // widening passes per approach (docs/meth
 constexpr double kWidenRtol = 1e-6;   // a strip is widened when it gains more than this (relative)
 constexpr double kPenetrationRtol = 1e-9;  // an unloaded strip counts as penetrated beyond this × (delta − g_min)
 
-/// The amplitudes q >= 0 of the strips E with K q = rhs where q > 0 and K q >= rhs where q = 0
+/// The amplitudes q >= 0 of the strips E (K = Kc_EE, lu its factorisation) with K q = rhs where q > 0 and K q >= rhs where q = 0
 /// (no strip penetrated; a linear complementarity problem), by an active set: solve on the
 /// active strips, drop those with q < 0; once none is negative, add back every inactive strip
 /// that is penetrated (K q < rhs - tol); repeat until neither happens. `in_act` holds the
@@ -34,12 +34,27 @@ constexpr double kPenetrationRtol = 1e-9;  // an unloaded strip counts as penetr
 /// inactive strips, q = K⁻¹(z + E_R mu), z = rhs with z_R = 0, and mu from q_R = 0,
 /// (K⁻¹)_RR mu = −(K⁻¹ z)_R: a |R|×|R| system and one back-substitution per strip of R (the
 /// capacitance matrix method); (K q)_R = mu is the displacement the add-back test needs.
-/// A large R (over a third of E) is solved directly on the active strips instead.
-bool solve_active_set(const Eigen::MatrixXd& K, const Eigen::PartialPivLU<Eigen::MatrixXd>& lu,
-                      const Eigen::VectorXd& rhs, double tol, int max_iter, std::vector<char>& in_act,
-                      Eigen::VectorXd& q) {
-  const int e = static_cast<int>(K.rows());
-  std::vector<Eigen::VectorXd> col(static_cast<std::size_t>(e));  // K⁻¹ e_r, when r is first inactive
+/// A large R (over a third of E) is solved directly on the active strips instead. `col` holds the
+/// columns K⁻¹ e_r taken so far with this factorisation (empty ones not yet taken): the
+/// collocations that reuse a factorisation reuse them.
+bool solve_active_set(const Eigen::MatrixXd& Kc, Collocation::Factorisation& f, const Eigen::VectorXd& rhs, double tol,
+                      int max_iter, std::vector<char>& in_act, Eigen::VectorXd& q) {
+  const std::vector<int>& E = f.of;
+  const int e = static_cast<int>(E.size());
+  auto K = [&](int r, int c) { return Kc(E[r], E[c]); };  // K = Kc restricted to E, read in place
+  std::vector<Eigen::VectorXd>& col = f.inv_col;
+  col.resize(static_cast<std::size_t>(e));  // K⁻¹ e_r, when r is first inactive (kept with the factorisation)
+  // The factorisation of K, on first use (a solve that goes directly to the active strips needs none).
+  const auto& lu = [&]() -> const Eigen::PartialPivLU<Eigen::MatrixXd>& {
+    if (!f.factorised) {
+      Eigen::MatrixXd KE(e, e);
+      for (int cc = 0; cc < e; ++cc)
+        for (int r = 0; r < e; ++r) KE(r, cc) = K(r, cc);
+      f.lu.compute(KE);
+      f.factorised = true;
+    }
+    return f.lu;
+  };
   std::vector<int> R, A;
   Eigen::VectorXd KqR;
   for (int it = 0; it < max_iter; ++it) {
@@ -48,16 +63,16 @@ bool solve_active_set(const Eigen::MatrixXd& K, const Eigen::PartialPivLU<Eigen:
     for (int r = 0; r < e; ++r) (in_act[r] ? A : R).push_back(r);
     const int nR = static_cast<int>(R.size()), nA = static_cast<int>(A.size());
     if (nR == 0) {
-      q = lu.solve(rhs);
+      q = lu().solve(rhs);
     } else if (3 * nR <= e) {
       Eigen::VectorXd z = rhs;
       for (int r : R) z(r) = 0.0;
-      const Eigen::VectorXd w = lu.solve(z);
+      const Eigen::VectorXd w = lu().solve(z);
       Eigen::MatrixXd C(nR, nR);
       Eigen::VectorXd wR(nR);
       for (int b = 0; b < nR; ++b) {
         Eigen::VectorXd& x = col[static_cast<std::size_t>(R[b])];
-        if (x.size() == 0) x = lu.solve(Eigen::VectorXd::Unit(e, R[b]));
+        if (x.size() == 0) x = lu().solve(Eigen::VectorXd::Unit(e, R[b]));
         for (int a = 0; a < nR; ++a) C(a, b) = x(R[a]);
         wR(b) = w(R[b]);
       }
@@ -155,6 +170,7 @@ double Solver::K_end(int i, double ai, int j, double aj, double rcap) const {
 void Solver::capped_column(Collocation& c, int jj) const {
   const int m = static_cast<int>(c.cand.size()), j = c.cand[jj];
   const double f = H * c.q[jj];
+  c.Ucap.col(jj).setZero();
   if (same_xc) {  // on the centre lines: a function of the distance |i − j| only
     int dmax = 0;
     for (int r = 0; r < m; ++r)
@@ -207,7 +223,9 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
   c.q.assign(m, 0.0);
   c.aeff = c.a;
   c.rcap.assign(m, 1.0);
-  if (std::isfinite(p_lim)) c.Ucap = Eigen::MatrixXd::Zero(m, m);  // column j: displacement from capped strip j
+  // Column j: displacement from capped strip j, zeroed when j is capped (capped_column); only
+  // capped strips' columns are read.
+  if (std::isfinite(p_lim) && (c.Ucap.rows() != m || c.Ucap.cols() != m)) c.Ucap.resize(m, m);
   c.settled = false;
   c.as_ok = true;
   std::vector<int> act, E, newly;
@@ -222,26 +240,26 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
     Eigen::VectorXd ucap = Eigen::VectorXd::Zero(m);
     for (int jj = 0; jj < m; ++jj)
       if (c.capped[jj]) ucap += c.Ucap.col(jj);
-    Eigen::MatrixXd KE(e, e);
     Eigen::VectorXd rhs(e), qE = Eigen::VectorXd::Zero(e);
     std::vector<char> in_act(e);
     for (int cc = 0; cc < e; ++cc) {
-      for (int r = 0; r < e; ++r) KE(r, cc) = c.K(E[r], E[cc]);
       rhs(cc) = delta - geo.g[c.cand[E[cc]]] - ucap(E[cc]);
       in_act[cc] = start[E[cc]];
     }
-    // The factorisation of K_EE: one of an earlier pass or collocation on the same set and K, else new.
-    const Eigen::PartialPivLU<Eigen::MatrixXd>* lu = nullptr;
+    // The factorisation of K_EE: one of an earlier pass or collocation on the same set and K, else a
+    // new one (factorised when the active-set solve first needs it).
+    Collocation::Factorisation* fac = nullptr;
     if (e > 0) {
-      for (const Collocation::Factorisation& f : c.lus)
-        if (f.of == E) { lu = &f.lu; break; }
-      if (!lu) {
+      for (Collocation::Factorisation& f : c.lus)
+        if (f.of == E) { fac = &f; break; }
+      if (!fac) {
         if (c.lus.size() >= Collocation::kMaxFactorisations) c.lus.erase(c.lus.begin());
-        c.lus.push_back({E, Eigen::PartialPivLU<Eigen::MatrixXd>(KE)});
-        lu = &c.lus.back().lu;
+        c.lus.push_back({E, {}, {}, false});
+        fac = &c.lus.back();
       }
     }
-    c.as_ok = e == 0 || solve_active_set(KE, *lu, rhs, kPenetrationRtol * (delta - gmin), opt.max_active_set, in_act, qE);
+    c.as_ok = e == 0 || solve_active_set(c.K, *fac, rhs, kPenetrationRtol * (delta - gmin),
+                                         opt.max_active_set, in_act, qE);
     if (!c.as_ok) break;
     act.clear();
     for (int cc = 0; cc < e; ++cc) {

@@ -42,7 +42,8 @@ struct Collocation {
   std::vector<double> rcap;     ///< p_lim / q for capped strips, 1 otherwise
   std::vector<char> capped;     ///< flat-topped at p_lim
   Eigen::MatrixXd Ucap;         ///< [m] column jj: displacement at the centres of the elastic strips from capped strip jj
-                                ///< (rows of capped strips, whose equations are dropped, are not computed)
+                                ///< (rows of capped strips, whose equations are dropped, are zero; the columns
+                                ///< of strips not capped are not set)
   bool as_ok = true;            ///< the active set settled
   bool settled = true;          ///< the plastic set settled
   /// Factorisations of K restricted to sets of candidates (indices ii), reused across approaches:
@@ -52,6 +53,8 @@ struct Collocation {
   struct Factorisation {
     std::vector<int> of;
     Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+    std::vector<Eigen::VectorXd> inv_col;  ///< K⁻¹ e_r of the active-set solves, for the strips r taken so far
+    bool factorised = false;               ///< lu holds K_EE (taken on first use)
   };
   std::vector<Factorisation> lus;
   static constexpr std::size_t kMaxFactorisations = 16;

@@ -191,11 +191,22 @@ StripResult refine_extents(const Solver& S, bool load_given, double target, doub
   Eigen::VectorXd x_prev, f_prev;
   double slope = NAN;  // dN/dδ at fixed extents, from the previous pass's secant
   Collocation c;
+  std::vector<double> built;  // the extent each column of c.K was built for
+  std::vector<int> cand;
   for (int pass = 1;; ++pass) {
     // The strips taking part: those with an extent, and those interpenetrated (they may enter).
-    c = Collocation();
+    // With the same strips as the last pass, K keeps the columns whose extent did not move (the
+    // capped strips keep theirs through the refinement); else it is built anew.
+    cand.clear();
     for (int i = 0; i < n; ++i)
-      if (a[i] > 0 || geo.g[i] < delta) { c.cand.push_back(i); c.a.push_back(a[i]); }
+      if (a[i] > 0 || geo.g[i] < delta) cand.push_back(i);
+    if (cand != c.cand) {
+      c = Collocation();
+      c.cand = cand;
+      built.clear();
+    }
+    c.a.clear();
+    for (int i : c.cand) c.a.push_back(a[i]);
     if (c.cand.empty()) {
       StripResult res;
       res.status = StripStatus::NoContact;
@@ -204,7 +215,6 @@ StripResult refine_extents(const Solver& S, bool load_given, double target, doub
       return res;
     }
     const int m = static_cast<int>(c.cand.size());
-    std::vector<double> built;
     S.build_K(c, built);
     std::vector<char> act(m);
     for (int ii = 0; ii < m; ++ii) act[ii] = was_loaded[c.cand[ii]];
