@@ -55,10 +55,12 @@ struct Material {
 };
 
 /// [-] p_lim / σ_y when only the yield stress is given: the cap of the grid methods (half-space,
-/// strips) (docs/method.md §5.1). Basis: the project's elastic–perfectly-plastic FE of crossed
-/// cylinders R 460 × 300 mm (tests/data/fe): the capped ellipse law with 2.1 σ_y gives areas
-/// 2 … 9 % smaller than the FE and approaches within 2 % (p0_el/σ_y 1.5 … 3.9). The multi-Hertzian
-/// ellipse uses the yield law instead (Material::yield_law).
+/// strips) (docs/method.md §5.1). It is the saturated peak pressure of the project's
+/// elastic–perfectly-plastic FE (2.1–2.3 σ_y, tests/data/fe). The capped half-space with it, against
+/// those FE rows (tests/unit/contact/test_grid_plastic_fe.cpp): within 5 % in area and approach
+/// while p0_el/σ_y ≤ 2.1; above, approach within 2 %, area 6–12 % smaller (the FE pressure is
+/// flattened from first yield on, a cap only truncates; p0_el/σ_y 1.5 … 3.9, a/b 1.3 … 9). The
+/// multi-Hertzian ellipse uses the yield law instead (Material::yield_law).
 inline constexpr double kPlimPerYield = 2.1;
 /// [Pa] p_lim derived from a yield stress σ_y [Pa] (kPlimPerYield σ_y).
 inline double p_lim_from_yield(double sigma_y) { return kPlimPerYield * sigma_y; }

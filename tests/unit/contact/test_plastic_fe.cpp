@@ -4,34 +4,20 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "contact/ellipse/ellipse_law.hpp"
 #include "contact/options.hpp"
 #include "output/csv_table.hpp"
+#include "support/fe_table.hpp"
 
 using namespace mh;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-// A table of tests/data/fe: '#' provenance lines, then a CSV with a header.
-CsvTable read_fe_table(const std::string& name) {
-  const std::string path = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/fe/" + name;
-  std::ifstream in(path);
-  REQUIRE(in.good());
-  std::string line, text;
-  while (std::getline(in, line))
-    if (line.empty() || line[0] != '#') text += line + "\n";
-  return parse_csv(text, path);
-}
-
-double num(const CsvTable& t, std::size_t row, const char* col) {
-  REQUIRE(t.has_column(col));
-  return std::stod(t.rows[row][static_cast<std::size_t>(t.column(col))]);
-}
+using mh::testing::read_fe_table;
+double num(const CsvTable& t, std::size_t row, const char* col) { return mh::testing::fe_num(t, row, col); }
 
 Material steel() {
   Material m;
