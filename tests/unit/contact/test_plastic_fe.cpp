@@ -186,9 +186,10 @@ TEST_CASE("yield law against the 3-D FE tables of a flange-like and a conformal-
   // Flange: area and approach within the 5 % aim (measured area +2.2 … +2.4 %, approach
   // +0.4 … +0.8 %, p0_el/σ_y = 2.0 and 3.0).
   check_law("ellip3d_R460x15_sy350.csv", kFlange, true, {-0.05, 0.05, -0.05, 0.05});
-  // Conformal: approach within 5 % (measured −0.6 … +0.4 %, p0_el/σ_y = 2.0 … 3.9). The area
+  // Conformal: approach within 5 % (measured −0.6 … +0.4 %, p0_el/σ_y = 1.5 … 3.9). The area
   // misses the aim at the highest load: a KNOWN LIMIT, held at its measured value, not tuned away:
-  // −5.4 % at 3.9 (+0.6 %, +1.1 % at 2.0, 3.0). The FE patch grows along its short axis
+  // −5.4 % at 3.9 (−1.1 %, +0.6 %, +1.1 % at 1.5, 2.0, 3.0; at 1.5 the law is Hertz, and its
+  // −1.1 % is the FE's own edge bias). The FE patch grows along its short axis
   // (b/b_el = 1.28 against a/a_el = 1.09 at 3.9), the law keeps its elastic shape. Lower band:
   // the measured deviation with 0.6 % of room.
   check_law("ellip3d_R460x3000_sy350.csv", kConformal, true, {-0.06, 0.05, -0.05, 0.05});
@@ -196,8 +197,9 @@ TEST_CASE("yield law against the 3-D FE tables of a flange-like and a conformal-
 
 TEST_CASE("capped ellipse law (p_lim = 2.1 sigma_y) against the flange-like and conformal-ish FE tables", "[plastic][fe]") {
   // The deviations method.md §5.1 states for the other shapes: area 1 … 5 % smaller than the
-  // FE's (measured flange −3.8 … −1.1 %, conformal −5.1 … −2.7 %), approach −1.3 … −0.2 %; bands
-  // with 0.5 % of room or more.
+  // FE's (measured flange −3.8 … −1.1 %, conformal −5.1 … −1.1 %; at p0_el/σ_y = 1.52 the capped
+  // law is Hertz and its −1.1 % is the FE's own edge bias), approach −1.3 … +0.0 %; bands with
+  // 0.5 % of room or more.
   check_law("ellip3d_R460x15_sy350.csv", kFlange, false, {-0.045, -0.005, -0.02, 0.005});
-  check_law("ellip3d_R460x3000_sy350.csv", kConformal, false, {-0.058, -0.02, -0.02, 0.005});
+  check_law("ellip3d_R460x3000_sy350.csv", kConformal, false, {-0.058, -0.005, -0.02, 0.005});
 }
