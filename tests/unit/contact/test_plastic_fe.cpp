@@ -127,6 +127,17 @@ TEST_CASE("elastic ellipse against the 3-D FE model, flange-like and conformal-i
   check_elastic("ellip3d_R460x3000_hertz.csv", kConformal, 0.025, 0.005);
 }
 
+TEST_CASE("elastic ellipse against the 3-D FE model, second mesh level (n = 12, conformal-ish)", "[plastic][fe]") {
+  // The conformal-ish mesh refined from 8 to 12 elements per semi-axis (24 300 nodes;
+  // scripts/fe/README.md, "Second mesh level"). Measured against the library's Hertz at the FE
+  // load: centre pressure +0.07, +0.16 %; semi-axes +2.85 % (both, at 0.8 of the mesh's peak)
+  // and +0.16, +0.64 %. The semi-axes do not come closer than on n = 8: the edge is found to a
+  // fraction of an element (at 0.8 p0 the Hertz edge lies 0.28 element short of a node and the
+  // estimate stops at that node), 0.3 element being 3.1 % of a at 9.7 elements. Held at 3 %
+  // (semi-axes) and 0.5 % (pressure).
+  check_elastic("ellip3d_R460x3000_hertz_n12.csv", kConformal, 0.03, 0.005);
+}
+
 TEST_CASE("capped ellipse law (p_lim = 2.1 sigma_y) against the 3-D FE table: the deviations method.md §5.1 states", "[plastic][fe]") {
   // Elastic–perfectly-plastic crossed cylinders (ellip3d_R460x300_sy350.csv, and two rows at
   // sigma_y = 500 MPa in ellip3d_R460x300_sy500.csv; in the dimensionless
@@ -183,8 +194,10 @@ TEST_CASE("yield law against the 3-D FE tables of a flange-like and a conformal-
   // The same law (method.md §5.1), not re-calibrated, against the FE of two other shapes at
   // sigma_y = 350 MPa (scripts/fe/README.md): the flange-like R 460 x 15 mm (a/b = 9, a along the
   // rolling direction) and the conformal-ish R 460 x 3000 mm (a/b = 3.4, a across the track).
-  // Flange: area and approach within the 5 % aim (measured area +2.2 … +2.4 %, approach
-  // +0.4 … +0.8 %, p0_el/σ_y = 2.0 and 3.0).
+  // Flange: area and approach within the 5 % aim (measured area +0.3, +2.2, +2.4, −1.2 % and
+  // approach −0.0 … +0.8 % at p0_el/σ_y = 1.5, 2.0, 3.0, 3.9; at 3.9 the FE's b is clipped at its
+  // last closed node, a lower bound: a p² extrapolation of the nodal pressures puts the edge
+  // 2 % further, which would make the area −3 %, still inside).
   check_law("ellip3d_R460x15_sy350.csv", kFlange, true, {-0.05, 0.05, -0.05, 0.05});
   // Conformal: approach within 5 % (measured −0.6 … +0.4 %, p0_el/σ_y = 1.5 … 3.9). The area
   // misses the aim at the highest load: a KNOWN LIMIT, held at its measured value, not tuned away:
@@ -196,10 +209,10 @@ TEST_CASE("yield law against the 3-D FE tables of a flange-like and a conformal-
 }
 
 TEST_CASE("capped ellipse law (p_lim = 2.1 sigma_y) against the flange-like and conformal-ish FE tables", "[plastic][fe]") {
-  // The deviations method.md §5.1 states for the other shapes: area 1 … 5 % smaller than the
-  // FE's (measured flange −3.8 … −1.1 %, conformal −5.1 … −1.1 %; at p0_el/σ_y = 1.52 the capped
-  // law is Hertz and its −1.1 % is the FE's own edge bias), approach −1.3 … +0.0 %; bands with
-  // 0.5 % of room or more.
-  check_law("ellip3d_R460x15_sy350.csv", kFlange, false, {-0.045, -0.005, -0.02, 0.005});
+  // The deviations method.md §5.1 states for the other shapes: area up to 5 % smaller than the
+  // FE's (measured flange −3.8 … +0.3 %, conformal −5.1 … −1.1 %; at p0_el/σ_y = 1.52 the capped
+  // law is Hertz and its +0.3 %, −1.1 % are the FE's own edge bias), approach −1.3 … +0.2 %;
+  // bands with 0.5 % of room or more.
+  check_law("ellip3d_R460x15_sy350.csv", kFlange, false, {-0.045, 0.008, -0.02, 0.007});
   check_law("ellip3d_R460x3000_sy350.csv", kConformal, false, {-0.058, -0.005, -0.02, 0.005});
 }
