@@ -63,7 +63,7 @@ struct Band {
 // row of a plastic FE table, against the FE area and block-corrected approach.
 void check_law(const char* table, const Shape& g, bool yield_law, const Band& band) {
   const CsvTable t = read_fe_table(table);
-  REQUIRE(t.rows.size() >= 2);
+  REQUIRE(!t.rows.empty());
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     Material mat = steel();
     mat.yield = num(t, i, "sigma_y_MPa") * 1e6;
@@ -111,6 +111,17 @@ TEST_CASE("elastic ellipse against the 3-D FE model, flange-like and conformal-i
   // centre pressure -0.27 … -0.05 % and -0.17 … +0.05 %. Held as the R 460 x 300 table is.
   check_elastic("ellip3d_R460x15_hertz.csv", kFlange, 0.025, 0.005);
   check_elastic("ellip3d_R460x3000_hertz.csv", kConformal, 0.025, 0.005);
+}
+
+TEST_CASE("elastic ellipse against the 3-D FE model, second mesh level (n = 12, conformal-ish)", "[plastic][fe]") {
+  // The conformal-ish mesh refined from 8 to 12 elements per semi-axis (24 300 nodes;
+  // scripts/fe/README.md, "Second mesh level"). Measured against the library's Hertz at the FE
+  // load: centre pressure +0.07, +0.16 %; semi-axes +2.85 % (both, at 0.8 of the mesh's peak)
+  // and +0.16, +0.64 %. The semi-axes do not come closer than on n = 8: the edge is found to a
+  // fraction of an element (at 0.8 p0 the Hertz edge lies 0.28 element short of a node and the
+  // estimate stops at that node), 0.3 element being 3.1 % of a at 9.7 elements. Held at 3 %
+  // (semi-axes) and 0.5 % (pressure).
+  check_elastic("ellip3d_R460x3000_hertz_n12.csv", kConformal, 0.03, 0.005);
 }
 
 TEST_CASE("capped ellipse law (p_lim = 2.1 sigma_y) against the 3-D FE table: the deviations method.md §5.1 states", "[plastic][fe]") {
@@ -169,21 +180,32 @@ TEST_CASE("yield law against the 3-D FE tables of a flange-like and a conformal-
   // The same law (method.md §5.1), not re-calibrated, against the FE of two other shapes at
   // sigma_y = 350 MPa (scripts/fe/README.md): the flange-like R 460 x 15 mm (a/b = 9, a along the
   // rolling direction) and the conformal-ish R 460 x 3000 mm (a/b = 3.4, a across the track).
-  // Flange: area and approach within the 5 % aim (measured area +2.2 … +2.4 %, approach
-  // +0.4 … +0.8 %, p0_el/σ_y = 2.0 and 3.0).
+  // Flange: area and approach within the 5 % aim (measured area +0.3, +2.2, +2.4, −1.2 % and
+  // approach −0.0 … +0.8 % at p0_el/σ_y = 1.5, 2.0, 3.0, 3.9; at 3.9 the FE's b is clipped at its
+  // last closed node, a lower bound: a p² extrapolation of the nodal pressures puts the edge
+  // 2 % further, which would make the area −3 %, still inside).
   check_law("ellip3d_R460x15_sy350.csv", kFlange, true, {-0.05, 0.05, -0.05, 0.05});
-  // Conformal: approach within 5 % (measured −0.6 … +0.4 %, p0_el/σ_y = 2.0 … 3.9). The area
+  // Conformal: approach within 5 % (measured −0.6 … +0.4 %, p0_el/σ_y = 1.5 … 3.9). The area
   // misses the aim at the highest load: a KNOWN LIMIT, held at its measured value, not tuned away:
-  // −5.4 % at 3.9 (+0.6 %, +1.1 % at 2.0, 3.0). The FE patch grows along its short axis
-  // (b/b_el = 1.28 against a/a_el = 1.09 at 3.9), the law keeps its elastic shape. Lower band:
-  // the measured deviation with 0.6 % of room.
+  // −5.4 % at 3.9 (−1.1 %, +0.6 %, +1.1 % at 1.5, 2.0, 3.0; at 1.5 the law is Hertz, and its
+  // −1.1 % is the FE's own edge bias). Not the patch's shape alone: the flange at 3.9 grows as
+  // much along its short axis and its area matches; the FE area of this row (1.39 area_el against
+  // 1.34, 1.36 on the other shapes) carries the n = 8 edge error, up to about +3 % where, as here,
+  // the edges are not clipped (method.md §5.1). Lower band: the measured deviation with 0.6 % of
+  // room.
   check_law("ellip3d_R460x3000_sy350.csv", kConformal, true, {-0.06, 0.05, -0.05, 0.05});
+  // The same row at 3.9 on the second mesh level (n = 12; scripts/fe/README.md "Second mesh level,
+  // plastic"): FE area/area_el 1.366 against 1.393 on n = 8, approach, peak and plastic strain
+  // within 1 % of n = 8. Against it the law is inside the 5 % aim: area −3.4 %, approach −0.6 %.
+  // The n = 8 miss was for the most part the FE's edge error.
+  check_law("ellip3d_R460x3000_sy350_n12.csv", kConformal, true, {-0.05, 0.05, -0.05, 0.05});
 }
 
 TEST_CASE("capped ellipse law (p_lim = 2.1 sigma_y) against the flange-like and conformal-ish FE tables", "[plastic][fe]") {
-  // The deviations method.md §5.1 states for the other shapes: area 1 … 5 % smaller than the
-  // FE's (measured flange −3.8 … −1.1 %, conformal −5.1 … −2.7 %), approach −1.3 … −0.2 %; bands
-  // with 0.5 % of room or more.
-  check_law("ellip3d_R460x15_sy350.csv", kFlange, false, {-0.045, -0.005, -0.02, 0.005});
-  check_law("ellip3d_R460x3000_sy350.csv", kConformal, false, {-0.058, -0.02, -0.02, 0.005});
+  // The deviations method.md §5.1 states for the other shapes: area up to 5 % smaller than the
+  // FE's (measured flange −3.8 … +0.3 %, conformal −5.1 … −1.1 %; at p0_el/σ_y = 1.52 the capped
+  // law is Hertz and its +0.3 %, −1.1 % are the FE's own edge bias), approach −1.3 … +0.2 %;
+  // bands with 0.5 % of room or more.
+  check_law("ellip3d_R460x15_sy350.csv", kFlange, false, {-0.045, 0.008, -0.02, 0.007});
+  check_law("ellip3d_R460x3000_sy350.csv", kConformal, false, {-0.058, -0.005, -0.02, 0.005});
 }
