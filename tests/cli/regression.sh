@@ -5,7 +5,7 @@
 # their own CI; the rules are in tests/ref/README.md). A failure means a result CHANGED, not that
 # it is wrong: review it, and if intended, regenerate with scripts/update_refs.sh.
 set -euo pipefail
-bin=$1; src=$2
+bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1"); src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 cd "$src"
 done_dirs=" "; n=0
