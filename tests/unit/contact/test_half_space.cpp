@@ -1,12 +1,15 @@
 // The half-space method (docs/method.md §8) against CONTACT's exact results on the Manchester
 // pair (tests/data/contact/README.md): right wheel, t_Y = -6 ... 10 mm, Q = 50 kN, dx = ds = 0.2 mm,
-// E = 210 GPa, nu = 0.28. Targets: max pressure within 2 %, total area within 4 %, each
-// patch's normal force within 1 % of the load, vertical approach within 1 %, contact reference
-// point within 0.3 mm.
+// E = 210 GPa, nu = 0.28. Tolerances at about 1.5 times the worst error measured over the 17
+// cases (printed by the test; 28 Nov 2026): max pressure 2 % (measured 1.37 %), total area 1.6 %
+// (1.04 %), each patch's normal force 0.25 % of the load (0.17 %), vertical approach 0.35 %
+// (0.22 %), contact reference point 0.035 mm (0.022 mm). An FFT backend moves these by about
+// 1e-8 relative (tests/ref/README.md), far below the margins.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -39,6 +42,7 @@ TEST_CASE("half-space matches CONTACT on the Manchester sweep at Q = 50 kN", "[h
   const mh::CaseFile cf = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/manchester-halfspace.json", true);
   REQUIRE(ref.rows.size() == 17);
   const double Q = 50e3;
+  double worst_p = 0, worst_a = 0, worst_N = 0, worst_z = 0, worst_y = 0;  // printed below
   for (std::size_t i = 0; i < ref.rows.size(); ++i) {
     const double tY_mm = cell(ref, i, "y_ws_mm");
     INFO("t_Y = " << tY_mm << " mm");
@@ -51,14 +55,22 @@ TEST_CASE("half-space matches CONTACT on the Manchester sweep at Q = 50 kN", "[h
     const double Fn = cell(ref, i, "Fn_patch_N"), dz = cell(ref, i, "vertical_approach_mm") * 1e-3;
     const double y_cp = cell(ref, i, "y_cp_rail_mm") * 1e-3;
     // CONTACT's rail coordinates for the right rail: y towards the field side, as here.
-    CHECK(r.pmax == Approx(pmax).epsilon(0.02));
-    CHECK(r.area == Approx(area).epsilon(0.04));
-    CHECK(std::fabs(P.N - Fn) <= 0.01 * Q);
-    CHECK(r.approach == Approx(dz).epsilon(0.01));
-    CHECK(std::fabs(P.y_r - y_cp) <= 0.3e-3);
+    worst_p = std::max(worst_p, std::fabs(r.pmax / pmax - 1));
+    worst_a = std::max(worst_a, std::fabs(r.area / area - 1));
+    worst_N = std::max(worst_N, std::fabs(P.N - Fn) / Q);
+    worst_z = std::max(worst_z, std::fabs(r.approach / dz - 1));
+    worst_y = std::max(worst_y, std::fabs(P.y_r - y_cp));
+    CHECK(r.pmax == Approx(pmax).epsilon(0.02));       // measured 1.37 % (28 Nov 2026)
+    CHECK(r.area == Approx(area).epsilon(0.016));      // measured 1.04 %
+    CHECK(std::fabs(P.N - Fn) <= 0.0025 * Q);          // measured 0.17 % of Q
+    CHECK(r.approach == Approx(dz).epsilon(0.0035));   // measured 0.22 %
+    CHECK(std::fabs(P.y_r - y_cp) <= 0.035e-3);        // measured 0.022 mm
     // Equilibrium (eq. 10) on the grid.
     CHECK(r.Fz == Approx(Q).epsilon(1e-6));
   }
+  std::printf("half-space against CONTACT, worst of 17 cases: pmax %.3f %%, area %.3f %%, patch force %.3f %% of Q, "
+              "approach %.3f %%, contact point %.3f mm\n",
+              100 * worst_p, 100 * worst_a, 100 * worst_N, 100 * worst_z, worst_y * 1e3);
 }
 
 TEST_CASE("half-space plastic: a cap above the elastic peak changes nothing, a low cap integrates to the load", "[half_space]") {

@@ -3,8 +3,11 @@
 // Reference: CONTACT's exact half-space solutions of the same placed profiles, the rail with its
 // flank (tests/data/contact/field/contact_S1002_60E1_1-20.csv, README there: dx = ds = 0.2 mm,
 // E = 210 GPa, nu = 0.28, frictionless), flange cases t_Y = 6, 7, 8, 10 mm x Q = 20, 60, 120 kN.
-// Tolerances: the field trust table's (docs/trust.md): peak pressure 10 %, area 15 % (CONTACT's
-// peak: the largest of its patches; area: their sum). Every row must be `ok`: the patches stay
+// Tolerances at about 1.5 times the worst error measured over the 12 cases (printed by the test;
+// 28 Nov 2026; CONTACT's peak: the largest of its patches; area: their sum): strips peak pressure
+// 2.5 % (measured 1.49 %), area 10 % (6.41 %); half-space 1.5 % (0.93 %), 4 % (2.36 %). Until
+// then both at the field trust table's targets, 10 % and 15 % (docs/trust.md), which remain what
+// `ok` promises on pairs without a test of their own. Every row must be `ok`: the patches stay
 // 4-6 mm above the face's foot, so none reaches a profile's end.
 // One row is not a flange contact: t_Y = 6 mm, 120 kN touches the tread, the middle of the head
 // and the gauge corner (19 deg off the patch plane), the corner's interpenetration 7.4 mm from the
@@ -20,12 +23,16 @@
 // d_comb 4 mm here) 11.3 kN and 1329 MPa. Against the runs of the same model (one plane, full
 // interaction; the corner as its own patch) the tolerance is the discretisation's: 2 % in peak
 // pressure and 3 % in area (measured: 0.2 % and 1.1 %), 3 % in each patch's normal force; against
-// the conformal run the trust table's 10 % / 15 %.
+// the conformal run the trust table's 10 % / 15 %. Now about 1.5 times the worst of both methods
+// measured (28 Nov 2026), with a floor of 0.1 %: one plane 0.25 % / 1.7 % (measured 0.14 % /
+// 1.09 %), its force 0.1 % (0.00 %); conformal 0.1 % / 3.1 % (0.02 % / 2.02 %); the corner as its
+// own patch 0.5 % / 1.4 % (0.31 % / 0.89 %), forces 0.4 % (0.24 %, the corner) and 0.1 % (0.02 %).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <string>
@@ -84,8 +91,11 @@ TEST_CASE("flange contact on the vertical 1:20 flank: strips and half-space agai
                             << 100 * da << " %)");
       CHECK(r.status == mh::CaseStatus::Ok);
       for (const std::string& w : r.warnings) CHECK(w.rfind("off_profile:", 0) != 0);
-      CHECK(std::fabs(da) <= 0.15);
-      CHECK(std::fabs(dp) <= 0.10);
+      std::printf("flank %s t_Y %d Q %d: pmax %+.2f %% area %+.2f %%\n", mh::to_string(m), k.first, k.second, 100 * dp, 100 * da);
+      // Measured worst (28 Nov 2026): strips pmax 1.49 %, area 6.41 %; half-space 0.93 %, 2.36 %.
+      const bool strips = m == mh::Method::Strips;
+      CHECK(std::fabs(da) <= (strips ? 0.10 : 0.04));
+      CHECK(std::fabs(dp) <= (strips ? 0.025 : 0.015));
       if (k != std::make_pair(6, 120)) continue;
       // CONTACT's runs of this case without the blending attenuation (variant, patch): peak
       // pressure [MPa], area [mm²], normal force [N].
@@ -102,23 +112,26 @@ TEST_CASE("flange contact on the vertical 1:20 flank: strips and half-space agai
         const double vp = res.pmax / 1e6 / ref[0] - 1, va = res.area / 1e-6 / ref[1] - 1;
         INFO(what << ": pmax " << res.pmax / 1e6 << " MPa (CONTACT " << ref[0] << ", " << 100 * vp << " %), area "
                   << res.area / 1e-6 << " mm2 (CONTACT " << ref[1] << ", " << 100 * va << " %)");
+        std::printf("flank %s variant %s: pmax %+.2f %% area %+.2f %%\n", mh::to_string(m), what, 100 * vp, 100 * va);
         CHECK(std::fabs(vp) <= tol_p);
         CHECK(std::fabs(va) <= tol_a);
       };
       REQUIRE(r.patches.size() == 1);
-      compare(r, variant("planar_full", "a"), 0.02, 0.03, "one plane, full interaction (CONTACT D_COMB 8 mm)");
-      CHECK(std::fabs(r.patches[0].N / variant("planar_full", "a")[2] - 1) <= 0.03);
-      compare(r, variant("conformal_full", "a"), 0.10, 0.15, "CONTACT conformal, full interaction");
+      compare(r, variant("planar_full", "a"), 0.0025, 0.017, "one plane, full interaction (CONTACT D_COMB 8 mm)");
+      std::printf("flank %s planar_full N %+.2f %%\n", mh::to_string(m), 100 * (r.patches[0].N / variant("planar_full", "a")[2] - 1));
+      CHECK(std::fabs(r.patches[0].N / variant("planar_full", "a")[2] - 1) <= 0.001);
+      compare(r, variant("conformal_full", "a"), 0.001, 0.031, "CONTACT conformal, full interaction");
       opt.half_space.d_comb = opt.strips.d_comb = 4e-3;
       const mh::CaseResult split = mh::solve_contact(pg.geo, cf.material, tY, Q, opt);
       INFO("d_comb 4 mm: " << mh::to_string(split.status) << ", " << split.patches.size() << " patches");
       CHECK(split.status == mh::CaseStatus::Ok);
       REQUIRE(split.patches.size() == 2);
       const auto main = variant("planar_separate", "a"), corner = variant("planar_separate", "b");
-      compare(split, {std::max(main[0], corner[0]), main[1] + corner[1], 0}, 0.02, 0.03,
+      compare(split, {std::max(main[0], corner[0]), main[1] + corner[1], 0}, 0.005, 0.014,
               "the corner as its own patch (CONTACT D_SEP = D_COMB = 4 mm)");
-      CHECK(std::fabs(split.patches[0].N / corner[2] - 1) <= 0.03);
-      CHECK(std::fabs(split.patches[1].N / main[2] - 1) <= 0.03);
+      std::printf("flank %s split N corner %+.2f %% main %+.2f %%\n", mh::to_string(m), 100 * (split.patches[0].N / corner[2] - 1), 100 * (split.patches[1].N / main[2] - 1));
+      CHECK(std::fabs(split.patches[0].N / corner[2] - 1) <= 0.004);
+      CHECK(std::fabs(split.patches[1].N / main[2] - 1) <= 0.001);
     }
   }
 }

@@ -1,13 +1,16 @@
 // The strip method (docs/method.md §9) as a method of runs, against CONTACT's exact results on the
 // Manchester pair (tests/data/contact, Q = 50 kN) and against this project's half-space solver.
-// Targets: single-region contact pmax ±5 %, area ±10 %, approach ±3 %; two regions
-// (gauge shoulder, t_Y = 5 mm) ±10 %, ±15 %, ±5 %. t_Y = 0 mm (wide conformal tread patch) missed
+// Tolerances at about 1.5 times the worst error measured (printed by the test; 28 Nov 2026):
+// single-region contact (16 cases) pmax 1 % (measured 0.63 %), area 6.5 % (4.27 %), approach
+// 1.5 % (0.98 %); two regions (gauge shoulder, t_Y = 5 mm) 2 % (1.25 %), 1.5 % (0.99 %), 0.2 %
+// (0.12 %). Until then held at 5 / 10 / 3 % and 10 / 15 / 5 %. t_Y = 0 mm (wide conformal tread patch) missed
 // them with the estimated strip extents alone (pmax −8.5 %); its extents are now refined until the
 // deformed gap closes at every strip end (docs/strips.md), as are those of t_Y = 1 and 5 mm.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -47,6 +50,7 @@ TEST_CASE("strip method against CONTACT on the Manchester sweep at Q = 50 kN", "
   const mh::CsvTable ref = mh::read_csv_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/contact/contact_mbench_right_q50_dx0.2.csv");
   const Fixture& F = manchester();
   REQUIRE(ref.rows.size() == 17);
+  double worst[2][3] = {};  // [single region, two regions][pmax, area, approach], printed below
   for (std::size_t i = 0; i < ref.rows.size(); ++i) {
     const double tY = cell(ref, i, "y_ws_mm");
     INFO("t_Y = " << tY << " mm");
@@ -55,18 +59,27 @@ TEST_CASE("strip method against CONTACT on the Manchester sweep at Q = 50 kN", "
     const double pmax = cell(ref, i, "pmax_MPa") * 1e6, area = cell(ref, i, "area_mm2") * 1e-6;
     const double dz = cell(ref, i, "vertical_approach_mm") * 1e-3;
     const bool two_regions = tY == 5;
-    const double tol_p = two_regions ? 0.10 : 0.05, tol_a = two_regions ? 0.15 : 0.10;
-    const double tol_z = two_regions ? 0.05 : 0.03;
+    // Measured worst (28 Nov 2026): single region 0.63 / 4.27 / 0.98 %, two regions 1.25 / 0.99 / 0.12 %.
+    const double tol_p = two_regions ? 0.02 : 0.01, tol_a = two_regions ? 0.015 : 0.065;
+    const double tol_z = two_regions ? 0.002 : 0.015;
     // The patches whose estimated extents miss the end gap by more than end_gap_tol (0.05) are
     // refined: measured 0.17, 0.07 and 0.13 at t_Y = 0, 1 and 5 mm, at most 0.034 elsewhere.
     REQUIRE(r.patches.size() == 1);
     CHECK(r.patches[0].refined == (tY == 0 || tY == 1 || tY == 5));
     CHECK(r.patches[0].end_gap_error < (r.patches[0].refined ? 0.25 : 0.05));
+    double* w = worst[two_regions ? 1 : 0];
+    w[0] = std::max(w[0], std::fabs(r.pmax / pmax - 1));
+    w[1] = std::max(w[1], std::fabs(r.area / area - 1));
+    w[2] = std::max(w[2], std::fabs(r.approach / dz - 1));
     CHECK(r.pmax == Approx(pmax).epsilon(tol_p));
     CHECK(r.area == Approx(area).epsilon(tol_a));
     CHECK(r.approach == Approx(dz).epsilon(tol_z));
     CHECK(r.Fz == Approx(50e3).epsilon(1e-6));
   }
+  std::printf("strips against CONTACT, worst: single region (16 cases) pmax %.3f %%, area %.3f %%, approach %.3f %%; "
+              "two regions (t_Y = 5 mm) pmax %.3f %%, area %.3f %%, approach %.3f %%\n",
+              100 * worst[0][0], 100 * worst[0][1], 100 * worst[0][2], 100 * worst[1][0], 100 * worst[1][1],
+              100 * worst[1][2]);
 }
 
 TEST_CASE("small flange patches: strips against a converged half-space reference", "[strips]") {
