@@ -62,8 +62,9 @@ PlacementCheck check_placement(const ContactGeometry& G, double rail_gauge_z, do
     const double dz = R.z(m.y_r) - W.z(m.y_w);
     const double y_tip = W.node_y(i_gauge), z_tip = W.z(y_tip) + dz;
     const double level = rail_gauge_z - dz;  // the gauge point's height in the wheel's frame
-    c.numbers += "; flange tip at rail y " + mm(y_tip + G.y_offset) + " mm, " + mm(z_tip - rail_gauge_z) +
-                 " mm above the rail's gauge point (rail y " + mm(G.rail_gauge_y) + " mm)";
+    c.numbers += "; flange tip at rail y " + mm(y_tip + G.y_offset) + " mm, " + mm(std::fabs(z_tip - rail_gauge_z)) +
+                 (z_tip < rail_gauge_z ? " mm below" : " mm above") + " the rail's gauge point (rail y " +
+                 mm(G.rail_gauge_y) + " mm)";
     if (!(z_tip < rail_gauge_z)) {
       c.why = "its flange does not reach down to the rail's gauge point: the flange stands on the rail head, not "
               "inside the track";

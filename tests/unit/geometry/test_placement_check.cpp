@@ -145,6 +145,10 @@ TEST_CASE("placement check: tens of millimetres off, a mirrored wheel: refused, 
     CHECK(refusal(*row.w, rail, ex, &G).empty());
     CHECK(G.y_offset == Approx(gauge_off).margin(1e-9));
   }
+  // The numbers of the placement (docs/profiles.md quotes them).
+  CHECK_THAT(refusal(s1002, rail, narrow),
+             Catch::Contains("; flange tip at rail y -108.035 mm, 16.011 mm below the rail's gauge point (rail y "
+                             "-35.535 mm), flange clearance 55.923 mm there: gauge positioning misplaces the wheel"));
 }
 
 TEST_CASE("placement: a wheel without a flange placed by the gauge rule gets a warning", "[placement]") {
