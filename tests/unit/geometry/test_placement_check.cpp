@@ -43,7 +43,7 @@ std::string refusal(const Profile& w, const Profile& r, const TrackSetup& t, Con
 }
 }  // namespace
 
-TEST_CASE("placement check: placed wheels pass, whatever their contact at t_Y = 0; misplaced ones are refused",
+TEST_CASE("placement check: placed wheels pass whatever their contact at t_Y = 0, misplaced ones are refused",
           "[placement]") {
   const Profile rail = make_standard_profile("60E1", Inclination::In40, 0.1e-3);
   const double z_gauge = rail_landmarks(rail).z_gauge;
