@@ -48,7 +48,10 @@ extern "C" {
 
 typedef enum mhc_error {
   MHC_OK = 0,
-  MHC_ERR_ARGUMENT = 1,    /**< a null pointer, a wrong struct_size, a value out of its range */
+  MHC_ERR_ARGUMENT = 1,    /**< a null pointer, a wrong struct_size, a value out of its range
+                                (the plausible ranges of the case file: E, nu, p_lim, yield
+                                stress, nominal radius, load; the message names the field, the
+                                value, the rule and the unit: docs/c-api.md "Errors") */
   MHC_ERR_INPUT = 2,       /**< unreadable or invalid input data (profile file, points, case file,
                                 a pair that cannot be placed): the command's exit code 2 */
   MHC_ERR_UNSUPPORTED = 3, /**< a valid request this pair cannot honour: a relative roll, an
@@ -60,10 +63,13 @@ typedef enum mhc_error {
 /** The outcome of one case: the `status` column of cases.csv. */
 typedef enum mhc_status {
   MHC_STATUS_OK = 0,
-  MHC_STATUS_NO_CONTACT = 1,    /**< no force: Q <= 0, the wheel lifted (approach below first
-                                     contact), or no Hertzian candidate */
+  MHC_STATUS_NO_CONTACT = 1,    /**< no force: Q = 0, or the wheel lifted (approach below first
+                                     contact) */
   MHC_STATUS_OUT_OF_RANGE = 2,  /**< t_Y outside the pair's geometry table */
-  MHC_STATUS_NOT_CONVERGED = 3, /**< the equilibrium was not reached; the fields hold the last iterate */
+  MHC_STATUS_NOT_CONVERGED = 3, /**< the equilibrium was not reached; the fields hold the last iterate.
+                                     Also a conformal contact the multi-Hertzian method cannot solve
+                                     (every candidate with B <= 0): no force computed, the message
+                                     says so (solve it with MHC_METHOD_AUTO, _STRIPS or _HALF_SPACE) */
   MHC_STATUS_OUTSIDE_VALIDITY = 4 /**< solved, but outside the method's validity (a warning says
                                        why: MHC_WARN_* bits); an answer, not to be trusted */
 } mhc_status;
@@ -188,7 +194,23 @@ typedef struct mhc_pair_options {
      capped at p_lim_Pa and the yield stress only kept. NaN, or > 0 and finite. */
   double yield_wheel_Pa;          /**< the wheel's yield stress sigma_y (default NaN: not given) */
   double yield_rail_Pa;           /**< the rail's (default NaN: as the wheel's; given alone: an error) */
+  /* Appended with explicit positioning: a caller compiled against a header without them passes
+     struct_size = offsetof(mhc_pair_options, positioning) and gets gauge positioning. As the case
+     file's track.positioning and track.lateral_offset_mm (docs/case-file.md): */
+  int32_t positioning;            /**< MHC_POSITIONING_GAUGE (default): the wheel placed from the
+                                       rail's gauge point and the wheelset data above, and the
+                                       placement checked (docs/profiles.md "Placement check");
+                                       MHC_POSITIONING_EXPLICIT: at lateral_offset_m, not checked */
+  int32_t reserved2;
+  double lateral_offset_m;        /**< explicit: the rail y of the wheel profile's origin (its taping
+                                       line) at t_Y = 0, within +-0.2 m (default 0; must stay 0 with
+                                       gauge positioning). A refused gauge placement names the value
+                                       that reproduces it (the message's lateral_offset_mm / 1000). */
 } mhc_pair_options;
+
+/** mhc_pair_options.positioning */
+#define MHC_POSITIONING_GAUGE 0
+#define MHC_POSITIONING_EXPLICIT 1
 
 typedef struct mhc_profile mhc_profile;
 typedef struct mhc_pair mhc_pair;
@@ -242,6 +264,13 @@ MHC_API mhc_error mhc_pair_create(const mhc_profile* wheel, const mhc_profile* r
 MHC_API mhc_error mhc_pair_from_case_file(const char* path, mhc_pair** out);
 /** The t_Y range of the pair's geometry table [m]. */
 MHC_API mhc_error mhc_pair_tY_range(const mhc_pair* pair, double* tY_min_m, double* tY_max_m);
+/** The pair's warnings, as the command prints them after "mhcontact: warning: " (each starts with
+ *  the profile it concerns): the profiles' clean-up and kind, the rail's cant (applied twice,
+ *  mirrored: docs/profiles.md "Cant checks"), the placement (a wheel without a flange placed by the
+ *  gauge rule). A pair with warnings is built; they are the caller's to show. */
+MHC_API int32_t mhc_pair_n_warnings(const mhc_pair* pair);
+/** Warning i (0-based) of the pair; NULL when i is out of range. Valid while the pair lives. */
+MHC_API const char* mhc_pair_warning(const mhc_pair* pair, int32_t i);
 /** Potential ellipses of the pair (docs/method.md §3.5). */
 MHC_API int32_t mhc_pair_n_ellipses(const mhc_pair* pair);
 MHC_API void mhc_pair_free(mhc_pair* pair);
@@ -254,7 +283,9 @@ MHC_API void mhc_workspace_free(mhc_workspace* ws);
 
 /** One case with the vertical load prescribed (eq. 10): the wheel at lateral displacement tY_m
  *  and relative roll roll_rad (only 0 is supported: MHC_ERR_UNSUPPORTED otherwise), carrying
- *  Q_N. Fills *out (out->struct_size must be set). Any method. */
+ *  Q_N. Fills *out (out->struct_size must be set). Any method. Q_N = 0: no_contact (a wheel
+ *  lifted); Q_N negative, not finite, or above the plausible range (2000 kN: docs/case-file.md
+ *  "Plausible ranges"): MHC_ERR_ARGUMENT, the message naming the value and the rule. */
 MHC_API mhc_error mhc_solve_load(const mhc_pair* pair, mhc_workspace* ws, double tY_m, double roll_rad, double Q_N,
                                  mhc_result* out);
 /** One case with the vertical approach prescribed: the penetration-driven force element. dz_m is

@@ -81,6 +81,24 @@ py::dict contact_dict(const mhc_contact& c) {
   return d;
 }
 
+/// A number option of Pair: a Python int or float (not a bool, a str, None), else a TypeError
+/// naming the option and the type expected (not pybind11's "Unable to cast").
+double option_number(const std::string& key, const py::handle& v) {
+  if ((py::isinstance<py::float_>(v) || py::isinstance<py::int_>(v)) && !py::isinstance<py::bool_>(v))
+    return v.cast<double>();
+  if (PyObject_HasAttrString(v.ptr(), "__float__") && !py::isinstance<py::bool_>(v) && !py::isinstance<py::str>(v))
+    return py::float_(py::reinterpret_borrow<py::object>(v)).cast<double>();  // numpy scalars
+  throw py::type_error("Pair option " + key + " = " + std::string(py::repr(v)) + ": expected a number (int or float, SI "
+                       "units as its suffix says), got " + std::string(py::str(py::type::of(v).attr("__name__"))));
+}
+
+/// A text option of Pair (method, positioning): a str, else a TypeError naming the option.
+std::string option_text(const std::string& key, const py::handle& v, const char* choices) {
+  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+  throw py::type_error("Pair option " + key + " = " + std::string(py::repr(v)) + ": expected a str (" + choices +
+                       "), got " + std::string(py::str(py::type::of(v).attr("__name__"))));
+}
+
 const char* method_name(int32_t m) {
   static const char* names[] = {"multi-hertzian", "half-space", "strips", "auto"};
   return m >= 0 && m <= 3 ? names[m] : "?";
@@ -186,7 +204,7 @@ PYBIND11_MODULE(_core, m) {
              for (auto item : kw) {
                const std::string k = py::str(item.first);
                if (k == "method") {
-                 const std::string v = py::str(item.second);
+                 const std::string v = option_text(k, item.second, "multi-hertzian, half-space, strips or auto");
                  int mth = -1;
                  for (int i = 0; i < 4; ++i)
                    if (v == method_name(i)) mth = i;
@@ -194,7 +212,14 @@ PYBIND11_MODULE(_core, m) {
                  o.method = mth;
                  continue;
                }
-               const double v = item.second.cast<double>();
+               if (k == "positioning") {
+                 const std::string v = option_text(k, item.second, "\"gauge\" or \"explicit\"");
+                 if (v == "gauge") o.positioning = MHC_POSITIONING_GAUGE;
+                 else if (v == "explicit") o.positioning = MHC_POSITIONING_EXPLICIT;
+                 else throw py::value_error("positioning = \"" + v + "\": must be \"gauge\" (default) or \"explicit\"");
+                 continue;
+               }
+               const double v = option_number(k, item.second);
                if (k == "gauge_m") o.gauge_m = v;
                else if (k == "gauge_height_m") o.gauge_height_m = v;
                else if (k == "flange_back_distance_m") o.flange_back_distance_m = v;
@@ -213,6 +238,7 @@ PYBIND11_MODULE(_core, m) {
                else if (k == "tY_step_m") o.tY_step_m = v;
                else if (k == "grid_dx_m") o.grid_dx_m = v;
                else if (k == "grid_ds_m") o.grid_ds_m = v;
+               else if (k == "lateral_offset_m") o.lateral_offset_m = v;
                else throw py::type_error("Pair: unknown option " + k + " (the fields of mhc_pair_options, docs/c-api.md)");
              }
              auto p = std::make_unique<Pair>();
@@ -229,7 +255,9 @@ PYBIND11_MODULE(_core, m) {
            "Pair(wheel, rail, options={}): options are fields of mhc_pair_options, SI (docs/python.md):\n"
            "gauge_m, gauge_height_m, flange_back_distance_m, flange_back_position_m, nominal_radius_m,\n"
            "rail_inclination, E_wheel_Pa, nu_wheel, E_rail_Pa, nu_rail, p_lim_Pa, yield_wheel_Pa,\n"
-           "yield_rail_Pa, method (a name), tY_min_m, tY_max_m, tY_step_m, grid_dx_m, grid_ds_m.\n"
+           "yield_rail_Pa, method (a name), tY_min_m, tY_max_m, tY_step_m, grid_dx_m, grid_ds_m,\n"
+           "positioning (\"gauge\" or \"explicit\"), lateral_offset_m (explicit: the rail y of the wheel's\n"
+           "taping line at t_Y = 0). Values outside the case file's plausible ranges raise ValueError.\n"
            "yield_wheel_Pa (and yield_rail_Pa when the rail's differs), as a case file's\n"
            "material.yield_MPa: the plastic model with the yield law of docs/method.md 5.1 (grid\n"
            "methods: p_lim = 2.1 sigma_y); p_lim_Pa, when given, takes precedence (the capped law).")
@@ -244,6 +272,11 @@ PYBIND11_MODULE(_core, m) {
             return py::make_tuple(lo, hi);
           })
       .def_property_readonly("n_ellipses", [](const Pair& p) { return mhc_pair_n_ellipses(p.p); })
+      .def_property_readonly("warnings", [](const Pair& p) {
+            py::list l;
+            for (int32_t i = 0; i < mhc_pair_n_warnings(p.p); ++i) l.append(mhc_pair_warning(p.p, i));
+            return l;
+          }, "The pair's warnings, as the command prints them (mhc_pair_warning): profiles, rail cant, placement.")
       .def("_solve", [](const Pair& p, double tY_m, double value, bool approach, double roll_rad) {
             mhc_workspace* ws = nullptr;
             check(mhc_workspace_create(p.p, &ws));

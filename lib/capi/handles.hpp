@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <mhcontact.h>
 
@@ -27,6 +28,8 @@ struct mhc_pair {
   mh::Material material;
   mh::MethodOptions options;
   bool plastic = false;  ///< the plastic model (material.p_lim finite: given, or from the yield stress)
+  /// The pair's warnings in the command's words, "<profile>: <warning>" (mhc_pair_warning).
+  std::vector<std::string> warnings;
 };
 
 /// One thread's scratch memory for calls on one pair.

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "capi/checks.hpp"
 #include "contact/half_space/influence.hpp"
 #include "contact/solve.hpp"
 #include "core/errors.hpp"
@@ -226,6 +227,7 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
     judge_validity(ws.r, pair.options.strips.d_comb);  // as solve_contact does for a load given
     fill_result(ws.r, tY, kNaN, pair.plastic, out);
   } else {
+    if (const std::string bad = check_load(value); !bad.empty()) return fail(MHC_ERR_ARGUMENT, bad);
     solve_contact(pair.pg.geo, pair.material, tY, value, pair.options, ws.r);
     fill_result(ws.r, tY, value, pair.plastic, out);
   }
@@ -302,6 +304,10 @@ void place_pair(mhc_pair& pair, Profile wheel, Profile rail, const Inclination& 
   pair.pg.cant = check_rail_cant(pair.pg.rail, incl);
   for (const auto& w : pair.pg.cant.warnings) pair.pg.rail.warnings.push_back(w);
   pair.pg.geo = build_geometry(pair.pg.wheel, pair.pg.rail, track, geo);
+  // The warnings the command prints for this pair (jobs/run.cpp build_pair_geometry, warn_profiles).
+  for (const auto& w : pair.pg.geo.warnings) pair.pg.wheel.warnings.push_back(w);
+  for (const Profile* p : {&pair.pg.wheel, &pair.pg.rail})
+    for (const auto& w : p->warnings) pair.warnings.push_back(p->source + ": " + w);
 }
 
 }  // namespace
@@ -441,6 +447,8 @@ void mhc_pair_options_init(mhc_pair_options* o) {
   const HalfSpaceOptions h;
   o->grid_dx_m = h.dx;
   o->grid_ds_m = h.ds;
+  o->positioning = MHC_POSITIONING_GAUGE;
+  o->lateral_offset_m = 0;
 }
 
 mhc_error mhc_pair_create(const mhc_profile* wheel, const mhc_profile* rail, const mhc_pair_options* opt,
@@ -453,12 +461,18 @@ mhc_error mhc_pair_create(const mhc_profile* wheel, const mhc_profile* rail, con
   *out = nullptr;
   // The struct of a header before the yield stress ends where yield_wheel_Pa begins: its fields
   // are read, the later ones (not in the caller's memory) are taken as not given.
-  constexpr std::size_t kSizeBeforeYield = offsetof(mhc_pair_options, yield_wheel_Pa);
-  const bool has_yield = opt->struct_size == sizeof(mhc_pair_options);
+  // The struct of a header before explicit positioning ends where positioning begins: gauge
+  // positioning.
+  constexpr std::size_t kSizeBeforeYield = mh::capi::kOptionsSizeBeforeYield;
+  constexpr std::size_t kSizeBeforePositioning = mh::capi::kOptionsSizeBeforePositioning;
+  const bool has_yield = opt->struct_size == sizeof(mhc_pair_options) || opt->struct_size == kSizeBeforePositioning;
+  const bool has_positioning = opt->struct_size == sizeof(mhc_pair_options);
   if (!has_yield && opt->struct_size != kSizeBeforeYield)
     return fail(MHC_ERR_ARGUMENT, "options: struct_size = " + std::to_string(opt->struct_size) +
                                       ": must be sizeof(mhc_pair_options) = " +
-                                      std::to_string(sizeof(mhc_pair_options)) + ", or " +
+                                      std::to_string(sizeof(mhc_pair_options)) + ", " +
+                                      std::to_string(kSizeBeforePositioning) +
+                                      " of a header without explicit positioning, or " +
                                       std::to_string(kSizeBeforeYield) +
                                       " of a header without the yield stress (call mhc_pair_options_init)");
   return guarded([&] {
@@ -474,6 +488,9 @@ mhc_error mhc_pair_create(const mhc_profile* wheel, const mhc_profile* rail, con
       return fail(MHC_ERR_ARGUMENT, "options.yield_rail_Pa = " + format_number(yield_rail) +
                                         " Pa without yield_wheel_Pa: give the wheel's yield stress too "
                                         "(one value for both bodies: yield_wheel_Pa alone)");
+    // The case file's plausible ranges on the SI fields (capi/checks.hpp, core/plausible.hpp).
+    if (const std::string bad = mh::capi::check_pair_options(*opt, opt->struct_size); !bad.empty())
+      return fail(MHC_ERR_ARGUMENT, bad);
     if (wheel->profile.kind != ProfileKind::Wheel)
       return fail(MHC_ERR_ARGUMENT, "wheel: " + wheel->profile.source + " is a " + to_string(wheel->profile.kind) +
                                         " profile, but a wheel is needed here");
@@ -513,6 +530,10 @@ mhc_error mhc_pair_create(const mhc_profile* wheel, const mhc_profile* rail, con
     track.flange_back_distance = opt->flange_back_distance_m;
     track.flange_back_position = opt->flange_back_position_m;
     track.nominal_radius = opt->nominal_radius_m;
+    if (has_positioning && opt->positioning == MHC_POSITIONING_EXPLICIT) {
+      track.positioning = TrackSetup::Positioning::Explicit;
+      track.lateral_offset = opt->lateral_offset_m;
+    }
     GeometryOptions geo;
     geo.tY_min = opt->tY_min_m;
     geo.tY_max = opt->tY_max_m;

@@ -259,17 +259,19 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   G.roller_radius = track.roller_radius;
 
   // Placement check (docs/profiles.md "Placement check"), before any t_Y is scanned: a wheel
-  // placed by the gauge rule must stand with its tread on the rail's tread at t_Y = 0. Explicit
-  // positioning is the user's placement (a roller, a narrow section): not checked.
+  // placed by the gauge rule must have its taping line, its flange on the gauge side, and its
+  // flange inside the track, near the rail's gauge point, at t_Y = 0. Explicit positioning is the
+  // user's placement (a roller, a narrow section): not checked.
   if (track.positioning == TrackSetup::Positioning::Gauge) {
-    const PlacementCheck pc = check_placement(G);
+    const PlacementCheck pc = check_placement(G, L.z_gauge, opt.flange_min_height);
     if (!pc.ok)
       throw InputError(wheel.source + " on " + rail.source, pc.found ? "t_Y = 0: " + pc.numbers : "t_Y = 0",
-                       "gauge positioning places the wheel so that its main contact at t_Y = 0 is not on the tread of "
-                       "both profiles: " + pc.why + "; the pair is refused before any case is solved",
+                       "gauge positioning misplaces the wheel: " + pc.why + "; the pair is refused before any case is "
+                       "solved",
                        "check the wheel's taping line (mhcontact profile info: taping_line), the mirror options and "
                        "the track data; if the placement is meant (a test rig, a narrow section, a profile without "
-                       "a flange), place the wheel yourself: track.positioning \"explicit\" with track.lateral_offset_mm");
+                       "a flange), place the wheel yourself: track.positioning \"explicit\" with "
+                       "track.lateral_offset_mm; this gauge positioning is \"track\": {" + pc.explicit_placement() + "}");
   }
 
   const std::size_t nt = static_cast<std::size_t>(std::floor((opt.tY_max - opt.tY_min) / opt.tY_step + 1e-9)) + 1;

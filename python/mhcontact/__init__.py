@@ -30,29 +30,53 @@ CASE_COLUMNS = ("case", "tY_mm", "Q_kN", "status", "method", "dz_virtual_mm", "a
 def _prescribed(Q_N, dz_m):
     if (Q_N is None) == (dz_m is None):
         raise ValueError("give exactly one of Q_N (load prescribed) and dz_m (approach prescribed)")
-    return (dz_m, True) if Q_N is None else (Q_N, False)
+    return (dz_m, "dz_m", True) if Q_N is None else (Q_N, "Q_N", False)
+
+
+def _number(name, v, unit):
+    """float(v), or a TypeError naming the argument and the type expected."""
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        raise TypeError("%s = %r: expected a number [%s], got %s" % (name, v, unit, type(v).__name__)) from None
+
+
+def _numbers(name, v, unit):
+    """v as an array of floats, or a TypeError naming the argument and the type expected."""
+    try:
+        return _np.asarray(v, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError("%s = %r: expected numbers (a float or an array of floats) [%s]" % (name, v, unit)) from None
 
 
 # Pair (the extension's class): Pair(wheel, rail, options) with options the fields of
 # mhc_pair_options (SI: gauge_m, rail_inclination, E_wheel_Pa, p_lim_Pa, yield_wheel_Pa,
 # yield_rail_Pa, method, tY_min_m, ...), or Pair.from_case_file(path). A yield stress alone gives
 # the plastic model with the yield law, as material.yield_MPa in a case file (docs/method.md §5.1).
-# Immutable; share it between threads. Its solve methods are these:
+# positioning "explicit" with lateral_offset_m places the wheel yourself (a refused gauge placement
+# names the offset that reproduces it). Options are checked as a case file's values are (plausible
+# ranges: ValueError naming the option, the value, the rule and the unit; a wrong type: TypeError
+# naming the option and the type expected). pair.warnings lists the pair's warnings (profiles, rail
+# cant, placement) in the command's words. Immutable; share it between threads. Its solve methods
+# are these:
 
 
 def _pair_solve(self, tY_m, Q_N=None, dz_m=None, roll_rad=0.0):
     """One case: the load Q_N [N] or the vertical approach dz_m [m] prescribed, at lateral
-    position tY_m [m]. A dict of the cases.csv fields and 'contacts', one dict per contact."""
-    value, approach = _prescribed(Q_N, dz_m)
-    return self._solve(float(tY_m), float(value), approach, float(roll_rad))
+    position tY_m [m]. A dict of the cases.csv fields and 'contacts', one dict per contact.
+    Q_N = 0 is no_contact (a wheel lifted); a negative load, or one above 2000 kN, raises
+    ValueError, as the command refuses it."""
+    value, name, approach = _prescribed(Q_N, dz_m)
+    return self._solve(_number("tY_m", tY_m, "m"), _number(name, value, "m" if approach else "N"), approach,
+                       _number("roll_rad", roll_rad, "rad"))
 
 
 def _pair_solve_many(self, tY_m, Q_N=None, dz_m=None, threads=0):
     """Many cases: tY_m [m] and Q_N [N] (or dz_m [m]) broadcast against each other, solved on
     `threads` threads (0: all cores) without the GIL. A dict of 1-D numpy arrays named as
     the columns of cases.csv (CASE_COLUMNS); status and method as strings."""
-    value, approach = _prescribed(Q_N, dz_m)
-    t, v = _np.broadcast_arrays(_np.asarray(tY_m, dtype=float), _np.asarray(value, dtype=float))
+    value, name, approach = _prescribed(Q_N, dz_m)
+    t, v = _np.broadcast_arrays(_numbers("tY_m", tY_m, "m"), _numbers(name, value, "m" if approach else "N"))
     t = _np.ascontiguousarray(t.ravel())
     v = _np.ascontiguousarray(v.ravel())
     raw = self._solve_many(t, v, approach, int(threads))

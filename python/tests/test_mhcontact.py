@@ -242,3 +242,97 @@ def test_yield_stress_errors_and_defaults():
     assert ours["pmax_MPa"] == ref["pmax_MPa"]
     assert ours["contacts"] == ref["contacts"]
     assert mhcontact.Pair(w, r, {}).solve(0.0, Q_N=100e3)["plastic"] == 0  # no yield stress: elastic
+
+
+def test_plausible_ranges_as_the_case_file():
+    """E_wheel_Pa = 210e3 (MPa typed as Pa) solved to a 0.23 MPa peak, Q_N = 5e9 solved: now refused,
+    naming the field, the value, the rule and the unit."""
+    w, r = _manchester_profiles()
+    with pytest.raises(ValueError, match=r"options\.E_wheel_Pa: value 210000 Pa \(0\.00021 GPa\): must be between "
+                                         r"50 and 400 GPa.*E_wheel_Pa is in Pa"):
+        mhcontact.Pair(w, r, {"E_wheel_Pa": 210e3})
+    with pytest.raises(ValueError, match=r"options\.nominal_radius_m: value 920 m"):
+        mhcontact.Pair(w, r, {"nominal_radius_m": 920})
+    pair = mhcontact.Pair(w, r, {})
+    with pytest.raises(ValueError, match=r"Q_N: value 5e\+09 N \(5e\+06 kN\): must be at most 2000 kN"):
+        pair.solve(0.0, Q_N=5e9)
+    with pytest.raises(ValueError, match=r"Q_N: value 5e\+09 N"):
+        pair.solve_many([0.0, 1e-3], Q_N=[50e3, 5e9])
+    assert pair.solve(0.0, Q_N=0.0)["status"] == "no_contact"  # a wheel lifted: a status
+
+
+def test_negative_load_is_the_same_input_error_as_the_command():
+    w, r = _manchester_profiles()
+    pair = mhcontact.Pair(w, r, {})
+    with pytest.raises(ValueError, match=r"Q_N: value -5000 N \(-5 kN\): a wheel load must not be negative"):
+        pair.solve(0.0, Q_N=-5e3)
+    with tempfile.TemporaryDirectory() as d:
+        path = _case_file(d, '{"yield_MPa": 350}').replace("case.json", "neg.json")
+        with open(path, "w") as f:
+            f.write(open(_case_file(d, '{"yield_MPa": 350}')).read().replace('"Q_kN": [100]', '"Q_kN": [-5]'))
+        run = subprocess.run([BINARY, "run", path, "-o", os.path.join(d, "out"), "-q"], capture_output=True, text=True)
+    assert run.returncode == 2  # an input error
+    assert "Q_kN" in run.stderr and "-5" in run.stderr
+
+
+def test_errors_name_the_key_and_the_type():
+    w, r = _manchester_profiles()
+    with pytest.raises(TypeError, match=r"Pair option E_wheel_Pa = '210e9': expected a number .*got str"):
+        mhcontact.Pair(w, r, {"E_wheel_Pa": "210e9"})
+    with pytest.raises(TypeError, match=r"Pair option method = 3: expected a str .*got int"):
+        mhcontact.Pair(w, r, {"method": 3})
+    with pytest.raises(TypeError, match=r"Pair option positioning = None: expected a str"):
+        mhcontact.Pair(w, r, {"positioning": None})
+    pair = mhcontact.Pair(w, r, {"E_wheel_Pa": np.float64(210e9), "rail_inclination": 0})  # numpy scalars, ints
+    with pytest.raises(TypeError, match=r"tY_m = 'a': expected a number \[m\], got str"):
+        pair.solve("a", Q_N=50e3)
+    with pytest.raises(TypeError, match=r"Q_N = \['x'\]: expected numbers"):
+        pair.solve_many([0.0], Q_N=["x"])
+
+
+def test_pair_warnings_are_the_command_s():
+    """The Manchester rail file is canted 1:40 already: canted again it lies at 2.86 deg. The command
+    warns; pair.warnings has the same words."""
+    w, r = _manchester_profiles()
+    twice = mhcontact.Pair(w, r, {"rail_inclination": 40})
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "twice.json")
+        with open(path, "w") as f:
+            f.write('{"wheel": {"profile": "%s"}, "rail": {"profile": "%s", "inclination": "1:40"},'
+                    ' "sweep": {"tY_mm": [0], "Q_kN": [50]}}'
+                    % (os.path.join(SRC, "profiles", "MBench_S1002_v3.prw"),
+                       os.path.join(SRC, "profiles", "MBench_UIC60_v3.prr")))
+        run = subprocess.run([BINARY, "geometry", path, "-o", os.path.join(d, "geo")], capture_output=True, text=True)
+        assert run.returncode == 0, run.stderr
+        from_file = mhcontact.Pair.from_case_file(path)
+    prefix = "mhcontact: warning: "
+    command = [line[len(prefix):] for line in run.stderr.splitlines() if line.startswith(prefix)]
+    assert any("and the case cants it again" in x for x in command)
+    assert twice.warnings == command
+    assert from_file.warnings == command
+    assert mhcontact.Pair(w, r, {}).warnings == []
+
+
+def test_explicit_positioning():
+    s1002, rail = mhcontact.Profile.standard("S1002"), mhcontact.Profile.standard("60E1")
+    # A misplaced wheel (flange-back distance 50 mm short) is refused; the message names the
+    # explicit placement that reproduces it, and that placement builds.
+    with pytest.raises(mhcontact.InputError, match="gauge positioning misplaces the wheel") as e:
+        mhcontact.Pair(s1002, rail, {"rail_inclination": 40, "flange_back_distance_m": 1.260})
+    off_mm = float(str(e.value).split('"lateral_offset_mm": ')[1].split("}")[0])
+    mhcontact.Pair(s1002, rail, {"rail_inclination": 40, "flange_back_distance_m": 1.260,
+                                 "positioning": "explicit", "lateral_offset_m": off_mm * 1e-3})
+    # Explicit at the gauge rule's offset for the standard track: the same numbers.
+    with pytest.raises(mhcontact.InputError) as e:
+        mhcontact.Pair(s1002, rail, {"rail_inclination": 40, "flange_back_distance_m": 1.430})
+    wide_mm = float(str(e.value).split('"lateral_offset_mm": ')[1].split("}")[0])
+    gauge = mhcontact.Pair(s1002, rail, {"rail_inclination": 40})
+    explicit = mhcontact.Pair(s1002, rail, {"rail_inclination": 40, "positioning": "explicit",
+                                            "lateral_offset_m": (wide_mm - 35.0) * 1e-3})  # 70 mm / 2 back
+    a, b = gauge.solve(2e-3, Q_N=80e3), explicit.solve(2e-3, Q_N=80e3)
+    assert a["Fy_kN"] == pytest.approx(b["Fy_kN"], rel=1e-6)
+    assert a["pmax_MPa"] == pytest.approx(b["pmax_MPa"], rel=1e-6)
+    with pytest.raises(ValueError, match="positioning = \"sideways\""):
+        mhcontact.Pair(s1002, rail, {"positioning": "sideways"})
+    with pytest.raises(ValueError, match="only used with positioning MHC_POSITIONING_EXPLICIT"):
+        mhcontact.Pair(s1002, rail, {"lateral_offset_m": 1e-3})

@@ -27,9 +27,16 @@ awk -F, '$1 == 0 { n++; if ($2 < 0 || $2 > 3 || $3 < 459.5 || $3 > 460.5) bad++ 
 run tip "\"$F/tip_start_wheel.whl\"" "$rail40"
 [ $rc -eq 2 ] || fail "tip-start wheel: exit $rc, expected 2"
 [ ! -e "$T/tip/cases.csv" ] || fail "tip-start wheel: cases written"
-grep -q "value t_Y = 0: contact at rail y 11.965 mm, wheel y 15 mm .*not on the tread of both profiles: the wheel's origin y = 0, its taping line, lies outside its profile" "$T/tip.err" \
+grep -q "value t_Y = 0: contact at rail y 11.965 mm, wheel y 15 mm .*gauge positioning misplaces the wheel: the wheel's origin y = 0, its taping line, lies outside its profile" "$T/tip.err" \
   || fail "tip-start message: $(cat "$T/tip.err")"
 grep -q 'track.positioning "explicit" with track.lateral_offset_mm' "$T/tip.err" || fail "no way out named: $(cat "$T/tip.err")"
+# the message ends with the explicit placement that reproduces the refused gauge placement (the
+# gauge rule's offset on 60E1 at 1:40): copied, it runs, the user's placement, unchecked
+placed=$(grep -o '"track": {"positioning": "explicit", "lateral_offset_mm": [-0-9.e]*}' "$T/tip.err")
+[ "$placed" = '"track": {"positioning": "explicit", "lateral_offset_mm": -3.034716}' ] || fail "no explicit placement to copy: $(cat "$T/tip.err")"
+run tipg "\"$F/tip_start_wheel.whl\"" "$rail40" "$placed"
+[ $rc -le 1 ] || fail "tip-start wheel, the printed placement: exit $rc: $(cat "$T/tipg.err")"
+# the placement that is meant: the wheel's origin (its flange back) 70 mm further in
 run tipx "\"$F/tip_start_wheel.whl\"" "$rail40" '"track": {"positioning": "explicit", "lateral_offset_mm": -73.4}'
 [ $rc -le 1 ] || fail "tip-start wheel, explicit: exit $rc: $(cat "$T/tipx.err")"
 

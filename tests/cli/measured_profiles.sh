@@ -53,8 +53,9 @@ for w in MBench_S1002_v3.prw circ_r10.prw circ_r50.prw circ_r100.prw flat_plane.
   [ $rc -eq 0 ] || [ $rc -eq 1 ] || { cat "$tmp/$w.err" >&2; exit 1; }
 done
 # the surfaces without a flange are placed by the gauge rule with a warning (docs/profiles.md
-# "Placement check"); the one inclined by 0.2 rad touches the rail at 11.5 deg, with its edge:
-# refused before any case is solved (exit 2), explicit positioning named as the way out
+# "Placement check"); the one inclined by 0.2 rad has its lowest point on the field side, 10 mm
+# below its origin, as a mirrored wheel: refused before any case is solved (exit 2), explicit
+# positioning named as the way out
 for w in circ_r10.prw flat_plane.prw; do
   "$bin" geometry "$tmp/$w.json" -o "$tmp/$w.geo" 2>"$tmp/$w.err"
   grep -q "$w: the wheel has no flange.*track.positioning" "$tmp/$w.err" || { cat "$tmp/$w.err"; exit 1; }
@@ -65,7 +66,7 @@ w=flat_ang200.prw
 echo "{\"wheel\": {\"profile\": \"$d/$w\"}, \"rail\": {\"profile\": $std_rail, \"inclination\": \"1:40\"}, $sweep}" > "$tmp/$w.json"
 set +e; "$bin" run "$tmp/$w.json" -o "$tmp/$w" -q 2>"$tmp/$w.err"; rc=$?; set -e
 test $rc -eq 2; test ! -e "$tmp/$w/cases.csv"
-grep -q "contact angle -11.459 deg.*not on the tread of both profiles.*track.positioning" "$tmp/$w.err" || { cat "$tmp/$w.err"; exit 1; }
+grep -q "contact angle -11.459 deg.*misplaces the wheel: its flange (lowest point at wheel y 50 mm, 10.136 mm below the taping line) lies on the field side of the taping line: a mirrored profile.*track.positioning" "$tmp/$w.err" || { cat "$tmp/$w.err"; exit 1; }
 # the clean-up can be made strict: the old rejection, exit 2
 echo "{\"wheel\": {\"profile\": {\"standard\": \"S1002\"}}, \"rail\": {\"profile\": {\"file\": \"$d/avg_low2.ban\", \"cleanup\": \"strict\"}, \"inclination\": \"as-is\"}, $sweep}" > "$tmp/strict.json"
 set +e; "$bin" run "$tmp/strict.json" -o "$tmp/strict" -q 2>"$tmp/strict.err"; rc=$?; set -e

@@ -4,7 +4,9 @@
 #  2. a rail scanned only over its head has no gauge point: the error names explicit positioning,
 #     and with it the pair runs;
 #  3. the roller-rig example runs, and the roller's curvature (A grows) raises the approach dz at
-#     every case against the same pair on a straight rail.
+#     every case against the same pair on a straight rail;
+#  4. a thick flange (Sd 36.4 mm), placed by the gauge rule, whose contact at t_Y = 0 is on its
+#     flange root (17 deg), runs: placement is judged from the placement, not from that contact.
 set -euo pipefail
 MH=$1; SRC=$2
 . "$(dirname "$0")/lib/csv_col.sh"
@@ -51,4 +53,11 @@ csv_col "$T/straight/cases.csv" case status dz_virtual_mm > "$T/straight.col"
 paste -d, "$T/roller.col" "$T/straight.col" |
   awk -F, '$1 != $4 {bad++} $2 == "ok" && $5 == "ok" {n++; if (!($3 + 0 > $6 + 0)) bad++} END {exit (n < 10 || bad)}' \
   || fail "the roller's curvature did not raise dz at every case: $(paste -d, "$T/roller.col" "$T/straight.col" | head -5)"
+# 4. the thick flange (tests/data/profiles/constructed/make.sh): runs, its t_Y = 0 row on the root
+echo "{\"wheel\": {\"profile\": \"$SRC/tests/data/profiles/constructed/thick_flange_wheel.csv\"}, \"rail\": {\"profile\": {\"standard\": \"60E1\"}, \"inclination\": \"1:40\"}, $sweep}" > "$T/thick.json"
+set +e; "$MH" run "$T/thick.json" -o "$T/thick" -q 2>"$T/err"; rc=$?; set -e
+[ $rc -le 1 ] || fail "thick flange: exit $rc: $(cat "$T/err")"
+csv_col "$T/thick/cases.csv" tY_mm gamma_main_deg > "$T/thick.col"
+awk -F, '$1 == 0 { n++; if ($2 < 15) bad++ } END { exit !(n == 2 && !bad) }' "$T/thick.col" \
+  || fail "thick flange at t_Y = 0 not on its flange root: $(grep '^0,' "$T/thick.col")"
 echo PASS

@@ -56,7 +56,13 @@ void solve_multi_hertz_approach(const ContactGeometry& G, const Material& mat, d
                          std::sin(g.gamma), opt, r);
   }
   r.n_contacts = static_cast<int>(r.loaded.size());
-  if (r.loaded.empty()) {
+  if (r.loaded.empty() && !r.warnings.empty()) {
+    // Candidates are pressed in, each conformal (non_hertzian_excluded): the wheel touches the
+    // rail, and this method has no answer; not a wheel in the air (as solve_multi_hertz).
+    r.status = CaseStatus::NotConverged;
+    r.message = "the approach dz = " + format_number(dz * 1e3) + " mm presses only candidates without a Hertz ellipse "
+                "(B <= 0, a conformal contact): the multi-Hertzian method cannot solve it, no force computed";
+  } else if (r.loaded.empty()) {
     r.status = CaseStatus::NoContact;
     r.message = "no contact: the approach dz = " + format_number(dz * 1e3) + " mm loads no Hertzian candidate";
   }

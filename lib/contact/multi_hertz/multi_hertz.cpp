@@ -220,8 +220,12 @@ void solve_multi_hertz(const ContactGeometry& G, const Material& mat, double tY,
   for (const Cand& c : cs)
     if (c.hertzian && (!first || c.g.gap < first->g.gap)) first = &c;
   if (!first) {
-    r.status = CaseStatus::NoContact;
-    r.message = "no Hertzian candidate: every potential ellipse has B <= 0 (conformal) at this t_Y";
+    // The wheel does touch the rail, conformally: this method has no answer, and an answer of
+    // zero force (no_contact) would be taken as a wheel in the air by a vehicle-dynamics code.
+    r.status = CaseStatus::NotConverged;
+    r.message = "no Hertzian candidate: every potential ellipse has B <= 0 (a conformal contact) at this t_Y: the "
+                "multi-Hertzian method cannot solve it, no force computed; solve it with method auto, strips or "
+                "half-space";
     flag_climb();
     return;
   }

@@ -308,7 +308,7 @@ TEST_CASE("C interface: profiles from points and standard names build a pair", "
   mhc_pair_options bado = o;
   bado.E_wheel_Pa = -1;
   CHECK(mhc_pair_create(w, r, &bado, &none) == MHC_ERR_ARGUMENT);
-  CHECK_THAT(mhc_last_message(), Catch::Contains("material"));
+  CHECK_THAT(mhc_last_message(), Catch::Contains("options.E_wheel_Pa: value -1 Pa"));  // test_capi_checks.cpp
   CHECK(none == nullptr);
   mhc_profile_free(w);  // the pairs keep copies
   mhc_profile_free(wp);

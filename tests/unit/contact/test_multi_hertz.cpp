@@ -11,6 +11,7 @@
 #include "jobs/run.hpp"
 #include "profile/read.hpp"
 #include "manchester_fixture.hpp"
+#include "contact/multi_hertz/approach_given.hpp"
 #include "contact/multi_hertz/multi_hertz.hpp"
 #include "support/hertz_reference.hpp"
 
@@ -181,6 +182,28 @@ TEST_CASE("non-Hertzian candidates (B <= 0) are excluded and flagged when they w
   const CaseResult both = solve_multi_hertz(two_candidates(1 / 0.020, 1e-6), mat, 0.5e-3, 100e3);
   REQUIRE(both.loaded.size() == 2);
   REQUIRE(both.Fz == Approx(100e3).epsilon(1e-12));
+}
+
+TEST_CASE("a conformal contact (every candidate B <= 0) is not no_contact: the method has no answer", "[solver]") {
+  // A vehicle-dynamics code applies zero force on no_contact; here the wheel touches the rail,
+  // conformally, and the multi-Hertzian method cannot solve it: not_converged, with the message.
+  const Material mat = steel();
+  ContactGeometry G = two_candidates(-1 / 0.012, 1e-6);
+  for (std::size_t k = 0; k < G.table.size(); k += 2) G.table[k].k_wxx = -1 / 0.29;  // main: concave wheel R 290 mm on R 300
+  const CaseResult r = solve_multi_hertz(G, mat, 0.5e-3, 100e3);
+  CHECK(r.status == CaseStatus::NotConverged);
+  CHECK_THAT(r.message, Catch::Contains("a conformal contact"));
+  CHECK_THAT(r.message, Catch::Contains("no force computed"));
+  CHECK(r.loaded.empty());
+  // The approach prescribed: pressed in, every candidate conformal: the same.
+  ApproachWorkspace ws;
+  CaseResult a;
+  solve_multi_hertz_approach(G, mat, 0.5e-3, 10e-6, MultiHertzOptions{}, ws, a);
+  CHECK(a.status == CaseStatus::NotConverged);
+  CHECK_THAT(a.message, Catch::Contains("a conformal contact"));
+  // Not pressed in: the wheel above the rail, no_contact.
+  solve_multi_hertz_approach(G, mat, 0.5e-3, -10e-6, MultiHertzOptions{}, ws, a);
+  CHECK(a.status == CaseStatus::NoContact);
 }
 
 TEST_CASE("load sharing next to a jump does not depend on the t_Y grid", "[solver]") {

@@ -75,3 +75,19 @@ awk -F, 'NR>1 {y=sprintf("%.4f", $1); z=sprintf("%.4f", $2); gsub(/\./, ",", y);
 printf '\xFF\xFEy\x00_\x00m\x00m\x00\n\x00' > utf16.csv
 printf '1 2\n3 4\n' | gzip -n > table.csv.gz && mv table.csv.gz gzip.csv
 printf 'y z\n1.0 2.0\n\x00\x01\x02 binary\n' > nul_bytes.txt
+
+# 5. A thick flange (docs/profiles.md "Placement check"): S1002 whose flange and flange root are
+#    moved 3.9 mm towards the field side, Sd 32.5 -> 36.4 mm (a worn wheel's flange, above
+#    EN 15313's 33 mm), the flange back kept at -70 mm and the tread from -10 mm on unchanged. The
+#    shift is D w(y) for the points on the field side of the flange tip, w = 1 up to y = -30 mm,
+#    falling as (1 + cos)/2 to 0 at -10 mm; the tip widens by D (the file's straight piece there).
+#    Correctly placed, its contact at t_Y = 0 on 60E1 at 1:40 is on the flange root (17 deg).
+"$MH" profile generate S1002 --step 0.2 -o "$T/w2.csv" >/dev/null
+awk -F, -v D=3.9 'NR > 1 { y[NR] = $1; z[NR] = $2; if (NR == 2 || $2 < z[it]) it = NR; n = NR }
+  END {
+    pi = atan2(0, -1); print "y_mm,z_mm"
+    for (i = 2; i <= n; i++) {
+      w = 0; if (i > it) { w = 1; if (y[i] > -30) w = (y[i] >= -10) ? 0 : 0.5 * (1 + cos(pi * (y[i] + 30) / 20)) }
+      printf "%.4f,%.4f\n", y[i] + D * w, z[i]
+    }
+  }' "$T/w2.csv" > thick_flange_wheel.csv
