@@ -284,6 +284,7 @@ struct InfluenceGrid::Fft {
         spec(static_cast<std::size_t>(nb) * static_cast<std::size_t>(my_), Cv(Vd{}, Vd{})),
         kernel(spec.size(), Cv(Vd{}, Vd{})), rows(static_cast<std::size_t>(mx_) + 2, Vd{}) {
     const int zero = mx, spare = mx + 1;
+    for (auto* v : {&get_re, &get_im, &put_re, &put_im}) v->reserve(static_cast<std::size_t>(nb) * L);
     for (int k = 0; k < nb * L; ++k) {
       // FFTPACK half-complex order: r0, r1, i1, r2, i2, …, and r_{mx/2} last when mx is even.
       const int re = k >= hx ? -1 : k == 0 ? 0 : 2 * k - 1;
