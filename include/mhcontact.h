@@ -222,7 +222,7 @@ typedef struct mhc_workspace mhc_workspace;
 MHC_API const char* mhc_version(void);
 /** MHC_ABI_VERSION of the library (compare with the header's). */
 MHC_API int32_t mhc_abi_version(void);
-/** "kissfft" or "fftw3": the FFT the half-space method uses in this build (docs/embedding.md). */
+/** "pocketfft" or "fftw3": the FFT the half-space method uses in this build (docs/embedding.md). */
 MHC_API const char* mhc_fft_backend(void);
 
 /* ---- errors ----------------------------------------------------------------------------- */

@@ -3,7 +3,9 @@
 // case by case on one thread. Prints per case and method the time, solver iterations and size,
 // the median and worst time per case, and the ratios to CONTACT's own time per case on this
 // machine kind (tests/data/contact, wall_s) and between the methods.
-// Times are CPU time, best of REPEATS per case. Figures only, never an assertion. Usage: mhcontact_bench_grid SOURCE_DIR [REPEATS]
+// Times are CPU time, best of REPEATS per case. Figures only, never an assertion.
+// Usage: mhcontact_bench_grid SOURCE_DIR [REPEATS] [half-space]; "half-space" runs the two
+// half-space sweeps only (scripts/bench.sh compares them with the FFTW build's).
 #include <time.h>
 
 #include <algorithm>
@@ -34,6 +36,7 @@ double cpu_ms() {
 int main(int argc, char** argv) {
   const std::string src = argc > 1 ? argv[1] : ".";
   const int repeats = argc > 2 ? std::max(1, std::atoi(argv[2])) : 3;
+  const bool half_space_only = argc > 3 && std::string(argv[3]) == "half-space";
   const mh::CaseFile cf = mh::load_case_file(src + "/cases/manchester-halfspace.json", true);
   const mh::PairGeometry pg = mh::build_pair_geometry(cf);
   const mh::CsvTable ref = mh::read_csv_file(src + "/tests/data/contact/contact_mbench_right_q50_dx0.2.csv");
@@ -54,80 +57,82 @@ int main(int argc, char** argv) {
     std::printf("  %5d  %8.1f  %6d  %13d  %8d  %8.1f  %s\n", t, best, r.iterations, cg, n, r.pmax / 1e6, mh::to_string(r.status));
     ms.push_back(best);
   }
-  // The strip method on the same cases.
-  const mh::CaseFile cs = mh::load_case_file(src + "/cases/manchester-strips.json", true);
-  std::vector<double> ms_st;
-  std::printf("strips, same cases, ds = %.2f mm (extents: the estimate kept, or refined to close the end gap):\n"
-              "  tY_mm   time_ms  patch_solves  strips  pmax_MPa  extents (end-gap error)\n", cs.strips.ds * 1e3);
-  for (int t = -6; t <= 10; ++t) {
-    double best = 1e99;
-    mh::CaseResult r;
-    for (int k = 0; k < repeats; ++k) {
-      const double t0 = cpu_ms();
-      r = mh::solve_strip_method(pg.geo, cs.material, t * 1e-3, 50e3, cs.strips);
-      best = std::min(best, cpu_ms() - t0);
-    }
-    int n = 0;
-    std::string ext;
-    for (const auto& P : r.patches) {
-      n += P.n_elements;
-      char b[48];
-      std::snprintf(b, sizeof b, "%s%s (%.3f)", ext.empty() ? "" : ", ", P.refined ? "end gap" : "estimate", P.end_gap_error);
-      ext += b;
-    }
-    std::printf("  %5d  %8.2f  %12d  %6d  %8.1f  %-24s %s\n", t, best, r.iterations, n, r.pmax / 1e6, ext.c_str(),
-                mh::to_string(r.status));
-    ms_st.push_back(best);
-  }
-  // "auto" on the same cases: the multi-Hertzian answer where it is valid, strips elsewhere.
-  // Its mean cost per case is meant to stay within a third of the strip method's.
-  mh::MethodOptions mo = cs.method_options();
-  mo.method = mh::Method::Auto;
-  std::vector<double> ms_auto;
-  int by_strips = 0;
-  for (int t = -6; t <= 10; ++t) {
-    double best = 1e99;
-    mh::CaseResult r;
-    for (int k = 0; k < repeats; ++k) {
-      const double t0 = cpu_ms();
-      r = mh::solve_contact(pg.geo, cs.material, t * 1e-3, 50e3, mo);
-      best = std::min(best, cpu_ms() - t0);
-    }
-    by_strips += r.method == mh::Method::Strips;
-    ms_auto.push_back(best);
-  }
   auto mean = [](const std::vector<double>& v) { double s = 0; for (double x : v) s += x; return s / static_cast<double>(v.size()); };
-  std::printf("auto: %d of %zu cases by strips; mean %.3f ms per case against %.3f ms for strips on every case "
-              "(ratio %.2f; the target was <= 0.33, docs/strips.md)\n",
-              by_strips, ms_auto.size(), mean(ms_auto), mean(ms_st), mean(ms_auto) / mean(ms_st));
-  // The same on all 99 cases of cases/manchester.json (t_Y -6 ... 10 mm by 0.5, Q = 10, 50, 100 kN).
-  {
-    std::vector<double> s99, a99;
-    int strips99 = 0, refined99 = 0;
-    for (int k = 0; k <= 32; ++k)
-      for (double Q : {10e3, 50e3, 100e3}) {
-        const double tY = (-6 + 0.5 * k) * 1e-3;
-        double bs = 1e99, ba = 1e99;
-        mh::CaseResult rs, ra;
-        for (int rep = 0; rep < repeats; ++rep) {
-          const double t0 = cpu_ms();
-          rs = mh::solve_strip_method(pg.geo, cs.material, tY, Q, cs.strips);
-          const double t1 = cpu_ms();
-          ra = mh::solve_contact(pg.geo, cs.material, tY, Q, mo);
-          const double t2 = cpu_ms();
-          bs = std::min(bs, t1 - t0);
-          ba = std::min(ba, t2 - t1);
-        }
-        s99.push_back(bs);
-        a99.push_back(ba);
-        strips99 += ra.method == mh::Method::Strips;
-        for (const auto& P : rs.patches) refined99 += P.refined;
+  std::vector<double> ms_st;
+  if (!half_space_only) {
+    // The strip method on the same cases.
+    const mh::CaseFile cs = mh::load_case_file(src + "/cases/manchester-strips.json", true);
+    std::printf("strips, same cases, ds = %.2f mm (extents: the estimate kept, or refined to close the end gap):\n"
+                "  tY_mm   time_ms  patch_solves  strips  pmax_MPa  extents (end-gap error)\n", cs.strips.ds * 1e3);
+    for (int t = -6; t <= 10; ++t) {
+      double best = 1e99;
+      mh::CaseResult r;
+      for (int k = 0; k < repeats; ++k) {
+        const double t0 = cpu_ms();
+        r = mh::solve_strip_method(pg.geo, cs.material, t * 1e-3, 50e3, cs.strips);
+        best = std::min(best, cpu_ms() - t0);
       }
-    std::vector<double> sorted = s99;
-    std::sort(sorted.begin(), sorted.end());
-    std::printf("cases/manchester.json, 99 cases: strips median %.2f ms, mean %.2f ms, worst %.2f ms per case (%d patches "
-                "refined); auto: %d cases by strips, mean %.3f ms (ratio %.2f)\n",
-                sorted[sorted.size() / 2], mean(s99), sorted.back(), refined99, strips99, mean(a99), mean(a99) / mean(s99));
+      int n = 0;
+      std::string ext;
+      for (const auto& P : r.patches) {
+        n += P.n_elements;
+        char b[48];
+        std::snprintf(b, sizeof b, "%s%s (%.3f)", ext.empty() ? "" : ", ", P.refined ? "end gap" : "estimate", P.end_gap_error);
+        ext += b;
+      }
+      std::printf("  %5d  %8.2f  %12d  %6d  %8.1f  %-24s %s\n", t, best, r.iterations, n, r.pmax / 1e6, ext.c_str(),
+                  mh::to_string(r.status));
+      ms_st.push_back(best);
+    }
+    // "auto" on the same cases: the multi-Hertzian answer where it is valid, strips elsewhere.
+    // Its mean cost per case is meant to stay within a third of the strip method's.
+    mh::MethodOptions mo = cs.method_options();
+    mo.method = mh::Method::Auto;
+    std::vector<double> ms_auto;
+    int by_strips = 0;
+    for (int t = -6; t <= 10; ++t) {
+      double best = 1e99;
+      mh::CaseResult r;
+      for (int k = 0; k < repeats; ++k) {
+        const double t0 = cpu_ms();
+        r = mh::solve_contact(pg.geo, cs.material, t * 1e-3, 50e3, mo);
+        best = std::min(best, cpu_ms() - t0);
+      }
+      by_strips += r.method == mh::Method::Strips;
+      ms_auto.push_back(best);
+    }
+    std::printf("auto: %d of %zu cases by strips; mean %.3f ms per case against %.3f ms for strips on every case "
+                "(ratio %.2f; the target was <= 0.33, docs/strips.md)\n",
+                by_strips, ms_auto.size(), mean(ms_auto), mean(ms_st), mean(ms_auto) / mean(ms_st));
+    // The same on all 99 cases of cases/manchester.json (t_Y -6 ... 10 mm by 0.5, Q = 10, 50, 100 kN).
+    {
+      std::vector<double> s99, a99;
+      int strips99 = 0, refined99 = 0;
+      for (int k = 0; k <= 32; ++k)
+        for (double Q : {10e3, 50e3, 100e3}) {
+          const double tY = (-6 + 0.5 * k) * 1e-3;
+          double bs = 1e99, ba = 1e99;
+          mh::CaseResult rs, ra;
+          for (int rep = 0; rep < repeats; ++rep) {
+            const double t0 = cpu_ms();
+            rs = mh::solve_strip_method(pg.geo, cs.material, tY, Q, cs.strips);
+            const double t1 = cpu_ms();
+            ra = mh::solve_contact(pg.geo, cs.material, tY, Q, mo);
+            const double t2 = cpu_ms();
+            bs = std::min(bs, t1 - t0);
+            ba = std::min(ba, t2 - t1);
+          }
+          s99.push_back(bs);
+          a99.push_back(ba);
+          strips99 += ra.method == mh::Method::Strips;
+          for (const auto& P : rs.patches) refined99 += P.refined;
+        }
+      std::vector<double> sorted = s99;
+      std::sort(sorted.begin(), sorted.end());
+      std::printf("cases/manchester.json, 99 cases: strips median %.2f ms, mean %.2f ms, worst %.2f ms per case (%d patches "
+                  "refined); auto: %d cases by strips, mean %.3f ms (ratio %.2f)\n",
+                  sorted[sorted.size() / 2], mean(s99), sorted.back(), refined99, strips99, mean(a99), mean(a99) / mean(s99));
+    }
   }
   // The plastic model on the same pair (cases/manchester-plastic.json: Q = 100 kN, p_lim 900 MPa,
   // t_Y -6 ... 10 mm by 0.5), half-space, one run per case (the flange cases once took > 60 s).
@@ -147,29 +152,37 @@ int main(int argc, char** argv) {
                 r.pmax / 1e6, mh::to_string(r.status));
     ms_pl.push_back(t);
   }
-  // The strip method on the same plastic cases (best of `repeats`; capped strips take their
-  // influence by quadrature, docs/strips.md "Capped strips within their overlap").
   std::vector<double> ms_pl_st;
-  std::printf("strips plastic, same cases:\n  tY_mm   time_ms  strips  area_mm2  extents\n");
-  for (int k = 0; k <= 32; ++k) {
-    const double tY = (-6 + 0.5 * k) * 1e-3;
-    double best = 1e99;
-    mh::CaseResult r;
-    for (int rep = 0; rep < repeats; ++rep) {
-      const double t0 = cpu_ms();
-      r = mh::solve_strip_method(pg.geo, cp.material, tY, 100e3, cp.strips);
-      best = std::min(best, cpu_ms() - t0);
+  if (!half_space_only) {
+    // The strip method on the same plastic cases (best of `repeats`; capped strips take their
+    // influence by quadrature, docs/strips.md "Capped strips within their overlap").
+    std::printf("strips plastic, same cases:\n  tY_mm   time_ms  strips  area_mm2  extents\n");
+    for (int k = 0; k <= 32; ++k) {
+      const double tY = (-6 + 0.5 * k) * 1e-3;
+      double best = 1e99;
+      mh::CaseResult r;
+      for (int rep = 0; rep < repeats; ++rep) {
+        const double t0 = cpu_ms();
+        r = mh::solve_strip_method(pg.geo, cp.material, tY, 100e3, cp.strips);
+        best = std::min(best, cpu_ms() - t0);
+      }
+      int n = 0;
+      bool refined = false;
+      for (const auto& P : r.patches) { n += P.n_elements; refined = refined || P.refined; }
+      std::printf("  %5.1f  %8.2f  %6d  %8.2f  %-8s  %s\n", tY * 1e3, best, n, r.area * 1e6, refined ? "end gap" : "estimate",
+                  mh::to_string(r.status));
+      ms_pl_st.push_back(best);
     }
-    int n = 0;
-    bool refined = false;
-    for (const auto& P : r.patches) { n += P.n_elements; refined = refined || P.refined; }
-    std::printf("  %5.1f  %8.2f  %6d  %8.2f  %-8s  %s\n", tY * 1e3, best, n, r.area * 1e6, refined ? "end gap" : "estimate",
-                mh::to_string(r.status));
-    ms_pl_st.push_back(best);
   }
   for (const auto& row : ref.rows) contact_s.push_back(std::stod(row[static_cast<std::size_t>(ref.column("wall_s"))]));
   auto median = [](std::vector<double> v) { std::sort(v.begin(), v.end()); return v[v.size() / 2]; };
   const double med = median(ms), worst = *std::max_element(ms.begin(), ms.end());
+  if (half_space_only) {
+    std::printf("half-space: median %.1f ms per case, worst %.1f ms\n", med, worst);
+    std::printf("half-space plastic: median %.1f ms per case, worst %.1f ms\n", median(ms_pl),
+                *std::max_element(ms_pl.begin(), ms_pl.end()));
+    return 0;
+  }
   const double med_st = median(ms_st), worst_st = *std::max_element(ms_st.begin(), ms_st.end());
   std::printf("half-space: median %.1f ms per case, worst %.1f ms\n", med, worst);
   std::printf("strips:     median %.2f ms per case, worst %.2f ms\n", med_st, worst_st);

@@ -24,7 +24,7 @@ def pair():
 
 def test_version():
     assert mhcontact.abi_version == 1
-    assert mhcontact.fft_backend in ("kissfft", "fftw3")
+    assert mhcontact.fft_backend in ("pocketfft", "fftw3")
     assert mhcontact.__version__
 
 

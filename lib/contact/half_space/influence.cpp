@@ -18,10 +18,101 @@
 #include <mutex>
 #include <type_traits>
 #else
-#include <kissfft/kissfft.hh>
+// PocketFFT's own thread pool stays out: apply() is called from the project's worker threads
+// (lib/jobs), one transform per call.
+#define POCKETFFT_NO_MULTITHREADING
+#include <pocketfft_hdronly.h>
 #endif
 
 #include "core/units.hpp"
+
+#ifndef MHCONTACT_FFTW
+namespace mh_pocketfft {
+namespace pf = pocketfft::detail;
+/// PocketFFT's SIMD vector of doubles (2 lanes with SSE2, 4 with AVX, 1 without vectors): its
+/// 1-D plans transform L independent sequences at once when given arrays of these ([P]).
+#ifndef POCKETFFT_NO_VECTORS
+using Vd = pf::vtype_t<double>;
+#else
+using Vd = double;
+#endif
+constexpr int L = static_cast<int>(sizeof(Vd) / sizeof(double));
+
+/// Per-thread scratch for PocketFFT's 1-D calls: each rfftp/cfftp::exec makes an arr<T> of one
+/// sequence (T = Vd or cmplx<Vd> here), which would be an aligned heap allocation per call.
+/// The arr<> specialisations below take the buffers from this stack instead (last in, first
+/// out, so nested calls each get their own) and keep them for the thread's next call: after the
+/// first apply() of the largest grid, a thread allocates nothing in the FFT. This relies on the
+/// header's exec() taking its scratch as an arr<T> (pocketfft_hdronly.h of Debian 12's gemmi-dev,
+/// and PocketFFT's C++ releases since 2019); were that to change, only the allocations return.
+class ScratchStack {
+ public:
+  static ScratchStack& local() {
+    static thread_local ScratchStack s;
+    return s;
+  }
+  void* take(std::size_t bytes) {
+    if (top_ == bufs_.size()) bufs_.emplace_back();
+    Buffer& b = bufs_[top_++];
+    if (b.bytes < bytes) {
+      b.mem.reset(static_cast<char*>(::operator new(bytes, std::align_val_t{64})));
+      b.bytes = bytes;
+    }
+    return b.mem.get();
+  }
+  void give_back() { --top_; }
+
+ private:
+  struct Free {
+    void operator()(char* p) const { ::operator delete(p, std::align_val_t{64}); }
+  };
+  struct Buffer {
+    std::unique_ptr<char, Free> mem;
+    std::size_t bytes = 0;
+  };
+  std::vector<Buffer> bufs_;
+  std::size_t top_ = 0;
+};
+
+/// The interface of pocketfft::detail::arr<T> as exec() uses it, on ScratchStack.
+template <typename T>
+class ScratchArr {
+ public:
+  ScratchArr() = default;
+  explicit ScratchArr(std::size_t n) : sz_(n) {
+    if (n > 0) p_ = static_cast<T*>(ScratchStack::local().take(n * sizeof(T)));
+  }
+  ScratchArr(const ScratchArr&) = delete;
+  ScratchArr& operator=(const ScratchArr&) = delete;
+  ~ScratchArr() {
+    if (p_) ScratchStack::local().give_back();
+  }
+  T& operator[](std::size_t i) { return p_[i]; }
+  const T& operator[](std::size_t i) const { return p_[i]; }
+  T* data() { return p_; }
+  const T* data() const { return p_; }
+  std::size_t size() const { return sz_; }
+
+ private:
+  T* p_ = nullptr;
+  std::size_t sz_ = 0;
+};
+}  // namespace mh_pocketfft
+
+#ifndef POCKETFFT_NO_VECTORS  // (without vectors Vd is double, whose arr also holds the twiddles)
+template <>
+class pocketfft::detail::arr<mh_pocketfft::Vd> : public mh_pocketfft::ScratchArr<mh_pocketfft::Vd> {
+ public:
+  using ScratchArr::ScratchArr;
+};
+template <>
+class pocketfft::detail::arr<pocketfft::detail::cmplx<mh_pocketfft::Vd>>
+    : public mh_pocketfft::ScratchArr<pocketfft::detail::cmplx<mh_pocketfft::Vd>> {
+ public:
+  using ScratchArr::ScratchArr;
+};
+#endif
+#endif
 
 namespace mh {
 
@@ -37,8 +128,9 @@ double love_corner(double u, double v) {
 }
 
 /// Smallest n ≥ m whose only prime factors have fast butterflies in the backend: 2, 3, 5, 7 for
-/// FFTW (FFTW 3 manual §2.1, "sizes of the form 2^a 3^b 5^c 7^d"); 2, 3, 5 for KissFFT, whose
-/// radix 7 goes through its O(p²) generic butterfly ([K] kissfft.hh, kf_bfly_generic).
+/// FFTW (FFTW 3 manual §2.1, "sizes of the form 2^a 3^b 5^c 7^d"); 2, 3, 5 for PocketFFT, whose
+/// real transforms (rfftp) have butterflies for 2, 3, 4 and 5 only, 7 going through the generic
+/// O(p²) one (radfg/radbg), the same sizes as util::good_size_real ([P]).
 int smooth_size(int m) {
 #ifdef MHCONTACT_FFTW
   static const int factors[] = {2, 3, 5, 7};
@@ -155,94 +247,122 @@ struct InfluenceGrid::Fft {
   }
 };
 
-#else  // KissFFT
+#else  // PocketFFT
 
-const char* fft_backend() { return "kissfft"; }
+const char* fft_backend() { return "pocketfft"; }
 
-/// KissFFT backend ([K]): kissfft<double> has complex 1-D transforms only, so the 2-D real
-/// convolution is built from them, keeping the work of a real-to-complex transform:
-///  - rows along x, two real rows per complex transform (z = a + i b, then
-///    A_k = (Z_k + conj Z_{mx−k}) / 2, B_k = (Z_k − conj Z_{mx−k}) / 2i), only the ny rows
-///    that carry pressure, only the half spectrum kx = 0 … mx/2 kept;
-///  - columns along y on that half spectrum, stored transposed ([kx·my + ky]) so that each
-///    column is contiguous: forward, times the kernel's spectrum, backward, column by column;
-///  - rows back, two per complex transform (Z = A + i B with the Hermitian halves filled in, the
-///    imaginary parts at kx = 0 and mx/2 dropped as a c2r transform does), only the ny rows
-///    that are wanted.
+/// PocketFFT backend ([P]): the 1-D plans of pocketfft_hdronly.h used directly, made once per
+/// grid (factors and twiddles), so apply() builds no plan and takes no lock. The 2-D real
+/// convolution:
+///  - rows along x, real-to-complex (FFTPACK half-complex order r0, r1, i1, r2, i2, …), L rows
+///    per call, only the ny rows that carry pressure; the half spectrum kx = 0 … mx/2 kept;
+///  - columns along y on that half spectrum, L columns per call, stored as blocks of L columns
+///    ([b·my + ky], lane kx − L·b) so that a block is transformed in place: forward, times the
+///    kernel's spectrum, backward;
+///  - rows back, complex-to-real (the imaginary parts at kx = 0 and mx/2 are not read, as a c2r
+///    transform does), only the ny rows that are wanted.
+/// Each 1-D call allocates its own scratch of one sequence inside PocketFFT (rfftp/cfftp::exec).
 struct InfluenceGrid::Fft {
-  using cpx = std::complex<double>;
-  int nx, ny, mx, my, hx;
-  kissfft<double> fx, ix, fy, iy;  ///< forward / inverse plans along x and along y
-  std::vector<cpx> spec;    ///< half spectrum, transposed: [kx·my + ky], kx < hx
-  std::vector<cpx> kernel;  ///< the wrapped kernel's spectrum, same layout, / (mx·my)
-  std::vector<cpx> row_in, row_out, col;  ///< mx, mx and my work values
+  using Vd = mh_pocketfft::Vd;
+  static constexpr int L = mh_pocketfft::L;
+  using Cv = pocketfft::detail::cmplx<Vd>;
+  int nx, ny, mx, my, hx, nb;  ///< hx = mx/2 + 1 spectrum columns in nb blocks of L
+  pocketfft::detail::pocketfft_r<double> plan_x;  ///< real transforms of length mx
+  pocketfft::detail::pocketfft_c<double> plan_y;  ///< complex transforms of length my
+  std::vector<Cv> spec;    ///< half spectrum, nb·my blocks of L columns (lanes past hx stay 0)
+  std::vector<Cv> kernel;  ///< the wrapped kernel's spectrum, same layout, / (mx·my)
+  /// L rows of mx values, then two spare slots: [mx] stays 0 (read for the imaginary parts that
+  /// the half-complex order does not hold), [mx+1] takes what is not written back.
+  std::vector<Vd> rows;
+  /// Per spectrum lane kx = 0 … nb·L−1: the slot of rows holding Re and Im of column kx, to read
+  /// from after the forward transform (get_*) and to write to before the backward one (put_*).
+  std::vector<int> get_re, get_im, put_re, put_im;
 
   Fft(int nx_, int ny_, int mx_, int my_)
-      : nx(nx_), ny(ny_), mx(mx_), my(my_), hx(mx_ / 2 + 1),
-        fx(static_cast<std::size_t>(mx_), false), ix(static_cast<std::size_t>(mx_), true),
-        fy(static_cast<std::size_t>(my_), false), iy(static_cast<std::size_t>(my_), true),
-        spec(static_cast<std::size_t>(hx) * my_), kernel(spec.size()),
-        row_in(static_cast<std::size_t>(mx_)), row_out(row_in.size()), col(static_cast<std::size_t>(my_)) {}
+      : nx(nx_), ny(ny_), mx(mx_), my(my_), hx(mx_ / 2 + 1), nb((hx + L - 1) / L),
+        plan_x(static_cast<std::size_t>(mx_)), plan_y(static_cast<std::size_t>(my_)),
+        spec(static_cast<std::size_t>(nb) * static_cast<std::size_t>(my_), Cv(Vd{}, Vd{})),
+        kernel(spec.size(), Cv(Vd{}, Vd{})), rows(static_cast<std::size_t>(mx_) + 2, Vd{}) {
+    const int zero = mx, spare = mx + 1;
+    for (auto* v : {&get_re, &get_im, &put_re, &put_im}) v->reserve(static_cast<std::size_t>(nb) * L);
+    for (int k = 0; k < nb * L; ++k) {
+      // FFTPACK half-complex order: r0, r1, i1, r2, i2, …, and r_{mx/2} last when mx is even.
+      const int re = k >= hx ? -1 : k == 0 ? 0 : 2 * k - 1;
+      const int im = k >= hx || k == 0 || 2 * k == mx ? -1 : 2 * k;
+      get_re.push_back(re < 0 ? zero : re);
+      get_im.push_back(im < 0 ? zero : im);
+      put_re.push_back(re < 0 ? spare : re);
+      put_im.push_back(im < 0 ? spare : im);
+    }
+  }
 
-  std::size_t at(int kx, int ky) const { return static_cast<std::size_t>(kx) * my + ky; }
+  double* spec_at(int b, int ky) {
+    return reinterpret_cast<double*>(&spec[static_cast<std::size_t>(b) * my + ky]);
+  }
 
   /// The x half spectra of rows 0 … nrows−1 of `src` (row r at src + r·stride, nvals values, zero
   /// beyond them) into spec; the rows nrows … my−1 are zero.
   void rows_forward(const double* src, int nrows, int nvals, std::size_t stride) {
-    for (int r = 0; r < nrows; r += 2) {
-      const bool pair = r + 1 < nrows;
-      const double* a = src + stride * r;
-      const double* b = pair ? a + stride : nullptr;
-      for (int i = 0; i < nvals; ++i) row_in[i] = cpx(a[i], pair ? b[i] : 0.0);
-      std::fill(row_in.begin() + nvals, row_in.end(), cpx(0.0, 0.0));
-      fx.transform(row_in.data(), row_out.data());
-      for (int k = 0; k < hx; ++k) {
-        const cpx z = row_out[k], zc = std::conj(row_out[(mx - k) % mx]);
-        spec[at(k, r)] = 0.5 * (z + zc);
-        if (pair) spec[at(k, r + 1)] = cpx(0.0, -0.5) * (z - zc);
+    double* R = reinterpret_cast<double*>(rows.data());  // R[i·L + l]: value i of lane l
+    for (int r0 = 0; r0 < nrows; r0 += L) {
+      const int nl = std::min(L, nrows - r0);
+      for (int l = 0; l < L; ++l) {
+        const double* a = src + stride * static_cast<std::size_t>(r0 + l);
+        for (int i = 0; i < nvals; ++i) R[i * L + l] = l < nl ? a[i] : 0.0;
+        for (int i = nvals; i < mx; ++i) R[i * L + l] = 0.0;
       }
+      plan_x.exec(rows.data(), 1.0, true);
+      for (int l = 0; l < nl; ++l)
+        for (int b = 0; b < nb; ++b) {
+          double* z = spec_at(b, r0 + l);  // z[j]: Re of lane j, z[L + j]: Im
+          const int* gr = &get_re[static_cast<std::size_t>(b) * L];
+          const int* gi = &get_im[static_cast<std::size_t>(b) * L];
+          for (int j = 0; j < L; ++j) {
+            z[j] = R[gr[j] * L + l];
+            z[L + j] = R[gi[j] * L + l];
+          }
+        }
     }
-    for (int k = 0; k < hx; ++k) std::fill(spec.begin() + at(k, nrows), spec.begin() + at(k, my), cpx(0.0, 0.0));
+    for (int b = 0; b < nb; ++b)
+      std::fill(spec.begin() + static_cast<std::ptrdiff_t>(b) * my + nrows,
+                spec.begin() + static_cast<std::ptrdiff_t>(b + 1) * my, Cv(Vd{}, Vd{}));
   }
 
   void set_kernel(const std::vector<double>& k) {
     rows_forward(k.data(), my, mx, static_cast<std::size_t>(mx));
     const double scale = 1.0 / (static_cast<double>(mx) * static_cast<double>(my));
-    for (int kx = 0; kx < hx; ++kx) {
-      fy.transform(&spec[at(kx, 0)], &kernel[at(kx, 0)]);
-      for (int ky = 0; ky < my; ++ky) kernel[at(kx, ky)] *= scale;
-    }
+    for (int b = 0; b < nb; ++b) plan_y.exec(&spec[static_cast<std::size_t>(b) * my], scale, true);
+    kernel = spec;
   }
 
   void convolve(const double* p, double* u) {
     const std::size_t nxs = static_cast<std::size_t>(nx);
     rows_forward(p, ny, nx, nxs);  // reads all of p before u is written: they may alias
-    for (int kx = 0; kx < hx; ++kx) {
-      fy.transform(&spec[at(kx, 0)], col.data());
-      const cpx* kh = &kernel[at(kx, 0)];
-      for (int ky = 0; ky < my; ++ky) col[ky] *= kh[ky];
-      iy.transform(col.data(), &spec[at(kx, 0)]);
+    for (int b = 0; b < nb; ++b) {
+      Cv* z = &spec[static_cast<std::size_t>(b) * my];
+      const Cv* kh = &kernel[static_cast<std::size_t>(b) * my];
+      plan_y.exec(z, 1.0, true);
+      for (int ky = 0; ky < my; ++ky) z[ky] = z[ky] * kh[ky];
+      plan_y.exec(z, 1.0, false);
     }
-    for (int r = 0; r < ny; r += 2) {
-      const bool pair = r + 1 < ny;
-      for (int k = 0; k < hx; ++k) {
-        cpx A = spec[at(k, r)], B = pair ? spec[at(k, r + 1)] : cpx(0.0, 0.0);
-        if (k == 0 || 2 * k == mx) {
-          A = cpx(A.real(), 0.0);
-          B = cpx(B.real(), 0.0);
+    double* R = reinterpret_cast<double*>(rows.data());
+    for (int r0 = 0; r0 < ny; r0 += L) {
+      const int nl = std::min(L, ny - r0);
+      for (int l = 0; l < L; ++l)
+        for (int b = 0; b < nb; ++b) {
+          const double* z = spec_at(b, r0 + std::min(l, nl - 1));  // a lane past the last row: unused
+          const int* pr = &put_re[static_cast<std::size_t>(b) * L];
+          const int* pi = &put_im[static_cast<std::size_t>(b) * L];
+          for (int j = 0; j < L; ++j) {
+            R[pr[j] * L + l] = z[j];
+            R[pi[j] * L + l] = z[L + j];
+          }
         }
-        row_in[k] = A + cpx(0.0, 1.0) * B;
+      plan_x.exec(rows.data(), 1.0, false);  // c2r: the Im of kx = 0 and mx/2 are not read
+      for (int l = 0; l < nl; ++l) {
+        double* ur = u + nxs * static_cast<std::size_t>(r0 + l);
+        for (int i = 0; i < nx; ++i) ur[i] = R[i * L + l];
       }
-      for (int k = hx; k < mx; ++k) {
-        const cpx A = std::conj(spec[at(mx - k, r)]);
-        const cpx B = pair ? std::conj(spec[at(mx - k, r + 1)]) : cpx(0.0, 0.0);
-        row_in[k] = A + cpx(0.0, 1.0) * B;
-      }
-      ix.transform(row_in.data(), row_out.data());
-      double* ua = u + nxs * r;
-      for (int i = 0; i < nx; ++i) ua[i] = row_out[i].real();
-      if (pair)
-        for (int i = 0; i < nx; ++i) ua[nxs + i] = row_out[i].imag();
     }
   }
 };

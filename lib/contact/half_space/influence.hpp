@@ -12,10 +12,12 @@
 //       and FFT (DC-FFT) for contact analyses", Wear 243 (2000) 101–111: the aperiodic discrete
 //       convolution of n points done exactly as a cyclic one on ≥ 2n−1 points with a zero-padded
 //       pressure and the wrapped-around kernel ("DC-FFT").
-//  [K]  M. Borgerding, KISS FFT (BSD-3-Clause, Debian libkissfft-dev): the header-only C++ class
-//       template kissfft<double> of kissfft.hh, a mixed-radix complex FFT (radices 2, 3, 4, 5
-//       and a generic one). The default backend; FFTW 3 (GPL-2+) replaces it when the build sets
-//       MHCONTACT_FFTW=ON (docs/embedding.md "FFT backends").
+//  [P]  M. Reinecke, P. Bell, PocketFFT (C++ header-only version, BSD-3-Clause; the FFT of
+//       NumPy and SciPy), pocketfft_hdronly.h as shipped by Debian's gemmi-dev: mixed-radix
+//       FFTPACK-style real (radices 2, 3, 4, 5 and a generic one) and complex transforms, each
+//       able to transform several sequences at once in SIMD lanes. The default backend; FFTW 3
+//       (GPL-2+) replaces it when the build sets MHCONTACT_FFTW=ON (docs/embedding.md "FFT
+//       backends").
 #include <memory>
 
 namespace mh {
@@ -33,7 +35,7 @@ namespace mh {
 /// at r = 100 a that leaves ~1e-12 relative, far below the discretisation error.
 double love_rectangle(double x, double y, double a, double b);
 
-/// The FFT library this build convolves with: "kissfft" (default) or "fftw3" (MHCONTACT_FFTW=ON).
+/// The FFT library this build convolves with: "pocketfft" (default) or "fftw3" (MHCONTACT_FFTW=ON).
 const char* fft_backend();
 
 /// The discrete operator u = C p on an nx × ny grid of dx × dy elements: piecewise-constant
@@ -42,7 +44,7 @@ const char* fft_backend();
 /// Storage is row-major with x fastest: index = ix + nx·iy, for p and u alike.
 /// apply() is the exact (aperiodic) discrete convolution done by DC-FFT ([LI]): the kernel of the
 /// offsets −(n−1)…(n−1) is wrapped onto a padded grid of mx × my points (the smallest sizes
-/// ≥ 2n−1 whose prime factors the backend has fast butterflies for: 2, 3, 5 for KissFFT, also 7
+/// ≥ 2n−1 whose prime factors the backend has fast butterflies for: 2, 3, 5 for PocketFFT, also 7
 /// for FFTW; e.g. 120 × 100 for 60 × 50) and transformed once; each apply() zero-pads p,
 /// transforms, multiplies and transforms back: O(n log n). Only the half spectrum of the real
 /// data is kept (kx = 0 … mx/2), and rows of p that are all padding are not transformed.
@@ -63,7 +65,9 @@ class InfluenceGrid {
   InfluenceGrid(const InfluenceGrid&) = delete;
   InfluenceGrid& operator=(const InfluenceGrid&) = delete;
 
-  /// u = C p; p and u hold nx·ny values each (they may alias). No allocation.
+  /// u = C p; p and u hold nx·ny values each (they may alias). No plan is built here. FFTW
+  /// allocates nothing; PocketFFT allocates, inside each of its 1-D calls, a scratch copy of the
+  /// sequences it transforms (about ny + mx/2 small blocks per apply()).
   void apply(const double* p, double* u) const;
   /// C_00 = H · love_rectangle(0, 0, dx/2, dy/2) [m/Pa]: displacement of an element's centre per
   /// unit pressure on that element alone.

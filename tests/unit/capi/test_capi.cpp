@@ -81,7 +81,7 @@ TEST_CASE("C interface: version, ABI version and FFT backend", "[capi]") {
   CHECK(mhc_abi_version() == MHC_ABI_VERSION);
   CHECK(std::string(mhc_version()).size() > 0);
   const std::string fft = mhc_fft_backend();
-  CHECK((fft == "kissfft" || fft == "fftw3"));
+  CHECK((fft == "pocketfft" || fft == "fftw3"));
 }
 
 TEST_CASE("C interface: a bad profile file is an input error with the command's message", "[capi]") {

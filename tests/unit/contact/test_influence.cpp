@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <algorithm>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "contact/half_space/influence.hpp"
@@ -188,7 +189,10 @@ TEST_CASE("InfluenceGrid::apply equals the direct O(n^2) sum", "[influence]") {
   struct Size {
     int nx, ny;
   };
-  for (Size s : {Size{7, 5}, Size{1, 1}, Size{1, 9}, Size{13, 2}}) {
+  // Padded sizes (PocketFFT): 15 × 9, 1 × 1, 1 × 18, 25 × 3 (odd lengths, no Nyquist term) and
+  // 18 × 8 for 9 × 4 (even, its Nyquist term kx = 9 in the second lane of a full SIMD block);
+  // odd ny leaves the last block of rows one short.
+  for (Size s : {Size{7, 5}, Size{1, 1}, Size{1, 9}, Size{13, 2}, Size{9, 4}}) {
     const int nx = s.nx, ny = s.ny;
     const double dx = 0.25e-3, dy = 0.4e-3;
     mh::InfluenceGrid C(nx, ny, dx, dy, H);
@@ -237,6 +241,11 @@ TEST_CASE("InfluenceGrid: moved-to object works, repeated apply is bitwise ident
   CHECK(u1 == u2);
 }
 
+TEST_CASE("fft_backend() names the FFT library the build was configured with", "[influence]") {
+  // MHCONTACT_FFT_BACKEND_CONFIGURED: tests/CMakeLists.txt, from the MHCONTACT_FFTW option.
+  CHECK(std::string(mh::fft_backend()) == MHCONTACT_FFT_BACKEND_CONFIGURED);
+}
+
 TEST_CASE("InfluenceGrid rejects invalid grids", "[influence]") {
   CHECK_THROWS_AS(mh::InfluenceGrid(0, 3, 1e-3, 1e-3, 1e-12), std::invalid_argument);
   CHECK_THROWS_AS(mh::InfluenceGrid(3, 3, -1e-3, 1e-3, 1e-12), std::invalid_argument);
@@ -244,8 +253,8 @@ TEST_CASE("InfluenceGrid rejects invalid grids", "[influence]") {
 }
 
 TEST_CASE("InfluenceGrid::apply equals the direct sum on a larger grid with odd and even sizes", "[influence]") {
-  // 31 × 24: padded sizes 64 (2^6) × 48 (2^4·3) with KissFFT; an odd number of rows (the last
-  // one unpaired in the KissFFT row transforms) is covered by the 7 × 5 grid above.
+  // 31 × 24: padded sizes 64 (2^6) × 48 (2^4·3); the half spectrum has 33 columns, so the last
+  // SIMD block of columns has unused lanes (PocketFFT); odd sizes are covered by the table above.
   const double H = 2 * (1 - 0.28 * 0.28) / (pi * 210e9);  // two steel bodies (Johnson §3.2)
   const int nx = 31, ny = 24;
   const double dx = 0.2e-3, dy = 0.2e-3;
