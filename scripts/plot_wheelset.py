@@ -62,7 +62,14 @@ def plot_single(d, ref):
     hi = [num(r["window_hi"]) for r in con]
     fig, ax = plt.subplots(figsize=(7, 4.5))
     ax.fill_between(a, lo, hi, color="0.85", label="EN 15302 window ± min(0.05, 0.5 tan γe)")
-    ax.plot(a, t, "-o", ms=3, label="mhcontact")
+    ax.plot(a, t, "-", lw=1, color="C0")
+    ok = [i for i, r in enumerate(con) if r["status"] == "ok"]
+    ax.plot([a[i] for i in ok], [t[i] for i in ok], "o", ms=3, color="C0", label="mhcontact, ok")
+    out = [i for i, r in enumerate(con) if r["status"] != "ok" and not math.isnan(t[i])]
+    if out:  # a figure outside the conicity's domain (docs/wheelset.md "Where the conicity is ok")
+        labels = sorted({con[i]["status"] for i in out})
+        ax.plot([a[i] for i in out], [t[i] for i in out], "o", ms=4, mfc="none", color="C3",
+                label="mhcontact, " + " / ".join(labels))
     if ref:
         k = read_csv(os.path.join(ref, "wheelA_railA_conicity.csv"))
         ax.plot([num(r["amplitude_mm"]) for r in k], [num(r["tan_gamma_e"]) for r in k], "k+", ms=7, label="EN 15302 table")

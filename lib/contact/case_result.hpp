@@ -90,6 +90,10 @@ struct PatchResult {
   double plastic_area = 0;  ///< [m²] elements at the pressure cap (plastic model)
   double capped_load = 0;   ///< [N] load carried by those elements
   int n_elements = 0;       ///< elements in contact
+  /// [m] The elastic Hertz semi-axes of this patch's N on the curvatures of the elastic
+  /// multi-Hertzian ellipse inside it (contact/grid/patch_elastic.hpp; NaN: none): the ellipse of
+  /// the RCF indicators, whatever the law.
+  double a_el = NAN, b_el = NAN;
   int iterations = 0;       ///< solver iterations summed over the outer loop
   /// Strip method: the end-gap error of the estimated strip extents (StripOptions::end_gap_tol),
   /// and whether the extents were refined to close the gap at every strip end. NaN / false for

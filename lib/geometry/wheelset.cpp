@@ -141,7 +141,8 @@ Wheelset::Wheelset(const Profile& wheel_left, const Profile& wheel_right, const 
       S.rail = std::move(T);
     }
   }
-  measured_gauge_ = (c_[0] + gauge_y[0]) + (c_[1] + gauge_y[1]);
+  for (int k = 0; k < 2; ++k) gauge_point_[k] = c_[k] + gauge_y[k];
+  measured_gauge_ = gauge_point_[0] + gauge_point_[1];
   const CurveOptions wopt = wheel_curve_options();
   for (int k = 0; k < 2; ++k) {
     wc[k] = k == 1 && wheels[1] == wheels[0] ? wc[0] : std::make_shared<const ProfileCurve>(*wheels[k], wopt);

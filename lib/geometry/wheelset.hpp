@@ -156,6 +156,9 @@ class Wheelset {
   /// [m] gauge measured on the placed rails (their gauge points, gauge_height below their tops):
   /// the 1435.164 mm of the EN 15302 reference placement.
   double measured_gauge() const { return measured_gauge_; }
+  /// [m] |Y| of a placed rail's gauge point (gauge_height below its top, gauge side); NaN when
+  /// the rail has none (absolute placement of a rail that does not reach that low).
+  double gauge_point(int side) const { return gauge_point_[side < 0 ? 0 : 1]; }
   const WheelsetOptions& options() const { return opt_; }
   /// The smooth profiles the contact search works on (side < 0: left, else right).
   const ProfileCurve& wheel_curve(int side) const { return *side_[side < 0 ? 0 : 1].W; }
@@ -195,6 +198,7 @@ class Wheelset {
   Side side_[2];  // 0 left, 1 right
   double a_[2] = {0, 0}, c_[2] = {0, 0};
   double measured_gauge_ = 0;
+  double gauge_point_[2] = {0, 0};
   WheelsetOptions opt_;
 
   void set_wheel(Side& S, std::shared_ptr<const ProfileCurve> W, const Profile& wheel);

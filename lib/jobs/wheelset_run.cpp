@@ -15,6 +15,7 @@
 #include "core/numfmt.hpp"
 #include "core/units.hpp"
 #include "geometry/conicity.hpp"
+#include "geometry/conicity_domain.hpp"
 #include "geometry/wheelset.hpp"
 #include "jobs/run.hpp"
 #include "output/cells.hpp"
@@ -29,18 +30,47 @@ namespace {
 
 constexpr double kHeadlineAmplitude = 3e-3;  // [m] EN 15302's headline tan γe at ŷ = 3 mm
 
-/// Conicity at amplitude A, refused ("off_profile") when a row between its turning points is not ok.
+/// Conicity at amplitude A, refused ("off_profile") when a row between its turning points is not
+/// ok; then held against its domain (conicity_domain.hpp: "profile_incomplete", "flange_contact",
+/// tan γe kept).
 ConicityResult conicity_checked(const EquivalentConicity& C, const std::vector<double>& ys,
-                                const std::vector<WheelsetState>& st, double A) {
+                                const std::vector<WheelsetState>& st, double A, const FlangewayClearance& fc,
+                                std::string* why = nullptr) {
   ConicityResult c = C.at(A);
   if (c.status != "ok") return c;
-  for (std::size_t k = 0; k < ys.size(); ++k)
-    if (ys[k] >= c.y1 - 1e-12 && ys[k] <= c.y2 + 1e-12 && wheelset_row_status(st[k]) != "ok") {
+  double gamma_max = 0;
+  for (std::size_t k = 0; k < ys.size(); ++k) {
+    if (!(ys[k] >= c.y1 - 1e-12 && ys[k] <= c.y2 + 1e-12)) continue;
+    if (wheelset_row_status(st[k]) != "ok") {
       c.status = wheelset_row_status(st[k]);
       c.tan_gamma_e = std::nan("");
-      break;
+      return c;
     }
+    gamma_max = std::max({gamma_max, std::fabs(st[k].left.gamma), std::fabs(st[k].right.gamma)});
+  }
+  const ConicityDomainVerdict v = conicity_domain(c, fc, gamma_max);
+  c.status = v.status;
+  if (why) *why = v.why;
   return c;
+}
+
+/// The wheel diameter of EN 15313's bands: the nominal (taping-line) diameter 2 R0.
+double wheel_diameter(const WheelsetPlacement& P, int side) {
+  return 2 * (side < 0 ? P.nominal_radius_left : P.nominal_radius_right);
+}
+
+/// summary.json's record of one wheel's measures (profile, EN 15313) and their check.
+nlohmann::ordered_json measures_json(const WheelMeasures& m, double D) {
+  nlohmann::ordered_json j;
+  auto mm = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v * units::per_mm) : nlohmann::ordered_json(); };
+  j["Sd_mm"] = m.valid ? mm(m.Sd) : nlohmann::ordered_json();
+  j["Sh_mm"] = m.valid ? mm(m.Sh) : nlohmann::ordered_json();
+  j["qR_mm"] = m.valid ? mm(m.qR) : nlohmann::ordered_json();
+  const WheelMeasureCheck k = m.valid ? check_wheel_measures(m.Sd, m.Sh, m.qR, D) : WheelMeasureCheck{};
+  j["diameter_mm"] = D * units::per_mm;
+  j["check"] = k.status;
+  j["message"] = m.valid ? k.text(D) : m.why;
+  return j;
 }
 
 /// Δr of the rows that found both contacts (the conicity's input); NaN rows are left out.
@@ -71,6 +101,8 @@ int single_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostre
   const Wheelset ws(wl, wc.one_wheel ? wl : wr, rl, wc.one_rail ? rl : rr, wc.placement, sweep_options(wc));
   const std::vector<WheelsetState> st = ws.sweep(wc.y, thread_count(opt.threads));
   const bool roll = wc.options.roll == WheelsetRoll::Solved;
+  const WheelMeasures ml = wheel_measures(wl), mr = wc.one_wheel ? ml : wheel_measures(wr);
+  const FlangewayClearance fc = flangeway_clearance(ws, ml, mr);
 
   RunDirectory rd(opt.out_dir);
   bool all_ok = true;
@@ -93,14 +125,15 @@ int single_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostre
     std::string s = conicity_csv_header();
     for (std::size_t i = 0; i < wc.amplitudes.size(); ++i) {
       ConicityResult c;
-      if (C) c = conicity_checked(*C, wc.y, st, wc.amplitudes[i]);
+      std::string why;
+      if (C) c = conicity_checked(*C, wc.y, st, wc.amplitudes[i], fc, &why);
       else c.status = "no_centre", c.tan_gamma_e = c.y1 = c.y2 = std::nan("");
       all_ok = all_ok && c.status == "ok";
-      conicity_csv_row(s, wc.amplitudes_mm[i], c);
+      conicity_csv_row(s, wc.amplitudes_mm[i], c, why);
     }
     f.stream() << s;
     f.commit();
-    if (C) head = conicity_checked(*C, wc.y, st, kHeadlineAmplitude);
+    if (C) head = conicity_checked(*C, wc.y, st, kHeadlineAmplitude, fc);
   }
   nlohmann::ordered_json sum;
   sum["schema"] = kWheelsetSchema;
@@ -115,6 +148,11 @@ int single_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostre
   sum["measured_gauge_mm"] = std::isfinite(ws.measured_gauge()) ? nlohmann::json(ws.measured_gauge() * units::per_mm) : nlohmann::json();
   sum["tan_gamma_e_3mm"] = std::isfinite(head.tan_gamma_e) ? nlohmann::json(head.tan_gamma_e) : nlohmann::json();
   sum["tan_gamma_e_3mm_status"] = head.status;
+  auto clearance = [&](double c) { return fc.valid ? nlohmann::ordered_json(c * units::per_mm) : nlohmann::ordered_json(); };
+  sum["flangeway_clearance_mm"] = {{"left", clearance(fc.left)}, {"right", clearance(fc.right)}};
+  if (!fc.valid) sum["flangeway_clearance_why"] = fc.why;
+  sum["wheel_measures"] = {{"left", measures_json(ml, wheel_diameter(wc.placement, -1))},
+                           {"right", measures_json(mr, wheel_diameter(wc.placement, +1))}};
   std::size_t n_two = 0;
   for (const auto& s : st) n_two += s.left.two_point || s.right.two_point;
   sum["rows_with_two_point_contact"] = n_two;
@@ -141,12 +179,13 @@ struct FleetRow {
   std::vector<double> tg;
   double Sd = std::nan(""), Sh = std::nan(""), qR = std::nan("");  ///< [m]
   std::string measures_from;  ///< "file", "profile", "file+profile" (some of each), "" (none)
+  std::string measures_check;  ///< WheelMeasureCheck::status of Sd, Sh, qR ("" when unread)
 };
 
 /// The wheel's Sd, Sh, qR: as its file's header states them (MiniProf "Sd/Sh/qR" measures line
 /// or Sd=, Sh=, qR= keys, in mm: Profile::file_measures), else computed from the profile (EN
 /// 15313, wheel_measures), each on its own; `measures_from` says which.
-void fleet_measures(const Profile& w, FleetRow& r) {
+WheelMeasures fleet_measures(const Profile& w, FleetRow& r) {
   const WheelMeasures m = wheel_measures(w);
   const char* names[3] = {"sd", "sh", "qr"};
   double* out[3] = {&r.Sd, &r.Sh, &r.qR};
@@ -165,6 +204,7 @@ void fleet_measures(const Profile& w, FleetRow& r) {
     else if (m.valid) *out[k] = computed[k], any_profile = true;
   }
   r.measures_from = any_file && any_profile ? "file+profile" : any_file ? "file" : any_profile ? "profile" : "";
+  return m;
 }
 
 /// `text` with every occurrence of `from` replaced by `to` (a reader's message naming the resolved
@@ -191,19 +231,27 @@ int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostrea
       r.source = wc.fleet[i].label();
       try {
         const Profile w = load_profile(wc.fleet[i], ProfileKind::Wheel);
-        fleet_measures(w, r);
+        const WheelMeasures m = fleet_measures(w, r);
+        // The wheel is both wheels of the fleet's wheelset; EN 15313's band by the larger diameter.
+        const double D = std::max(wheel_diameter(wc.placement, -1), wheel_diameter(wc.placement, +1));
+        const WheelMeasureCheck mc = check_wheel_measures(r.Sd, r.Sh, r.qR, D);
+        r.measures_check = mc.status;
         const Wheelset ws(track, w, w);
         const std::vector<WheelsetState> st = ws.sweep(wc.y, 1);
         const auto C = conicity_of(wc.y, st);
         if (!C) throw InputError(r.source, "", "no contact found over the sweep");
-        const ConicityResult h = conicity_checked(*C, wc.y, st, kHeadlineAmplitude);
+        const FlangewayClearance fc = flangeway_clearance(ws, m, m);
+        std::string why;
+        const ConicityResult h = conicity_checked(*C, wc.y, st, kHeadlineAmplitude, fc, &why);
         r.head = h.tan_gamma_e;
-        if (h.status != "ok") r.status = h.status, r.message = "tan_gamma_e at 3 mm: " + h.status;
+        if (h.status != "ok") r.status = h.status, r.message = "tan_gamma_e at 3 mm: " + h.status + (why.empty() ? "" : ": " + why);
         for (double A : wc.amplitudes) {
-          const ConicityResult c = conicity_checked(*C, wc.y, st, A);
+          const ConicityResult c = conicity_checked(*C, wc.y, st, A, fc, &why);
           r.tg.push_back(c.tan_gamma_e);
-          if (c.status != "ok" && r.status == "ok") r.status = c.status, r.message = "amplitude " + format_number(A * 1e3) + " mm: " + c.status;
+          if (c.status != "ok" && r.status == "ok")
+            r.status = c.status, r.message = "amplitude " + format_number(A * 1e3) + " mm: " + c.status + (why.empty() ? "" : ": " + why);
         }
+        if (!mc.violations.empty()) r.message += (r.message.empty() ? "" : "; ") + mc.text(D);
       } catch (const InputError& e) {
         r.status = kInvalidWheel;
         r.message = replace_all(e.what(), wc.fleet[i].file, wc.fleet[i].given);
@@ -237,7 +285,7 @@ int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostrea
         s += ',';
         if (std::isfinite(v)) cells::num(s, v * units::per_mm);
       }
-      s += ',' + r.measures_from + ',';
+      s += ',' + r.measures_from + ',' + r.measures_check + ',';
       cells::csv_text(s, r.message);
       s += '\n';
     }

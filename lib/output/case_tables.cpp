@@ -110,26 +110,19 @@ struct JsonSink {
 };
 
 // The RCF columns (docs/outputs.md "RCF columns"), appended last to ellipses.csv and patches.csv
-// and to their JSON records.
+// and to their JSON records: by their definitions, from the elastic Hertz patch of the load N
+// (semi-axes a_el, b_el; NaN: not known, the cells empty).
 template <class Sink>
-void rcf_fields(Sink& k, const RcfOptions& o, double N, double a, double b) {
-  const RcfPoint p = rcf_point(o.f, o.k, N, a, b);
+void rcf_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el) {
+  const RcfPoint p = rcf_point(o.f, o.k, N, a_el, b_el);
   k.number("traction_coefficient", o.f);
   k.number("k_MPa", o.k / units::MPa);
-  k.number("p0_over_k", p.p0_over_k);
+  k.number("p0_el_over_k", p.p0_el_over_k);
   k.number("elastic_limit_p0_over_k", p.elastic_limit);
   k.number("shakedown_limit_p0_over_k", p.shakedown_limit);
-  k.text("shakedown_regime", std::isfinite(p.p0_over_k) ? to_string(p.regime) : nullptr);
-  k.number("FI_surf", p.fi_surf);
+  k.text("shakedown_regime", std::isfinite(p.p0_el_over_k) ? to_string(p.regime) : nullptr);
+  k.number("FI_surf_el", p.fi_surf_el);
 }
-// A grid patch as an ellipse: π a b its area, a/b its length over its width.
-void patch_axes(const PatchResult& P, double* a, double* b) {
-  const double ab = P.area / units::pi;
-  const double ratio = P.width_s > 0 ? P.length_x / P.width_s : NAN;
-  *a = std::sqrt(ab * ratio);
-  *b = ab / *a;
-}
-
 // One contact patch of a grid method, after its case, t_Y and Q (patches.csv) or in its case's
 // record (results.json).
 template <class Sink>
@@ -159,9 +152,7 @@ void patch_fields(Sink& k, const PatchResult& P, bool plastic, const RcfOptions&
     k.number("capped_load_kN", P.capped_load / units::kN);
   }
   if (rcf.enabled()) {
-    double a, b;
-    patch_axes(P, &a, &b);
-    rcf_fields(k, rcf, P.N, a, b);
+    rcf_fields(k, rcf, P.N, P.a_el, P.b_el);  // the elastic Hertz ellipse of N (patch_elastic.hpp)
   }
 }
 
@@ -280,7 +271,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (!plastic) { e += ','; num(e, kAreaCol.get(L)); }
       if (rcf.enabled()) {
         CsvSink k{e};
-        rcf_fields(k, rcf, L.s.N, L.s.a, L.s.b);
+        rcf_fields(k, rcf, L.s.N, L.s.a_el, L.s.b_el);  // the elastic Hertz ellipse of N
       }
       e += '\n';
     }
@@ -327,7 +318,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (!plastic) e[kAreaCol.name] = jv(kAreaCol.get(L));
       if (rcf.enabled()) {
         JsonSink k{e};
-        rcf_fields(k, rcf, L.s.N, L.s.a, L.s.b);
+        rcf_fields(k, rcf, L.s.N, L.s.a_el, L.s.b_el);  // the elastic Hertz ellipse of N
       }
       el.push_back(std::move(e));
     }

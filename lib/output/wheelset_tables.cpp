@@ -48,22 +48,24 @@ void wheelset_csv_row(std::string& row, double y_mm, const WheelsetState& s, boo
   row += ',' + wheelset_row_status(s) + '\n';
 }
 
-std::string conicity_csv_header() { return "amplitude_mm,tan_gamma_e,y1_mm,y2_mm,window_lo,window_hi,status\n"; }
+std::string conicity_csv_header() { return "amplitude_mm,tan_gamma_e,y1_mm,y2_mm,window_lo,window_hi,status,message\n"; }
 
-void conicity_csv_row(std::string& row, double amplitude_mm, const ConicityResult& c) {
+void conicity_csv_row(std::string& row, double amplitude_mm, const ConicityResult& c, const std::string& message) {
   append_number(row, amplitude_mm);
   const double w = en15302_window(c.tan_gamma_e);
   for (double v : {c.tan_gamma_e, c.y1 * units::per_mm, c.y2 * units::per_mm, c.tan_gamma_e - w, c.tan_gamma_e + w}) {
     row += ',';
     num(row, v);
   }
-  row += ',' + c.status + '\n';
+  row += ',' + c.status + ',';
+  cells::csv_text(row, message);
+  row += '\n';
 }
 
 std::string fleet_csv_header(const std::vector<double>& amplitudes_mm) {
   std::string h = "wheel,source,status,tan_gamma_e_3mm";
   for (double a : amplitudes_mm) h += ",tan_gamma_e_" + format_number(a) + "mm";
-  return h + ",Sd_mm,Sh_mm,qR_mm,measures_from,message\n";
+  return h + ",Sd_mm,Sh_mm,qR_mm,measures_from,measures_check,message\n";
 }
 
 }  // namespace mh

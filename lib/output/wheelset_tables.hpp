@@ -25,11 +25,13 @@ std::string wheelset_csv_header(bool roll);
 /// One row; `y_mm` is the displacement as given (printed verbatim).
 void wheelset_csv_row(std::string& row, double y_mm, const WheelsetState& s, bool roll);
 
-/// amplitude_mm,tan_gamma_e,y1_mm,y2_mm,window_lo,window_hi,status
+/// amplitude_mm,tan_gamma_e,y1_mm,y2_mm,window_lo,window_hi,status,message (why an amplitude is
+/// outside the conicity's domain: the bound crossed, geometry/conicity_domain.hpp)
 std::string conicity_csv_header();
-void conicity_csv_row(std::string& row, double amplitude_mm, const ConicityResult& c);
+void conicity_csv_row(std::string& row, double amplitude_mm, const ConicityResult& c, const std::string& message = "");
 
-/// wheel,source,status,tan_gamma_e_3mm,tan_gamma_e_<A>mm...,Sd_mm,Sh_mm,qR_mm,message
+/// wheel,source,status,tan_gamma_e_3mm,tan_gamma_e_<A>mm...,Sd_mm,Sh_mm,qR_mm,measures_from,
+/// measures_check (EN 15313 limits: ok, outside_en15313, unknown; conicity_domain.hpp),message
 std::string fleet_csv_header(const std::vector<double>& amplitudes_mm);
 
 }  // namespace mh

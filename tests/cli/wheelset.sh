@@ -11,7 +11,13 @@ check() { local what="$1"; shift; if ! "$@"; then echo "FAIL: $what"; fail=1; fi
 
 # --- the worked example ----------------------------------------------------------------------
 "$BIN" wheelset "$SRC/cases/en15302-wheel-a.json" -o out >stdout.txt 2>stderr.txt
-check "worked example exit 0" test $? -eq 0
+# Exit 1: the standard's amplitudes beyond the pair's flangeway clearance (4.89 mm per side) are
+# flange_contact (docs/wheelset.md "Where the conicity is ok"), their tan gamma_e still written.
+check "worked example exit 1 (amplitudes beyond the clearance)" test $? -eq 1
+check "amplitudes up to 4.8 mm ok, from 5 mm flange_contact" awk -F, '
+  FNR > 1 { want = ($1 <= 4.8001) ? "ok" : "flange_contact"; if ($7 != want) { print "A", $1, $7; bad = 1 } }
+  END { exit bad }' out/conicity.csv
+check "summary.json clearance" grep -q '"flangeway_clearance_mm"' out/summary.json
 check "headline tan gamma_e at 3 mm" grep -qx "tan_gamma_e at 3 mm: 0.1882" stdout.txt
 check "wheelset.csv header" test "$(head -1 out/wheelset.csv | cut -d, -f1-7)" = "y_mm,delta_r_mm,r_left_mm,r_right_mm,gamma_left_deg,gamma_right_deg,delta_tan_gamma"
 check "wheelset.csv rows" test "$(wc -l < out/wheelset.csv)" -eq 1602
@@ -32,31 +38,40 @@ check "tan gamma_e against the table" awk -F, '
 check "same bytes with 1 thread" cmp -s out/wheelset.csv out1/wheelset.csv
 
 # --- solved roll, asymmetric radii (920/918 mm), rails by gauge ------------------------------
+# (the radii move the equilibrium to y = 2.96 mm: ŷ 3 mm would reach 5.52 mm, beyond the 4.89 mm
+# clearance, flange_contact; 1 and 2 mm stay inside it)
 sed -e 's|"../profiles/|"'"$SRC"'/profiles/|g' -e 's|"roll": "none"|"roll": "solved"|' \
     -e 's|"nominal_radius_mm": 460|"nominal_radius_mm": {"left": 460, "right": 459}|' \
     -e 's|"placement": "absolute", "origin_mm": 750|"placement": "gauge", "gauge_mm": 1435.164, "gauge_height_mm": 14|' \
-    -e 's|"step": 0.01}|"step": 0.1}|' -e 's|"amplitudes_mm": {[^}]*}|"amplitudes_mm": [1, 2, 3]|' \
+    -e 's|"step": 0.01}|"step": 0.1}|' -e 's|"amplitudes_mm": {[^}]*}|"amplitudes_mm": [1, 2]|' \
     "$SRC/cases/en15302-wheel-a.json" > solved.json
 "$BIN" wheelset solved.json -o solved -q >/dev/null
 check "solved roll exit 0" test $? -eq 0
 check "solved roll has roll_deg" grep -q "delta_tan_gamma,roll_deg," solved/wheelset.csv
+check "solved roll: 1 and 2 mm ok" awk -F, 'FNR > 1 && $7 != "ok" { bad = 1 } END { exit bad }' solved/conicity.csv
 check "asymmetric: delta_r(0) < 0, roll(0) < 0" awk -F, '$1 == "0" { exit !($2 < -0.5 && $8 < 0) }' solved/wheelset.csv
 
 # --- a fleet with a wheel that cannot be placed ----------------------------------------------
 # Profiles named relative to the manifest: fleet.csv names them as given (never resolved: the
 # output does not depend on where the repository lives). The MiniProf wheel states Sd, Sh, qR in
 # its header: those are written (measures_from "file"); wheel A's are computed ("profile").
+# A wheel without a flange (field/flat_wheel.txt) is profile_incomplete; a wheel whose header
+# states Sd 36.4 mm is flagged outside EN 15313's limits (measures_check), its conicity kept.
 ln -s "$SRC/profiles" profiles; ln -s "$SRC/tests/data/field" field
+sed 's/^Sd=32.50/Sd=36.40/' field/kv_wheel_measures.whl > thick.whl
 cat > fleet.json <<EOF2
-{"wheels": ["profiles/EN15302_wheel_A.dat", "field/kv_wheel_measures.whl", "profiles/60E1.csv"],
+{"wheels": ["profiles/EN15302_wheel_A.dat", "field/kv_wheel_measures.whl", "profiles/60E1.csv", "field/flat_wheel.txt", "thick.whl"],
  "rail": {"profile": "profiles/EN15302_rail_A.dat", "inclination": "as-is", "placement": "absolute", "origin_mm": 750},
  "y_mm": {"from": -8, "to": 8, "step": 0.02}, "amplitudes_mm": [2, 4]}
 EOF2
 "$BIN" wheelset fleet.json -o fleet >stdout.txt 2>stderr.txt
 check "fleet with a refused wheel exits 1" test $? -eq 1
-check "fleet header" test "$(head -1 fleet/fleet.csv)" = "wheel,source,status,tan_gamma_e_3mm,tan_gamma_e_2mm,tan_gamma_e_4mm,Sd_mm,Sh_mm,qR_mm,measures_from,message"
-check "fleet wheel A row" awk -F, '$1 == "0" { exit !($2 == "profiles/EN15302_wheel_A.dat" && $3 == "ok" && $4 > 0.187 && $4 < 0.189 && $10 == "profile") }' fleet/fleet.csv
-check "header measures from the MiniProf file" awk -F, '$1 == "1" { exit !($2 == "field/kv_wheel_measures.whl" && $7 == 32.5 && $8 == 28 && $9 == 10.8 && $10 == "file") }' fleet/fleet.csv
+check "fleet header" test "$(head -1 fleet/fleet.csv)" = "wheel,source,status,tan_gamma_e_3mm,tan_gamma_e_2mm,tan_gamma_e_4mm,Sd_mm,Sh_mm,qR_mm,measures_from,measures_check,message"
+check "fleet wheel A row" awk -F, '$1 == "0" { exit !($2 == "profiles/EN15302_wheel_A.dat" && $3 == "ok" && $4 > 0.187 && $4 < 0.189 && $10 == "profile" && $11 == "ok") }' fleet/fleet.csv
+check "header measures from the MiniProf file" awk -F, '$1 == "1" { exit !($2 == "field/kv_wheel_measures.whl" && $7 == 32.5 && $8 == 28 && $9 == 10.8 && $10 == "file" && $11 == "ok") }' fleet/fleet.csv
+check "a wheel without a flange is profile_incomplete" awk -F, '$1 == "3" { exit !($2 == "field/flat_wheel.txt" && $3 == "profile_incomplete" && $11 == "unknown") }' fleet/fleet.csv
+check "Sd 36.4 mm flagged outside EN 15313" awk -F, '$1 == "4" { exit !($3 == "ok" && $7 == 36.4 && $11 == "outside_en15313") }' fleet/fleet.csv
+check "the flag names the limit" grep -q "Sd 36.4 mm > 33 mm (EN 15313, D 920 mm)" fleet/fleet.csv
 check "a rail given as a wheel is refused, no figures" awk -F, '$1 == "2" { exit !($3 == "invalid_wheel" && $4 == "nan") }' fleet/fleet.csv
 check "no resolved path in fleet.csv" sh -c "! grep -q '$SRC' fleet/fleet.csv"
 check "summary.json names the profiles as given" grep -q '"wheel_left": "../profiles/EN15302_wheel_A.dat"' out/summary.json
@@ -85,7 +100,7 @@ if "$py" -c "import matplotlib" 2>/dev/null; then
   done
   # The plots sit in the run's directory: a new run still replaces it.
   "$BIN" wheelset "$SRC/cases/en15302-wheel-a.json" -o out -q >/dev/null
-  check "rerun over the plotted directory" test $? -eq 0
+  check "rerun over the plotted directory" test $? -eq 1
 else
   echo "wheelset: matplotlib missing, plots not tested"
 fi

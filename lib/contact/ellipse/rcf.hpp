@@ -1,7 +1,11 @@
 #pragma once
 // Rolling-contact-fatigue indicators of one contact (docs/methods.md "RCF
 // indicators"): the point on Johnson's shakedown map and the surface fatigue index of Ekberg,
-// Kabo and Andersson (2002). SI throughout. Header-only, no state.
+// Kabo and Andersson (2002). Both are defined with the ELASTIC Hertzian peak pressure p0 of the
+// contact's normal load (Johnson 1985 §9.3; Ekberg et al. 2002 eq. 2), never with a plastic
+// patch's pressure or area: the callers pass the elastic Hertz semi-axes at the load N (the
+// ellipse law's a_el, b_el; for a grid patch, docs/outputs.md "RCF columns"). SI throughout.
+// Header-only, no state.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -43,10 +47,11 @@ inline const char* to_string(ShakedownRegime r) {
 
 /// The RCF indicators of one contact.
 struct RcfPoint {
-  double p0_over_k = NAN;       ///< [-] p0/k, p0 = 3N/(2π a b)
+  double p0_el = NAN;           ///< [Pa] elastic Hertz peak pressure of the load, 3N/(2π a_el b_el)
+  double p0_el_over_k = NAN;    ///< [-] p0_el/k
   double elastic_limit = NAN;   ///< [-] p0/k of first yield at this f and aspect ratio
   double shakedown_limit = NAN; ///< [-] p0/k of the elastic shakedown limit at this f and aspect ratio
-  double fi_surf = NAN;         ///< [-] FI_surf = f − 2π a b k / (3N) = f − k/p0
+  double fi_surf_el = NAN;      ///< [-] FI_surf = f − 2π a_el b_el k / (3N) = f − k/p0_el
   ShakedownRegime regime = ShakedownRegime::Elastic;
 };
 
@@ -57,26 +62,27 @@ struct RcfPoint {
 inline double frictionless_elastic_limit(double e) { return 3.10 + (2.77 - 3.10) * e; }
 inline double frictionless_shakedown_limit(double e) { return 4.0 + (4.7 - 4.0) * e; }
 
-/// The point of a contact carrying N [N] on a patch of semi-axes a, b [m] (a grid patch: π a b its
-/// area) with traction coefficient f and shear yield k [Pa]. Each limit is the frictionless
+/// The point of a contact carrying N [N] whose ELASTIC Hertz patch at that load has semi-axes
+/// a_el, b_el [m] (its aspect ratio sets the limits), with traction coefficient f and shear
+/// yield k [Pa]. Each limit is the frictionless
 /// (subsurface) value capped by the surface limit p0/k = 1/f (f p0 = k). Regime: below the first
 /// yield limit, elastic; below the shakedown limit, elastic shakedown; above it, ratchetting
 /// when the surface limit is exceeded (f p0/k > 1, FI_surf > 0), else plastic shakedown
 /// (subsurface cyclic plasticity). NaN inputs give NaN values.
-inline RcfPoint rcf_point(double f, double k, double N, double a, double b) {
+inline RcfPoint rcf_point(double f, double k, double N, double a_el, double b_el) {
   constexpr double pi = 3.14159265358979323846;
   RcfPoint r;
-  if (!(N > 0 && a > 0 && b > 0 && k > 0 && f >= 0)) return r;
-  const double p0 = 1.5 * N / (pi * a * b);
-  const double e = std::min(a, b) / std::max(a, b);
+  if (!(N > 0 && a_el > 0 && b_el > 0 && k > 0 && f >= 0)) return r;
+  r.p0_el = 1.5 * N / (pi * a_el * b_el);
+  const double e = std::min(a_el, b_el) / std::max(a_el, b_el);
   const double surface = f > 0 ? 1.0 / f : INFINITY;
-  r.p0_over_k = p0 / k;
+  r.p0_el_over_k = r.p0_el / k;
   r.elastic_limit = std::min(frictionless_elastic_limit(e), surface);
   r.shakedown_limit = std::min(frictionless_shakedown_limit(e), surface);
-  r.fi_surf = f - 2.0 * pi * a * b * k / (3.0 * N);
-  if (r.p0_over_k <= r.elastic_limit) r.regime = ShakedownRegime::Elastic;
-  else if (r.p0_over_k <= r.shakedown_limit) r.regime = ShakedownRegime::ElasticShakedown;
-  else if (r.fi_surf > 0) r.regime = ShakedownRegime::Ratchetting;
+  r.fi_surf_el = f - 2.0 * pi * a_el * b_el * k / (3.0 * N);
+  if (r.p0_el_over_k <= r.elastic_limit) r.regime = ShakedownRegime::Elastic;
+  else if (r.p0_el_over_k <= r.shakedown_limit) r.regime = ShakedownRegime::ElasticShakedown;
+  else if (r.fi_surf_el > 0) r.regime = ShakedownRegime::Ratchetting;
   else r.regime = ShakedownRegime::PlasticShakedown;
   return r;
 }

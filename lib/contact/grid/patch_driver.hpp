@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "contact/case_result.hpp"
+#include "contact/grid/patch_elastic.hpp"
 #include "contact/ellipse/hertz.hpp"
 #include "geometry/contact_patches.hpp"
 
@@ -111,6 +112,7 @@ CaseResult solve_grid_case(Method method, const ContactGeometry& G, const Materi
   if (!begin_grid_case(G, mat, tY, Q, elastic_mh, r, &gs)) return r;
   r = body(gs, std::move(r));
   finish_grid_case(G, tY, gs, r);
+  set_patch_elastic_hertz(mat, gs.mh, r);
   return r;
 }
 

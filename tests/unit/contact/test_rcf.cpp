@@ -27,8 +27,8 @@ TEST_CASE("RCF: shakedown map point and surface fatigue index by hand", "[rcf]")
   for (const Row& w : rows) {
     CAPTURE(w.f, w.k);
     const RcfPoint p = rcf_point(w.f, w.k, N, a, b);
-    CHECK(std::fabs(p.p0_over_k / w.p0k - 1) < 1e-5);
-    CHECK(std::fabs(p.fi_surf - w.fi) < 1e-6);
+    CHECK(std::fabs(p.p0_el_over_k / w.p0k - 1) < 1e-5);
+    CHECK(std::fabs(p.fi_surf_el - w.fi) < 1e-6);
     CHECK(p.regime == w.reg);
   }
   const RcfPoint p = rcf_point(0.2, 300e6, N, a, b);
@@ -47,5 +47,5 @@ TEST_CASE("RCF: k from the user, else from the material's yield (NaN until Mater
   CHECK(std::isnan(rcf_shear_yield(m, o)));
   o.k = 300e6;
   CHECK(rcf_shear_yield(m, o) == 300e6);
-  CHECK(std::isnan(rcf_point(0.3, NAN, 100e3, 1e-3, 1e-3).fi_surf));
+  CHECK(std::isnan(rcf_point(0.3, NAN, 100e3, 1e-3, 1e-3).fi_surf_el));
 }
