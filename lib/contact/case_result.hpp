@@ -90,6 +90,12 @@ struct PatchResult {
   double plastic_area = 0;  ///< [m²] elements at the pressure cap (plastic model)
   double capped_load = 0;   ///< [N] load carried by those elements
   int n_elements = 0;       ///< elements in contact
+  /// Elements (strips) across the patch in its narrow direction (grid_checks.hpp, elements_across);
+  /// fewer than the method's minimum: the under_resolved warning.
+  int elements_across = 0;
+  /// [m] the element size (strip width) across the patch: the method's dx, ds, or smaller where the
+  /// patch was refined locally (grid_checks.hpp, kMinAcross*).
+  double element = 0;
   int iterations = 0;       ///< solver iterations summed over the outer loop
   /// Strip method: the end-gap error of the estimated strip extents (StripOptions::end_gap_tol),
   /// and whether the extents were refined to close the gap at every strip end. NaN / false for
