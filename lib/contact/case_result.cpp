@@ -40,6 +40,7 @@ const std::vector<WarningClassInfo>& warning_classes() {
       // The physical checks of a grid result (contact/grid/grid_checks.hpp).
       {"force_balance", true, "a grid result whose patch forces do not balance Q (grid_checks.hpp)"},
       {"complementarity", true, "a grid result that violates 0 <= p <= p_lim or the deformed-gap conditions (grid_checks.hpp)"},
+      {"under_resolved", true, "a grid patch with fewer elements across than the method's accuracy needs (grid_checks.hpp)"},
       {"contact_hole", true, "a grid patch with unloaded elements enclosed by loaded ones where the bodies overlap (grid_checks.hpp)"},
       {"auto", false, "which method auto handed the case to, and why (informational)"},
   };

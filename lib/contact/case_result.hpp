@@ -94,6 +94,12 @@ struct PatchResult {
   /// multi-Hertzian ellipse inside it (contact/grid/patch_elastic.hpp; NaN: none): the ellipse of
   /// the RCF indicators, whatever the law.
   double a_el = NAN, b_el = NAN;
+  /// Elements (strips) across the patch in its narrow direction (grid_checks.hpp, elements_across);
+  /// fewer than the method's minimum: the under_resolved warning.
+  int elements_across = 0;
+  /// [m] the element size (strip width) across the patch: the method's dx, ds, or smaller where the
+  /// patch was refined locally (grid_checks.hpp, kMinAcross*).
+  double element = 0;
   int iterations = 0;       ///< solver iterations summed over the outer loop
   /// Strip method: the end-gap error of the estimated strip extents (StripOptions::end_gap_tol),
   /// and whether the extents were refined to close the gap at every strip end. NaN / false for

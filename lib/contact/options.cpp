@@ -107,6 +107,7 @@ bool HalfSpaceOptions::valid(std::string* why) const {
   if (!(force_rtol > 0 && force_rtol < 1e-2)) return fail("force_rtol = " + format_number(force_rtol) + ": must be in (0, 0.01)");
   if (max_outer < 1 || max_outer > 1000) return fail("max_outer = " + std::to_string(max_outer) + ": must be in [1, 1000]");
   if (max_rebuilds < 0 || max_rebuilds > 20) return fail("max_rebuilds = " + std::to_string(max_rebuilds) + ": must be in [0, 20]");
+  if (max_refinements < 0 || max_refinements > 6) return fail("max_refinements = " + std::to_string(max_refinements) + ": must be in [0, 6]");
   return cg.valid(why);
 }
 
@@ -138,6 +139,7 @@ bool StripMethodOptions::valid(std::string* why) const {
   if (!(margin >= 1.0 && margin <= 4.0)) return fail("margin = " + format_number(margin) + ": must be in [1, 4]");
   if (!(force_rtol > 0 && force_rtol < 1e-2)) return fail("force_rtol = " + format_number(force_rtol) + ": must be in (0, 0.01)");
   if (max_outer < 1 || max_outer > 1000) return fail("max_outer must be in [1, 1000]");
+  if (max_refinements < 0 || max_refinements > 6) return fail("max_refinements = " + std::to_string(max_refinements) + ": must be in [0, 6]");
   if (max_passes < 1 || max_passes > 21) return fail("max_passes must be in [1, 21]");
   if (!(x_curvature_step > 0)) return fail("x_curvature_step must be > 0");
   return strips.valid(why);

@@ -151,6 +151,11 @@ struct HalfSpaceOptions {
   double force_rtol = 1e-7;    ///< |Σ N_k cos γ_k − Q| ≤ force_rtol·Q (default 1e-7)
   int max_outer = 60;          ///< iterations on δz with several patches (default 60)
   int max_rebuilds = 6;        ///< rebuilds of the patches (grid edge reached, planes placed anew) (default 6)
+  /// A patch with fewer elements across than kMinAcrossHalfSpace (grid_checks.hpp) is solved again
+  /// on its own, at the load the case gave it, with dx and ds halved, until it has that many and
+  /// its peak moves less than kPeakRtolHalfSpace; at most this many halvings (default 3: elements
+  /// down to 1/8 of dx, ds). 0: no refinement (the patch is then under_resolved).
+  int max_refinements = 3;
   NormalCGOptions cg{1e-8, 2000};  ///< per-patch solver: ε ≤ 1e-8 of the interference (default)
   bool keep_pressure = false;  ///< keep each patch's element pressures in PatchResult::p (for --pressure-grid)
   bool valid(std::string* why) const;
@@ -203,6 +208,8 @@ struct StripMethodOptions {
   int max_outer = 60;
   int max_passes = 12;         ///< placements of the patches (default 12: a strongly capped flange patch, Manchester t_Y = 8.5 mm, 100 kN, p_lim 900 MPa, needs 8; each costs about a millisecond)
   double x_curvature_step = 1e-3;  ///< [m] x of the second point of the gap's parabola along x (default 1 mm)
+  /// As HalfSpaceOptions::max_refinements, with ds and kMinAcrossStrips, kPeakRtolStrips (default 3).
+  int max_refinements = 3;
   StripOptions strips;         ///< the per-patch solver (quadrature, tolerances, outlier factor)
   bool keep_strips = false;    ///< keep every strip in PatchResult::strips (for --strips)
   bool valid(std::string* why) const;

@@ -147,6 +147,11 @@ void patch_fields(Sink& k, const PatchResult& P, bool plastic, const RcfOptions&
   const bool strips = std::isfinite(P.end_gap_error);
   k.text("extents", strips ? (P.refined ? "end_gap" : "estimate") : nullptr);
   k.optional("end_gap_error", P.end_gap_error);
+  // The elements (strips) across the patch in its narrow direction and their size, smaller than
+  // the method's where the patch was refined (grid_checks.hpp); before the optional blocks, which
+  // end the table.
+  k.integer("elements_across", static_cast<long long>(P.elements_across));
+  k.number("element_mm", P.element * units::per_mm);
   if (plastic) {
     k.number("plastic_area_mm2", P.plastic_area * units::per_mm2);
     k.number("capped_load_kN", P.capped_load / units::kN);

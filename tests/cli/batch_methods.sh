@@ -17,7 +17,7 @@ done
 for f in cases.csv patches.csv pairs.csv results.json; do cmp "$tmp/strips/$f" "$tmp/strips2/$f"; done
 test "$(tail -n +2 "$tmp/strips/pairs.csv" | wc -l)" -eq 4
 test "$(grep -c ',ok,strips,' "$tmp/strips/cases.csv")" -eq 16
-head -1 "$tmp/strips/patches.csv" | grep -q '^pair,case,tY_mm,Q_kN,patch,.*,extents,end_gap_error$'
+head -1 "$tmp/strips/patches.csv" | grep -q '^pair,case,tY_mm,Q_kN,patch,.*,extents,end_gap_error,elements_across,element_mm$'
 grep -q '^0,1,0,50,1,.*,end_gap,' "$tmp/strips/patches.csv"
 test ! -e "$tmp/strips/ellipses.csv"
 # Pair 0 (the Manchester pair) equals the single run of its case file.
@@ -38,7 +38,7 @@ grep -q '^0,1,0,50,ok,strips,' "$tmp/auto/cases.csv"
 grep -q '^0,0,-3,50,ok,multi-hertzian,' "$tmp/auto/cases.csv"
 test -s "$tmp/auto/ellipses.csv"; test -s "$tmp/auto/patches.csv"
 "$bin" run "$tmp/half-space.json" -o "$tmp/hs" -q
-grep -q '^0,1,0,50,1,.*,,$' "$tmp/hs/patches.csv"
+grep -q '^0,1,0,50,1,.*,,,[0-9][0-9]*,[0-9.][0-9.]*$' "$tmp/hs/patches.csv"
 # A bad strip option in a manifest: exit 2, the manifest and the JSON path named.
 sed 's|"method": "strips",|"method": "strips", "strips": {"end_gap_tol": -1},|' "$tmp/strips.json" > "$tmp/bad.json"
 set +e; "$bin" run "$tmp/bad.json" -o "$tmp/bad" -q 2> "$tmp/err"; rc=$?; set -e

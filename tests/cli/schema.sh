@@ -15,7 +15,7 @@ extract() {  # results.json -> its inputs as a case file beside it
 }
 for c in manchester manchester-plastic s1002-60e1; do
   "$bin" run "$src/cases/$c.json" -o "$tmp/$c" -q || fail "$c"
-  grep -q '"schema": "mhcontact.results/7"' "$tmp/$c/results.json" || fail "$c: schema version"
+  grep -q '"schema": "mhcontact.results/8"' "$tmp/$c/results.json" || fail "$c: schema version"
   extract "$tmp/$c/results.json" "$tmp/$c/inputs.json"
   (cd "$tmp" && "$bin" run "$c/inputs.json" -o "re_$c" -q) || fail "$c: the inputs of results.json do not run"
   for t in cases.csv ellipses.csv geometry.csv; do cmp -s "$tmp/$c/$t" "$tmp/re_$c/$t" || fail "$c: rerunning the inputs gives another $t"; done
@@ -90,6 +90,15 @@ assert rows and all(r["extents"] in ("estimate", "end_gap") for r in rows), {r["
 assert all(float(r["end_gap_error"]) >= 0 for r in rows)
 assert all((r["extents"] == "end_gap") == (float(r["end_gap_error"]) > 0.05) for r in rows)
 assert any(r["extents"] == "end_gap" for r in rows) and any(r["extents"] == "estimate" for r in rows)
+PY
+# elements_across: no ok row has a patch with fewer strips across than the strip method's minimum
+# (4, lib/contact/grid/grid_checks.hpp); element_mm is the strip width, 0.2 mm or less where refined.
+python3 - "$tmp/st/patches.csv" "$tmp/st/cases.csv" <<'PY' || fail "patches.csv: elements_across / element_mm"
+import csv, sys
+status = {r["case"]: r["status"] for r in csv.DictReader(open(sys.argv[2]))}
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert all(int(r["elements_across"]) >= 4 for r in rows if status[r["case"]] == "ok")
+assert all(0 < float(r["element_mm"]) <= 0.2 for r in rows)
 PY
 # results.json's case records carry the grid methods' patches as patches.csv has them (the same
 # keys in the same order, the same numbers; empty cells null), and with the case-file key "rcf"

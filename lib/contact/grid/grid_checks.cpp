@@ -16,6 +16,17 @@ double rail_y(const PatchCheckInput& in, int j) { return in.y_ref + (in.s0 + j *
 
 }  // namespace
 
+int elements_across(const std::vector<double>& p, int nx, int ns) {
+  auto loaded = [&](int i, int j) { return p[static_cast<std::size_t>(i + nx * j)] > 0; };
+  int run_s = 0, run_x = 0;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0, run = 0; j < ns; ++j) { run = loaded(i, j) ? run + 1 : 0; run_s = std::max(run_s, run); }
+  if (nx == 1) return run_s;
+  for (int j = 0; j < ns; ++j)
+    for (int i = 0, run = 0; i < nx; ++i) { run = loaded(i, j) ? run + 1 : 0; run_x = std::max(run_x, run); }
+  return std::min(run_s, run_x);
+}
+
 ContactHole find_contact_hole(const PatchCheckInput& in) {
   ContactHole h;
   const double tol = kGapRtol * in.approach;
@@ -89,6 +100,16 @@ void check_grid_result(const std::vector<PatchCheckInput>& in, double Q, CaseRes
       if (spike.found)
         r.warnings.push_back("pressure_spike:" + patch + ":y_rail_mm=" + r3(rail_y(c, spike.j) * 1e3) +
                              ":p_MPa=" + r3(spike.p / 1e6) + ":neighbours_MPa=" + r3(spike.neighbours / 1e6));
+    }
+    // Too few elements across the patch for the method's peak accuracy.
+    if (c.min_across > 0) {
+      const int n = elements_across(c.p, c.nx, c.ns);
+      if (n < c.min_across)
+        r.warnings.push_back("under_resolved:" + patch + ":elements_across=" + std::to_string(n) + "<" +
+                             std::to_string(c.min_across) + ":element_mm=" + r3(c.element * 1e3));
+      else if (c.peak_change > c.peak_rtol)  // refined, but the peak still moved on the last halving
+        r.warnings.push_back("under_resolved:" + patch + ":peak_change=" + r3(c.peak_change) + ">" +
+                             format_number(c.peak_rtol) + ":element_mm=" + r3(c.element * 1e3));
     }
     // A hole where the bodies overlap.
     const ContactHole hole = c.hole_check ? find_contact_hole(c) : ContactHole();

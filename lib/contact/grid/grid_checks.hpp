@@ -15,6 +15,10 @@
 //                   end-gap error above StripOptions::end_gap_tol without being refined.
 //   pressure_spike  (half-space) the patch's peak stands on a single element (pressure_spike.hpp).
 //                   The strip method's isolated peak is its own strip_outlier (strips.hpp).
+//   under_resolved  a patch with fewer elements (strips) across its narrow direction than the
+//                   method needs for its stated peak accuracy (elements_across below; the minimum
+//                   from the convergence study on Hertz patches, tests/unit/contact/
+//                   test_grid_resolution.cpp, docs/half_space.md "Elements across a patch").
 //   contact_hole    an element (strip) that carries no pressure although the undeformed bodies
 //                   overlap there by more than kGapRtol times the patch's approach, and that is
 //                   enclosed by loaded elements: along its row (x) on both sides AND along its
@@ -47,6 +51,20 @@ constexpr double kForceBalanceRtol = 1e-5;
 /// (NormalCGOptions::tol = 1e-9) violates the conditions by orders of magnitude less.
 constexpr double kGapRtol = 1e-2;
 
+/// The accuracy each grid method states: the half-space's peak pressure 2 % (its targets against
+/// CONTACT, docs/half_space.md), the strips' peak 5 % and area 10 % (their single-region
+/// tolerances, docs/strips.md).
+constexpr double kPeakRtolHalfSpace = 0.02, kPeakRtolStrips = 0.05, kAreaRtolStrips = 0.10;
+/// The fewest elements (strips) across a patch's narrow direction (elements_across) that reach
+/// that accuracy on Hertz patches resolved by 2 … 24 elements, the grid shifted by 0, 1/4 and 1/2
+/// element against the patch (tests/unit/contact/test_grid_resolution.cpp, which asserts that
+/// these counts reach it and the next smaller count of the study does not). Half-space: 8 (peak
+/// 1.5 %; 6 gives 2.6 %); its area, counted in whole elements, is still 11 % off at 8 and needs 16
+/// for 4 %, a limit of the element count that this minimum does not cover. Strips: 4 (peak 2.7 %,
+/// area 5.5 %; 3 gives an area 10.6 % off).
+constexpr int kMinAcrossHalfSpace = 8;
+constexpr int kMinAcrossStrips = 4;
+
 /// What a grid method hands to the checks for one reported patch (the k-th of CaseResult::patches).
 struct PatchCheckInput {
   int nx = 0, ns = 0;            ///< elements along x and s (strips: nx = 1, ns strips)
@@ -60,6 +78,12 @@ struct PatchCheckInput {
   double end_gap_error = NAN;    ///< strips: the estimate's end-gap error; NaN for the half-space method
   double end_gap_tol = NAN;      ///< strips: StripOptions::end_gap_tol
   bool refined = false;          ///< strips: the extents were refined (the end gap closed at every end)
+  int min_across = 0;            ///< fewest elements across the patch (kMinAcross*); 0: not checked
+  double element = 0;            ///< [m] the element size across (ds), named in the under_resolved warning
+  /// After a local refinement: |Δpmax| / pmax between the last two grids (NaN: not refined), and
+  /// the method's peak tolerance it must settle within (kPeakRtol*).
+  double peak_change = NAN;
+  double peak_rtol = NAN;
   bool spike_check = false;      ///< look for a single-element peak (half-space; strips have strip_outlier)
   bool hole_check = false;       ///< look for a contact hole (half-space: rows and columns of elements)
   double y_ref = 0, gamma = 0;   ///< [m], [rad] the patch plane (to name rail y in warnings)
@@ -67,6 +91,12 @@ struct PatchCheckInput {
 };
 
 /// A zero-pressure element enclosed by loaded ones where the bodies overlap (the rule above).
+/// The number of elements across a patch in its narrow direction: the longest run of loaded
+/// elements along s in any column, and (half-space, nx > 1) along x in any row; the smaller of the
+/// two. Strips (nx = 1) are exact along x (a semi-ellipse per strip), so only s counts. A run, not
+/// the extent: a patch made of two narrow bands is as narrow as its widest band.
+int elements_across(const std::vector<double>& p, int nx, int ns);
+
 struct ContactHole {
   int elements = 0;  ///< hole elements
   int i = -1, j = -1;  ///< the one with the largest overlap

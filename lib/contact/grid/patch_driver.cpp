@@ -67,6 +67,53 @@ double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim) {
   return bracketed_root(F, lo, hi, F_lo, F_hi, tol).x;
 }
 
+ApproachBalance balance_approach(const std::vector<PatchSolver*>& solvers, const std::vector<double>& cos_gamma,
+                                 double Q, double dz_start, const PatchDriverOptions& opt) {
+  ApproachBalance b;
+  // F(δz) − Q with δ_k = δz cos γ_k (eqs. 10–11).
+  auto force = [&](double z) {
+    double F = 0;
+    for (std::size_t k = 0; k < solvers.size(); ++k) {
+      F += solvers[k]->at_approach(z * cos_gamma[k]) * cos_gamma[k];
+      ++b.evaluations;
+    }
+    return F - Q;
+  };
+  // Bracket δz from the estimate, then TOMS 748 (core/roots.hpp); every patch solver holds the
+  // solution at the last δz evaluated, so the root is evaluated last.
+  int outer = 0;
+  double lo = 0, Flo = -Q, hi = dz_start, Fhi = force(hi), last = hi;
+  ++outer;
+  while (Fhi < 0 && outer < opt.max_outer) {
+    lo = hi; Flo = Fhi;
+    hi *= 1.5;
+    Fhi = force(hi);
+    last = hi;
+    ++outer;
+  }
+  RootResult root;
+  root.x = hi;
+  root.f = Fhi;
+  if (Fhi >= 0 && std::fabs(Fhi) > opt.force_rtol * Q && outer < opt.max_outer) {
+    RootTolerance tol;
+    tol.abs = 1e-15;
+    tol.rel = 0;
+    tol.f_abs = opt.force_rtol * Q;
+    tol.max_iterations = opt.max_outer - outer;
+    root = bracketed_root([&](double z) { last = z; ++outer; return force(z); }, lo, hi, Flo, Fhi, tol);
+    if (root.x != last) {
+      root.f = force(root.x);
+      ++outer;
+    }
+  }
+  b.dz = root.x;
+  if (std::fabs(root.f) > opt.force_rtol * Q) {
+    b.ok = false;
+    b.message = "force balance not reached in " + std::to_string(outer) + " iterations on the approach";
+  }
+  return b;
+}
+
 PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,
                                 const PatchSolverFactory& make) {
   PatchDriverResult R;
@@ -112,52 +159,23 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
       R.message = "no interpenetration region found";
       return R;
     }
-    // F(δz) − Q with δ_k = δz cos γ_k (eqs. 10–11).
-    auto force = [&](double z) {
-      double F = 0;
-      for (std::size_t k = 0; k < R.solvers.size(); ++k) {
-        const double c = std::cos(R.regions[k].P.gamma);
-        F += R.solvers[k]->at_approach(z * c) * c;
-        ++R.evaluations;
-      }
-      return F - Q;
-    };
     if (R.solvers.size() == 1) {
       const double c = std::cos(R.regions[0].P.gamma);
       dz = R.solvers[0]->at_load(Q / c) / c;  // load control inside the one patch
       ++R.evaluations;
     } else {
-      // Bracket δz from the estimate, then TOMS 748 (core/roots.hpp); every patch solver holds
-      // the solution at the last δz evaluated, so the root is evaluated last.
-      int outer = 0;
-      double lo = 0, Flo = -Q, hi = dz_ref, Fhi = force(hi), last = hi;
-      ++outer;
-      while (Fhi < 0 && outer < opt.max_outer) {
-        lo = hi; Flo = Fhi;
-        hi *= 1.5;
-        Fhi = force(hi);
-        last = hi;
-        ++outer;
+      std::vector<PatchSolver*> solvers;
+      std::vector<double> cos_gamma;
+      for (std::size_t k = 0; k < R.solvers.size(); ++k) {
+        solvers.push_back(R.solvers[k].get());
+        cos_gamma.push_back(std::cos(R.regions[k].P.gamma));
       }
-      RootResult root;
-      root.x = hi;
-      root.f = Fhi;
-      if (Fhi >= 0 && std::fabs(Fhi) > opt.force_rtol * Q && outer < opt.max_outer) {
-        RootTolerance tol;
-        tol.abs = 1e-15;
-        tol.rel = 0;
-        tol.f_abs = opt.force_rtol * Q;
-        tol.max_iterations = opt.max_outer - outer;
-        root = bracketed_root([&](double z) { last = z; ++outer; return force(z); }, lo, hi, Flo, Fhi, tol);
-        if (root.x != last) {
-          root.f = force(root.x);
-          ++outer;
-        }
-      }
-      dz = root.x;
-      if (std::fabs(root.f) > opt.force_rtol * Q) {
+      const ApproachBalance b = balance_approach(solvers, cos_gamma, Q, dz_ref, opt);
+      R.evaluations += b.evaluations;
+      dz = b.dz;
+      if (!b.ok) {
         R.status = CaseStatus::NotConverged;
-        R.message = "force balance not reached in " + std::to_string(outer) + " iterations on the approach";
+        R.message = b.message;
       }
     }
     bool outgrown = false;

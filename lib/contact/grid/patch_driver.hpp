@@ -122,6 +122,19 @@ CaseResult solve_grid_case(Method method, const ContactGeometry& G, const Materi
 /// by bisection to 1e-4 relative.
 double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim);
 
+/// Several patches under one rigid vertical approach: the δz [m] at which
+/// Σ_k N_k(δz cos γ_k) cos γ_k = Q (eqs. 10–11), each patch in approach control, within
+/// opt.force_rtol·Q, bracketed from dz_start (> 0) and found by TOMS 748 in at most opt.max_outer
+/// evaluations of the sum; every solver is left holding its solution at the δz returned.
+struct ApproachBalance {
+  double dz = 0;         ///< [m]
+  bool ok = true;        ///< false: not within force_rtol (message says so)
+  std::string message;
+  int evaluations = 0;   ///< patch solves
+};
+ApproachBalance balance_approach(const std::vector<PatchSolver*>& solvers, const std::vector<double>& cos_gamma,
+                                 double Q, double dz_start, const PatchDriverOptions& opt);
+
 /// Solve for the load Q [N], starting from the approach estimate dz_est [m] (> 0).
 PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,
                                 const PatchSolverFactory& make);

@@ -95,6 +95,10 @@ class HalfSpacePatch : public PatchSolver {
     PatchCheckInput c;
     c.nx = nx; c.ns = ns; c.p = p; c.p_lim = p_lim_;
     c.spike_check = c.hole_check = true;
+    c.min_across = kMinAcrossHalfSpace;
+    c.element = std::max(dx, ds);
+    c.peak_change = peak_change;
+    c.peak_rtol = kPeakRtolHalfSpace;
     c.y_ref = P.y_ref; c.gamma = P.gamma; c.s0 = s0; c.ds = ds;
     const double delta = last.delta;
     c.overlap.resize(h.size());
@@ -122,11 +126,45 @@ class HalfSpacePatch : public PatchSolver {
   std::unique_ptr<InfluenceGrid> C;
   NormalCGResult last;
   int iterations = 0;
+  /// After a local refinement (refine_patch): |Δpmax| / pmax of the last halving; NaN: not refined.
+  double peak_change = NAN;
 
  private:
   double p_lim_;
   NormalCGOptions cg_;
 };
+
+// A patch with fewer elements across than kMinAcrossHalfSpace (grid_checks.hpp), solved again on
+// its own at the load N the case gave it, on its region with dx and ds halved, until it has that
+// many elements across and its peak moves by at most kPeakRtolHalfSpace between two grids; at
+// most opt.max_refinements halvings. The gap is that of the wheel at the case's approach dz. With
+// several patches the caller then finds the shared approach again with the refined ones
+// (balance_approach). Returns the finest patch solved (null: none could be, the coarse one
+// stays); its peak_change says whether the peak settled.
+std::unique_ptr<HalfSpacePatch> refine_patch(const WheelRailGap& gap, const PatchRegion& region, double dz,
+                                             const HalfSpacePatch& coarse, double N, const HalfSpaceOptions& opt,
+                                             double H, double p_lim) {
+  std::unique_ptr<HalfSpacePatch> best;
+  double p_prev = *std::max_element(coarse.p.begin(), coarse.p.end());
+  HalfSpaceOptions o = opt;
+  for (int level = 1; level <= opt.max_refinements; ++level) {
+    o.dx *= 0.5;
+    o.ds *= 0.5;
+    auto f = std::make_unique<HalfSpacePatch>(gap, region, dz, o, H, p_lim);
+    if (!f->ok()) break;  // beyond the element budget
+    f->at_load(N);
+    if (f->failed() || f->outgrown()) break;
+    const double p_new = *std::max_element(f->p.begin(), f->p.end());
+    f->peak_change = std::fabs(p_new - p_prev) / p_new;
+    f->iterations += best ? best->iterations : coarse.iterations;
+    const bool settled = elements_across(f->p, f->nx, f->ns) >= kMinAcrossHalfSpace &&
+                         f->peak_change <= kPeakRtolHalfSpace;
+    best = std::move(f);
+    p_prev = p_new;
+    if (settled) break;
+  }
+  return best;
+}
 
 }  // namespace
 
@@ -169,14 +207,43 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
   });
   r.status = D.status;
   r.message = D.message;
-  const double dz = D.dz;
+  double dz = D.dz;
   const int outer = D.evaluations;  // patch solves, all placements
   // Results per patch and for the case.
   r.approach = dz;
   r.iterations = outer;
+  // Patches resolved by too few elements: refined locally (refine_patch).
+  std::vector<std::unique_ptr<HalfSpacePatch>> fine(D.solvers.size());
+  bool any_fine = false;
+  for (std::size_t n = 0; n < D.solvers.size() && r.status == CaseStatus::Ok && n < D.regions.size(); ++n) {
+    const HalfSpacePatch* coarse = static_cast<const HalfSpacePatch*>(D.solvers[n].get());
+    if (elements_across(coarse->p, coarse->nx, coarse->ns) >= kMinAcrossHalfSpace) continue;
+    double sp = 0;
+    for (double v : coarse->p) sp += v;
+    if (sp > 0) fine[n] = refine_patch(gap, D.regions[n], dz, *coarse, sp * coarse->dx * coarse->ds, opt, H, p_lim);
+    any_fine = any_fine || fine[n];
+  }
+  if (any_fine && D.solvers.size() > 1) {
+    // A refined patch is stiffer or softer than its coarse grid said: the shared approach is found
+    // again with it (eqs. 10–11), every patch in approach control, as drive_patches does.
+    std::vector<PatchSolver*> solvers;
+    std::vector<double> cos_gamma;
+    for (std::size_t n = 0; n < D.solvers.size(); ++n) {
+      solvers.push_back(fine[n] ? static_cast<PatchSolver*>(fine[n].get()) : D.solvers[n].get());
+      cos_gamma.push_back(std::cos(D.regions[n].P.gamma));
+    }
+    const ApproachBalance b = balance_approach(solvers, cos_gamma, Q, dz, dopt);
+    dz = b.dz;
+    r.approach = dz;
+    r.iterations += b.evaluations;
+    for (auto& f : fine)
+      if (f && f->failed()) { r.status = CaseStatus::NotConverged; r.message = f->why(); }
+    if (!b.ok) { r.status = CaseStatus::NotConverged; r.message = b.message; }
+  }
   std::vector<PatchCheckInput> checks;  // of the reported patches, for the physical checks
-  for (const auto& solver : D.solvers) {
-    const HalfSpacePatch& k = static_cast<const HalfSpacePatch&>(*solver);
+  for (std::size_t n = 0; n < D.solvers.size(); ++n) {
+    const HalfSpacePatch* coarse = static_cast<const HalfSpacePatch*>(D.solvers[n].get());
+    const HalfSpacePatch& k = fine[n] ? *fine[n] : *coarse;
     PatchResult pr;
     pr.y_r = k.P.y_ref;
     pr.z_r = gap.z_rail(k.P.y_ref);  // the reference point on the rail profile (as CONTACT reports it)
@@ -194,24 +261,27 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
         ++pr.n_elements;
         pr.pmax = std::max(pr.pmax, p);
         if (std::isfinite(p_lim) && p >= p_lim) { pr.plastic_area += da; pr.capped_load += p * da; }
-        sp += p; spx += p * (k.x0 + i * opt.dx); sps += p * (k.s0 + j * opt.ds);
+        sp += p; spx += p * (k.x0 + i * k.dx); sps += p * (k.s0 + j * k.ds);
         i0 = std::min(i0, i); i1 = std::max(i1, i); j0 = std::min(j0, j); j1 = std::max(j1, j);
       }
     pr.N = sp * da;
     pr.area = pr.n_elements * da;
     if (pr.n_elements > 0) {
-      pr.length_x = (i1 - i0 + 1) * opt.dx;
-      pr.width_s = (j1 - j0 + 1) * opt.ds;
-      pr.s_lo = k.s0 + j0 * opt.ds;
-      pr.s_hi = k.s0 + j1 * opt.ds;
+      pr.length_x = (i1 - i0 + 1) * k.dx;
+      pr.width_s = (j1 - j0 + 1) * k.ds;
+      pr.s_lo = k.s0 + j0 * k.ds;
+      pr.s_hi = k.s0 + j1 * k.ds;
       pr.x_centroid = spx / sp;
       pr.s_centroid = sps / sp;
     }
-    pr.approach = dz * std::cos(k.P.gamma) - k.h_min;
+    // A refined patch alone in its case found its own normal approach by load control.
+    pr.approach = (fine[n] && D.solvers.size() == 1 ? k.last.delta : dz * std::cos(k.P.gamma)) - k.h_min;
     if (pr.N <= 0) continue;  // a potential patch that carries nothing is not reported
     checks.push_back(k.check_input());
+    pr.elements_across = elements_across(k.p, k.nx, k.ns);
+    pr.element = std::max(k.dx, k.ds);
     if (opt.keep_pressure) {
-      pr.nx = k.nx; pr.ns = k.ns; pr.dx = opt.dx; pr.ds = opt.ds; pr.x0 = k.x0; pr.s0 = k.s0;
+      pr.nx = k.nx; pr.ns = k.ns; pr.dx = k.dx; pr.ds = k.ds; pr.x0 = k.x0; pr.s0 = k.s0;
       pr.p = k.p;
     }
     r.Fz += pr.N * std::cos(pr.gamma);

@@ -105,6 +105,10 @@ class StripPatch : public PatchSolver {
     c.end_gap_tol = o.end_gap_tol;
     c.refined = last.refined;
     c.y_ref = P.y_ref; c.gamma = P.gamma; c.s0 = geo.s.empty() ? 0 : geo.s.front(); c.ds = geo.ds;
+    c.min_across = kMinAcrossStrips;
+    c.element = geo.ds;
+    c.peak_change = peak_change;
+    c.peak_rtol = kPeakRtolStrips;
     return c;
   }
 
@@ -112,6 +116,8 @@ class StripPatch : public PatchSolver {
   StripGeometry geo;
   StripResult last;
   int evaluations = 0;
+  /// After a local refinement (refine_patch): |Δpmax| / pmax of the last halving; NaN: not refined.
+  double peak_change = NAN;
 
  private:
   double H_, p_lim_;
@@ -124,6 +130,39 @@ class StripPatch : public PatchSolver {
     return *solver_;
   }
 };
+
+// The loaded strips of a solution as elements (grid_checks.hpp, elements_across).
+int strips_across(const StripPatch& k) {
+  std::vector<double> q(k.geo.s.size(), 0.0);
+  for (const StripState& st : k.last.strips) q[static_cast<std::size_t>(st.index)] = st.q;
+  return elements_across(q, 1, static_cast<int>(q.size()));
+}
+
+// A patch with fewer strips across than kMinAcrossStrips (grid_checks.hpp), solved again on its
+// own at the load N the case gave it, on its region with ds halved, until it has that many strips
+// and its peak moves by at most kPeakRtolStrips between two widths; at most opt.max_refinements
+// halvings (as the half-space method's refine_patch; with several patches the caller then finds the
+// shared approach again). Returns the finest patch solved (null: none could be, the coarse one stays).
+std::unique_ptr<StripPatch> refine_patch(const WheelRailGap& gap, const PatchRegion& region, double dz,
+                                         const StripPatch& coarse, const StripMethodOptions& opt, double H,
+                                         double p_lim) {
+  std::unique_ptr<StripPatch> best;
+  double p_prev = coarse.last.pmax;
+  StripMethodOptions o = opt;
+  for (int level = 1; level <= opt.max_refinements; ++level) {
+    o.ds *= 0.5;
+    auto f = std::make_unique<StripPatch>(gap, region, dz, o, H, p_lim);
+    f->at_load(coarse.last.N);
+    if (f->failed() || f->outgrown() || f->last.status != StripStatus::Ok) break;
+    f->peak_change = std::fabs(f->last.pmax - p_prev) / f->last.pmax;
+    f->evaluations += best ? best->evaluations : coarse.evaluations;
+    const bool settled = strips_across(*f) >= kMinAcrossStrips && f->peak_change <= kPeakRtolStrips;
+    p_prev = f->last.pmax;
+    best = std::move(f);
+    if (settled) break;
+  }
+  return best;
+}
 
 }  // namespace
 
@@ -147,8 +186,34 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
   r.approach = D.dz;
   int evaluations = 0;
   std::vector<PatchCheckInput> checks;  // of the reported patches, for the physical checks
-  for (const auto& solver : D.solvers) {
-    const StripPatch& k = static_cast<const StripPatch&>(*solver);
+  // Patches resolved by too few strips: refined locally (refine_patch).
+  std::vector<std::unique_ptr<StripPatch>> fine(D.solvers.size());
+  bool any_fine = false;
+  for (std::size_t n = 0; n < D.solvers.size() && r.status == CaseStatus::Ok && n < D.regions.size(); ++n) {
+    const StripPatch* coarse = static_cast<const StripPatch*>(D.solvers[n].get());
+    if (coarse->last.status != StripStatus::Ok || !(coarse->last.N > 0) || strips_across(*coarse) >= kMinAcrossStrips)
+      continue;
+    fine[n] = refine_patch(gap, D.regions[n], D.dz, *coarse, opt, H, p_lim);
+    any_fine = any_fine || fine[n];
+  }
+  if (any_fine && D.solvers.size() > 1) {
+    // The shared approach found again with the refined patches (as the half-space method does).
+    std::vector<PatchSolver*> solvers;
+    std::vector<double> cos_gamma;
+    for (std::size_t n = 0; n < D.solvers.size(); ++n) {
+      solvers.push_back(fine[n] ? static_cast<PatchSolver*>(fine[n].get()) : D.solvers[n].get());
+      cos_gamma.push_back(std::cos(D.regions[n].P.gamma));
+    }
+    const ApproachBalance b = balance_approach(solvers, cos_gamma, Q, D.dz, dopt);
+    D.dz = b.dz;
+    r.approach = D.dz;
+    for (PatchSolver* ps : solvers)
+      if (ps->failed()) { r.status = CaseStatus::NotConverged; r.message = ps->why(); }
+    if (!b.ok) { r.status = CaseStatus::NotConverged; r.message = b.message; }
+  }
+  for (std::size_t n = 0; n < D.solvers.size(); ++n) {
+    const StripPatch* coarse = static_cast<const StripPatch*>(D.solvers[n].get());
+    const StripPatch& k = fine[n] ? *fine[n] : *coarse;
     evaluations += k.evaluations;
     const StripResult& S = k.last;
     // A patch solve that did not converge keeps its last (closest) iterate, as every
@@ -166,7 +231,9 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
     pr.N = S.N;
     pr.pmax = S.pmax;
     pr.area = S.area;
-    pr.approach = D.dz * std::cos(k.P.gamma) - *std::min_element(k.geo.g.begin(), k.geo.g.end());
+    // A refined patch alone in its case found its own normal approach by load control.
+    pr.approach = (fine[n] && D.solvers.size() == 1 ? S.delta : D.dz * std::cos(k.P.gamma)) -
+                  *std::min_element(k.geo.g.begin(), k.geo.g.end());
     double s_lo = INFINITY, s_hi = -INFINITY, ls = 0, lc = 0;
     for (const StripState& st : S.strips) {
       pr.length_x = std::max(pr.length_x, 2 * st.a);
@@ -201,8 +268,10 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
                            format_number(std::round((k.P.y_ref + w.s * std::cos(k.P.gamma)) * 1e6) / 1e3) +
                            ":q_MPa=" + format_number(std::round(std::min(w.q, p_lim) / 1e3) / 1e3));
     }
-    r.patches.push_back(std::move(pr));
     checks.push_back(k.check_input(opt.strips));
+    pr.elements_across = elements_across(checks.back().p, checks.back().nx, checks.back().ns);
+    pr.element = k.geo.ds;
+    r.patches.push_back(std::move(pr));
   }
   r.iterations = evaluations;
   close_grid_case(checks, Q, kForceBalanceRtol, r);

@@ -88,7 +88,16 @@ TEST_CASE("auto: the multi-Hertzian answer on a kinked flange is not kept, the f
   if (r.status == mh::CaseStatus::Ok) CHECK(mh::validity_failures(r.warnings).empty());
   mo.method = mh::Method::Strips;
   const mh::CaseResult s = mh::solve_contact(M.pg.geo, M.cf.material, 13.5e-3, 50e3, mo);
-  if (s.status != mh::CaseStatus::Ok) CHECK(r.method == mh::Method::HalfSpace);
+  // The half-space fallback is taken when it passes the checks. Here it does not: its peak stands
+  // on a corner of the unsmoothed gap and grows under local refinement (9,832 MPa at 0.2 mm,
+  // 34,740 MPa at 0.025 mm: under_resolved, with a contact_hole), so auto keeps the strip row and
+  // says why.
+  if (s.status != mh::CaseStatus::Ok) {
+    bool rejected = false;
+    for (const std::string& w : r.warnings) rejected = rejected || w.rfind("auto:half-space:rejected", 0) == 0;
+    CHECK((r.method == mh::Method::HalfSpace || rejected));
+    if (r.method != mh::Method::HalfSpace) CHECK(r.status != mh::CaseStatus::Ok);
+  }
   // The Manchester flange at 7 and 9 mm stays multi-Hertzian (accurate against CONTACT).
   const Fixture& F = manchester();
   mh::MethodOptions fo = F.cf.method_options();

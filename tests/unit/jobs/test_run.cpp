@@ -88,7 +88,7 @@ TEST_CASE("run writes the three tables, byte-identical for 1, 2 and 4 threads", 
   REQUIRE(std::count(geo.begin(), geo.end(), '\n') == 1 + 33 * 4);
   // results.json: valid JSON, schema, inputs with checksums, the same cases.
   const auto j = nlohmann::json::parse(slurp(d / "t1/results.json"));
-  REQUIRE(j.at("schema") == "mhcontact.results/7");
+  REQUIRE(j.at("schema") == "mhcontact.results/8");
   REQUIRE(j.at("profiles").at("wheel").at("sha256").get<std::string>().size() == 64);
   REQUIRE(j.at("cases").size() == 99);
   REQUIRE(j.at("potential_ellipses").size() == 4);
