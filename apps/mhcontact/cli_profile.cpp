@@ -159,6 +159,25 @@ void print_info(const Profile& p, bool json, ProfileNoise noise, std::ostream& o
     j["noise"] = noise_json(curve.noise());
     j["fit_window_mm"] = curve.window_used() * units::per_mm;
     text += "noise: " + curve.noise().reason + "; fit window " + mm(curve.window_used()) + " mm\n";
+    // Smoothing for contact (§7), by the default rule ("auto": from the profile's own noise).
+    const std::optional<SmoothedProfile> sp = smooth_for_contact(p, curve.noise(), std::nullopt);
+    if (sp) {
+      j["contact_smoothing_mm"] = std::round(sp->L * 1e6) / 1e3;
+      j["contact_smoothing_local_min_mm"] = std::round(sp->L_local_min * 1e6) / 1e3;
+      text += "smoothing for contact (grid methods, auto): L = " + format_number(std::round(sp->L * 1e5) / 100) +
+              " mm from the noise " + format_number(std::round(curve.noise().sigma * 1e8) / 100) + " µm" +
+              (sp->at_bound ? " (at its bound)" : "") +
+              (sp->L_local_min < sp->L ? "; shortened where it would remove geometry above the noise, to as little as " +
+                                             format_number(std::round(sp->L_local_min * 1e5) / 100) + " mm, between y " +
+                                             format_number(std::round(sp->local_from * 1e4) / 10) + " and " +
+                                             format_number(std::round(sp->local_to * 1e4) / 10) + " mm"
+                                       : std::string()) +
+              "\n";
+    } else {
+      j["contact_smoothing_mm"] = 0;
+      text += "smoothing for contact (grid methods): none (" +
+              std::string(curve.noise().measured ? "no noise estimate" : "an exact profile is never smoothed") + ")\n";
+    }
   } catch (const InputError& e) {
     j["noise"] = nullptr;
     text += std::string("noise: not classified (") + e.what() + ")\n";

@@ -26,7 +26,10 @@ bool GeometryOptions::valid(std::string* why) const {
   if (!(jump_threshold > 0)) return fail("jump_threshold_deg must be > 0");
   if (!(jump_distance >= 0)) return fail("jump_distance_mm must be >= 0");
   if (!(min_ellipse_width >= 0) || min_ellipse_width > 5e-3) return fail("min_ellipse_width_mm must be in [0, 5]");
-  if (!(contact_smoothing >= 0) || contact_smoothing > 20e-3) return fail("smoothing_mm must be in [0, 20]");
+  if (contact_smoothing && (!(*contact_smoothing >= 0) || *contact_smoothing > 20e-3))
+    return fail("smoothing_mm must be \"auto\" or in [0, 20]");
+  if (!(auto_smoothing.L_min > 0) || !(auto_smoothing.L_max >= auto_smoothing.L_min))
+    return fail("the automatic smoothing length's bounds must satisfy 0 < L_min <= L_max");
   return true;
 }
 
@@ -195,10 +198,11 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
   cr.noise = opt.rail_noise;
   G.wheel_curve = std::make_shared<const ProfileCurve>(wheel, cw);
   G.rail_curve = std::make_shared<const ProfileCurve>(rail, cr);
-  // Smoothing for contact (profiles.md §7): measured profiles only.
+  // Smoothing for contact (profiles.md §7): measured profiles only, by the length given or, by
+  // default, by the length that removes the profile's own noise.
   auto gap_curve = [&](const Profile& p, const std::shared_ptr<const ProfileCurve>& c) {
-    if (!c->noise().measured || !(opt.contact_smoothing > 0)) return c;
-    return std::make_shared<const ProfileCurve>(smooth_profile(p, opt.contact_smoothing), opt.curve.grid_step, c->noise());
+    const std::optional<SmoothedProfile> sp = smooth_for_contact(p, c->noise(), opt.contact_smoothing, opt.auto_smoothing);
+    return sp ? std::make_shared<const ProfileCurve>(*sp, opt.curve.grid_step, c->noise()) : c;
   };
   G.wheel_gap_curve = gap_curve(wheel, G.wheel_curve);
   G.rail_gap_curve = gap_curve(rail, G.rail_curve);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,11 +69,15 @@ struct GeometryOptions {
   /// each overrides curve.noise for its profile. Default auto: decided from the data.
   ProfileNoise wheel_noise = ProfileNoise::Auto, rail_noise = ProfileNoise::Auto;
   /// Smoothing for contact (profiles.md §7 "Smoothing for contact"): the contact gap of the grid
-  /// methods (half-space, strips) is built on measured profiles smoothed by a spline of this
+  /// methods (half-space, strips) is built on measured profiles smoothed by a spline of
   /// smoothing length L (profile/smoothing_spline.hpp: a wave of length L along the profile keeps
-  /// half its amplitude); exact profiles are never smoothed, and 0 turns it off. Case file
-  /// geometry.smoothing_mm. Default 5 mm: see profiles.md §7 for the measurement behind it.
-  double contact_smoothing = 5.0e-3;  ///< [m]
+  /// half its amplitude); exact profiles are never smoothed. Case file geometry.smoothing_mm.
+  /// Default (empty, "auto"): each measured profile's L is chosen from its own noise, the spline
+  /// moving the points normal to the profile by the noise σ of its curve fit (NoiseDecision::sigma;
+  /// smooth_profile_to_noise within `auto_smoothing`'s bounds). A value forces that L for every
+  /// measured profile; 0 turns the smoothing off.
+  std::optional<double> contact_smoothing;  ///< [m]
+  NoiseSmoothingOptions auto_smoothing;    ///< bounds of the automatic L (profile/smoothing_spline.hpp)
   bool valid(std::string* why) const;
 };
 

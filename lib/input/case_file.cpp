@@ -153,10 +153,19 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     if (g.contains("fit_window_mm")) cf.geometry.curve.window_half_width = c.positive(g, "/geometry", "fit_window_mm") * units::mm;
     if (g.contains("measured_fit_window_mm")) cf.geometry.curve.measured_window_half_width = c.positive(g, "/geometry", "measured_fit_window_mm") * units::mm;
     // Smoothing of measured profiles for the grid methods' contact gap (profiles.md §7).
+    // "auto" (the default): each measured profile's length from its own noise; a number forces it.
     if (g.contains("smoothing_mm")) {
-      const double L = c.number(g, "/geometry", "smoothing_mm");
-      if (!(L >= 0) || L > 20) c.fail("/geometry/smoothing_mm", &g.at("smoothing_mm"), "must be between 0 (off) and 20 mm");
-      cf.geometry.contact_smoothing = L * units::mm;
+      const json& v = g.at("smoothing_mm");
+      if (v.is_string()) {
+        if (v.get<std::string>() != "auto")
+          c.fail("/geometry/smoothing_mm", &v, "must be \"auto\" (from each profile's noise) or a length between 0 (off) and 20 mm");
+        cf.geometry.contact_smoothing.reset();
+      } else {
+        const double L = c.number(g, "/geometry", "smoothing_mm");
+        if (!(L >= 0) || L > 20)
+          c.fail("/geometry/smoothing_mm", &v, "must be \"auto\" (from each profile's noise) or a length between 0 (off) and 20 mm");
+        cf.geometry.contact_smoothing = L * units::mm;
+      }
     }
     // Measured or exact (profiles.md "Measured or exact"): one value for both profiles or
     // {"wheel": ..., "rail": ...} (a missing one stays "auto").
@@ -392,7 +401,7 @@ nlohmann::json CaseFile::resolved_json() const {
                    {"fit_window_mm", geometry.curve.window_half_width * units::per_mm},
                    {"measured_fit_window_mm", geometry.curve.measured_window_half_width * units::per_mm},
                    {"noise", {{"wheel", to_string(geometry.wheel_noise)}, {"rail", to_string(geometry.rail_noise)}}},
-                   {"smoothing_mm", geometry.contact_smoothing * units::per_mm}};
+                   {"smoothing_mm", geometry.contact_smoothing ? json(*geometry.contact_smoothing * units::per_mm) : json("auto")}};
   json mat = {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}};
   if (!std::isnan(material.E_rail))
     mat = {{"wheel", {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}}},

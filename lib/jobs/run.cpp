@@ -34,8 +34,12 @@ nlohmann::json pair_summary_json(const PairGeometry& pg) {
                      {"rail", pg.geo.rail_curve->noise().measured ? "measured" : "exact"}};
   // Smoothing for contact (profiles.md §7): per profile, the spline's length L, 0 when not smoothed.
   if (pg.geo.wheel_gap_curve && pg.geo.rail_gap_curve)
-    j["contact_smoothing_mm"] = {{"wheel", pg.geo.wheel_gap_curve->smoothing_length() * units::per_mm},
-                                 {"rail", pg.geo.rail_gap_curve->smoothing_length() * units::per_mm}};
+    j["contact_smoothing_mm"] = {{"wheel", std::round(pg.geo.wheel_gap_curve->smoothing_length() * 1e6) / 1e3},
+                                 {"rail", std::round(pg.geo.rail_gap_curve->smoothing_length() * 1e6) / 1e3}};
+  // ... and the shortest local length where geometry above the noise was kept (auto only).
+  if (pg.geo.wheel_gap_curve && pg.geo.rail_gap_curve)
+    j["contact_smoothing_local_min_mm"] = {{"wheel", std::round(pg.geo.wheel_gap_curve->smoothing_local_min() * 1e6) / 1e3},
+                                           {"rail", std::round(pg.geo.rail_gap_curve->smoothing_local_min() * 1e6) / 1e3}};
   j["rail_cant_deg"] = pg.cant.used.found ? nlohmann::json(pg.cant.used.angle / units::deg) : nlohmann::json(nullptr);
   j["pair_warnings"] = pg.cant.warnings;
   return j;
@@ -50,7 +54,18 @@ std::string pair_summary_line(const PairGeometry& pg) {
                                 {"rail", pg.geo.rail_gap_curve.get()}})
     if (c && c->smoothing_length() > 0)
       s += std::string(" ") + name + " smoothed for contact (grid methods): spline L = " +
-           format_number(c->smoothing_length() * units::per_mm) + " mm, moved the points by " +
+           format_number(std::round(c->smoothing_length() * 1e5) / 100) + " mm" +
+           (c->smoothing_sigma() > 0 ? std::string(c->smoothing_at_bound() ? " (auto, at its bound: noise " : " (auto: noise ") +
+                                           format_number(std::round(c->smoothing_sigma() * 1e8) / 100) + " µm" +
+                                           (c->smoothing_local_min() < c->smoothing_length()
+                                                ? "; shortened where it would remove geometry above the noise, to as little as " +
+                                                      format_number(std::round(c->smoothing_local_min() * 1e5) / 100) +
+                                                      " mm, between y " + format_number(std::round(c->smoothing_local_from() * 1e4) / 10) +
+                                                      " and " + format_number(std::round(c->smoothing_local_to() * 1e4) / 10) + " mm"
+                                                : std::string()) +
+                                           ")"
+                                     : std::string()) +
+           ", moved the points by " +
            format_number(std::round(c->smoothing_rms_change() * 1e8) / 100) + " µm RMS (max " +
            format_number(std::round(c->smoothing_max_change() * 1e8) / 100) + " µm);";
   if (pg.cant.used.found)

@@ -2,6 +2,7 @@
 // (caf.csv), and the JSON records of the profiles, the potential ellipses and the inputs.
 #include "output/pair_tables.hpp"
 
+#include <cmath>
 #include <filesystem>
 
 #include "core/units.hpp"
@@ -15,7 +16,8 @@ using namespace cells;
 nlohmann::json noise_json(const NoiseDecision& d) {
   return {{"class", d.measured ? "measured" : "exact"}, {"forced", d.forced},
           {"median_residual_um", d.median_residual * 1e6}, {"print_step_mm", d.print_step * units::per_mm},
-          {"rounding_rms_um", d.rounding_rms * 1e6}, {"threshold_um", d.threshold * 1e6}, {"reason", d.reason}};
+          {"rounding_rms_um", d.rounding_rms * 1e6}, {"threshold_um", d.threshold * 1e6},
+          {"sigma_um", std::round(d.sigma * 1e9) / 1e3}, {"reason", d.reason}};
 }
 
 nlohmann::json cant_json(const RailCant& c) {

@@ -31,6 +31,7 @@ struct WindowDirection {
 /// one-sided windows) needs no more.
 struct WindowFit {
   bool solved = false;
+  int points = 0;  // points in the window
   double rms = std::numeric_limits<double>::infinity();
   double alpha = 0, beta = 0, delta = 0, theta = 0, c = 1, s = 0, yc = 0, zc = 0;
 };
@@ -113,6 +114,7 @@ WindowFit solve_window(const std::vector<double>& y, const std::vector<double>& 
     ss += e * e;
   }
   f.rms = std::sqrt(ss / static_cast<double>(n));
+  f.points = static_cast<int>(n);
   f.solved = true;
   f.alpha = alpha, f.beta = beta, f.delta = delta, f.theta = theta, f.c = c, f.s = s, f.yc = yc, f.zc = zc;
   return f;
@@ -123,6 +125,7 @@ LocalFit finish_fit(const WindowFit& w) {
   LocalFit f;
   if (!w.solved) return f;
   f.rms = w.rms;
+  f.points = w.points;
   const double alpha = w.alpha, beta = w.beta, delta = w.delta, theta = w.theta, c = w.c, s = w.s, yc = w.yc, zc = w.zc;
   // Curve point at u = 0: alpha v² − v + delta = 0, the small root (stable form).
   const double disc = 1.0 - 4.0 * alpha * delta;
@@ -150,6 +153,17 @@ LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, 
 }
 
 }  // namespace
+
+std::optional<SmoothedProfile> smooth_for_contact(const Profile& p, const NoiseDecision& noise,
+                                                  const std::optional<double>& L, const NoiseSmoothingOptions& opt) {
+  if (!noise.measured) return std::nullopt;
+  if (L) {
+    if (!(*L > 0)) return std::nullopt;
+    return smooth_profile(p, *L);
+  }
+  if (!(noise.sigma > 0)) return std::nullopt;
+  return smooth_profile_to_noise(p, noise.sigma, opt);
+}
 
 ProfileNoise parse_profile_noise(const std::string& s) {
   if (s == "auto") return ProfileNoise::Auto;
@@ -183,6 +197,23 @@ ProfileCurve::ProfileCurve(const Profile& p, const CurveOptions& opt) {
   d.print_step = p.print_step;
   d.rounding_rms = p.print_step / std::sqrt(12.0);
   d.threshold = std::max(opt.noise_threshold, opt.quantisation_factor * d.rounding_rms);
+  {
+    std::vector<double> v;
+    std::vector<int> k;
+    for (const LocalFit& f : centred)
+      if (f.ok && f.points > 3 && std::isfinite(f.rms)) {
+        v.push_back(f.rms * f.rms * f.points / (f.points - 3));
+        k.push_back(f.points);
+      }
+    if (!v.empty()) {
+      const auto mid = static_cast<std::ptrdiff_t>(v.size() / 2);
+      std::nth_element(v.begin(), v.begin() + mid, v.end());
+      std::nth_element(k.begin(), k.begin() + mid, k.end());
+      const double nu = k[v.size() / 2] - 3;
+      const double median_chi2 = std::pow(1 - 2 / (9 * nu), 3);  // Wilson & Hilferty 1931
+      d.sigma = std::sqrt(v[v.size() / 2] / median_chi2);
+    }
+  }
   const std::string step = p.print_step > 0 ? "the printed " + format_number(p.print_step * 1e3) + " mm" : "";
   const std::string rule =
       "median residual " + um(d.median_residual) + (d.median_residual > d.threshold ? " > " : " <= ") + um(d.threshold) +
@@ -339,7 +370,9 @@ void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w, bo
 }
 
 ProfileCurve::ProfileCurve(const SmoothedProfile& sp, double grid_step, const NoiseDecision& noise)
-    : noise_(noise), smoothing_L_(sp.L), smoothing_rms_(sp.rms_change), smoothing_max_(sp.max_change) {
+    : noise_(noise), smoothing_L_(sp.L), smoothing_rms_(sp.rms_change), smoothing_max_(sp.max_change),
+      smoothing_sigma_(sp.sigma), smoothing_at_bound_(sp.at_bound), smoothing_local_min_(sp.L_local_min),
+      smoothing_local_from_(sp.local_from), smoothing_local_to_(sp.local_to) {
   const std::vector<double>& S = sp.y.knots();
   const double s_end = S.back();
   h_ = grid_step;

@@ -24,6 +24,7 @@
 // material, method.md §1): rail 1/R_rxx = −kappa (material below), wheel 1/R_wxx = +kappa
 // (material above).
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,14 @@ struct NoiseDecision {
   double print_step = 0;        ///< [m] q: step of the printed coordinates (0: not printed/unknown)
   double rounding_rms = 0;      ///< [m] q/√12
   double threshold = 0;         ///< [m] max(noise_threshold, quantisation_factor × q/√12)
+  /// [m] σ: the standard deviation of the measurement noise normal to the profile (scatter and
+  /// rounding together), from the same narrow centred fits. A window of k points fitted by the
+  /// three parameters of a circle-or-line leaves k − 3 degrees of freedom, so each node's
+  /// RSS / (k − 3) = r_j² k / (k − 3) estimates σ²; σ² is their median divided by the median of
+  /// χ²_ν / ν, ν = k − 3 (Wilson & Hilferty 1931: (1 − 2/(9ν))³), the median keeping the
+  /// windows that straddle a breakpoint out. What the smoothing for contact removes is matched
+  /// to it (profile/smoothing_spline.hpp, smooth_profile_to_noise).
+  double sigma = 0;
   /// "exact: median residual 0.28 µm <= 0.87 µm (3 × 0.29 µm, rounding to the printed 0.001 mm)".
   std::string reason;
 };
@@ -87,9 +96,17 @@ namespace curve_detail {
 /// One node's local fit (curve.cpp): z, dz/dy, kappa and the RMS residual of the window.
 struct LocalFit {
   bool ok = false;
+  int points = 0;  ///< points in the window
   double z = 0, slope = 0, kappa = 0, rms = std::numeric_limits<double>::infinity();
 };
 }  // namespace curve_detail
+
+/// The smoothing for contact of one profile (profiles.md §7 "Smoothing for contact"; the one
+/// rule, used by the contact geometry and by `profile info`): none for an exact profile; L given
+/// (> 0): that length; L given as 0: none; L not given ("auto"): the length that removes the
+/// profile's own noise, smooth_profile_to_noise(p, noise.sigma, opt).
+std::optional<SmoothedProfile> smooth_for_contact(const Profile& p, const NoiseDecision& noise,
+                                                  const std::optional<double>& L, const NoiseSmoothingOptions& opt = {});
 
 class ProfileCurve {
  public:
@@ -121,6 +138,15 @@ class ProfileCurve {
   double smoothing_length() const { return smoothing_L_; }
   double smoothing_rms_change() const { return smoothing_rms_; }
   double smoothing_max_change() const { return smoothing_max_; }
+  /// [m] The noise σ the length was chosen to remove (0: the length was given), and whether that
+  /// choice hit a bound of NoiseSmoothingOptions.
+  double smoothing_sigma() const { return smoothing_sigma_; }
+  bool smoothing_at_bound() const { return smoothing_at_bound_; }
+  /// [m] The shortest local length where the spline keeps geometry above the noise, and the y
+  /// range of the shortened regions (SmoothedProfile; equal to smoothing_length() where none).
+  double smoothing_local_min() const { return smoothing_local_min_; }
+  double smoothing_local_from() const { return smoothing_local_from_; }
+  double smoothing_local_to() const { return smoothing_local_to_; }
 
   const std::vector<double>& node_kappa() const { return k_; }
   double node_y(std::size_t i) const { return y_first_ + h_ * static_cast<double>(j0_ + i); }
@@ -138,7 +164,9 @@ class ProfileCurve {
   std::vector<signed char> side_;
   double window_ = 0, median_rms_ = 0;
   NoiseDecision noise_;
-  double smoothing_L_ = 0, smoothing_rms_ = 0, smoothing_max_ = 0;
+  double smoothing_L_ = 0, smoothing_rms_ = 0, smoothing_max_ = 0, smoothing_sigma_ = 0;
+  bool smoothing_at_bound_ = false;
+  double smoothing_local_min_ = 0, smoothing_local_from_ = 0, smoothing_local_to_ = 0;
   /// Fit every node with window half-width w. `centred_only`: only the centred fits, into
   /// `*centred` (enough for the median residual that decides measured or exact); else the whole
   /// curve, taking the centred fits from `*centred` when given (the same window, fitted before).

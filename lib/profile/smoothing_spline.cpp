@@ -32,7 +32,7 @@ double CubicSpline1::eval(double s, double* d1, double* d2) const {
 }
 
 CubicSpline1 smoothing_spline(const std::vector<double>& s, const std::vector<double>& d,
-                              const std::vector<double>& w, double lambda) {
+                              const std::vector<double>& w, double lambda, double* trace) {
   const std::size_t n = s.size();
   if (n < 3 || d.size() != n || w.size() != n || !(lambda >= 0))
     throw std::invalid_argument("smoothing_spline: needs n >= 3 knots, matching data and weights, lambda >= 0");
@@ -91,6 +91,42 @@ CubicSpline1 smoothing_spline(const std::vector<double>& s, const std::vector<do
       if (a + k < m) v -= L[a + k][k] * g[a + k];
     g[a] = v / L[a][0];
   }
+  if (trace) {
+    // tr A = n − lambda tr(W⁻¹ Q Σ Qᵀ), Σ = (R + lambda Qᵀ W⁻¹ Q)⁻¹, of which only the band
+    // |a − b| ≤ 2 is needed (Q has three diagonals): Hutchinson & de Hoog (1985, Numer. Math.
+    // 47, 99) from the factor, with L = L̃ D^(1/2), l(k, a) = L[k][k−a] / L[a][0], D_a = L[a][0]²:
+    // Σ(a, b) = δ_ab / D_a − Σ_{k = a+1, a+2} l(k, a) Σ(k, b) for b ≥ a, a from the last down.
+    std::vector<std::array<double, 3>> S(m, {0, 0, 0});  // S[a][k] = Σ(a, a+k)
+    auto sig = [&](std::size_t a, std::size_t b) {
+      const std::size_t lo = std::min(a, b), k = std::max(a, b) - lo;
+      return k <= 2 ? S[lo][k] : 0.0;
+    };
+    for (std::size_t a = m; a-- > 0;) {
+      double l[3] = {0, 0, 0};
+      for (std::size_t k = 1; k <= 2; ++k)
+        if (a + k < m) l[k] = L[a + k][k] / L[a][0];
+      for (std::size_t j = 2; j >= 1; --j) {
+        if (a + j >= m) continue;
+        double v = 0;
+        for (std::size_t k = 1; k <= 2; ++k)
+          if (a + k < m) v -= l[k] * sig(a + k, a + j);
+        S[a][j] = v;
+      }
+      double v = 1 / (L[a][0] * L[a][0]);
+      for (std::size_t k = 1; k <= 2; ++k)
+        if (a + k < m) v -= l[k] * S[a][k];
+      S[a][0] = v;
+    }
+    double t = 0;
+    for (std::size_t row = 0; row < n; ++row) {
+      const std::size_t a0 = row >= 2 ? row - 2 : 0, a1 = std::min(row, m - 1);
+      double q = 0;
+      for (std::size_t a = a0; a <= a1; ++a)
+        for (std::size_t b = a0; b <= a1; ++b) q += Q(row, a) * sig(a, b) * Q(row, b);
+      t += q / w[row];
+    }
+    *trace = static_cast<double>(n) - lambda * t;
+  }
   std::vector<double> f(d), f2(n, 0.0);
   for (std::size_t a = 0; a < m; ++a) f2[a + 1] = g[a];
   for (std::size_t row = 0; row < n; ++row) {
@@ -102,24 +138,94 @@ CubicSpline1 smoothing_spline(const std::vector<double>& s, const std::vector<do
   return CubicSpline1(s, std::move(f), std::move(f2));
 }
 
-SmoothedProfile smooth_profile(const Profile& p, double L) {
+namespace {
+
+/// The smoothed profile with the weights w_i × c_i (c: local factors, 1 everywhere for one length),
+/// and the normal residuals e_i of the points (sign: along the normal (−z', y')).
+SmoothedProfile smooth_weighted(const Profile& p, double L, const std::vector<double>& c, std::vector<double>* e_n = nullptr,
+                                std::vector<double>* s_out = nullptr) {
   const std::size_t n = p.size();
   std::vector<double> s(n, 0.0), w(n, 0.0);
   for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + std::hypot(p.y[i] - p.y[i - 1], p.z[i] - p.z[i - 1]);
   for (std::size_t i = 0; i < n; ++i)
-    w[i] = 0.5 * ((i + 1 < n ? s[i + 1] : s[i]) - (i > 0 ? s[i - 1] : s[i]));
+    w[i] = c[i] * 0.5 * ((i + 1 < n ? s[i + 1] : s[i]) - (i > 0 ? s[i - 1] : s[i]));
   const double lambda = std::pow(L / (2 * units::pi), 4);
   SmoothedProfile sp;
   sp.L = L;
-  sp.y = smoothing_spline(s, p.y, w, lambda);
+  sp.L_local_min = L;
+  sp.y = smoothing_spline(s, p.y, w, lambda, &sp.dof);
   sp.z = smoothing_spline(s, p.z, w, lambda);
-  double ss = 0;
+  double ss = 0, sn = 0;
+  if (e_n) e_n->assign(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
-    const double e = std::hypot(sp.y.values()[i] - p.y[i], sp.z.values()[i] - p.z[i]);
+    const double dy = p.y[i] - sp.y.values()[i], dz = p.z[i] - sp.z.values()[i];
+    const double e = std::hypot(dy, dz);
     ss += e * e;
     sp.max_change = std::max(sp.max_change, e);
+    double ty = 0, tz = 0;
+    sp.y.eval(s[i], &ty);
+    sp.z.eval(s[i], &tz);
+    const double t = std::hypot(ty, tz);
+    const double en = t > 0 ? (-dy * tz + dz * ty) / t : 0.0;
+    sn += en * en;
+    if (e_n) (*e_n)[i] = en;
   }
   sp.rms_change = std::sqrt(ss / static_cast<double>(n));
+  sp.rms_normal_change = std::sqrt(sn / static_cast<double>(n));
+  if (s_out) *s_out = std::move(s);
+  return sp;
+}
+
+}  // namespace
+
+SmoothedProfile smooth_profile(const Profile& p, double L) {
+  return smooth_weighted(p, L, std::vector<double>(p.size(), 1.0));
+}
+
+SmoothedProfile smooth_profile_to_noise(const Profile& p, double sigma, const NoiseSmoothingOptions& opt) {
+  const std::size_t n = p.size();
+  if (!(sigma > 0) || !(opt.L_min > 0) || !(opt.L_max >= opt.L_min) || !(opt.sigma_ref > 0) || !(opt.spacing_ref > 0) || n < 3)
+    throw std::invalid_argument("smooth_profile_to_noise: needs sigma > 0, 0 < L_min <= L_max, positive references, 3 points");
+  // 1. The length from the noise and the point spacing (header).
+  std::vector<double> d;
+  for (std::size_t i = 1; i < n; ++i) d.push_back(std::hypot(p.y[i] - p.y[i - 1], p.z[i] - p.z[i - 1]));
+  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+  const double spacing = d[d.size() / 2];
+  const double L0 = opt.L_ref * std::pow(sigma / opt.sigma_ref, 2.0 / 3.0) * std::cbrt(spacing / opt.spacing_ref);
+  const double L = std::clamp(L0, opt.L_min, opt.L_max);
+  // 2. ... and no more: the local discrepancy guard (header).
+  std::vector<double> c(n, 1.0), e, s;
+  SmoothedProfile sp = smooth_weighted(p, L, c, &e, &s);
+  const double c_max = std::pow(L / opt.L_min, 4);  // the local length L c^(−1/4) stays ≥ L_min
+  double from = 0, to = 0;
+  bool shortened = false;
+  for (int step = 0; step < opt.local_steps; ++step) {
+    const double limit = opt.local_factor * sigma;
+    std::vector<double> c_new = c;
+    bool any = false;
+    std::size_t a = 0, b = 0;
+    double ss = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      while (b < n && s[b] <= s[i] + L / 2) { ss += e[b] * e[b]; ++b; }
+      while (s[a] < s[i] - L / 2) { ss -= e[a] * e[a]; ++a; }
+      const double r = std::sqrt(std::max(0.0, ss) / static_cast<double>(b - a));
+      if (!(r > limit) || c[i] >= c_max) continue;
+      // Halve the length over the window around i.
+      const double ci = std::min(16 * c[i], c_max);
+      for (std::size_t j = a; j < b; ++j) c_new[j] = std::max(c_new[j], ci);
+      if (!shortened || p.y[a] < from) from = p.y[a];
+      if (!shortened || p.y[b - 1] > to) to = p.y[b - 1];
+      shortened = any = true;
+    }
+    if (!any) break;
+    c = std::move(c_new);
+    sp = smooth_weighted(p, L, c, &e, &s);
+  }
+  sp.sigma = sigma;
+  sp.at_bound = L != L0;
+  sp.L_local_min = L * std::pow(*std::max_element(c.begin(), c.end()), -0.25);
+  sp.local_from = shortened ? from : 0;
+  sp.local_to = shortened ? to : 0;
   return sp;
 }
 

@@ -8,8 +8,11 @@
 // light tread contact is 26 % off and alternates element to element.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <vector>
 #include <string>
 
 #include "contact/half_space/half_space_method.hpp"
@@ -18,6 +21,8 @@
 #include "jobs/run.hpp"
 #include "profile/smoothing_spline.hpp"
 #include "profile/standard_profiles.hpp"
+#include "support/constructed_profiles.hpp"
+#include "support/input_errors.hpp"
 
 namespace {
 
@@ -78,6 +83,39 @@ TEST_CASE("smoothing spline: a cubic is kept, a short wave is filtered by 1/(1+(
   CHECK(amp == Approx(0.5e-6).epsilon(0.02));
 }
 
+TEST_CASE("smoothing spline: tr A (degrees of freedom) equals the hat matrix's diagonal, column by column", "[smoothing]") {
+  // Reference: A's diagonal computed directly, A_ii = f_i of the spline of the unit vector e_i
+  // (the spline is linear in the data), on an uneven spacing; and the limits tr A → n (lambda → 0,
+  // interpolation) and → 2 (lambda → ∞, the weighted least-squares line; L = 200 mm on 12 mm of data).
+  std::vector<double> s, w;
+  const std::size_t n = 40;
+  double x = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    s.push_back(x);
+    x += (0.3 + 0.2 * std::sin(1.7 * static_cast<double>(i))) * 1e-3;  // 0.1 ... 0.5 mm
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    w.push_back(0.5 * ((i + 1 < n ? s[i + 1] : s[i]) - (i > 0 ? s[i - 1] : s[i])));
+  for (double L : {0.3e-3, 2e-3, 8e-3}) {
+    const double lambda = std::pow(L / (2 * 3.14159265358979323846), 4);
+    double direct = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::vector<double> e(n, 0.0);
+      e[i] = 1;
+      direct += mh::smoothing_spline(s, e, w, lambda).values()[i];
+    }
+    double trace = 0;
+    mh::smoothing_spline(s, std::vector<double>(n, 0.0), w, lambda, &trace);
+    INFO("L = " << L * 1e3 << " mm: tr A " << trace << ", direct " << direct);
+    CHECK(trace == Approx(direct).epsilon(1e-9));
+  }
+  double t0 = 0, tinf = 0;
+  mh::smoothing_spline(s, std::vector<double>(n, 0.0), w, 1e-30, &t0);
+  mh::smoothing_spline(s, std::vector<double>(n, 0.0), w, std::pow(0.2 / (2 * 3.14159265358979323846), 4), &tinf);  // L 200 mm
+  CHECK(t0 == Approx(static_cast<double>(n)).epsilon(1e-6));
+  CHECK(tinf == Approx(2.0).epsilon(1e-2));
+}
+
 TEST_CASE("grid methods on a noisy copy of S1002: smoothed, the pressure converges to the exact profile's",
           "[smoothing][strips][half_space]") {
   mh::CaseFile cf = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/s1002-60e1.json", true);
@@ -86,14 +124,20 @@ TEST_CASE("grid methods on a noisy copy of S1002: smoothed, the pressure converg
   const mh::Profile noisy = noisy_s1002(4e-6);
   const mh::ContactGeometry smoothed = mh::build_geometry(noisy, exact.rail, cf.track, cf.geometry);
   REQUIRE(smoothed.wheel_curve->noise().measured);
-  REQUIRE(smoothed.wheel_gap_curve->smoothing_length() == 5e-3);  // the default
+  // The default, "auto": L from the wheel's own noise, 5 mm (sigma / 3.5 µm)^(2/3) at the
+  // 0.4 mm spacing (profiles.md §7): measured sigma 2.2 µm (the ±4 µm put in z, 2.3 µm RMS, is
+  // partly along the profile on the slopes), L 3.7 mm.
+  const double sigma = smoothed.wheel_gap_curve->smoothing_sigma();
+  CHECK(sigma == Approx(2.2e-6).margin(0.3e-6));
+  CHECK(smoothed.wheel_gap_curve->smoothing_length() == Approx(5e-3 * std::pow(sigma / 3.5e-6, 2.0 / 3)).epsilon(0.02));
   REQUIRE(smoothed.rail_gap_curve->smoothing_length() == 0);      // the exact rail is never smoothed
   REQUIRE(exact.geo.wheel_gap_curve == exact.geo.wheel_curve);     // nor the exact wheel
   mh::GeometryOptions off = cf.geometry;
   off.contact_smoothing = 0;
   const mh::ContactGeometry raw = mh::build_geometry(noisy, exact.rail, cf.track, off);
-  // Measured at L = 5 mm on these four rows: half-space pmax within 0.53 % and area within 1.7 %
-  // of the exact profile's, strips 0.40 % and 2.1 %. Tolerances 3 % / 3 %.
+  // Measured with the automatic length on these four rows: see the INFO lines (at the former
+  // fixed L = 5 mm: half-space pmax within 0.53 % and area within 1.7 % of the exact profile's,
+  // strips 0.40 % and 2.1 %). Tolerances 3 % / 3 %.
   for (double tY : {0.0, 3.0}) {
     for (double Q : {20e3, 80e3}) {
       INFO("t_Y = " << tY << " mm, Q = " << Q / 1e3 << " kN");
@@ -125,4 +169,168 @@ TEST_CASE("grid methods on a noisy copy of S1002: smoothed, the pressure converg
   CHECK(hw.pmax / hr.pmax - 1 > 0.15);
   CHECK(row_alternation(hw.patches[0]) > row_alternation(hr.patches[0]) + 0.2);
   CHECK(row_alternation(hs.patches[0]) < row_alternation(hr.patches[0]) + 0.05);
+}
+
+TEST_CASE("noise estimate: sigma of the curve fit against the scatter and rounding put in", "[smoothing]") {
+  // Reference: the noise put in, uniform ±a normal to the profile (RMS a/√3) and rounding of y
+  // and z to q (RMS q/√12 normal to the profile), added in quadrature. Measured: 1.09-1.27 times
+  // the truth (the median of windows of 5 points, corrected for their 2 degrees of freedom; the
+  // uniform scatter's residuals are less spread than the Gaussian correction assumes). Without
+  // the degrees-of-freedom correction the estimate is 0.55-0.6 times the truth.
+  for (double a : {2e-6, 4e-6})
+    for (double q : {0.0, 1e-5}) {
+      mh::Profile p = mh::make_standard_profile("S1002", mh::Inclination::None, 0.4e-3);
+      mh::testing::measure(p, a, q, 5);
+      const mh::ProfileCurve c(p, {});
+      const double truth = std::sqrt(a * a / 3 + q * q / 12);
+      INFO("±" << a * 1e6 << " µm, printed to " << q * 1e3 << " mm: sigma " << c.noise().sigma * 1e6 << " µm, truth "
+                << truth * 1e6 << " µm");
+      CHECK(c.noise().sigma > 0.95 * truth);
+      CHECK(c.noise().sigma < 1.35 * truth);
+    }
+}
+
+namespace {
+
+struct Compared {
+  double worst_auto = 0, worst_fixed = 0;  // largest |pmax / pmax_exact − 1|
+};
+
+// Strips on the exact constructed pair (dense, no noise, a 0.25 mm fit window) against the
+// "measured" pair with the automatic smoothing and with L forced to 5 mm.
+Compared compare(const mh::CaseFile& cf, const mh::Profile& w_exact, const mh::Profile& r_exact, const mh::Profile& w_noisy,
+                 const mh::Profile& r_noisy, const std::vector<double>& tY_mm, const std::vector<double>& Q_kN) {
+  mh::GeometryOptions exact_opt = cf.geometry;
+  exact_opt.curve.window_half_width = 0.25e-3;
+  exact_opt.wheel_noise = exact_opt.rail_noise = mh::ProfileNoise::Exact;
+  const mh::ContactGeometry ref = mh::build_geometry(w_exact, r_exact, cf.track, exact_opt);
+  const mh::ContactGeometry au = mh::build_geometry(w_noisy, r_noisy, cf.track, cf.geometry);
+  mh::GeometryOptions fixed_opt = cf.geometry;
+  fixed_opt.contact_smoothing = 5e-3;
+  const mh::ContactGeometry fx = mh::build_geometry(w_noisy, r_noisy, cf.track, fixed_opt);
+  Compared c;
+  for (double tY : tY_mm)
+    for (double Q : Q_kN) {
+      const mh::CaseResult r = mh::solve_strip_method(ref, cf.material, tY * 1e-3, Q * 1e3, cf.strips);
+      const mh::CaseResult a = mh::solve_strip_method(au, cf.material, tY * 1e-3, Q * 1e3, cf.strips);
+      const mh::CaseResult f = mh::solve_strip_method(fx, cf.material, tY * 1e-3, Q * 1e3, cf.strips);
+      INFO("t_Y = " << tY << " mm, Q = " << Q << " kN: exact " << r.pmax / 1e6 << " MPa, auto " << a.pmax / 1e6
+                    << ", L = 5 mm " << f.pmax / 1e6);
+      REQUIRE(r.status == mh::CaseStatus::Ok);
+      REQUIRE(a.status == mh::CaseStatus::Ok);
+      REQUIRE(f.status == mh::CaseStatus::Ok);
+      c.worst_auto = std::max(c.worst_auto, std::fabs(a.pmax / r.pmax - 1));
+      c.worst_fixed = std::max(c.worst_fixed, std::fabs(f.pmax / r.pmax - 1));
+    }
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("automatic smoothing on constructed profiles with features at 3-5 mm: a hollow-worn tread keeps its shoulders",
+          "[smoothing][strips]") {
+  // The hollow-worn S1002 (tests/support/constructed_profiles.hpp): tread worn 0.5 mm deep
+  // between y = −15 and 12 mm, shoulders over 5 mm (smallest radius 8.7 mm), contact on the
+  // shoulders at these t_Y (rail y 10–13 and −19 … −21 mm); sampled every 0.4 mm, ±3 µm scatter,
+  // printed to 0.01 mm (sigma 4.0 µm estimated). Measured: auto (L 5.4 mm, down to 2.7 mm at the
+  // shoulders) within 8.3 % of the exact profile's peak pressure; L forced to 5 mm 17–22 % low (it
+  // removes the shoulders' curvature with the noise). Tolerances: auto 10 %, the fixed 5 mm
+  // beyond 15 %. Not within 5 %: at this noise the shortest local length the guard allows
+  // keeps a few per cent of curvature error (profiles.md §7).
+  const mh::CaseFile cf = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/s1002-60e1.json", true);
+  const mh::PairGeometry base = mh::build_pair_geometry(cf);
+  const mh::Profile exact = mh::testing::hollow_wheel(0.05e-3, 0, 0, 0.5e-3, -15e-3, 12e-3, 5e-3);
+  const mh::Profile noisy = mh::testing::hollow_wheel(0.4e-3, 3e-6, 1e-5, 0.5e-3, -15e-3, 12e-3, 5e-3);
+  const Compared c = compare(cf, exact, base.rail, noisy, base.rail, {-4, 0, 2, 4}, {40, 100});
+  INFO("worst peak-pressure error: auto " << 100 * c.worst_auto << " %, L = 5 mm " << 100 * c.worst_fixed << " %");
+  CHECK(c.worst_auto < 0.10);
+  CHECK(c.worst_fixed > 0.15);
+}
+
+TEST_CASE("automatic smoothing on constructed profiles: a 3 mm gauge corner in flange contact", "[smoothing][strips]") {
+  // A 60E1 whose gauge corner is an R3 arc (tests/support/constructed_profiles.hpp), measured
+  // as above (±3 µm, 0.01 mm, sigma 3.3 µm estimated), under the exact S1002 in flange contact
+  // (t_Y 6–10 mm, 7–11 GPa). Measured: auto (L 4.7 mm, 2.4 mm at the corner) within 2.2 % of
+  // the exact rail's peak pressure, L = 5 mm within 5.1 % (the corner contact is short across
+  // the profile, so the smoothing changes it little). Tolerance 5 %.
+  const mh::CaseFile cf = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/s1002-60e1.json", true);
+  const mh::PairGeometry base = mh::build_pair_geometry(cf);
+  const double cant = std::atan(1.0 / 40);
+  const mh::Profile exact = mh::testing::worn_corner_rail(3e-3, 0.05e-3, 0, 0, cant);
+  const mh::Profile noisy = mh::testing::worn_corner_rail(3e-3, 0.4e-3, 3e-6, 1e-5, cant);
+  const Compared c = compare(cf, base.wheel, exact, base.wheel, noisy, {6, 8, 10}, {40, 100});
+  INFO("worst peak-pressure error: auto " << 100 * c.worst_auto << " %, L = 5 mm " << 100 * c.worst_fixed << " %");
+  CHECK(c.worst_auto < 0.05);
+}
+
+TEST_CASE("measurement (not a check): the constructed profiles' table of profiles.md §7", "[.smoothing_table]") {
+  // build/tests/mhcontact_tests "[.smoothing_table]": per profile, the lengths chosen and the
+  // range of the strips' peak-pressure error against the exact profile, auto and L = 5 mm.
+  const mh::CaseFile cf = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/s1002-60e1.json", true);
+  const mh::PairGeometry base = mh::build_pair_geometry(cf);
+  const double cant = std::atan(1.0 / 40);
+  struct Row {
+    std::string name;
+    mh::Profile we, re, wn, rn;
+    std::vector<double> tY;
+  };
+  std::vector<Row> rows;
+  for (double b : {5e-3, 3e-3})
+    rows.push_back({"hollow, shoulders over " + std::to_string(b * 1e3).substr(0, 3) + " mm",
+                    mh::testing::hollow_wheel(0.05e-3, 0, 0, 0.5e-3, -15e-3, 12e-3, b), base.rail,
+                    mh::testing::hollow_wheel(0.4e-3, 3e-6, 1e-5, 0.5e-3, -15e-3, 12e-3, b), base.rail, {-4, -2, 0, 2, 4}});
+  for (const std::vector<double>& tY : {std::vector<double>{6, 7, 8, 10}, std::vector<double>{-4, -2, 0, 2}})
+    rows.push_back({std::string("R3 gauge corner rail, ") + (tY[0] > 0 ? "flange" : "tread"), base.wheel,
+                    mh::testing::worn_corner_rail(3e-3, 0.05e-3, 0, 0, cant), base.wheel,
+                    mh::testing::worn_corner_rail(3e-3, 0.4e-3, 3e-6, 1e-5, cant), tY});
+  for (const Row& r : rows) {
+    mh::GeometryOptions exact_opt = cf.geometry;
+    exact_opt.curve.window_half_width = 0.25e-3;
+    exact_opt.wheel_noise = exact_opt.rail_noise = mh::ProfileNoise::Exact;
+    const mh::ContactGeometry ref = mh::build_geometry(r.we, r.re, cf.track, exact_opt);
+    const mh::ContactGeometry au = mh::build_geometry(r.wn, r.rn, cf.track, cf.geometry);
+    mh::GeometryOptions fixed_opt = cf.geometry;
+    fixed_opt.contact_smoothing = 5e-3;
+    const mh::ContactGeometry fx = mh::build_geometry(r.wn, r.rn, cf.track, fixed_opt);
+    const mh::ProfileCurve& g = au.wheel_gap_curve->smoothing_length() > 0 ? *au.wheel_gap_curve : *au.rail_gap_curve;
+    double alo = 1e9, ahi = -1e9, flo = 1e9, fhi = -1e9;
+    for (double tY : r.tY)
+      for (double Q : {40e3, 100e3}) {
+        const mh::CaseResult e = mh::solve_strip_method(ref, cf.material, tY * 1e-3, Q, cf.strips);
+        const mh::CaseResult a = mh::solve_strip_method(au, cf.material, tY * 1e-3, Q, cf.strips);
+        const mh::CaseResult f = mh::solve_strip_method(fx, cf.material, tY * 1e-3, Q, cf.strips);
+        if (e.status != mh::CaseStatus::Ok || a.status != mh::CaseStatus::Ok || f.status != mh::CaseStatus::Ok) continue;
+        alo = std::min(alo, 100 * (a.pmax / e.pmax - 1)), ahi = std::max(ahi, 100 * (a.pmax / e.pmax - 1));
+        flo = std::min(flo, 100 * (f.pmax / e.pmax - 1)), fhi = std::max(fhi, 100 * (f.pmax / e.pmax - 1));
+      }
+    std::printf("%s: sigma %.2f um, L %.2f mm, local min %.2f mm; auto %+.1f ... %+.1f %%, L = 5 mm %+.1f ... %+.1f %%\n",
+                r.name.c_str(), g.smoothing_sigma() * 1e6, g.smoothing_length() * 1e3, g.smoothing_local_min() * 1e3, alo, ahi,
+                flo, fhi);
+  }
+}
+
+TEST_CASE("case file geometry.smoothing_mm: \"auto\" (the default), a forced length, and what is refused",
+          "[smoothing][input]") {
+  nlohmann::json j = mh::testing::manchester_case_json();
+  const auto parse = [&](const nlohmann::json& v) {
+    j["geometry"] = {{"smoothing_mm", v}};
+    return mh::parse_case_json(j, mh::testing::manchester_case_path(), true);
+  };
+  j.erase("geometry");
+  const mh::CaseFile def = mh::parse_case_json(j, mh::testing::manchester_case_path(), true);
+  CHECK_FALSE(def.geometry.contact_smoothing.has_value());  // auto
+  CHECK(def.resolved_json()["geometry"]["smoothing_mm"] == "auto");
+  CHECK_FALSE(parse("auto").geometry.contact_smoothing.has_value());
+  const mh::CaseFile five = parse(5);
+  REQUIRE(five.geometry.contact_smoothing.has_value());
+  CHECK(*five.geometry.contact_smoothing == Approx(5e-3));
+  CHECK(five.resolved_json()["geometry"]["smoothing_mm"] == 5.0);
+  CHECK(*parse(0).geometry.contact_smoothing == 0.0);  // off
+  for (const nlohmann::json& bad : {nlohmann::json("fast"), nlohmann::json(25), nlohmann::json(-1)}) {
+    j["geometry"] = {{"smoothing_mm", bad}};
+    const std::string e = mh::testing::case_error(j);
+    INFO(e);
+    CHECK(e.find("/geometry/smoothing_mm") != std::string::npos);
+    CHECK(e.find("\"auto\"") != std::string::npos);
+  }
 }

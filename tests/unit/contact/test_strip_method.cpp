@@ -159,9 +159,11 @@ TEST_CASE("strip method against the half-space solver on two measured pairs", "[
       CHECK(st.pmax == Approx(hs.pmax).epsilon(0.05));
       CHECK(st.area == Approx(hs.area).epsilon(0.10));
       CHECK(st.approach == Approx(hs.approach).epsilon(0.03));
-      // Refined where the estimate missed: 10.5 and 11 mm. At 9.5 mm it missed on the unsmoothed
-      // MiniProf wheel and no longer does on the wheel smoothed for contact (profiles.md §7).
-      CHECK(st.patches[0].refined == (tY > 10));
+      // Refined where the estimate missed: 9.5, 10.5 and 11 mm. At 9.5 mm it missed on the
+      // unsmoothed MiniProf wheel, did not on the wheel smoothed at a fixed 5 mm, and misses again
+      // on the default surface, whose length from the noise is shortened at the worn flange root
+      // to keep its geometry (profiles.md §7); the accuracy above holds on all three.
+      CHECK(st.patches[0].refined == (tY > 9));
     }
   }
 }

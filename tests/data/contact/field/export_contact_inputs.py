@@ -63,9 +63,12 @@ def main():
     subprocess.run([a.mhcontact, "geometry", cpath, "-o", gdir], check=True)
     # A profile smoothed for contact: measured (noise class) with a smoothing length > 0.
     gj = json.load(open(os.path.join(gdir, "geometry.json")))
-    L = case.get("geometry", {}).get("smoothing_mm", 5)
-    smoothed = {k: a.surface == "contact" and L > 0 and gj["profiles"][k]["noise"]["class"] == "measured"
+    # geometry.smoothing_mm: a length, 0 (off) or "auto" (the default: a length from each
+    # profile's own noise, reported by `mhcontact geometry` as the profile's contact_smoothing_mm).
+    L = case.get("geometry", {}).get("smoothing_mm", "auto")
+    smoothed = {k: a.surface == "contact" and (L == "auto" or L > 0) and gj["profiles"][k]["noise"]["class"] == "measured"
                 for k in ("wheel", "rail")}
+    Ls = {k: ("%g mm" % L) if L != "auto" else "a length from the profile's noise" for k in ("wheel", "rail")}
     pts = {"wheel": [], "rail": []}
     for r in csv.DictReader(open(os.path.join(gdir, "profiles.csv"))):
         k = r["kind"]
@@ -73,7 +76,7 @@ def main():
         if z != "":  # z_contact_mm is empty where the surface is not built
             pts[k].append((float(r["y_mm"]), float(z)))
     for k in ("rail", "wheel"):
-        what = ("surface of mhcontact's grid methods: the points smoothed for contact at L = %g mm (z_contact_mm)" % L
+        what = ("surface of mhcontact's grid methods: the points smoothed for contact at L = %s (z_contact_mm)" % Ls[k]
                 if smoothed[k] else "points as read (z_mm)")
         write_simpack(os.path.join(a.out, "rail.prr" if k == "rail" else "wheel.prw"), k, pts[k], pair["name"], what)
         print("%s: %d points, %s" % (k, len(pts[k]), what))
@@ -81,7 +84,7 @@ def main():
     sweep = {
         "name": pair["name"], "side": "right", "prefix": "r",
         "surface": {k: ("mhcontact geometry's z_contact_mm: smoothed for contact by mhcontact "
-                        "(geometry.smoothing_mm %g), read by CONTACT without smoothing" % L) if smoothed[k]
+                        "(L = %s), read by CONTACT without smoothing" % Ls[k]) if smoothed[k]
                     else "the points as read (z_mm)" for k in ("rail", "wheel")},
         "profiles": ["rail.prr", "wheel.prw"],
         "deck": {"rail": "rail.prr", "wheel": "wheel.prw",
