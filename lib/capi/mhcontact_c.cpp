@@ -41,16 +41,17 @@ mhc_error fail(mhc_error e, const std::string& msg) {
   return e;
 }
 
-std::uint32_t warning_bit(const std::string& w) {
-  auto starts = [&](const char* p) { return w.compare(0, std::strlen(p), p) == 0; };
-  if (starts("flange_climb:")) return MHC_WARN_FLANGE_CLIMB;
-  if (starts("non_hertzian_excluded:")) return MHC_WARN_NON_HERTZIAN_EXCLUDED;
-  if (starts("non_hertzian:")) return MHC_WARN_NON_HERTZIAN;
-  if (starts("off_profile:")) return MHC_WARN_OFF_PROFILE;
-  if (starts("interacting:")) return MHC_WARN_INTERACTING;
-  if (starts("pressure_spike:")) return MHC_WARN_PRESSURE_SPIKE;
-  if (starts("strip_outlier:")) return MHC_WARN_STRIP_OUTLIER;
-  return MHC_WARN_OTHER;
+std::uint32_t warning_bit(const Warning& w) {
+  switch (w.cls) {
+    case WarningClass::FlangeClimb: return MHC_WARN_FLANGE_CLIMB;
+    case WarningClass::NonHertzianExcluded: return MHC_WARN_NON_HERTZIAN_EXCLUDED;
+    case WarningClass::NonHertzian: return MHC_WARN_NON_HERTZIAN;
+    case WarningClass::OffProfile: return MHC_WARN_OFF_PROFILE;
+    case WarningClass::Interacting: return MHC_WARN_INTERACTING;
+    case WarningClass::PressureSpike: return MHC_WARN_PRESSURE_SPIKE;
+    case WarningClass::StripOutlier: return MHC_WARN_STRIP_OUTLIER;
+    default: return MHC_WARN_OTHER;
+  }
 }
 
 int32_t status_code(CaseStatus s) {
@@ -121,7 +122,7 @@ void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_res
   out->iterations = r.iterations;
   out->n_warnings = static_cast<int32_t>(r.warnings.size());
   out->warnings = 0;
-  for (const std::string& w : r.warnings) out->warnings |= warning_bit(w);
+  for (const Warning& w : r.warnings) out->warnings |= warning_bit(w);
   out->tY_m = tY;
   out->Q_N = std::isnan(Q) ? r.Fz : Q;
   // A case without a solution leaves every result field NaN (empty in cases.csv).
