@@ -20,42 +20,43 @@ namespace {
 CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt) {
   CaseResult mhr = solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian);
   if (mhr.status == CaseStatus::OutOfRange) return mhr;
+  // The judge's tests on the multi-Hertzian answer (judge.hpp): the Hertz validity of each
+  // ellipse, an excluded non-Hertzian candidate, interacting ellipses, a corner of the gap inside
+  // a patch (hertz_validity.hpp, gap_kink: the edge-gap test measures the profiles' sampled
+  // curvature at the patch edges, which on a measured flange misses it, and the pressure there is
+  // singular; docs/methods.md, auto). The first failure, in that order, is the reason given.
+  add_validity_warnings(mhr, G, mat, tY, opt);
   bool hand_on = true;
   Warning why = Warning::auto_to(Method::Strips, AutoReason::Status);
+  auto first = [&](WarningClass c) {
+    return std::find_if(mhr.warnings.begin(), mhr.warnings.end(), [c](const Warning& w) { return w.cls == c; });
+  };
   if (mhr.status != CaseStatus::Ok) {
     why.status = mhr.status;
-  } else if (auto L = std::find_if(mhr.loaded.begin(), mhr.loaded.end(), [](const LoadedEllipse& e) { return !e.validity.valid; });
-             L != mhr.loaded.end()) {
-    why.reason = AutoReason::NotHertzian;
-    why.contact = L->ellipse;
-  } else if (has_class(mhr.warnings, WarningClass::NonHertzianExcluded)) {
+  } else if (auto w = first(WarningClass::NonHertzian); w != mhr.warnings.end()) {
+    why.contact = w->contact;
+    // The gap-corner test runs only on rows that passed the others: its warning is alone.
+    if (w->n == 1 && w->m[0].q == Quantity::GapKink) {
+      why.reason = AutoReason::GapKink;
+      why.add(Quantity::GapKink, w->m[0].value, w->m[0].rel, w->m[0].limit);
+    } else {
+      why.reason = AutoReason::NotHertzian;
+    }
+  } else if (first(WarningClass::NonHertzianExcluded) != mhr.warnings.end()) {
     why.reason = AutoReason::CandidateExcluded;
-  } else if (const EllipseInteraction e = interacting_ellipses(mhr, opt.strips.d_comb); e.found) {
+  } else if (auto i = first(WarningClass::Interacting); i != mhr.warnings.end()) {
     // Contacts close enough to interact elastically: each ellipse is solved on its own, while the
     // strip method couples them (the gauge-shoulder case of §9; judge.hpp).
     why.reason = AutoReason::Interact;
-    why.contact = e.first;
-    why.contact2 = e.second;
+    why.contact = i->contact;
+    why.contact2 = i->contact2;
   } else {
     hand_on = false;
-    // A corner of the gap the grid methods solve on, inside a patch (hertz_validity.hpp, gap_kink):
-    // the test above measures the profiles' sampled curvature at the patch edges, which on a
-    // measured flange misses it, and the pressure there is singular (docs/methods.md, auto).
-    if (!mhr.loaded.empty()) {
-      const WheelRailGap gap(G, tY);
-      for (const auto& L : mhr.loaded) {
-        const GapKink k = gap_kink(gap, L.g, L.B, L.s.b, L.s.p0, 0.5 * mat.E_star(), mhr.approach, opt.multi_hertzian.validity);
-        if (!k.valid) {
-          hand_on = true;
-          why.reason = AutoReason::GapKink;
-          why.contact = L.ellipse;
-          k.add_to(why, opt.multi_hertzian.validity);
-          break;
-        }
-      }
-    }
   }
-  if (!hand_on) return mhr;
+  if (!hand_on) {
+    decide_status(mhr);
+    return mhr;
+  }
   // The grid methods start from the elastic multi-Hertzian solution: mhr itself when the model
   // is elastic, else one elastic solve shared by strips and the half-space fallback.
   CaseResult elastic_mh;
@@ -74,7 +75,7 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
   // but robust, solves the case, and its answer is taken only if it passes the same checks; else
   // the strip row stays, with its status and warnings.
   const std::vector<WarningClass> strip_failed = validity_failures(sr.warnings);
-  if (sr.status == CaseStatus::Ok && strip_failed.empty()) return sr;
+  if (sr.status == CaseStatus::Ok && strip_failed.empty()) return sr;  // judged by solve_contact
   Warning to_hs = Warning::auto_to(Method::HalfSpace, AutoReason::StripsNotConverged);
   if (sr.status == CaseStatus::Ok) {
     to_hs.reason = AutoReason::StripsFailed;
@@ -108,10 +109,10 @@ CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double t
     case Method::MultiHertzian:
     default: r = solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian); break;
   }
-  // Whether the row can be trusted, by one rule for every method (docs/status.md): auto's rows
-  // handed to a grid method are judged by that method's checks, the multi-Hertzian rows it keeps
-  // passed the Hertz and interaction tests already.
-  judge_validity(r, opt.strips.d_comb);
+  // Whether the row can be trusted, by one judge for every method (judge.hpp, docs/status.md).
+  // auto's multi-Hertzian rows were judged already (their tests decided whether to keep them);
+  // the grid rows it hands back are judged here like any other.
+  if (opt.method != Method::Auto || r.method != Method::MultiHertzian) judge_case(r, G, mat, tY, opt);
   return r;
 }
 
@@ -122,7 +123,7 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
     return;
   }
   solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian, out);
-  judge_validity(out, opt.strips.d_comb);  // as above
+  judge_case(out, G, mat, tY, opt);  // as above
 }
 
 }  // namespace mh

@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "contact/ellipse/hertz_validity.hpp"
+#include "geometry/gap.hpp"
+
 namespace mh {
 
 EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb) {
@@ -17,15 +20,43 @@ EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb) {
   return e;
 }
 
-void judge_validity(CaseResult& r, double d_comb) {
-  if (r.method == Method::MultiHertzian) {
-    const EllipseInteraction e = interacting_ellipses(r, d_comb);
-    if (e.found) {
-      Warning w(WarningClass::Interacting, ContactKind::EllipsePair, e.first);
-      w.contact2 = e.second;
-      r.warnings.push_back(w.add(Quantity::EdgeGap, e.edge_gap, '<', d_comb));
-    }
+namespace {
+
+void add_interaction_warning(CaseResult& r, double d_comb) {
+  if (r.method != Method::MultiHertzian) return;
+  const EllipseInteraction e = interacting_ellipses(r, d_comb);
+  if (!e.found) return;
+  Warning w(WarningClass::Interacting, ContactKind::EllipsePair, e.first);
+  w.contact2 = e.second;
+  r.warnings.push_back(w.add(Quantity::EdgeGap, e.edge_gap, '<', d_comb));
+}
+
+}  // namespace
+
+void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY,
+                           const MethodOptions& opt) {
+  if (r.method != Method::MultiHertzian) return;
+  add_interaction_warning(r, opt.strips.d_comb);
+  if (r.status != CaseStatus::Ok || r.loaded.empty()) return;
+  // The gap-corner test only where every other Hertz test passed: it samples the gap across
+  // each patch (~165 gap evaluations per ellipse), the costliest of the tests, and a row that
+  // failed another is outside validity already.
+  for (const Warning& w : r.warnings)
+    if (w.cls == WarningClass::NonHertzian || w.cls == WarningClass::NonHertzianExcluded ||
+        w.cls == WarningClass::Interacting)
+      return;
+  const HertzValidityOptions& vo = opt.multi_hertzian.validity;
+  const WheelRailGap gap(G, tY);
+  for (const LoadedEllipse& L : r.loaded) {
+    const GapKink k = gap_kink(gap, L.g, L.B, L.s.b, L.s.p0, 0.5 * mat.E_star(), r.approach, vo);
+    if (k.valid) continue;
+    Warning w(WarningClass::NonHertzian, ContactKind::Ellipse, L.ellipse);
+    k.add_to(w, vo);
+    r.warnings.push_back(w);
   }
+}
+
+void decide_status(CaseResult& r) {
   if (r.status != CaseStatus::Ok) return;
   const std::vector<WarningClass> classes = validity_failures(r.warnings);
   if (classes.empty()) return;
@@ -33,6 +64,16 @@ void judge_validity(CaseResult& r, double d_comb) {
   r.message = "outside the validity of the method: ";
   for (std::size_t i = 0; i < classes.size(); ++i) r.message += std::string(i ? ", " : "") + to_string(classes[i]);
   r.message += " (see warnings)";
+}
+
+void judge_case(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY, const MethodOptions& opt) {
+  add_validity_warnings(r, G, mat, tY, opt);
+  decide_status(r);
+}
+
+void judge_validity(CaseResult& r, double d_comb) {
+  add_interaction_warning(r, d_comb);
+  decide_status(r);
 }
 
 }  // namespace mh

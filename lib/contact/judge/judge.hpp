@@ -3,6 +3,8 @@
 // one rule for every method and every entry point (the command line, batches, the C API and
 // Python all reach it through solve_contact(), or call it directly for an approach given).
 #include "contact/case_result.hpp"
+#include "contact/options.hpp"
+#include "geometry/contact_geometry.hpp"
 
 namespace mh {
 
@@ -17,10 +19,28 @@ struct EllipseInteraction {
 };
 EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb);
 
-/// The status rule (docs/status.md), applied once to every method's result (solve_contact):
-/// a multi-Hertzian result with interacting ellipses gets the warning
-/// `interacting:ellipses=I+J:edge_gap_mm=G<D`; then an `ok` result that carries a warning of a
-/// validity class becomes OutsideValidity, its message naming the classes. Other statuses stay.
+/// The judge (docs/status.md): decide the status of a solved case r of the geometry G at t_Y
+/// [m] with material mat and options opt, and add the warnings of its tests. Every method and
+/// entry point calls it once per case (solve_contact(), and the C interface's approach-given
+/// solve); `auto` judges its multi-Hertzian answer with the same tests before keeping it, so a
+/// multi-Hertzian row is `ok` exactly when `auto` keeps it (or would, but for off_profile).
+///  1. add_validity_warnings(): a multi-Hertzian row gets `interacting` for two ellipses closer
+///     than d_comb and, when it passed every Hertz test (no non_hertzian, non_hertzian_excluded
+///     or interacting warning) and converged, `non_hertzian:ellipse=K:gap_kink=R>0.1` for each
+///     loaded ellipse with a corner of the gap inside its patch (hertz_validity.hpp, gap_kink).
+///  2. decide_status(): an `ok` row with a warning of a validity class becomes OutsideValidity,
+///     its message naming the classes; other statuses stay.
+void judge_case(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY, const MethodOptions& opt);
+
+/// Step 1 of judge_case() alone: the warnings, the status untouched (auto reads them to decide
+/// whether to hand the case on, and starts the grid methods from the unjudged row).
+void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY,
+                           const MethodOptions& opt);
+/// Step 2 of judge_case() alone.
+void decide_status(CaseResult& r);
+
+/// The judge without the geometry (unit tests of the rule on hand-made results): the
+/// `interacting` warning and decide_status(), no gap-corner test.
 void judge_validity(CaseResult& r, double d_comb);
 
 }  // namespace mh
