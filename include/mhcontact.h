@@ -305,6 +305,45 @@ MHC_API mhc_error mhc_solve_many(const mhc_pair* pair, int32_t prescribe, size_t
                                  const double* roll_rad, const double* value, mhc_result* out, size_t result_size,
                                  int32_t n_threads);
 
+
+/* ---- warnings of the last case --------------------------------------------------------------- */
+
+/** One warning of a case as data (docs/status.md, docs/c-api.md): the same as the `warnings`
+ *  column of cases.csv, whose text mhc_warning_text gives. Measures are in SI (`unit`: "1", "m",
+ *  "Pa" or "count"); `name` is the quantity's name in the text, which carries the text's unit
+ *  ("edge_gap_mm": the text is in mm, value_si in m). */
+#define MHC_WARNING_MAX_MEASURES 6
+typedef struct mhc_warning_measure {
+  const char* name;    /**< "b_over_R", "gap_kink", "edge_gap_mm", ... (static storage) */
+  const char* unit;    /**< SI unit of value_si and limit_si: "1", "m", "Pa", "count" */
+  double value_si;     /**< the measured value */
+  double limit_si;     /**< the limit it crossed (meaningless when relation is 0) */
+  int32_t relation;    /**< '>' value above the limit, '<' below, 0 no limit */
+  int32_t reserved;
+} mhc_warning_measure;
+typedef struct mhc_warning {
+  size_t struct_size;       /**< set by the caller: sizeof(mhc_warning) */
+  const char* class_name;   /**< "non_hertzian", "interacting", "auto", ... (static storage) */
+  int32_t outside_validity; /**< 1 when this class puts a row outside validity, 0 informational */
+  int32_t contact_kind;     /**< 0 the case, 1 a loaded ellipse, 2 a grid patch, 3 a pair of ellipses */
+  int32_t contact;          /**< 1-based ellipse or patch index (0: the case) */
+  int32_t contact2;         /**< the second ellipse of a pair (contact_kind 3) */
+  int32_t n_measures;
+  int32_t reserved;
+  mhc_warning_measure measure[MHC_WARNING_MAX_MEASURES];
+} mhc_warning;
+
+/** Number of warnings of the last case solved with `ws` (mhc_solve_load, mhc_solve_approach;
+ *  mhc_result.n_warnings of that case), 0 before any. */
+MHC_API int32_t mhc_result_n_warnings(const mhc_workspace* ws);
+/** Warning i (0-based) of the last case solved with `ws`, as data into *out (out->struct_size
+ *  must be set). MHC_ERR_ARGUMENT when i is out of range. */
+MHC_API mhc_error mhc_result_warning(const mhc_workspace* ws, int32_t i, mhc_warning* out);
+/** Warning i of the last case solved with `ws` as written in cases.csv
+ *  ("non_hertzian:ellipse=3:gap_kink=2.4>0.1"); "" when i is out of range. Valid until the
+ *  thread's next call of this function. */
+MHC_API const char* mhc_warning_text(const mhc_workspace* ws, int32_t i);
+
 #ifdef __cplusplus
 }
 #endif

@@ -104,6 +104,52 @@ const char* method_name(int32_t m) {
   return m >= 0 && m <= 3 ? names[m] : "?";
 }
 
+/// The warnings of the last case solved with `ws`, as data and text (mhc_result_warning,
+/// mhc_warning_text): read without the GIL, turned into dicts with it.
+struct CaseWarning {
+  mhc_warning w;
+  std::string text;
+};
+std::vector<CaseWarning> case_warnings(const mhc_workspace* ws) {
+  std::vector<CaseWarning> v(static_cast<std::size_t>(mhc_result_n_warnings(ws)));
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    v[k].w.struct_size = sizeof(mhc_warning);
+    mhc_result_warning(ws, static_cast<int32_t>(k), &v[k].w);
+    v[k].text = mhc_warning_text(ws, static_cast<int32_t>(k));
+  }
+  return v;
+}
+
+/// One warning as a dict: class, outside_validity, contact_kind ("case", "ellipse", "patch",
+/// "ellipses"), contact, contact2, measures (name, value_si, limit_si, relation, unit), text.
+py::list warnings_list(const std::vector<CaseWarning>& ws) {
+  static const char* kinds[] = {"case", "ellipse", "patch", "ellipses"};
+  py::list out;
+  for (const CaseWarning& c : ws) {
+    py::dict d;
+    d["class"] = c.w.class_name ? c.w.class_name : "";
+    d["outside_validity"] = c.w.outside_validity != 0;
+    d["contact_kind"] = c.w.contact_kind >= 0 && c.w.contact_kind <= 3 ? kinds[c.w.contact_kind] : "?";
+    d["contact"] = c.w.contact;
+    d["contact2"] = c.w.contact2;
+    py::list ms;
+    for (int k = 0; k < c.w.n_measures && k < MHC_WARNING_MAX_MEASURES; ++k) {
+      const mhc_warning_measure& m = c.w.measure[k];
+      py::dict md;
+      md["name"] = m.name;
+      md["value_si"] = m.value_si;
+      md["limit_si"] = m.limit_si;
+      md["relation"] = m.relation ? std::string(1, static_cast<char>(m.relation)) : std::string();
+      md["unit"] = m.unit;
+      ms.append(md);
+    }
+    d["measures"] = ms;
+    d["text"] = c.text;
+    out.append(d);
+  }
+  return out;
+}
+
 py::dict result_dict(const mhc_result& r) {
   py::dict d;
   d["tY_mm"] = r.tY_m * 1e3;
@@ -284,9 +330,12 @@ PYBIND11_MODULE(_core, m) {
             r.struct_size = sizeof r;
             const mhc_error e = approach ? mhc_solve_approach(p.p, ws, tY_m, roll_rad, value, &r)
                                          : mhc_solve_load(p.p, ws, tY_m, roll_rad, value, &r);
+            const std::vector<CaseWarning> w = e == MHC_OK ? case_warnings(ws) : std::vector<CaseWarning>();
             mhc_workspace_free(ws);
             check(e);
-            return result_dict(r);
+            py::dict d = result_dict(r);
+            d["warnings"] = warnings_list(w);
+            return d;
           })
       .def("_solve_many", [](const Pair& p, py::array_t<double, py::array::c_style | py::array::forcecast> tY_m,
                              py::array_t<double, py::array::c_style | py::array::forcecast> value, bool approach,
@@ -308,6 +357,7 @@ PYBIND11_MODULE(_core, m) {
             int32_t* nw = n_warnings.mutable_data();
             const double* t = tY_m.data();
             const double* v = value.data();
+            std::vector<std::vector<CaseWarning>> warns(n);
             mhc_error e;
             {
               py::gil_scoped_release nogil;  // the solve runs without the GIL
@@ -315,7 +365,10 @@ PYBIND11_MODULE(_core, m) {
                 mhc_result r;
                 r.struct_size = sizeof r;
                 const mhc_error c = mh::capi::solve_case(*p.p, ws, approach, t[i], 0.0, v[i], &r);
-                if (c == MHC_OK) fill_columns(r, i, f.data(), st, me, nc, pl, nw);
+                if (c == MHC_OK) {
+                  fill_columns(r, i, f.data(), st, me, nc, pl, nw);
+                  warns[i] = case_warnings(&ws);
+                }
                 return c;
               });
             }
@@ -327,6 +380,9 @@ PYBIND11_MODULE(_core, m) {
             d["n_contacts"] = n_contacts;
             d["plastic"] = plastic;
             d["n_warnings"] = n_warnings;
+            py::list wl;
+            for (const auto& w : warns) wl.append(warnings_list(w));
+            d["warnings"] = wl;
             return d;
           });
 }

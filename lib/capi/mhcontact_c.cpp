@@ -42,16 +42,17 @@ mhc_error fail(mhc_error e, const std::string& msg) {
   return e;
 }
 
-std::uint32_t warning_bit(const std::string& w) {
-  auto starts = [&](const char* p) { return w.compare(0, std::strlen(p), p) == 0; };
-  if (starts("flange_climb:")) return MHC_WARN_FLANGE_CLIMB;
-  if (starts("non_hertzian_excluded:")) return MHC_WARN_NON_HERTZIAN_EXCLUDED;
-  if (starts("non_hertzian:")) return MHC_WARN_NON_HERTZIAN;
-  if (starts("off_profile:")) return MHC_WARN_OFF_PROFILE;
-  if (starts("interacting:")) return MHC_WARN_INTERACTING;
-  if (starts("pressure_spike:")) return MHC_WARN_PRESSURE_SPIKE;
-  if (starts("strip_outlier:")) return MHC_WARN_STRIP_OUTLIER;
-  return MHC_WARN_OTHER;
+std::uint32_t warning_bit(const Warning& w) {
+  switch (w.cls) {
+    case WarningClass::FlangeClimb: return MHC_WARN_FLANGE_CLIMB;
+    case WarningClass::NonHertzianExcluded: return MHC_WARN_NON_HERTZIAN_EXCLUDED;
+    case WarningClass::NonHertzian: return MHC_WARN_NON_HERTZIAN;
+    case WarningClass::OffProfile: return MHC_WARN_OFF_PROFILE;
+    case WarningClass::Interacting: return MHC_WARN_INTERACTING;
+    case WarningClass::PressureSpike: return MHC_WARN_PRESSURE_SPIKE;
+    case WarningClass::StripOutlier: return MHC_WARN_STRIP_OUTLIER;
+    default: return MHC_WARN_OTHER;
+  }
 }
 
 int32_t status_code(CaseStatus s) {
@@ -122,7 +123,7 @@ void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_res
   out->iterations = r.iterations;
   out->n_warnings = static_cast<int32_t>(r.warnings.size());
   out->warnings = 0;
-  for (const std::string& w : r.warnings) out->warnings |= warning_bit(w);
+  for (const Warning& w : r.warnings) out->warnings |= warning_bit(w);
   out->tY_m = tY;
   out->Q_N = std::isnan(Q) ? r.Fz : Q;
   // A case without a solution leaves every result field NaN (empty in cases.csv).
@@ -224,7 +225,7 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
       return fail(MHC_ERR_UNSUPPORTED, std::string("the approach-prescribed solve needs the multi-hertzian method, "
                                                    "not ") + to_string(pair.options.method));
     solve_multi_hertz_approach(pair.pg.geo, pair.material, tY, value, pair.options.multi_hertzian, ws.approach, ws.r);
-    judge_validity(ws.r, pair.options.strips.d_comb);  // as solve_contact does for a load given
+    judge_case(ws.r, pair.pg.geo, pair.material, tY, pair.options);  // the one judge, as solve_contact
     fill_result(ws.r, tY, kNaN, pair.plastic, out);
   } else {
     if (const std::string bad = check_load(value); !bad.empty()) return fail(MHC_ERR_ARGUMENT, bad);
@@ -639,3 +640,47 @@ mhc_error mhc_solve_many(const mhc_pair* pair, int32_t prescribe, size_t n, cons
 }
 
 }  // extern "C"
+
+int32_t mhc_result_n_warnings(const mhc_workspace* ws) {
+  return ws ? static_cast<int32_t>(ws->r.warnings.size()) : 0;
+}
+
+mhc_error mhc_result_warning(const mhc_workspace* ws, int32_t i, mhc_warning* out) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(ws, "ws")) return e;
+  if (mhc_error e = need(out, "out")) return e;
+  if (out->struct_size < sizeof(mhc_warning))
+    return fail(MHC_ERR_ARGUMENT, "out->struct_size = " + std::to_string(out->struct_size) +
+                                      ": set it to sizeof(mhc_warning) (" + std::to_string(sizeof(mhc_warning)) + ")");
+  if (i < 0 || static_cast<std::size_t>(i) >= ws->r.warnings.size())
+    return fail(MHC_ERR_ARGUMENT, "warning " + std::to_string(i) + ": the case has " +
+                                      std::to_string(ws->r.warnings.size()) + " (0-based index)");
+  const Warning& w = ws->r.warnings[static_cast<std::size_t>(i)];
+  const std::size_t size = out->struct_size;
+  std::memset(static_cast<void*>(out), 0, sizeof(mhc_warning));
+  out->struct_size = size;
+  out->class_name = to_string(w.cls);
+  out->outside_validity = is_validity_class(w.cls) ? 1 : 0;
+  out->contact_kind = static_cast<int32_t>(w.kind);
+  out->contact = w.contact;
+  out->contact2 = w.contact2;
+  out->n_measures = w.n;
+  for (int k = 0; k < w.n && k < MHC_WARNING_MAX_MEASURES; ++k) {
+    const Measure& m = w.m[static_cast<std::size_t>(k)];
+    mhc_warning_measure& o = out->measure[k];
+    o.name = name(m.q);
+    o.unit = si_unit(m.q);
+    o.value_si = m.value;
+    o.limit_si = m.rel ? m.limit : std::numeric_limits<double>::quiet_NaN();
+    o.relation = m.rel;
+  }
+  return MHC_OK;
+}
+
+const char* mhc_warning_text(const mhc_workspace* ws, int32_t i) {
+  thread_local std::string text;
+  text.clear();
+  if (ws && i >= 0 && static_cast<std::size_t>(i) < ws->r.warnings.size())
+    text = warning_text(ws->r.warnings[static_cast<std::size_t>(i)]);
+  return text.c_str();
+}

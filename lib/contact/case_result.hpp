@@ -3,6 +3,7 @@
 // the case summary every method fills (forces, approach, maximum pressure, area, number of
 // contacts), and the method's own detail: loaded ellipses (multi-Hertzian) or contact patches
 // (grid methods). The output schema (lib/output/case_tables) is written from this struct alone.
+// Its status and warnings are decided by the judge (contact/judge/judge.hpp).
 #include <cmath>
 #include <string>
 #include <vector>
@@ -10,41 +11,10 @@
 #include "contact/ellipse/ellipse_law.hpp"
 #include "contact/options.hpp"
 #include "contact/ellipse/hertz_validity.hpp"
+#include "contact/judge/status.hpp"
 #include "geometry/contact_geometry.hpp"
 
 namespace mh {
-
-/// The outcome of one case's solve (a batch's `invalid_pair` is not a solver outcome: jobs/batch.hpp).
-/// Ok and OutsideValidity rows carry an answer (their numbers are written); OutsideValidity says
-/// it is not to be trusted: the method solved the case outside the conditions it is valid in, and
-/// the warnings say which (judge_validity() below; docs/status.md). NoContact and OutOfRange rows
-/// have no answer; a NotConverged row keeps its last iterate.
-enum class CaseStatus { Ok, OutsideValidity, NoContact, OutOfRange, NotConverged };
-const char* to_string(CaseStatus s);
-/// True for the statuses without a usable answer (no_contact, out_of_range, not_converged): the
-/// cases a run counts as `failed` and exits 1 for. Ok and OutsideValidity are answers.
-bool is_failure(CaseStatus s);
-
-/// The class of a warning: its text before the first ':' ("non_hertzian" of
-/// "non_hertzian:ellipse=4:b_over_R=22.331>0.3").
-std::string warning_class(const std::string& warning);
-
-/// The warning classes a case can carry, each with whether it puts the row outside its method's
-/// validity (docs/status.md). Every class but `auto` does; a class not listed here (a check added
-/// later) does too, so a new check can never leave a row `ok` by omission.
-struct WarningClassInfo {
-  const char* name;
-  bool outside_validity;
-  const char* meaning;
-};
-const std::vector<WarningClassInfo>& warning_classes();
-/// Whether a warning of class `cls` puts its row outside validity: every class but the
-/// informational ones of warning_classes() (`auto`, `flange_climb`); a class not listed does.
-bool is_validity_class(const std::string& cls);
-
-/// The distinct validity classes among `warnings`, in order of first appearance.
-std::vector<std::string> validity_failures(const std::vector<std::string>& warnings);
-
 
 /// One loaded ellipse of a multi-Hertzian solution.
 struct LoadedEllipse {
@@ -118,7 +88,7 @@ struct CaseResult {
   CaseStatus status = CaseStatus::Ok;
   Method method = Method::MultiHertzian;  ///< the method that solved it (never Auto)
   std::string message;               ///< why, when not ok
-  std::vector<std::string> warnings; ///< e.g. a non-Hertzian candidate that would have touched
+  std::vector<Warning> warnings;     ///< as data (contact/judge/status.hpp); text only where written
   /// [m] multi-Hertzian only: the vertical VIRTUAL penetration δz of eq. 11 (h0 = δ/2 for a
   /// sphere), from the geometric contact position. NaN for the grid methods.
   double dz = 0;
@@ -134,22 +104,5 @@ struct CaseResult {
   std::vector<LoadedEllipse> loaded;  ///< multi-Hertzian: in increasing ellipse index
   std::vector<PatchResult> patches;   ///< grid methods: in increasing rail y
 };
-
-/// Two loaded ellipses close enough to interact elastically, which the multi-Hertzian method
-/// solves each on its own (docs/method.md §9, the gauge-shoulder case): the lateral gap between
-/// their edges on the rail is below d_comb, the distance at which the grid methods make the
-/// regions one patch. `found` false when no pair is that close.
-struct EllipseInteraction {
-  bool found = false;
-  int first = 0, second = 0;  ///< the ellipses (LoadedEllipse::ellipse) of the first such pair
-  double edge_gap = 0;        ///< [m] lateral gap between their edges on the rail (negative: overlap)
-};
-EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb);
-
-/// The status rule (docs/status.md), applied once to every method's result (solve_contact):
-/// a multi-Hertzian result with interacting ellipses gets the warning
-/// `interacting:ellipses=I+J:edge_gap_mm=G<D`; then an `ok` result that carries a warning of a
-/// validity class becomes OutsideValidity, its message naming the classes. Other statuses stay.
-void judge_validity(CaseResult& r, double d_comb);
 
 }  // namespace mh

@@ -1,10 +1,12 @@
 #include "contact/solve.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "contact/ellipse/hertz_validity.hpp"
+#include "contact/judge/judge.hpp"
 #include "geometry/gap.hpp"
 
 namespace mh {
@@ -18,31 +20,43 @@ namespace {
 CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt) {
   CaseResult mhr = solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian);
   if (mhr.status == CaseStatus::OutOfRange) return mhr;
-  std::string reason;
-  if (mhr.status != CaseStatus::Ok) reason = to_string(mhr.status);
-  for (const auto& L : mhr.loaded)
-    if (reason.empty() && !L.validity.valid) reason = "ellipse " + std::to_string(L.ellipse) + " not Hertzian";
-  for (const auto& w : mhr.warnings)
-    if (reason.empty() && w.rfind("non_hertzian_excluded", 0) == 0) reason = "non-Hertzian candidate excluded";
-  // Contacts close enough to interact elastically: each ellipse is solved on its own, while the
-  // strip method couples them (the gauge-shoulder case of §9; case_result.hpp).
-  if (reason.empty())
-    if (const EllipseInteraction e = interacting_ellipses(mhr, opt.strips.d_comb); e.found)
-      reason = "ellipses " + std::to_string(e.first) + " and " + std::to_string(e.second) + " interact";
-  // A corner of the gap the grid methods solve on, inside a patch (hertz_validity.hpp, gap_kink):
-  // the test above measures the profiles' sampled curvature at the patch edges, which on a
-  // measured flange misses it, and the pressure there is singular (docs/methods.md, auto).
-  if (reason.empty() && !mhr.loaded.empty()) {
-    const WheelRailGap gap(G, tY);
-    for (const auto& L : mhr.loaded) {
-      const GapKink k = gap_kink(gap, L.g, L.B, L.s.b, L.s.p0, 0.5 * mat.E_star(), mhr.approach, opt.multi_hertzian.validity);
-      if (!k.valid) {
-        reason = "ellipse " + std::to_string(L.ellipse) + " " + k.describe(opt.multi_hertzian.validity);
-        break;
-      }
+  // The judge's tests on the multi-Hertzian answer (judge.hpp): the Hertz validity of each
+  // ellipse, an excluded non-Hertzian candidate, interacting ellipses, a corner of the gap inside
+  // a patch (hertz_validity.hpp, gap_kink: the edge-gap test measures the profiles' sampled
+  // curvature at the patch edges, which on a measured flange misses it, and the pressure there is
+  // singular; docs/methods.md, auto). The first failure, in that order, is the reason given.
+  add_validity_warnings(mhr, G, mat, tY, opt);
+  bool hand_on = true;
+  Warning why = Warning::auto_to(Method::Strips, AutoReason::Status);
+  auto first = [&](WarningClass c) {
+    return std::find_if(mhr.warnings.begin(), mhr.warnings.end(), [c](const Warning& w) { return w.cls == c; });
+  };
+  if (mhr.status != CaseStatus::Ok) {
+    why.status = mhr.status;
+  } else if (auto w = first(WarningClass::NonHertzian); w != mhr.warnings.end()) {
+    why.contact = w->contact;
+    // The gap-corner test runs only on rows that passed the others: its warning is alone.
+    if (w->n == 1 && w->m[0].q == Quantity::GapKink) {
+      why.reason = AutoReason::GapKink;
+      why.add(Quantity::GapKink, w->m[0].value, w->m[0].rel, w->m[0].limit);
+    } else {
+      why.reason = AutoReason::NotHertzian;
     }
+  } else if (first(WarningClass::NonHertzianExcluded) != mhr.warnings.end()) {
+    why.reason = AutoReason::CandidateExcluded;
+  } else if (auto i = first(WarningClass::Interacting); i != mhr.warnings.end()) {
+    // Contacts close enough to interact elastically: each ellipse is solved on its own, while the
+    // strip method couples them (the gauge-shoulder case of §9; judge.hpp).
+    why.reason = AutoReason::Interact;
+    why.contact = i->contact;
+    why.contact2 = i->contact2;
+  } else {
+    hand_on = false;
   }
-  if (reason.empty()) return mhr;
+  if (!hand_on) {
+    decide_status(mhr);
+    return mhr;
+  }
   // The grid methods start from the elastic multi-Hertzian solution: mhr itself when the model
   // is elastic, else one elastic solve shared by strips and the half-space fallback.
   CaseResult elastic_mh;
@@ -54,23 +68,33 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
     start = &elastic_mh;
   }
   CaseResult sr = solve_strip_method(G, mat, tY, Q, opt.strips, start);
-  sr.warnings.insert(sr.warnings.begin(), "auto:strips:" + reason);
+  sr.warnings.insert(sr.warnings.begin(), why);
   // A strip answer is kept when it passes its physical checks (contact/grid/grid_checks.hpp: no
   // warning of a validity class). Otherwise (not converged, e.g. a load inside a jump of its
   // N(δ), docs/strips.md, or a strip_outlier, a hole, ...) the exact half-space method, slower
   // but robust, solves the case, and its answer is taken only if it passes the same checks; else
   // the strip row stays, with its status and warnings.
-  if (sr.status == CaseStatus::Ok && validity_failures(sr.warnings).empty()) return sr;
-  const std::string why = sr.status == CaseStatus::Ok ? "strips failed " + validity_failures(sr.warnings).front()
-                                                      : "strips not converged";
+  const std::vector<WarningClass> strip_failed = validity_failures(sr.warnings);
+  if (sr.status == CaseStatus::Ok && strip_failed.empty()) return sr;  // judged by solve_contact
+  Warning to_hs = Warning::auto_to(Method::HalfSpace, AutoReason::StripsNotConverged);
+  if (sr.status == CaseStatus::Ok) {
+    to_hs.reason = AutoReason::StripsFailed;
+    to_hs.failed = strip_failed.front();
+  }
   CaseResult hr = solve_half_space(G, mat, tY, Q, opt.half_space, start);
-  if (hr.status != CaseStatus::Ok || !validity_failures(hr.warnings).empty()) {
-    sr.warnings.push_back("auto:half-space:rejected:" + std::string(to_string(hr.status)) +
-                          (validity_failures(hr.warnings).empty() ? "" : ":" + validity_failures(hr.warnings).front()));
+  const std::vector<WarningClass> hs_failed = validity_failures(hr.warnings);
+  if (hr.status != CaseStatus::Ok || !hs_failed.empty()) {
+    Warning rejected = Warning::auto_to(Method::HalfSpace, AutoReason::HalfSpaceRejected);
+    rejected.status = hr.status;
+    if (!hs_failed.empty()) {
+      rejected.has_failed = true;
+      rejected.failed = hs_failed.front();
+    }
+    sr.warnings.push_back(rejected);
     return sr;
   }
-  hr.warnings.insert(hr.warnings.begin(), "auto:half-space:" + why);
-  hr.warnings.insert(hr.warnings.begin(), "auto:strips:" + reason);
+  hr.warnings.insert(hr.warnings.begin(), to_hs);
+  hr.warnings.insert(hr.warnings.begin(), why);
   return hr;
 }
 
@@ -85,10 +109,10 @@ CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double t
     case Method::MultiHertzian:
     default: r = solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian); break;
   }
-  // Whether the row can be trusted, by one rule for every method (docs/status.md): auto's rows
-  // handed to a grid method are judged by that method's checks, the multi-Hertzian rows it keeps
-  // passed the Hertz and interaction tests already.
-  judge_validity(r, opt.strips.d_comb);
+  // Whether the row can be trusted, by one judge for every method (judge.hpp, docs/status.md).
+  // auto's multi-Hertzian rows were judged already (their tests decided whether to keep them);
+  // the grid rows it hands back are judged here like any other.
+  if (opt.method != Method::Auto || r.method != Method::MultiHertzian) judge_case(r, G, mat, tY, opt);
   return r;
 }
 
@@ -99,7 +123,7 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
     return;
   }
   solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian, out);
-  judge_validity(out, opt.strips.d_comb);  // as above
+  judge_case(out, G, mat, tY, opt);  // as above
 }
 
 }  // namespace mh

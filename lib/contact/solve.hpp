@@ -3,6 +3,7 @@
 // file's "method" is (docs/method.md §4 multi-Hertzian, §8 half-space, §9 strips).
 #include "contact/options.hpp"
 #include "contact/case_result.hpp"
+#include "contact/judge/judge.hpp"
 #include "contact/half_space/half_space_method.hpp"
 #include "contact/multi_hertz/multi_hertz.hpp"
 #include "contact/strips/strip_method.hpp"

@@ -442,8 +442,8 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
           S.status[i] = r.status;
           auto& kinds = S.warning_kinds[i];
           kinds.clear();
-          for (const std::string& w : r.warnings) {
-            std::string k = warning_class(w);
+          for (const Warning& w : r.warnings) {
+            std::string k = to_string(w.cls);
             if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(std::move(k));
           }
           format_case(c0 + i, cp, r, plastic, want_csv, want_json, f, nullptr, rcf);

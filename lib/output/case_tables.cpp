@@ -204,7 +204,8 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                  bool plastic, bool want_csv, bool want_json, Formatted& f, const char* status_text,
                  const RcfOptions& rcf) {
   const char* status = status_text ? status_text : to_string(r.status);
-  const std::string warn = join(r.warnings, ";");
+  const std::vector<std::string> warn_text = warning_texts(r.warnings);
+  const std::string warn = join(warn_text, ";");
   // The main contact: the loaded ellipse carrying the largest normal force.
   const LoadedEllipse* main = nullptr;
   bool any_plastic = false;
@@ -304,7 +305,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     j["r_roll_main_mm"] = rv(r_roll_main);
     j["plastic"] = failed ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(any_plastic);
     j["n_warnings"] = r.warnings.size();
-    j["warnings"] = r.warnings;
+    j["warnings"] = warn_text;
     j["message"] = r.message;
     nlohmann::ordered_json el = nlohmann::ordered_json::array();
     for (const LoadedEllipse& L : r.loaded) {

@@ -63,7 +63,9 @@ def _numbers(name, v, unit):
 
 def _pair_solve(self, tY_m, Q_N=None, dz_m=None, roll_rad=0.0):
     """One case: the load Q_N [N] or the vertical approach dz_m [m] prescribed, at lateral
-    position tY_m [m]. A dict of the cases.csv fields and 'contacts', one dict per contact.
+    position tY_m [m]. A dict of the cases.csv fields, 'contacts', one dict per contact, and
+    'warnings', one dict per warning (class, outside_validity, contact_kind, contact, contact2,
+    measures: name, value_si, limit_si, relation, unit; text: as in cases.csv).
     Q_N = 0 is no_contact (a wheel lifted); a negative load, or one above 2000 kN, raises
     ValueError, as the command refuses it."""
     value, name, approach = _prescribed(Q_N, dz_m)
@@ -90,6 +92,9 @@ def _pair_solve_many(self, tY_m, Q_N=None, dz_m=None, threads=0):
             out[name] = method
         else:
             out[name] = raw[name]
+    # Per case, a list of warning dicts (class, outside_validity, contact_kind, contact,
+    # contact2, measures, text), the `warnings` column of cases.csv as data.
+    out["warnings"] = raw["warnings"]
     return out
 
 

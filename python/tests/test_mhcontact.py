@@ -37,7 +37,7 @@ def test_same_numbers_as_the_command(pair):
     tY = np.array([float(r["tY_mm"]) for r in rows]) * 1e-3  # as the case reader: mm * 1e-3
     Q = np.array([float(r["Q_kN"]) for r in rows]) * 1e3
     cols = pair.solve_many(tY, Q_N=Q, threads=2)
-    assert list(cols) == list(mhcontact.CASE_COLUMNS)
+    assert list(cols) == list(mhcontact.CASE_COLUMNS) + ["warnings"]
     for name in ("dz_virtual_mm", "approach_mm", "residual", "Fz_kN", "Fy_kN", "pmax_MPa", "area_mm2",
                  "gamma_main_deg", "r_roll_main_mm", "iterations"):
         table = np.array([float(r[name]) if r[name] != "" else math.nan for r in rows])
@@ -46,7 +46,14 @@ def test_same_numbers_as_the_command(pair):
     assert list(cols["method"]) == [r["method"] for r in rows]
     assert list(cols["n_contacts"]) == [int(r["n_contacts"]) for r in rows]
     assert list(cols["n_warnings"]) == [int(r["n_warnings"]) for r in rows]
+    # The same warnings, as data and as the command writes them (the one judge, docs/status.md).
+    assert [";".join(w["text"] for w in ws) for ws in cols["warnings"]] == [r["warnings"] for r in rows]
+    for ws, r in zip(cols["warnings"], rows):
+        assert [w["class"] for w in ws] == [t.split(":")[0] for t in r["warnings"].split(";") if t]
+        if r["status"] == "outside_validity":
+            assert any(w["outside_validity"] for w in ws)
     one = pair.solve(tY[40], Q_N=Q[40])
+    assert [w["text"] for w in one["warnings"]] == [t for t in rows[40]["warnings"].split(";") if t]
     assert one["Fy_kN"] == float(rows[40]["Fy_kN"])
     assert one["status"] == rows[40]["status"]
 
@@ -336,3 +343,50 @@ def test_explicit_positioning():
         mhcontact.Pair(s1002, rail, {"positioning": "sideways"})
     with pytest.raises(ValueError, match="only used with positioning MHC_POSITIONING_EXPLICIT"):
         mhcontact.Pair(s1002, rail, {"lateral_offset_m": 1e-3})
+
+
+def test_one_judge_through_every_entry_point():
+    """The same status and warnings from the command, a batch manifest and Python (over the C
+    interface) on a worn measured pair, unsmoothed, 120 kN: t_Y 4 and 5.5 mm carry a corner of the
+    gap inside the patch (gap_kink 0.161, 0.149 > 0.1), `outside_validity` by the multi-Hertzian
+    method, handed to the strips by auto (docs/status.md, the judge)."""
+    data = os.path.join(SRC, "tests", "data", "profiles")
+    common = {"material": {"E_GPa": 210, "nu": 0.28}, "geometry": {"smoothing_mm": 0},
+              "sweep": {"tY_mm": [3, 4, 5.5], "Q_kN": [120]}}
+    import json
+    with tempfile.TemporaryDirectory() as d:
+        for method in ("multi-hertzian", "auto"):
+            case = dict(common, method=method,
+                        wheel={"profile": os.path.join(data, "avg_wheel.whl"), "nominal_radius_mm": 460},
+                        rail={"profile": os.path.join(data, "avg_HR.BAN"), "inclination": "1:40"})
+            manifest = dict(common, method=method, nominal_radius_mm=460, inclination="1:40",
+                            pairs=[{"name": "worn", "wheel": os.path.join(data, "avg_wheel.whl"),
+                                    "rail": os.path.join(data, "avg_HR.BAN")}])
+            paths = {}
+            for name, doc in (("case", case), ("batch", manifest)):
+                paths[name] = os.path.join(d, f"{method}-{name}.json")
+                with open(paths[name], "w") as f:
+                    json.dump(doc, f)
+                subprocess.run([BINARY, "run", paths[name], "-o", os.path.join(d, f"{method}-{name}"), "-q",
+                                "--format", "csv"], check=True)
+            rows = {}
+            for name in ("case", "batch"):
+                with open(os.path.join(d, f"{method}-{name}", "cases.csv")) as f:
+                    rows[name] = [(r["status"], r["method"], r["warnings"]) for r in csv.DictReader(f)]
+            assert rows["case"] == rows["batch"]
+            p = mhcontact.Pair.from_case_file(paths["case"])
+            cols = p.solve_many(np.array([3e-3, 4e-3, 5.5e-3]), Q_N=120e3)
+            py = [(s, m, ";".join(w["text"] for w in ws))
+                  for s, m, ws in zip(cols["status"], cols["method"], cols["warnings"])]
+            assert py == rows["case"], (py, rows["case"])
+            one = [p.solve(t, Q_N=120e3) for t in (3e-3, 4e-3, 5.5e-3)]
+            assert [(o["status"], o["method"], ";".join(w["text"] for w in o["warnings"])) for o in one] == rows["case"]
+            if method == "multi-hertzian":
+                for r in rows["case"][1:]:
+                    assert r[0] == "outside_validity" and "gap_kink=" in r[2], r
+                kink = [w for w in cols["warnings"][1] if w["class"] == "non_hertzian"][0]
+                assert kink["measures"][0]["name"] == "gap_kink" and kink["measures"][0]["value_si"] > 0.1
+                assert kink["contact_kind"] == "ellipse" and kink["outside_validity"]
+            else:
+                for r in rows["case"][1:]:
+                    assert r[1] == "strips" and "gap_kink=" in r[2], r

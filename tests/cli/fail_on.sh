@@ -15,13 +15,13 @@ expect() {  # expected-exit stderr-substring output-dir args...
 }
 m=$src/cases/manchester.json
 # The classes the shipped Manchester sweep must never show: exit 0, as CI uses it.
-expect 0 "ok 74, outside_validity 25" "$tmp/ok" "$m" --fail-on off_profile,non_hertzian_excluded,pressure_spike,strip_outlier,cant
+expect 0 "ok 72, outside_validity 27" "$tmp/ok" "$m" --fail-on off_profile,non_hertzian_excluded,pressure_spike,strip_outlier,cant
 # Its flange-climb and non-Hertzian rows: exit 1, outputs written.
 expect 1 "mhcontact run: 12 cases with flange_climb (--fail-on): exit 1" "$tmp/fc" "$m" --fail-on off_profile,flange_climb
 [ -s "$tmp/fc/cases.csv" ] || { echo "FAIL: --fail-on: outputs not written"; fails=1; }
-expect 1 "25 cases with non_hertzian, 10 cases with interacting (--fail-on): exit 1" "$tmp/nh" "$m" --fail-on non_hertzian,interacting
+expect 1 "27 cases with non_hertzian, 10 cases with interacting (--fail-on): exit 1" "$tmp/nh" "$m" --fail-on non_hertzian,interacting
 # Any warning.
-expect 1 "37 cases with warnings, 0 cant warning(s) (--fail-on-warning): exit 1" "$tmp/any" "$m" --fail-on-warning
+expect 1 "39 cases with warnings, 0 cant warning(s) (--fail-on-warning): exit 1" "$tmp/any" "$m" --fail-on-warning
 # A misspelt class is an input error: exit 2, the classes listed, nothing written.
 expect 2 '--fail-on: value "off-profile": not a warning class (the classes are non_hertzian, ' "$tmp/bad" "$m" --fail-on off-profile
 [ ! -e "$tmp/bad" ] || { echo "FAIL: a refused run wrote $tmp/bad"; fails=1; }

@@ -4,33 +4,20 @@
 #include <cmath>
 #include <vector>
 
-#include "core/numfmt.hpp"
 #include "geometry/gap.hpp"
 
 namespace mh {
 
 
-std::string HertzValidity::describe(const HertzValidityOptions& opt) const {
-  auto r = [](double v) { return format_number(std::round(v * 1e3) / 1e3); };
-  std::string s;
-  if (b_over_R_failed) s += "b_over_R=" + r(b_over_R) + ">" + format_number(opt.max_b_over_R);
-  if (gap_error_failed) {
-    if (!s.empty()) s += ':';
-    s += "gap_error=" + r(gap_error) + ">" + format_number(opt.max_gap_error);
-  }
-  if (gap_mean_error_failed) {
-    if (!s.empty()) s += ':';
-    s += "gap_mean_error=" + r(gap_mean_error) + ">" + format_number(opt.max_gap_mean_error);
-  }
-  if (surface_gap_error_failed) {
-    if (!s.empty()) s += ':';
-    s += "surface_gap_error=" + r(surface_gap_error) + ">" + format_number(opt.max_gap_error);
-  }
-  if (surface_gap_mean_error_failed) {
-    if (!s.empty()) s += ':';
-    s += "surface_gap_mean_error=" + r(surface_gap_mean_error) + ">" + format_number(opt.max_gap_mean_error);
-  }
-  return s;
+Warning HertzValidity::warning(int ellipse, const HertzValidityOptions& opt) const {
+  Warning w(WarningClass::NonHertzian, ContactKind::Ellipse, ellipse);
+  if (b_over_R_failed) w.add(Quantity::BOverR, b_over_R, '>', opt.max_b_over_R);
+  if (gap_error_failed) w.add(Quantity::GapError, gap_error, '>', opt.max_gap_error);
+  if (gap_mean_error_failed) w.add(Quantity::GapMeanError, gap_mean_error, '>', opt.max_gap_mean_error);
+  if (surface_gap_error_failed) w.add(Quantity::SurfaceGapError, surface_gap_error, '>', opt.max_gap_error);
+  if (surface_gap_mean_error_failed)
+    w.add(Quantity::SurfaceGapMeanError, surface_gap_mean_error, '>', opt.max_gap_mean_error);
+  return w;
 }
 
 HertzValidity hertz_validity(double b, double k_rxx, double k_wxx, double gap_error, double gap_mean_error,
@@ -88,9 +75,8 @@ HertzValidity hertz_validity(const ContactGeometry& G, const CandidateGeom& g, d
   return v;
 }
 
-std::string GapKink::describe(const HertzValidityOptions& opt) const {
-  if (valid) return "";
-  return "gap_kink=" + format_number(std::round(kink_ratio * 1e3) / 1e3) + ">" + format_number(opt.max_gap_mean_error);
+void GapKink::add_to(Warning& w, const HertzValidityOptions& opt) const {
+  if (!valid) w.add(Quantity::GapKink, kink_ratio, '>', opt.max_gap_mean_error);
 }
 
 GapKink gap_kink(const WheelRailGap& gap, const CandidateGeom& g, double B, double b, double p0, double E_pair,

@@ -20,6 +20,7 @@
 // send such a case to a grid solver.
 #include <string>
 
+#include "contact/judge/status.hpp"
 #include "contact/options.hpp"
 #include "geometry/contact_geometry.hpp"
 
@@ -41,10 +42,10 @@ struct HertzValidity {
   bool gap_mean_error_failed = false;
   bool surface_gap_error_failed = false;
   bool surface_gap_mean_error_failed = false;
-  /// "b_over_R=22.31>0.3", "gap_error=3.1>0.5", "gap_mean_error=0.12>0.1",
-  /// "surface_gap_error=…>0.5", "surface_gap_mean_error=…>0.1", those that failed, joined by ':';
-  /// empty when valid.
-  std::string describe(const HertzValidityOptions& opt) const;
+  /// The `non_hertzian` warning of ellipse `ellipse` (1-based): one measure per failed limit
+  /// (b_over_R, gap_error, gap_mean_error, surface_gap_error, surface_gap_mean_error), written
+  /// "non_hertzian:ellipse=4:b_over_R=22.31>0.3:gap_error=3.1>0.5"; no measure when valid.
+  Warning warning(int ellipse, const HertzValidityOptions& opt) const;
 };
 
 /// The test from its ingredients: lateral semi-axis b [m], curvatures at the contact point
@@ -91,8 +92,8 @@ struct GapKink {
   double dtheta = 0;      ///< [rad] the largest slope jump of the gap across the patch
   double kink_ratio = 0;  ///< [-] E* Δθ / (2π p0)
   bool valid = true;
-  /// "gap_kink=0.71>0.1", empty when valid.
-  std::string describe(const HertzValidityOptions& opt) const;
+  /// Append the measure gap_kink (written "gap_kink=0.71>0.1") to `w` when not valid.
+  void add_to(Warning& w, const HertzValidityOptions& opt) const;
 };
 class WheelRailGap;
 /// The test above for an ellipse at candidate g with lateral curvature B [1/m] (eq. 1),

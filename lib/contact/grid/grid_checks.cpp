@@ -11,7 +11,6 @@ namespace mh {
 
 namespace {
 
-std::string r3(double v) { return format_number(std::round(v * 1e3) / 1e3); }  // 3 decimals
 double rail_y(const PatchCheckInput& in, int j) { return in.y_ref + (in.s0 + j * in.ds) * std::cos(in.gamma); }
 
 }  // namespace
@@ -77,46 +76,53 @@ void check_grid_result(const std::vector<PatchCheckInput>& in, double Q, CaseRes
   for (const PatchResult& P : r.patches) Fz += P.N * std::cos(P.gamma);
   const double res = (Fz - Q) / Q;
   if (!(std::fabs(res) <= kForceBalanceRtol))
-    r.warnings.push_back("force_balance:residual=" + format_number(res) + ">" + format_number(kForceBalanceRtol));
+    r.warnings.push_back(Warning(WarningClass::ForceBalance).add(Quantity::Residual, res, '>', kForceBalanceRtol));
   for (std::size_t k = 0; k < in.size() && k < r.patches.size(); ++k) {
     const PatchCheckInput& c = in[k];
-    const std::string patch = "patch=" + std::to_string(k + 1);
+    const int patch = static_cast<int>(k) + 1;
+    auto warn = [&](WarningClass cls) -> Warning& {
+      r.warnings.emplace_back(cls, ContactKind::Patch, patch);
+      return r.warnings.back();
+    };
     // Complementarity: 0 ≤ p ≤ p_lim (a cap reached to round-off), the deformed gap's conditions.
     double p_lo = 0, p_hi = 0;
     for (double v : c.p) { p_lo = std::min(p_lo, v); p_hi = std::max(p_hi, v); }
-    if (p_lo < 0) r.warnings.push_back("complementarity:" + patch + ":p_min_MPa=" + r3(p_lo / 1e6) + "<0");
+    if (p_lo < 0) warn(WarningClass::Complementarity).add(Quantity::PMin, p_lo, '<', 0);
     if (std::isfinite(c.p_lim) && p_hi > c.p_lim * (1 + 1e-9))
-      r.warnings.push_back("complementarity:" + patch + ":p_max_MPa=" + r3(p_hi / 1e6) + ">p_lim");
+      warn(WarningClass::Complementarity).add(Quantity::PMax, p_hi, '>', c.p_lim);
     const double gap_tol = kGapRtol * c.approach;
     if (std::isfinite(c.gap_violation) && c.gap_violation > gap_tol)
-      r.warnings.push_back("complementarity:" + patch + ":gap_um=" + r3(c.gap_violation * 1e6) + ">" +
-                           r3(gap_tol * 1e6));
+      warn(WarningClass::Complementarity).add(Quantity::GapViolation, c.gap_violation, '>', gap_tol);
     if (std::isfinite(c.end_gap_error) && !c.refined && c.end_gap_error > c.end_gap_tol)
-      r.warnings.push_back("complementarity:" + patch + ":end_gap_error=" + r3(c.end_gap_error) + ">" +
-                           format_number(c.end_gap_tol));
+      warn(WarningClass::Complementarity).add(Quantity::EndGapError, c.end_gap_error, '>', c.end_gap_tol);
     // An isolated peak (half-space).
     if (c.spike_check) {
       const PressureSpike spike = find_pressure_spike(c.p, c.nx, c.ns);
       if (spike.found)
-        r.warnings.push_back("pressure_spike:" + patch + ":y_rail_mm=" + r3(rail_y(c, spike.j) * 1e3) +
-                             ":p_MPa=" + r3(spike.p / 1e6) + ":neighbours_MPa=" + r3(spike.neighbours / 1e6));
+        warn(WarningClass::PressureSpike)
+            .add(Quantity::YRail, rail_y(c, spike.j))
+            .add(Quantity::PSpike, spike.p)
+            .add(Quantity::PNeighbours, spike.neighbours);
     }
     // Too few elements across the patch for the method's peak accuracy.
     if (c.min_across > 0) {
       const int n = elements_across(c.p, c.nx, c.ns);
       if (n < c.min_across)
-        r.warnings.push_back("under_resolved:" + patch + ":elements_across=" + std::to_string(n) + "<" +
-                             std::to_string(c.min_across) + ":element_mm=" + r3(c.element * 1e3));
+        warn(WarningClass::UnderResolved)
+            .add(Quantity::ElementsAcross, n, '<', c.min_across)
+            .add(Quantity::Element, c.element);
       else if (c.peak_change > c.peak_rtol)  // refined, but the peak still moved on the last halving
-        r.warnings.push_back("under_resolved:" + patch + ":peak_change=" + r3(c.peak_change) + ">" +
-                             format_number(c.peak_rtol) + ":element_mm=" + r3(c.element * 1e3));
+        warn(WarningClass::UnderResolved)
+            .add(Quantity::PeakChange, c.peak_change, '>', c.peak_rtol)
+            .add(Quantity::Element, c.element);
     }
     // A hole where the bodies overlap.
     const ContactHole hole = c.hole_check ? find_contact_hole(c) : ContactHole();
     if (hole.elements > 0)
-      r.warnings.push_back("contact_hole:" + patch + ":elements=" + std::to_string(hole.elements) + ":y_rail_mm=" +
-                           r3(rail_y(c, hole.j) * 1e3) + ":overlap_um=" + r3(hole.overlap * 1e6) + ">" +
-                           r3(gap_tol * 1e6));
+      warn(WarningClass::ContactHole)
+          .add(Quantity::Elements, hole.elements)
+          .add(Quantity::YRail, rail_y(c, hole.j))
+          .add(Quantity::Overlap, hole.overlap, '>', gap_tol);
   }
 }
 

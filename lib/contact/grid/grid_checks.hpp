@@ -3,7 +3,7 @@
 // in one place for both grid methods (docs/status.md, "Physical checks of a grid result"). A grid
 // solver's `ok` says its iteration stopped; these say whether what it stopped on is a contact
 // solution that can be trusted. Each failed check adds a warning of a validity class, so the row
-// becomes `outside_validity` (judge_validity, case_result.hpp):
+// becomes `outside_validity` (the judge, contact/judge/judge.hpp):
 //
 //   force_balance   Σ_k N_k cos γ_k, re-summed from the reported patches, differs from Q by more
 //                   than kForceBalanceRtol·Q (eq. 10).

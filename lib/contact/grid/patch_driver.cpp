@@ -38,14 +38,14 @@ bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, d
 
 void finish_grid_case(const ContactGeometry& G, double tY, const GridStart& gs, CaseResult& r) {
   if (gs.mh)
-    for (const std::string& w : gs.mh->warnings)
-      if (w.rfind("flange_climb:", 0) == 0) r.warnings.push_back(w);
+    for (const Warning& w : gs.mh->warnings)
+      if (w.cls == WarningClass::FlangeClimb) r.warnings.push_back(w);
   if (G.wheel_curve && G.rail_curve && !G.strip_y.empty())
     for (const PatchResult& P : r.patches) {
       const double c = std::cos(P.gamma), sn = std::sin(P.gamma);
       if (G.off_profile_at(tY, P.y_r + P.s_lo * c, P.z_r + P.s_lo * sn) ||
           G.off_profile_at(tY, P.y_r + P.s_hi * c, P.z_r + P.s_hi * sn))
-        r.warnings.push_back("off_profile:patch=" + std::to_string(P.patch));
+        r.warnings.emplace_back(WarningClass::OffProfile, ContactKind::Patch, P.patch);
     }
   withhold_unconverged_pressures(r);
 }

@@ -67,7 +67,7 @@ void solve_multi_hertz_approach(const ContactGeometry& G, const Material& mat, d
     r.message = "no contact: the approach dz = " + format_number(dz * 1e3) + " mm loads no Hertzian candidate";
   }
   if (ne > 0 && ws.geo[static_cast<std::size_t>(main)].flange_climb)
-    r.warnings.push_back("flange_climb:ellipse=" + std::to_string(main + 1));
+    r.warnings.emplace_back(WarningClass::FlangeClimb, ContactKind::Ellipse, main + 1);
 }
 
 }  // namespace mh

@@ -82,9 +82,9 @@ void add_loaded_candidate(const ContactGeometry& G, int ellipse, const Candidate
                           CaseResult& r) {
   // A loaded candidate off the end of a profile (method.md §3.7): its geometry is the end's,
   // extrapolated; never silent.
-  if (g.off_profile) r.warnings.push_back("off_profile:ellipse=" + std::to_string(ellipse));
+  if (g.off_profile) r.warnings.emplace_back(WarningClass::OffProfile, ContactKind::Ellipse, ellipse);
   if (!law) {
-    r.warnings.push_back("non_hertzian_excluded:ellipse=" + std::to_string(ellipse));
+    r.warnings.emplace_back(WarningClass::NonHertzianExcluded, ContactKind::Ellipse, ellipse);
     return;
   }
   r.loaded.emplace_back();
@@ -103,7 +103,7 @@ void add_loaded_candidate(const ContactGeometry& G, int ellipse, const Candidate
   if (G.rail_curve) L.z_r = G.rail_curve->z(g.y_r);
   if (G.wheel_curve) L.z_w = G.wheel_curve->z(g.y_w);
   if (!L.validity.valid)
-    r.warnings.push_back("non_hertzian:ellipse=" + std::to_string(ellipse) + ":" + L.validity.describe(opt.validity));
+    r.warnings.push_back(L.validity.warning(ellipse, opt.validity));
   r.Fz += L.s.N * cg;
   r.Fy += L.s.N * sg;
   // Case summary shared with the grid methods (case_result.hpp).
@@ -175,7 +175,7 @@ void solve_multi_hertz(const ContactGeometry& G, const Material& mat, double tY,
   // solution, their start (contact/grid/patch_driver.hpp).
   const bool climb = ne > 0 && geo[static_cast<std::size_t>(main)].flange_climb;
   auto flag_climb = [&] {
-    if (climb) r.warnings.push_back("flange_climb:ellipse=" + std::to_string(main + 1));
+    if (climb) r.warnings.emplace_back(WarningClass::FlangeClimb, ContactKind::Ellipse, main + 1);
   };
   for (std::size_t e = 0; e < ne; ++e) {
     Cand c;

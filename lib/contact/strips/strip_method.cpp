@@ -7,7 +7,6 @@
 #include "contact/multi_hertz/multi_hertz.hpp"
 #include "contact/grid/grid_checks.hpp"
 #include "contact/grid/patch_driver.hpp"
-#include "core/numfmt.hpp"
 #include "geometry/gap.hpp"
 
 namespace mh {
@@ -263,10 +262,11 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
       // The known failure mode (§9.7): a strip whose peak pressure stands far above its
       // neighbours' (q_MPa: that peak, min(amplitude, p_lim)).
       const StripState& w = S.strips[static_cast<std::size_t>(S.worst_outlier)];
-      r.warnings.push_back("strip_outlier:patch=" + std::to_string(r.patches.size() + 1) + ":strips=" +
-                           std::to_string(S.n_outliers) + ":y_rail_mm=" +
-                           format_number(std::round((k.P.y_ref + w.s * std::cos(k.P.gamma)) * 1e6) / 1e3) +
-                           ":q_MPa=" + format_number(std::round(std::min(w.q, p_lim) / 1e3) / 1e3));
+      Warning o(WarningClass::StripOutlier, ContactKind::Patch, static_cast<int>(r.patches.size()) + 1);
+      o.add(Quantity::Strips, S.n_outliers)
+          .add(Quantity::YRailStrip, k.P.y_ref + w.s * std::cos(k.P.gamma))
+          .add(Quantity::QStrip, std::min(w.q, p_lim));
+      r.warnings.push_back(o);
     }
     checks.push_back(k.check_input(opt.strips));
     pr.elements_across = elements_across(checks.back().p, checks.back().nx, checks.back().ns);

@@ -197,6 +197,31 @@ TEST_CASE("C interface: the same numbers as `mhcontact run` on the Manchester sw
     CHECK(r.dz_m * 1e3 == std::stod(rows[i].at("dz_virtual_mm")));
     CHECK(r.approach_m * 1e3 == std::stod(rows[i].at("approach_mm")));
     CHECK(r.n_warnings == std::stoi(rows[i].at("n_warnings")));
+    // The same warnings, as text (mhc_warning_text) and as data (mhc_result_warning).
+    REQUIRE(mhc_result_n_warnings(w.ws) == r.n_warnings);
+    std::string text;
+    for (int32_t k = 0; k < r.n_warnings; ++k) {
+      text += std::string(k ? ";" : "") + mhc_warning_text(w.ws, k);
+      mhc_warning wd;
+      wd.struct_size = sizeof wd;
+      REQUIRE(mhc_result_warning(w.ws, k, &wd) == MHC_OK);
+      const std::string t = mhc_warning_text(w.ws, k);
+      CHECK(t.rfind(std::string(wd.class_name) + ":", 0) == 0);
+      if (std::string(wd.class_name) == "non_hertzian") {  // one measure per failed limit, named in the text
+        REQUIRE(wd.n_measures >= 1);
+        for (int32_t m = 0; m < wd.n_measures; ++m) {
+          CHECK(t.find(std::string(wd.measure[m].name) + "=") != std::string::npos);
+          CHECK(wd.measure[m].value_si > wd.measure[m].limit_si);
+          CHECK(wd.measure[m].relation == '>');
+        }
+      }
+      if (r.status == MHC_STATUS_OUTSIDE_VALIDITY) CHECK(wd.contact_kind >= 0);
+    }
+    CHECK(text == rows[i].at("warnings"));
+    mhc_warning bad;
+    bad.struct_size = sizeof bad;
+    CHECK(mhc_result_warning(w.ws, r.n_warnings, &bad) == MHC_ERR_ARGUMENT);
+    CHECK(std::string(mhc_warning_text(w.ws, r.n_warnings)).empty());
     CHECK(std::memcmp(&r, &many[i], sizeof r) == 0);  // solve_many on 2 threads: the same bytes
     ++compared;
   }

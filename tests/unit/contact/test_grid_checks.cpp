@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contact/grid/grid_checks.hpp"
+#include "contact/judge/judge.hpp"
 
 using namespace mh;
 
@@ -46,7 +47,7 @@ CaseResult one_patch(double N, double Q) {
 
 std::vector<std::string> classes_of(const CaseResult& r) {
   std::vector<std::string> v;
-  for (const std::string& w : r.warnings) v.push_back(warning_class(w));
+  for (const Warning& w : r.warnings) v.push_back(to_string(w.cls));
   return v;
 }
 
@@ -107,7 +108,7 @@ TEST_CASE("grid checks: each defect gives its own validity class", "[grid][check
     const std::vector<std::string> cls = classes_of(r);
     REQUIRE(cls.size() == 1);
     CHECK(cls[0] == row.cls);
-    CHECK((r.warnings[0].find("patch=1") != std::string::npos || cls[0] == "force_balance"));
+    CHECK((warning_text(r.warnings[0]).find("patch=1") != std::string::npos || cls[0] == "force_balance"));
     judge_validity(r, 8e-3);
     CHECK(r.status == CaseStatus::OutsideValidity);
   }

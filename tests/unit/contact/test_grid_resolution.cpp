@@ -149,8 +149,8 @@ TEST_CASE("a narrow flange patch is refined until it converges, or is under_reso
       return mh::solve_contact(pg.geo, cf.material, tY, Q, opt);
     };
     auto has_class = [](const mh::CaseResult& r, const std::string& cls) {
-      for (const std::string& w : r.warnings)
-        if (w.rfind(cls + ":", 0) == 0) return true;
+      for (const mh::Warning& w : r.warnings)
+        if (mh::warning_text(w).rfind(cls + ":", 0) == 0) return true;
       return false;
     };
     INFO("method " << mh::to_string(m));

@@ -41,7 +41,7 @@ TEST_CASE("a grid patch reaching a profile's end is outside validity, never ok",
     CHECK(r.status != mh::CaseStatus::Ok);
     if (r.status == mh::CaseStatus::OutsideValidity) {
       bool flagged = false;
-      for (const std::string& w : r.warnings) flagged = flagged || w.rfind("off_profile:", 0) == 0;
+      for (const auto& w : r.warnings) flagged = flagged || w.cls == mh::WarningClass::OffProfile;
       CHECK(flagged);
     }
   }

@@ -83,14 +83,20 @@ TEST_CASE("flange contact on the vertical 1:20 flank: strips and half-space agai
       const double tY = k.first * 1e-3, Q = k.second * 1e3;
       mh::MethodOptions opt = cf.method_options();
       opt.method = m;
+      // CONTACT's grid (0.2 mm) for both: two solvers on one discretisation, no local refinement
+      // (test_grid_resolution.cpp); a patch too narrow for it may then be only under_resolved.
+      opt.half_space.max_refinements = opt.strips.max_refinements = 0;
       const mh::CaseResult r = mh::solve_contact(pg.geo, cf.material, tY, Q, opt);
       const double dp = r.pmax / 1e6 / c.first - 1, da = r.area / 1e-6 / c.second - 1;
       INFO(mh::to_string(m) << " t_Y = " << k.first << " mm, Q = " << k.second << " kN: " << mh::to_string(r.status)
                             << " " << r.message << "; pmax " << r.pmax / 1e6 << " MPa (CONTACT " << c.first << ", "
                             << 100 * dp << " %), area " << r.area / 1e-6 << " mm2 (CONTACT " << c.second << ", "
                             << 100 * da << " %)");
-      CHECK(r.status == mh::CaseStatus::Ok);
-      for (const std::string& w : r.warnings) CHECK(w.rfind("off_profile:", 0) != 0);
+      const std::vector<mh::WarningClass> failed = mh::validity_failures(r.warnings);
+      CHECK((r.status == mh::CaseStatus::Ok ||
+             (r.status == mh::CaseStatus::OutsideValidity && failed.size() == 1 &&
+              failed[0] == mh::WarningClass::UnderResolved)));
+      for (const auto& w : r.warnings) CHECK(w.cls != mh::WarningClass::OffProfile);
       std::printf("flank %s t_Y %d Q %d: pmax %+.2f %% area %+.2f %%\n", mh::to_string(m), k.first, k.second, 100 * dp, 100 * da);
       // Measured worst (28 Nov 2026): strips pmax 1.49 %, area 6.41 %; half-space 0.93 %, 2.36 %.
       const bool strips = m == mh::Method::Strips;

@@ -22,7 +22,7 @@ const CandidateGeom& main_at(const ContactGeometry& G, double tY) {
   return G.main_at(k);
 }
 bool warned(const CaseResult& r, const std::string& kind) {
-  for (const auto& w : r.warnings) if (w.rfind(kind, 0) == 0) return true;
+  for (const auto& w : r.warnings) if (mh::warning_text(w).rfind(kind, 0) == 0) return true;
   return false;
 }
 }  // namespace

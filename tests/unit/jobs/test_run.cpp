@@ -62,7 +62,7 @@ TEST_CASE("run writes the three tables, byte-identical for 1, 2 and 4 threads", 
   REQUIRE(cli({"run", cf, "-o", d / "t2", "--threads", "2", "-q"}) == 0);
   REQUIRE(cli({"run", cf, "-o", d / "t4", "--threads", "4"}, nullptr, &err) == 0);
   // 25 rows outside the multi-Hertzian method's validity (docs/status.md): answers, exit 0.
-  REQUIRE_THAT(err, Catch::Contains("99 cases, ok 74, outside_validity 25"));
+  REQUIRE_THAT(err, Catch::Contains("99 cases, ok 72, outside_validity 27"));
   for (const char* f : {"cases.csv", "ellipses.csv", "geometry.csv", "results.json"}) {
     CAPTURE(f);
     const std::string a = slurp(d / (std::string("t1/") + f));

@@ -1,0 +1,79 @@
+#include "contact/judge/judge.hpp"
+
+#include <cmath>
+
+#include "contact/ellipse/hertz_validity.hpp"
+#include "geometry/gap.hpp"
+
+namespace mh {
+
+EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb) {
+  EllipseInteraction e;
+  for (std::size_t i = 0; i < r.loaded.size(); ++i)
+    for (std::size_t j = i + 1; j < r.loaded.size(); ++j) {
+      const LoadedEllipse &A = r.loaded[i], &B = r.loaded[j];
+      // Lateral gap between the patches' edges on the rail: the distance of the contact points
+      // less each half-width b projected on the rail's y.
+      const double edge_gap = std::fabs(A.g.y_r - B.g.y_r) - A.s.b * std::cos(A.g.gamma) - B.s.b * std::cos(B.g.gamma);
+      if (edge_gap < d_comb) return {true, A.ellipse, B.ellipse, edge_gap};
+    }
+  return e;
+}
+
+namespace {
+
+void add_interaction_warning(CaseResult& r, double d_comb) {
+  if (r.method != Method::MultiHertzian) return;
+  const EllipseInteraction e = interacting_ellipses(r, d_comb);
+  if (!e.found) return;
+  Warning w(WarningClass::Interacting, ContactKind::EllipsePair, e.first);
+  w.contact2 = e.second;
+  r.warnings.push_back(w.add(Quantity::EdgeGap, e.edge_gap, '<', d_comb));
+}
+
+}  // namespace
+
+void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY,
+                           const MethodOptions& opt) {
+  if (r.method != Method::MultiHertzian) return;
+  add_interaction_warning(r, opt.strips.d_comb);
+  if (r.status != CaseStatus::Ok || r.loaded.empty()) return;
+  // The gap-corner test only where every other Hertz test passed: it samples the gap across
+  // each patch (~165 gap evaluations per ellipse), the costliest of the tests, and a row that
+  // failed another is outside validity already.
+  for (const Warning& w : r.warnings)
+    if (w.cls == WarningClass::NonHertzian || w.cls == WarningClass::NonHertzianExcluded ||
+        w.cls == WarningClass::Interacting)
+      return;
+  const HertzValidityOptions& vo = opt.multi_hertzian.validity;
+  const WheelRailGap gap(G, tY);
+  for (const LoadedEllipse& L : r.loaded) {
+    const GapKink k = gap_kink(gap, L.g, L.B, L.s.b, L.s.p0, 0.5 * mat.E_star(), r.approach, vo);
+    if (k.valid) continue;
+    Warning w(WarningClass::NonHertzian, ContactKind::Ellipse, L.ellipse);
+    k.add_to(w, vo);
+    r.warnings.push_back(w);
+  }
+}
+
+void decide_status(CaseResult& r) {
+  if (r.status != CaseStatus::Ok) return;
+  const std::vector<WarningClass> classes = validity_failures(r.warnings);
+  if (classes.empty()) return;
+  r.status = CaseStatus::OutsideValidity;
+  r.message = "outside the validity of the method: ";
+  for (std::size_t i = 0; i < classes.size(); ++i) r.message += std::string(i ? ", " : "") + to_string(classes[i]);
+  r.message += " (see warnings)";
+}
+
+void judge_case(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY, const MethodOptions& opt) {
+  add_validity_warnings(r, G, mat, tY, opt);
+  decide_status(r);
+}
+
+void judge_validity(CaseResult& r, double d_comb) {
+  add_interaction_warning(r, d_comb);
+  decide_status(r);
+}
+
+}  // namespace mh

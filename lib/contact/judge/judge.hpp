@@ -1,0 +1,46 @@
+#pragma once
+// The judge (docs/status.md): takes a solved case and decides its status and its warnings, by
+// one rule for every method and every entry point (the command line, batches, the C API and
+// Python all reach it through solve_contact(), or call it directly for an approach given).
+#include "contact/case_result.hpp"
+#include "contact/options.hpp"
+#include "geometry/contact_geometry.hpp"
+
+namespace mh {
+
+/// Two loaded ellipses close enough to interact elastically, which the multi-Hertzian method
+/// solves each on its own (docs/method.md §9, the gauge-shoulder case): the lateral gap between
+/// their edges on the rail is below d_comb, the distance at which the grid methods make the
+/// regions one patch. `found` false when no pair is that close.
+struct EllipseInteraction {
+  bool found = false;
+  int first = 0, second = 0;  ///< the ellipses (LoadedEllipse::ellipse) of the first such pair
+  double edge_gap = 0;        ///< [m] lateral gap between their edges on the rail (negative: overlap)
+};
+EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb);
+
+/// The judge (docs/status.md): decide the status of a solved case r of the geometry G at t_Y
+/// [m] with material mat and options opt, and add the warnings of its tests. Every method and
+/// entry point calls it once per case (solve_contact(), and the C interface's approach-given
+/// solve); `auto` judges its multi-Hertzian answer with the same tests before keeping it, so a
+/// multi-Hertzian row is `ok` exactly when `auto` keeps it (or would, but for off_profile).
+///  1. add_validity_warnings(): a multi-Hertzian row gets `interacting` for two ellipses closer
+///     than d_comb and, when it passed every Hertz test (no non_hertzian, non_hertzian_excluded
+///     or interacting warning) and converged, `non_hertzian:ellipse=K:gap_kink=R>0.1` for each
+///     loaded ellipse with a corner of the gap inside its patch (hertz_validity.hpp, gap_kink).
+///  2. decide_status(): an `ok` row with a warning of a validity class becomes OutsideValidity,
+///     its message naming the classes; other statuses stay.
+void judge_case(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY, const MethodOptions& opt);
+
+/// Step 1 of judge_case() alone: the warnings, the status untouched (auto reads them to decide
+/// whether to hand the case on, and starts the grid methods from the unjudged row).
+void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY,
+                           const MethodOptions& opt);
+/// Step 2 of judge_case() alone.
+void decide_status(CaseResult& r);
+
+/// The judge without the geometry (unit tests of the rule on hand-made results): the
+/// `interacting` warning and decide_status(), no gap-corner test.
+void judge_validity(CaseResult& r, double d_comb);
+
+}  // namespace mh
