@@ -18,13 +18,31 @@ WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY)
       R0_(G.nominal_radius), z0_(G.wheel_z0), face_foot_(G.rail_face_foot) {
   y0_ = std::max(R_->y_min(), W_->y_min() + shift_);
   y1_ = std::min(R_->y_max(), W_->y_max() + shift_);
-  // Minimum of the raw gap: sampled, then refined by a parabola through the best sample.
   const int n = std::max(3, static_cast<int>((y1_ - y0_) / kSampleStep));
+  find_minimum(0, n, n);
+}
+
+WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY, double y_near)
+    : W_(G.wheel_gap_curve ? G.wheel_gap_curve.get() : G.wheel_curve.get()),
+      R_(G.rail_gap_curve ? G.rail_gap_curve.get() : G.rail_curve.get()), shift_(G.y_offset + tY),
+      R0_(G.nominal_radius), z0_(G.wheel_z0), face_foot_(G.rail_face_foot) {
+  y0_ = std::max(R_->y_min(), W_->y_min() + shift_);
+  y1_ = std::min(R_->y_max(), W_->y_max() + shift_);
+  const int n = std::max(3, static_cast<int>((y1_ - y0_) / kSampleStep));
+  // The same sample points as the whole-profile search, only those near y_near.
+  const double h = (y1_ - y0_) / n;
+  const int c = static_cast<int>(std::lround((std::clamp(y_near, y0_, y1_) - y0_) / h));
+  find_minimum(std::max(0, c - kLocalSamples), std::min(n, c + kLocalSamples), n);
+}
+
+void WheelRailGap::find_minimum(int i0, int i1, int n) {
+  // Minimum of the raw gap: sampled on y0 + i h, i = i0 … i1, then refined by a parabola through
+  // the best sample.
   const double h = (y1_ - y0_) / n;
   auto raw = [&](double y) { return W_->z(y - shift_) - R_->z(y); };
-  int best = 0;
+  int best = i0;
   double gb = std::numeric_limits<double>::infinity();
-  for (int i = 0; i <= n; ++i) {
+  for (int i = i0; i <= i1; ++i) {
     const double v = raw(y0_ + h * i);
     if (v < gb) { gb = v; best = i; }
   }

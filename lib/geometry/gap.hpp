@@ -16,6 +16,14 @@ class WheelRailGap {
  public:
   /// Precondition: G was built by build_geometry (it keeps the smooth profiles).
   WheelRailGap(const ContactGeometry& G, double tY);
+  /// The same with the first contact known to lie near rail y `y_near` [m] (a solved case's
+  /// candidate of least gap): the minimum of the gap is refined on kLocalSamples samples of
+  /// kSampleStep around it instead of sampled across the whole profile (about 10,000 samples).
+  /// A first contact found there is the global one whenever the candidate is the geometry's main
+  /// contact; elsewhere the minimum found is a local one, which shifts the wheel's height by
+  /// the difference of the two minima (a constant: second differences of the gap, what
+  /// gap_kink measures, move by that times the gap's curvature h², far below its limit).
+  WheelRailGap(const ContactGeometry& G, double tY, double y_near);
 
   /// [m] the rail-y range where both profiles exist.
   double y_min() const { return y0_; }
@@ -43,6 +51,9 @@ class WheelRailGap {
   std::vector<std::pair<double, double>> interpenetration(double dz, double step) const;
 
  private:
+  /// Samples each side of y_near in the second constructor: ±0.2 mm at kSampleStep.
+  static constexpr int kLocalSamples = 20;
+  void find_minimum(int i0, int i1, int n);
   const ProfileCurve* W_;
   const ProfileCurve* R_;
   double shift_ = 0;   // rail y − wheel y

@@ -46,7 +46,11 @@ void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Materi
         w.cls == WarningClass::Interacting)
       return;
   const HertzValidityOptions& vo = opt.multi_hertzian.validity;
-  const WheelRailGap gap(G, tY);
+  // The first contact lies at the loaded candidate of least gap (0 at the main one).
+  const LoadedEllipse* first = &r.loaded.front();
+  for (const LoadedEllipse& L : r.loaded)
+    if (L.g.gap < first->g.gap) first = &L;
+  const WheelRailGap gap(G, tY, first->g.y_r);
   for (const LoadedEllipse& L : r.loaded) {
     const GapKink k = gap_kink(gap, L.g, L.B, L.s.b, L.s.p0, 0.5 * mat.E_star(), r.approach, vo);
     if (k.valid) continue;
