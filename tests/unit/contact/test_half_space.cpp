@@ -47,8 +47,18 @@ TEST_CASE("half-space matches CONTACT on the Manchester sweep at Q = 50 kN", "[h
     const double tY_mm = cell(ref, i, "y_ws_mm");
     INFO("t_Y = " << tY_mm << " mm");
     REQUIRE(cell(ref, i, "n_patches") == 1);  // the reference has one patch per case (t_Y = 5: two sub-regions)
-    const mh::CaseResult r = mh::solve_half_space(manchester().geo, cf.material, tY_mm * 1e-3, Q, cf.half_space);
-    REQUIRE(r.status == mh::CaseStatus::Ok);
+    // CONTACT solved every case on one 0.2 mm grid: two solvers on the same discretisation, so no
+    // local refinement here (a narrow flange patch refined to 0.1 mm moves its area by 2-3 %;
+    // test_grid_resolution.cpp holds the refinement). A patch too narrow for that grid is then
+    // under_resolved, and that is its only reason not to be ok.
+    mh::HalfSpaceOptions same_grid = cf.half_space;
+    same_grid.max_refinements = 0;
+    const mh::CaseResult r = mh::solve_half_space(manchester().geo, cf.material, tY_mm * 1e-3, Q, same_grid);
+    const std::vector<mh::WarningClass> failed = mh::validity_failures(r.warnings);
+    INFO(mh::to_string(r.status) << " " << r.message);
+    REQUIRE((r.status == mh::CaseStatus::Ok ||
+             (r.status == mh::CaseStatus::OutsideValidity && failed.size() == 1 &&
+              failed[0] == mh::WarningClass::UnderResolved)));
     REQUIRE(r.patches.size() == 1);
     const mh::PatchResult& P = r.patches[0];
     const double pmax = cell(ref, i, "pmax_MPa") * 1e6, area = cell(ref, i, "area_mm2") * 1e-6;
