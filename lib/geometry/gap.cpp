@@ -12,15 +12,7 @@ constexpr int kNewtonIterations = 8;     // normal-line intersections converge i
 constexpr double kNewtonTol = 1e-13;     // [m]
 }  // namespace
 
-WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY)
-    : W_(G.wheel_gap_curve ? G.wheel_gap_curve.get() : G.wheel_curve.get()),
-      R_(G.rail_gap_curve ? G.rail_gap_curve.get() : G.rail_curve.get()), shift_(G.y_offset + tY),
-      R0_(G.nominal_radius), z0_(G.wheel_z0), face_foot_(G.rail_face_foot) {
-  y0_ = std::max(R_->y_min(), W_->y_min() + shift_);
-  y1_ = std::min(R_->y_max(), W_->y_max() + shift_);
-  const int n = std::max(3, static_cast<int>((y1_ - y0_) / kSampleStep));
-  find_minimum(0, n, n);
-}
+WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY) : WheelRailGap(G, tY, std::nan("")) {}
 
 WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY, double y_near)
     : W_(G.wheel_gap_curve ? G.wheel_gap_curve.get() : G.wheel_curve.get()),
@@ -29,6 +21,10 @@ WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY, double y_near)
   y0_ = std::max(R_->y_min(), W_->y_min() + shift_);
   y1_ = std::min(R_->y_max(), W_->y_max() + shift_);
   const int n = std::max(3, static_cast<int>((y1_ - y0_) / kSampleStep));
+  if (std::isnan(y_near)) {
+    find_minimum(0, n, n);
+    return;
+  }
   // The same sample points as the whole-profile search, only those near y_near.
   const double h = (y1_ - y0_) / n;
   const int c = static_cast<int>(std::lround((std::clamp(y_near, y0_, y1_) - y0_) / h));

@@ -16,13 +16,13 @@ class WheelRailGap {
  public:
   /// Precondition: G was built by build_geometry (it keeps the smooth profiles).
   WheelRailGap(const ContactGeometry& G, double tY);
-  /// The same with the first contact known to lie near rail y `y_near` [m] (a solved case's
-  /// candidate of least gap): the minimum of the gap is refined on kLocalSamples samples of
-  /// kSampleStep around it instead of sampled across the whole profile (about 10,000 samples).
-  /// A first contact found there is the global one whenever the candidate is the geometry's main
-  /// contact; elsewhere the minimum found is a local one, which shifts the wheel's height by
-  /// the difference of the two minima (a constant: second differences of the gap, what
-  /// gap_kink measures, move by that times the gap's curvature h², far below its limit).
+  /// The same with the first contact known to lie near rail y `y_near` [m], a solved case's
+  /// candidate of least gap (NaN: not known, the whole profile is searched as above): the minimum
+  /// of the gap is refined on the same samples, only those within kLocalSamples of y_near,
+  /// instead of across the whole profile (about 10,000 samples). Near the geometry's main contact
+  /// that is the global minimum; elsewhere a local one, which lifts the wheel by the difference of
+  /// the two minima (a constant: second differences of the gap, what gap_kink measures, move by
+  /// that times the gap's curvature h², far below its limit).
   WheelRailGap(const ContactGeometry& G, double tY, double y_near);
 
   /// [m] the rail-y range where both profiles exist.

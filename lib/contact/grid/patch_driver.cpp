@@ -221,4 +221,20 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
   return R;
 }
 
+ApproachBalance rebalance_refined(const PatchDriverResult& D, const std::vector<PatchSolver*>& refined, double Q,
+                                  double dz_start, const PatchDriverOptions& opt, CaseResult& r) {
+  std::vector<PatchSolver*> solvers;
+  std::vector<double> cos_gamma;
+  for (std::size_t n = 0; n < D.solvers.size(); ++n) {
+    solvers.push_back(refined[n] ? refined[n] : D.solvers[n].get());
+    cos_gamma.push_back(std::cos(D.regions[n].P.gamma));
+  }
+  const ApproachBalance b = balance_approach(solvers, cos_gamma, Q, dz_start, opt);
+  r.approach = b.dz;
+  for (PatchSolver* ps : solvers)
+    if (ps->failed()) { r.status = CaseStatus::NotConverged; r.message = ps->why(); }
+  if (!b.ok) { r.status = CaseStatus::NotConverged; r.message = b.message; }
+  return b;
+}
+
 }  // namespace mh

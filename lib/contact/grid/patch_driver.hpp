@@ -135,6 +135,13 @@ struct ApproachBalance {
 ApproachBalance balance_approach(const std::vector<PatchSolver*>& solvers, const std::vector<double>& cos_gamma,
                                  double Q, double dz_start, const PatchDriverOptions& opt);
 
+/// After some patches of D were refined locally (grid_checks.hpp, under_resolved), the shared
+/// approach found again with them (eqs. 10–11, every patch in approach control): refined[n], when
+/// not null, replaces D.solvers[n]. A failed patch solve or an unbalanced load makes r
+/// not_converged with the reason; r.approach becomes the new approach. Returns the balance.
+ApproachBalance rebalance_refined(const PatchDriverResult& D, const std::vector<PatchSolver*>& refined, double Q,
+                                  double dz_start, const PatchDriverOptions& opt, CaseResult& r);
+
 /// Solve for the load Q [N], starting from the approach estimate dz_est [m] (> 0).
 PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,
                                 const PatchSolverFactory& make);

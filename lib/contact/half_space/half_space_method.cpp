@@ -224,21 +224,12 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
     any_fine = any_fine || fine[n];
   }
   if (any_fine && D.solvers.size() > 1) {
-    // A refined patch is stiffer or softer than its coarse grid said: the shared approach is found
-    // again with it (eqs. 10–11), every patch in approach control, as drive_patches does.
-    std::vector<PatchSolver*> solvers;
-    std::vector<double> cos_gamma;
-    for (std::size_t n = 0; n < D.solvers.size(); ++n) {
-      solvers.push_back(fine[n] ? static_cast<PatchSolver*>(fine[n].get()) : D.solvers[n].get());
-      cos_gamma.push_back(std::cos(D.regions[n].P.gamma));
-    }
-    const ApproachBalance b = balance_approach(solvers, cos_gamma, Q, dz, dopt);
+    // A refined patch is stiffer or softer than its coarse grid said: the shared approach again.
+    std::vector<PatchSolver*> refined;
+    for (auto& f : fine) refined.push_back(f.get());
+    const ApproachBalance b = rebalance_refined(D, refined, Q, dz, dopt, r);
     dz = b.dz;
-    r.approach = dz;
     r.iterations += b.evaluations;
-    for (auto& f : fine)
-      if (f && f->failed()) { r.status = CaseStatus::NotConverged; r.message = f->why(); }
-    if (!b.ok) { r.status = CaseStatus::NotConverged; r.message = b.message; }
   }
   std::vector<PatchCheckInput> checks;  // of the reported patches, for the physical checks
   for (std::size_t n = 0; n < D.solvers.size(); ++n) {

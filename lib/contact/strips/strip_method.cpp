@@ -197,18 +197,9 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
   }
   if (any_fine && D.solvers.size() > 1) {
     // The shared approach found again with the refined patches (as the half-space method does).
-    std::vector<PatchSolver*> solvers;
-    std::vector<double> cos_gamma;
-    for (std::size_t n = 0; n < D.solvers.size(); ++n) {
-      solvers.push_back(fine[n] ? static_cast<PatchSolver*>(fine[n].get()) : D.solvers[n].get());
-      cos_gamma.push_back(std::cos(D.regions[n].P.gamma));
-    }
-    const ApproachBalance b = balance_approach(solvers, cos_gamma, Q, D.dz, dopt);
-    D.dz = b.dz;
-    r.approach = D.dz;
-    for (PatchSolver* ps : solvers)
-      if (ps->failed()) { r.status = CaseStatus::NotConverged; r.message = ps->why(); }
-    if (!b.ok) { r.status = CaseStatus::NotConverged; r.message = b.message; }
+    std::vector<PatchSolver*> refined;
+    for (auto& f : fine) refined.push_back(f.get());
+    D.dz = rebalance_refined(D, refined, Q, D.dz, dopt, r).dz;
   }
   for (std::size_t n = 0; n < D.solvers.size(); ++n) {
     const StripPatch* coarse = static_cast<const StripPatch*>(D.solvers[n].get());
