@@ -7,19 +7,10 @@ cd "$(dirname "$0")/.."
 bin=${1:-build/mhcontact}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # Only result tables are kept (not profiles.csv, a copy of the inputs, nor run.json, which names
-# the build); default digits (10 significant), as users get them. Exit 1 (some case or wheel not
-# ok) is a result like any other: the tables hold the statuses.
-done_dirs=" "
-while read -r dir cmd case table _; do
+# the build).
+bash scripts/run_detectors.sh "$bin" "$tmp"
+while read -r dir _ _ table _; do
   case "$dir" in ''|'#'*) continue ;; esac
-  if [[ "$done_dirs" != *" $dir "* ]]; then
-    if [ "$cmd" = run ]; then
-      "$bin" run "$case" -o "$tmp/$dir" --format csv -q || test $? -eq 1
-    else
-      "$bin" "$cmd" "$case" -o "$tmp/$dir" -q >/dev/null || test $? -eq 1
-    fi
-    done_dirs="$done_dirs$dir "
-  fi
   mkdir -p "tests/ref/$dir"
   cp "$tmp/$dir/$table" "tests/ref/$dir/$table"
 done < tests/ref/detectors.txt

@@ -8,17 +8,10 @@ set -euo pipefail
 bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1"); src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 cd "$src"
-done_dirs=" "; n=0
-while read -r dir cmd case table opts; do
+bash scripts/run_detectors.sh "$bin" "$tmp"
+n=0
+while read -r dir _ _ table opts; do
   case "$dir" in ''|'#'*) continue ;; esac
-  if [[ "$done_dirs" != *" $dir "* ]]; then
-    if [ "$cmd" = run ]; then
-      "$bin" run "$case" -o "$tmp/$dir" --format csv -q || test $? -eq 1
-    else
-      "$bin" "$cmd" "$case" -o "$tmp/$dir" -q >/dev/null || test $? -eq 1
-    fi
-    done_dirs="$done_dirs$dir "
-  fi
   # shellcheck disable=SC2086  # the options are words
   if ! "$bin" diff "tests/ref/$dir/$table" "$tmp/$dir/$table" $opts > "$tmp/report.txt"; then
     echo "CHANGED: tests/ref/$dir/$table (mhcontact diff $opts):" >&2; cat "$tmp/report.txt" >&2; exit 1
