@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "contact/ellipse/hertz_validity.hpp"
+#include "contact/judge/evidence.hpp"
 #include "geometry/gap.hpp"
 
 namespace mh {
@@ -35,6 +36,8 @@ void add_interaction_warning(CaseResult& r, double d_comb) {
 
 void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY,
                            const MethodOptions& opt) {
+  // Every method: a plastic contact loaded beyond the domain its tests cover (evidence.hpp).
+  add_evidence_warnings(r, mat);
   if (r.method != Method::MultiHertzian) return;
   add_interaction_warning(r, opt.strips.d_comb);
   if (r.status != CaseStatus::Ok || r.loaded.empty()) return;

@@ -23,8 +23,11 @@ EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb);
 /// [m] with material mat and options opt, and add the warnings of its tests. Every method and
 /// entry point calls it once per case (solve_contact(), and the C interface's approach-given
 /// solve); `auto` judges its multi-Hertzian answer with the same tests before keeping it, so a
-/// multi-Hertzian row is `ok` exactly when `auto` keeps it (or would, but for off_profile).
-///  1. add_validity_warnings(): a multi-Hertzian row gets `interacting` for two ellipses closer
+/// multi-Hertzian row is `ok` exactly when `auto` keeps it (or would, but for off_profile or
+/// beyond_evidence: the grid methods share its evidence bound, so auto keeps the row, judged).
+///  1. add_validity_warnings(): a plastic row of any method gets `beyond_evidence` for each
+///     loaded ellipse or patch loaded beyond its method and law's evidence domain (evidence.hpp);
+///     a multi-Hertzian row gets `interacting` for two ellipses closer
 ///     than d_comb and, when it passed every Hertz test (no non_hertzian, non_hertzian_excluded
 ///     or interacting warning) and converged, `non_hertzian:ellipse=K:gap_kink=R>0.1` for each
 ///     loaded ellipse with a corner of the gap inside its patch (hertz_validity.hpp, gap_kink).

@@ -41,6 +41,7 @@ const std::vector<WarningClassInfo>& warning_classes() {
       {C::UnderResolved, "under_resolved", true, "a grid patch with fewer elements across than the method's accuracy needs, or whose peak still moved on its last refinement (grid_checks.hpp)"},
       {C::ContactHole, "contact_hole", true, "a grid patch with unloaded elements enclosed by loaded ones where the bodies overlap (grid_checks.hpp)"},
       {C::Auto, "auto", false, "which method auto handed the case to, and why (informational)"},
+      {C::BeyondEvidence, "beyond_evidence", true, "a plastic contact loaded beyond the domain the project's tests establish for its method and law (contact/judge/evidence.hpp, docs/trust.md)"},
   };
   return k;
 }
@@ -99,6 +100,8 @@ const QuantityInfo& info(Quantity q) {
       {"elements_across", "count", 1, Fmt::Count, Fmt::Count},
       {"peak_change", "1", 1, Fmt::Round3, Fmt::Raw},
       {"element_mm", "m", 1e3, Fmt::Round3, Fmt::Raw},
+      {"p0_el_over_sigma_y", "1", 1, Fmt::Round3, Fmt::Raw},
+      {"p0_el_over_p_lim", "1", 1, Fmt::Round3, Fmt::Raw},
   };
   return k[static_cast<std::size_t>(q)];
 }

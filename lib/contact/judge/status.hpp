@@ -38,6 +38,7 @@ enum class WarningClass : std::uint8_t {
   UnderResolved,
   ContactHole,
   Auto,
+  BeyondEvidence,
 };
 /// The class's name as written ("non_hertzian").
 const char* to_string(WarningClass c);
@@ -85,6 +86,8 @@ enum class Quantity : std::uint8_t {
   ElementsAcross,       ///< [count] elements across a grid patch      "elements_across"
   PeakChange,           ///< [1] peak change on the last refinement    "peak_change"
   Element,              ///< [m] element size across the patch         "element_mm"
+  P0ElOverSigmaY,       ///< [1] elastic Hertz p0 of the load / σ_y (evidence.hpp) "p0_el_over_sigma_y"
+  P0ElOverPLim,         ///< [1] elastic Hertz p0 of the load / p_lim (evidence.hpp) "p0_el_over_p_lim"
 };
 /// The written name ("edge_gap_mm") and the SI unit of value and limit ("1", "m", "Pa", "count").
 const char* name(Quantity q);
