@@ -15,11 +15,14 @@ const char* to_string(CaseStatus s) {
     case CaseStatus::NoContact: return "no_contact";
     case CaseStatus::OutOfRange: return "out_of_range";
     case CaseStatus::NotConverged: return "not_converged";
+    case CaseStatus::Derailed: return "derailed";
   }
   return "?";
 }
 
-bool is_failure(CaseStatus s) { return s != CaseStatus::Ok && s != CaseStatus::OutsideValidity; }
+bool is_failure(CaseStatus s) {
+  return s != CaseStatus::Ok && s != CaseStatus::OutsideValidity && s != CaseStatus::Derailed;
+}
 
 const std::vector<WarningClassInfo>& warning_classes() {
   using C = WarningClass;
@@ -41,6 +44,9 @@ const std::vector<WarningClassInfo>& warning_classes() {
       {C::UnderResolved, "under_resolved", true, "a grid patch with fewer elements across than the method's accuracy needs, or whose peak still moved on its last refinement (grid_checks.hpp)"},
       {C::ContactHole, "contact_hole", true, "a grid patch with unloaded elements enclosed by loaded ones where the bodies overlap (grid_checks.hpp)"},
       {C::Auto, "auto", false, "which method auto handed the case to, and why (informational)"},
+      // States of the vehicle, not limits of the methods (judge.hpp, docs/status.md).
+      {C::NadalLimit, "nadal_limit", false, "the ratio Y/Q of lateral to vertical wheel force exceeds EN 14363's flange-climbing limit 0.8 (informational)"},
+      {C::Derailed, "derailed", false, "the wheel rides on its flange tip, off the rail: the row's status is derailed"},
   };
   return k;
 }
@@ -99,6 +105,8 @@ const QuantityInfo& info(Quantity q) {
       {"elements_across", "count", 1, Fmt::Count, Fmt::Count},
       {"peak_change", "1", 1, Fmt::Round3, Fmt::Raw},
       {"element_mm", "m", 1e3, Fmt::Round3, Fmt::Raw},
+      {"Y_over_Q", "1", 1, Fmt::Round3, Fmt::Raw},
+      {"r_roll_mm", "m", 1e3, Fmt::Round3, Fmt::Round3},
   };
   return k[static_cast<std::size_t>(q)];
 }
