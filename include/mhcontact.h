@@ -70,8 +70,10 @@ typedef enum mhc_status {
                                      Also a conformal contact the multi-Hertzian method cannot solve
                                      (every candidate with B <= 0): no force computed, the message
                                      says so (solve it with MHC_METHOD_AUTO, _STRIPS or _HALF_SPACE) */
-  MHC_STATUS_OUTSIDE_VALIDITY = 4 /**< solved, but outside the method's validity (a warning says
+  MHC_STATUS_OUTSIDE_VALIDITY = 4, /**< solved, but outside the method's validity (a warning says
                                        why: MHC_WARN_* bits); an answer, not to be trusted */
+  MHC_STATUS_DERAILED = 5 /**< solved, but the wheel rides on its flange tip, off the rail (the
+                               `derailed` warning, docs/status.md); an answer, never `ok` */
 } mhc_status;
 
 typedef enum mhc_kind { MHC_WHEEL = 1, MHC_RAIL = 2 } mhc_kind;

@@ -163,6 +163,7 @@ py::dict result_dict(const mhc_result& r) {
   d["n_contacts"] = r.n_contacts;
   d["Fz_kN"] = r.Fz_N / 1e3;
   d["Fy_kN"] = r.Fy_N / 1e3;
+  d["Y_over_Q"] = r.Fz_N > 0 ? r.Fy_N / r.Fz_N : NAN;  // the Nadal ratio (cases.csv Y_over_Q)
   d["pmax_MPa"] = r.p_max_Pa / 1e6;
   d["area_mm2"] = r.area_m2 * 1e6;
   d["gamma_main_deg"] = r.gamma_main_rad / deg;
@@ -179,7 +180,7 @@ py::dict result_dict(const mhc_result& r) {
 
 /// The float columns of solve_many, in the order of cases.csv, then the stiffness.
 const char* kFloatCols[] = {"tY_mm",    "Q_kN",     "dz_virtual_mm", "approach_mm",    "iterations",
-                            "residual", "Fz_kN",    "Fy_kN",         "pmax_MPa",       "area_mm2",
+                            "residual", "Fz_kN",    "Fy_kN",         "Y_over_Q",       "pmax_MPa",       "area_mm2",
                             "gamma_main_deg", "r_roll_main_mm", "dFz_ddz_kN_per_mm"};
 constexpr int kNFloat = sizeof kFloatCols / sizeof kFloatCols[0];
 
@@ -189,6 +190,7 @@ void fill_columns(const mhc_result& r, std::size_t i, double* const* f, int8_t* 
   const double v[kNFloat] = {r.tY_m * 1e3,       r.Q_N / 1e3,     r.dz_m * 1e3,
                              r.approach_m * 1e3, failed ? NAN : static_cast<double>(r.iterations),
                              r.residual,         r.Fz_N / 1e3,    r.Fy_N / 1e3,
+                             r.Fz_N > 0 ? r.Fy_N / r.Fz_N : NAN,
                              r.p_max_Pa / 1e6,   r.area_m2 * 1e6, r.gamma_main_rad / deg,
                              r.r_roll_main_m * 1e3, r.dFz_ddz_N_per_m / 1e6};
   for (int c = 0; c < kNFloat; ++c) f[c][i] = v[c];
@@ -212,7 +214,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__version__") = mhc_version();
   m.attr("abi_version") = mhc_abi_version();
   m.attr("fft_backend") = mhc_fft_backend();
-  m.attr("STATUS_NAMES") = py::make_tuple("ok", "no_contact", "out_of_range", "not_converged", "outside_validity");
+  m.attr("STATUS_NAMES") = py::make_tuple("ok", "no_contact", "out_of_range", "not_converged", "outside_validity", "derailed");
   m.attr("METHOD_NAMES") = py::make_tuple("multi-hertzian", "half-space", "strips", "auto");
 
   py::class_<Profile>(m, "Profile", "A wheel or rail profile (immutable).")

@@ -62,6 +62,7 @@ int32_t status_code(CaseStatus s) {
     case CaseStatus::OutOfRange: return MHC_STATUS_OUT_OF_RANGE;
     case CaseStatus::NotConverged: return MHC_STATUS_NOT_CONVERGED;
     case CaseStatus::OutsideValidity: return MHC_STATUS_OUTSIDE_VALIDITY;
+    case CaseStatus::Derailed: return MHC_STATUS_DERAILED;
   }
   return MHC_STATUS_NOT_CONVERGED;
 }
@@ -340,6 +341,7 @@ const char* mhc_status_name(int32_t status) {
     case MHC_STATUS_OUT_OF_RANGE: return "out_of_range";
     case MHC_STATUS_NOT_CONVERGED: return "not_converged";
     case MHC_STATUS_OUTSIDE_VALIDITY: return "outside_validity";
+    case MHC_STATUS_DERAILED: return "derailed";
   }
   return "unknown";
 }

@@ -54,6 +54,7 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
     hand_on = false;
   }
   if (!hand_on) {
+    add_vehicle_state_warnings(mhr, G);
     decide_status(mhr);
     return mhr;
   }

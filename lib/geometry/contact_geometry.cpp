@@ -414,6 +414,8 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
       G.has_flange = true;
       G.flange_gamma_max = gmax;
       G.flange_y_steepest = W.node_y(i_lo);
+      G.flange_y_tip = y_tip;
+      G.flange_r_tip = G.nominal_radius - (W.z(y_tip) - G.wheel_z0);
     }
   }
   if (!G.has_flange && track.positioning == TrackSetup::Positioning::Gauge)

@@ -135,6 +135,9 @@ class ContactGeometry {
   /// within `flange_angle_tolerance` of it [m]; has_flange false for a wheel without a flange.
   bool has_flange = false;
   double flange_gamma_max = 0, flange_y_steepest = 0;
+  /// [m] The flange tip (the wheel's lowest point): its lateral y_w and its rolling radius, the
+  /// largest of the wheel (the judge's derailment test, contact/judge/judge.hpp). 0 without a flange.
+  double flange_y_tip = 0, flange_r_tip = 0;
   /// Warnings about the pair's placement (a wheel without a flange placed by the gauge rule).
   std::vector<std::string> warnings;
   double rail_gauge_y = 0;               ///< [m] gauge point of the rail (rail frame); explicit positioning: the gauge point if the rail has one, else 0

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "contact/judge/judge.hpp"
 #include "core/units.hpp"
 #include "output/cells.hpp"
 
@@ -248,6 +249,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; append_number(s, static_cast<long long>(r.n_contacts));
     s += ','; rnum(s, r.Fz / units::kN);
     s += ','; rnum(s, r.Fy / units::kN);
+    s += ','; pnum(s, y_over_q(r));
     s += ','; pnum(s, r.pmax / units::MPa);
     s += ','; pnum(s, r.area * units::per_mm2);
     s += ','; if (!failed) num_repeated(s, gamma_main);
@@ -299,6 +301,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     j["n_contacts"] = r.n_contacts;
     j["Fz_kN"] = rv(r.Fz / units::kN);
     j["Fy_kN"] = rv(r.Fy / units::kN);
+    j["Y_over_Q"] = rv(y_over_q(r));
     j["pmax_MPa"] = rv(r.pmax / units::MPa);
     j["area_mm2"] = rv(r.area * units::per_mm2);
     j["gamma_main_deg"] = rv(gamma_main);
@@ -413,7 +416,7 @@ std::string pressure_table_header(Method m, bool plastic) {
 std::string patch_pressure_csv_header() { return "case,patch,x_mm,s_mm,y_rail_mm,p_MPa\n"; }
 
 std::string cases_csv_header() {
-  return "case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,"
+  return "case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,Y_over_Q,"
          "pmax_MPa,area_mm2,gamma_main_deg,r_roll_main_mm,plastic,n_warnings,warnings,message\n";
 }
 

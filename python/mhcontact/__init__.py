@@ -23,7 +23,7 @@ __all__ = ["Pair", "Profile", "InputError", "UnsupportedError", "STATUS_NAMES", 
 #: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp), then the
 #: vertical contact stiffness dFz/d(dz) (not in cases.csv).
 CASE_COLUMNS = ("case", "tY_mm", "Q_kN", "status", "method", "dz_virtual_mm", "approach_mm", "iterations",
-                "residual", "n_contacts", "Fz_kN", "Fy_kN", "pmax_MPa", "area_mm2", "gamma_main_deg",
+                "residual", "n_contacts", "Fz_kN", "Fy_kN", "Y_over_Q", "pmax_MPa", "area_mm2", "gamma_main_deg",
                 "r_roll_main_mm", "plastic", "n_warnings", "dFz_ddz_kN_per_mm")
 
 

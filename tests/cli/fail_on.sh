@@ -21,7 +21,7 @@ expect 1 "mhcontact run: 12 cases with flange_climb (--fail-on): exit 1" "$tmp/f
 [ -s "$tmp/fc/cases.csv" ] || { echo "FAIL: --fail-on: outputs not written"; fails=1; }
 expect 1 "27 cases with non_hertzian, 10 cases with interacting (--fail-on): exit 1" "$tmp/nh" "$m" --fail-on non_hertzian,interacting
 # Any warning.
-expect 1 "39 cases with warnings, 0 cant warning(s) (--fail-on-warning): exit 1" "$tmp/any" "$m" --fail-on-warning
+expect 1 "46 cases with warnings, 0 cant warning(s) (--fail-on-warning): exit 1" "$tmp/any" "$m" --fail-on-warning
 # A misspelt class is an input error: exit 2, the classes listed, nothing written.
 expect 2 '--fail-on: value "off-profile": not a warning class (the classes are non_hertzian, ' "$tmp/bad" "$m" --fail-on off-profile
 [ ! -e "$tmp/bad" ] || { echo "FAIL: a refused run wrote $tmp/bad"; fails=1; }

@@ -39,12 +39,12 @@ test -s out/manchester/cases.csv
 # --- README.md, "A worked example"; docs/cli.md, "run" ----------------------------------------
 ./build/mhcontact run cases/manchester.json -o out/manchester 2> "$tmp/run.err"
 for f in cases.csv ellipses.csv geometry.csv results.json profiles.csv run.json; do test -s "out/manchester/$f"; done
-grep -E '^(case|26|68|86),' out/manchester/cases.csv | cut -d, -f2-4,10,13-15 > "$tmp/cases.txt"
+grep -E '^(case|26|68|86),' out/manchester/cases.csv | cut -d, -f2-4,10,14-16 > "$tmp/cases.txt"
 grep -E '^(case|68),' out/manchester/ellipses.csv | cut -d, -f4,6-9 > "$tmp/ellipses.txt"
 # The outputs the README shows are the commands' outputs (the run's time masked).
 shown_output README.md "./build/mhcontact run cases/manchester.json -o out/manchester" | sed 's/; [0-9.]* s;/; T s;/' > "$tmp/expect/run.err"
 tail -n 1 "$tmp/run.err" | sed 's/; [0-9.]* s;/; T s;/' | diff "$tmp/expect/run.err" -
-shown_output README.md "grep -E '^(case|26|68|86),' out/manchester/cases.csv | cut -d, -f2-4,10,13-15" | diff - "$tmp/cases.txt"
+shown_output README.md "grep -E '^(case|26|68|86),' out/manchester/cases.csv | cut -d, -f2-4,10,14-16" | diff - "$tmp/cases.txt"
 shown_output README.md "grep -E '^(case|68),' out/manchester/ellipses.csv | cut -d, -f4,6-9" | diff - "$tmp/ellipses.txt"
 test -s "$tmp/cases.txt" && test -s "$tmp/ellipses.txt"
 

@@ -63,18 +63,46 @@ void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Materi
   }
 }
 
+double y_over_q(const CaseResult& r) { return r.Fz > 0 ? r.Fy / r.Fz : NAN; }
+
+void add_vehicle_state_warnings(CaseResult& r, const ContactGeometry& G, const VehicleStateLimits& lim) {
+  if (is_failure(r.status)) return;
+  const double yq = y_over_q(r);
+  if (yq > lim.nadal) r.warnings.push_back(Warning(WarningClass::NadalLimit).add(Quantity::YOverQ, yq, '>', lim.nadal));
+  if (!G.has_flange) return;
+  // The main contact: the loaded ellipse or grid patch carrying the largest normal force (as the
+  // r_roll_main_mm column).
+  double N = -1, y_w = 0, r_roll = 0;
+  int contact = 0;
+  ContactKind kind = ContactKind::None;
+  for (const LoadedEllipse& L : r.loaded)
+    if (L.s.N > N) { N = L.s.N; y_w = L.g.y_w; r_roll = L.g.r_roll; contact = L.ellipse; kind = ContactKind::Ellipse; }
+  for (const PatchResult& P : r.patches)
+    if (P.N > N) { N = P.N; y_w = P.y_w; r_roll = P.r_roll; contact = P.patch; kind = ContactKind::Patch; }
+  if (kind == ContactKind::None || !(y_w < G.flange_y_steepest)) return;
+  const double r_lim = G.flange_r_tip - lim.derail_margin;
+  if (r_roll >= r_lim) r.warnings.push_back(Warning(WarningClass::Derailed, kind, contact).add(Quantity::RRoll, r_roll, '>', r_lim));
+}
+
 void decide_status(CaseResult& r) {
-  if (r.status != CaseStatus::Ok) return;
+  if (r.status != CaseStatus::Ok && r.status != CaseStatus::OutsideValidity) return;
   const std::vector<WarningClass> classes = validity_failures(r.warnings);
-  if (classes.empty()) return;
-  r.status = CaseStatus::OutsideValidity;
-  r.message = "outside the validity of the method: ";
-  for (std::size_t i = 0; i < classes.size(); ++i) r.message += std::string(i ? ", " : "") + to_string(classes[i]);
-  r.message += " (see warnings)";
+  if (r.status == CaseStatus::Ok && !classes.empty()) {
+    r.status = CaseStatus::OutsideValidity;
+    r.message = "outside the validity of the method: ";
+    for (std::size_t i = 0; i < classes.size(); ++i) r.message += std::string(i ? ", " : "") + to_string(classes[i]);
+    r.message += " (see warnings)";
+  }
+  if (has_class(r.warnings, WarningClass::Derailed)) {
+    r.status = CaseStatus::Derailed;
+    r.message = "the wheel rides on its flange tip, off the rail (see warnings)" +
+                (classes.empty() ? std::string() : "; " + r.message);
+  }
 }
 
 void judge_case(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY, const MethodOptions& opt) {
   add_validity_warnings(r, G, mat, tY, opt);
+  add_vehicle_state_warnings(r, G);
   decide_status(r);
 }
 

@@ -19,6 +19,31 @@ struct EllipseInteraction {
 };
 EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb);
 
+/// The Nadal ratio Y/Q of a case: its lateral over its vertical force of the wheel on the rail,
+/// Fy / Fz (CaseResult's signs: positive towards the field side, as a flange contact pushes the
+/// rail). NaN when Fz <= 0 (no force).
+double y_over_q(const CaseResult& r);
+
+/// The limits of the judge's vehicle-state warnings (docs/status.md): states of the wheelset, not
+/// limits of a method, so informational (they never make a row outside_validity).
+struct VehicleStateLimits {
+  /// Y/Q above which a case carries `nadal_limit`: EN 14363's flange-climbing limit (Y/Q)_lim = 0.8
+  /// for a wheel with 70° flange and μ = 0.36 (Nadal, as rounded there). The full Nadal limit,
+  /// (tan β − μ) / (1 + μ tan β), depends on the flange angle β and the friction μ, which a
+  /// normal-contact case does not know; this is the standard's fixed value.
+  double nadal = 0.8;
+  /// [m] The wheel rides on its flange tip when its main contact has passed the flange's steepest
+  /// point (flange_climb) and its rolling radius is within this of the flange tip's (the largest
+  /// of the wheel): `derailed` (docs/status.md gives the figures this margin is chosen from).
+  double derail_margin = 2e-3;
+};
+
+/// The vehicle-state warnings of a solved case (any method): `nadal_limit` when Y/Q > lim.nadal,
+/// `derailed` when the wheel rides on its flange tip (VehicleStateLimits::derail_margin). Rows
+/// without an answer (is_failure) get none. judge_case() calls it; so does `auto` for the
+/// multi-Hertzian rows it keeps.
+void add_vehicle_state_warnings(CaseResult& r, const ContactGeometry& G, const VehicleStateLimits& lim = {});
+
 /// The judge (docs/status.md): decide the status of a solved case r of the geometry G at t_Y
 /// [m] with material mat and options opt, and add the warnings of its tests. Every method and
 /// entry point calls it once per case (solve_contact(), and the C interface's approach-given
@@ -31,15 +56,18 @@ EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb);
 ///     than d_comb and, when it passed every Hertz test (no non_hertzian, non_hertzian_excluded
 ///     or interacting warning) and converged, `non_hertzian:ellipse=K:gap_kink=R>0.1` for each
 ///     loaded ellipse with a corner of the gap inside its patch (hertz_validity.hpp, gap_kink).
-///  2. decide_status(): an `ok` row with a warning of a validity class becomes OutsideValidity,
-///     its message naming the classes; other statuses stay.
+///  2. add_vehicle_state_warnings(): nadal_limit and derailed (informational classes).
+///  3. decide_status(): an `ok` row with a warning of a validity class becomes OutsideValidity,
+///     its message naming the classes; then an `ok` or `outside_validity` row with the `derailed`
+///     warning becomes Derailed (the wheel is off the rail, whatever the method's accuracy);
+///     other statuses stay.
 void judge_case(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY, const MethodOptions& opt);
 
 /// Step 1 of judge_case() alone: the warnings, the status untouched (auto reads them to decide
 /// whether to hand the case on, and starts the grid methods from the unjudged row).
 void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY,
                            const MethodOptions& opt);
-/// Step 2 of judge_case() alone.
+/// Step 3 of judge_case() alone.
 void decide_status(CaseResult& r);
 
 /// The judge without the geometry (unit tests of the rule on hand-made results): the

@@ -15,11 +15,14 @@ const char* to_string(CaseStatus s) {
     case CaseStatus::NoContact: return "no_contact";
     case CaseStatus::OutOfRange: return "out_of_range";
     case CaseStatus::NotConverged: return "not_converged";
+    case CaseStatus::Derailed: return "derailed";
   }
   return "?";
 }
 
-bool is_failure(CaseStatus s) { return s != CaseStatus::Ok && s != CaseStatus::OutsideValidity; }
+bool is_failure(CaseStatus s) {
+  return s != CaseStatus::Ok && s != CaseStatus::OutsideValidity && s != CaseStatus::Derailed;
+}
 
 const std::vector<WarningClassInfo>& warning_classes() {
   using C = WarningClass;
@@ -42,6 +45,9 @@ const std::vector<WarningClassInfo>& warning_classes() {
       {C::ContactHole, "contact_hole", true, "a grid patch with unloaded elements enclosed by loaded ones where the bodies overlap (grid_checks.hpp)"},
       {C::Auto, "auto", false, "which method auto handed the case to, and why (informational)"},
       {C::BeyondEvidence, "beyond_evidence", true, "a plastic contact loaded beyond the domain the project's tests establish for its method and law (contact/judge/evidence.hpp, docs/trust.md)"},
+      // States of the vehicle, not limits of the methods (judge.hpp, docs/status.md).
+      {C::NadalLimit, "nadal_limit", false, "the ratio Y/Q of lateral to vertical wheel force exceeds EN 14363's flange-climbing limit 0.8 (informational)"},
+      {C::Derailed, "derailed", false, "the wheel rides on its flange tip, off the rail: the row's status is derailed"},
   };
   return k;
 }
@@ -102,6 +108,8 @@ const QuantityInfo& info(Quantity q) {
       {"element_mm", "m", 1e3, Fmt::Round3, Fmt::Raw},
       {"p0_el_over_sigma_y", "1", 1, Fmt::Round3, Fmt::Raw},
       {"p0_el_over_p_lim", "1", 1, Fmt::Round3, Fmt::Raw},
+      {"Y_over_Q", "1", 1, Fmt::Round3, Fmt::Raw},
+      {"r_roll_mm", "m", 1e3, Fmt::Round3, Fmt::Round3},
   };
   return k[static_cast<std::size_t>(q)];
 }

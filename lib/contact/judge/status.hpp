@@ -16,11 +16,13 @@ namespace mh {
 /// Ok and OutsideValidity rows carry an answer (their numbers are written); OutsideValidity says
 /// it is not to be trusted: the method solved the case outside the conditions it is valid in, and
 /// the warnings say which (the judge, contact/judge/judge.hpp; docs/status.md). NoContact and
-/// OutOfRange rows have no answer; a NotConverged row keeps its last iterate.
-enum class CaseStatus { Ok, OutsideValidity, NoContact, OutOfRange, NotConverged };
+/// OutOfRange rows have no answer; a NotConverged row keeps its last iterate. A Derailed row
+/// carries its answer too, for a wheel that rides on its flange tip (off the rail: the judge's
+/// `derailed` warning, docs/status.md): never `ok`, whatever the method says of its accuracy.
+enum class CaseStatus { Ok, OutsideValidity, NoContact, OutOfRange, NotConverged, Derailed };
 const char* to_string(CaseStatus s);
 /// True for the statuses without a usable answer (no_contact, out_of_range, not_converged): the
-/// cases a run counts as `failed` and exits 1 for. Ok and OutsideValidity are answers.
+/// cases a run counts as `failed` and exits 1 for. Ok, OutsideValidity and Derailed are answers.
 bool is_failure(CaseStatus s);
 
 /// The class of a warning (the text before its first ':'). The table of classes, with whether
@@ -39,13 +41,16 @@ enum class WarningClass : std::uint8_t {
   ContactHole,
   Auto,
   BeyondEvidence,
+  NadalLimit,
+  Derailed,
 };
 /// The class's name as written ("non_hertzian").
 const char* to_string(WarningClass c);
 
 /// The warning classes a case can carry, each with whether it puts the row outside its method's
 /// validity (docs/status.md; a unit test checks every one is documented there). Every class but
-/// the informational `auto` and `flange_climb` does. In the order of WarningClass.
+/// the informational `auto`, `flange_climb`, `nadal_limit` and `derailed` does
+/// (`derailed` sets its own status, CaseStatus::Derailed). In the order of WarningClass.
 struct WarningClassInfo {
   WarningClass cls;
   const char* name;
@@ -88,6 +93,8 @@ enum class Quantity : std::uint8_t {
   Element,              ///< [m] element size across the patch         "element_mm"
   P0ElOverSigmaY,       ///< [1] elastic Hertz p0 of the load / σ_y (evidence.hpp) "p0_el_over_sigma_y"
   P0ElOverPLim,         ///< [1] elastic Hertz p0 of the load / p_lim (evidence.hpp) "p0_el_over_p_lim"
+  YOverQ,               ///< [1] Fy / Fz, the Nadal ratio Y/Q          "Y_over_Q"
+  RRoll,                ///< [m] rolling radius at the main contact    "r_roll_mm"
 };
 /// The written name ("edge_gap_mm") and the SI unit of value and limit ("1", "m", "Pa", "count").
 const char* name(Quantity q);

@@ -26,8 +26,8 @@ TEST_CASE("failed rows: empty CSV cells, JSON null, same convention for every fa
   cp.tY_mm = 99;
   cp.Q_kN = 100;
   const std::vector<std::string> keys = {"dz_virtual_mm", "approach_mm", "iterations", "residual",
-                                         "Fz_kN", "Fy_kN", "pmax_MPa", "area_mm2"};
-  const std::vector<std::size_t> cols = {5, 6, 7, 8, 10, 11, 12, 13};  // in cases_csv_header()
+                                         "Fz_kN", "Fy_kN", "Y_over_Q", "pmax_MPa", "area_mm2"};
+  const std::vector<std::size_t> cols = {5, 6, 7, 8, 10, 11, 12, 13, 14};  // in cases_csv_header()
   const auto header = split(cases_csv_header());
   for (std::size_t i = 0; i < cols.size(); ++i) REQUIRE(header[cols[i]] == keys[i]);
   struct Kind { CaseStatus st; const char* text; double fill; };
