@@ -21,6 +21,10 @@
 // PocketFFT's own thread pool stays out: apply() is called from the project's worker threads
 // (lib/jobs), one transform per call.
 #define POCKETFFT_NO_MULTITHREADING
+// The header's arr<T> takes C11 aligned_alloc(64, n) under glibc without rounding n up to a
+// multiple of 64, which C11 requires (AddressSanitizer rejects every plan); this macro, tested by
+// the header alone, selects its portable aligned allocator (malloc + 64, aligned by hand) instead.
+#define _LIBCPP_HAS_NO_ALIGNED_ALLOCATION
 #include <pocketfft_hdronly.h>
 #endif
 
