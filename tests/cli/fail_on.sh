@@ -29,4 +29,16 @@ expect 2 '--fail-on: value "": empty warning class' "$tmp/bad2" "$m" --fail-on "
 # A batch: the fleet's flange-climb rows.
 expect 1 "48 cases with flange_climb (--fail-on): exit 1" "$tmp/fleet" "$src/cases/fleet.json" --fail-on flange_climb
 expect 0 "" "$tmp/fleet0" "$src/cases/fleet.json" --fail-on off_profile -q
+# A wheel on its flange tip (S1002/60E1 1:40, t_Y 30 mm, 80 kN; docs/status.md "Derailed"): status
+# derailed, an answer like outside_validity (exit 0), a failure only when asked for.
+cat > "$tmp/derail.json" <<'JSON'
+{"wheel": {"profile": {"standard": "S1002"}, "nominal_radius_mm": 460},
+ "rail": {"profile": {"standard": "60E1"}, "inclination": "1:40"},
+ "material": {"E_GPa": 210, "nu": 0.28}, "model": "elastic", "method": "auto",
+ "sweep": {"tY_mm": [0, 30], "Q_kN": [80]}}
+JSON
+expect 0 "2 cases, derailed 1, ok 1," "$tmp/der0" "$tmp/derail.json"
+grep -q '^1,30,80,derailed,' "$tmp/der0/cases.csv" || { echo "FAIL: t_Y 30 mm not derailed"; cat "$tmp/der0/cases.csv"; fails=1; }
+expect 1 "1 cases with derailed (--fail-on): exit 1" "$tmp/der1" "$tmp/derail.json" --fail-on derailed
+expect 1 "(--fail-on-warning): exit 1" "$tmp/der2" "$tmp/derail.json" --fail-on-warning
 exit $fails
