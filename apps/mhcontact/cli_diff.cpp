@@ -32,6 +32,7 @@ struct DiffArgs {
   std::vector<std::string> column_tol;
   std::vector<std::string> key;
   std::vector<std::string> ignore_columns;
+  bool exact_noise = false;
   bool json = false;
   bool quiet = false;
 };
@@ -75,6 +76,10 @@ void add_diff_command(CLI::App& app, CliContext& ctx) {
       ->delimiter(',')
       ->type_name("COL")
       ->allow_extra_args(false);
+  cmd->add_flag("--exact-noise", args->exact_noise,
+                "Compare the solver-noise columns (residual, iterations) with the tolerances of "
+                "every column instead of their rules (residual: both <= 1e-6; iterations: "
+                "out <= 2 ref + 3)");
   cmd->add_flag("--json", args->json, "Print a machine-readable JSON report instead of text");
   cmd->add_flag("--quiet", args->quiet, "Print only the final line (diff: OK / diff: N cells ...)");
 
@@ -94,6 +99,7 @@ void add_diff_command(CLI::App& app, CliContext& ctx) {
     }
     opt.key = args->key;
     opt.ignore_columns = args->ignore_columns;
+    opt.noise_rules = !args->exact_noise;
     std::string why;
     if (!opt.IsValid(&why)) throw InputError("diff options", "", why);
 

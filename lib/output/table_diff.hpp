@@ -11,6 +11,12 @@
 //    A key that occurs twice in one table is an InputError naming the file and line.
 //  - Columns: matched by name (order may differ). Columns only in REF ("missing") or only in
 //    OUT ("extra") are reported and make the tables differ.
+//  - Solver-noise columns (noise_rules(); DiffOptions::noise_rules, default on): `residual` and
+//    `iterations` measure how a solver converged, not the answer, and are compared by a rule that
+//    fits them instead of atol/rtol: a residual passes when both cells are converged (|value| ≤
+//    1e-6), an iteration count when OUT takes at most twice REF's plus 3. A column tolerance
+//    replaces the rule for its column; `--exact-noise` (noise_rules = false) compares them like
+//    any column.
 //  - Ignored columns (DiffOptions::ignore_columns) are neither compared nor reported missing or
 //    extra.
 //  - A cell pair is numeric if both cells parse completely as numbers (`nan`, `inf`, `-inf`
@@ -50,12 +56,23 @@ struct DiffOptions {
   /// Columns left out of the comparison (e.g. `residual`, whose 1e-16 is noise); each must be a
   /// column of REF or OUT, not a key column and not given a column tolerance.
   std::vector<std::string> ignore_columns;
+  /// Compare the solver-noise columns (noise_rules()) by their rules (default true).
+  bool noise_rules = true;
   /// How many missing/extra row keys the text report lists (counts are always complete).
   std::size_t max_listed = 5;
 
   /// True if the option values are usable; otherwise `why` names the field, value and rule.
   bool IsValid(std::string* why) const;
 };
+
+/// A rule for a column that measures a solver's convergence rather than the answer.
+struct NoiseRule {
+  const char* column;
+  const char* rule;  ///< as the report prints it
+  bool (*pass)(double ref, double out);
+};
+/// The solver-noise columns of mhcontact's tables and their rules (docs/cli.md, "diff").
+const std::vector<NoiseRule>& noise_rules();
 
 /// One cell (or a representative of several) for the report.
 struct DiffCell {
@@ -68,6 +85,7 @@ struct DiffCell {
 struct ColumnDiff {
   std::string column;
   double tolerance_abs = -1;     ///< the column tolerance if one applies, else -1 (atol/rtol)
+  const NoiseRule* noise = nullptr;  ///< the solver-noise rule applied to it, if any
   std::size_t cells_compared = 0;
   std::size_t cells_out = 0;     ///< cells out of tolerance (numeric or text)
   std::size_t numeric_out = 0;   ///< numeric pairs out of tolerance (NaN/inf mismatches included)

@@ -565,6 +565,8 @@ TEST_CASE("diff: --ignore-columns leaves columns out of the comparison", "[diff]
   const char* out = "case,residual,iterations,area_mm2\nc1,-2e-16,4,56.81\nc2,3e-17,2,113.9\n";
   DiffOptions o;
   o.rtol = 1e-2;
+  CHECK(D(ref, out, o).ok());  // residual and iterations by their solver-noise rules
+  o.noise_rules = false;       // --exact-noise
   const TableDiffResult all = D(ref, out, o);
   CHECK(all.cells_out == 3);  // residual twice (no atol), iterations once
   o.ignore_columns = {"residual", "iterations"};
@@ -587,6 +589,23 @@ TEST_CASE("diff: --ignore-columns leaves columns out of the comparison", "[diff]
   bad.ignore_columns = {"residual"};
   bad.column_tol["residual"] = 1e-9;
   CHECK(where_of([&] { D(ref, out, bad); }) == "diff options");
+}
+
+TEST_CASE("diff: the solver-noise rules (issue 38: residual 1e-16 against 0 failed a --rtol 0.03 check)", "[diff][noise]") {
+  const char* ref = "case,residual,iterations\nc1,0,3\nc2,1e-9,10\nc3,0,0\n";
+  // Converged residuals and iteration counts within 2 ref + 3: equal by their rules.
+  CHECK(D(ref, "case,residual,iterations\nc1,1e-16,9\nc2,-4e-7,23\nc3,0,3\n").ok());
+  // An unconverged residual, a count above 2 ref + 3: out, whatever rtol says.
+  DiffOptions loose;
+  loose.rtol = 1e6;
+  const TableDiffResult r = D(ref, "case,residual,iterations\nc1,2e-6,10\nc2,1e-9,24\nc3,0,4\n", loose);
+  CHECK(r.cells_out == 4);  // c1's residual; iterations 10 > 9, 24 > 23, 4 > 3
+  REQUIRE(r.columns.size() == 2);
+  CHECK(r.columns[0].noise != nullptr);
+  // A column tolerance replaces the rule.
+  DiffOptions ct;
+  ct.column_tol["residual"] = 0;
+  CHECK(D(ref, "case,residual,iterations\nc1,1e-16,3\nc2,1e-9,10\nc3,0,0\n", ct).cells_out == 1);
 }
 
 TEST_CASE("diff cli: --ignore-columns in the report and in --json", "[diff][cli][ignore]") {
