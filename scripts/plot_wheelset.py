@@ -84,10 +84,10 @@ def plot_single(d, ref):
 
 def plot_fleet(d, xname):
     rows = read_csv(os.path.join(d, "fleet.csv"))
-    ok = [r for r in rows if r["status"] == "ok" and not math.isnan(num(r[xname + "_mm"]))]
+    ok = [r for r in rows if r["status"] == "ok" and not math.isnan(num(r[xname + "_en15313_mm"]))]
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    ax.plot([num(r[xname + "_mm"]) for r in ok], [num(r["tan_gamma_e_3mm"]) for r in ok], "o", ms=4)
-    ax.set_xlabel(f"{xname} [mm] (EN 15313)")
+    ax.plot([num(r[xname + "_en15313_mm"]) for r in ok], [num(r["tan_gamma_e_3mm"]) for r in ok], "o", ms=4)
+    ax.set_xlabel(f"{xname} [mm] (EN 15313, from the profile)")
     ax.set_ylabel("tan γe at ŷ = 3 mm")
     ax.set_title(f"{len(ok)} wheels plotted, {len(rows) - len(ok)} refused or without {xname}")
     ax.grid(True, alpha=0.3)

@@ -177,33 +177,33 @@ struct FleetRow {
   std::string source, status = "ok", message;
   double head = std::nan("");
   std::vector<double> tg;
-  double Sd = std::nan(""), Sh = std::nan(""), qR = std::nan("");  ///< [m]
-  std::string measures_from;  ///< "file", "profile", "file+profile" (some of each), "" (none)
-  std::string measures_check;  ///< WheelMeasureCheck::status of Sd, Sh, qR ("" when unread)
+  /// [m] Sd, Sh, qR by EN 15313 from the profile (NaN where the profile does not allow them), and
+  /// as the file's header states them (NaN where it does not): two sources, two sets of columns.
+  double m_en[3] = {std::nan(""), std::nan(""), std::nan("")};
+  double m_file[3] = {std::nan(""), std::nan(""), std::nan("")};
+  std::string measures_check;  ///< WheelMeasureCheck::status of the EN 15313 measures ("" when unread)
 };
 
-/// The wheel's Sd, Sh, qR: as its file's header states them (MiniProf "Sd/Sh/qR" measures line
-/// or Sd=, Sh=, qR= keys, in mm: Profile::file_measures), else computed from the profile (EN
-/// 15313, wheel_measures), each on its own; `measures_from` says which.
+/// The wheel's Sd, Sh, qR computed from the profile (EN 15313, wheel_measures) and as its file's
+/// header states them (MiniProf "Sd/Sh/qR" measures line or Sd=, Sh=, qR= keys, in mm:
+/// Profile::file_measures). A header's measures may be taken at other reference heights (an old
+/// MiniProf states Sh 37.11 mm where EN 15313 gives 28 mm), so they are written apart and never
+/// checked against EN 15313's limits.
 WheelMeasures fleet_measures(const Profile& w, FleetRow& r) {
   const WheelMeasures m = wheel_measures(w);
   const char* names[3] = {"sd", "sh", "qr"};
-  double* out[3] = {&r.Sd, &r.Sh, &r.qR};
   const double computed[3] = {m.Sd, m.Sh, m.qR};
-  bool any_file = false, any_profile = false;
   for (int k = 0; k < 3; ++k) {
+    if (m.valid) r.m_en[k] = computed[k];
     for (const auto& [key, val] : w.file_measures) {
       std::string lk = key;
       for (char& ch : lk) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
       if (lk != names[k]) continue;
       char* end = nullptr;
       const double v = std::strtod(val.c_str(), &end);
-      if (end != val.c_str() && std::isfinite(v)) *out[k] = v * units::mm;
+      if (end != val.c_str() && std::isfinite(v)) r.m_file[k] = v * units::mm;
     }
-    if (std::isfinite(*out[k])) any_file = true;
-    else if (m.valid) *out[k] = computed[k], any_profile = true;
   }
-  r.measures_from = any_file && any_profile ? "file+profile" : any_file ? "file" : any_profile ? "profile" : "";
   return m;
 }
 
@@ -234,7 +234,7 @@ int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostrea
         const WheelMeasures m = fleet_measures(w, r);
         // The wheel is both wheels of the fleet's wheelset; EN 15313's band by the larger diameter.
         const double D = std::max(wheel_diameter(wc.placement, -1), wheel_diameter(wc.placement, +1));
-        const WheelMeasureCheck mc = check_wheel_measures(r.Sd, r.Sh, r.qR, D);
+        const WheelMeasureCheck mc = check_wheel_measures(r.m_en[0], r.m_en[1], r.m_en[2], D);
         r.measures_check = mc.status;
         const Wheelset ws(track, w, w);
         const std::vector<WheelsetState> st = ws.sweep(wc.y, 1);
@@ -246,6 +246,7 @@ int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostrea
         r.head = h.tan_gamma_e;
         if (h.status != "ok") r.status = h.status, r.message = "tan_gamma_e at 3 mm: " + h.status + (why.empty() ? "" : ": " + why);
         for (double A : wc.amplitudes) {
+          if (fleet_headline_amplitude(A)) continue;  // the tan_gamma_e_3mm column already
           const ConicityResult c = conicity_checked(*C, wc.y, st, A, fc, &why);
           r.tg.push_back(c.tan_gamma_e);
           if (c.status != "ok" && r.status == "ok")
@@ -255,7 +256,9 @@ int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostrea
       } catch (const InputError& e) {
         r.status = kInvalidWheel;
         r.message = replace_all(e.what(), wc.fleet[i].file, wc.fleet[i].given);
-        r.tg.assign(wc.amplitudes.size(), std::nan(""));
+        r.tg.clear();
+        for (double A : wc.amplitudes)
+          if (!fleet_headline_amplitude(A)) r.tg.push_back(std::nan(""));
       }
     }
   };
@@ -281,11 +284,12 @@ int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostrea
         s += ',';
         cells::num(s, v);
       }
-      for (double v : {r.Sd, r.Sh, r.qR}) {
-        s += ',';
-        if (std::isfinite(v)) cells::num(s, v * units::per_mm);
-      }
-      s += ',' + r.measures_from + ',' + r.measures_check + ',';
+      for (const double* set : {r.m_en, r.m_file})
+        for (int k = 0; k < 3; ++k) {
+          s += ',';
+          if (std::isfinite(set[k])) cells::num(s, set[k] * units::per_mm);
+        }
+      s += ',' + r.measures_check + ',';
       cells::csv_text(s, r.message);
       s += '\n';
     }

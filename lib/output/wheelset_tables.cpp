@@ -62,10 +62,13 @@ void conicity_csv_row(std::string& row, double amplitude_mm, const ConicityResul
   row += '\n';
 }
 
+bool fleet_headline_amplitude(double amplitude) { return std::fabs(amplitude - 3e-3) < 1e-12; }
+
 std::string fleet_csv_header(const std::vector<double>& amplitudes_mm) {
   std::string h = "wheel,source,status,tan_gamma_e_3mm";
-  for (double a : amplitudes_mm) h += ",tan_gamma_e_" + format_number(a) + "mm";
-  return h + ",Sd_mm,Sh_mm,qR_mm,measures_from,measures_check,message\n";
+  for (double a : amplitudes_mm)
+    if (!fleet_headline_amplitude(a * 1e-3)) h += ",tan_gamma_e_" + format_number(a) + "mm";
+  return h + ",Sd_en15313_mm,Sh_en15313_mm,qR_en15313_mm,Sd_file_mm,Sh_file_mm,qR_file_mm,measures_check,message\n";
 }
 
 }  // namespace mh

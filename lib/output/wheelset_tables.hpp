@@ -30,8 +30,13 @@ void wheelset_csv_row(std::string& row, double y_mm, const WheelsetState& s, boo
 std::string conicity_csv_header();
 void conicity_csv_row(std::string& row, double amplitude_mm, const ConicityResult& c, const std::string& message = "");
 
-/// wheel,source,status,tan_gamma_e_3mm,tan_gamma_e_<A>mm...,Sd_mm,Sh_mm,qR_mm,measures_from,
-/// measures_check (EN 15313 limits: ok, outside_en15313, unknown; conicity_domain.hpp),message
+/// wheel,source,status,tan_gamma_e_3mm,tan_gamma_e_<A>mm... (every amplitude but the headline
+/// 3 mm, already first),Sd_en15313_mm,Sh_en15313_mm,qR_en15313_mm (from the profile),
+/// Sd_file_mm,Sh_file_mm,qR_file_mm (as the file's header states them),measures_check (the
+/// EN 15313 measures against EN 15313's limits: ok, outside_en15313, unknown;
+/// conicity_domain.hpp),message
 std::string fleet_csv_header(const std::vector<double>& amplitudes_mm);
+/// True for the headline amplitude, 3 mm [m]: the fleet table's tan_gamma_e_3mm column.
+bool fleet_headline_amplitude(double amplitude);
 
 }  // namespace mh

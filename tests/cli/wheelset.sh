@@ -53,24 +53,28 @@ check "asymmetric: delta_r(0) < 0, roll(0) < 0" awk -F, '$1 == "0" { exit !($2 <
 
 # --- a fleet with a wheel that cannot be placed ----------------------------------------------
 # Profiles named relative to the manifest: fleet.csv names them as given (never resolved: the
-# output does not depend on where the repository lives). The MiniProf wheel states Sd, Sh, qR in
-# its header: those are written (measures_from "file"); wheel A's are computed ("profile").
-# A wheel without a flange (field/flat_wheel.txt) is profile_incomplete; a wheel whose header
-# states Sd 36.4 mm is flagged outside EN 15313's limits (measures_check), its conicity kept.
-ln -s "$SRC/profiles" profiles; ln -s "$SRC/tests/data/field" field
+# output does not depend on where the repository lives). Each measure's source is in its column's
+# name: Sd/Sh/qR_en15313_mm computed from the profile, Sd/Sh/qR_file_mm as a file's header states
+# them (the MiniProf wheel; a header edited to Sd 36.4 mm, thick.whl, stays beside the profile's
+# 32.5 mm and is not checked: a header's reference heights are its own). A wheel without a flange
+# (field/flat_wheel.txt) is profile_incomplete; the constructed thick flange (Sd 36.4 mm from its
+# profile) is flagged outside EN 15313 (measures_check), its conicity kept. The amplitude list
+# repeats the headline 3 mm: one tan_gamma_e_3mm column.
+ln -s "$SRC/profiles" profiles; ln -s "$SRC/tests/data/field" field; ln -s "$SRC/tests/data/profiles/constructed" constructed
 sed 's/^Sd=32.50/Sd=36.40/' field/kv_wheel_measures.whl > thick.whl
 cat > fleet.json <<EOF2
-{"wheels": ["profiles/EN15302_wheel_A.dat", "field/kv_wheel_measures.whl", "profiles/60E1.csv", "field/flat_wheel.txt", "thick.whl"],
+{"wheels": ["profiles/EN15302_wheel_A.dat", "field/kv_wheel_measures.whl", "profiles/60E1.csv", "field/flat_wheel.txt", "thick.whl", "constructed/thick_flange_wheel.csv"],
  "rail": {"profile": "profiles/EN15302_rail_A.dat", "inclination": "as-is", "placement": "absolute", "origin_mm": 750},
- "y_mm": {"from": -8, "to": 8, "step": 0.02}, "amplitudes_mm": [2, 4]}
+ "y_mm": {"from": -8, "to": 8, "step": 0.02}, "amplitudes_mm": [2, 3, 4]}
 EOF2
 "$BIN" wheelset fleet.json -o fleet >stdout.txt 2>stderr.txt
 check "fleet with a refused wheel exits 1" test $? -eq 1
-check "fleet header" test "$(head -1 fleet/fleet.csv)" = "wheel,source,status,tan_gamma_e_3mm,tan_gamma_e_2mm,tan_gamma_e_4mm,Sd_mm,Sh_mm,qR_mm,measures_from,measures_check,message"
-check "fleet wheel A row" awk -F, '$1 == "0" { exit !($2 == "profiles/EN15302_wheel_A.dat" && $3 == "ok" && $4 > 0.187 && $4 < 0.189 && $10 == "profile" && $11 == "ok") }' fleet/fleet.csv
-check "header measures from the MiniProf file" awk -F, '$1 == "1" { exit !($2 == "field/kv_wheel_measures.whl" && $7 == 32.5 && $8 == 28 && $9 == 10.8 && $10 == "file" && $11 == "ok") }' fleet/fleet.csv
-check "a wheel without a flange is profile_incomplete" awk -F, '$1 == "3" { exit !($2 == "field/flat_wheel.txt" && $3 == "profile_incomplete" && $11 == "unknown") }' fleet/fleet.csv
-check "Sd 36.4 mm flagged outside EN 15313" awk -F, '$1 == "4" { exit !($3 == "ok" && $7 == 36.4 && $11 == "outside_en15313") }' fleet/fleet.csv
+check "fleet header" test "$(head -1 fleet/fleet.csv)" = "wheel,source,status,tan_gamma_e_3mm,tan_gamma_e_2mm,tan_gamma_e_4mm,Sd_en15313_mm,Sh_en15313_mm,qR_en15313_mm,Sd_file_mm,Sh_file_mm,qR_file_mm,measures_check,message"
+check "fleet wheel A row: computed measures, none from a header" awk -F, '$1 == "0" { exit !($2 == "profiles/EN15302_wheel_A.dat" && $3 == "ok" && $4 > 0.187 && $4 < 0.189 && $7 > 32 && $10 == "" && $11 == "" && $13 == "ok") }' fleet/fleet.csv
+check "the MiniProf file: header measures beside the computed ones" awk -F, '$1 == "1" { exit !($2 == "field/kv_wheel_measures.whl" && $10 == 32.5 && $11 == 28 && $12 == 10.8 && $7 > 32 && $7 < 33 && $13 == "ok") }' fleet/fleet.csv
+check "a wheel without a flange is profile_incomplete" awk -F, '$1 == "3" { exit !($2 == "field/flat_wheel.txt" && $3 == "profile_incomplete" && $7 == "" && $13 == "unknown") }' fleet/fleet.csv
+check "a header's Sd 36.4 mm is written, not checked" awk -F, '$1 == "4" { exit !($3 == "ok" && $10 == 36.4 && $7 < 33 && $13 == "ok") }' fleet/fleet.csv
+check "the profile's Sd 36.4 mm flagged outside EN 15313" awk -F, '$1 == "5" { exit !($7 > 36.3 && $7 < 36.5 && $10 == "" && $13 == "outside_en15313") }' fleet/fleet.csv
 check "the flag names the limit" grep -q "Sd 36.4 mm > 33 mm (EN 15313, D 920 mm)" fleet/fleet.csv
 check "a rail given as a wheel is refused, no figures" awk -F, '$1 == "2" { exit !($3 == "invalid_wheel" && $4 == "nan") }' fleet/fleet.csv
 check "no resolved path in fleet.csv" sh -c "! grep -q '$SRC' fleet/fleet.csv"
