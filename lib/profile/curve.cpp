@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,17 @@
 
 namespace mh {
 namespace {
+
+/// A file's print step for a person: "0.0001 mm" (not 1e-04), and a step below a picometre (a file
+/// printed to 17 significant digits) as "full precision" rather than "1e-17 mm".
+std::string print_step_text(double step) {
+  const double mm = step * 1e3;
+  if (mm < 1e-9) return "full precision";
+  const int decimals = std::max(0, static_cast<int>(std::ceil(-std::log10(mm) - 1e-9)));
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f mm", std::min(decimals, 12), mm);
+  return buf;
+}
 
 /// A fitted slope |dz/dy| above this (89.94°) is taken for a vertical tangent (ProfileCurve::build).
 constexpr double kMaxCurveSlope = 1e3;
@@ -214,14 +226,14 @@ ProfileCurve::ProfileCurve(const Profile& p, const CurveOptions& opt) {
       d.sigma = std::sqrt(v[v.size() / 2] / median_chi2);
     }
   }
-  const std::string step = p.print_step > 0 ? "the printed " + format_number(p.print_step * 1e3) + " mm" : "";
+  const std::string step = p.print_step > 0 ? "the printed " + print_step_text(p.print_step) : "";
   const std::string rule =
       "median residual " + um(d.median_residual) + (d.median_residual > d.threshold ? " > " : " <= ") + um(d.threshold) +
       (opt.quantisation_factor * d.rounding_rms > opt.noise_threshold
            ? " (" + format_number(opt.quantisation_factor) + " x " + um(d.rounding_rms) + ", rounding to " + step + ")"
            : " (noise threshold" + (step.empty() ? std::string() : "; rounding to " + step + " explains " + um(d.rounding_rms)) + ")");
   const bool coarse = d.rounding_rms > opt.max_exact_rounding && d.median_residual > opt.noise_threshold;
-  const std::string coarse_rule = "printed to " + format_number(p.print_step * 1e3) + " mm, whose rounding (" +
+  const std::string coarse_rule = "printed to " + print_step_text(p.print_step) + ", whose rounding (" +
                                   um(d.rounding_rms) + " RMS) exceeds " + um(opt.max_exact_rounding) +
                                   ": noise to the narrow window; " + rule;
   if (opt.noise == ProfileNoise::Auto) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <vector>
 
@@ -186,9 +187,15 @@ RailCantCheck check_rail_cant(const Profile& rail, const Inclination& incl, cons
 }
 
 std::string cant_ratio(double angle) {
-  if (std::fabs(angle) < 1e-9) return "0";  // vertical (the cuts resolve about 1e-12 rad)
+  // Upright when the angle prints as 0 deg (below 0.0005 deg, steeper than 1:114,000): a ratio of
+  // -1:585778.6 is the cuts' noise, not a cant.
+  if (std::fabs(angle) < 0.0005 * units::deg) return "upright";
   const double N = 1.0 / std::tan(std::fabs(angle));
-  return std::string(angle < 0 ? "-" : "") + "1:" + format_number(std::round(N * 10) / 10);
+  char buf[40];  // one decimal, fixed notation (not 1e+05), ".0" dropped
+  std::snprintf(buf, sizeof buf, "%.1f", std::round(N * 10) / 10);
+  std::string n = buf;
+  if (n.size() > 2 && n.compare(n.size() - 2, 2, ".0") == 0) n.resize(n.size() - 2);
+  return std::string(angle < 0 ? "-" : "") + "1:" + n;
 }
 
 }  // namespace mh

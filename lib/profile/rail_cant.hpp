@@ -86,7 +86,8 @@ struct RailCantCheck {
 RailCantCheck check_rail_cant(const Profile& rail_as_used, const Inclination& incl, const RailCantOptions& opt = {},
                               const RailCantLimits& lim = {});
 
-/// "1:40.0" style ratio of an angle [rad] (1:N with N = 1/tan|angle|, one decimal; "0" for 0,
+/// "1:40.0" style ratio of an angle [rad] (1:N with N = 1/tan|angle|, one decimal; "upright" below
+/// 0.0005 deg, where the angle prints as 0 deg;
 /// a leading '-' for a negative angle).
 std::string cant_ratio(double angle);
 

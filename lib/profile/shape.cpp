@@ -499,8 +499,9 @@ void clean_and_check(RawProfile& r, const std::string& path, const ProfileReadOp
       i0 = n0;
       i1 = n1;
       r.cleanup.jitter = dropped;
-      r.warnings.push_back("dropped " + std::to_string(dropped) + " points that stepped back in y by at most " +
-                           mm(worst) + " (measurement jitter, at most " + mm(L::kJitter_mm) + ") where contact can happen");
+      r.warnings.push_back("dropped " + std::to_string(dropped) + " points that " +
+                           (worst > 0 ? "stepped back in y by at most " + mm(worst) : std::string("repeat the previous point's y")) +
+                           " (measurement jitter, at most " + mm(L::kJitter_mm) + ") where contact can happen");
     }
   }
   if (opt.cleanup == ProfileCleanup::Envelope && r.kind != ProfileKind::Unknown)

@@ -47,6 +47,9 @@ tail -n 1 "$tmp/run.err" | sed 's/; [0-9.]* s;/; T s;/' | diff "$tmp/expect/run.
 shown_output README.md "grep -E '^(case|26|68|86),' out/manchester/cases.csv | cut -d, -f2-4,10,14-16" | diff - "$tmp/cases.txt"
 shown_output README.md "grep -E '^(case|68),' out/manchester/ellipses.csv | cut -d, -f4,6-9" | diff - "$tmp/ellipses.txt"
 test -s "$tmp/cases.txt" && test -s "$tmp/ellipses.txt"
+# docs/case-file.md's table of shipped cases states the Manchester run's counts: those of the run.
+counts=$(tail -n 1 "$tmp/run.err" | sed -n 's/.*99 cases, ok \([0-9]*\), outside_validity \([0-9]*\),.*/\1 `ok`, \2 `outside_validity`/p')
+test -n "$counts" && grep -qF "99 cases: $counts" "$src/docs/case-file.md"
 
 # --- README.md, "Commands"; docs/cli.md, "run", "geometry", "hertz", "diff"; docs/plots.md -----
 ./build/mhcontact run cases/manchester-plastic.json -o out/mp --pressure-grid 21

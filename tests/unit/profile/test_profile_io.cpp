@@ -18,6 +18,7 @@
 #include "core/errors.hpp"
 #include "output/profile_file.hpp"
 #include "profile/read.hpp"
+#include "profile/standard_profiles.hpp"
 
 namespace {
 
@@ -457,4 +458,34 @@ TEST_CASE("SIMPACK spline keys applied in the documented order", "[profile_io]")
   }
   REQUIRE(!p.warnings.empty());
   CHECK(p.warnings[0] == "SIMPACK bounds removed 6 points");
+}
+
+TEST_CASE("a point that repeats the previous y is said so, not 'stepped back by at most 0 mm' (issue 38)", "[profile_io][messages]") {
+  // S1002 with the point at line 200 repeated at the same y, 1 µm higher, on the flange.
+  const mh::Profile s = mh::make_standard_profile("S1002");
+  std::istringstream in(table_text(s));
+  std::string text, line;
+  for (int k = 1; std::getline(in, line); ++k) {
+    text += line + "\n";
+    if (k == 200) {
+      std::istringstream ls(line);
+      double y, z;
+      ls >> y >> z;
+      std::ostringstream dup;
+      dup.precision(17);
+      dup << y << " " << z + 1e-3 << "\n";
+      text += dup.str();
+    }
+  }
+  const mh::Profile p = [&] {
+    mh::ProfileReadOptions o;
+    o.kind = mh::ProfileKind::Wheel;
+    return mh::read_profile(write_file("repeated_y.txt", text), o);
+  }();
+  bool said = false;
+  for (const std::string& w : p.warnings) {
+    CHECK_THAT(w, !Catch::Contains("at most 0 mm"));
+    said = said || w.find("dropped 1 points that repeat the previous point's y") != std::string::npos;
+  }
+  CHECK(said);
 }

@@ -118,3 +118,13 @@ TEST_CASE("printed steps are read from the number tokens", "[noise]") {
   REQUIRE(read_profile(kData + "flat_plane.prr").print_step == Approx(1e-4));        // 0.1 mm
   REQUIRE(make_standard_profile("S1002").print_step == 0);                            // generated
 }
+
+TEST_CASE("messages give a print step as a person writes it (issue 38)", "[noise][messages]") {
+  // 4 decimals: "0.0001 mm", not "1e-04 mm"; 17 significant digits: "full precision", not "1e-17 mm".
+  const NoiseDecision four = classify(write_fixed(make_standard_profile("S1002"), 4, "S1002_4.dat"), ProfileKind::Wheel);
+  CAPTURE(four.reason);
+  CHECK_THAT(four.reason, Catch::Contains("the printed 0.0001 mm"));
+  CHECK_THAT(four.reason, !Catch::Contains("e-0"));
+  const NoiseDecision two = classify(write_fixed(make_standard_profile("S1002"), 2, "S1002_2m.dat"), ProfileKind::Wheel);
+  CHECK_THAT(two.reason, Catch::Contains("printed to 0.01 mm"));
+}

@@ -109,3 +109,11 @@ TEST_CASE("rail cant is not claimed where the head has no axis, and worn heads a
     }
   }
 }
+
+TEST_CASE("a vanishing cant reads upright, not -1:585778.6 (issue 38)", "[rail_cant][messages]") {
+  CHECK(cant_ratio(0.0) == "upright");
+  CHECK(cant_ratio(-1.0 / 585778.6) == "upright");  // the cuts' noise on an upright rail
+  CHECK(cant_ratio(std::atan(1.0 / 40)) == "1:40");
+  CHECK(cant_ratio(-std::atan(1.0 / 20)) == "-1:20");
+  CHECK(cant_ratio(std::atan(1.0 / 100000)) == "1:100000");  // 0.00057 deg: still a ratio
+}
