@@ -16,8 +16,10 @@ mhcontact's grid methods solve on, i.e. the profile already smoothed for contact
 spline at the case's geometry.smoothing_mm (default 5 mm), at the points' y; an exact profile, which
 mhcontact does not smooth, as read (z_mm). CONTACT must then read it without smoothing of its own (SMOOTH = 0, the
 default of the deck): both programs solve the same surface. --surface points writes the points as
-read (z_mm), for a reference that smooths with CONTACT's own spline (add "rail_ismooth"/"rail_smooth"
-to the deck by hand).
+read (z_mm): the unsmoothed measured surface, which the trust table's CONTACT references use since
+2026-11-28 (README.md); for a reference that smooths with CONTACT's own spline add
+"rail_ismooth"/"rail_smooth" to the deck by hand. --surface contact is kept for CONTACT runs on the
+surface mhcontact solves (the diagnostic `mhc_auto` runs of contact_measured_surface_variants.csv).
 """
 import argparse
 import csv
