@@ -22,7 +22,7 @@ if args.case:
     pair = mhcontact.Pair.from_case_file(args.case)
 else:
     pair = mhcontact.Pair(mhcontact.Profile.standard("S1002"), mhcontact.Profile.standard("60E1"),
-                          {"rail_inclination": 40})
+                          {"rail_inclination": "1:40"})
 print(f"mhcontact {mhcontact.__version__} (ABI {mhcontact.abi_version}, FFT {mhcontact.fft_backend})")
 
 # %% Step by step, as a time integrator would call it (one call per step).

@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -201,6 +202,28 @@ void fill_columns(const mhc_result& r, std::size_t i, double* const* f, int8_t* 
   n_warnings[i] = r.n_warnings;
 }
 
+constexpr const char* kInclinationChoice =
+    "\"as-is\" (the rail profile is already laid as used) or \"1:N\" (cant the rail 1:N, e.g. \"1:40\")";
+
+/// The rail's inclination as the case file spells it ("as-is", "1:N"), into mhc_pair_options'
+/// N (0: as-is). A bare number is refused: 40 and 0 read as a cant or as none depending on who
+/// wrote them, and the case file asks for the word.
+double rail_inclination_of(const py::handle& v) {
+  if (!py::isinstance<py::str>(v)) {
+    const std::string shown = py::str(py::repr(v));
+    throw py::value_error("rail_inclination = " + shown + ": give " + kInclinationChoice +
+                          " as a string, as the case file's rail.inclination");
+  }
+  const std::string s = py::str(v);
+  if (s == "as-is") return 0;
+  if (s.size() > 2 && s.compare(0, 2, "1:") == 0) {
+    char* end = nullptr;
+    const double N = std::strtod(s.c_str() + 2, &end);
+    if (end && *end == '\0' && std::isfinite(N) && N >= 5) return N;
+  }
+  throw py::value_error("rail_inclination = \"" + s + "\": must be " + kInclinationChoice + ", N >= 5");
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -249,8 +272,14 @@ PYBIND11_MODULE(_core, m) {
       .def(py::init([](const Profile& wheel, const Profile& rail, py::dict kw) {
              mhc_pair_options o;
              mhc_pair_options_init(&o);
+             bool have_inclination = false;
              for (auto item : kw) {
                const std::string k = py::str(item.first);
+               if (k == "rail_inclination") {
+                 o.rail_inclination = rail_inclination_of(item.second);
+                 have_inclination = true;
+                 continue;
+               }
                if (k == "method") {
                  const std::string v = option_text(k, item.second, "multi-hertzian, half-space, strips or auto");
                  int mth = -1;
@@ -289,6 +318,9 @@ PYBIND11_MODULE(_core, m) {
                else if (k == "lateral_offset_m") o.lateral_offset_m = v;
                else throw py::type_error("Pair: unknown option " + k + " (the fields of mhc_pair_options, docs/c-api.md)");
              }
+             if (!have_inclination)
+               throw py::value_error(std::string("rail_inclination: required: ") + kInclinationChoice +
+                                     " (the same choice as the case file's rail.inclination)");
              auto p = std::make_unique<Pair>();
              {
                py::gil_scoped_release nogil;
@@ -302,7 +334,7 @@ PYBIND11_MODULE(_core, m) {
            }), py::arg("wheel"), py::arg("rail"), py::arg("options") = py::dict(),
            "Pair(wheel, rail, options={}): options are fields of mhc_pair_options, SI (docs/python.md):\n"
            "gauge_m, gauge_height_m, flange_back_distance_m, flange_back_position_m, nominal_radius_m,\n"
-           "rail_inclination, E_wheel_Pa, nu_wheel, E_rail_Pa, nu_rail, p_lim_Pa, yield_wheel_Pa,\n"
+           "rail_inclination (required: \"as-is\" or \"1:N\", as a case file), E_wheel_Pa, nu_wheel, E_rail_Pa, nu_rail, p_lim_Pa, yield_wheel_Pa,\n"
            "yield_rail_Pa, method (a name), tY_min_m, tY_max_m, tY_step_m, grid_dx_m, grid_ds_m,\n"
            "positioning (\"gauge\" or \"explicit\"), lateral_offset_m (explicit: the rail y of the wheel's\n"
            "taping line at t_Y = 0). Values outside the case file's plausible ranges raise ValueError.\n"

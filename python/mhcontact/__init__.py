@@ -3,10 +3,10 @@ elastic half-space and the strip method, for scripts and vehicle-dynamics loops 
 
     import mhcontact
     pair = mhcontact.Pair(mhcontact.Profile.standard("S1002"), mhcontact.Profile.standard("60E1"),
-                          {"rail_inclination": 40})
+                          {"rail_inclination": "1:40"})
     pair.solve(2e-3, Q_N=50e3)["Fy_kN"]
     steel = mhcontact.Pair(mhcontact.Profile.standard("S1002"), mhcontact.Profile.standard("60E1"),
-                           {"rail_inclination": 40, "yield_wheel_Pa": 350e6})   # plastic: yield law
+                           {"rail_inclination": "1:40", "yield_wheel_Pa": 350e6})   # plastic: yield law
     cols = pair.solve_many(np.linspace(-6e-3, 10e-3, 1000), Q_N=50e3)   # columns of cases.csv
 
 Inputs are SI (m, N, rad); results carry the names and units of the command's tables (cases.csv:

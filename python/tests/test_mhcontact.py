@@ -115,15 +115,15 @@ def test_profiles_from_standard_and_points():
     r = mhcontact.Profile.standard("60E1")
     y, z = w.points()
     w2 = mhcontact.Profile.from_points(y, z, "wheel")
-    p1 = mhcontact.Pair(w, r, {"rail_inclination": 40, "tY_min_m": -8e-3, "tY_max_m": 10e-3})
-    p2 = mhcontact.Pair(w2, r, {"rail_inclination": 40, "tY_min_m": -8e-3, "tY_max_m": 10e-3})
+    p1 = mhcontact.Pair(w, r, {"rail_inclination": "1:40", "tY_min_m": -8e-3, "tY_max_m": 10e-3})
+    p2 = mhcontact.Pair(w2, r, {"rail_inclination": "1:40", "tY_min_m": -8e-3, "tY_max_m": 10e-3})
     assert p1.tY_range_m == pytest.approx((-8e-3, 10e-3))
     a = p1.solve(1e-3, Q_N=60e3)
     b = p2.solve(1e-3, Q_N=60e3)
     assert a["Fy_kN"] == pytest.approx(b["Fy_kN"], rel=1e-6)
     assert a["contacts"] and a["contacts"][0]["N_kN"] > 0
     with pytest.raises(TypeError, match="unknown option"):
-        mhcontact.Pair(w, r, {"gage_m": 1.435})
+        mhcontact.Pair(w, r, {"rail_inclination": "as-is", "gage_m": 1.435})
 
 
 def _manchester_profiles():
@@ -148,8 +148,8 @@ def test_yield_stress_as_the_case_file():
     w, r = _manchester_profiles()
     tY = np.linspace(-6e-3, 10e-3, 33)
     with tempfile.TemporaryDirectory() as d:
-        for options, material in (({"yield_wheel_Pa": 350e6}, '{"yield_MPa": 350}'),
-                                  ({"yield_wheel_Pa": 350e6, "yield_rail_Pa": 500e6},
+        for options, material in (({"rail_inclination": "as-is", "yield_wheel_Pa": 350e6}, '{"yield_MPa": 350}'),
+                                  ({"rail_inclination": "as-is", "yield_wheel_Pa": 350e6, "yield_rail_Pa": 500e6},
                                    '{"wheel": {"yield_MPa": 350}, "rail": {"yield_MPa": 500}}')):
             ours = mhcontact.Pair(w, r, options).solve_many(tY, Q_N=100e3, threads=1)
             ref = mhcontact.Pair.from_case_file(_case_file(d, material)).solve_many(tY, Q_N=100e3, threads=1)
@@ -206,7 +206,7 @@ def test_yield_law_against_its_closed_form():
     sigma_y, beta = 350e6, 0.3
     p_y = 1.6 * sigma_y
     w, r = _manchester_profiles()
-    pair = mhcontact.Pair(w, r, {"yield_wheel_Pa": sigma_y})
+    pair = mhcontact.Pair(w, r, {"rail_inclination": "as-is", "yield_wheel_Pa": sigma_y})
     E_J = 1.0 / (2 * (1 - 0.28 ** 2) / 210e9)  # Johnson's E* of two steels, E 210 GPa, nu 0.28
     beyond = 0
     for tY in (0.0, 3e-3, 6.5e-3):
@@ -239,16 +239,16 @@ def test_yield_law_against_its_closed_form():
 def test_yield_stress_errors_and_defaults():
     w, r = _manchester_profiles()
     with pytest.raises(ValueError, match=r"options.yield_wheel_Pa = -1 Pa: a yield stress must be > 0 and finite"):
-        mhcontact.Pair(w, r, {"yield_wheel_Pa": -1.0})
+        mhcontact.Pair(w, r, {"rail_inclination": "as-is", "yield_wheel_Pa": -1.0})
     with pytest.raises(ValueError, match="without yield_wheel_Pa"):
-        mhcontact.Pair(w, r, {"yield_rail_Pa": 500e6})
+        mhcontact.Pair(w, r, {"rail_inclination": "as-is", "yield_rail_Pa": 500e6})
     # p_lim_Pa given takes precedence: the capped law, as p_lim_MPa in a case file.
     with tempfile.TemporaryDirectory() as d:
-        ours = mhcontact.Pair(w, r, {"yield_wheel_Pa": 350e6, "p_lim_Pa": 900e6}).solve(0.0, Q_N=100e3)
+        ours = mhcontact.Pair(w, r, {"rail_inclination": "as-is", "yield_wheel_Pa": 350e6, "p_lim_Pa": 900e6}).solve(0.0, Q_N=100e3)
         ref = mhcontact.Pair.from_case_file(_case_file(d, '{"yield_MPa": 350, "p_lim_MPa": 900}')).solve(0.0, Q_N=100e3)
     assert ours["pmax_MPa"] == ref["pmax_MPa"]
     assert ours["contacts"] == ref["contacts"]
-    assert mhcontact.Pair(w, r, {}).solve(0.0, Q_N=100e3)["plastic"] == 0  # no yield stress: elastic
+    assert mhcontact.Pair(w, r, {"rail_inclination": "as-is"}).solve(0.0, Q_N=100e3)["plastic"] == 0  # no yield stress: elastic
 
 
 def test_plausible_ranges_as_the_case_file():
@@ -257,10 +257,10 @@ def test_plausible_ranges_as_the_case_file():
     w, r = _manchester_profiles()
     with pytest.raises(ValueError, match=r"options\.E_wheel_Pa: value 210000 Pa \(0\.00021 GPa\): must be between "
                                          r"50 and 400 GPa.*E_wheel_Pa is in Pa"):
-        mhcontact.Pair(w, r, {"E_wheel_Pa": 210e3})
+        mhcontact.Pair(w, r, {"rail_inclination": "as-is", "E_wheel_Pa": 210e3})
     with pytest.raises(ValueError, match=r"options\.nominal_radius_m: value 920 m"):
-        mhcontact.Pair(w, r, {"nominal_radius_m": 920})
-    pair = mhcontact.Pair(w, r, {})
+        mhcontact.Pair(w, r, {"rail_inclination": "as-is", "nominal_radius_m": 920})
+    pair = mhcontact.Pair(w, r, {"rail_inclination": "as-is"})
     with pytest.raises(ValueError, match=r"Q_N: value 5e\+09 N \(5e\+06 kN\): must be at most 2000 kN"):
         pair.solve(0.0, Q_N=5e9)
     with pytest.raises(ValueError, match=r"Q_N: value 5e\+09 N"):
@@ -270,7 +270,7 @@ def test_plausible_ranges_as_the_case_file():
 
 def test_negative_load_is_the_same_input_error_as_the_command():
     w, r = _manchester_profiles()
-    pair = mhcontact.Pair(w, r, {})
+    pair = mhcontact.Pair(w, r, {"rail_inclination": "as-is"})
     with pytest.raises(ValueError, match=r"Q_N: value -5000 N \(-5 kN\): a wheel load must not be negative"):
         pair.solve(0.0, Q_N=-5e3)
     with tempfile.TemporaryDirectory() as d:
@@ -285,12 +285,12 @@ def test_negative_load_is_the_same_input_error_as_the_command():
 def test_errors_name_the_key_and_the_type():
     w, r = _manchester_profiles()
     with pytest.raises(TypeError, match=r"Pair option E_wheel_Pa = '210e9': expected a number .*got str"):
-        mhcontact.Pair(w, r, {"E_wheel_Pa": "210e9"})
+        mhcontact.Pair(w, r, {"rail_inclination": "as-is", "E_wheel_Pa": "210e9"})
     with pytest.raises(TypeError, match=r"Pair option method = 3: expected a str .*got int"):
-        mhcontact.Pair(w, r, {"method": 3})
+        mhcontact.Pair(w, r, {"rail_inclination": "as-is", "method": 3})
     with pytest.raises(TypeError, match=r"Pair option positioning = None: expected a str"):
-        mhcontact.Pair(w, r, {"positioning": None})
-    pair = mhcontact.Pair(w, r, {"E_wheel_Pa": np.float64(210e9), "rail_inclination": 0})  # numpy scalars, ints
+        mhcontact.Pair(w, r, {"rail_inclination": "as-is", "positioning": None})
+    pair = mhcontact.Pair(w, r, {"E_wheel_Pa": np.float64(210e9), "rail_inclination": "as-is"})  # numpy scalars, ints
     with pytest.raises(TypeError, match=r"tY_m = 'a': expected a number \[m\], got str"):
         pair.solve("a", Q_N=50e3)
     with pytest.raises(TypeError, match=r"Q_N = \['x'\]: expected numbers"):
@@ -301,7 +301,7 @@ def test_pair_warnings_are_the_command_s():
     """The Manchester rail file is canted 1:40 already: canted again it lies at 2.86 deg. The command
     warns; pair.warnings has the same words."""
     w, r = _manchester_profiles()
-    twice = mhcontact.Pair(w, r, {"rail_inclination": 40})
+    twice = mhcontact.Pair(w, r, {"rail_inclination": "1:40"})
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "twice.json")
         with open(path, "w") as f:
@@ -317,7 +317,7 @@ def test_pair_warnings_are_the_command_s():
     assert any("and the case cants it again" in x for x in command)
     assert twice.warnings == command
     assert from_file.warnings == command
-    assert mhcontact.Pair(w, r, {}).warnings == []
+    assert mhcontact.Pair(w, r, {"rail_inclination": "as-is"}).warnings == []
 
 
 def test_explicit_positioning():
@@ -325,24 +325,24 @@ def test_explicit_positioning():
     # A misplaced wheel (flange-back distance 50 mm short) is refused; the message names the
     # explicit placement that reproduces it, and that placement builds.
     with pytest.raises(mhcontact.InputError, match="gauge positioning misplaces the wheel") as e:
-        mhcontact.Pair(s1002, rail, {"rail_inclination": 40, "flange_back_distance_m": 1.260})
+        mhcontact.Pair(s1002, rail, {"rail_inclination": "1:40", "flange_back_distance_m": 1.260})
     off_mm = float(str(e.value).split('"lateral_offset_mm": ')[1].split("}")[0])
-    mhcontact.Pair(s1002, rail, {"rail_inclination": 40, "flange_back_distance_m": 1.260,
+    mhcontact.Pair(s1002, rail, {"rail_inclination": "1:40", "flange_back_distance_m": 1.260,
                                  "positioning": "explicit", "lateral_offset_m": off_mm * 1e-3})
     # Explicit at the gauge rule's offset for the standard track: the same numbers.
     with pytest.raises(mhcontact.InputError) as e:
-        mhcontact.Pair(s1002, rail, {"rail_inclination": 40, "flange_back_distance_m": 1.430})
+        mhcontact.Pair(s1002, rail, {"rail_inclination": "1:40", "flange_back_distance_m": 1.430})
     wide_mm = float(str(e.value).split('"lateral_offset_mm": ')[1].split("}")[0])
-    gauge = mhcontact.Pair(s1002, rail, {"rail_inclination": 40})
-    explicit = mhcontact.Pair(s1002, rail, {"rail_inclination": 40, "positioning": "explicit",
+    gauge = mhcontact.Pair(s1002, rail, {"rail_inclination": "1:40"})
+    explicit = mhcontact.Pair(s1002, rail, {"rail_inclination": "1:40", "positioning": "explicit",
                                             "lateral_offset_m": (wide_mm - 35.0) * 1e-3})  # 70 mm / 2 back
     a, b = gauge.solve(2e-3, Q_N=80e3), explicit.solve(2e-3, Q_N=80e3)
     assert a["Fy_kN"] == pytest.approx(b["Fy_kN"], rel=1e-6)
     assert a["pmax_MPa"] == pytest.approx(b["pmax_MPa"], rel=1e-6)
     with pytest.raises(ValueError, match="positioning = \"sideways\""):
-        mhcontact.Pair(s1002, rail, {"positioning": "sideways"})
+        mhcontact.Pair(s1002, rail, {"rail_inclination": "as-is", "positioning": "sideways"})
     with pytest.raises(ValueError, match="only used with positioning MHC_POSITIONING_EXPLICIT"):
-        mhcontact.Pair(s1002, rail, {"lateral_offset_m": 1e-3})
+        mhcontact.Pair(s1002, rail, {"rail_inclination": "as-is", "lateral_offset_m": 1e-3})
 
 
 def test_one_judge_through_every_entry_point():
@@ -390,3 +390,20 @@ def test_one_judge_through_every_entry_point():
             else:
                 for r in rows["case"][1:]:
                     assert r[1] == "strips" and "gap_kink=" in r[2], r
+
+
+def test_rail_inclination_spelt_and_required_as_in_the_case_file():
+    # Issue 38: the inclination was a number defaulting to 0 (as-is) while the case file requires
+    # an explicit "as-is" or "1:N". The same words, the same choice required.
+    w, r = mhcontact.Profile.standard("S1002"), mhcontact.Profile.standard("60E1")
+    with pytest.raises(ValueError, match=r'rail_inclination: required: "as-is" .* or "1:N"'):
+        mhcontact.Pair(w, r, {})
+    with pytest.raises(ValueError, match=r'rail_inclination = 40: give "as-is"'):
+        mhcontact.Pair(w, r, {"rail_inclination": 40})
+    with pytest.raises(ValueError, match=r'rail_inclination = "1:4": must be'):
+        mhcontact.Pair(w, r, {"rail_inclination": "1:4"})
+    with pytest.raises(ValueError, match=r'rail_inclination = "1/40": must be'):
+        mhcontact.Pair(w, r, {"rail_inclination": "1/40"})
+    canted = mhcontact.Pair(w, r, {"rail_inclination": "1:40"}).solve(0.0, Q_N=80e3)
+    upright = mhcontact.Pair(w, r, {"rail_inclination": "as-is"}).solve(0.0, Q_N=80e3)
+    assert canted["gamma_main_deg"] != upright["gamma_main_deg"]  # the cant was applied, or not
