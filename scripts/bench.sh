@@ -37,6 +37,8 @@ done
 ls -la "$tmp/out" | awk 'NR>1{print "  " $5 " bytes  " $9}'
 # The grid methods (half-space, strips) on the CONTACT benchmark sweep (median and worst per case).
 ./build/mhcontact_bench_grid . 3
+# The grid methods with a reused workspace against a new one per call (docs/performance.md).
+./build/mhcontact_bench_grid . 5 workspace
 # The half-space method against the FFTW build, alternated (skipped without libfftw3-dev).
 bash scripts/bench_fft.sh 3
 # The wheelset: one pair, and a fleet of 1000 wheels with its CPU time per wheel by stage.

@@ -4,8 +4,9 @@
 // the median and worst time per case, and the ratios to CONTACT's own time per case on this
 // machine kind (tests/data/contact, wall_s) and between the methods.
 // Times are CPU time, best of REPEATS per case. Figures only, never an assertion.
-// Usage: mhcontact_bench_grid SOURCE_DIR [REPEATS] [half-space]; "half-space" runs the two
-// half-space sweeps only (scripts/bench.sh compares them with the FFTW build's).
+// Usage: mhcontact_bench_grid SOURCE_DIR [REPEATS] [half-space | workspace]; "half-space" runs the
+// two half-space sweeps only (scripts/bench.sh compares them with the FFTW build's); "workspace"
+// compares each grid method with a reused workspace against a new one per call (bench_workspace).
 #include <time.h>
 
 #include <algorithm>
@@ -31,11 +32,76 @@ double cpu_ms() {
   return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
 }
 
+/// Median of v (the upper one of an even count).
+double median_of(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+/// "workspace": each grid method on the Manchester sweep (t_Y = -6 ... 10 mm by 1, Q = 50 kN),
+/// elastic and capped at the plastic case file's p_lim, solved per case by the form without a
+/// workspace (a new one per call: every call makes its patches, influence operators, FFT plans and
+/// vectors, as every call did before the workspace) and into a reused result with one workspace
+/// for the whole sweep (solve_contact's form for an MBS), alternated, `repeats` times; per case the
+/// median CPU time of each and their ratio. The two answers must be the same bytes (checked).
+int bench_workspace(const std::string& src, int repeats) {
+  const mh::CaseFile hs = mh::load_case_file(src + "/cases/manchester-halfspace.json", true);
+  const mh::CaseFile st = mh::load_case_file(src + "/cases/manchester-strips.json", true);
+  const mh::CaseFile pl = mh::load_case_file(src + "/cases/manchester-plastic.json", true);
+  const mh::PairGeometry pg = mh::build_pair_geometry(hs);
+  std::printf("grid methods with a reused workspace against a new one per call, Manchester pair, Q = 50 kN,\n"
+              "t_Y = -6 ... 10 mm by 1, one thread, CPU time, median of %d alternated runs per case:\n"
+              "  method               median_new_ms  median_reused_ms  median_ratio  min_ratio  max_ratio  differing\n",
+              repeats);
+  struct Run {
+    const char* name;
+    const mh::CaseFile* cf;
+    mh::Method method;
+    bool plastic;
+  };
+  const Run runs[] = {{"half-space elastic", &hs, mh::Method::HalfSpace, false},
+                      {"half-space capped", &hs, mh::Method::HalfSpace, true},
+                      {"strips elastic", &st, mh::Method::Strips, false},
+                      {"strips capped", &st, mh::Method::Strips, true}};
+  for (const Run& run : runs) {
+    mh::MethodOptions mo = run.cf->method_options();
+    mo.method = run.method;
+    mh::Material mat = run.cf->material;
+    if (run.plastic) mat.p_lim = pl.material.p_lim;
+    mh::GridWorkspace ws;
+    mh::CaseResult reused;
+    std::vector<double> t_new, t_reused, ratio;
+    int differing = 0;
+    for (int t = -6; t <= 10; ++t) {
+      std::vector<double> a, b;
+      mh::CaseResult fresh;
+      for (int k = 0; k < repeats; ++k) {
+        double t0 = cpu_ms();
+        fresh = mh::solve_contact(pg.geo, mat, t * 1e-3, 50e3, mo);
+        a.push_back(cpu_ms() - t0);
+        t0 = cpu_ms();
+        mh::solve_contact(pg.geo, mat, t * 1e-3, 50e3, mo, reused, &ws);
+        b.push_back(cpu_ms() - t0);
+      }
+      differing += !(fresh.Fz == reused.Fz && fresh.pmax == reused.pmax && fresh.approach == reused.approach &&
+                     fresh.area == reused.area && fresh.iterations == reused.iterations && fresh.status == reused.status);
+      t_new.push_back(median_of(a));
+      t_reused.push_back(median_of(b));
+      ratio.push_back(t_reused.back() / t_new.back());
+    }
+    std::printf("  %-20s %13.2f  %16.2f  %12.3f  %9.3f  %9.3f  %9d\n", run.name, median_of(t_new), median_of(t_reused),
+                median_of(ratio), *std::min_element(ratio.begin(), ratio.end()),
+                *std::max_element(ratio.begin(), ratio.end()), differing);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::string src = argc > 1 ? argv[1] : ".";
   const int repeats = argc > 2 ? std::max(1, std::atoi(argv[2])) : 3;
+  if (argc > 3 && std::string(argv[3]) == "workspace") return bench_workspace(src, repeats);
   const bool half_space_only = argc > 3 && std::string(argv[3]) == "half-space";
   const mh::CaseFile cf = mh::load_case_file(src + "/cases/manchester-halfspace.json", true);
   const mh::PairGeometry pg = mh::build_pair_geometry(cf);

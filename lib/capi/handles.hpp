@@ -5,6 +5,7 @@
 // input (profiles and case files are read as the command reads them), never output or jobs.
 #include <cstddef>
 #include <functional>
+#include <type_traits>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "contact/case_result.hpp"
 #include "contact/multi_hertz/approach_given.hpp"
 #include "contact/options.hpp"
+#include "contact/solve.hpp"
 #include "geometry/contact_geometry.hpp"
 #include "profile/profile.hpp"
 
@@ -32,10 +34,13 @@ struct mhc_pair {
   std::vector<std::string> warnings;
 };
 
-/// One thread's scratch memory for calls on one pair.
+/// One thread's scratch memory for calls on one pair: the multi-Hertzian approach solver's, the
+/// grid methods' (patches, influence operators, solver vectors: made on the first grid call) and
+/// the result, filled in place.
 struct mhc_workspace {
   const mhc_pair* pair = nullptr;
   mh::ApproachWorkspace approach;
+  mh::GridWorkspace grid;
   mh::CaseResult r;
 };
 
@@ -44,9 +49,23 @@ namespace mh::capi {
 /// The thread's last message (mhc_last_message).
 std::string& last_message();
 
+/// A callable returning mhc_error, passed to guarded() by reference: a std::function would copy a
+/// lambda capturing more than two references to the heap, once per C call.
+class GuardedBody {
+ public:
+  template <class F, class = std::enable_if_t<!std::is_same_v<std::decay_t<F>, GuardedBody>>>
+  GuardedBody(F&& f)  // NOLINT: implicit, as std::function's
+      : obj_(&f), call_([](const void* o) { return (*static_cast<std::remove_reference_t<F>*>(const_cast<void*>(o)))(); }) {}
+  mhc_error operator()() const { return call_(obj_); }
+
+ private:
+  const void* obj_;
+  mhc_error (*call_)(const void*);
+};
+
 /// Run f, turning every exception into an error code and the thread's message (the command's
-/// wording: InputError::what()).
-mhc_error guarded(const std::function<mhc_error()>& f) noexcept;
+/// wording: InputError::what()). f must outlive the call (a lambda written in the call does).
+mhc_error guarded(GuardedBody f) noexcept;
 
 /// Check an mhc_result pointer and its struct_size; false with the message set otherwise.
 bool result_ok(const mhc_result* out, std::size_t result_size);

@@ -84,7 +84,7 @@ std::string& last_message() {
   return m;
 }
 
-mhc_error guarded(const std::function<mhc_error()>& f) noexcept {
+mhc_error guarded(GuardedBody f) noexcept {
   try {
     try {
       return f();
@@ -230,7 +230,7 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
     fill_result(ws.r, tY, kNaN, pair.plastic, out);
   } else {
     if (const std::string bad = check_load(value); !bad.empty()) return fail(MHC_ERR_ARGUMENT, bad);
-    solve_contact(pair.pg.geo, pair.material, tY, value, pair.options, ws.r);
+    solve_contact(pair.pg.geo, pair.material, tY, value, pair.options, ws.r, &ws.grid);
     fill_result(ws.r, tY, value, pair.plastic, out);
   }
   if (ws.r.status != CaseStatus::Ok) last_message() = ws.r.message;

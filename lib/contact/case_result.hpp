@@ -105,4 +105,19 @@ struct CaseResult {
   std::vector<PatchResult> patches;   ///< grid methods: in increasing rail y
 };
 
+/// Reset r to a fresh CaseResult's values, its message and vectors keeping their capacity (the
+/// solvers' forms that fill a caller's result: no allocation once it has grown).
+inline void reset_case_result(CaseResult& r) {
+  r.status = CaseStatus::Ok;
+  r.method = Method::MultiHertzian;
+  r.message.clear();
+  r.warnings.clear();
+  r.dz = r.approach = r.residual = 0;
+  r.iterations = 0;
+  r.Fz = r.Fy = r.pmax = r.area = 0;
+  r.n_contacts = 0;
+  r.loaded.clear();
+  r.patches.clear();
+}
+
 }  // namespace mh

@@ -119,11 +119,29 @@ CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double t
 
 void solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt,
                    CaseResult& out) {
-  if (opt.method != Method::MultiHertzian) {
-    out = solve_contact(G, mat, tY, Q, opt);
-    return;
+  solve_contact(G, mat, tY, Q, opt, out, nullptr);
+}
+
+void solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt,
+                   CaseResult& out, GridWorkspace* ws) {
+  switch (opt.method) {
+    case Method::MultiHertzian: solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian, out); break;
+    case Method::HalfSpace:
+      if (!ws) {
+        out = solve_contact(G, mat, tY, Q, opt);
+        return;
+      }
+      solve_half_space(G, mat, tY, Q, opt.half_space, ws->half_space, out);
+      break;
+    case Method::Strips:
+      if (!ws) {
+        out = solve_contact(G, mat, tY, Q, opt);
+        return;
+      }
+      solve_strip_method(G, mat, tY, Q, opt.strips, ws->strips, out);
+      break;
+    default: out = solve_contact(G, mat, tY, Q, opt); return;
   }
-  solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian, out);
   judge_case(out, G, mat, tY, opt);  // as above
 }
 

@@ -19,4 +19,18 @@ CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double t
 void solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt,
                    CaseResult& out);
 
+/// One thread's memory for the grid methods' cases (the C interface's workspace holds one; a
+/// caller solving case after case on one thread, an MBS at every time step, keeps one). Empty
+/// until used; it carries nothing from case to case that a result depends on.
+struct GridWorkspace {
+  HalfSpaceWorkspace half_space;
+  StripWorkspace strips;
+};
+
+/// The same with the grid methods' memory in `ws` (null: as the form above): the half-space method
+/// then allocates nothing once `ws` and `out` have seen a case of the same pair with patches as
+/// large (a status message aside; docs/c-api.md "What a call allocates"). The same bytes.
+void solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt,
+                   CaseResult& out, GridWorkspace* ws);
+
 }  // namespace mh

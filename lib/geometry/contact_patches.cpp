@@ -10,12 +10,23 @@ constexpr double kRegionStep = 0.02e-3;  // [m] sampling of g(y) for the regions
 }  // namespace
 
 std::vector<PatchRegion> find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, double d_comb) {
-  std::vector<std::pair<double, double>> merged;
-  for (const auto& r : gap.interpenetration(dz_grid, kRegionStep)) {
-    if (!merged.empty() && r.first - merged.back().second < d_comb) merged.back().second = r.second;
-    else merged.push_back(r);
-  }
   std::vector<PatchRegion> out;
+  std::vector<std::pair<double, double>> scratch;
+  find_patch_regions(gap, dz_ref, dz_grid, d_comb, out, scratch);
+  return out;
+}
+
+void find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, double d_comb,
+                        std::vector<PatchRegion>& out, std::vector<std::pair<double, double>>& merged) {
+  // The intervals merged in place: an interval closer than d_comb to the last kept one extends it.
+  gap.interpenetration(dz_grid, kRegionStep, merged);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < merged.size(); ++i) {
+    if (kept > 0 && merged[i].first - merged[kept - 1].second < d_comb) merged[kept - 1].second = merged[i].second;
+    else merged[kept++] = merged[i];
+  }
+  merged.resize(kept);
+  out.clear();
   for (const auto& m : merged) {
     PatchRegion k;
     k.y_a = m.first;
@@ -48,7 +59,6 @@ std::vector<PatchRegion> find_patch_regions(const WheelRailGap& gap, double dz_r
     k.s_b = (k.y_b - k.P.y_ref) / c;
     out.push_back(k);
   }
-  return out;
 }
 
 }  // namespace mh

@@ -4,6 +4,7 @@
 // one patch, and each patch's tangent plane placed as CONTACT places it (the "interpenetration
 // centre of gravity"). A geometry product: the half-space and the strip solvers build their grids
 // or strips on these planes.
+#include <utility>
 #include <vector>
 
 #include "geometry/gap.hpp"
@@ -25,5 +26,10 @@ struct PatchRegion {
 /// that does not interpenetrate at dz_ref is weighted at dz_grid. Regions whose lateral distance
 /// is below d_comb [m] form one patch. In increasing rail y.
 std::vector<PatchRegion> find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, double d_comb);
+
+/// The same into `out`, with `scratch` for the interpenetration intervals (both cleared first,
+/// their capacity kept: a reused pair allocates nothing once grown; the grid methods' workspaces).
+void find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, double d_comb,
+                        std::vector<PatchRegion>& out, std::vector<std::pair<double, double>>& scratch);
 
 }  // namespace mh

@@ -70,7 +70,10 @@ double WheelRailGap::z_wheel(double y, double x, double* slope) const {
   return zw + r - root;
 }
 
-ProjectedInterpenetration::ProjectedInterpenetration(const WheelRailGap& gap, double step) : gap_(&gap) {
+ProjectedInterpenetration::ProjectedInterpenetration(const WheelRailGap& gap, double step) { reset(gap, step); }
+
+void ProjectedInterpenetration::reset(const WheelRailGap& gap, double step) {
+  gap_ = &gap;
   const double y0 = gap.y_min(), y1 = gap.y_max();
   const int n = std::max(2, static_cast<int>(std::ceil((y1 - y0) / step)));
   h_ = (y1 - y0) / n;
@@ -96,6 +99,12 @@ double ProjectedInterpenetration::area(double dz) const {
 
 std::vector<std::pair<double, double>> WheelRailGap::interpenetration(double dz, double step) const {
   std::vector<std::pair<double, double>> out;
+  interpenetration(dz, step, out);
+  return out;
+}
+
+void WheelRailGap::interpenetration(double dz, double step, std::vector<std::pair<double, double>>& out) const {
+  out.clear();
   const int n = std::max(2, static_cast<int>(std::ceil((y1_ - y0_) / step)));
   const double h = (y1_ - y0_) / n;
   bool in = false;
@@ -114,7 +123,6 @@ std::vector<std::pair<double, double>> WheelRailGap::interpenetration(double dz,
     prev_v = v;
   }
   if (in) out.emplace_back(a, y1_);
-  return out;
 }
 
 PatchPlane plane_at(const WheelRailGap& gap, double y_ref) {

@@ -49,6 +49,8 @@ class WheelRailGap {
   /// Intervals [a, b] of rail y where g(y) < dz (the interpenetration of a rigid vertical approach
   /// dz), found on a sampling of step `step` [m], in increasing y.
   std::vector<std::pair<double, double>> interpenetration(double dz, double step) const;
+  /// The same into `out` (cleared first; its capacity kept: no allocation once it has grown).
+  void interpenetration(double dz, double step, std::vector<std::pair<double, double>>& out) const;
 
  private:
   /// Samples each side of y_near in the second constructor: ±0.2 mm at kSampleStep.
@@ -70,11 +72,15 @@ class WheelRailGap {
 /// search on dz (rigid_plastic_approach) evaluates the profiles once, not once per dz.
 class ProjectedInterpenetration {
  public:
+  ProjectedInterpenetration() = default;
   ProjectedInterpenetration(const WheelRailGap& gap, double step);
+  /// Sample `gap` again (as the constructor), keeping the vectors' capacity: a reused object
+  /// allocates nothing once it has sampled a gap of as many points.
+  void reset(const WheelRailGap& gap, double step);
   double area(double dz) const;
 
  private:
-  const WheelRailGap* gap_;
+  const WheelRailGap* gap_ = nullptr;
   double h_ = 0;
   std::vector<double> y_, g_;
   mutable std::vector<double> r_;  // NaN until first needed

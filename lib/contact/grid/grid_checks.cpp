@@ -33,7 +33,9 @@ ContactHole find_contact_hole(const PatchCheckInput& in) {
   // For each element, whether a loaded element lies before / after it along its row and column:
   // prefix and suffix scans, O(nx ns).
   const std::size_t n = in.p.size();
-  std::vector<char> left(n, 0), right(n, 0), below(n, 0), above(n, 0);
+  // Per-thread scratch, zeroed as fresh vectors (no allocation once grown to the largest grid).
+  thread_local std::vector<char> left, right, below, above;
+  for (auto* v : {&left, &right, &below, &above}) v->assign(n, 0);
   for (int j = 0; j < in.ns; ++j) {
     char seen = 0;
     for (int i = 0; i < in.nx; ++i) { left[i + in.nx * j] = seen; seen = seen || P(i, j) > 0; }
@@ -58,6 +60,10 @@ ContactHole find_contact_hole(const PatchCheckInput& in) {
 }
 
 void close_grid_case(const std::vector<PatchCheckInput>& in, double Q, double residual_tol, CaseResult& r) {
+  close_grid_case(in.data(), in.size(), Q, residual_tol, r);
+}
+
+void close_grid_case(const PatchCheckInput* in, std::size_t n, double Q, double residual_tol, CaseResult& r) {
   int index = 0;
   for (PatchResult& P : r.patches) P.patch = ++index;
   r.n_contacts = static_cast<int>(r.patches.size());
@@ -66,10 +72,14 @@ void close_grid_case(const std::vector<PatchCheckInput>& in, double Q, double re
     r.status = CaseStatus::NotConverged;
     r.message = "force balance residual " + format_number(r.residual);
   }
-  check_grid_result(in, Q, r);
+  check_grid_result(in, n, Q, r);
 }
 
 void check_grid_result(const std::vector<PatchCheckInput>& in, double Q, CaseResult& r) {
+  check_grid_result(in.data(), in.size(), Q, r);
+}
+
+void check_grid_result(const PatchCheckInput* in, std::size_t n_in, double Q, CaseResult& r) {
   if (r.status != CaseStatus::Ok) return;
   // Force balance (eq. 10), from the patches as reported.
   double Fz = 0;
@@ -77,7 +87,7 @@ void check_grid_result(const std::vector<PatchCheckInput>& in, double Q, CaseRes
   const double res = (Fz - Q) / Q;
   if (!(std::fabs(res) <= kForceBalanceRtol))
     r.warnings.push_back(Warning(WarningClass::ForceBalance).add(Quantity::Residual, res, '>', kForceBalanceRtol));
-  for (std::size_t k = 0; k < in.size() && k < r.patches.size(); ++k) {
+  for (std::size_t k = 0; k < n_in && k < r.patches.size(); ++k) {
     const PatchCheckInput& c = in[k];
     const int patch = static_cast<int>(k) + 1;
     auto warn = [&](WarningClass cls) -> Warning& {

@@ -36,6 +36,7 @@
 // A peak pressure that a steel contact "cannot have" is deliberately NOT a check: the elastic
 // answer has no such bound, and a spike or a hole is what makes a peak meaningless.
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "contact/case_result.hpp"
@@ -108,6 +109,8 @@ ContactHole find_contact_hole(const PatchCheckInput& in);
 /// in[k] describing r.patches[k]. Adds the warnings; does not change the status (judge_validity
 /// does, once, for every method).
 void check_grid_result(const std::vector<PatchCheckInput>& in, double Q, CaseResult& r);
+/// The same on in[0 … n).
+void check_grid_result(const PatchCheckInput* in, std::size_t n, double Q, CaseResult& r);
 
 /// The end of a grid method's case body, once for both methods: the reported patches numbered
 /// 1 … n in their order, n_contacts, the residual (Fz − Q)/Q, and the method's convergence rule on
@@ -117,6 +120,8 @@ void check_grid_result(const std::vector<PatchCheckInput>& in, double Q, CaseRes
 /// several patches (one patch carries the load by its own solve) and no bound on one patch, so
 /// that force_balance judges it; the strip method kForceBalanceRtol.
 void close_grid_case(const std::vector<PatchCheckInput>& in, double Q, double residual_tol, CaseResult& r);
+/// The same on in[0 … n) (a workspace's inputs, grid/patch_driver.hpp GridCaseWorkspace).
+void close_grid_case(const PatchCheckInput* in, std::size_t n, double Q, double residual_tol, CaseResult& r);
 
 /// A grid result whose status is not_converged carries no pressures that look like an answer
 /// (docs/outputs.md, "Failed rows"): its last iterate's approach, forces and residual stay (they

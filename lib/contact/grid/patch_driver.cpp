@@ -27,7 +27,7 @@ bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, d
   if (!elastic_mh) {
     Material elastic = mat;
     elastic.p_lim = INFINITY;
-    gs->own = solve_multi_hertz(G, elastic, tY, Q);
+    solve_multi_hertz(G, elastic, tY, Q, MultiHertzOptions(), gs->own);
     elastic_mh = &gs->own;
   }
   gs->mh = elastic_mh;
@@ -51,8 +51,13 @@ void finish_grid_case(const ContactGeometry& G, double tY, const GridStart& gs, 
 }
 
 double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim) {
+  ProjectedInterpenetration area;
+  return rigid_plastic_approach(gap, Q, p_lim, area);
+}
+
+double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim, ProjectedInterpenetration& area) {
   constexpr double kStep = 0.02e-3;  // [m] as find_patch_regions samples g(y)
-  const ProjectedInterpenetration area(gap, kStep);  // the profiles sampled once for the whole search
+  area.reset(gap, kStep);  // the profiles sampled once for the whole search
   auto F = [&](double z) { return p_lim * area.area(z) - Q; };
   double lo = 0, hi = 0.05e-3, F_lo = -Q, F_hi = F(hi);
   while (F_hi < 0 && hi < 0.1) {
@@ -114,9 +119,22 @@ ApproachBalance balance_approach(const std::vector<PatchSolver*>& solvers, const
   return b;
 }
 
-PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,
-                                const PatchSolverFactory& make) {
-  PatchDriverResult R;
+void drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,
+                   const PatchSolverFactory& make, PatchDriverResult& R) {
+  R.status = CaseStatus::Ok;
+  R.message.clear();
+  R.dz = 0;
+  R.evaluations = R.passes = 0;
+  R.regions.clear();
+  R.solvers.clear();
+  PatchDriverResult::Scratch& S = R.scratch;
+  // Room for the usual few patches in every vector once: the placements swap `regions` and
+  // `solvers` with their scratch, so both must hold as many.
+  constexpr std::size_t kPatches = 8;
+  for (auto* v : {&R.regions, &S.regions}) v->reserve(kPatches);
+  for (auto* v : {&R.solvers, &S.solvers, &S.balanced}) v->reserve(kPatches);
+  S.cos_gamma.reserve(kPatches);
+  S.intervals.reserve(2 * kPatches);
   double dz_ref = dz_est, dz = dz_est;
   const double margin = opt.margin;  // the grid covers the interpenetration at margin × dz_ref,
   double grow = 1;                    // its extents (x, s) times this
@@ -126,9 +144,11 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
     ++R.passes;
     R.status = CaseStatus::Ok;
     R.message.clear();
-    std::vector<PatchRegion> old_regions = std::move(R.regions);
-    std::vector<std::unique_ptr<PatchSolver>> old_solvers = std::move(R.solvers);
-    R.regions = find_patch_regions(gap, dz_ref, margin * dz_ref, opt.d_comb);
+    std::vector<PatchRegion>& old_regions = S.regions;
+    std::vector<PatchSolver*>& old_solvers = S.solvers;
+    old_regions.swap(R.regions);
+    old_solvers.swap(R.solvers);
+    find_patch_regions(gap, dz_ref, margin * dz_ref, opt.d_comb, R.regions, S.intervals);
     for (auto& reg : R.regions) {  // an outgrown grid's room: its extents × grow about the region
       const double mid = 0.5 * (reg.s_a + reg.s_b), half = 0.5 * (reg.s_b - reg.s_a) * grow;
       reg.s_a = mid - half;
@@ -138,11 +158,11 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
     R.solvers.clear();
     for (const auto& reg : R.regions) {
       std::string why;
-      auto s = make(reg, dz_ref, &why);
+      PatchSolver* s = make(reg, dz_ref, &why);
       if (!s) {
         R.status = CaseStatus::NotConverged;
         R.message = why;
-        return R;
+        return;
       }
       // Warm start from the previous placement's solver nearest in rail y, if any.
       std::size_t best = old_solvers.size();
@@ -151,23 +171,25 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
             std::fabs(old_regions[k].P.y_ref - reg.P.y_ref) < std::fabs(old_regions[best].P.y_ref - reg.P.y_ref))
           best = k;
       if (best < old_solvers.size()) s->warm_start_from(*old_solvers[best]);
-      R.solvers.push_back(std::move(s));
+      R.solvers.push_back(s);
     }
     old_solvers.clear();
     if (R.solvers.empty()) {
       R.status = CaseStatus::NotConverged;
       R.message = "no interpenetration region found";
-      return R;
+      return;
     }
     if (R.solvers.size() == 1) {
       const double c = std::cos(R.regions[0].P.gamma);
       dz = R.solvers[0]->at_load(Q / c) / c;  // load control inside the one patch
       ++R.evaluations;
     } else {
-      std::vector<PatchSolver*> solvers;
-      std::vector<double> cos_gamma;
+      std::vector<PatchSolver*>& solvers = S.balanced;
+      std::vector<double>& cos_gamma = S.cos_gamma;
+      solvers.clear();
+      cos_gamma.clear();
       for (std::size_t k = 0; k < R.solvers.size(); ++k) {
-        solvers.push_back(R.solvers[k].get());
+        solvers.push_back(R.solvers[k]);
         cos_gamma.push_back(std::cos(R.regions[k].P.gamma));
       }
       const ApproachBalance b = balance_approach(solvers, cos_gamma, Q, dz_ref, opt);
@@ -179,7 +201,7 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
       }
     }
     bool outgrown = false;
-    for (const auto& s : R.solvers) {
+    for (PatchSolver* s : R.solvers) {
       if (s->failed()) { R.status = CaseStatus::NotConverged; R.message = s->why(); }
       outgrown = outgrown || s->outgrown();
     }
@@ -218,15 +240,16 @@ PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est
     R.message = "the contact patches did not settle (edge reached or planes moving) after " +
                 std::to_string(opt.max_passes) + " placements";
   }
-  return R;
 }
 
-ApproachBalance rebalance_refined(const PatchDriverResult& D, const std::vector<PatchSolver*>& refined, double Q,
+ApproachBalance rebalance_refined(PatchDriverResult& D, const std::vector<PatchSolver*>& refined, double Q,
                                   double dz_start, const PatchDriverOptions& opt, CaseResult& r) {
-  std::vector<PatchSolver*> solvers;
-  std::vector<double> cos_gamma;
+  std::vector<PatchSolver*>& solvers = D.scratch.balanced;
+  std::vector<double>& cos_gamma = D.scratch.cos_gamma;
+  solvers.clear();
+  cos_gamma.clear();
   for (std::size_t n = 0; n < D.solvers.size(); ++n) {
-    solvers.push_back(refined[n] ? refined[n] : D.solvers[n].get());
+    solvers.push_back(refined[n] ? refined[n] : D.solvers[n]);
     cos_gamma.push_back(std::cos(D.regions[n].P.gamma));
   }
   const ApproachBalance b = balance_approach(solvers, cos_gamma, Q, dz_start, opt);

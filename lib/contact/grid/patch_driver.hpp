@@ -8,9 +8,11 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "contact/case_result.hpp"
+#include "contact/grid/grid_checks.hpp"
 #include "contact/grid/patch_elastic.hpp"
 #include "contact/ellipse/hertz.hpp"
 #include "geometry/contact_patches.hpp"
@@ -37,9 +39,28 @@ class PatchSolver {
 };
 
 /// Builds the solver of one patch (region, plane) for the wheel at vertical approach dz_ref.
-/// Returns nullptr and sets *why when the patch cannot be set up (e.g. too many elements).
-using PatchSolverFactory =
-    std::function<std::unique_ptr<PatchSolver>(const PatchRegion& region, double dz_ref, std::string* why)>;
+/// Returns nullptr and sets *why when the patch cannot be set up (e.g. too many elements). The
+/// solver belongs to the method (a pool of its workspace, reused from case to case: SolverPool)
+/// and stays valid until the method's case ends.
+using PatchSolverFactory = std::function<PatchSolver*(const PatchRegion& region, double dz_ref, std::string* why)>;
+
+/// The patch solvers of a grid method's case, kept from case to case so that their grids and
+/// vectors keep their capacity: take() hands out the next one (made on first need), begin_case()
+/// makes them all available again. Solvers handed out in one case stay valid until the next
+/// begin_case(); one thread at a time.
+template <class Solver>
+class SolverPool {
+ public:
+  void begin_case() { used_ = 0; }
+  Solver& take() {
+    if (used_ == pool_.size()) pool_.push_back(std::make_unique<Solver>());
+    return *pool_[used_++];
+  }
+
+ private:
+  std::vector<std::unique_ptr<Solver>> pool_;
+  std::size_t used_ = 0;
+};
 
 struct PatchDriverOptions {
   double d_comb = 8e-3;     ///< [m] regions closer than this are one patch
@@ -56,8 +77,17 @@ struct PatchDriverResult {
   double dz = 0;            ///< [m] the rigid vertical approach of the solution
   int evaluations = 0;      ///< patch solves (all passes)
   int passes = 0;           ///< placements of the patches
-  std::vector<PatchRegion> regions;                   ///< of the final placement
-  std::vector<std::unique_ptr<PatchSolver>> solvers;  ///< their solvers, holding the solution at dz
+  std::vector<PatchRegion> regions;    ///< of the final placement
+  std::vector<PatchSolver*> solvers;   ///< their solvers (the method's), holding the solution at dz
+  /// Scratch of drive_patches, balance_approach and rebalance_refined, kept with the result so
+  /// that a reused PatchDriverResult (a grid method's workspace) allocates nothing once grown.
+  struct Scratch {
+    std::vector<PatchRegion> regions;                   ///< the previous placement's
+    std::vector<PatchSolver*> solvers;                  ///< ... and its solvers (warm starts)
+    std::vector<std::pair<double, double>> intervals;   ///< find_patch_regions
+    std::vector<PatchSolver*> balanced;                 ///< the solvers of one approach balance
+    std::vector<double> cos_gamma;                      ///< ... and their cos γ
+  } scratch;
 };
 
 /// The driver options from a grid method's options (they share the fields d_comb, margin,
@@ -85,6 +115,30 @@ struct GridStart {
   CaseResult own;                  ///< the elastic multi-Hertzian solution, when the caller gave none
   const CaseResult* mh = nullptr;  ///< the elastic multi-Hertzian solution used (the caller's or own)
   double dz = 0.05e-3;             ///< [m] first estimate of the vertical approach (0.05 mm without one)
+};
+
+/// What the case loop of a grid method keeps between the cases of one thread (the method's
+/// workspace holds one): the start, the driver's result and scratch, the rigid–plastic sampling,
+/// the physical checks' inputs. Nothing in it carries over as data: every case sets what it reads.
+struct GridCaseWorkspace {
+  GridStart start;
+  PatchDriverResult driver;
+  ProjectedInterpenetration projected;       ///< rigid_plastic_approach
+  std::vector<PatchCheckInput> checks;       ///< of the reported patches; n_checks in use
+  std::size_t n_checks = 0;
+  std::vector<PatchSolver*> refined;         ///< the locally refined patches (null: not refined)
+  /// The next check input (its vectors keep their capacity), after begin: checks[n_checks − 1].
+  PatchCheckInput& next_check() {
+    if (n_checks == checks.size()) checks.emplace_back();
+    PatchCheckInput& c = checks[n_checks++];
+    std::vector<double> p = std::move(c.p), overlap = std::move(c.overlap);
+    c = PatchCheckInput();  // a fresh input's fields, its vectors' capacity kept
+    c.p = std::move(p);
+    c.overlap = std::move(overlap);
+    c.p.clear();
+    c.overlap.clear();
+    return c;
+  }
 };
 
 /// What every grid method does before solving a case: refuse Q ≤ 0 (`no_contact`) and a t_Y outside
@@ -116,11 +170,30 @@ CaseResult solve_grid_case(Method method, const ContactGeometry& G, const Materi
   return r;
 }
 
+/// The same into `out`, reset first as a fresh CaseResult (reset_case_result) with its vectors
+/// keeping their capacity, and with the start in ws.start: with a reused `out` and `ws` nothing
+/// is allocated here once they have grown. body(gs, r) → r, as above. The same bytes.
+template <class Body>
+void solve_grid_case(Method method, const ContactGeometry& G, const Material& mat, double tY, double Q,
+                     const CaseResult* elastic_mh, GridCaseWorkspace& ws, CaseResult& out, Body&& body) {
+  reset_case_result(out);
+  out.method = method;
+  GridStart& gs = ws.start;
+  gs.mh = nullptr;
+  gs.dz = GridStart().dz;
+  if (!begin_grid_case(G, mat, tY, Q, elastic_mh, out, &gs)) return;
+  out = body(gs, std::move(out));
+  finish_grid_case(G, tY, gs, out);
+  set_patch_elastic_hertz(mat, gs.mh, out);
+}
+
 /// [m] the vertical approach at which p_lim [Pa] times the horizontal projection of the rigid
 /// interpenetration equals Q [N]: a lower bound of the capped approach (contact needs g + u ≤ δ
 /// with u ≥ 0, and the vertical force is at most p_lim times the projected contact area), found
 /// by bisection to 1e-4 relative.
 double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim);
+/// The same with the sampling kept in `area` (reset here; its capacity kept).
+double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim, ProjectedInterpenetration& area);
 
 /// Several patches under one rigid vertical approach: the δz [m] at which
 /// Σ_k N_k(δz cos γ_k) cos γ_k = Q (eqs. 10–11), each patch in approach control, within
@@ -139,11 +212,12 @@ ApproachBalance balance_approach(const std::vector<PatchSolver*>& solvers, const
 /// approach found again with them (eqs. 10–11, every patch in approach control): refined[n], when
 /// not null, replaces D.solvers[n]. A failed patch solve or an unbalanced load makes r
 /// not_converged with the reason; r.approach becomes the new approach. Returns the balance.
-ApproachBalance rebalance_refined(const PatchDriverResult& D, const std::vector<PatchSolver*>& refined, double Q,
+ApproachBalance rebalance_refined(PatchDriverResult& D, const std::vector<PatchSolver*>& refined, double Q,
                                   double dz_start, const PatchDriverOptions& opt, CaseResult& r);
 
-/// Solve for the load Q [N], starting from the approach estimate dz_est [m] (> 0).
-PatchDriverResult drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,
-                                const PatchSolverFactory& make);
+/// Solve for the load Q [N], starting from the approach estimate dz_est [m] (> 0), into R (reset
+/// first; its vectors and scratch keep their capacity).
+void drive_patches(const WheelRailGap& gap, double Q, double dz_est, const PatchDriverOptions& opt,
+                   const PatchSolverFactory& make, PatchDriverResult& R);
 
 }  // namespace mh

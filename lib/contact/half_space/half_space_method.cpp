@@ -18,13 +18,78 @@ namespace {
 
 constexpr long kMaxElements = 4'000'000;  // one patch grid larger than this is refused (memory)
 
-// One patch on the half-space: its grid in the patch plane, the undeformed normal gap, the
-// influence operator and the pressures.
-class HalfSpacePatch : public PatchSolver {
+// The influence operators of a thread's half-space cases, kept by their grid (nx, ny, dx, dy,
+// compliance: equal values give the same operator bit for bit), so that a case like the last one
+// builds no kernel, plan or buffer (HalfSpaceWorkspace).
+class InfluenceCache {
  public:
-  HalfSpacePatch(const WheelRailGap& gap, const PatchRegion& R, double dz_ref, const HalfSpaceOptions& opt,
-                 double H, double p_lim)
-      : P(R.P), dx(opt.dx), ds(opt.ds), p_lim_(p_lim), cg_(opt.cg) {
+  /// A case begins: the operators it takes stay put until the next begin_case() (patches hold
+  /// them), so only those of earlier cases are dropped to make room.
+  void begin_case() { case_start_ = ++clock_; }
+  const InfluenceGrid& get(int nx, int ny, double dx, double dy, double H) {
+    ++clock_;
+    for (Entry& e : grids_)
+      if (e.C->nx() == nx && e.C->ny() == ny && e.C->dx() == dx && e.C->dy() == dy && e.C->compliance() == H) {
+        e.used = clock_;
+        return *e.C;
+      }
+    Entry* lru = nullptr;  // full: the least recently used one of an earlier case makes room
+    if (grids_.size() >= static_cast<std::size_t>(HalfSpaceWorkspace::kInfluenceGrids))
+      for (Entry& e : grids_)
+        if (e.used < case_start_ && (!lru || e.used < lru->used)) lru = &e;
+    if (!lru) {
+      grids_.push_back({nullptr, 0});
+      lru = &grids_.back();
+    }
+    lru->C = std::make_unique<InfluenceGrid>(nx, ny, dx, dy, H);
+    lru->used = clock_;
+    return *lru->C;
+  }
+
+ private:
+  struct Entry {
+    std::unique_ptr<InfluenceGrid> C;  // its own block: a patch's pointer survives the vector's growth
+    unsigned long used;
+  };
+  std::vector<Entry> grids_;
+  unsigned long clock_ = 0, case_start_ = 0;
+};
+
+struct HalfSpacePatch;
+
+}  // namespace
+
+struct HalfSpaceWorkspace::Impl {
+  GridCaseWorkspace grid;
+  SolverPool<HalfSpacePatch> patches;
+  InfluenceCache influence;
+  NormalCGWorkspace cg;
+  CaseResult elastic;                  ///< the plastic model's elastic pass
+  std::vector<HalfSpacePatch*> fine;   ///< the locally refined patches (null: not refined)
+  std::vector<double> u;               ///< C p of check_input
+};
+
+namespace {
+
+// One patch on the half-space: its grid in the patch plane, the undeformed normal gap, the
+// influence operator and the pressures. Made empty by the workspace's pool and set up for each
+// patch (setup: every field as a new patch's, the vectors keeping their capacity).
+struct HalfSpacePatch : public PatchSolver {
+  void setup(const WheelRailGap& gap, const PatchRegion& R, double dz_ref, const HalfSpaceOptions& opt, double H,
+             double p_lim, HalfSpaceWorkspace::Impl& ws) {
+    P = R.P;
+    dx = opt.dx;
+    ds = opt.ds;
+    p_lim_ = p_lim;
+    cg_ = opt.cg;
+    ws_ = &ws;
+    C = nullptr;
+    last = NormalCGResult();
+    iterations = 0;
+    peak_change = NAN;
+    h_min = 0;
+    h.clear();
+    p.clear();
     const double c = std::cos(P.gamma);
     // x symmetric about 0 (no yaw); s over the region's extent in the plane; 3 elements of room.
     const double sa = R.s_a - 3 * ds, sb = R.s_b + 3 * ds;
@@ -47,16 +112,16 @@ class HalfSpacePatch : public PatchSolver {
       }
     }
     p.assign(h.size(), 0.0);
-    C = std::make_unique<InfluenceGrid>(nx, ns, dx, ds, H);
+    C = &ws.influence.get(nx, ns, dx, ds, H);
   }
   bool ok() const { return C != nullptr; }
   double at_approach(double delta) override {
-    last = solve_normal_approach(*C, h.data(), delta, p_lim_, p.data(), cg_);
+    last = solve_normal_approach(*C, h.data(), delta, p_lim_, p.data(), cg_, ws_->cg);
     iterations += last.iterations;
     return last.N;
   }
   double at_load(double N) override {
-    last = solve_normal_load(*C, h.data(), N, p_lim_, p.data(), cg_);
+    last = solve_normal_load(*C, h.data(), N, p_lim_, p.data(), cg_, ws_->cg);
     iterations += last.iterations;
     return last.delta;
   }
@@ -65,7 +130,7 @@ class HalfSpacePatch : public PatchSolver {
   /// Only a capped solution is carried over (the capped load control then starts from it instead
   /// of solving elastically first); an elastic one is rebuilt from a cold start, as before.
   void warm_start_from(const PatchSolver& previous) override {
-    const auto* q = dynamic_cast<const HalfSpacePatch*>(&previous);
+    const auto* q = static_cast<const HalfSpacePatch*>(&previous);  // a half-space case has no other
     if (!q || !std::isfinite(p_lim_) || q->last.status != GridStatus::Ok || q->last.n_plastic == 0) return;
     for (int j = 0; j < ns; ++j) {
       const double y = P.y_ref + (s0 + j * ds) * std::cos(P.gamma);
@@ -91,8 +156,7 @@ class HalfSpacePatch : public PatchSolver {
   /// The solution as the physical checks see it (grid_checks.hpp): pressures, the rigid overlap
   /// δ − g per element, and the largest violation of the contact condition by the deformed gap
   /// h = g + C p − δ (δ of the last solve).
-  PatchCheckInput check_input() const {
-    PatchCheckInput c;
+  void check_input(PatchCheckInput& c) const {
     c.nx = nx; c.ns = ns; c.p = p; c.p_lim = p_lim_;
     c.spike_check = c.hole_check = true;
     c.min_across = kMinAcrossHalfSpace;
@@ -102,7 +166,8 @@ class HalfSpacePatch : public PatchSolver {
     c.y_ref = P.y_ref; c.gamma = P.gamma; c.s0 = s0; c.ds = ds;
     const double delta = last.delta;
     c.overlap.resize(h.size());
-    std::vector<double> u(h.size());
+    std::vector<double>& u = ws_->u;
+    u.assign(h.size(), 0.0);
     C->apply(p.data(), u.data());
     c.gap_violation = 0;
     for (std::size_t e = 0; e < h.size(); ++e) {
@@ -115,7 +180,6 @@ class HalfSpacePatch : public PatchSolver {
       else v = std::fabs(he);                                                // in contact: h = 0
       c.gap_violation = std::max(c.gap_violation, v);
     }
-    return c;
   }
 
   PatchPlane P;
@@ -123,15 +187,16 @@ class HalfSpacePatch : public PatchSolver {
   int nx = 0, ns = 0;
   double x0 = 0, s0 = 0, h_min = 0;
   std::vector<double> h, p;
-  std::unique_ptr<InfluenceGrid> C;
+  const InfluenceGrid* C = nullptr;  ///< the workspace's (InfluenceCache); null: refused
   NormalCGResult last;
   int iterations = 0;
   /// After a local refinement (refine_patch): |Δpmax| / pmax of the last halving; NaN: not refined.
   double peak_change = NAN;
 
  private:
-  double p_lim_;
+  double p_lim_ = INFINITY;
   NormalCGOptions cg_;
+  HalfSpaceWorkspace::Impl* ws_ = nullptr;
 };
 
 // A patch with fewer elements across than kMinAcrossHalfSpace (grid_checks.hpp), solved again on
@@ -141,16 +206,17 @@ class HalfSpacePatch : public PatchSolver {
 // several patches the caller then finds the shared approach again with the refined ones
 // (balance_approach). Returns the finest patch solved (null: none could be, the coarse one
 // stays); its peak_change says whether the peak settled.
-std::unique_ptr<HalfSpacePatch> refine_patch(const WheelRailGap& gap, const PatchRegion& region, double dz,
-                                             const HalfSpacePatch& coarse, double N, const HalfSpaceOptions& opt,
-                                             double H, double p_lim) {
-  std::unique_ptr<HalfSpacePatch> best;
+HalfSpacePatch* refine_patch(const WheelRailGap& gap, const PatchRegion& region, double dz, const HalfSpacePatch& coarse,
+                             double N, const HalfSpaceOptions& opt, double H, double p_lim,
+                             HalfSpaceWorkspace::Impl& ws) {
+  HalfSpacePatch* best = nullptr;
   double p_prev = *std::max_element(coarse.p.begin(), coarse.p.end());
   HalfSpaceOptions o = opt;
   for (int level = 1; level <= opt.max_refinements; ++level) {
     o.dx *= 0.5;
     o.ds *= 0.5;
-    auto f = std::make_unique<HalfSpacePatch>(gap, region, dz, o, H, p_lim);
+    HalfSpacePatch* f = &ws.patches.take();
+    f->setup(gap, region, dz, o, H, p_lim, ws);
     if (!f->ok()) break;  // beyond the element budget
     f->at_load(N);
     if (f->failed() || f->outgrown()) break;
@@ -159,7 +225,7 @@ std::unique_ptr<HalfSpacePatch> refine_patch(const WheelRailGap& gap, const Patc
     f->iterations += best ? best->iterations : coarse.iterations;
     const bool settled = elements_across(f->p, f->nx, f->ns) >= kMinAcrossHalfSpace &&
                          f->peak_change <= kPeakRtolHalfSpace;
-    best = std::move(f);
+    best = f;
     p_prev = p_new;
     if (settled) break;
   }
@@ -172,15 +238,21 @@ namespace {
 
 // The case after begin_grid_case (r holds its method; gs the start).
 CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double tY, double Q, const HalfSpaceOptions& opt,
-                           const GridStart& gs, CaseResult r) {
+                           const GridStart& gs, CaseResult r, HalfSpaceWorkspace::Impl& ws) {
   double dz_est = gs.dz;
   if (std::isfinite(mat.p_lim)) {
     // Plastic model: when the elastic solution stays below the cap it is the solution of the
     // capped problem too (it satisfies every condition, and the solution is unique), exactly.
+    // (The elastic pass fills the workspace's result, r's copy, which keeps its capacity.)
     Material elastic = mat;
     elastic.p_lim = INFINITY;
-    CaseResult el = half_space_case(G, elastic, tY, Q, opt, gs, r);
-    if (el.status != CaseStatus::Ok || el.pmax <= mat.p_lim) return el;
+    ws.elastic = r;
+    CaseResult el = half_space_case(G, elastic, tY, Q, opt, gs, std::move(ws.elastic), ws);
+    if (el.status != CaseStatus::Ok || el.pmax <= mat.p_lim) {
+      r = el;
+      ws.elastic = std::move(el);
+      return r;
+    }
     // The capped approach is at least the elastic one (capping only softens) and at least the
     // rigid–perfectly-plastic one, where p_lim times the horizontal projection of the
     // interpenetration carries Q (contact needs g + u ≤ δ with u ≥ 0, and Σ N_k cos γ_k is p_lim
@@ -188,23 +260,37 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
     // its plastic "approach" (Thornton's δ of the grown ellipse) overestimates this approach 3–5
     // times in flange contact, where the interpenetration at that depth reaches the tread.
     const WheelRailGap gap0(G, tY);
-    dz_est = std::max(el.approach, rigid_plastic_approach(gap0, Q, mat.p_lim));
+    dz_est = std::max(el.approach, rigid_plastic_approach(gap0, Q, mat.p_lim, ws.grid.projected));
+    ws.elastic = std::move(el);
   }
+  ws.patches.begin_case();
+  ws.influence.begin_case();
+  ws.grid.n_checks = 0;
   const WheelRailGap gap(G, tY);
   const double H = mat.compliance();
   const double p_lim = mat.p_lim;
 
 
   const PatchDriverOptions dopt = patch_driver_options(opt, opt.max_rebuilds + 1);
-  PatchDriverResult D = drive_patches(gap, Q, dz_est, dopt, [&](const PatchRegion& reg, double dz_ref, std::string* why) {
-    auto k = std::make_unique<HalfSpacePatch>(gap, reg, dz_ref, opt, H, p_lim);
-    if (!k->ok()) {
-      *why = "a contact patch would need " + std::to_string(static_cast<long>(k->nx) * k->ns) +
+  // The factory's state behind one pointer: a std::function keeps a lambda of one reference in
+  // place (no allocation).
+  struct Make {
+    const WheelRailGap& gap;
+    const HalfSpaceOptions& opt;
+    double H, p_lim;
+    HalfSpaceWorkspace::Impl& ws;
+  } make{gap, opt, H, p_lim, ws};
+  PatchDriverResult& D = ws.grid.driver;
+  drive_patches(gap, Q, dz_est, dopt, [&make](const PatchRegion& reg, double dz_ref, std::string* why) -> PatchSolver* {
+    HalfSpacePatch& k = make.ws.patches.take();
+    k.setup(make.gap, reg, dz_ref, make.opt, make.H, make.p_lim, make.ws);
+    if (!k.ok()) {
+      *why = "a contact patch would need " + std::to_string(static_cast<long>(k.nx) * k.ns) +
              " elements (more than " + std::to_string(kMaxElements) + "): use larger dx_mm/ds_mm";
-      return std::unique_ptr<PatchSolver>();
+      return nullptr;
     }
-    return std::unique_ptr<PatchSolver>(std::move(k));
-  });
+    return &k;
+  }, D);
   r.status = D.status;
   r.message = D.message;
   double dz = D.dz;
@@ -213,27 +299,28 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
   r.approach = dz;
   r.iterations = outer;
   // Patches resolved by too few elements: refined locally (refine_patch).
-  std::vector<std::unique_ptr<HalfSpacePatch>> fine(D.solvers.size());
+  std::vector<HalfSpacePatch*>& fine = ws.fine;
+  fine.assign(D.solvers.size(), nullptr);
   bool any_fine = false;
   for (std::size_t n = 0; n < D.solvers.size() && r.status == CaseStatus::Ok && n < D.regions.size(); ++n) {
-    const HalfSpacePatch* coarse = static_cast<const HalfSpacePatch*>(D.solvers[n].get());
+    const HalfSpacePatch* coarse = static_cast<const HalfSpacePatch*>(D.solvers[n]);
     if (elements_across(coarse->p, coarse->nx, coarse->ns) >= kMinAcrossHalfSpace) continue;
     double sp = 0;
     for (double v : coarse->p) sp += v;
-    if (sp > 0) fine[n] = refine_patch(gap, D.regions[n], dz, *coarse, sp * coarse->dx * coarse->ds, opt, H, p_lim);
+    if (sp > 0) fine[n] = refine_patch(gap, D.regions[n], dz, *coarse, sp * coarse->dx * coarse->ds, opt, H, p_lim, ws);
     any_fine = any_fine || fine[n];
   }
   if (any_fine && D.solvers.size() > 1) {
     // A refined patch is stiffer or softer than its coarse grid said: the shared approach again.
-    std::vector<PatchSolver*> refined;
-    for (auto& f : fine) refined.push_back(f.get());
+    std::vector<PatchSolver*>& refined = ws.grid.refined;
+    refined.assign(fine.begin(), fine.end());
     const ApproachBalance b = rebalance_refined(D, refined, Q, dz, dopt, r);
     dz = b.dz;
     r.iterations += b.evaluations;
   }
-  std::vector<PatchCheckInput> checks;  // of the reported patches, for the physical checks
+  // The physical checks' inputs of the reported patches: ws.grid.checks[0 … n_checks).
   for (std::size_t n = 0; n < D.solvers.size(); ++n) {
-    const HalfSpacePatch* coarse = static_cast<const HalfSpacePatch*>(D.solvers[n].get());
+    const HalfSpacePatch* coarse = static_cast<const HalfSpacePatch*>(D.solvers[n]);
     const HalfSpacePatch& k = fine[n] ? *fine[n] : *coarse;
     PatchResult pr;
     pr.y_r = k.P.y_ref;
@@ -268,7 +355,7 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
     // A refined patch alone in its case found its own normal approach by load control.
     pr.approach = (fine[n] && D.solvers.size() == 1 ? k.last.delta : dz * std::cos(k.P.gamma)) - k.h_min;
     if (pr.N <= 0) continue;  // a potential patch that carries nothing is not reported
-    checks.push_back(k.check_input());
+    k.check_input(ws.grid.next_check());
     pr.elements_across = elements_across(k.p, k.nx, k.ns);
     pr.element = std::max(k.dx, k.ds);
     if (opt.keep_pressure) {
@@ -281,16 +368,34 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
     r.area += pr.area;
     r.patches.push_back(std::move(pr));
   }
-  close_grid_case(checks, Q, D.solvers.size() > 1 ? 10 * opt.force_rtol : INFINITY, r);
+  close_grid_case(ws.grid.checks.data(), ws.grid.n_checks, Q, D.solvers.size() > 1 ? 10 * opt.force_rtol : INFINITY, r);
   return r;
 }
 
 }  // namespace
 
+HalfSpaceWorkspace::HalfSpaceWorkspace() = default;
+HalfSpaceWorkspace::~HalfSpaceWorkspace() = default;
+HalfSpaceWorkspace::HalfSpaceWorkspace(HalfSpaceWorkspace&&) noexcept = default;
+HalfSpaceWorkspace& HalfSpaceWorkspace::operator=(HalfSpaceWorkspace&&) noexcept = default;
+HalfSpaceWorkspace::Impl& HalfSpaceWorkspace::impl() {
+  if (!impl_) impl_ = std::make_unique<Impl>();
+  return *impl_;
+}
+
 CaseResult solve_half_space(const ContactGeometry& G, const Material& mat, double tY, double Q,
                             const HalfSpaceOptions& opt, const CaseResult* elastic_mh) {
-  return solve_grid_case(Method::HalfSpace, G, mat, tY, Q, elastic_mh, [&](const GridStart& gs, CaseResult r) {
-    return half_space_case(G, mat, tY, Q, opt, gs, std::move(r));
+  HalfSpaceWorkspace ws;
+  CaseResult r;
+  solve_half_space(G, mat, tY, Q, opt, ws, r, elastic_mh);
+  return r;
+}
+
+void solve_half_space(const ContactGeometry& G, const Material& mat, double tY, double Q, const HalfSpaceOptions& opt,
+                      HalfSpaceWorkspace& ws, CaseResult& out, const CaseResult* elastic_mh) {
+  HalfSpaceWorkspace::Impl& w = ws.impl();
+  solve_grid_case(Method::HalfSpace, G, mat, tY, Q, elastic_mh, w.grid, out, [&](const GridStart& gs, CaseResult r) {
+    return half_space_case(G, mat, tY, Q, opt, gs, std::move(r), w);
   });
 }
 

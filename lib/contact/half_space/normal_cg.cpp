@@ -23,7 +23,8 @@ constexpr int kPolishSteps = 50;   // capped load control: final [PK] load-contr
 /// The shared CG loop ([PK]). target is δ [m] (Approach) or N [N] (Load); at most max_iterations
 /// CG steps (0: only the initial guess is prepared and measured).
 NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Control control,
-                     double p_lim, double* p, const NormalCGOptions& options, int max_iterations) {
+                     double p_lim, double* p, const NormalCGOptions& options, int max_iterations,
+                     NormalCGWorkspace& ws) {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   constexpr double inf = std::numeric_limits<double>::infinity();
   NormalCGResult result;
@@ -69,9 +70,11 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
     return finish(GridStatus::NotConverged);
   }
 
-  // Workspace, allocated once per call.
-  std::vector<double> u(n), h(n), t(n, 0.0), Ct(n);
-  std::vector<unsigned char> in_free(n);
+  // Work vectors, zeroed (as fresh vectors would be), in the caller's workspace.
+  for (auto* v : {&ws.u, &ws.h, &ws.t, &ws.Ct}) v->assign(n, 0.0);
+  ws.in_free.assign(n, 0);
+  std::vector<double> &u = ws.u, &h = ws.h, &t = ws.t, &Ct = ws.Ct;
+  std::vector<unsigned char>& in_free = ws.in_free;
 
   // Initial guess: clip to [0, p_lim] (non-finite entries → 0).
   double sum_p = 0;
@@ -238,21 +241,22 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
 /// Load control with a finite cap (normal_cg.hpp, "Load control with a cap"): the elastic solution
 /// when it stays below p_lim, else a root in δ of N(δ) = N over capped approach-control solves.
 NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double N, double p_lim,
-                                 double* p, const NormalCGOptions& options) {
+                                 double* p, const NormalCGOptions& options, NormalCGWorkspace& ws) {
   const std::size_t n = static_cast<std::size_t>(C.nx()) * static_cast<std::size_t>(C.ny());
   const double area = C.dx() * C.dy();
   // Invalid input, no load and an infeasible load are answered by the shared loop, untouched.
   if (!options.valid(nullptr) || !(p_lim > 0) || !std::isfinite(N) || !(N > 0) ||
       N > p_lim * area * static_cast<double>(n))
-    return solve(C, g, N, Control::Load, p_lim, p, options, options.max_iterations);
+    return solve(C, g, N, Control::Load, p_lim, p, options, options.max_iterations, ws);
   for (std::size_t e = 0; e < n; ++e)
-    if (!std::isfinite(g[e])) return solve(C, g, N, Control::Load, p_lim, p, options, options.max_iterations);
+    if (!std::isfinite(g[e])) return solve(C, g, N, Control::Load, p_lim, p, options, options.max_iterations, ws);
 
   // 1. The elastic solution ([PK] load control, p_lim = ∞). If it stays below the cap it is the
   //    solution of the capped problem too (it satisfies every condition; the solution is unique).
   //    Skipped when the guess already holds capped elements (a previous capped solution): then δ
   //    starts from the guess's own approach, the mean of g + C p over its free elements.
-  std::vector<double> guess(p, p + n);
+  std::vector<double>& guess = ws.guess;
+  guess.assign(p, p + n);
   bool capped_guess = false;
   for (std::size_t e = 0; e < n; ++e) capped_guess = capped_guess || p[e] >= p_lim;
   NormalCGResult el;
@@ -261,7 +265,8 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
   int used = 0;
   if (capped_guess) {
     for (std::size_t e = 0; e < n; ++e) p[e] = std::isfinite(p[e]) ? std::min(std::max(p[e], 0.0), p_lim) : 0.0;
-    std::vector<double> u(n);
+    std::vector<double>& u = ws.u0;
+    u.assign(n, 0.0);
     C.apply(p, u.data());
     double sum = 0, top = -INFINITY;
     std::size_t n_free = 0;
@@ -271,7 +276,7 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
     }
     delta_guess = n_free ? sum / static_cast<double>(n_free) : top;
   } else {
-    el = solve(C, g, N, Control::Load, INFINITY, p, options, options.max_iterations);
+    el = solve(C, g, N, Control::Load, INFINITY, p, options, options.max_iterations, ws);
     used = el.iterations;
     if (el.status != GridStatus::Ok) {
       std::copy(guess.begin(), guess.end(), p);  // the caller's guess, for the δ-loop below
@@ -286,7 +291,8 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
   //      δ_el (the elastic approach: capping only softens, N_cap(δ) ≤ N_el(δ)), and
   //      δ_rp (rigid–perfectly-plastic bound: contact needs g + u ≤ δ with u ≥ 0, so g < δ, and
   //            N(δ) ≤ p_lim·dx·dy·#{g < δ}; δ_rp is the k-th smallest g, k = ⌈N/(p_lim dx dy)⌉).
-  std::vector<double> sorted(g, g + n);
+  std::vector<double>& sorted = ws.sorted;
+  sorted.assign(g, g + n);
   const std::size_t k = std::min(n - 1, static_cast<std::size_t>(std::ceil(N / (p_lim * area))));
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k), sorted.end());
   const double delta_rp = sorted[k];
@@ -307,7 +313,7 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
   auto F = [&](double d) {
     if (stop) return 0.0;
     inner.max_iterations = std::max(1, options.max_iterations - used);
-    r = solve(C, g, d, Control::Approach, p_lim, p, inner, inner.max_iterations);
+    r = solve(C, g, d, Control::Approach, p_lim, p, inner, inner.max_iterations, ws);
     used += r.iterations;
     ++evals;
     const double f = r.N - N;
@@ -334,7 +340,7 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
   // 3. Exact load and the load-control measure: the shared loop from this solution ([PK] scaling
   //    of the free pressures, δ = mean of g + u over them), polishing if needed.
   NormalCGResult fin = solve(C, g, N, Control::Load, p_lim, p, options,
-                             std::max(0, std::min(kPolishSteps, options.max_iterations - used)));
+                             std::max(0, std::min(kPolishSteps, options.max_iterations - used)), ws);
   fin.iterations += used;
   return fin;
 }
@@ -343,13 +349,25 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
 
 NormalCGResult solve_normal_approach(const InfluenceGrid& C, const double* g, double delta,
                                      double p_lim, double* p, const NormalCGOptions& options) {
-  return solve(C, g, delta, Control::Approach, p_lim, p, options, options.max_iterations);
+  NormalCGWorkspace ws;
+  return solve_normal_approach(C, g, delta, p_lim, p, options, ws);
+}
+
+NormalCGResult solve_normal_approach(const InfluenceGrid& C, const double* g, double delta, double p_lim, double* p,
+                                     const NormalCGOptions& options, NormalCGWorkspace& ws) {
+  return solve(C, g, delta, Control::Approach, p_lim, p, options, options.max_iterations, ws);
 }
 
 NormalCGResult solve_normal_load(const InfluenceGrid& C, const double* g, double N, double p_lim,
                                  double* p, const NormalCGOptions& options) {
-  if (std::isfinite(p_lim)) return solve_capped_load(C, g, N, p_lim, p, options);
-  return solve(C, g, N, Control::Load, p_lim, p, options, options.max_iterations);
+  NormalCGWorkspace ws;
+  return solve_normal_load(C, g, N, p_lim, p, options, ws);
+}
+
+NormalCGResult solve_normal_load(const InfluenceGrid& C, const double* g, double N, double p_lim, double* p,
+                                 const NormalCGOptions& options, NormalCGWorkspace& ws) {
+  if (std::isfinite(p_lim)) return solve_capped_load(C, g, N, p_lim, p, options, ws);
+  return solve(C, g, N, Control::Load, p_lim, p, options, options.max_iterations, ws);
 }
 
 }  // namespace mh

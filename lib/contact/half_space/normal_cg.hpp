@@ -29,6 +29,7 @@
 // the free pressures ([PK]); with a cap the scaling is repeated with newly capped elements
 // fixed (a water-filling pass, at most n passes, usually one).
 #include <string>
+#include <vector>
 
 #include "contact/options.hpp"
 #include "contact/half_space/influence.hpp"
@@ -52,16 +53,29 @@ struct NormalCGResult {
   int n_plastic = 0;   ///< elements with p == p_lim
 };
 
+/// The solvers' work vectors (nx·ny values each), kept by a caller that solves many grids on one
+/// thread (the half-space method's workspace): a call then allocates nothing once they have grown
+/// to the largest grid. The forms without it make their own per call. Contents between calls:
+/// none that matters (every call sets what it reads).
+struct NormalCGWorkspace {
+  std::vector<double> u, h, t, Ct;       ///< the CG loop: C p, the residual gap, direction, C t
+  std::vector<unsigned char> in_free;    ///< the free set F of the CG loop
+  std::vector<double> guess, u0, sorted; ///< capped load control: the caller's guess, C p of it, g sorted
+};
+
 /// Approach control: δ given [m], find p [Pa]. g: nx·ny undeformed gaps [m] (index ix + nx·iy).
 /// p holds the initial guess on input (clipped to [0, p_lim]; all zeros allowed — then the guess
 /// is α·max(δ − g, 0) with α fitted by least squares on that support; a previous solution is a
 /// warm start) and the solution on output. p_lim > 0 [Pa] or INFINITY (elastic).
 /// Never throws for numerical reasons: returns NotConverged (p unchanged for invalid input:
 /// options invalid, p_lim ≤ 0 or NaN, δ not finite, a g not finite).
-/// δ ≤ min g: NoContact, p = 0. Deterministic (same bytes every run). Allocates its workspace
-/// (4 vectors of nx·ny doubles) once per call.
+/// δ ≤ min g: NoContact, p = 0. Deterministic (same bytes every run). Allocates its work vectors
+/// (5 of nx·ny values) once per call; the form with a NormalCGWorkspace takes them from it (the
+/// same bytes).
 NormalCGResult solve_normal_approach(const InfluenceGrid& C, const double* g, double delta,
                                      double p_lim, double* p, const NormalCGOptions& options = {});
+NormalCGResult solve_normal_approach(const InfluenceGrid& C, const double* g, double delta, double p_lim, double* p,
+                                     const NormalCGOptions& options, NormalCGWorkspace& ws);
 
 /// Load control ([PK]'s original form): total force N [N] given, find p [Pa] and δ [m].
 /// p as in solve_normal_approach; an all-zero guess becomes the uniform pressure N/(nx·ny·dx·dy)
@@ -75,5 +89,8 @@ NormalCGResult solve_normal_approach(const InfluenceGrid& C, const double* g, do
 /// it): NotConverged. On success dx·dy·Σp = N to rounding.
 NormalCGResult solve_normal_load(const InfluenceGrid& C, const double* g, double N, double p_lim,
                                  double* p, const NormalCGOptions& options = {});
+/// The same with the work vectors of `ws` (see NormalCGWorkspace; the same bytes).
+NormalCGResult solve_normal_load(const InfluenceGrid& C, const double* g, double N, double p_lim, double* p,
+                                 const NormalCGOptions& options, NormalCGWorkspace& ws);
 
 }  // namespace mh

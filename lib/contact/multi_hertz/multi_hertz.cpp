@@ -139,17 +139,7 @@ CaseResult solve_multi_hertz(const ContactGeometry& G, const Material& mat, doub
 
 void solve_multi_hertz(const ContactGeometry& G, const Material& mat, double tY, double Q,
                        const MultiHertzOptions& opt, CaseResult& r) {
-  // Reset as a fresh CaseResult, keeping the vectors' capacity.
-  r.status = CaseStatus::Ok;
-  r.method = Method::MultiHertzian;
-  r.message.clear();
-  r.warnings.clear();
-  r.dz = r.approach = r.residual = 0;
-  r.iterations = 0;
-  r.Fz = r.Fy = r.pmax = r.area = 0;
-  r.n_contacts = 0;
-  r.loaded.clear();
-  r.patches.clear();
+  reset_case_result(r);  // as a fresh CaseResult, keeping the vectors' capacity
   if (!(Q > 0) || !std::isfinite(Q)) {
     r.status = CaseStatus::NoContact;
     r.message = "Q must be > 0";

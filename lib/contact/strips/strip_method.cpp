@@ -14,12 +14,38 @@ namespace mh {
 
 namespace {
 
-// One patch as strips: the minimum gap g(s) of each lateral row and its parabola along x.
-class StripPatch : public PatchSolver {
- public:
-  StripPatch(const WheelRailGap& gap, const PatchRegion& R, double dz_ref, const StripMethodOptions& opt,
-             double H, double p_lim)
-      : P(R.P), H_(H), p_lim_(p_lim), opt_(opt.strips) {
+struct StripPatch;
+
+}  // namespace
+
+struct StripWorkspace::Impl {
+  GridCaseWorkspace grid;
+  SolverPool<StripPatch> patches;
+  std::vector<StripPatch*> fine;  ///< the locally refined patches (null: not refined)
+};
+
+namespace {
+
+// One patch as strips: the minimum gap g(s) of each lateral row and its parabola along x. Made
+// empty by the workspace's pool and set up for each patch (setup: every field as a new patch's,
+// the vectors keeping their capacity).
+struct StripPatch : public PatchSolver {
+  void setup(const WheelRailGap& gap, const PatchRegion& R, double dz_ref, const StripMethodOptions& opt, double H,
+             double p_lim) {
+    P = R.P;
+    H_ = H;
+    p_lim_ = p_lim;
+    opt_ = opt.strips;
+    last = StripResult();
+    evaluations = 0;
+    peak_change = NAN;
+    warm_ = StripWarmStart();
+    delta_start_ = NAN;
+    solver_.reset();
+    geo.s.clear();
+    geo.g.clear();
+    geo.A.clear();
+    geo.xc.clear();
     const double c = std::cos(P.gamma), ds = opt.ds;
     const double sa = R.s_a - 3 * ds, sb = R.s_b + 3 * ds;
     const int n = std::max(1, static_cast<int>(std::ceil((sb - sa) / ds)));
@@ -50,8 +76,7 @@ class StripPatch : public PatchSolver {
   /// The loaded strips of the same patch at the previous placement, mapped by rail y onto this
   /// plane's strips: the first active set (strips.hpp: the cost changes, not the answer).
   void warm_start_from(const PatchSolver& previous) override {
-    const auto* o = dynamic_cast<const StripPatch*>(&previous);
-    if (!o) return;
+    const auto* o = static_cast<const StripPatch*>(&previous);  // a strip case has no other
     // The same interpenetration depth below the deepest row as the previous placement's answer.
     if (o->last.status == StripStatus::Ok)
       delta_start_ = o->last.delta - *std::min_element(o->geo.g.begin(), o->geo.g.end()) +
@@ -88,8 +113,7 @@ class StripPatch : public PatchSolver {
 
   /// The solution as the physical checks see it (grid_checks.hpp): one element per strip, its
   /// peak pressure, the rigid overlap δ − g(s) of each strip, and the end-gap error.
-  PatchCheckInput check_input(const StripOptions& o) const {
-    PatchCheckInput c;
+  void check_input(const StripOptions& o, PatchCheckInput& c) const {
     c.nx = 1;
     c.ns = static_cast<int>(geo.s.size());
     c.p.assign(geo.s.size(), 0.0);
@@ -108,7 +132,6 @@ class StripPatch : public PatchSolver {
     c.element = geo.ds;
     c.peak_change = peak_change;
     c.peak_rtol = kPeakRtolStrips;
-    return c;
   }
 
   PatchPlane P;
@@ -119,7 +142,7 @@ class StripPatch : public PatchSolver {
   double peak_change = NAN;
 
  private:
-  double H_, p_lim_;
+  double H_ = 0, p_lim_ = INFINITY;
   StripOptions opt_;
   StripWarmStart warm_;  ///< the loaded strips of this patch's last solve, and its extents' refinement
   double delta_start_ = NAN;  ///< the first approach of load control (from the previous placement)
@@ -142,22 +165,22 @@ int strips_across(const StripPatch& k) {
 // and its peak moves by at most kPeakRtolStrips between two widths; at most opt.max_refinements
 // halvings (as the half-space method's refine_patch; with several patches the caller then finds the
 // shared approach again). Returns the finest patch solved (null: none could be, the coarse one stays).
-std::unique_ptr<StripPatch> refine_patch(const WheelRailGap& gap, const PatchRegion& region, double dz,
-                                         const StripPatch& coarse, const StripMethodOptions& opt, double H,
-                                         double p_lim) {
-  std::unique_ptr<StripPatch> best;
+StripPatch* refine_patch(const WheelRailGap& gap, const PatchRegion& region, double dz, const StripPatch& coarse,
+                         const StripMethodOptions& opt, double H, double p_lim, StripWorkspace::Impl& ws) {
+  StripPatch* best = nullptr;
   double p_prev = coarse.last.pmax;
   StripMethodOptions o = opt;
   for (int level = 1; level <= opt.max_refinements; ++level) {
     o.ds *= 0.5;
-    auto f = std::make_unique<StripPatch>(gap, region, dz, o, H, p_lim);
+    StripPatch* f = &ws.patches.take();
+    f->setup(gap, region, dz, o, H, p_lim);
     f->at_load(coarse.last.N);
     if (f->failed() || f->outgrown() || f->last.status != StripStatus::Ok) break;
     f->peak_change = std::fabs(f->last.pmax - p_prev) / f->last.pmax;
     f->evaluations += best ? best->evaluations : coarse.evaluations;
     const bool settled = strips_across(*f) >= kMinAcrossStrips && f->peak_change <= kPeakRtolStrips;
     p_prev = f->last.pmax;
-    best = std::move(f);
+    best = f;
     if (settled) break;
   }
   return best;
@@ -169,40 +192,55 @@ namespace {
 
 // The case after begin_grid_case (r holds its method; gs the start).
 CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, double Q, const StripMethodOptions& opt,
-                      const GridStart& gs, CaseResult r) {
+                      const GridStart& gs, CaseResult r, StripWorkspace::Impl& ws) {
+  ws.patches.begin_case();
+  ws.grid.n_checks = 0;
   double dz_est = gs.dz;
   const WheelRailGap gap(G, tY);
   // Plastic model: the capped approach is at least the elastic one and at least the rigid–
   // perfectly-plastic one (as for the half-space method).
-  if (std::isfinite(mat.p_lim)) dz_est = std::max(dz_est, rigid_plastic_approach(gap, Q, mat.p_lim));
+  if (std::isfinite(mat.p_lim))
+    dz_est = std::max(dz_est, rigid_plastic_approach(gap, Q, mat.p_lim, ws.grid.projected));
   const double H = mat.compliance(), p_lim = mat.p_lim;
   const PatchDriverOptions dopt = patch_driver_options(opt, opt.max_passes);
-  PatchDriverResult D = drive_patches(gap, Q, dz_est, dopt, [&](const PatchRegion& reg, double dz_ref, std::string*) {
-    return std::unique_ptr<PatchSolver>(std::make_unique<StripPatch>(gap, reg, dz_ref, opt, H, p_lim));
-  });
+  // The factory's state behind one pointer: a std::function keeps a lambda of one reference in
+  // place (no allocation).
+  struct Make {
+    const WheelRailGap& gap;
+    const StripMethodOptions& opt;
+    double H, p_lim;
+    StripWorkspace::Impl& ws;
+  } make{gap, opt, H, p_lim, ws};
+  PatchDriverResult& D = ws.grid.driver;
+  drive_patches(gap, Q, dz_est, dopt, [&make](const PatchRegion& reg, double dz_ref, std::string*) -> PatchSolver* {
+    StripPatch& k = make.ws.patches.take();
+    k.setup(make.gap, reg, dz_ref, make.opt, make.H, make.p_lim);
+    return &k;
+  }, D);
   r.status = D.status;
   r.message = D.message;
   r.approach = D.dz;
   int evaluations = 0;
-  std::vector<PatchCheckInput> checks;  // of the reported patches, for the physical checks
+  // The physical checks' inputs of the reported patches: ws.grid.checks[0 … n_checks).
   // Patches resolved by too few strips: refined locally (refine_patch).
-  std::vector<std::unique_ptr<StripPatch>> fine(D.solvers.size());
+  std::vector<StripPatch*>& fine = ws.fine;
+  fine.assign(D.solvers.size(), nullptr);
   bool any_fine = false;
   for (std::size_t n = 0; n < D.solvers.size() && r.status == CaseStatus::Ok && n < D.regions.size(); ++n) {
-    const StripPatch* coarse = static_cast<const StripPatch*>(D.solvers[n].get());
+    const StripPatch* coarse = static_cast<const StripPatch*>(D.solvers[n]);
     if (coarse->last.status != StripStatus::Ok || !(coarse->last.N > 0) || strips_across(*coarse) >= kMinAcrossStrips)
       continue;
-    fine[n] = refine_patch(gap, D.regions[n], D.dz, *coarse, opt, H, p_lim);
+    fine[n] = refine_patch(gap, D.regions[n], D.dz, *coarse, opt, H, p_lim, ws);
     any_fine = any_fine || fine[n];
   }
   if (any_fine && D.solvers.size() > 1) {
     // The shared approach found again with the refined patches (as the half-space method does).
-    std::vector<PatchSolver*> refined;
-    for (auto& f : fine) refined.push_back(f.get());
+    std::vector<PatchSolver*>& refined = ws.grid.refined;
+    refined.assign(fine.begin(), fine.end());
     D.dz = rebalance_refined(D, refined, Q, D.dz, dopt, r).dz;
   }
   for (std::size_t n = 0; n < D.solvers.size(); ++n) {
-    const StripPatch* coarse = static_cast<const StripPatch*>(D.solvers[n].get());
+    const StripPatch* coarse = static_cast<const StripPatch*>(D.solvers[n]);
     const StripPatch& k = fine[n] ? *fine[n] : *coarse;
     evaluations += k.evaluations;
     const StripResult& S = k.last;
@@ -259,22 +297,42 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
           .add(Quantity::QStrip, std::min(w.q, p_lim));
       r.warnings.push_back(o);
     }
-    checks.push_back(k.check_input(opt.strips));
-    pr.elements_across = elements_across(checks.back().p, checks.back().nx, checks.back().ns);
+    PatchCheckInput& check = ws.grid.next_check();
+    k.check_input(opt.strips, check);
+    pr.elements_across = elements_across(check.p, check.nx, check.ns);
     pr.element = k.geo.ds;
     r.patches.push_back(std::move(pr));
   }
   r.iterations = evaluations;
-  close_grid_case(checks, Q, kForceBalanceRtol, r);
+  close_grid_case(ws.grid.checks.data(), ws.grid.n_checks, Q, kForceBalanceRtol, r);
   return r;
 }
 
 }  // namespace
 
+StripWorkspace::StripWorkspace() = default;
+StripWorkspace::~StripWorkspace() = default;
+StripWorkspace::StripWorkspace(StripWorkspace&&) noexcept = default;
+StripWorkspace& StripWorkspace::operator=(StripWorkspace&&) noexcept = default;
+StripWorkspace::Impl& StripWorkspace::impl() {
+  if (!impl_) impl_ = std::make_unique<Impl>();
+  return *impl_;
+}
+
 CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, double tY, double Q,
                               const StripMethodOptions& opt, const CaseResult* elastic_mh) {
-  return solve_grid_case(Method::Strips, G, mat, tY, Q, elastic_mh, [&](const GridStart& gs, CaseResult r) {
-    return strip_case(G, mat, tY, Q, opt, gs, std::move(r));
+  StripWorkspace ws;
+  CaseResult r;
+  solve_strip_method(G, mat, tY, Q, opt, ws, r, elastic_mh);
+  return r;
+}
+
+void solve_strip_method(const ContactGeometry& G, const Material& mat, double tY, double Q,
+                        const StripMethodOptions& opt, StripWorkspace& ws, CaseResult& out,
+                        const CaseResult* elastic_mh) {
+  StripWorkspace::Impl& w = ws.impl();
+  solve_grid_case(Method::Strips, G, mat, tY, Q, elastic_mh, w.grid, out, [&](const GridStart& gs, CaseResult r) {
+    return strip_case(G, mat, tY, Q, opt, gs, std::move(r), w);
   });
 }
 
