@@ -105,10 +105,20 @@ void HalfSpaceTangentialSolver::add_row_change(int iy) {
     const std::complex<double>* kxy = &kxy_[sh * d];
     std::complex<double>* vx = &vx_hat_[sh * jy];
     std::complex<double>* vy = &vy_hat_[sh * jy];
-    for (std::size_t k = 0; k < sh; ++k) {
-      const std::complex<double> cxy = sgn * kxy[k];
-      vx[k] += kxx[k] * qx_hat_[k] + cxy * qy_hat_[k];
-      vy[k] += cxy * qx_hat_[k] + kyy[k] * qy_hat_[k];
+    // Complex products written out (std::complex's operator* checks for NaN/inf at -O2).
+    const double* a = reinterpret_cast<const double*>(kxx);
+    const double* b = reinterpret_cast<const double*>(kyy);
+    const double* g = reinterpret_cast<const double*>(kxy);
+    const double* qx = reinterpret_cast<const double*>(qx_hat_.data());
+    const double* qy = reinterpret_cast<const double*>(qy_hat_.data());
+    double* ox = reinterpret_cast<double*>(vx);
+    double* oy = reinterpret_cast<double*>(vy);
+    for (std::size_t k = 0; k < 2 * sh; k += 2) {
+      const double gr = sgn * g[k], gi = sgn * g[k + 1];
+      ox[k] += a[k] * qx[k] - a[k + 1] * qx[k + 1] + gr * qy[k] - gi * qy[k + 1];
+      ox[k + 1] += a[k] * qx[k + 1] + a[k + 1] * qx[k] + gr * qy[k + 1] + gi * qy[k];
+      oy[k] += gr * qx[k] - gi * qx[k + 1] + b[k] * qy[k] - b[k + 1] * qy[k + 1];
+      oy[k + 1] += gr * qx[k + 1] + gi * qx[k] + b[k] * qy[k + 1] + b[k + 1] * qy[k];
     }
   }
 }
@@ -268,9 +278,9 @@ HalfSpaceTangentialResult HalfSpaceTangentialSolver::solve(const double* pn_in, 
     for (int iy : contact_rows_)
       for (int ix = 0; ix < nx_; ++ix) {
         const std::size_t e = static_cast<std::size_t>(ix) + snx * iy;
-        pt_max = std::max(pt_max, std::hypot(px_[e], py_[e]));
+        pt_max = std::max(pt_max, px_[e] * px_[e] + py_[e] * py_[e]);
       }
-    res.change = change == 0 ? 0.0 : change / std::min(scale, std::max(pt_max, 1e-300));
+    res.change = change == 0 ? 0.0 : change / std::min(scale, std::max(std::sqrt(pt_max), 1e-300));
     if (!std::isfinite(res.change)) {
       res.message = "non-finite traction in sweep " + std::to_string(sweep);
       break;
