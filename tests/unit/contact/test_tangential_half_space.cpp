@@ -17,6 +17,7 @@
 
 #include "contact/half_space/influence.hpp"
 #include "contact/half_space/tangential_influence.hpp"
+#include "contact/half_space/tangential_patch.hpp"
 #include "contact/half_space/tangential_rolling.hpp"
 
 namespace {
@@ -398,4 +399,34 @@ TEST_CASE("Steady rolling, small creepage: convergence to Kalker's linear theory
       }
     }
   }
+}
+
+TEST_CASE("solve_tangential_patch: a half-space patch's grid and pressure, equal materials only",
+          "[tangential_rolling]") {
+  const HertzGrid h(6e-3, 4e-3, 1e9, 24, 16);
+  mh::PatchResult patch;
+  patch.patch = 1;
+  patch.nx = h.nx;
+  patch.ns = h.ny;
+  patch.dx = h.dx;
+  patch.ds = h.dy;
+  patch.x0 = h.x0;
+  patch.s0 = h.y0;
+  patch.p = h.p;
+  mh::Material m;  // steel, 210 GPa, ν = 0.28
+  const mh::Creepages c{3e-4, -2e-4, 0.4};
+  const auto r = mh::solve_tangential_patch(patch, m, c, 0.3);
+  REQUIRE(r.status == mh::TangentialStatus::Ok);
+  mh::HalfSpaceTangentialSolver s(h.nx, h.ny, h.dx, h.dy, 210e9 / (2 * 1.28), 0.28);
+  const auto d = s.solve(h.p.data(), h.x0, h.y0, c, 0.3);
+  CHECK(r.forces.Fx == d.forces.Fx);
+  CHECK(r.forces.Fy == d.forces.Fy);
+  CHECK(r.forces.Mz == d.forces.Mz);
+  m.E_rail = 200e9;
+  const auto bad = mh::solve_tangential_patch(patch, m, c, 0.3);
+  CHECK(bad.status == mh::TangentialStatus::NotConverged);
+  CHECK(bad.message.find("equal elastic constants") != std::string::npos);
+  patch.p.clear();
+  m.E_rail = NAN;
+  CHECK(mh::solve_tangential_patch(patch, m, c, 0.3).status == mh::TangentialStatus::NotConverged);
 }
