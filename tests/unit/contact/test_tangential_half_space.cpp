@@ -430,3 +430,39 @@ TEST_CASE("solve_tangential_patch: a half-space patch's grid and pressure, equal
   m.E_rail = NAN;
   CHECK(mh::solve_tangential_patch(patch, m, c, 0.3).status == mh::TangentialStatus::NotConverged);
 }
+
+TEST_CASE("Steady rolling: invalid input and no contact give a status, a warm start the same answer",
+          "[tangential_rolling]") {
+  const HertzGrid h(6e-3, 4e-3, 1e9, 24, 16);
+  mh::HalfSpaceTangentialSolver s(h.nx, h.ny, h.dx, h.dy, 82e9, 0.28);
+  const mh::Creepages c{2e-4, 1e-4, 0.3};
+  const auto cold = s.solve(h.p.data(), h.x0, h.y0, c, 0.3);
+  REQUIRE(cold.status == mh::TangentialStatus::Ok);
+  // Deterministic, and a warm start from the converged tractions stops at once with the same forces.
+  const auto again = s.solve(h.p.data(), h.x0, h.y0, c, 0.3);
+  CHECK(again.forces.Fx == cold.forces.Fx);
+  CHECK(again.forces.Mz == cold.forces.Mz);
+  const auto warm = s.solve(h.p.data(), h.x0, h.y0, c, 0.3, {}, true);
+  REQUIRE(warm.status == mh::TangentialStatus::Ok);
+  CHECK(warm.sweeps <= 2);
+  CHECK(warm.forces.Fx == Approx(cold.forces.Fx).margin(1e-5 * 0.3 * h.N));
+  CHECK(warm.forces.Fy == Approx(cold.forces.Fy).margin(1e-5 * 0.3 * h.N));
+  // Invalid input: NotConverged with a message, no throw.
+  CHECK(s.solve(h.p.data(), h.x0, h.y0, c, 0.0).status == mh::TangentialStatus::NotConverged);
+  CHECK(s.solve(h.p.data(), h.x0, h.y0, {NAN, 0, 0}, 0.3).status == mh::TangentialStatus::NotConverged);
+  mh::HalfSpaceTangentialOptions bad;
+  bad.tol = 0;
+  const auto r = s.solve(h.p.data(), h.x0, h.y0, c, 0.3, bad);
+  CHECK(r.status == mh::TangentialStatus::NotConverged);
+  CHECK(r.message.find("tol") != std::string::npos);
+  // Too few sweeps: NotConverged, with the forces of the last iterate.
+  mh::HalfSpaceTangentialOptions one;
+  one.max_sweeps = 1;
+  CHECK(s.solve(h.p.data(), h.x0, h.y0, c, 0.3, one).status == mh::TangentialStatus::NotConverged);
+  // No pressure anywhere: NoContact, zero forces.
+  const std::vector<double> zero(h.p.size(), 0.0);
+  const auto none = s.solve(zero.data(), h.x0, h.y0, c, 0.3);
+  CHECK(none.status == mh::TangentialStatus::NoContact);
+  CHECK(none.forces.Fx == 0.0);
+  CHECK(s.px()[h.p.size() / 2] == 0.0);
+}
