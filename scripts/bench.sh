@@ -41,6 +41,16 @@ ls -la "$tmp/out" | awk 'NR>1{print "  " $5 " bytes  " $9}'
 ./build/mhcontact_bench_grid . 5 workspace
 # The half-space method against the FFTW build, alternated (skipped without libfftw3-dev).
 bash scripts/bench_fft.sh 3
+# The exact half-space tangential solve on CONTACT's Hertzian patch, and CONTACT's own time on the
+# same deck when a CONTACT binary is given (CONTACT_BIN=…/contact_linux64; its tangential solver's
+# CPU time from its performance timers, six cases).
+./build/mhcontact_bench_tangential . 5
+if [ -x "${CONTACT_BIN:-}" ]; then
+  ctmp=$(mktemp -d); cp tests/data/contact_tangential/hstang/hertz44.inp "$ctmp/"
+  (cd "$ctmp" && OMP_NUM_THREADS=1 "$CONTACT_BIN" 2 hertz44 > /dev/null 2>&1 || true)
+  grep -E "^\|(Total|Tang: StedyGS)" "$ctmp/hertz44.out" | sed 's/^/  CONTACT /'
+  rm -rf "$ctmp"
+fi
 # The wheelset: one pair, and a fleet of 1000 wheels with its CPU time per wheel by stage.
 ./build/mhcontact_bench_wheelset 1000
 # The wheelset fleet of measured files through the command (CPU per wheel, 10,000 on 2 cores).

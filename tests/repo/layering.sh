@@ -4,7 +4,8 @@
 # the flow). Inside lib/contact the same holds between its rooms, in this order:
 #   options (options.hpp: material, method, every options struct)
 #   < judge_status (judge/status.*: a case's status and warnings as data, light)
-#   < ellipse (one Hertzian ellipse) < case_result (the result every method returns)
+#   < ellipse (one Hertzian ellipse) | tangential (creepages, the tangential result, Kalker's
+#   coefficients: a sibling of ellipse) < case_result (the result every method returns)
 #   < judge (judge/judge.*: the one rule that decides a solved case's status)
 #   < multi_hertz < grid (what the grid methods share) < half_space | strips (siblings: neither
 #   includes the other) < solve (dispatch and auto).
@@ -16,8 +17,8 @@
 set -uo pipefail
 src=$1
 layers=(core profile geometry contact input output jobs capi)
-rooms=(options judge_status ellipse case_result judge multi_hertz grid half_space strips solve)
-room_rank=(0 1 2 3 4 5 6 7 7 8)
+rooms=(options judge_status ellipse tangential case_result judge multi_hertz grid half_space strips solve)
+room_rank=(0 1 2 2 3 4 5 6 7 7 8)
 rank() { local i; for i in "${!layers[@]}"; do [ "${layers[$i]}" = "$1" ] && { echo "$i"; return; }; done; echo -1; }
 room() {  # the room of lib/contact/<rest> given <rest>: its folder, or the file's stem at the top
   case "$1" in judge/status.*) echo judge_status ;; */*) echo "${1%%/*}" ;; *) local b=${1%.*}; echo "$b" ;; esac

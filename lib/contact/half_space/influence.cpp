@@ -384,8 +384,24 @@ InfluenceGrid::InfluenceGrid(int nx, int ny, double dx, double dy, double compli
   if (!(compliance > 0) || !std::isfinite(compliance))
     throw std::invalid_argument("InfluenceGrid: compliance = " + std::to_string(compliance) +
                                 " 1/Pa: must be > 0 and finite");
-  mx_ = smooth_size(2 * nx - 1);
-  my_ = smooth_size(2 * ny - 1);
+  init_fft();
+}
+
+InfluenceGrid::InfluenceGrid(int nx, int ny, double dx, double dy, Kernel kernel)
+    : nx_(nx), ny_(ny), dx_(dx), dy_(dy), compliance_(std::nan("")), kernel_(std::move(kernel)) {
+  if (nx < 1 || ny < 1)
+    throw std::invalid_argument("InfluenceGrid: nx = " + std::to_string(nx) + ", ny = " +
+                                std::to_string(ny) + ": the grid needs at least 1 × 1 elements");
+  if (!(dx > 0) || !(dy > 0) || !std::isfinite(dx) || !std::isfinite(dy))
+    throw std::invalid_argument("InfluenceGrid: dx = " + std::to_string(dx) + " m, dy = " +
+                                std::to_string(dy) + " m: element sizes must be > 0 and finite");
+  if (!kernel_) throw std::invalid_argument("InfluenceGrid: the kernel function is empty");
+  init_fft();
+}
+
+void InfluenceGrid::init_fft() {
+  mx_ = smooth_size(2 * nx_ - 1);
+  my_ = smooth_size(2 * ny_ - 1);
   fft_ = std::make_unique<Fft>(nx_, ny_, mx_, my_);
   c00_ = coefficient(0, 0);
 
@@ -408,9 +424,126 @@ InfluenceGrid::InfluenceGrid(InfluenceGrid&&) noexcept = default;
 InfluenceGrid& InfluenceGrid::operator=(InfluenceGrid&&) noexcept = default;
 
 double InfluenceGrid::coefficient(int dix, int diy) const {
+  if (kernel_) return kernel_(dix, diy);
   return compliance_ * love_rectangle(dix * dx_, diy * dy_, 0.5 * dx_, 0.5 * dy_);
 }
 
 void InfluenceGrid::apply(const double* p, double* u) const { fft_->convolve(p, u); }
+
+// ---- RowFft: 1-D real transforms for row-wise convolutions (influence.hpp) ----
+
+#ifdef MHCONTACT_FFTW
+struct RowFft::Impl {
+  int m;
+  std::unique_ptr<double, FftwFree> real;
+  std::unique_ptr<fftw_complex, FftwFree> spec;
+  Plan forward, backward;
+  explicit Impl(int m_) : m(m_) {
+    real.reset(static_cast<double*>(fftw_malloc(sizeof(double) * static_cast<std::size_t>(m))));
+    spec.reset(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * static_cast<std::size_t>(m / 2 + 1))));
+    if (!real || !spec) throw std::bad_alloc();
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    forward.reset(fftw_plan_dft_r2c_1d(m, real.get(), spec.get(), FFTW_ESTIMATE));
+    backward.reset(fftw_plan_dft_c2r_1d(m, spec.get(), real.get(), FFTW_ESTIMATE));
+    if (!forward || !backward) throw std::runtime_error("RowFft: FFTW planning failed");
+  }
+  void fwd(const double* x, int len, std::complex<double>* X) {
+    double* r = real.get();
+    std::memcpy(r, x, sizeof(double) * static_cast<std::size_t>(len));
+    std::fill(r + len, r + m, 0.0);
+    fftw_execute(forward.get());
+    for (int k = 0; k <= m / 2; ++k) X[k] = {spec.get()[k][0], spec.get()[k][1]};
+  }
+  void bwd(const std::complex<double>* X, double* x, int n) {
+    for (int k = 0; k <= m / 2; ++k) {
+      spec.get()[k][0] = X[k].real();
+      spec.get()[k][1] = X[k].imag();
+    }
+    fftw_execute(backward.get());
+    const double s = 1.0 / m;
+    for (int i = 0; i < n; ++i) x[i] = real.get()[i] * s;
+  }
+  void forward2(const double* a, const double* b, int len, std::complex<double>* A, std::complex<double>* B) {
+    fwd(a, len, A);
+    fwd(b, len, B);
+  }
+  void backward2(const std::complex<double>* A, const std::complex<double>* B, double* a, double* b, int n) {
+    bwd(A, a, n);
+    bwd(B, b, n);
+  }
+};
+#else
+/// PocketFFT: the real plan of length m on the SIMD vector type, sequence a in lane 0 and b in
+/// lane 1 (one call each when there are no vectors): its scratch comes from ScratchStack.
+struct RowFft::Impl {
+  using Vd = mh_pocketfft::Vd;
+  static constexpr int L = mh_pocketfft::L;
+  int m;
+  pocketfft::detail::pocketfft_r<double> plan;
+  std::vector<Vd> rows;  ///< m values per lane
+  explicit Impl(int m_) : m(m_), plan(static_cast<std::size_t>(m_)), rows(static_cast<std::size_t>(m_), Vd{}) {}
+  double& at(int i, int lane) { return reinterpret_cast<double*>(rows.data())[i * L + lane]; }
+  /// FFTPACK half-complex order r0, r1, i1, r2, i2, …, r_{m/2} (m even) of one lane into X.
+  void unpack(int lane, std::complex<double>* X) {
+    X[0] = {at(0, lane), 0.0};
+    for (int k = 1; 2 * k < m; ++k) X[k] = {at(2 * k - 1, lane), at(2 * k, lane)};
+    if (m % 2 == 0 && m > 1) X[m / 2] = {at(m - 1, lane), 0.0};
+  }
+  void pack(int lane, const std::complex<double>* X) {
+    at(0, lane) = X[0].real();
+    for (int k = 1; 2 * k < m; ++k) {
+      at(2 * k - 1, lane) = X[k].real();
+      at(2 * k, lane) = X[k].imag();
+    }
+    if (m % 2 == 0 && m > 1) at(m - 1, lane) = X[m / 2].real();
+  }
+  void forward2(const double* a, const double* b, int len, std::complex<double>* A, std::complex<double>* B) {
+    const double* src[2] = {a, b};
+    std::complex<double>* dst[2] = {A, B};
+    for (int s0 = 0; s0 < 2; s0 += L) {
+      for (int l = 0; l < L; ++l) {
+        const double* x = s0 + l < 2 ? src[s0 + l] : nullptr;
+        for (int i = 0; i < m; ++i) at(i, l) = x && i < len ? x[i] : 0.0;
+      }
+      plan.exec(rows.data(), 1.0, true);
+      for (int l = 0; l < L && s0 + l < 2; ++l) unpack(l, dst[s0 + l]);
+    }
+  }
+  void backward2(const std::complex<double>* A, const std::complex<double>* B, double* a, double* b, int n) {
+    const std::complex<double>* src[2] = {A, B};
+    double* dst[2] = {a, b};
+    for (int s0 = 0; s0 < 2; s0 += L) {
+      for (int l = 0; l < L; ++l) {
+        if (s0 + l < 2)
+          pack(l, src[s0 + l]);
+        else
+          for (int i = 0; i < m; ++i) at(i, l) = 0.0;
+      }
+      plan.exec(rows.data(), 1.0 / m, false);
+      for (int l = 0; l < L && s0 + l < 2; ++l)
+        for (int i = 0; i < n; ++i) dst[s0 + l][i] = at(i, l);
+    }
+  }
+};
+#endif
+
+RowFft::RowFft(int n) : n_(n) {
+  if (n < 1) throw std::invalid_argument("RowFft: n = " + std::to_string(n) + ": needs ≥ 1 value per row");
+  m_ = smooth_size(2 * n - 1);
+  impl_ = std::make_unique<Impl>(m_);
+}
+RowFft::~RowFft() = default;
+RowFft::RowFft(RowFft&&) noexcept = default;
+RowFft& RowFft::operator=(RowFft&&) noexcept = default;
+
+void RowFft::forward(const double* a, const double* b, int len, std::complex<double>* A,
+                     std::complex<double>* B) const {
+  impl_->forward2(a, b, std::min(len, m_), A, B);
+}
+void RowFft::backward(const std::complex<double>* A, const std::complex<double>* B, double* a,
+                      double* b) const {
+  impl_->backward2(A, B, a, b, n_);
+}
+bool RowFft::offset(int i, int* di) const { return wrapped_offset(i, n_, m_, di); }
 
 }  // namespace mh

@@ -18,6 +18,8 @@
 //       able to transform several sequences at once in SIMD lanes. The default backend; FFTW 3
 //       (GPL-2+) replaces it when the build sets MHCONTACT_FFTW=ON (docs/embedding.md "FFT
 //       backends").
+#include <complex>
+#include <functional>
 #include <memory>
 
 namespace mh {
@@ -59,6 +61,11 @@ class InfluenceGrid {
   /// Throws std::invalid_argument unless nx, ny ≥ 1, dx, dy, compliance > 0 and finite, and
   /// std::bad_alloc / std::runtime_error if the FFT cannot allocate or plan.
   InfluenceGrid(int nx, int ny, double dx, double dy, double compliance);
+  /// The same convolution with another kernel: C_ij = kernel(ix_i − ix_j, iy_i − iy_j) for the
+  /// offsets in elements (any parity; e.g. the tangential coefficients of tangential_influence.hpp).
+  /// compliance() is then NaN. Throws as above, and std::invalid_argument for an empty kernel.
+  using Kernel = std::function<double(int dix, int diy)>;
+  InfluenceGrid(int nx, int ny, double dx, double dy, Kernel kernel);
   ~InfluenceGrid();
   InfluenceGrid(InfluenceGrid&&) noexcept;
   InfluenceGrid& operator=(InfluenceGrid&&) noexcept;
@@ -87,7 +94,43 @@ class InfluenceGrid {
   struct Fft;  ///< the backend's plans and work buffers (influence.cpp)
   int nx_ = 0, ny_ = 0, mx_ = 0, my_ = 0;
   double dx_ = 0, dy_ = 0, compliance_ = 0, c00_ = 0;
+  Kernel kernel_;  ///< set by the kernel-generic constructor; empty: Love's kernel times compliance_
   std::unique_ptr<Fft> fft_;
+  void init_fft();  ///< padded sizes, plans and the wrapped kernel's spectrum
+};
+
+/// One-dimensional real DC-FFT transforms for row-by-row convolutions along x (the steady-rolling
+/// tangential solver, tangential_rolling.hpp): rows of n values zero-padded to m points (the
+/// smallest smooth size ≥ 2n−1, as InfluenceGrid), half spectra of m/2 + 1 complex values. Two
+/// sequences per call (an x and a y component), transformed together in PocketFFT's SIMD lanes.
+/// After the first call no allocation (PocketFFT with SIMD vectors; FFTW). Not thread-safe per
+/// object. Movable, not copyable.
+class RowFft {
+ public:
+  explicit RowFft(int n);  ///< throws std::invalid_argument unless n ≥ 1
+  ~RowFft();
+  RowFft(RowFft&&) noexcept;
+  RowFft& operator=(RowFft&&) noexcept;
+  RowFft(const RowFft&) = delete;
+  RowFft& operator=(const RowFft&) = delete;
+
+  int n() const { return n_; }
+  int m() const { return m_; }          ///< padded length
+  int half() const { return m_ / 2 + 1; }  ///< spectrum length
+  /// Spectra A, B (half() values each) of a, b (len ≤ m values each, zero beyond): unscaled.
+  void forward(const double* a, const double* b, int len, std::complex<double>* A,
+               std::complex<double>* B) const;
+  /// The first n values of the inverse transforms of A, B, times 1/m (so that backward(forward(x))
+  /// = x). A and B are not modified.
+  void backward(const std::complex<double>* A, const std::complex<double>* B, double* a,
+                double* b) const;
+  /// The offset of index i of the wrapped (cyclic) row: true for the offsets −(n−1)…(n−1).
+  bool offset(int i, int* di) const;
+
+ private:
+  struct Impl;
+  int n_ = 0, m_ = 0;
+  std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace mh

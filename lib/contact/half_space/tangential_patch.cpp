@@ -1,0 +1,43 @@
+// Tangential solution of one half-space patch (tangential_patch.hpp).
+#include "contact/half_space/tangential_patch.hpp"
+
+#include <cmath>
+#include <exception>
+#include <string>
+
+namespace mh {
+
+HalfSpaceTangentialResult solve_tangential_patch(const PatchResult& patch, const Material& material,
+                                                 const Creepages& c, double mu,
+                                                 const HalfSpaceTangentialOptions& options) {
+  HalfSpaceTangentialResult res;
+  res.forces.c = c;
+  res.forces.mu = mu;
+  const bool same_E = std::isnan(material.E_rail) || material.E_rail == material.E;
+  const bool same_nu = std::isnan(material.nu_rail) || material.nu_rail == material.nu;
+  if (!same_E || !same_nu) {
+    res.message = "material: the exact tangential half-space solution needs wheel and rail of equal "
+                  "elastic constants (E_rail, nu_rail unset or equal to E, nu); got E = " +
+                  std::to_string(material.E) + " Pa, E_rail = " + std::to_string(material.E_rail) +
+                  " Pa, nu = " + std::to_string(material.nu) + ", nu_rail = " +
+                  std::to_string(material.nu_rail);
+    return res;
+  }
+  const std::size_t n = static_cast<std::size_t>(patch.nx) * static_cast<std::size_t>(patch.ns);
+  if (patch.nx < 1 || patch.ns < 1 || patch.p.size() != n) {
+    res.message = "patch " + std::to_string(patch.patch) + ": no pressure grid (nx = " +
+                  std::to_string(patch.nx) + ", ns = " + std::to_string(patch.ns) + ", " +
+                  std::to_string(patch.p.size()) + " pressures)";
+    return res;
+  }
+  const double G = material.E / (2 * (1 + material.nu));
+  try {
+    HalfSpaceTangentialSolver solver(patch.nx, patch.ns, patch.dx, patch.ds, G, material.nu);
+    return solver.solve(patch.p.data(), patch.x0, patch.s0, c, mu, options);
+  } catch (const std::exception& e) {  // invalid grid or material, or no memory
+    res.message = std::string("patch ") + std::to_string(patch.patch) + ": " + e.what();
+    return res;
+  }
+}
+
+}  // namespace mh

@@ -1,0 +1,24 @@
+#pragma once
+// The exact steady-rolling tangential solution of one solved half-space patch (docs/half_space.md,
+// "Tangential steady rolling"): the patch's own grid and pressure (PatchResult of the normal
+// solve), the creepages of that contact and μ, solved by HalfSpaceTangentialSolver. The
+// creepages per contact come from the kinematics (lib/contact/tangential); this entry takes them
+// as given, so that the caller decides where they come from.
+#include "contact/case_result.hpp"
+#include "contact/half_space/tangential_rolling.hpp"
+#include "contact/options.hpp"
+
+namespace mh {
+
+/// Solve the tangential problem on `patch` (its nx × ns grid of dx × ds elements, element centres
+/// at x0 + i dx, s0 + j ds relative to the reference point, pressure p) with the creepages `c`
+/// (x rolling direction, y = the plane's s axis) and Coulomb's `mu`. Requires bodies of equal
+/// elastic constants (Material without E_rail, nu_rail, or with the same values): the
+/// decoupling of the normal and tangential problems holds only then; otherwise the result is
+/// NotConverged with a message naming the rule. G = E / (2 (1 + ν)). Never throws for numerical
+/// reasons; builds one solver (allocates) per call.
+HalfSpaceTangentialResult solve_tangential_patch(const PatchResult& patch, const Material& material,
+                                                 const Creepages& c, double mu,
+                                                 const HalfSpaceTangentialOptions& options = {});
+
+}  // namespace mh
