@@ -1,7 +1,9 @@
 // mhcontact_bench: figures, not assertions (the machines are shared and noisy). Prints medians
-// over repeated runs. Usage: mhcontact_bench [SOURCE_DIR] [REPEATS] [MODEL]
+// over repeated runs. Usage: mhcontact_bench [SOURCE_DIR] [REPEATS] [MODEL [judge]]
 // MODEL (elastic, capped or yield) solves only that model's cases, once, for an instruction count:
 //   valgrind --tool=callgrind --toggle-collect='mh::solve_multi_hertz(*' build/mhcontact_bench . 1 yield
+// with `judge`, through solve_contact (the solve and the judge, docs/status.md), as the command:
+//   valgrind --tool=callgrind --toggle-collect='mh::solve_contact(*' build/mhcontact_bench . 1 elastic judge
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -15,6 +17,7 @@
 #include "geometry/contact_geometry.hpp"
 #include "jobs/run.hpp"
 #include "contact/multi_hertz/multi_hertz.hpp"
+#include "contact/solve.hpp"
 
 using namespace mh;
 using clk = std::chrono::steady_clock;
@@ -31,6 +34,7 @@ int main(int argc, char** argv) {
   const std::string src = argc > 1 ? argv[1] : ".";
   const int reps = argc > 2 ? std::atoi(argv[2]) : 7;
   const std::string only = argc > 3 ? argv[3] : "";
+  const bool judge_only = argc > 4 && std::string(argv[4]) == "judge";
   const char* names[3] = {"elastic", "capped", "yield"};
   int only_model = -1;
   for (int k = 0; k < 3; ++k)
@@ -70,9 +74,13 @@ int main(int argc, char** argv) {
   auto tY_of = [](int i) { return (-6.0 + 16.0 * (i % 1000) / 999.0) * 1e-3; };
   auto Q_of = [](int i) { return (10.0 + 140.0 * (i / 1000) / 199.0) * 1e3; };
   double sink = 0;
+  const MethodOptions mo;  // the multi-Hertzian method, default options
   if (only_model >= 0) {
-    for (int i = 0; i < n; ++i) sink += solve_multi_hertz(G, *mats[only_model], tY_of(i), Q_of(i)).dz;
-    std::printf("%d cases, %s%s\n", n, names[only_model], sink == 42 ? " " : "");
+    if (judge_only)
+      for (int i = 0; i < n; ++i) sink += solve_contact(G, *mats[only_model], tY_of(i), Q_of(i), mo).dz;
+    else
+      for (int i = 0; i < n; ++i) sink += solve_multi_hertz(G, *mats[only_model], tY_of(i), Q_of(i)).dz;
+    std::printf("%d cases, %s%s%s\n", n, names[only_model], judge_only ? ", judged" : "", sink == 42 ? " " : "");
     return 0;
   }
   // Alternated models in each repeat, so that a slow spell of the shared machine falls on all three.
@@ -90,6 +98,20 @@ int main(int argc, char** argv) {
   std::printf("one case from the table (%d cases per run, CPU time): elastic median %.0f ns, plastic median %.0f ns, "
               "plastic/elastic %.2f; yield law median %.0f ns, yield/elastic %.2f\n", n, median(t[0]), median(t[1]),
               median(t[1]) / median(t[0]), median(t[2]), median(t[2]) / median(t[0]));
+  // 3. The same cases through solve_contact: the solve and the judge (the gap-corner test on every
+  //    row that passes the other Hertz tests, docs/status.md), what the command, the C interface
+  //    and Python run per case.
+  std::vector<double> tj[3];
+  for (int r = 0; r < reps; ++r) {
+    for (int model = 0; model < 3; ++model) {
+      const auto t0 = cpu_seconds();
+      for (int i = 0; i < n; ++i) sink += solve_contact(G, *mats[model], tY_of(i), Q_of(i), mo).dz;
+      tj[model].push_back((cpu_seconds() - t0) * 1e9 / n);
+    }
+  }
+  std::printf("one case judged (solve_contact, CPU time): elastic median %.0f ns, plastic median %.0f ns, "
+              "plastic/elastic %.2f; yield law median %.0f ns, yield/elastic %.2f\n", median(tj[0]), median(tj[1]),
+              median(tj[1]) / median(tj[0]), median(tj[2]), median(tj[2]) / median(tj[0]));
   // The case mix (not timed): a plastic law costs more per plastic contact, so the share of
   // plastic contacts explains part of a ratio.
   for (int model = 0; model < 3; ++model) {

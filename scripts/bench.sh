@@ -6,6 +6,9 @@ cd "$(dirname "$0")/.."
 bash scripts/build.sh >/dev/null
 ny=${1:-2000}; nq=${2:-500}
 ./build/mhcontact_bench . 7
+# The multi-Hertzian sweep with the judge against the build before the gap-corner bound (CPU time,
+# the same bytes checked; docs/performance.md).
+bash scripts/bench_judge.sh 3
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 step=$(awk -v n="$ny" 'BEGIN{printf "%.10g", 16/(n-1)}')
 qstep=$(awk -v n="$nq" 'BEGIN{printf "%.10g", 140/(n-1)}')

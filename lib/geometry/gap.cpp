@@ -1,6 +1,7 @@
 #include "geometry/gap.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 
@@ -17,7 +18,7 @@ WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY) : WheelRailGap(G
 WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY, double y_near)
     : W_(G.wheel_gap_curve ? G.wheel_gap_curve.get() : G.wheel_curve.get()),
       R_(G.rail_gap_curve ? G.rail_gap_curve.get() : G.rail_curve.get()), shift_(G.y_offset + tY),
-      R0_(G.nominal_radius), z0_(G.wheel_z0), face_foot_(G.rail_face_foot) {
+      build_id_(G.build_id), R0_(G.nominal_radius), z0_(G.wheel_z0), face_foot_(G.rail_face_foot) {
   y0_ = std::max(R_->y_min(), W_->y_min() + shift_);
   y1_ = std::min(R_->y_max(), W_->y_max() + shift_);
   const int n = std::max(3, static_cast<int>((y1_ - y0_) / kSampleStep));
@@ -134,8 +135,20 @@ PatchPlane plane_at(const WheelRailGap& gap, double y_ref) {
   return P;
 }
 
-double normal_gap(const WheelRailGap& gap, const PatchPlane& P, double x, double s, double dz, double* y_rail) {
-  const double c = std::cos(P.gamma), sn = std::sin(P.gamma);
+namespace {
+
+// The plane point at s and where its normal meets the rail (h_r) and the wheel (h_w) [m] (normal_gap).
+struct NormalHits {
+  double qy = 0, h_r = 0, h_w = 0;
+  bool on_face = false;
+};
+
+bool on_rail_face(const WheelRailGap& gap, double qy, double qz, double c, double sn) {
+  return gap.has_rail_face() && sn > 0 && qz + (qy - gap.rail_face_y()) / sn * c < gap.z_rail(gap.rail_face_y());
+}
+
+// c, sn: cos γ and sin γ of the plane.
+NormalHits normal_hits(const WheelRailGap& gap, const PatchPlane& P, double c, double sn, double x, double s, double dz) {
   const double qy = P.y_ref + s * c, qz = P.z_ref + s * sn;
   // Distance h along n = (−sin γ, cos γ) from the plane point to a surface z = f(y):
   // F(h) = qz + h cos γ − f(qy − h sin γ) = 0, Newton (F' = cos γ + f' sin γ > 0 near contact).
@@ -152,17 +165,226 @@ double normal_gap(const WheelRailGap& gap, const PatchPlane& P, double x, double
     }
     return h;
   };
-  double h_r = 0;
+  NormalHits n;
+  n.qy = qy;
   // The rail's vertical gauge face at y_f: a normal line (towards −y as it rises, sin γ > 0) that
   // crosses y = y_f below the top of the face runs under z(y) on its rail side, so the face is
   // where it meets the rail: h = (qy − y_f)/sin γ, exactly.
-  const bool on_face = gap.has_rail_face() && sn > 0 &&
-                       qz + (qy - gap.rail_face_y()) / sn * c < gap.z_rail(gap.rail_face_y());
-  if (on_face) h_r = (qy - gap.rail_face_y()) / sn;
-  else h_r = intersect([&](double y, double* d) { return gap.z_rail(y, d); });
-  const double h_w = intersect([&](double y, double* d) { return gap.z_wheel(y, x, d) - dz; });
-  if (y_rail) *y_rail = qy - h_r * sn;
-  return h_w - h_r;
+  n.on_face = on_rail_face(gap, qy, qz, c, sn);
+  if (n.on_face) n.h_r = (qy - gap.rail_face_y()) / sn;
+  else n.h_r = intersect([&](double y, double* d) { return gap.z_rail(y, d); });
+  n.h_w = intersect([&](double y, double* d) { return gap.z_wheel(y, x, d) - dz; });
+  return n;
+}
+
+}  // namespace
+
+double normal_gap(const WheelRailGap& gap, const PatchPlane& P, double x, double s, double dz, double* y_rail) {
+  const double c = std::cos(P.gamma), sn = std::sin(P.gamma);
+  const NormalHits n = normal_hits(gap, P, c, sn, x, s, dz);
+  if (y_rail) *y_rail = n.qy - n.h_r * sn;
+  return n.h_w - n.h_r;
+}
+
+void normal_gaps(const WheelRailGap& gap, const PatchPlane& P, double x, double s0, double ds, int n, double dz,
+                 double* out) {
+  const double c = std::cos(P.gamma), sn = std::sin(P.gamma);
+  for (int i = 0; i < n; ++i) {
+    const NormalHits h = normal_hits(gap, P, c, sn, x, s0 + ds * i, dz);
+    out[i] = h.h_w - h.h_r;
+  }
+}
+
+namespace {
+
+// One curve's polyline seen from the plane (gap_kink_bound): the kinks J_k at plane coordinates
+// s_k (increasing), the largest Hermite deviation from the polyline E and the least D.
+// P0, P1: the prefix sums Σ_{j<k} J_j and Σ_{j<k} J_j s_j; A: Σ |J| + Σ |J s| / h for their
+// rounding.
+struct PlanePolyline {
+  std::vector<double> s, P0, P1;
+  double E = 0, D_min = INFINITY, A0 = 0, A1 = 0;
+  void clear() {
+    s.clear(); P0.assign(1, 0.0); P1.assign(1, 0.0);
+    E = 0; D_min = INFINITY; A0 = A1 = 0;
+  }
+};
+
+// A curve's nodes as z(y) gives them (z(node_y(k)), within ~1e-19 m of the node's z: node_y
+// rounds by an ulp of y, covered by the 1e-15 m added to e), seen as polylines through every
+// 2^l-th node (level l): the chord slope m_k of coarse interval k, the bound dev_k of |z' − m_k| on
+// it and e_k of |z − chord| on it. On a fine interval the Hermite's slope basis is within ±1 on
+// [0, 1], so |z' − m| ≤ |z'_k − m| + |z'_k+1 − m|, and |z − chord| ≤ (4/27) Δy that (|h10|, |h11|
+// ≤ 4/27); a coarse interval adds the largest distance of its fine nodes from its chord (both
+// polylines are linear between fine nodes). Made once per geometry (ContactGeometry::build_id),
+// curve and thread.
+struct NodeLevel {
+  std::vector<double> y, z, m, dev, e;
+};
+struct NodeTable {
+  static constexpr int kLevels = 8;  // coarse spacing up to 128 nodes (1.28 mm at 0.01 mm)
+  std::uint64_t id = 0;
+  const ProfileCurve* curve = nullptr;
+  NodeLevel level[kLevels];
+  void make(const ProfileCurve& C, std::uint64_t build_id) {
+    id = build_id;
+    curve = &C;
+    const std::size_t n = C.nodes();
+    NodeLevel& f = level[0];
+    f.y.resize(n); f.z.resize(n);
+    std::vector<double> dz(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      f.y[k] = C.node_y(k);
+      f.z[k] = C.z(f.y[k], &dz[k]);
+    }
+    f.m.assign(n ? n - 1 : 0, 0); f.dev.assign(f.m.size(), 0); f.e.assign(f.m.size(), 0);
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+      const double dy = f.y[k + 1] - f.y[k];
+      f.m[k] = (f.z[k + 1] - f.z[k]) / dy;
+      f.dev[k] = std::fabs(dz[k] - f.m[k]) + std::fabs(dz[k + 1] - f.m[k]);
+      f.e[k] = 4.0 / 27.0 * dy * f.dev[k] + 1e-15;
+    }
+    for (int l = 1; l < kLevels; ++l) {
+      const std::size_t step = std::size_t{1} << l;
+      NodeLevel& L = level[l];
+      const std::size_t nc = n ? (n - 1) / step + 1 : 0;
+      L.y.resize(nc); L.z.resize(nc);
+      for (std::size_t k = 0; k < nc; ++k) { L.y[k] = f.y[k * step]; L.z[k] = f.z[k * step]; }
+      L.m.assign(nc ? nc - 1 : 0, 0); L.dev.assign(L.m.size(), 0); L.e.assign(L.m.size(), 0);
+      for (std::size_t k = 0; k + 1 < nc; ++k) {
+        const std::size_t j0 = k * step, j1 = j0 + step;
+        const double m = (f.z[j1] - f.z[j0]) / (f.y[j1] - f.y[j0]);
+        double dev = 0, e = 0, off = 0;
+        for (std::size_t i = j0; i < j1; ++i) {
+          dev = std::max(dev, std::fabs(f.m[i] - m) + f.dev[i]);
+          e = std::max(e, f.e[i]);
+          off = std::max(off, std::fabs(f.z[i] - (f.z[j0] + m * (f.y[i] - f.y[j0]))));
+        }
+        L.m[k] = m;
+        L.dev[k] = dev;
+        L.e[k] = e + off + 1e-15;
+      }
+    }
+  }
+};
+
+const NodeTable& node_table(const ProfileCurve& C, std::uint64_t build_id, int which) {
+  thread_local NodeTable t[2];
+  NodeTable& T = t[which];
+  if (T.id != build_id || T.curve != &C) T.make(C, build_id);
+  return T;
+}
+
+// The nodes whose intervals cover [ya, yb] (the curve's own y) with one more on each side,
+// placed in the rail frame at y + dy, z + dzv, seen from plane P (c, sn); `sign` +1 the wheel,
+// −1 the rail (G = h_w − h_r). False when the range reaches beyond the nodes or D < kMinSlopeFactor.
+bool plane_polyline(const NodeLevel& T, double ya, double yb, double dy, double dzv, const PatchPlane& P, double c,
+                    double sn, double sign, PlanePolyline& out) {
+  const std::size_t n = T.y.size();
+  if (n < 3) return false;
+  const double hg = T.y[1] - T.y[0];
+  const double ka = std::floor((std::min(ya, yb) - T.y[0]) / hg) - 1, kb = std::ceil((std::max(ya, yb) - T.y[0]) / hg) + 1;
+  if (!(ka >= 0) || !(kb <= static_cast<double>(n - 1))) return false;
+  const std::size_t k0 = static_cast<std::size_t>(ka), k1 = static_cast<std::size_t>(kb);
+  const double asn = std::fabs(sn);
+  const std::size_t nk = k1 - k0 - 1;  // kinks at the nodes k0 + 1 … k1 − 1
+  out.s.resize(nk);
+  out.P0.resize(nk + 1);
+  out.P1.resize(nk + 1);
+  double prev_D = 0, D_min = INFINITY, E = 0, A0 = 0, A1 = 0, p0 = 0, p1 = 0;
+  const double ys = dy - P.y_ref, zs = dzv - P.z_ref;
+  for (std::size_t k = k0; k < k1; ++k) {  // interval k: nodes k, k + 1
+    const double D = c + T.m[k] * sn;
+    if (!(D - asn * T.dev[k] >= KinkBound::kMinSlopeFactor)) return false;
+    D_min = std::min(D_min, D);
+    E = std::max(E, T.e[k]);
+    if (k > k0) {  // the kink at node k
+      const double sk = (T.y[k] + ys) * c + (T.z[k] + zs) * sn;
+      const double J = sign * (T.m[k] - T.m[k - 1]) / (D * prev_D);
+      const std::size_t i = k - k0 - 1;
+      out.s[i] = sk;
+      p0 += J;
+      p1 += J * sk;
+      out.P0[i + 1] = p0;
+      out.P1[i + 1] = p1;
+      A0 += std::fabs(J);
+      A1 += std::fabs(J * sk);
+    }
+    prev_D = D;
+  }
+  out.D_min = D_min;
+  out.E = E;
+  out.A0 = A0;
+  out.A1 = A1;
+  return true;
+}
+
+}  // namespace
+
+KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, double s_first, double h, int n, double B,
+                         double dz) {
+  KinkBound out;
+  const double c = std::cos(P.gamma), sn = std::sin(P.gamma);
+  // The span of the samples, [s_first − h, s_last + h]. The face is met by the normals below some
+  // s (qz + (qy − y_f) cos γ / sin γ grows with s at rate 1/sin γ): none on the span if none at
+  // its start.
+  const double sa = s_first - h, sb = s_first + 0.5 * h * (n - 1) + h;
+  if (gap.build_id() == 0) return out;
+  const NormalHits a = normal_hits(gap, P, c, sn, 0, sa, dz), b = normal_hits(gap, P, c, sn, 0, sb, dz);
+  if (a.on_face || b.on_face) return out;
+  thread_local PlanePolyline rail, wheel;
+  rail.clear();
+  wheel.clear();
+  const NodeTable& Tr0 = node_table(gap.rail_curve(), gap.build_id(), 0);
+  const NodeTable& Tw0 = node_table(gap.wheel_curve(), gap.build_id(), 1);
+  // The polylines through every 2^l-th node, spaced at most h/2: their kinks' second differences
+  // stay those of the curve at the samples' scale, their distance from it at most about κ h²/32.
+  auto level = [&](const NodeTable& T) -> const NodeLevel& {
+    const NodeLevel& f = T.level[0];
+    if (f.y.size() < 2) return f;
+    int l = 0;
+    while (l + 1 < NodeTable::kLevels && (f.y[1] - f.y[0]) * static_cast<double>(std::size_t{1} << (l + 1)) <= 0.5 * h) ++l;
+    return T.level[l];
+  };
+  const NodeLevel& Tr = level(Tr0);
+  const NodeLevel& Tw = level(Tw0);
+  if (!plane_polyline(Tr, a.qy - a.h_r * sn, b.qy - b.h_r * sn, 0, 0, P, c, sn, -1, rail)) return out;
+  if (!plane_polyline(Tw, gap.y_wheel(a.qy - a.h_w * sn), gap.y_wheel(b.qy - b.h_w * sn), a.qy - gap.y_wheel(a.qy),
+                      -gap.wheel_lift() - dz, P, c, sn, 1, wheel))
+    return out;
+  const double eta = wheel.E / wheel.D_min + rail.E / rail.D_min;
+  // Σ_k J_k (1 − |s_k − s_i|/h)₊ for each centre from the prefix sums: over the kinks in
+  // (s_i − h, s_i] it is ΣJ − (s_i ΣJ − ΣJs)/h, over those in (s_i, s_i + h) ΣJ − (ΣJs − s_i ΣJ)/h;
+  // the three ends move forward with s_i (each curve's s_k increase).
+  struct Cursor {
+    const PlanePolyline* L;
+    std::size_t a = 0, m = 0, e = 0;
+    double sum(double si, double h) {
+      const std::vector<double>& s = L->s;
+      while (a < s.size() && s[a] <= si - h) ++a;
+      while (m < s.size() && s[m] <= si) ++m;
+      while (e < s.size() && s[e] < si + h) ++e;
+      m = std::max(m, a);
+      e = std::max(e, m);
+      const double l0 = L->P0[m] - L->P0[a], l1 = L->P1[m] - L->P1[a];
+      const double r0 = L->P0[e] - L->P0[m], r1 = L->P1[e] - L->P1[m];
+      return l0 - (si * l0 - l1) / h + r0 - (r1 - si * r0) / h;
+    }
+  };
+  Cursor cr{&rail}, cw{&wheel};
+  double worst = 0;
+  for (int i = 0; i < n; ++i) {
+    const double si = s_first + 0.5 * h * i;
+    worst = std::max(worst, std::fabs(cr.sum(si, h) + cw.sum(si, h) - 2 * B * h));
+  }
+  // The rounding of the prefix sums and their differences (a sum of k terms is within
+  // k ε_mach Σ|terms|; the factor 8 covers the differences and products).
+  const double kinks = static_cast<double>(rail.s.size() + wheel.s.size());
+  const double s_max = std::max(std::fabs(sa), std::fabs(sb));
+  worst += 8 * DBL_EPSILON * kinks * (rail.A0 + wheel.A0 + (rail.A1 + wheel.A1 + s_max * (rail.A0 + wheel.A0)) / h);
+  out.dtheta = worst * (1 + 1e-9) + 4 * (eta + kGapError) / h;
+  out.found = std::isfinite(out.dtheta);
+  return out;
 }
 
 }  // namespace mh

@@ -4,6 +4,7 @@
 // ContactGeometry. Rail frame: y lateral towards the field side, z up, x the rolling direction.
 // The wheel is a body of revolution about the axle (radius r(y) from the nominal radius and the
 // profile), placed at its first-contact height, with no roll and no yaw; the rail is straight in x.
+#include <cstdint>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -51,6 +52,13 @@ class WheelRailGap {
   std::vector<std::pair<double, double>> interpenetration(double dz, double step) const;
   /// The same into `out` (cleared first; its capacity kept: no allocation once it has grown).
   void interpenetration(double dz, double step, std::vector<std::pair<double, double>>& out) const;
+  /// The curves g(y) is made of (ContactGeometry's gap curves): the wheel's in its own y, and
+  /// the wheel's lift [m], the raw minimum its heights are lowered by (z_wheel = W(y_wheel) − lift).
+  const ProfileCurve& wheel_curve() const { return *W_; }
+  const ProfileCurve& rail_curve() const { return *R_; }
+  double wheel_lift() const { return gmin_; }
+  /// ContactGeometry::build_id of the geometry it was made from (0: not from build_geometry).
+  std::uint64_t build_id() const { return build_id_; }
 
  private:
   /// Samples each side of y_near in the second constructor: ±0.2 mm at kSampleStep.
@@ -59,6 +67,7 @@ class WheelRailGap {
   const ProfileCurve* W_;
   const ProfileCurve* R_;
   double shift_ = 0;   // rail y − wheel y
+  std::uint64_t build_id_ = 0;
   double gmin_ = 0;    // minimum of z_w − z_r before normalisation
   double R0_ = 0, z0_ = 0;
   double y0_ = 0, y1_ = 0, y_contact_ = 0;
@@ -104,5 +113,35 @@ PatchPlane plane_at(const WheelRailGap& gap, double y_ref);
 /// plane (dz sin γ) changes the shape of the interpenetration, not only its depth.
 double normal_gap(const WheelRailGap& gap, const PatchPlane& P, double x, double s, double dz = 0,
                   double* y_rail = nullptr);
+/// normal_gap(gap, P, x, s0 + ds i, dz) for i = 0 … n − 1 into out[i], the same numbers, with
+/// the plane's cos γ and sin γ taken once (the gap-corner test's samples).
+void normal_gaps(const WheelRailGap& gap, const PatchPlane& P, double x, double s0, double ds, int n, double dz,
+                 double* out);
+
+/// A bound of the gap-corner test's slope jump without its samples (contact/ellipse/
+/// hertz_validity.hpp, gap_kink): Δθ_i = |G(s_i + h) − 2 G(s_i) + G(s_i − h) − 2 B h²| / h at the
+/// centres s_i = s_first + (h/2) i, i = 0 … n − 1, G(s) = normal_gap(gap, P, 0, s, dz). Between
+/// its nodes each curve is a cubic Hermite z(y) = L(y) + e(y), L the polyline through the nodes
+/// and |e| ≤ (4/27) Δy (|z'_k − m| + |z'_k+1 − m|) on an interval of width Δy and chord slope m
+/// (|h10|, |h11| ≤ 4/27). Seen from the plane (rotated by −γ) each polyline is a polyline again,
+/// whose slope jumps at a node from chord slope m0 to m1 by (m1 − m0) / (D0 D1), D = cos γ + m sin γ,
+/// so the gap of the polylines G_L is piecewise linear with kinks J_k at the nodes' plane
+/// coordinates s_k, and exactly
+///   G_L(s + h) − 2 G_L(s) + G_L(s − h) = Σ_k J_k (h − |s_k − s|)₊.
+/// Each e moves a normal's hit by at most |e| / D_min, and a sampled G is within kGapError of the
+/// exact one, so Δθ_i ≤ |Σ_k J_k (1 − |s_k − s_i|/h)₊ − 2 B h| + 4 (η + ε) / h with
+/// η = E_w / D_min,w + E_r / D_min,r. `found` false (the samples must decide) when a normal of
+/// the span meets the rail's gauge face, when the span reaches beyond a curve's nodes, or when
+/// D < kMinSlopeFactor on it (the plane turned too far from a curve for it to be a graph).
+struct KinkBound {
+  bool found = false;
+  double dtheta = 0;  ///< [rad] the bound of max_i Δθ_i
+  static constexpr double kMinSlopeFactor = 0.5;
+};
+/// ε: the error of a sampled normal gap allowed for by the bound [m] (normal_gap's Newton solves
+/// stop at steps below 1e-13 m, converging quadratically; coordinates below 1 m round at 1e-16 m).
+constexpr double kGapError = 1e-12;
+KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, double s_first, double h, int n, double B,
+                         double dz);
 
 }  // namespace mh

@@ -1,6 +1,7 @@
 #include "contact/ellipse/hertz_validity.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -80,14 +81,25 @@ void GapKink::add_to(Warning& w, const HertzValidityOptions& opt) const {
 }
 
 GapKink gap_kink(const WheelRailGap& gap, const CandidateGeom& g, double B, double b, double p0, double E_pair,
-                 double dz, const HertzValidityOptions& opt) {
+                 double dz, const HertzValidityOptions& opt, bool use_bound) {
   GapKink k;
   if (!(b > 0) || !(p0 > 0)) return k;
   const PatchPlane P = plane_at(gap, g.y_r);
   const double h = b / 40;
-  const int n = 160;  // s = −b … b in steps of h/2
-  std::vector<double> G(static_cast<std::size_t>(n + 5));
-  for (int i = 0; i < n + 5; ++i) G[static_cast<std::size_t>(i)] = normal_gap(gap, P, 0, -b - h + 0.5 * h * i, dz);
+  constexpr int n = 160;  // s = −b … b in steps of h/2
+  // First the bound (geometry/gap.hpp, gap_kink_bound): the centres s = −b … b.
+  if (use_bound) {
+    const KinkBound kb = gap_kink_bound(gap, P, -b, h, n + 1, B, dz);
+    const double ratio = E_pair * kb.dtheta / (2 * M_PI * p0);
+    if (kb.found && ratio <= opt.max_gap_mean_error * (1 - 1e-9)) {
+      k.dtheta = kb.dtheta;
+      k.kink_ratio = ratio;
+      k.bounded = true;
+      return k;
+    }
+  }
+  std::array<double, n + 5> G;
+  normal_gaps(gap, P, 0, -b - h, 0.5 * h, n + 5, dz, G.data());  // s = −b − h + (h/2) i
   for (int i = 2; i <= n + 2; ++i) {  // s_i = −b + (i − 2) h/2, neighbours two samples away
     const double D = G[static_cast<std::size_t>(i + 2)] - 2 * G[static_cast<std::size_t>(i)] + G[static_cast<std::size_t>(i - 2)];
     k.dtheta = std::max(k.dtheta, std::fabs(D - 2 * B * h * h) / h);

@@ -1,0 +1,97 @@
+// The bound that lets the gap-corner test (hertz_validity.hpp, gap_kink) pass a patch without
+// sampling its gap (geometry/gap.hpp, gap_kink_bound), and the verdicts and figures of gap_kink
+// with the bound against the samples alone, on the Manchester pair (smooth) and on the
+// unsmoothed worn measured flange (a corner of the gap).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "contact/ellipse/hertz_validity.hpp"
+#include "contact/multi_hertz/multi_hertz.hpp"
+#include "geometry/gap.hpp"
+#include "jobs/run.hpp"
+#include "manchester_fixture.hpp"
+#include "support/measured_pair.hpp"
+
+TEST_CASE("gap_kink_bound: never below the samples' slope jump, on every Manchester patch", "[gap_kink]") {
+  // The bound against the samples themselves (gap_kink without the bound), whether or not it is
+  // small enough to pass the test. Break guarded (seen failing): without the deviation term
+  // 4 (η + ε)/h the bound falls below the samples at 180 patches (the nodes' slopes differ from
+  // their chords by ~1e-3, a sub-grid wiggle the samples see); the bound halved, at 119.
+  const mh::ContactGeometry& G = mh::testing::manchester_geometry();
+  const mh::Material mat = mh::testing::steel();
+  int found = 0, total = 0;
+  for (double tY = -6e-3; tY <= 10e-3 + 1e-9; tY += 0.25e-3)
+    for (double Q : {10e3, 50e3, 100e3, 150e3}) {
+      const mh::CaseResult r = mh::solve_multi_hertz(G, mat, tY, Q);
+      const mh::WheelRailGap gap(G, tY);
+      for (const mh::LoadedEllipse& L : r.loaded) {
+        const double b = L.s.b, h = b / 40;
+        const mh::KinkBound kb = mh::gap_kink_bound(gap, mh::plane_at(gap, L.g.y_r), -b, h, 161, L.B, r.approach);
+        const mh::GapKink full = mh::gap_kink(gap, L.g, L.B, b, L.s.p0, 0.5 * mat.E_star(), r.approach, {}, false);
+        ++total;
+        if (!kb.found) continue;
+        ++found;
+        CAPTURE(tY, Q, L.ellipse, b, kb.dtheta, full.dtheta);
+        CHECK(kb.dtheta >= full.dtheta);
+      }
+    }
+  CHECK(found == total);  // no gauge face, no steep turn of the normals on this pair
+}
+
+namespace {
+struct Tally {
+  int ellipses = 0, bounded = 0, failed = 0;
+  double worst_excess = 0;  // largest sampled − bounded kink ratio where bounded (must be ≤ 0)
+};
+void compare(const mh::ContactGeometry& G, const mh::Material& mat, double tY, double Q, Tally& t) {
+  const mh::CaseResult r = mh::solve_multi_hertz(G, mat, tY, Q);
+  const mh::WheelRailGap gap(G, tY);
+  for (const mh::LoadedEllipse& L : r.loaded) {
+    const mh::GapKink fast = mh::gap_kink(gap, L.g, L.B, L.s.b, L.s.p0, 0.5 * mat.E_star(), r.approach);
+    const mh::GapKink full = mh::gap_kink(gap, L.g, L.B, L.s.b, L.s.p0, 0.5 * mat.E_star(), r.approach, {}, false);
+    CAPTURE(tY, Q, L.ellipse, fast.kink_ratio, full.kink_ratio, fast.bounded);
+    ++t.ellipses;
+    CHECK(fast.valid == full.valid);
+    CHECK_FALSE(full.bounded);
+    if (fast.bounded) {
+      ++t.bounded;
+      CHECK(fast.kink_ratio >= full.kink_ratio);
+      t.worst_excess = std::max(t.worst_excess, full.kink_ratio - fast.kink_ratio);
+    } else {
+      CHECK(fast.kink_ratio == full.kink_ratio);  // the samples decide, with their figure
+    }
+    if (!full.valid) ++t.failed;
+  }
+}
+}  // namespace
+
+TEST_CASE("gap_kink: the bound passes most Manchester patches, never one the samples fail, and never understates", "[gap_kink]") {
+  const mh::ContactGeometry& G = mh::testing::manchester_geometry();
+  Tally t;
+  for (double tY = -6e-3; tY <= 10e-3 + 1e-9; tY += 0.25e-3)
+    for (double Q : {10e3, 50e3, 100e3, 150e3}) compare(G, mh::testing::steel(), tY, Q, t);
+  INFO(t.ellipses << " ellipses, " << t.bounded << " passed by the bound, " << t.failed << " failed");
+  // The rows the samples fail (t_Y 5–5.5 mm at 10 kN, docs/methods.md) fail with the bound too.
+  CHECK(t.failed >= 1);
+  CHECK(t.worst_excess <= 0);
+  // Measured 28 Nov 2026: 271 of 297 (91 %); the rest are the flange-root patches at t_Y
+  // 4.75–7.25 mm (sampled ratios 0.04–0.33, the bound 2–4 times the samples there), two tread
+  // patches at 150 kN, and the 6 the samples fail. The figure the speed of the judge rests on
+  // (with the kinks' 1/(D0 D1) taken as 1 it passes 245: this check fails).
+  // Break guarded (seen failing): the bound's Δθ halved passes patches the samples put above it
+  // (the bounded ratio below the sampled one, and a verdict changed).
+  CHECK(t.bounded >= 0.9 * t.ellipses);
+}
+
+TEST_CASE("gap_kink: a corner of the gap is never passed by the bound", "[gap_kink]") {
+  // The unsmoothed worn measured flange at t_Y = 13.5 mm (test_auto_rule.cpp: kink ratio 5.4).
+  const mh::CaseFile cf = mh::testing::measured_pair_case("avg_wheel.whl", "avg_HR.BAN", 13.5, 50, {{"smoothing_mm", 0}});
+  const mh::PairGeometry pg = mh::build_pair_geometry(cf);
+  Tally t;
+  compare(pg.geo, cf.material, 13.5e-3, 50e3, t);
+  CHECK(t.failed >= 1);
+  CHECK(t.bounded < t.ellipses);
+}
