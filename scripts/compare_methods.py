@@ -11,6 +11,9 @@ the sweep): the peak pressure, the total contact area, and the share of Q carrie
 contact (the load split), one curve per method. --reference adds CONTACT's results (a table like
 tests/data/contact/*.csv: y_ws_mm, pmax_MPa, area_mm2). --table writes the numbers plotted.
 This is the picture that shows where the fast method can be trusted for your own profiles.
+On measured profiles smoothed for contact, a shaded range around each grid method's peak pressure
+and area is its smoothing uncertainty band: the same cases with every smoothing length halved
+and doubled (cases.csv pmax_half_L_MPa ...; docs/profiles.md §7).
 
 A plastic case ("model": "plastic") is also run elastic (the same case without p_lim) with every
 method, and a fourth panel shows the area ratio plastic/elastic at the same load; the table gains
@@ -95,6 +98,19 @@ def method_rows(run_dir, Q):
     return sorted(out)
 
 
+def band_rows(run_dir, Q):
+    """The smoothing's uncertainty band of each row with one (docs/profiles.md §7): (t_Y, pmax low,
+    pmax high, area low, area high), each range the row's own value and its values at L/2 and 2L."""
+    out = []
+    for r in read_csv(os.path.join(run_dir, "cases.csv")):
+        if abs(fnum(r["Q_kN"]) - Q) > 1e-9 or r["status"] not in ANSWERS or not r.get("pmax_half_L_MPa"):
+            continue
+        p = [fnum(r[k]) for k in ("pmax_MPa", "pmax_half_L_MPa", "pmax_double_L_MPa") if r.get(k)]
+        ar = [fnum(r[k]) for k in ("area_mm2", "area_half_L_mm2", "area_double_L_mm2") if r.get(k)]
+        out.append((fnum(r["tY_mm"]), min(p), max(p), min(ar), max(ar)))
+    return sorted(out)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("case", help="case file (JSON)")
@@ -122,13 +138,14 @@ def main(argv=None):
     model = case.get("model", "elastic")
     plim = case.get("material", {}).get("p_lim_MPa")
     plastic = model == "plastic"
-    data, elastic = {}, {}
+    data, elastic, bands = {}, {}, {}
     with tempfile.TemporaryDirectory() as tmp:
         for m in methods:
             d = run_method(a.mhcontact, a.case, m, tmp)
             if a.Q is None:
                 a.Q = fnum(read_csv(os.path.join(d, "cases.csv"))[0]["Q_kN"])
             data[m] = method_rows(d, a.Q)
+            bands[m] = band_rows(d, a.Q)
             if plastic:
                 elastic[m] = {r[0]: r for r in method_rows(run_method(a.mhcontact, a.case, m, tmp, elastic=True), a.Q)}
     if a.reference:
@@ -149,6 +166,13 @@ def main(argv=None):
             if all(math.isnan(x) for x in v):
                 continue
             ax.plot(t, v, marker=marker, color=color, label=name, linewidth=1.2, markersize=4)
+        # The smoothing's uncertainty band (measured profiles: the same cases at L/2 and 2L).
+        b = bands.get(name, [])
+        if b:
+            tb = [r[0] for r in b]
+            axes[0].fill_between(tb, [r[1] for r in b], [r[2] for r in b], color=color, alpha=0.18, linewidth=0,
+                                 label=f"{name}: smoothing L/2 … 2L")
+            axes[1].fill_between(tb, [r[3] for r in b], [r[4] for r in b], color=color, alpha=0.18, linewidth=0)
         if plastic and name in elastic:
             ratio = [r[2] / elastic_of(name, r)[0] for r in rows if r[4] in ANSWERS]
             axes[3].plot(t, ratio, marker=marker, color=color, label=name, linewidth=1.2, markersize=4)

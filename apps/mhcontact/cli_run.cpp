@@ -60,7 +60,7 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
                 "as when a case fails: for CI");
   CLI::Option* fail_on = cmd->add_option("--fail-on", o->fail_on,
                   "Exit 1 when any case has a warning of these classes, e.g. off_profile,pressure_spike "
-                  "(non_hertzian, non_hertzian_excluded, interacting, off_profile, flange_climb, nadal_limit, derailed, pressure_spike, "
+                  "(non_hertzian, non_hertzian_excluded, interacting, off_profile, flange_climb, nadal_limit, derailed, smoothing_sensitive, pressure_spike, "
                   "strip_outlier, auto, cant): for CI")
       ->type_name("CLASSES");
   cmd->add_flag("--force", o->force, "Write pressure.csv even when it would be larger than the limit of 10 GB");

@@ -103,6 +103,12 @@ struct CaseResult {
   int n_contacts = 0;     ///< loaded ellipses or patches
   std::vector<LoadedEllipse> loaded;  ///< multi-Hertzian: in increasing ellipse index
   std::vector<PatchResult> patches;   ///< grid methods: in increasing rail y
+  /// The smoothing's uncertainty band (docs/profiles.md §7 "Uncertainty band"): the same case's
+  /// peak pressure [Pa] and total area [m²] solved again with every contact smoothing length
+  /// halved and doubled, both profiles together (judge.hpp, judge_smoothing_band). NaN where
+  /// not computed: nothing smoothed for contact, the band turned off, a multi-Hertzian run, or
+  /// that solve without an answer.
+  double pmax_half_L = NAN, pmax_double_L = NAN, area_half_L = NAN, area_double_L = NAN;
 };
 
 /// Reset r to a fresh CaseResult's values, its message and vectors keeping their capacity (the

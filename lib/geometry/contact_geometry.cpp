@@ -186,6 +186,17 @@ void ContactGeometry::candidates_at(double t, CandidateGeom* out, int* main) con
   if (main) *main = static_cast<int>(m);
 }
 
+bool smoothed_for_contact(const ContactGeometry& G) {
+  return (G.wheel_gap_curve && G.wheel_gap_curve != G.wheel_curve) || (G.rail_gap_curve && G.rail_gap_curve != G.rail_curve);
+}
+
+ContactGeometry build_band_geometry(const Profile& wheel, const Profile& rail, const TrackSetup& track,
+                                    const GeometryOptions& opt, double scale) {
+  GeometryOptions o = opt;
+  o.auto_smoothing.length_scale = opt.auto_smoothing.length_scale * scale;
+  return build_geometry(wheel, rail, track, o);
+}
+
 ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const TrackSetup& track,
                                const GeometryOptions& opt) {
   std::string why;

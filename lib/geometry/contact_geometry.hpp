@@ -78,6 +78,14 @@ struct GeometryOptions {
   /// measured profile; 0 turns the smoothing off.
   std::optional<double> contact_smoothing;  ///< [m]
   NoiseSmoothingOptions auto_smoothing;    ///< bounds of the automatic L (profile/smoothing_spline.hpp)
+  /// The smoothing's uncertainty band (profiles.md §7 "Uncertainty band"): when a profile of the
+  /// pair is smoothed for contact and the case's method is a grid method or auto, the pair's
+  /// geometry is also built with every smoothing length halved and doubled (both profiles
+  /// together; build_band_geometry) and every case is solved on them too, reporting how its
+  /// peak pressure and area move. Case file geometry.smoothing_band. Default true: it costs
+  /// nothing where nothing is smoothed (exact profiles) and is not computed for the
+  /// multi-Hertzian method (whose tables are on the window fit, not on the smoothed surface).
+  bool smoothing_band = true;
   bool valid(std::string* why) const;
 };
 
@@ -231,6 +239,18 @@ struct PairGeometry {
   /// The rail's cant as estimated from its head, against the case's inclination (its warnings
   /// are also in rail.warnings).
   RailCantCheck cant;
+  /// The pair's geometry with every contact smoothing length × 0.5 and × 2 (the uncertainty
+  /// band, GeometryOptions::smoothing_band); both null when not computed.
+  std::shared_ptr<const ContactGeometry> band_half, band_double;
 };
+
+/// Whether G's contact gap is made on a smoothed profile (wheel or rail; profiles.md §7).
+bool smoothed_for_contact(const ContactGeometry& G);
+
+/// The geometry of the pair with every contact smoothing length multiplied by `scale`
+/// (NoiseSmoothingOptions::length_scale; a length given is scaled too): the uncertainty band's
+/// geometry at L/2 (0.5) and 2L (2).
+ContactGeometry build_band_geometry(const Profile& wheel, const Profile& rail, const TrackSetup& track,
+                                    const GeometryOptions& opt, double scale);
 
 }  // namespace mh

@@ -127,7 +127,7 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     const json& g = j.at("geometry");
     c.only_keys(g, "/geometry", {"tY_min_mm", "tY_max_mm", "tY_step_mm", "strip_width_mm", "jump_threshold_deg",
                                  "jump_distance_mm", "min_ellipse_width_mm", "fit_window_mm", "measured_fit_window_mm", "noise",
-                                 "smoothing_mm"});
+                                 "smoothing_mm", "smoothing_band"});
     if (g.contains("tY_min_mm") != g.contains("tY_max_mm"))
       c.fail("/geometry", &g, "give both tY_min_mm and tY_max_mm, or neither (then the range covers the sweep)");
     if (g.contains("tY_min_mm")) {
@@ -167,6 +167,8 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
         cf.geometry.contact_smoothing = L * units::mm;
       }
     }
+    // The smoothing's uncertainty band (profiles.md §7 "Uncertainty band"): default true.
+    if (g.contains("smoothing_band")) cf.geometry.smoothing_band = c.boolean(g, "/geometry", "smoothing_band");
     // Measured or exact (profiles.md "Measured or exact"): one value for both profiles or
     // {"wheel": ..., "rail": ...} (a missing one stays "auto").
     if (g.contains("noise")) {
@@ -401,7 +403,8 @@ nlohmann::json CaseFile::resolved_json() const {
                    {"fit_window_mm", geometry.curve.window_half_width * units::per_mm},
                    {"measured_fit_window_mm", geometry.curve.measured_window_half_width * units::per_mm},
                    {"noise", {{"wheel", to_string(geometry.wheel_noise)}, {"rail", to_string(geometry.rail_noise)}}},
-                   {"smoothing_mm", geometry.contact_smoothing ? json(*geometry.contact_smoothing * units::per_mm) : json("auto")}};
+                   {"smoothing_mm", geometry.contact_smoothing ? json(*geometry.contact_smoothing * units::per_mm) : json("auto")},
+                   {"smoothing_band", geometry.smoothing_band}};
   json mat = {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}};
   if (!std::isnan(material.E_rail))
     mat = {{"wheel", {{"E_GPa", material.E / units::GPa}, {"nu", material.nu}}},

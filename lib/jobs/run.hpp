@@ -41,9 +41,9 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
 int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::ostream& err);
 
 /// The schema names written into results.json and geometry.json.
-constexpr const char* kResultsSchema = "mhcontact.results/9";
+constexpr const char* kResultsSchema = "mhcontact.results/10";
 constexpr const char* kGeometrySchema = "mhcontact.geometry/2";
-constexpr const char* kBatchSchema = "mhcontact.batch/9";
+constexpr const char* kBatchSchema = "mhcontact.batch/10";
 /// {"name": "mhcontact", "version": ..., "commit": ...}
 nlohmann::json program_json();
 

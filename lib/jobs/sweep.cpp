@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "contact/judge/judge.hpp"
 #include "contact/solve.hpp"
 #include "core/errors.hpp"
 #include "output/case_tables.hpp"
@@ -380,7 +381,8 @@ void write_geometry(const CaseFile& cf, const ContactGeometry& G, std::uint64_t 
 // fills one chunk (each worker a contiguous slice, formatted into its own block) while a writer
 // thread writes the previous chunk (double buffers); the bytes are the same for any thread count.
 void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t first, std::uint64_t end,
-                 const RunOptions& opt, const Sinks& out, SweepCounts* counts, std::ostream& err) {
+                 const RunOptions& opt, const Sinks& out, SweepCounts* counts, std::ostream& err,
+                 const BandGeometry& band) {
   const bool plastic = cf.model == Model::Plastic;
   const bool want_csv = out.cases != nullptr, want_json = out.json != nullptr;
   const int np = out.pressure ? opt.pressure_grid : 0;
@@ -388,6 +390,9 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   mo.half_space.keep_pressure = np > 0;
   mo.strips.keep_strips = out.strips != nullptr;
   const bool grid_method = mo.method != Method::MultiHertzian;
+  // The band's solves keep nothing but the case summary (pmax, area).
+  MethodOptions mo_band = cf.method_options();
+  const bool with_band = band.half && band.twice;
   RcfOptions rcf = cf.rcf;  // the RCF columns, k resolved (contact/ellipse/rcf.hpp)
   if (rcf.enabled()) rcf.k = rcf_shear_yield(cf.material, cf.rcf);
   const std::uint64_t n = end - first;
@@ -438,7 +443,10 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
         const CasePoint cp = cf.case_at(c0 + i);
         try {
           if (g_case_hook) g_case_hook(c0 + i);
-          const CaseResult r = solve_contact(G, cf.material, cp.tY, cp.Q, mo);
+          CaseResult r = solve_contact(G, cf.material, cp.tY, cp.Q, mo);
+          if (with_band && !is_failure(r.status))
+            judge_smoothing_band(r, solve_contact(*band.half, cf.material, cp.tY, cp.Q, mo_band),
+                                 solve_contact(*band.twice, cf.material, cp.tY, cp.Q, mo_band));
           S.status[i] = r.status;
           auto& kinds = S.warning_kinds[i];
           kinds.clear();

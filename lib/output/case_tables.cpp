@@ -258,6 +258,11 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; append_number(s, static_cast<long long>(r.warnings.size()));
     s += ','; csv_text(s, warn);
     s += ','; csv_text(s, r.message);
+    // The smoothing's uncertainty band (profiles.md §7): empty where not computed.
+    for (double v : {r.pmax_half_L / units::MPa, r.pmax_double_L / units::MPa, r.area_half_L * units::per_mm2,
+                     r.area_double_L * units::per_mm2}) {
+      s += ','; pnum(s, v);
+    }
     s += '\n';
     std::string& e = f.ellipses;
     e.clear();
@@ -310,6 +315,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     j["n_warnings"] = r.warnings.size();
     j["warnings"] = warn_text;
     j["message"] = r.message;
+    j["pmax_half_L_MPa"] = rv(r.pmax_half_L / units::MPa);
+    j["pmax_double_L_MPa"] = rv(r.pmax_double_L / units::MPa);
+    j["area_half_L_mm2"] = rv(r.area_half_L * units::per_mm2);
+    j["area_double_L_mm2"] = rv(r.area_double_L * units::per_mm2);
     nlohmann::ordered_json el = nlohmann::ordered_json::array();
     for (const LoadedEllipse& L : r.loaded) {
       nlohmann::ordered_json e;
@@ -417,7 +426,8 @@ std::string patch_pressure_csv_header() { return "case,patch,x_mm,s_mm,y_rail_mm
 
 std::string cases_csv_header() {
   return "case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,Y_over_Q,"
-         "pmax_MPa,area_mm2,gamma_main_deg,r_roll_main_mm,plastic,n_warnings,warnings,message\n";
+         "pmax_MPa,area_mm2,gamma_main_deg,r_roll_main_mm,plastic,n_warnings,warnings,message,"
+         "pmax_half_L_MPa,pmax_double_L_MPa,area_half_L_mm2,area_double_L_mm2\n";
 }
 
 std::string pressure_csv_header(bool plastic) {

@@ -171,7 +171,7 @@ std::optional<SmoothedProfile> smooth_for_contact(const Profile& p, const NoiseD
   if (!noise.measured) return std::nullopt;
   if (L) {
     if (!(*L > 0)) return std::nullopt;
-    return smooth_profile(p, *L);
+    return smooth_profile(p, *L * opt.length_scale);
   }
   if (!(noise.sigma > 0)) return std::nullopt;
   return smooth_profile_to_noise(p, noise.sigma, opt);

@@ -103,7 +103,7 @@ struct LocalFit {
 
 /// The smoothing for contact of one profile (profiles.md §7 "Smoothing for contact"; the one
 /// rule, used by the contact geometry and by `profile info`): none for an exact profile; L given
-/// (> 0): that length; L given as 0: none; L not given ("auto"): the length that removes the
+/// (> 0): that length (× opt.length_scale, the uncertainty band's factor); L given as 0: none; L not given ("auto"): the length that removes the
 /// profile's own noise, smooth_profile_to_noise(p, noise.sigma, opt).
 std::optional<SmoothedProfile> smooth_for_contact(const Profile& p, const NoiseDecision& noise,
                                                   const std::optional<double>& L, const NoiseSmoothingOptions& opt = {});

@@ -184,7 +184,7 @@ SmoothedProfile smooth_profile(const Profile& p, double L) {
 
 SmoothedProfile smooth_profile_to_noise(const Profile& p, double sigma, const NoiseSmoothingOptions& opt) {
   const std::size_t n = p.size();
-  if (!(sigma > 0) || !(opt.L_min > 0) || !(opt.L_max >= opt.L_min) || !(opt.sigma_ref > 0) || !(opt.spacing_ref > 0) || n < 3)
+  if (!(sigma > 0) || !(opt.length_scale > 0) || !(opt.L_min > 0) || !(opt.L_max >= opt.L_min) || !(opt.sigma_ref > 0) || !(opt.spacing_ref > 0) || n < 3)
     throw std::invalid_argument("smooth_profile_to_noise: needs sigma > 0, 0 < L_min <= L_max, positive references, 3 points");
   // 1. The length from the noise and the point spacing (header).
   std::vector<double> d;
@@ -221,9 +221,12 @@ SmoothedProfile smooth_profile_to_noise(const Profile& p, double sigma, const No
     c = std::move(c_new);
     sp = smooth_weighted(p, L, c, &e, &s);
   }
+  // 3. The uncertainty band's lengths: every length scaled, the same regions shortened.
+  const double Ls = L * opt.length_scale;
+  if (opt.length_scale != 1.0) sp = smooth_weighted(p, Ls, c);
   sp.sigma = sigma;
   sp.at_bound = L != L0;
-  sp.L_local_min = L * std::pow(*std::max_element(c.begin(), c.end()), -0.25);
+  sp.L_local_min = Ls * std::pow(*std::max_element(c.begin(), c.end()), -0.25);
   sp.local_from = shortened ? from : 0;
   sp.local_to = shortened ? to : 0;
   return sp;

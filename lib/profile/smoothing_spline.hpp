@@ -81,6 +81,11 @@ struct NoiseSmoothingOptions {
   /// length is halved there, up to `local_steps` times (defaults 2 and 5).
   double local_factor = 2.0;
   int local_steps = 5;
+  /// Every length of the result multiplied by this once chosen: the global L and, with the same
+  /// local weights, the shortened regions' lengths (default 1). The uncertainty band of a case
+  /// (profiles.md §7 "Uncertainty band") solves again at 0.5 and 2. smooth_for_contact applies
+  /// it to a length given too.
+  double length_scale = 1.0;
 };
 
 /// A profile smoothed by as much as its noise needs (profiles.md §7 "Smoothing for contact"):
@@ -91,7 +96,9 @@ struct NoiseSmoothingOptions {
 ///  2. and no more: the discrepancy principle applied locally (Reinsch 1967): where the normal
 ///     residual's RMS over ±L/2 exceeds local_factor × sigma, geometry above the noise is being
 ///     removed and the length is halved there (the weights w_i multiplied by 16: the penalty's
-///     lambda / w_i sets the local length), up to local_steps times, not below L_min.
+///     lambda / w_i sets the local length), up to local_steps times, not below L_min;
+///  3. with opt.length_scale != 1, the spline of steps 1–2 is made again with L × length_scale
+///     and the same local weights (every length scaled, the shortened regions kept).
 SmoothedProfile smooth_profile_to_noise(const Profile& p, double sigma, const NoiseSmoothingOptions& opt = {});
 
 }  // namespace mh

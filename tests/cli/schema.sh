@@ -15,7 +15,7 @@ extract() {  # results.json -> its inputs as a case file beside it
 }
 for c in manchester manchester-plastic s1002-60e1; do
   "$bin" run "$src/cases/$c.json" -o "$tmp/$c" -q || fail "$c"
-  grep -q '"schema": "mhcontact.results/9"' "$tmp/$c/results.json" || fail "$c: schema version"
+  grep -q '"schema": "mhcontact.results/10"' "$tmp/$c/results.json" || fail "$c: schema version"
   extract "$tmp/$c/results.json" "$tmp/$c/inputs.json"
   (cd "$tmp" && "$bin" run "$c/inputs.json" -o "re_$c" -q) || fail "$c: the inputs of results.json do not run"
   for t in cases.csv ellipses.csv geometry.csv; do cmp -s "$tmp/$c/$t" "$tmp/re_$c/$t" || fail "$c: rerunning the inputs gives another $t"; done

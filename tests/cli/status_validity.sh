@@ -32,7 +32,7 @@ for r in rows:
     if want == "outside_validity":
         assert all(c in r["message"] for c in classes), r
 s = json.load(open(sys.argv[2]))
-assert s["schema"] == "mhcontact.results/9", s["schema"]
+assert s["schema"] == "mhcontact.results/10", s["schema"]
 assert s["summary"]["by_status"] == {"ok": 72, "outside_validity": 27}, s["summary"]
 assert s["summary"]["failed"] == 0, s["summary"]
 c = [c for c in s["cases"] if c["tY_mm"] == 1 and c["Q_kN"] == 50][0]

@@ -1,5 +1,6 @@
 #include "contact/judge/judge.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "contact/ellipse/hertz_validity.hpp"
@@ -98,6 +99,28 @@ void decide_status(CaseResult& r) {
     r.message = "the wheel rides on its flange tip, off the rail (see warnings)" +
                 (classes.empty() ? std::string() : "; " + r.message);
   }
+}
+
+void judge_smoothing_band(CaseResult& r, const CaseResult& half, const CaseResult& twice, const SmoothingBandLimits& lim) {
+  auto answer = [](const CaseResult& c, double v) { return is_failure(c.status) ? NAN : v; };
+  r.pmax_half_L = answer(half, half.pmax);
+  r.area_half_L = answer(half, half.area);
+  r.pmax_double_L = answer(twice, twice.pmax);
+  r.area_double_L = answer(twice, twice.area);
+  if (is_failure(r.status)) return;
+  // The largest relative move of x away from the row's own x0 (NaN values take no part).
+  auto band = [](double x0, double a, double b) {
+    double m = 0;
+    for (double x : {a, b})
+      if (std::isfinite(x) && x0 > 0) m = std::max(m, std::fabs(x - x0) / x0);
+    return m;
+  };
+  const double dp = band(r.pmax, r.pmax_half_L, r.pmax_double_L), da = band(r.area, r.area_half_L, r.area_double_L);
+  if (!(dp > lim.pmax) && !(da > lim.area)) return;
+  Warning w(WarningClass::SmoothingSensitive);
+  if (dp > lim.pmax) w.add(Quantity::PmaxBand, dp, '>', lim.pmax);
+  if (da > lim.area) w.add(Quantity::AreaBand, da, '>', lim.area);
+  r.warnings.push_back(w);
 }
 
 void judge_case(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY, const MethodOptions& opt) {

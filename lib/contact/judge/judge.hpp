@@ -44,6 +44,23 @@ struct VehicleStateLimits {
 /// multi-Hertzian rows it keeps.
 void add_vehicle_state_warnings(CaseResult& r, const ContactGeometry& G, const VehicleStateLimits& lim = {});
 
+/// The limits of the smoothing's uncertainty band (docs/status.md "smoothing_sensitive"): the
+/// trust table's tolerances (docs/trust.md: 10 % in peak pressure, 15 % in area).
+struct SmoothingBandLimits {
+  double pmax = 0.10;  ///< [1] relative change of the peak pressure (default 10 %)
+  double area = 0.15;  ///< [1] relative change of the total area (default 15 %)
+};
+
+/// The uncertainty band of a case solved on smoothed profiles (docs/profiles.md §7): r's
+/// pmax_half_L … area_double_L from the same case solved with every smoothing length halved
+/// (`half`) and doubled (`twice`); a solve without an answer (is_failure) leaves its two NaN.
+/// When r has an answer and the peak pressure or the area of either moves by more than
+/// `lim` relative to r's: the informational warning `smoothing_sensitive` with the largest
+/// relative change of each (pmax_band, area_band) that crossed its limit. The status is not
+/// touched (docs/status.md gives why the class is informational).
+void judge_smoothing_band(CaseResult& r, const CaseResult& half, const CaseResult& twice,
+                          const SmoothingBandLimits& lim = {});
+
 /// The judge (docs/status.md): decide the status of a solved case r of the geometry G at t_Y
 /// [m] with material mat and options opt, and add the warnings of its tests. Every method and
 /// entry point calls it once per case (solve_contact(), and the C interface's approach-given

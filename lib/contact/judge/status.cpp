@@ -48,6 +48,9 @@ const std::vector<WarningClassInfo>& warning_classes() {
       // States of the vehicle, not limits of the methods (judge.hpp, docs/status.md).
       {C::NadalLimit, "nadal_limit", false, "the ratio Y/Q of lateral to vertical wheel force exceeds EN 14363's flange-climbing limit 0.8 (informational)"},
       {C::Derailed, "derailed", false, "the wheel rides on its flange tip, off the rail: the row's status is derailed"},
+      // A sensitivity, not an error (docs/status.md "smoothing_sensitive" gives the reason it
+      // is informational): the row's own answer is at the length chosen from the noise.
+      {C::SmoothingSensitive, "smoothing_sensitive", false, "the peak pressure or the area moves by more than the trust table's tolerance when the contact smoothing length is halved or doubled (docs/profiles.md §7; informational)"},
   };
   return k;
 }
@@ -110,6 +113,8 @@ const QuantityInfo& info(Quantity q) {
       {"p0_el_over_p_lim", "1", 1, Fmt::Round3, Fmt::Raw},
       {"Y_over_Q", "1", 1, Fmt::Round3, Fmt::Raw},
       {"r_roll_mm", "m", 1e3, Fmt::Round3, Fmt::Round3},
+      {"pmax_band", "1", 1, Fmt::Round3, Fmt::Raw},
+      {"area_band", "1", 1, Fmt::Round3, Fmt::Raw},
   };
   return k[static_cast<std::size_t>(q)];
 }

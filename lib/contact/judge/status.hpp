@@ -43,13 +43,14 @@ enum class WarningClass : std::uint8_t {
   BeyondEvidence,
   NadalLimit,
   Derailed,
+  SmoothingSensitive,
 };
 /// The class's name as written ("non_hertzian").
 const char* to_string(WarningClass c);
 
 /// The warning classes a case can carry, each with whether it puts the row outside its method's
 /// validity (docs/status.md; a unit test checks every one is documented there). Every class but
-/// the informational `auto`, `flange_climb`, `nadal_limit` and `derailed` does
+/// the informational `auto`, `flange_climb`, `nadal_limit`, `derailed` and `smoothing_sensitive` does
 /// (`derailed` sets its own status, CaseStatus::Derailed). In the order of WarningClass.
 struct WarningClassInfo {
   WarningClass cls;
@@ -95,6 +96,8 @@ enum class Quantity : std::uint8_t {
   P0ElOverPLim,         ///< [1] elastic Hertz p0 of the load / p_lim (evidence.hpp) "p0_el_over_p_lim"
   YOverQ,               ///< [1] Fy / Fz, the Nadal ratio Y/Q          "Y_over_Q"
   RRoll,                ///< [m] rolling radius at the main contact    "r_roll_mm"
+  PmaxBand,             ///< [1] largest |pmax(L/2 or 2L) − pmax(L)| / pmax(L) "pmax_band"
+  AreaBand,             ///< [1] the same for the total area           "area_band"
 };
 /// The written name ("edge_gap_mm") and the SI unit of value and limit ("1", "m", "Pa", "count").
 const char* name(Quantity q);

@@ -75,7 +75,7 @@ TEST_CASE("run writes the three tables, byte-identical for 1, 2 and 4 threads", 
     REQUIRE(e.path().filename().string().find(".tmp.") == std::string::npos);
   // Headers as documented in the README.
   const std::string cases = slurp(d / "t1/cases.csv");
-  REQUIRE(cases.rfind("case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,Y_over_Q,pmax_MPa,area_mm2,gamma_main_deg,r_roll_main_mm,plastic,n_warnings,warnings,message\n", 0) == 0);
+  REQUIRE(cases.rfind("case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,Y_over_Q,pmax_MPa,area_mm2,gamma_main_deg,r_roll_main_mm,plastic,n_warnings,warnings,message,pmax_half_L_MPa,pmax_double_L_MPa,area_half_L_mm2,area_double_L_mm2\n", 0) == 0);
   REQUIRE(std::count(cases.begin(), cases.end(), '\n') == 100);
   const std::string ell = slurp(d / "t1/ellipses.csv");
   REQUIRE(ell.rfind("case,tY_mm,Q_kN,ellipse,h0_mm,N_kN,a_mm,b_mm,p0_MPa,pmean_MPa,approach_mm,"
@@ -88,7 +88,7 @@ TEST_CASE("run writes the three tables, byte-identical for 1, 2 and 4 threads", 
   REQUIRE(std::count(geo.begin(), geo.end(), '\n') == 1 + 33 * 4);
   // results.json: valid JSON, schema, inputs with checksums, the same cases.
   const auto j = nlohmann::json::parse(slurp(d / "t1/results.json"));
-  REQUIRE(j.at("schema") == "mhcontact.results/9");
+  REQUIRE(j.at("schema") == "mhcontact.results/10");
   REQUIRE(j.at("profiles").at("wheel").at("sha256").get<std::string>().size() == 64);
   REQUIRE(j.at("cases").size() == 99);
   REQUIRE(j.at("potential_ellipses").size() == 4);
