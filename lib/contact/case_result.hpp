@@ -122,6 +122,7 @@ inline void reset_case_result(CaseResult& r) {
   r.iterations = 0;
   r.Fz = r.Fy = r.pmax = r.area = 0;
   r.n_contacts = 0;
+  r.pmax_half_L = r.pmax_double_L = r.area_half_L = r.area_double_L = NAN;
   r.loaded.clear();
   r.patches.clear();
 }
