@@ -48,6 +48,9 @@ const std::vector<WarningClassInfo>& warning_classes() {
       // States of the vehicle, not limits of the methods (judge.hpp, docs/status.md).
       {C::NadalLimit, "nadal_limit", false, "the ratio Y/Q of lateral to vertical wheel force exceeds EN 14363's flange-climbing limit 0.8 (informational)"},
       {C::Derailed, "derailed", false, "the wheel rides on its flange tip, off the rail: the row's status is derailed"},
+      // Friction given, but the row's method does not solve the tangential problem yet
+      // (contact/tangential/tangential_solve.hpp): its creep forces are empty, not 0.
+      {C::TangentialUnsupported, "tangential_unsupported", true, "friction given, but the row's method (half-space, strips) does not solve the tangential problem yet: its creep-force columns are empty (docs/tangential.md)"},
   };
   return k;
 }

@@ -43,6 +43,7 @@ enum class WarningClass : std::uint8_t {
   BeyondEvidence,
   NadalLimit,
   Derailed,
+  TangentialUnsupported,
 };
 /// The class's name as written ("non_hertzian").
 const char* to_string(WarningClass c);

@@ -2,9 +2,10 @@
 // Tangential rolling contact: the creepages of one contact and the result every method fills
 // (multi-Hertzian per ellipse, strips and half-space per patch). SI throughout.
 //
-// Frame of one contact (docs/method.md, tangential section): x along the rolling direction, y
-// lateral in the contact plane (the patch plane's s axis, towards the field side), z the inward
-// normal of the rail. Sign convention (Kalker's, fixed against CONTACT by the tests): the
+// Frame of one contact (docs/method.md §10): x along the rolling direction, y lateral in the
+// contact plane (the patch plane's s axis, towards the field side), z = x × y the normal out of the
+// rail into the wheel (Kalker's, into body 1): right-handed for a left wheel, the mirror image for
+// a right wheel, as the pair's frame (docs/tangential.md, left and right wheel). Sign convention (Kalker's, fixed against CONTACT by the tests): the
 // creepages are the rigid slip velocity of the WHEEL relative to the rail divided by the rolling
 // speed V, and the forces and moment are those the RAIL exerts ON THE WHEEL, so that linear theory
 // reads Fx = −G c² C11 ξ, Fy = −G c² C22 η − G c³ C23 φ, Mz = G c³ C23 η − G c⁴ C33 φ (c = √(ab)).
