@@ -41,5 +41,7 @@ ls -la "$tmp/out" | awk 'NR>1{print "  " $5 " bytes  " $9}'
 bash scripts/bench_fft.sh 3
 # The wheelset: one pair, and a fleet of 1000 wheels with its CPU time per wheel by stage.
 ./build/mhcontact_bench_wheelset 1000
+# The tangential problem: FASTSIM per ellipse and a whole multi-Hertzian case with creep forces.
+./build/mhcontact_bench_tangential .
 # The wheelset fleet of measured files through the command (CPU per wheel, 10,000 on 2 cores).
 bash scripts/bench_fleet.sh 1000 5
