@@ -26,7 +26,7 @@ struct TangentialResult {
   double Fx = 0, Fy = 0;            ///< [N] tangential force on the wheel, contact frame
   double Mz = 0;                    ///< [N m] spin moment on the wheel about the contact's reference point
   double adhesion_fraction = NAN;   ///< [-] adhesion area / contact area (NaN: not solved)
-  /// [N] = [J/m] Tγ = Fx ξ + Fy η with the forces ON THE RAIL (so Tγ ≥ 0): the frictional work per
+  /// [N] = [J/m] Tγ = Fx ξ + Fy η, forces ON THE RAIL (≥ 0 without spin): the frictional work per
   /// unit rolled distance of the two force components (wear/RCF indices); the spin term is apart.
   double Tgamma = 0;
   double Tgamma_spin = 0;           ///< [N] the spin term Mz φ (forces on the rail), reported apart
