@@ -47,7 +47,7 @@ bash scripts/bench_fft.sh 3
 # The exact half-space tangential solve on CONTACT's Hertzian patch, and CONTACT's own time on the
 # same deck when a CONTACT binary is given (CONTACT_BIN=…/contact_linux64; its tangential solver's
 # CPU time from its performance timers, six cases).
-./build/mhcontact_bench_tangential . 5
+./build/mhcontact_bench_tangential_half_space . 5
 if [ -x "${CONTACT_BIN:-}" ]; then
   ctmp=$(mktemp -d); cp tests/data/contact_tangential/hstang/hertz44.inp "$ctmp/"
   (cd "$ctmp" && OMP_NUM_THREADS=1 "$CONTACT_BIN" 2 hertz44 > /dev/null 2>&1 || true)
@@ -56,5 +56,7 @@ if [ -x "${CONTACT_BIN:-}" ]; then
 fi
 # The wheelset: one pair, and a fleet of 1000 wheels with its CPU time per wheel by stage.
 ./build/mhcontact_bench_wheelset 1000
+# The tangential problem: FASTSIM per ellipse and a whole multi-Hertzian case with creep forces.
+./build/mhcontact_bench_tangential .
 # The wheelset fleet of measured files through the command (CPU per wheel, 10,000 on 2 cores).
 bash scripts/bench_fleet.sh 1000 5

@@ -2,7 +2,7 @@
 // on CONTACT's Hertzian patch and grid (a = 8, b = 4 mm, 44 × 44 elements, CONTACT's pressure;
 // tests/data/contact_tangential/hstang/README.md): time per case (best of R solves, one thread,
 // the solver object built once), sweeps, and the forces beside CONTACT's. Prints figures, never
-// asserts. Usage: mhcontact_bench_tangential SOURCE_DIR [R]
+// asserts. Usage: mhcontact_bench_tangential_half_space SOURCE_DIR [R]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

@@ -19,6 +19,7 @@
 #include "capi/checks.hpp"
 #include "contact/half_space/influence.hpp"
 #include "contact/solve.hpp"
+#include "contact/tangential/tangential_solve.hpp"
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
 #include "input/case_file.hpp"
@@ -226,7 +227,9 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
       return fail(MHC_ERR_UNSUPPORTED, std::string("the approach-prescribed solve needs the multi-hertzian method, "
                                                    "not ") + to_string(pair.options.method));
     solve_multi_hertz_approach(pair.pg.geo, pair.material, tY, value, pair.options.multi_hertzian, ws.approach, ws.r);
-    judge_case(ws.r, pair.pg.geo, pair.material, tY, pair.options);  // the one judge, as solve_contact
+    // As solve_contact: the tangential problem (a case file with friction), then the one judge.
+    solve_tangential(ws.r, pair.material, tY, pair.options.tangential);
+    judge_case(ws.r, pair.pg.geo, pair.material, tY, pair.options);
     fill_result(ws.r, tY, kNaN, pair.plastic, out);
   } else {
     if (const std::string bad = check_load(value); !bad.empty()) return fail(MHC_ERR_ARGUMENT, bad);

@@ -12,6 +12,7 @@
 #include "contact/options.hpp"
 #include "contact/ellipse/hertz_validity.hpp"
 #include "contact/judge/status.hpp"
+#include "contact/tangential/tangential_types.hpp"
 #include "geometry/contact_geometry.hpp"
 
 namespace mh {
@@ -28,6 +29,7 @@ struct LoadedEllipse {
   HertzValidity validity;   ///< Hertz assumptions checked on this patch (hertz_validity.hpp)
   double z_r = 0;           ///< [m] rail profile z at y_r (the rail's frame, as in profiles.csv)
   double z_w = 0;           ///< [m] wheel profile z at y_w (the wheel's frame, as in profiles.csv)
+  TangentialResult t;       ///< the tangential problem (FASTSIM on this ellipse; solved false: not asked)
 };
 
 /// One contact patch of a grid method (half-space, strips): its own tangent plane (docs/method.md §8).
@@ -82,6 +84,19 @@ struct PatchResult {
   double dx = 0, ds = 0, x0 = 0, s0 = 0;
   std::vector<double> p;    ///< [Pa]
   std::vector<StripOut> strips;  ///< strip method: the loaded strips (kept for --strips)
+  /// The tangential problem: the creepages only (the grid methods do not solve it yet: solved false).
+  TangentialResult t;
+};
+
+/// The tangential problem summed over a case's contacts (docs/tangential.md). Forces ON THE RAIL,
+/// as the case's normal forces (docs/outputs.md, Conventions).
+struct TangentialSums {
+  bool asked = false;      ///< friction given: the columns are written (empty where not solved)
+  bool solved = false;     ///< every contact's tangential problem solved
+  double Fx = NAN;         ///< [N] Σ Fx_i on the rail, along the rolling direction
+  double Fy_creep = NAN;   ///< [N] Σ Fy_i cos γ_i on the rail: the creep forces' lateral component, towards the field side
+  double Mz = NAN;         ///< [N m] Σ Mz_i on the rail, each about its own contact normal
+  double F_over_muN = NAN; ///< [-] Σ |F_i| / (μ Σ N_i): the friction used
 };
 
 struct CaseResult {
@@ -109,6 +124,7 @@ struct CaseResult {
   /// not computed: nothing smoothed for contact, the band turned off, a multi-Hertzian run, or
   /// that solve without an answer.
   double pmax_half_L = NAN, pmax_double_L = NAN, area_half_L = NAN, area_double_L = NAN;
+  TangentialSums tangential;          ///< friction given: the creep forces (docs/tangential.md)
 };
 
 /// Reset r to a fresh CaseResult's values, its message and vectors keeping their capacity (the
@@ -123,6 +139,7 @@ inline void reset_case_result(CaseResult& r) {
   r.Fz = r.Fy = r.pmax = r.area = 0;
   r.n_contacts = 0;
   r.pmax_half_L = r.pmax_double_L = r.area_half_L = r.area_double_L = NAN;
+  r.tangential = TangentialSums{};
   r.loaded.clear();
   r.patches.clear();
 }

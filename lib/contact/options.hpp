@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/units.hpp"
+#include "contact/tangential/tangential_options.hpp"
 
 namespace mh {
 
@@ -221,6 +222,7 @@ struct MethodOptions {
   MultiHertzOptions multi_hertzian;   ///< case file "solver"
   HalfSpaceOptions half_space;    ///< case file "half_space"
   StripMethodOptions strips;      ///< case file "strips"
+  TangentialOptions tangential;   ///< case file "friction", "kinematics" | "creepages" (docs/tangential.md)
 };
 
 }  // namespace mh

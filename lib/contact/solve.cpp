@@ -7,6 +7,7 @@
 
 #include "contact/ellipse/hertz_validity.hpp"
 #include "contact/judge/judge.hpp"
+#include "contact/tangential/tangential_solve.hpp"
 #include "geometry/gap.hpp"
 
 namespace mh {
@@ -54,6 +55,7 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
     hand_on = false;
   }
   if (!hand_on) {
+    solve_tangential(mhr, mat, tY, opt.tangential);  // before Y/Q: Y includes the creep forces
     add_vehicle_state_warnings(mhr, G);
     decide_status(mhr);
     return mhr;
@@ -113,7 +115,10 @@ CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double t
   // Whether the row can be trusted, by one judge for every method (judge.hpp, docs/status.md).
   // auto's multi-Hertzian rows were judged already (their tests decided whether to keep them);
   // the grid rows it hands back are judged here like any other.
-  if (opt.method != Method::Auto || r.method != Method::MultiHertzian) judge_case(r, G, mat, tY, opt);
+  if (opt.method != Method::Auto || r.method != Method::MultiHertzian) {
+    solve_tangential(r, mat, tY, opt.tangential);
+    judge_case(r, G, mat, tY, opt);
+  }
   return r;
 }
 
@@ -142,6 +147,7 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
       break;
     default: out = solve_contact(G, mat, tY, Q, opt); return;
   }
+  solve_tangential(out, mat, tY, opt.tangential);
   judge_case(out, G, mat, tY, opt);  // as above
 }
 

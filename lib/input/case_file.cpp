@@ -49,6 +49,91 @@ nlohmann::json read_json_file(const std::string& path) {
   }
 }
 
+namespace {
+
+// "friction", "kinematics" | "creepages", "fastsim" (docs/case-file.md, docs/tangential.md). One
+// rule per option, each error at its JSON path. Reads the track setup already parsed (l, r0).
+void parse_tangential(const Ctx& c, const json& j, CaseFile& cf) {
+  TangentialOptions& t = cf.tangential;
+  const bool fr = j.contains("friction"), ki = j.contains("kinematics"), cr = j.contains("creepages");
+  if (!fr) {
+    if (ki) c.fail("/kinematics", &j.at("kinematics"), "needs friction.coefficient", "add \"friction\": {\"coefficient\": 0.3}, or remove kinematics");
+    if (cr) c.fail("/creepages", &j.at("creepages"), "needs friction.coefficient", "add \"friction\": {\"coefficient\": 0.3}, or remove creepages");
+    if (j.contains("fastsim")) c.fail("/fastsim", &j.at("fastsim"), "needs friction.coefficient", "add \"friction\": {\"coefficient\": 0.3}, or remove fastsim");
+    return;
+  }
+  const json& f = j.at("friction");
+  c.only_keys(f, "/friction", {"coefficient"});
+  if (!f.contains("coefficient")) c.fail("/friction/coefficient", nullptr, "required: the Coulomb friction coefficient (e.g. 0.3)");
+  t.mu = c.number(f, "/friction", "coefficient");
+  if (!(t.mu > 0 && t.mu <= 1)) c.fail("/friction/coefficient", &f.at("coefficient"), "must be in (0, 1]", "wheel-rail friction is about 0.1 (wet) to 0.5 (dry)");
+  if (ki == cr)
+    c.fail(ki ? "/creepages" : "/friction", ki ? &j.at("creepages") : &f,
+           ki ? "kinematics and creepages exclude each other" : "needs kinematics or creepages",
+           ki ? "give the wheelset's motion or the creepages, not both"
+              : "add \"kinematics\": {\"speed_m_s\": 30} or \"creepages\": {\"xi\": 0, \"eta\": 0, \"phi_per_mm\": 0}");
+  if (cr) {
+    const json& k = j.at("creepages");
+    c.only_keys(k, "/creepages", {"xi", "eta", "phi_per_mm"});
+    t.source = TangentialOptions::Source::Creepages;
+    if (k.contains("xi")) t.creep.xi = c.number(k, "/creepages", "xi");
+    if (k.contains("eta")) t.creep.eta = c.number(k, "/creepages", "eta");
+    if (k.contains("phi_per_mm")) t.creep.phi = c.number(k, "/creepages", "phi_per_mm") / units::mm;
+    for (const char* key : {"xi", "eta"})
+      if (k.contains(key) && std::abs(c.number(k, "/creepages", key)) > 0.5)
+        c.fail(std::string("/creepages/") + key, &k.at(key), "must lie within -0.5 … 0.5 (a creepage, not per cent)");
+    if (std::abs(t.creep.phi) > 1000.0)
+      c.fail("/creepages/phi_per_mm", &k.at("phi_per_mm"), "must lie within -1 … 1 rad/mm", "is it in rad/m?");
+  } else {
+    const json& k = j.at("kinematics");
+    c.only_keys(k, "/kinematics", {"speed_m_s", "yaw_mrad", "yaw_mrad_per_mm", "lateral_velocity_m_s", "yaw_rate_rad_s", "pitch_rate_rad_s"});
+    t.source = TangentialOptions::Source::Kinematics;
+    if (!k.contains("speed_m_s")) c.fail("/kinematics/speed_m_s", nullptr, "required: the forward speed V [m/s] (> 0)");
+    t.kin.V = c.positive(k, "/kinematics", "speed_m_s");
+    if (t.kin.V > 200) c.fail("/kinematics/speed_m_s", &k.at("speed_m_s"), "must be at most 200 m/s", "is it in km/h?");
+    if (k.contains("yaw_mrad") && k.contains("yaw_mrad_per_mm"))
+      c.fail("/kinematics/yaw_mrad_per_mm", &k.at("yaw_mrad_per_mm"), "yaw_mrad and yaw_mrad_per_mm exclude each other",
+             "give the yaw angle, or the yaw per mm of t_Y");
+    if (k.contains("yaw_mrad")) t.kin.yaw = c.number(k, "/kinematics", "yaw_mrad") * 1e-3;
+    if (std::abs(t.kin.yaw) > 0.1) c.fail("/kinematics/yaw_mrad", &k.at("yaw_mrad"), "must lie within -100 … 100 mrad", "is it in µrad?");
+    if (k.contains("yaw_mrad_per_mm")) t.yaw_per_tY = c.number(k, "/kinematics", "yaw_mrad_per_mm");  // mrad/mm = rad/m
+    if (std::abs(t.yaw_per_tY) > 20) c.fail("/kinematics/yaw_mrad_per_mm", &k.at("yaw_mrad_per_mm"), "must lie within -20 … 20 mrad/mm");
+    if (k.contains("lateral_velocity_m_s")) t.kin.lateral_velocity = c.number(k, "/kinematics", "lateral_velocity_m_s");
+    if (std::abs(t.kin.lateral_velocity) > 0.1 * t.kin.V)
+      c.fail("/kinematics/lateral_velocity_m_s", &k.at("lateral_velocity_m_s"), "must be at most 0.1 x speed_m_s (a creepage of 0.1)");
+    if (k.contains("yaw_rate_rad_s")) t.kin.yaw_rate = c.number(k, "/kinematics", "yaw_rate_rad_s");
+    if (std::abs(t.kin.yaw_rate) > 10) c.fail("/kinematics/yaw_rate_rad_s", &k.at("yaw_rate_rad_s"), "must lie within -10 … 10 rad/s");
+    if (k.contains("pitch_rate_rad_s")) {
+      if (k.at("pitch_rate_rad_s").is_string() && k.at("pitch_rate_rad_s") == "nominal") {
+        t.kin.pitch_rate = NAN;
+      } else {
+        t.kin.pitch_rate = c.positive(k, "/kinematics", "pitch_rate_rad_s");
+        const double nominal = t.kin.V / cf.track.nominal_radius;
+        if (std::abs(t.kin.pitch_rate / nominal - 1) > 0.1)
+          c.fail("/kinematics/pitch_rate_rad_s", &k.at("pitch_rate_rad_s"),
+                 "must lie within 10 % of rolling at the nominal radius (" + format_number(nominal) + " rad/s)",
+                 "omit it (or give \"nominal\") for rolling at the nominal radius");
+      }
+    }
+  }
+  if (j.contains("fastsim")) {
+    const json& o = j.at("fastsim");
+    c.only_keys(o, "/fastsim", {"nx", "ny", "bound", "blend"});
+    if (o.contains("nx")) t.fastsim.nx = static_cast<int>(c.integer(o, "/fastsim", "nx", 2, kFastsimMaxN));
+    if (o.contains("ny")) t.fastsim.ny = static_cast<int>(c.integer(o, "/fastsim", "ny", 2, kFastsimMaxN));
+    if (o.contains("bound")) {
+      const std::string b = c.string(o, "/fastsim", "bound");
+      if (b == "parabolic") t.fastsim.bound = TractionBound::Parabolic;
+      else if (b != "elliptical") c.fail("/fastsim/bound", &o.at("bound"), "must be \"elliptical\" (default) or \"parabolic\"");
+    }
+    if (o.contains("blend")) t.fastsim.blend = c.boolean(o, "/fastsim", "blend");
+  }
+  t.r0 = cf.track.nominal_radius;
+  t.l_origin = 0.5 * cf.track.flange_back_distance - cf.track.flange_back_position;
+}
+
+}  // namespace
+
 CaseFile load_case_file(const std::string& path, bool need_cases) {
   return parse_case_json(read_json_file(path), path, need_cases);
 }
@@ -57,7 +142,8 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
   Ctx c{path};
   CaseFile cf;
   cf.path = path;
-  c.only_keys(j, "", {"wheel", "rail", "track", "geometry", "material", "model", "method", "half_space", "strips", "rcf", "sweep", "cases", "solver", "comment"});
+  c.only_keys(j, "", {"wheel", "rail", "track", "geometry", "material", "model", "method", "half_space", "strips", "rcf", "sweep", "cases", "solver", "comment",
+                      "friction", "kinematics", "creepages", "fastsim"});
 
   // wheel
   if (!j.contains("wheel")) c.fail("/wheel", nullptr, "required");
@@ -319,6 +405,8 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     if (!std::isfinite(rcf_shear_yield(cf.material, cf.rcf)))
       c.fail("/rcf", &h, "needs shear_yield_MPa (k = sigma_y/sqrt(3)): the material gives no yield stress");
   }
+  // Tangential problem (docs/tangential.md): friction and the wheelset's motion or the creepages.
+  parse_tangential(c, j, cf);
   // strip method options (docs/method.md §9)
   if (j.contains("strips")) {
     const json& h = j.at("strips");
@@ -420,6 +508,24 @@ nlohmann::json CaseFile::resolved_json() const {
   j["material"] = mat;
   j["model"] = to_string(model);
   j["method"] = to_string(method);
+  if (tangential.enabled()) {
+    const TangentialOptions& t = tangential;
+    j["friction"] = {{"coefficient", t.mu}};
+    if (t.source == TangentialOptions::Source::Creepages) {
+      j["creepages"] = {{"xi", t.creep.xi}, {"eta", t.creep.eta}, {"phi_per_mm", t.creep.phi * units::mm}};
+    } else {
+      j["kinematics"] = {{"speed_m_s", t.kin.V}};
+      // One of the two yaw keys (they exclude each other): the one that is not zero.
+      if (t.yaw_per_tY != 0) j["kinematics"]["yaw_mrad_per_mm"] = t.yaw_per_tY;
+      else j["kinematics"]["yaw_mrad"] = t.kin.yaw * 1e3;
+      j["kinematics"]["lateral_velocity_m_s"] = t.kin.lateral_velocity;
+      j["kinematics"]["yaw_rate_rad_s"] = t.kin.yaw_rate;
+      j["kinematics"]["pitch_rate_rad_s"] = std::isnan(t.kin.pitch_rate) ? json("nominal") : json(t.kin.pitch_rate);
+    }
+    j["fastsim"] = {{"nx", t.fastsim.nx}, {"ny", t.fastsim.ny},
+                    {"bound", t.fastsim.bound == TractionBound::Elliptical ? "elliptical" : "parabolic"},
+                    {"blend", t.fastsim.blend}};
+  }
   if (rcf.enabled()) {
     j["rcf"] = {{"traction_coefficient", rcf.f}};
     if (std::isfinite(rcf.k)) j["rcf"]["shear_yield_MPa"] = rcf.k / units::MPa;

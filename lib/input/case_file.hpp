@@ -80,7 +80,10 @@ struct CaseFile {
   StripMethodOptions strips;              ///< "strips": strip width and tolerances of the strip method
   RcfOptions rcf;                         ///< "rcf": traction coefficient and shear yield of the RCF columns (docs/outputs.md)
   /// The options of the case's method, for solve_contact().
-  MethodOptions method_options() const { return {method, solver, half_space, strips}; }
+  /// "friction", "kinematics" | "creepages": the tangential problem (docs/tangential.md); off
+  /// (tangential.mu NaN) when friction is not given.
+  TangentialOptions tangential;
+  MethodOptions method_options() const { return {method, solver, half_space, strips, tangential}; }
   /// Either a cartesian sweep (t_Y outer, Q inner: case i has tY[i / nQ], Q[i % nQ]) ...
   SweepAxis sweep_tY_mm, sweep_Q_kN;  ///< as given, in mm and kN
   /// ... or an explicit list.

@@ -66,10 +66,10 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     }
     if (writes_patches(M)) fpa = std::make_unique<OutputFile>(rd.path("patches.csv"));
     fpp = std::make_unique<OutputFile>(rd.path("pairs.csv"));
-    fc->stream() << "pair," << cases_csv_header();
-    if (fe) fe->stream() << "pair," << ellipses_csv_header(plastic, shared.rcf.enabled());
+    fc->stream() << "pair," << cases_csv_header(shared.tangential.enabled());
+    if (fe) fe->stream() << "pair," << ellipses_csv_header(plastic, shared.rcf.enabled(), shared.tangential.enabled());
     if (fg) fg->stream() << "pair," << geometry_csv_header();
-    if (fpa) fpa->stream() << "pair," << patches_csv_header(plastic, shared.rcf.enabled());
+    if (fpa) fpa->stream() << "pair," << patches_csv_header(plastic, shared.rcf.enabled(), shared.tangential.enabled());
     fpp->stream() << "pair,name,wheel,rail,status,n_ellipses,wheel_sha256,rail_sha256,message\n";
   }
   if (np) {
@@ -167,7 +167,8 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
         r.message = message;
         r.dz = r.approach = r.residual = r.Fz = r.Fy = r.pmax = r.area = NAN;
         Formatted f;
-        format_case(i, shared.case_at(i), r, plastic, fc != nullptr, pw != nullptr, f, kInvalidPair);
+        format_case(i, shared.case_at(i), r, plastic, fc != nullptr, pw != nullptr, f, kInvalidPair, {},
+                    shared.tangential.enabled());
         if (fc) put_prefixed(fc->stream(), prefix, f.cases);
         if (pw) pw->element(f.json);
       }

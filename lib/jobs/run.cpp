@@ -221,16 +221,16 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     }
     if (want_csv) {
       fc = std::make_unique<OutputFile>(rd->path("cases.csv"));
-      fc->stream() << cases_csv_header();
+      fc->stream() << cases_csv_header(cf.tangential.enabled());
       if (writes_ellipses(M)) {
         fe = std::make_unique<OutputFile>(rd->path("ellipses.csv"));
-        fe->stream() << ellipses_csv_header(plastic, cf.rcf.enabled());
+        fe->stream() << ellipses_csv_header(plastic, cf.rcf.enabled(), cf.tangential.enabled());
         fg = std::make_unique<OutputFile>(rd->path("geometry.csv"));
         fg->stream() << geometry_csv_header();
       }
       if (writes_patches(M)) {
         fpa = std::make_unique<OutputFile>(rd->path("patches.csv"));
-        fpa->stream() << patches_csv_header(plastic, cf.rcf.enabled());
+        fpa->stream() << patches_csv_header(plastic, cf.rcf.enabled(), cf.tangential.enabled());
       }
     }
     if (want_json) fj = std::make_unique<OutputFile>(rd->path("results.json"));

@@ -395,6 +395,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   const bool with_band = band.half && band.twice;
   RcfOptions rcf = cf.rcf;  // the RCF columns, k resolved (contact/ellipse/rcf.hpp)
   if (rcf.enabled()) rcf.k = rcf_shear_yield(cf.material, cf.rcf);
+  const bool tang = cf.tangential.enabled();  // the tangential columns (docs/tangential.md)
   const std::uint64_t n = end - first;
   if (n == 0) return;
   const unsigned threads = std::max(1u, opt.threads ? opt.threads : std::thread::hardware_concurrency());
@@ -454,14 +455,14 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
             std::string k = to_string(w.cls);
             if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(std::move(k));
           }
-          format_case(c0 + i, cp, r, plastic, want_csv, want_json, f, nullptr, rcf);
+          format_case(c0 + i, cp, r, plastic, want_csv, want_json, f, nullptr, rcf, tang);
           // The per-contact tables: ellipses (multi-Hertzian) and patches (grid methods); "auto"
           // writes each case into the table of the method that solved it.
           if (want_csv) {
             append_prefixed(B.cases, out.prefix, f.cases);
             if (out.ellipses) append_prefixed(B.ellipses, out.prefix, f.ellipses);
             if (out.patches) {
-              format_patches(c0 + i, cp, r, plastic, f.patches, rcf);
+              format_patches(c0 + i, cp, r, plastic, f.patches, rcf, tang);
               append_prefixed(B.patches, out.prefix, f.patches);
             }
           }

@@ -124,10 +124,40 @@ void rcf_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el
   k.text("shakedown_regime", std::isfinite(p.p0_el_over_k) ? to_string(p.regime) : nullptr);
   k.number("FI_surf_el", p.fi_surf_el);
 }
+// The tangential columns of one contact (docs/tangential.md), appended last to ellipses.csv and
+// patches.csv and to their JSON records when friction is given: the creepages, then the creep
+// forces and the spin moment ON THE RAIL in the contact frame (x rolling, s towards the field
+// side, the moment about n = x × s), the adhesion fraction and Tγ (empty where not solved).
+template <class Sink>
+void tangential_fields(Sink& k, const TangentialResult& t) {
+  k.optional("xi", t.c.xi);
+  k.optional("eta", t.c.eta);
+  k.optional("phi_per_mm", t.c.phi * units::mm);
+  const double nan = NAN;
+  k.optional("Fx_kN", t.solved ? -t.Fx / units::kN : nan);
+  k.optional("Fy_kN", t.solved ? -t.Fy / units::kN : nan);
+  k.optional("Mz_Nm", t.solved ? -t.Mz : nan);
+  k.optional("adhesion_fraction", t.solved ? t.adhesion_fraction : nan);
+  k.optional("Tgamma_N", t.solved ? t.Tgamma : nan);
+  k.optional("Tgamma_spin_N", t.solved ? t.Tgamma_spin : nan);
+}
+// The per-case sums (cases.csv, the case record), after every other column.
+template <class Sink>
+void tangential_case_fields(Sink& k, const CaseResult& r, bool failed) {
+  const TangentialSums& t = r.tangential;
+  const bool ok = !failed && t.solved;
+  const double nan = NAN;
+  k.optional("Fx_kN", ok ? t.Fx / units::kN : nan);
+  k.optional("Fy_creep_kN", ok ? t.Fy_creep / units::kN : nan);
+  k.optional("Mz_Nm", ok ? t.Mz : nan);
+  k.optional("F_over_muN", ok ? t.F_over_muN : nan);
+  k.optional("Y_kN", ok ? (r.Fy + t.Fy_creep) / units::kN : nan);
+}
+
 // One contact patch of a grid method, after its case, t_Y and Q (patches.csv) or in its case's
 // record (results.json).
 template <class Sink>
-void patch_fields(Sink& k, const PatchResult& P, bool plastic, const RcfOptions& rcf) {
+void patch_fields(Sink& k, const PatchResult& P, bool plastic, const RcfOptions& rcf, bool tangential) {
   k.integer("patch", static_cast<long long>(P.patch));
   k.number("y_rail_mm", P.y_r * units::per_mm);
   k.number("z_rail_mm", P.z_r * units::per_mm);
@@ -160,6 +190,7 @@ void patch_fields(Sink& k, const PatchResult& P, bool plastic, const RcfOptions&
   if (rcf.enabled()) {
     rcf_fields(k, rcf, P.N, P.a_el, P.b_el);  // the elastic Hertz ellipse of N (patch_elastic.hpp)
   }
+  if (tangential) tangential_fields(k, P.t);
 }
 
 }  // namespace
@@ -203,7 +234,7 @@ bool is_failed_row(const CaseResult& r, const char* status_text) {
 
 void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                  bool plastic, bool want_csv, bool want_json, Formatted& f, const char* status_text,
-                 const RcfOptions& rcf) {
+                 const RcfOptions& rcf, bool tangential) {
   const char* status = status_text ? status_text : to_string(r.status);
   const std::vector<std::string> warn_text = warning_texts(r.warnings);
   const std::string warn = join(warn_text, ";");
@@ -263,6 +294,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                      r.area_double_L * units::per_mm2}) {
       s += ','; pnum(s, v);
     }
+    if (tangential) {
+      CsvSink k{s};
+      tangential_case_fields(k, r, failed);
+    }
     s += '\n';
     std::string& e = f.ellipses;
     e.clear();
@@ -285,6 +320,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (rcf.enabled()) {
         CsvSink k{e};
         rcf_fields(k, rcf, L.s.N, L.s.a_el, L.s.b_el);  // the elastic Hertz ellipse of N
+      }
+      if (tangential) {
+        CsvSink k{e};
+        tangential_fields(k, L.t);
       }
       e += '\n';
     }
@@ -319,6 +358,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     j["pmax_double_L_MPa"] = rv(r.pmax_double_L / units::MPa);
     j["area_half_L_mm2"] = rv(r.area_half_L * units::per_mm2);
     j["area_double_L_mm2"] = rv(r.area_double_L * units::per_mm2);
+    if (tangential) {
+      JsonSink k{j};
+      tangential_case_fields(k, r, failed);
+    }
     nlohmann::ordered_json el = nlohmann::ordered_json::array();
     for (const LoadedEllipse& L : r.loaded) {
       nlohmann::ordered_json e;
@@ -338,6 +381,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
         JsonSink k{e};
         rcf_fields(k, rcf, L.s.N, L.s.a_el, L.s.b_el);  // the elastic Hertz ellipse of N
       }
+      if (tangential) {
+        JsonSink k{e};
+        tangential_fields(k, L.t);
+      }
       el.push_back(std::move(e));
     }
     j["ellipses"] = std::move(el);
@@ -346,7 +393,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     for (const PatchResult& P : r.patches) {
       nlohmann::ordered_json e;
       JsonSink k{e};
-      patch_fields(k, P, plastic, rcf);
+      patch_fields(k, P, plastic, rcf, tangential);
       pa.push_back(std::move(e));
     }
     j["patches"] = std::move(pa);
@@ -355,14 +402,14 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
 }
 
 void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, bool plastic, std::string& s,
-                    const RcfOptions& rcf) {
+                    const RcfOptions& rcf, bool tangential) {
   s.clear();
   for (const PatchResult& P : r.patches) {
     append_number(s, static_cast<long long>(idx));
     s += ','; num(s, cp.tY_mm);
     s += ','; num(s, cp.Q_kN);
     CsvSink k{s};
-    patch_fields(k, P, plastic, rcf);
+    patch_fields(k, P, plastic, rcf, tangential);
     s += '\n';
   }
 }
@@ -407,12 +454,12 @@ void format_strips(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, 
 
 std::string strips_csv_header() { return "case,tY_mm,Q_kN,patch,s_mm,y_rail_mm,x_centre_mm,half_length_mm,amplitude_MPa,plastic\n"; }
 
-std::string patches_csv_header(bool plastic, bool rcf) {
+std::string patches_csv_header(bool plastic, bool rcf, bool tangential) {
   std::string s = "case,tY_mm,Q_kN";
   HeaderSink k{s};
   RcfOptions o;
   if (rcf) o.f = 0;  // enabled: the header has the names only
-  patch_fields(k, PatchResult{}, plastic, o);
+  patch_fields(k, PatchResult{}, plastic, o, tangential);
   return s + "\n";
 }
 
@@ -424,17 +471,22 @@ std::string pressure_table_header(Method m, bool plastic) {
 
 std::string patch_pressure_csv_header() { return "case,patch,x_mm,s_mm,y_rail_mm,p_MPa\n"; }
 
-std::string cases_csv_header() {
-  return "case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,Y_over_Q,"
-         "pmax_MPa,area_mm2,gamma_main_deg,r_roll_main_mm,plastic,n_warnings,warnings,message,"
-         "pmax_half_L_MPa,pmax_double_L_MPa,area_half_L_mm2,area_double_L_mm2\n";
+std::string cases_csv_header(bool tangential) {
+  std::string s = "case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,Y_over_Q,"
+                  "pmax_MPa,area_mm2,gamma_main_deg,r_roll_main_mm,plastic,n_warnings,warnings,message,"
+                  "pmax_half_L_MPa,pmax_double_L_MPa,area_half_L_mm2,area_double_L_mm2";
+  if (tangential) {
+    HeaderSink k{s};
+    tangential_case_fields(k, CaseResult{}, true);
+  }
+  return s + "\n";
 }
 
 std::string pressure_csv_header(bool plastic) {
   return plastic ? "case,ellipse,x_mm,y_mm,p_MPa,p_elastic_MPa\n" : "case,ellipse,x_mm,y_mm,p_MPa\n";
 }
 
-std::string ellipses_csv_header(bool plastic, bool rcf) {
+std::string ellipses_csv_header(bool plastic, bool rcf, bool tangential) {
   std::string s = "case,tY_mm,Q_kN,ellipse";
   for (const Col& c : kEllipseCols) { s += ','; s += c.name; }
   if (plastic) {
@@ -448,6 +500,10 @@ std::string ellipses_csv_header(bool plastic, bool rcf) {
   if (rcf) {
     HeaderSink k{s};
     rcf_fields(k, RcfOptions{}, 0, 0, 0);
+  }
+  if (tangential) {
+    HeaderSink k{s};
+    tangential_fields(k, TangentialResult{});
   }
   return s + "\n";
 }

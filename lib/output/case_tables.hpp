@@ -25,7 +25,7 @@ bool is_failed_row(const CaseResult& r, const char* status_text = nullptr);
 
 void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                  bool plastic, bool want_csv, bool want_json, Formatted& f,
-                 const char* status_text = nullptr, const RcfOptions& rcf = {});
+                 const char* status_text = nullptr, const RcfOptions& rcf = {}, bool tangential = false);
 
 /// The pressure of each loaded ellipse of `r` on an N × N grid over its patch (method.md §5),
 /// into `s` (pressure.csv rows).
@@ -35,8 +35,10 @@ void format_pressure(std::uint64_t idx, const CaseResult& r, bool plastic, int N
 /// patches.csv rows of a grid method's case (one row per contact patch), into `s`.
 /// With rcf.enabled() (k resolved: rcf_shear_yield) both tables end with the RCF columns
 /// (docs/outputs.md "RCF columns").
+/// With `tangential` (friction given) every per-contact and per-case table ends with the
+/// tangential columns (docs/tangential.md).
 void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, bool plastic, std::string& s,
-                    const RcfOptions& rcf = {});
+                    const RcfOptions& rcf = {}, bool tangential = false);
 /// The element pressures of every patch of a grid method's case (elements in contact only), into
 /// `s` (pressure.csv rows of the grid methods).
 void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& s);
@@ -46,7 +48,7 @@ void format_strips(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, 
 std::string strips_csv_header();
 
 /// The column names of the tables (docs/outputs.md).
-std::string patches_csv_header(bool plastic, bool rcf = false);
+std::string patches_csv_header(bool plastic, bool rcf = false, bool tangential = false);
 /// Which per-contact tables a method writes: ellipses.csv (multi-Hertzian, and "auto" for the cases
 /// it keeps), patches.csv (grid methods, and "auto" for the cases it hands to the strip method).
 bool writes_ellipses(Method m);
@@ -54,8 +56,8 @@ bool writes_patches(Method m);
 /// The header of pressure.csv of a method ("auto" writes none).
 std::string pressure_table_header(Method m, bool plastic);
 std::string patch_pressure_csv_header();
-std::string cases_csv_header();
-std::string ellipses_csv_header(bool plastic, bool rcf = false);
+std::string cases_csv_header(bool tangential = false);
+std::string ellipses_csv_header(bool plastic, bool rcf = false, bool tangential = false);
 
 /// geometry.csv: what ellipses.csv would repeat for every Q, once per (t_Y,
 /// potential ellipse). Its header, and the rows of the candidates `cands` at the case t_Y `tY_mm`

@@ -109,6 +109,10 @@ if have_mpl /usr/bin/python3; then
   test -s compare.csv
 fi
 
+# --- docs/tangential.md, "Worked example": creep forces of a yawed wheelset -------------------
+./build/mhcontact run cases/manchester-tangential.json -o out/tangential
+grep -q ',Fx_kN,Fy_creep_kN,Mz_Nm,F_over_muN,Y_kN$' <(head -1 out/tangential/cases.csv)
+
 # --- docs/profiles.md, "8. The profile commands" ----------------------------------------------
 ./build/mhcontact profile info profiles/MBench_S1002_v3.prw
 ./build/mhcontact profile info profiles/MBench_UIC60_v3.prr --json

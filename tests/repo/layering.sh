@@ -2,11 +2,13 @@
 # The library's layers, in the order of the data flow: a file of a layer may include headers of
 # its own layer and of the layers before it, never of a later one (no cycles, includes point down
 # the flow). Inside lib/contact the same holds between its rooms, in this order:
-#   options (options.hpp: material, method, every options struct)
+#   tangential (tangential/*: creepages, Kalker's coefficients, FASTSIM on one ellipse and their
+#     options, light: options.hpp includes them)
+#   < options (options.hpp: material, method, every options struct)
 #   < judge_status (judge/status.*: a case's status and warnings as data, light)
-#   < ellipse (one Hertzian ellipse) | tangential (creepages, the tangential result, Kalker's
-#   coefficients: a sibling of ellipse) < case_result (the result every method returns)
+#   < ellipse (one Hertzian ellipse) < case_result (the result every method returns)
 #   < judge (judge/judge.*: the one rule that decides a solved case's status)
+#   < tangential_solve (tangential/tangential_solve.*: the tangential problem of a solved case)
 #   < multi_hertz < grid (what the grid methods share) < half_space | strips (siblings: neither
 #   includes the other) < solve (dispatch and auto).
 # Last comes capi (the C interface and the Python module's core, include/mhcontact.h): it may use
@@ -17,11 +19,11 @@
 set -uo pipefail
 src=$1
 layers=(core profile geometry contact input output jobs capi)
-rooms=(options judge_status ellipse tangential case_result judge multi_hertz grid half_space strips solve)
-room_rank=(0 1 2 2 3 4 5 6 7 7 8)
+rooms=(tangential options judge_status ellipse case_result judge tangential_solve multi_hertz grid half_space strips solve)
+room_rank=(0 1 2 3 4 5 6 7 8 9 9 10)
 rank() { local i; for i in "${!layers[@]}"; do [ "${layers[$i]}" = "$1" ] && { echo "$i"; return; }; done; echo -1; }
 room() {  # the room of lib/contact/<rest> given <rest>: its folder, or the file's stem at the top
-  case "$1" in judge/status.*) echo judge_status ;; */*) echo "${1%%/*}" ;; *) local b=${1%.*}; echo "$b" ;; esac
+  case "$1" in judge/status.*) echo judge_status ;; tangential/tangential_solve.*) echo tangential_solve ;; */*) echo "${1%%/*}" ;; *) local b=${1%.*}; echo "$b" ;; esac
 }
 room_rank_of() { local i; for i in "${!rooms[@]}"; do [ "${rooms[$i]}" = "$1" ] && { echo "${room_rank[$i]}"; return; }; done; echo -1; }
 check_tree() {  # prints the violations of the tree $1, returns 1 if any

@@ -39,6 +39,9 @@ void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Materi
                            const MethodOptions& opt) {
   // Every method: a plastic contact loaded beyond the domain its tests cover (evidence.hpp).
   add_evidence_warnings(r, mat);
+  // Friction given on a grid method: its tangential problem is not solved yet (docs/status.md).
+  if (r.tangential.asked && !r.tangential.solved && r.method != Method::MultiHertzian)
+    r.warnings.push_back(Warning(WarningClass::TangentialUnsupported));
   if (r.method != Method::MultiHertzian) return;
   add_interaction_warning(r, opt.strips.d_comb);
   if (r.status != CaseStatus::Ok || r.loaded.empty()) return;
@@ -64,7 +67,11 @@ void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Materi
   }
 }
 
-double y_over_q(const CaseResult& r) { return r.Fz > 0 ? r.Fy / r.Fz : NAN; }
+double y_over_q(const CaseResult& r) {
+  if (!(r.Fz > 0)) return NAN;
+  // With friction the lateral force Y includes the creep forces' lateral component (docs/tangential.md).
+  return r.tangential.solved ? (r.Fy + r.tangential.Fy_creep) / r.Fz : r.Fy / r.Fz;
+}
 
 void add_vehicle_state_warnings(CaseResult& r, const ContactGeometry& G, const VehicleStateLimits& lim) {
   if (is_failure(r.status)) return;

@@ -51,6 +51,9 @@ const std::vector<WarningClassInfo>& warning_classes() {
       // A sensitivity, not an error (docs/status.md "smoothing_sensitive" gives the reason it
       // is informational): the row's own answer is at the length chosen from the noise.
       {C::SmoothingSensitive, "smoothing_sensitive", false, "the peak pressure or the area moves by more than the trust table's tolerance when the contact smoothing length is halved or doubled (docs/profiles.md §7; informational)"},
+      // Friction given, but the row's method does not solve the tangential problem yet
+      // (contact/tangential/tangential_solve.hpp): its creep forces are empty, not 0.
+      {C::TangentialUnsupported, "tangential_unsupported", true, "friction given, but the row's method (half-space, strips) does not solve the tangential problem yet: its creep-force columns are empty (docs/tangential.md)"},
   };
   return k;
 }

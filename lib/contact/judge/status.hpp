@@ -44,6 +44,7 @@ enum class WarningClass : std::uint8_t {
   NadalLimit,
   Derailed,
   SmoothingSensitive,
+  TangentialUnsupported,
 };
 /// The class's name as written ("non_hertzian").
 const char* to_string(WarningClass c);

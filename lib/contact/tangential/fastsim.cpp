@@ -1,0 +1,142 @@
+// FASTSIM on one ellipse (fastsim.hpp).
+#include "contact/tangential/fastsim.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "contact/tangential/kalker.hpp"
+
+namespace mh {
+
+FastsimFlexibilities fastsim_flexibilities(double a, double b, double G, double nu) {
+  const KalkerCoefficients k = kalker_coefficients(a / b, nu);
+  // Kalker 1982 (fastsim.hpp): chosen so that the traction of the linear limit integrates to
+  // Kalker's linear-theory forces (checked by tests/unit/contact/test_fastsim.cpp).
+  return {8.0 * a / (3.0 * k.C11 * G), 8.0 * a / (3.0 * k.C22 * G),
+          M_PI * a * std::sqrt(a / b) / (4.0 * k.C23 * G)};
+}
+
+namespace {
+
+// Vollebregt & Voltr 2023 as CONTACT 25.2 applies it (m_hertz.f90, simpflex; the paper itself not
+// read here): one combined flexibility L_c, the mean of L1, L2, L3 weighted by the creepages'
+// squares in harmonic form (the spin scaled by (πa²/4) / (8a/3)), blended in with the weight
+// min(1, f/3), f the translational creepage relative to the one that saturates linear theory.
+void blend(FastsimFlexibilities& L, const Creepages& cr, double a, double b, double N, double mu,
+           double G, double nu) {
+  const KalkerCoefficients k = kalker_coefficients(a / b, nu);
+  const double c2 = a * b;
+  const double ch_xi = mu * N / (c2 * G * k.C11), ch_eta = mu * N / (c2 * G * k.C22);
+  const double sp = cr.phi * (M_PI * a * a / 4.0) / (8.0 * a / 3.0);
+  const double num = cr.xi * cr.xi + cr.eta * cr.eta + sp * sp;
+  double den = cr.xi * cr.xi / L.L1 + cr.eta * cr.eta / L.L2 + sp * sp / L.L3;
+  if (std::abs(den) < 1e-14) den = 1e-14;
+  const double Lc = num / den;
+  const double f = std::max(1e-10, std::sqrt((cr.xi * cr.xi + cr.eta * cr.eta) / (ch_xi * ch_xi + ch_eta * ch_eta)));
+  const double w = std::min(1.0, f / 3.0);
+  L.L1 = (1 - w) * L.L1 + w * Lc;
+  L.L2 = (1 - w) * L.L2 + w * Lc;
+  L.L3 = (1 - w) * L.L3 + w * Lc;
+}
+
+}  // namespace
+
+TangentialResult fastsim(const Creepages& cr, double a, double b, double N, double mu, double G,
+                         double nu, const FastsimOptions& o, FastsimGrid* grid) {
+  assert(a > 0 && b > 0 && N >= 0 && mu >= 0 && G > 0 && o.nx >= 1 && o.ny >= 1 && o.nx <= kFastsimMaxN);
+  const int nx = o.nx, ny = o.ny;
+  FastsimFlexibilities L = fastsim_flexibilities(a, b, G, nu);
+  if (o.blend) blend(L, cr, a, b, N, mu, G, nu);
+  const bool ell = o.bound == TractionBound::Elliptical;
+  if (grid) {
+    const size_t n = static_cast<size_t>(nx) * ny;
+    grid->nx = nx;
+    grid->ny = ny;
+    for (auto* v : {&grid->x, &grid->y, &grid->px, &grid->py, &grid->pn}) v->assign(n, 0.0);
+    grid->slip.assign(n, 0);
+  }
+
+  // The bound's shape factorises: p_n = P q(y_j) f(s_k), s = x / a(y_j) the cell centre's place on
+  // its strip. Its discrete integral Σ_j dy a_j q_j Σ_k ds f(s_k) fixes P. f(s_k) is the same on
+  // every strip: tabulated once (on the stack: no allocation).
+  const double dy = 2.0 * b / ny, ds = 2.0 / nx;
+  double f[kFastsimMaxN];
+  double Rs = 0;
+  for (int k = 0; k < nx; ++k) {
+    const double s = 1.0 - (k + 0.5) * ds, u = 1.0 - s * s;
+    f[k] = ell ? std::sqrt(u) : u;
+    Rs += ds * f[k];
+  }
+  double Ry = 0;
+  for (int j = 0; j < ny; ++j) {
+    const double yb = -1.0 + (j + 0.5) * (2.0 / ny), u = 1.0 - yb * yb;
+    Ry += dy * a * std::sqrt(u) * (ell ? std::sqrt(u) : u);
+  }
+  const double P = (Rs * Ry > 0) ? N / (Rs * Ry) : 0.0;
+
+  // Cell-centred marching: the traction at the centre x_k = a_j − (k + ½) h is the previous
+  // centre's (after the bound) plus the exact integral of the gradient between the two (half a
+  // step from the leading edge for the first); the midpoint rule integrates it. The bound is
+  // never 0 at a centre, so the linear limit is reproduced to the midpoint rule's accuracy.
+  const double gx = cr.xi / L.L1, gy = cr.eta / L.L2, gs = cr.phi / L.L3;
+  double Fx = 0, Fy = 0, Mz = 0, n_adh = 0, n_all = 0;
+  for (int j = 0; j < ny; ++j) {
+    const double yb = -1.0 + (j + 0.5) * (2.0 / ny), u = 1.0 - yb * yb;
+    const double y = b * yb, aj = a * std::sqrt(u), h = aj * ds;
+    const double bound_row = mu * P * (ell ? std::sqrt(u) : u);
+    const double gxy = gx - gs * y;  // ∂px/∂x on this strip
+    double px = 0, py = 0, x = aj;
+    double rFx = 0, rFy = 0, rM = 0;
+    int rA = 0;
+    for (int k = 0; k < nx; ++k) {
+      const double xn = aj - (k + 0.5) * h;
+      px -= gxy * (x - xn);
+      py -= gy * (x - xn) + 0.5 * gs * (x * x - xn * xn);  // ∫_{xn}^{x} (η/L2 + φ x'/L3) dx'
+      x = xn;
+      const double bound = bound_row * f[k];
+      const double pt2 = px * px + py * py;
+      const bool sl = pt2 > bound * bound;
+      if (sl) {  // onto the bound, in the direction of the adhesion traction (Kalker 1982)
+        const double scale = bound / std::sqrt(pt2);
+        px *= scale;
+        py *= scale;
+      } else {
+        ++rA;
+      }
+      rFx += px;
+      rFy += py;
+      rM += x * py - y * px;
+      if (grid) {
+        const size_t i = static_cast<size_t>(j) * nx + k;
+        grid->x[i] = x;
+        grid->y[i] = y;
+        grid->px[i] = px;
+        grid->py[i] = py;
+        grid->pn[i] = P * (ell ? std::sqrt(u) : u) * f[k];
+        grid->slip[i] = sl;
+      }
+    }
+    const double wA = h * dy;
+    Fx += wA * rFx;
+    Fy += wA * rFy;
+    Mz += wA * rM;
+    n_adh += wA * rA;
+    n_all += wA * nx;
+  }
+
+  TangentialResult r;
+  r.c = cr;
+  r.mu = mu;
+  r.Fx = Fx;
+  r.Fy = Fy;
+  r.Mz = Mz;
+  r.adhesion_fraction = n_all > 0 ? n_adh / n_all : NAN;
+  r.Tgamma = -(Fx * cr.xi + Fy * cr.eta);
+  r.Tgamma_spin = -Mz * cr.phi;
+  r.iterations = 0;
+  r.solved = true;
+  return r;
+}
+
+}  // namespace mh

@@ -1,0 +1,34 @@
+#pragma once
+// The tangential problem's inputs of a case (case file `friction`, `kinematics` | `creepages`;
+// docs/case-file.md, docs/tangential.md): light, for the case-file reader. SI.
+#include <cmath>
+
+#include "contact/tangential/creepage.hpp"
+#include "contact/tangential/fastsim.hpp"
+#include "contact/tangential/tangential_types.hpp"
+
+namespace mh {
+
+struct TangentialOptions {
+  /// [-] Coulomb friction coefficient μ (case file friction.coefficient); NaN: no tangential
+  /// problem is solved and no tangential column is written (the outputs are those without it).
+  double mu = NAN;
+  enum class Source { Kinematics, Creepages };
+  Source source = Source::Kinematics;
+  /// The wheelset's motion (Source::Kinematics). yaw is the yaw at t_Y = 0; yaw_per_tY [rad/m]
+  /// adds yaw_per_tY · t_Y (kinematics.yaw_mrad_per_mm, as the Manchester case does).
+  Kinematics kin;
+  double yaw_per_tY = 0;
+  /// The creepages given directly, the same for every contact of the case (Source::Creepages).
+  Creepages creep;
+  /// [m] lateral distance of the wheel profile's origin (taping line) from the wheelset's centre
+  /// plane: half the flange-back distance minus the flange-back position (method.md §7, §10).
+  /// Set by the case-file reader from the track setup.
+  double l_origin = 0.75;
+  /// [m] nominal rolling radius r0 (track.nominal_radius): the pitch rate's default V / r0.
+  double r0 = 0.46;
+  FastsimOptions fastsim;
+  bool enabled() const { return std::isfinite(mu); }
+};
+
+}  // namespace mh

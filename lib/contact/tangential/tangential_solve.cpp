@@ -1,0 +1,69 @@
+// The tangential problem of a solved case (tangential_solve.hpp).
+#include "contact/tangential/tangential_solve.hpp"
+
+#include <cmath>
+
+#include "contact/tangential/fastsim.hpp"
+
+namespace mh {
+
+void combined_elastic(const Material& mat, double& G, double& nu) {
+  const double G1 = mat.E / (2.0 * (1.0 + mat.nu));
+  const double nu2 = std::isnan(mat.nu_rail) ? mat.nu : mat.nu_rail;
+  const double G2 = mat.Er() / (2.0 * (1.0 + nu2));
+  G = 2.0 / (1.0 / G1 + 1.0 / G2);
+  nu = 0.5 * G * (mat.nu / G1 + nu2 / G2);
+}
+
+namespace {
+
+// The creepages of a contact at (r_roll, γ, y_w) of the case (tangential_options.hpp).
+Creepages creepages_of(const TangentialOptions& o, double tY, double r_roll, double gamma, double y_w) {
+  if (o.source == TangentialOptions::Source::Creepages) return o.creep;
+  Kinematics k = o.kin;
+  k.yaw += o.yaw_per_tY * tY;
+  // The contact's distance from the wheelset's centre plane: the wheel profile's origin lies at
+  // l_origin + t_Y (t_Y moves the wheel towards the field side, method.md §1), the contact at y_w
+  // on the wheel profile.
+  return creepages_from_kinematics(k, {r_roll, gamma, o.l_origin + tY + y_w}, o.r0);
+}
+
+}  // namespace
+
+void solve_tangential(CaseResult& r, const Material& mat, double tY, const TangentialOptions& opt) {
+  r.tangential = TangentialSums{};
+  if (!opt.enabled()) return;
+  r.tangential.asked = true;
+  double G = 0, nu = 0;
+  combined_elastic(mat, G, nu);
+  double Fx = 0, Fy = 0, Mz = 0, F = 0, N = 0;
+  bool all = true;
+  for (LoadedEllipse& L : r.loaded) {
+    L.t = TangentialResult{};
+    L.t.c = creepages_of(opt, tY, L.g.r_roll, L.g.gamma, L.g.y_w);
+    L.t.mu = opt.mu;
+    if (!(L.s.N > 0 && L.s.a > 0 && L.s.b > 0)) continue;
+    // FASTSIM on the patch the normal law carries (the plastic patch when plastic; its traction
+    // bound the elliptical one of that patch: docs/tangential.md, limits).
+    L.t = fastsim(L.t.c, L.s.a, L.s.b, L.s.N, opt.mu, G, nu, opt.fastsim);
+    Fx -= L.t.Fx;  // on the rail
+    Fy -= L.t.Fy * L.cos_gamma;
+    Mz -= L.t.Mz;
+    F += std::hypot(L.t.Fx, L.t.Fy);
+    N += L.s.N;
+  }
+  for (PatchResult& P : r.patches) {
+    P.t = TangentialResult{};
+    P.t.c = creepages_of(opt, tY, P.r_roll, P.gamma, P.y_w);
+    P.t.mu = opt.mu;
+    all = false;  // not solved by the grid methods yet (tangential_unsupported)
+  }
+  if (!all || r.loaded.empty() || !(N > 0)) return;
+  r.tangential.solved = true;
+  r.tangential.Fx = Fx;
+  r.tangential.Fy_creep = Fy;
+  r.tangential.Mz = Mz;
+  r.tangential.F_over_muN = opt.mu > 0 ? F / (opt.mu * N) : NAN;
+}
+
+}  // namespace mh
