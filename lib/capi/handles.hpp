@@ -48,6 +48,10 @@ namespace mh::capi {
 
 /// The thread's last message (mhc_last_message).
 std::string& last_message();
+/// Set the thread's message and return e.
+mhc_error fail(mhc_error e, const std::string& msg);
+/// MHC_OK when p is set, else MHC_ERR_ARGUMENT with "<what>: null pointer".
+mhc_error need(const void* p, const char* what);
 
 /// A callable returning mhc_error, passed to guarded() by reference: a std::function would copy a
 /// lambda capturing more than two references to the heap, once per C call.

@@ -1,4 +1,5 @@
-// The C interface (include/mhcontact.h): handles, error codes and the conversion of results.
+// The C interface (include/mhcontact.h): handles, error codes and the entry points; results are
+// converted in result.cpp.
 // Nothing here throws across extern "C": every entry point runs inside guarded().
 #include "capi/handles.hpp"
 
@@ -34,51 +35,15 @@
 
 namespace mh::capi {
 
-namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 mhc_error fail(mhc_error e, const std::string& msg) {
   last_message() = msg;
   return e;
 }
 
-std::uint32_t warning_bit(const Warning& w) {
-  switch (w.cls) {
-    case WarningClass::FlangeClimb: return MHC_WARN_FLANGE_CLIMB;
-    case WarningClass::NonHertzianExcluded: return MHC_WARN_NON_HERTZIAN_EXCLUDED;
-    case WarningClass::NonHertzian: return MHC_WARN_NON_HERTZIAN;
-    case WarningClass::OffProfile: return MHC_WARN_OFF_PROFILE;
-    case WarningClass::Interacting: return MHC_WARN_INTERACTING;
-    case WarningClass::PressureSpike: return MHC_WARN_PRESSURE_SPIKE;
-    case WarningClass::StripOutlier: return MHC_WARN_STRIP_OUTLIER;
-    default: return MHC_WARN_OTHER;
-  }
+mhc_error need(const void* p, const char* what) {
+  if (p) return MHC_OK;
+  return fail(MHC_ERR_ARGUMENT, std::string(what) + ": null pointer");
 }
-
-int32_t status_code(CaseStatus s) {
-  switch (s) {
-    case CaseStatus::Ok: return MHC_STATUS_OK;
-    case CaseStatus::NoContact: return MHC_STATUS_NO_CONTACT;
-    case CaseStatus::OutOfRange: return MHC_STATUS_OUT_OF_RANGE;
-    case CaseStatus::NotConverged: return MHC_STATUS_NOT_CONVERGED;
-    case CaseStatus::OutsideValidity: return MHC_STATUS_OUTSIDE_VALIDITY;
-    case CaseStatus::Derailed: return MHC_STATUS_DERAILED;
-  }
-  return MHC_STATUS_NOT_CONVERGED;
-}
-
-int32_t method_code(Method m) {
-  switch (m) {
-    case Method::MultiHertzian: return MHC_METHOD_MULTI_HERTZIAN;
-    case Method::HalfSpace: return MHC_METHOD_HALF_SPACE;
-    case Method::Strips: return MHC_METHOD_STRIPS;
-    case Method::Auto: return MHC_METHOD_AUTO;
-  }
-  return MHC_METHOD_AUTO;
-}
-
-}  // namespace
 
 std::string& last_message() {
   thread_local std::string m;
@@ -106,115 +71,6 @@ mhc_error guarded(GuardedBody f) noexcept {
   }
 }
 
-bool result_ok(const mhc_result* out, std::size_t result_size) {
-  if (!out) return fail(MHC_ERR_ARGUMENT, "result: null pointer"), false;
-  if (result_size < sizeof(mhc_result))
-    return fail(MHC_ERR_ARGUMENT, "result: struct_size = " + std::to_string(result_size) +
-                                      ": must be sizeof(mhc_result) = " + std::to_string(sizeof(mhc_result)) +
-                                      " (a header older than the library, or struct_size not set)"),
-           false;
-  return true;
-}
-
-void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_result* out) {
-  // Every field is set below; of the ~1 kB contact array only the slots left unused are cleared
-  // (so that equal cases give equal bytes).
-  out->status = status_code(r.status);
-  out->method = method_code(r.method);
-  out->n_contacts = r.n_contacts;
-  out->iterations = r.iterations;
-  out->n_warnings = static_cast<int32_t>(r.warnings.size());
-  out->warnings = 0;
-  for (const Warning& w : r.warnings) out->warnings |= warning_bit(w);
-  out->tY_m = tY;
-  out->Q_N = std::isnan(Q) ? r.Fz : Q;
-  // A case without a solution leaves every result field NaN (empty in cases.csv).
-  const bool failed = r.status == CaseStatus::NoContact || r.status == CaseStatus::OutOfRange;
-  out->dz_m = failed ? kNaN : r.dz;
-  out->approach_m = failed ? kNaN : r.approach;
-  out->residual = failed ? kNaN : r.residual;
-  out->Fz_N = failed ? kNaN : r.Fz;
-  out->Fy_N = failed ? kNaN : r.Fy;
-  out->p_max_Pa = failed ? kNaN : r.pmax;
-  out->area_m2 = failed ? kNaN : r.area;
-  out->gamma_main_rad = kNaN;
-  out->r_roll_main_m = kNaN;
-  out->dFz_ddz_N_per_m = failed ? kNaN : 0.0;
-  out->plastic = 0;
-  out->reserved = 0;
-  if (r.n_contacts > MHC_MAX_CONTACTS) out->warnings |= MHC_WARN_TRUNCATED;
-  const LoadedEllipse* main = nullptr;
-  int k = 0;
-  for (const LoadedEllipse& L : r.loaded) {
-    if (!main || L.s.N > main->s.N) main = &L;
-    const double cg = L.cos_gamma, sg = L.sin_gamma;
-    const double dN_dh0 = normal_stiffness(L);
-    out->dFz_ddz_N_per_m += dN_dh0 * cg * cg;  // d(N cos γ)/dδz with dh0/dδz = cos γ (eq. 11)
-    if (plastic && L.s.plastic) out->plastic = 1;
-    if (k >= MHC_MAX_CONTACTS) continue;
-    mhc_contact& c = out->contact[k++];
-    c.index = L.ellipse;
-    c.flags = (plastic && L.s.plastic ? MHC_CONTACT_PLASTIC : 0u) | (L.validity.valid ? 0u : MHC_CONTACT_NON_HERTZIAN) |
-              (L.g.off_profile ? MHC_CONTACT_OFF_PROFILE : 0u);
-    c.y_rail_m = L.g.y_r;
-    c.z_rail_m = L.z_r;
-    c.y_wheel_m = L.g.y_w;
-    c.z_wheel_m = L.z_w;
-    c.gamma_rad = L.g.gamma;
-    c.r_roll_m = L.g.r_roll;
-    c.N_N = L.s.N;
-    c.Fz_N = L.s.N * cg;
-    c.Fy_N = L.s.N * sg;
-    c.a_m = L.s.a;
-    c.b_m = L.s.b;
-    c.A_per_m = L.A;
-    c.B_per_m = L.B;
-    c.p_max_Pa = L.s.p_max;
-    c.area_m2 = units::pi * L.s.a * L.s.b;
-    c.h0_m = L.s.h0;
-    c.approach_m = L.s.approach;
-    c.dN_ddz_N_per_m = dN_dh0 * cg;
-  }
-  if (main) {
-    out->gamma_main_rad = main->g.gamma;
-    out->r_roll_main_m = main->g.r_roll;
-  }
-  // Grid methods: patches (no ellipse law: no curvature sums, no stiffness).
-  const PatchResult* main_patch = nullptr;
-  for (const PatchResult& P : r.patches) {
-    if (!main_patch || P.N > main_patch->N) main_patch = &P;
-    if (plastic && P.plastic_area > 0) out->plastic = 1;
-    if (k >= MHC_MAX_CONTACTS) continue;
-    mhc_contact& c = out->contact[k++];
-    c.index = P.patch;
-    c.flags = plastic && P.plastic_area > 0 ? MHC_CONTACT_PLASTIC : 0u;
-    c.y_rail_m = P.y_r;
-    c.z_rail_m = P.z_r;
-    c.y_wheel_m = P.y_w;
-    c.z_wheel_m = kNaN;
-    c.gamma_rad = P.gamma;
-    c.r_roll_m = P.r_roll;
-    c.N_N = P.N;
-    c.Fz_N = P.N * std::cos(P.gamma);
-    c.Fy_N = P.N * std::sin(P.gamma);
-    c.a_m = 0.5 * P.length_x;
-    c.b_m = 0.5 * P.width_s;
-    c.A_per_m = c.B_per_m = kNaN;
-    c.p_max_Pa = P.pmax;
-    c.area_m2 = P.area;
-    c.h0_m = kNaN;
-    c.approach_m = P.approach;
-    c.dN_ddz_N_per_m = kNaN;
-  }
-  if (k < MHC_MAX_CONTACTS)
-    std::memset(static_cast<void*>(&out->contact[k]), 0, sizeof(mhc_contact) * static_cast<std::size_t>(MHC_MAX_CONTACTS - k));
-  if (!failed && r.method != Method::MultiHertzian) out->dFz_ddz_N_per_m = kNaN;
-  if (main_patch) {
-    out->gamma_main_rad = main_patch->gamma;
-    out->r_roll_main_m = main_patch->r_roll;
-  }
-}
-
 mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, double tY, double roll, double value,
                      mhc_result* out) {
   if (roll != 0.0)
@@ -230,7 +86,7 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
     // As solve_contact: the tangential problem (a case file with friction), then the one judge.
     solve_tangential(ws.r, pair.material, tY, pair.options.tangential);
     judge_case(ws.r, pair.pg.geo, pair.material, tY, pair.options);
-    fill_result(ws.r, tY, kNaN, pair.plastic, out);
+    fill_result(ws.r, tY, std::numeric_limits<double>::quiet_NaN(), pair.plastic, out);
   } else {
     if (const std::string bad = check_load(value); !bad.empty()) return fail(MHC_ERR_ARGUMENT, bad);
     solve_contact(pair.pg.geo, pair.material, tY, value, pair.options, ws.r, &ws.grid);
@@ -287,6 +143,7 @@ mhc_error for_each_case(const mhc_pair& pair, std::size_t n, int n_threads,
 using namespace mh;
 using mh::capi::fail;
 using mh::capi::guarded;
+using mh::capi::need;
 
 namespace {
 
@@ -294,11 +151,6 @@ ProfileKind to_kind(int32_t kind) {
   if (kind == MHC_WHEEL) return ProfileKind::Wheel;
   if (kind == MHC_RAIL) return ProfileKind::Rail;
   throw std::invalid_argument("kind = " + std::to_string(kind) + ": must be MHC_WHEEL (1) or MHC_RAIL (2)");
-}
-
-mhc_error need(const void* p, const char* what) {
-  if (p) return MHC_OK;
-  return fail(MHC_ERR_ARGUMENT, std::string(what) + ": null pointer");
 }
 
 /// Profiles, cant check and geometry, as jobs/run.cpp's build_pair_geometry.
@@ -645,47 +497,3 @@ mhc_error mhc_solve_many(const mhc_pair* pair, int32_t prescribe, size_t n, cons
 }
 
 }  // extern "C"
-
-int32_t mhc_result_n_warnings(const mhc_workspace* ws) {
-  return ws ? static_cast<int32_t>(ws->r.warnings.size()) : 0;
-}
-
-mhc_error mhc_result_warning(const mhc_workspace* ws, int32_t i, mhc_warning* out) {
-  mh::capi::last_message().clear();
-  if (mhc_error e = need(ws, "ws")) return e;
-  if (mhc_error e = need(out, "out")) return e;
-  if (out->struct_size < sizeof(mhc_warning))
-    return fail(MHC_ERR_ARGUMENT, "out->struct_size = " + std::to_string(out->struct_size) +
-                                      ": set it to sizeof(mhc_warning) (" + std::to_string(sizeof(mhc_warning)) + ")");
-  if (i < 0 || static_cast<std::size_t>(i) >= ws->r.warnings.size())
-    return fail(MHC_ERR_ARGUMENT, "warning " + std::to_string(i) + ": the case has " +
-                                      std::to_string(ws->r.warnings.size()) + " (0-based index)");
-  const Warning& w = ws->r.warnings[static_cast<std::size_t>(i)];
-  const std::size_t size = out->struct_size;
-  std::memset(static_cast<void*>(out), 0, sizeof(mhc_warning));
-  out->struct_size = size;
-  out->class_name = to_string(w.cls);
-  out->outside_validity = is_validity_class(w.cls) ? 1 : 0;
-  out->contact_kind = static_cast<int32_t>(w.kind);
-  out->contact = w.contact;
-  out->contact2 = w.contact2;
-  out->n_measures = w.n;
-  for (int k = 0; k < w.n && k < MHC_WARNING_MAX_MEASURES; ++k) {
-    const Measure& m = w.m[static_cast<std::size_t>(k)];
-    mhc_warning_measure& o = out->measure[k];
-    o.name = name(m.q);
-    o.unit = si_unit(m.q);
-    o.value_si = m.value;
-    o.limit_si = m.rel ? m.limit : std::numeric_limits<double>::quiet_NaN();
-    o.relation = m.rel;
-  }
-  return MHC_OK;
-}
-
-const char* mhc_warning_text(const mhc_workspace* ws, int32_t i) {
-  thread_local std::string text;
-  text.clear();
-  if (ws && i >= 0 && static_cast<std::size_t>(i) < ws->r.warnings.size())
-    text = warning_text(ws->r.warnings[static_cast<std::size_t>(i)]);
-  return text.c_str();
-}

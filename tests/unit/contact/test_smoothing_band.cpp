@@ -30,7 +30,7 @@ mh::CaseResult answer(double pmax_MPa, double area_mm2, mh::CaseStatus s = mh::C
 
 }  // namespace
 
-TEST_CASE("judge: a peak pressure 11 % off at 2L is smoothing_sensitive, informational; 9 % and 14 % area are not",
+TEST_CASE("judge: a peak pressure 11 % off at 2L is smoothing_sensitive (informational), 9 % and 14 % area are not",
           "[band][judge]") {
   {
     mh::CaseResult r = answer(1000, 100);

@@ -19,6 +19,7 @@
 #include "contact/half_space/tangential_influence.hpp"
 #include "contact/half_space/tangential_patch.hpp"
 #include "contact/half_space/tangential_rolling.hpp"
+#include "support/hertz_grid.hpp"
 
 namespace {
 
@@ -95,24 +96,6 @@ double quadrature(int which, double x, double y, double a, double b) {
   return std::fabs(x) < a && std::fabs(y) < b ? polar_quadrature(which, x, y, a, b)
                                               : tensor_quadrature(which, x, y, a, b);
 }
-
-/// Hertzian pressure p0 √(1 − x²/a² − y²/b²) at the element centres of an nx × ny grid covering
-/// the ellipse exactly; returns the grid's x0, y0 (centre of element (0, 0)) and N = Σ p dA.
-struct HertzGrid {
-  int nx, ny;
-  double dx, dy, x0, y0, N = 0;
-  std::vector<double> p;
-  HertzGrid(double a, double b, double p0, int nx_, int ny_)
-      : nx(nx_), ny(ny_), dx(2 * a / nx_), dy(2 * b / ny_), x0(-a + dx / 2), y0(-b + dy / 2),
-        p(static_cast<std::size_t>(nx_ * ny_), 0.0) {
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) {
-        const double x = x0 + i * dx, y = y0 + j * dy, q = 1 - x * x / (a * a) - y * y / (b * b);
-        if (q > 0) p[static_cast<std::size_t>(i + nx * j)] = p0 * std::sqrt(q);
-        N += p[static_cast<std::size_t>(i + nx * j)] * dx * dy;
-      }
-  }
-};
 
 /// Kalker's linear-theory coefficients C11, C22, C23 (Kalker 1990, Table E.3, rows a/b or b/a
 /// = 0.2, 0.5, 1 at ν = 0, 0.25, 0.5), interpolated to ν as CONTACT's routine linrol does

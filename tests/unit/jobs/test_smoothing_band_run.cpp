@@ -70,7 +70,7 @@ const std::string& cell(const mh::CsvTable& t, std::size_t row, const char* col)
 
 }  // namespace
 
-TEST_CASE("run: the band columns on a measured pair; every other column as without the band", "[band][run]") {
+TEST_CASE("run: the band columns on a measured pair, every other column as without the band", "[band][run]") {
   Dir d;
   nlohmann::json res;
   const mh::CsvTable on = run(measured_strips({}), d, "on", &res);
