@@ -221,7 +221,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     }
     if (want_csv) {
       fc = std::make_unique<OutputFile>(rd->path("cases.csv"));
-      fc->stream() << cases_csv_header(cf.tangential.enabled());
+      fc->stream() << cases_csv_header(cf.tangential.enabled(), cf.rcf.enabled());
       if (writes_ellipses(M)) {
         fe = std::make_unique<OutputFile>(rd->path("ellipses.csv"));
         fe->stream() << ellipses_csv_header(plastic, cf.rcf.enabled(), cf.tangential.enabled());

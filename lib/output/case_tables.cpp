@@ -124,6 +124,29 @@ void rcf_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el
   k.text("shakedown_regime", std::isfinite(p.p0_el_over_k) ? to_string(p.regime) : nullptr);
   k.number("FI_surf_el", p.fi_surf_el);
 }
+// The worst contact's RCF indicators in cases.csv and the case record (docs/outputs.md "RCF
+// columns"), after the band columns: the contact (ellipse or patch number, by the row's method)
+// whose elastic Hertz p0_el/k is the largest, which also has the largest FI_surf_el (FI_surf = f −
+// k/p0_el). One place for a run that mixes methods (auto), whose per-contact RCF columns are split
+// between ellipses.csv and patches.csv.
+template <class Sink>
+void rcf_case_fields(Sink& k, const RcfOptions& o, const CaseResult& r, bool failed) {
+  RcfPoint worst;
+  double which = NAN;
+  auto consider = [&](int contact, double N, double a_el, double b_el) {
+    const RcfPoint p = rcf_point(o.f, o.k, N, a_el, b_el);
+    if (std::isfinite(p.p0_el_over_k) && !(p.p0_el_over_k <= worst.p0_el_over_k)) worst = p, which = contact;
+  };
+  if (!failed) {
+    for (const LoadedEllipse& L : r.loaded) consider(L.ellipse, L.s.N, L.s.a_el, L.s.b_el);
+    for (const PatchResult& P : r.patches) consider(P.patch, P.N, P.a_el, P.b_el);
+  }
+  const bool any = std::isfinite(which);
+  k.optional("rcf_worst_contact", which);
+  k.optional("rcf_worst_p0_el_over_k", worst.p0_el_over_k);
+  k.text("rcf_worst_shakedown_regime", any ? to_string(worst.regime) : nullptr);
+  k.optional("rcf_worst_FI_surf_el", worst.fi_surf_el);
+}
 // The tangential columns of one contact (docs/tangential.md), appended last to ellipses.csv and
 // patches.csv and to their JSON records when friction is given: the creepages, then the creep
 // forces and the spin moment ON THE RAIL in the contact frame (x rolling, s towards the field
@@ -294,6 +317,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                      r.area_double_L * units::per_mm2}) {
       s += ','; pnum(s, v);
     }
+    if (rcf.enabled()) {
+      CsvSink k{s};
+      rcf_case_fields(k, rcf, r, failed);
+    }
     if (tangential) {
       CsvSink k{s};
       tangential_case_fields(k, r, failed);
@@ -358,6 +385,10 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     j["pmax_double_L_MPa"] = rv(r.pmax_double_L / units::MPa);
     j["area_half_L_mm2"] = rv(r.area_half_L * units::per_mm2);
     j["area_double_L_mm2"] = rv(r.area_double_L * units::per_mm2);
+    if (rcf.enabled()) {
+      JsonSink k{j};
+      rcf_case_fields(k, rcf, r, failed);
+    }
     if (tangential) {
       JsonSink k{j};
       tangential_case_fields(k, r, failed);
@@ -471,10 +502,14 @@ std::string pressure_table_header(Method m, bool plastic) {
 
 std::string patch_pressure_csv_header() { return "case,patch,x_mm,s_mm,y_rail_mm,p_MPa\n"; }
 
-std::string cases_csv_header(bool tangential) {
+std::string cases_csv_header(bool tangential, bool rcf) {
   std::string s = "case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,Y_over_Q,"
                   "pmax_MPa,area_mm2,gamma_main_deg,r_roll_main_mm,plastic,n_warnings,warnings,message,"
                   "pmax_half_L_MPa,pmax_double_L_MPa,area_half_L_mm2,area_double_L_mm2";
+  if (rcf) {
+    HeaderSink k{s};
+    rcf_case_fields(k, RcfOptions{}, CaseResult{}, true);
+  }
   if (tangential) {
     HeaderSink k{s};
     tangential_case_fields(k, CaseResult{}, true);

@@ -56,7 +56,7 @@ bool writes_patches(Method m);
 /// The header of pressure.csv of a method ("auto" writes none).
 std::string pressure_table_header(Method m, bool plastic);
 std::string patch_pressure_csv_header();
-std::string cases_csv_header(bool tangential = false);
+std::string cases_csv_header(bool tangential = false, bool rcf = false);
 std::string ellipses_csv_header(bool plastic, bool rcf = false, bool tangential = false);
 
 /// geometry.csv: what ellipses.csv would repeat for every Q, once per (t_Y,

@@ -107,10 +107,43 @@ for f in ("multi-hertzian/ellipses.csv", "strips/patches.csv"):
         assert reg in ("elastic", "elastic_shakedown", "plastic_shakedown", "ratchetting"), reg
         assert (reg == "ratchetting") == (float(x["FI_surf_el"]) > 0 and float(x["p0_el_over_k"]) > float(x["shakedown_limit_p0_over_k"])), x
 PY
+# cases.csv carries the worst contact's indicators (issue 38: an auto run splits the per-contact
+# columns between ellipses.csv and patches.csv): per case, the contact of the largest p0_el/k of
+# either file, its regime and FI_surf_el; for the multi-Hertzian and strip runs and an auto run
+# that mixes both.
+sed 's/"method": "strips"/"method": "auto"/; s/"tY_mm": \[-2, 0, 4, 9\]/"tY_mm": [-2, 0, 0.5, 4, 5, 9]/' "$tmp/strips.json" > "$tmp/auto.json"
+"$bin" run "$tmp/auto.json" -o "$tmp/auto" -q --format csv || true
+"$py" - "$tmp" <<'PY'
+import csv, os, sys
+t = sys.argv[1]
+for run in ("multi-hertzian", "strips", "auto"):
+    cases = {c["case"]: c for c in csv.DictReader(open(f"{t}/{run}/cases.csv"))}
+    per = {}
+    for f, key in (("ellipses.csv", "ellipse"), ("patches.csv", "patch")):
+        if os.path.exists(f"{t}/{run}/{f}"):
+            for x in csv.DictReader(open(f"{t}/{run}/{f}")):
+                if x["p0_el_over_k"] != "":
+                    per.setdefault(x["case"], []).append((float(x["p0_el_over_k"]), x[key], x["shakedown_regime"], x["FI_surf_el"], f))
+    methods = set()
+    for n, c in cases.items():
+        methods.add(c["method"])
+        if n not in per:
+            assert c["rcf_worst_contact"] == "" and c["rcf_worst_p0_el_over_k"] == "", c
+            continue
+        w = max(per[n])
+        assert float(c["rcf_worst_p0_el_over_k"]) == w[0], (run, n, c["rcf_worst_p0_el_over_k"], w)
+        assert c["rcf_worst_contact"] == w[1] and c["rcf_worst_shakedown_regime"] == w[2], (run, n, w)
+        assert c["rcf_worst_FI_surf_el"] == w[3], (run, n, w)
+        assert (w[4] == "patches.csv") == (c["method"] != "multi-hertzian"), (run, n, c["method"], w)
+    if run == "auto":
+        assert methods >= {"multi-hertzian", "strips"}, methods  # the case that motivated the columns
+print("rcf_columns: cases.csv's worst contact is the largest p0_el/k of ellipses.csv and patches.csv")
+PY
 # Without the key: no RCF columns.
 sed 's/"rcf": {[^}]*},//' "$tmp/strips.json" > "$tmp/plain.json"
 "$bin" run "$tmp/plain.json" -o "$tmp/plain" -q --format csv
 if head -1 "$tmp/plain/patches.csv" | grep -q FI_surf_el; then echo "RCF columns without rcf" >&2; exit 1; fi
+if head -1 "$tmp/plain/cases.csv" | grep -q rcf_worst; then echo "RCF case columns without rcf" >&2; exit 1; fi
 # A traction coefficient out of range, and no k without a yield stress, are input errors.
 sed 's/"traction_coefficient": 0.3/"traction_coefficient": 2/' "$tmp/strips.json" > "$tmp/bad.json"
 if "$bin" run "$tmp/bad.json" -o "$tmp/bad" -q 2>"$tmp/err"; then exit 1; fi
