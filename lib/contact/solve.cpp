@@ -7,12 +7,28 @@
 
 #include "contact/ellipse/hertz_validity.hpp"
 #include "contact/judge/judge.hpp"
+#include "contact/half_space/tangential_patch.hpp"
 #include "contact/tangential/tangential_solve.hpp"
 #include "geometry/gap.hpp"
 
 namespace mh {
 
 namespace {
+
+// The half-space options of a solve: with friction the patch grids' pressures are kept, the
+// tangential step solves on them (solve_tangential_patches).
+HalfSpaceOptions half_space_options(const MethodOptions& opt) {
+  HalfSpaceOptions o = opt.half_space;
+  o.keep_pressure = o.keep_pressure || opt.tangential.enabled();
+  return o;
+}
+
+// The tangential problem of a solved row (docs/tangential.md): creepages of every contact,
+// FASTSIM per ellipse, the exact solution per half-space patch, the case sums.
+void tangential_step(CaseResult& r, const Material& mat, double tY, const MethodOptions& opt) {
+  solve_tangential(r, mat, tY, opt.tangential);
+  solve_tangential_patches(r, mat, opt.tangential.mu);
+}
 
 // "auto" (docs/method.md §9): the multi-Hertzian answer is kept when it can be trusted — it
 // converged and every loaded ellipse passes the Hertz validity test, with no non-Hertzian
@@ -55,7 +71,7 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
     hand_on = false;
   }
   if (!hand_on) {
-    solve_tangential(mhr, mat, tY, opt.tangential);  // before Y/Q: Y includes the creep forces
+    tangential_step(mhr, mat, tY, opt);  // before Y/Q: Y includes the creep forces
     add_vehicle_state_warnings(mhr, G);
     decide_status(mhr);
     return mhr;
@@ -84,7 +100,7 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
     to_hs.reason = AutoReason::StripsFailed;
     to_hs.failed = strip_failed.front();
   }
-  CaseResult hr = solve_half_space(G, mat, tY, Q, opt.half_space, start);
+  CaseResult hr = solve_half_space(G, mat, tY, Q, half_space_options(opt), start);
   const std::vector<WarningClass> hs_failed = validity_failures(hr.warnings);
   if (hr.status != CaseStatus::Ok || !hs_failed.empty()) {
     Warning rejected = Warning::auto_to(Method::HalfSpace, AutoReason::HalfSpaceRejected);
@@ -107,7 +123,7 @@ CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double t
   CaseResult r;
   switch (opt.method) {
     case Method::Auto: r = solve_auto(G, mat, tY, Q, opt); break;
-    case Method::HalfSpace: r = solve_half_space(G, mat, tY, Q, opt.half_space); break;
+    case Method::HalfSpace: r = solve_half_space(G, mat, tY, Q, half_space_options(opt)); break;
     case Method::Strips: r = solve_strip_method(G, mat, tY, Q, opt.strips); break;
     case Method::MultiHertzian:
     default: r = solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian); break;
@@ -116,7 +132,7 @@ CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double t
   // auto's multi-Hertzian rows were judged already (their tests decided whether to keep them);
   // the grid rows it hands back are judged here like any other.
   if (opt.method != Method::Auto || r.method != Method::MultiHertzian) {
-    solve_tangential(r, mat, tY, opt.tangential);
+    tangential_step(r, mat, tY, opt);
     judge_case(r, G, mat, tY, opt);
   }
   return r;
@@ -136,7 +152,7 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
         out = solve_contact(G, mat, tY, Q, opt);
         return;
       }
-      solve_half_space(G, mat, tY, Q, opt.half_space, ws->half_space, out);
+      solve_half_space(G, mat, tY, Q, half_space_options(opt), ws->half_space, out);
       break;
     case Method::Strips:
       if (!ws) {
@@ -147,7 +163,7 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
       break;
     default: out = solve_contact(G, mat, tY, Q, opt); return;
   }
-  solve_tangential(out, mat, tY, opt.tangential);
+  tangential_step(out, mat, tY, opt);
   judge_case(out, G, mat, tY, opt);  // as above
 }
 

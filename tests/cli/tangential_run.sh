@@ -2,7 +2,8 @@
 # The tangential problem through `run` (docs/tangential.md): with friction and kinematics the
 # tables end with the tangential columns (forces on the rail, Tγ = Fx ξ + Fy η, Y_kN = Fy_kN + Fy_creep_kN,
 # Y_over_Q = Y_kN / Fz_kN), the worked example of docs/tangential.md prints what the page shows;
-# a grid method leaves the forces empty with tangential_unsupported; without friction no column is
+# the strip method leaves the forces empty with tangential_unsupported (the half-space method's
+# exact solve per patch: tests/unit/contact/test_creepage.cpp); without friction no column is
 # added. Breaks seen to fail: the sign of the output forces flipped (Tgamma check), Y_over_Q
 # without the creep forces (Y check).
 set -euo pipefail

@@ -40,4 +40,17 @@ HalfSpaceTangentialResult solve_tangential_patch(const PatchResult& patch, const
   }
 }
 
+void solve_tangential_patches(CaseResult& r, const Material& material, double mu) {
+  if (r.method != Method::HalfSpace || !r.tangential.asked || !(mu > 0)) return;
+  for (PatchResult& P : r.patches) {
+    const Creepages c = P.t.c;
+    const HalfSpaceTangentialResult t = solve_tangential_patch(P, material, c, mu);
+    if (t.status != TangentialStatus::Ok) continue;
+    P.t = t.forces;
+    P.t.c = c;
+    P.t.mu = mu;
+  }
+  sum_tangential(r, mu);
+}
+
 }  // namespace mh

@@ -7,6 +7,7 @@
 #include "contact/case_result.hpp"
 #include "contact/half_space/tangential_rolling.hpp"
 #include "contact/options.hpp"
+#include "contact/tangential/tangential_solve.hpp"
 
 namespace mh {
 
@@ -20,5 +21,12 @@ namespace mh {
 HalfSpaceTangentialResult solve_tangential_patch(const PatchResult& patch, const Material& material,
                                                  const Creepages& c, double mu,
                                                  const HalfSpaceTangentialOptions& options = {});
+
+/// The half-space method's tangential step (docs/tangential.md, "Half-space"): every patch of a
+/// half-space row whose creepages solve_tangential set (friction given) and whose pressure grid was
+/// kept (HalfSpaceOptions::keep_pressure) is solved exactly; the case sums follow
+/// (sum_tangential). A patch whose solve fails keeps solved = false (the row then carries
+/// tangential_unsupported). No-op for other methods or without friction.
+void solve_tangential_patches(CaseResult& r, const Material& material, double mu);
 
 }  // namespace mh

@@ -39,7 +39,8 @@ void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Materi
                            const MethodOptions& opt) {
   // Every method: a plastic contact loaded beyond the domain its tests cover (evidence.hpp).
   add_evidence_warnings(r, mat);
-  // Friction given on a grid method: its tangential problem is not solved yet (docs/status.md).
+  // Friction given, the tangential problem not solved (strips; a half-space patch whose exact
+  // solve failed: docs/status.md).
   if (r.tangential.asked && !r.tangential.solved && r.method != Method::MultiHertzian)
     r.warnings.push_back(Warning(WarningClass::TangentialUnsupported));
   if (r.method != Method::MultiHertzian) return;

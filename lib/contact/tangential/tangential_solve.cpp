@@ -36,8 +36,6 @@ void solve_tangential(CaseResult& r, const Material& mat, double tY, const Tange
   r.tangential.asked = true;
   double G = 0, nu = 0;
   combined_elastic(mat, G, nu);
-  double Fx = 0, Fy = 0, Mz = 0, F = 0, N = 0;
-  bool all = true;
   for (LoadedEllipse& L : r.loaded) {
     L.t = TangentialResult{};
     L.t.c = creepages_of(opt, tY, L.g.r_roll, L.g.gamma, L.g.y_w);
@@ -46,24 +44,38 @@ void solve_tangential(CaseResult& r, const Material& mat, double tY, const Tange
     // FASTSIM on the patch the normal law carries (the plastic patch when plastic; its traction
     // bound the elliptical one of that patch: docs/tangential.md, limits).
     L.t = fastsim(L.t.c, L.s.a, L.s.b, L.s.N, opt.mu, G, nu, opt.fastsim);
-    Fx -= L.t.Fx;  // on the rail
-    Fy -= L.t.Fy * L.cos_gamma;
-    Mz -= L.t.Mz;
-    F += std::hypot(L.t.Fx, L.t.Fy);
-    N += L.s.N;
   }
   for (PatchResult& P : r.patches) {
     P.t = TangentialResult{};
     P.t.c = creepages_of(opt, tY, P.r_roll, P.gamma, P.y_w);
     P.t.mu = opt.mu;
-    all = false;  // not solved by the grid methods yet (tangential_unsupported)
   }
-  if (!all || r.loaded.empty() || !(N > 0)) return;
+  sum_tangential(r, opt.mu);
+}
+
+void sum_tangential(CaseResult& r, double mu) {
+  double Fx = 0, Fy = 0, Mz = 0, F = 0, N = 0;
+  bool all = !r.loaded.empty() || !r.patches.empty();
+  auto add = [&](const TangentialResult& t, double Nc, double cos_gamma) {
+    if (!t.solved) {
+      all = all && !(Nc > 0);  // an unloaded ellipse has nothing to solve
+      return;
+    }
+    Fx -= t.Fx;  // on the rail
+    Fy -= t.Fy * cos_gamma;
+    Mz -= t.Mz;
+    F += std::hypot(t.Fx, t.Fy);
+    N += Nc;
+  };
+  for (const LoadedEllipse& L : r.loaded) add(L.t, L.s.N > 0 && L.s.a > 0 && L.s.b > 0 ? L.s.N : 0, L.cos_gamma);
+  for (const PatchResult& P : r.patches) add(P.t, P.N, std::cos(P.gamma));
+  r.tangential.solved = false;
+  if (!all || !(N > 0)) return;
   r.tangential.solved = true;
   r.tangential.Fx = Fx;
   r.tangential.Fy_creep = Fy;
   r.tangential.Mz = Mz;
-  r.tangential.F_over_muN = opt.mu > 0 ? F / (opt.mu * N) : NAN;
+  r.tangential.F_over_muN = mu > 0 ? F / (mu * N) : NAN;
 }
 
 }  // namespace mh

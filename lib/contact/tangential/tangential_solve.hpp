@@ -1,8 +1,10 @@
 #pragma once
 // The tangential problem of a solved case (docs/tangential.md): the creepages of each contact
-// (from the kinematics or as given) and FASTSIM on each loaded multi-Hertzian ellipse. The grid
-// methods (half-space, strips) do not solve it yet: their contacts keep TangentialResult::solved
-// false (NaN columns) and the case carries the warning `tangential_unsupported`.
+// (from the kinematics or as given) and FASTSIM on each loaded multi-Hertzian ellipse. A grid
+// patch gets its creepages here; the half-space method solves its patches exactly afterwards
+// (contact/half_space/tangential_patch.hpp, solve_tangential_patches); the strips do not solve it
+// yet: their contacts keep TangentialResult::solved false (NaN columns) and the case carries the
+// warning `tangential_unsupported`.
 #include "contact/case_result.hpp"
 #include "contact/options.hpp"
 
@@ -14,5 +16,9 @@ void combined_elastic(const Material& mat, double& G, double& nu);
 
 /// Fill r's tangential results when opt.enabled() (nothing otherwise). t_Y [m]: the case's.
 void solve_tangential(CaseResult& r, const Material& mat, double tY, const TangentialOptions& opt);
+
+/// The case sums of r.tangential from its contacts' results (forces on the rail): solved when
+/// every loaded ellipse and patch is. mu: the friction coefficient.
+void sum_tangential(CaseResult& r, double mu);
 
 }  // namespace mh

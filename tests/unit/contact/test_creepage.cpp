@@ -126,3 +126,37 @@ TEST_CASE("grid methods: creepages given, forces not solved, tangential_unsuppor
   const CaseResult r0 = solve_contact(G, testing::steel(), 0.0, 80e3, mo);
   for (const Warning& w : r0.warnings) CHECK(w.cls != WarningClass::TangentialUnsupported);
 }
+
+TEST_CASE("half-space rows: each patch solved exactly, full sliding on a wheel-rail patch gives |F| = mu N", "[tangential][half_space]") {
+  // Closed form (issue 33 §4): at a creepage far beyond saturation every element slips at the
+  // bound μ p, so |F| = μ N on every patch, whatever its shape. Manchester pair, t_Y 0 and 3 mm.
+  const ContactGeometry& G = testing::manchester_geometry();
+  MethodOptions mo;
+  mo.method = Method::HalfSpace;
+  mo.tangential.mu = 0.3;
+  mo.tangential.source = TangentialOptions::Source::Creepages;
+  mo.tangential.creep = {0.05, 0.0, 0.0};
+  for (double tY : {0.0, 3e-3}) {
+    INFO("t_Y = " << tY);
+    const CaseResult r = solve_contact(G, testing::steel(), tY, 80e3, mo);
+    REQUIRE(!r.patches.empty());
+    REQUIRE(r.tangential.solved);
+    for (const Warning& w : r.warnings) CHECK(w.cls != WarningClass::TangentialUnsupported);
+    double N = 0;
+    for (const PatchResult& P : r.patches) {
+      REQUIRE(P.t.solved);
+      CHECK(std::hypot(P.t.Fx, P.t.Fy) == Approx(0.3 * P.N).epsilon(1e-3));
+      CHECK(P.t.Fx < 0);  // ξ > 0: the force on the wheel along −x (tangential_types.hpp)
+      CHECK(P.t.adhesion_fraction == Approx(0).margin(1e-12));
+      N += P.N;
+    }
+    CHECK(r.tangential.F_over_muN == Approx(1).epsilon(1e-3));
+    CHECK(r.tangential.Fx == Approx(0.3 * N).epsilon(1e-3));  // the sum, on the rail: along +x
+  }
+  // Small creepage: partly in adhesion, |F| < μN.
+  mo.tangential.creep = {2e-4, 0.0, 0.0};
+  const CaseResult s = solve_contact(G, testing::steel(), 3e-3, 80e3, mo);
+  REQUIRE(s.tangential.solved);
+  CHECK(s.tangential.F_over_muN < 0.9);
+  CHECK(s.patches.front().t.adhesion_fraction > 0.1);
+}
