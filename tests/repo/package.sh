@@ -25,6 +25,14 @@ grep -q '^t_s,tY_mm,status' "$tmp/c.out" || { echo "package: c_stepping printed 
 [ "$(grep -cE ',(ok|outside_validity),' "$tmp/c.out")" = 21 ] || { echo "package: c_stepping: expected 21 solved rows"; cat "$tmp/c.out"; exit 1; }
 grep -q '^approach .*Fz 50.000 kN' "$tmp/c.out" || { echo "package: c_stepping: approach round trip"; cat "$tmp/c.out"; exit 1; }
 grep -q '^roll refused' "$tmp/c.out" || { echo "package: c_stepping: roll not refused"; exit 1; }
+# docs/c-api.md "Worked example" prints this run's output (issue 38: every printed output in the
+# docs comes from a run a test checks): each shown line but "..." is a line of it.
+awk '/^    \/tmp\/cs\/c_stepping$/ { on = 1; next } on && /^    / { sub(/^    /, ""); print; next } on && NF { exit }' \
+  "$src/docs/c-api.md" | grep -vx '\.\.\.' | grep -v '^$' > "$tmp/shown.txt"
+[ "$(wc -l < "$tmp/shown.txt")" -ge 8 ] || { echo "package: docs/c-api.md's example output not found"; exit 1; }
+while IFS= read -r line; do
+  grep -qxF -- "$line" "$tmp/c.out" || { echo "package: docs/c-api.md shows a line c_stepping does not print: $line"; cat "$tmp/c.out"; exit 1; }
+done < "$tmp/shown.txt"
 "$tmp/c_build/c_stepping" "$src/cases/manchester.json" > "$tmp/m.out"
 "$tmp/c_build/c_stepping" /nonexistent.json 2> "$tmp/err" && { echo "package: a missing case file must fail"; exit 1; }
 grep -q 'c_stepping: /nonexistent.json: input: ' "$tmp/err" || { echo "package: error message"; cat "$tmp/err"; exit 1; }

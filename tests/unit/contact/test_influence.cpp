@@ -12,36 +12,13 @@
 #include "contact/half_space/influence.hpp"
 #include "contact/options.hpp"
 
+#include "support/gauss_legendre.hpp"
+
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-/// 16-point Gauss–Legendre nodes and weights on [−1, 1] (Abramowitz & Stegun, Table 25.4),
-/// computed here by Newton on P_16 so the test does not depend on a typed table.
-struct Gauss {
-  static constexpr int n = 16;
-  double x[n], w[n];
-  Gauss() {
-    for (int i = 0; i < n; ++i) {
-      double z = std::cos(pi * (i + 0.75) / (n + 0.5));  // A&S 22.16 asymptotic start
-      double dp = 0;
-      for (int k = 0; k < 100; ++k) {
-        double p0 = 1, p1 = z;  // Bonnet recursion (A&S 22.7.10)
-        for (int j = 2; j <= n; ++j) {
-          const double p2 = ((2 * j - 1) * z * p1 - (j - 1) * p0) / j;
-          p0 = p1;
-          p1 = p2;
-        }
-        dp = n * (z * p1 - p0) / (z * z - 1);
-        const double dz = p1 / dp;
-        z -= dz;
-        if (std::fabs(dz) < 1e-16) break;
-      }
-      x[i] = z;
-      w[i] = 2 / ((1 - z * z) * dp * dp);  // A&S 25.4.29
-    }
-  }
-};
+using Gauss = GaussLegendre<16>;  // tests/support/gauss_legendre.hpp
 const Gauss gauss;
 
 using F2 = std::function<double(double, double)>;

@@ -19,44 +19,23 @@
 #include "contact/half_space/tangential_influence.hpp"
 #include "contact/half_space/tangential_patch.hpp"
 #include "contact/half_space/tangential_rolling.hpp"
+#include "contact/tangential/kalker.hpp"
+#include "support/gauss_legendre.hpp"
 #include "support/hertz_grid.hpp"
 
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-/// Gauss–Legendre nodes and weights on [−1, 1] by Newton on P_n (A&S 22.7.10, 25.4.29).
-struct GaussLegendre {
-  static constexpr int n = 24;
-  double x[n], w[n];
-  GaussLegendre() {
-    for (int i = 0; i < n; ++i) {
-      double z = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 0;
-      for (int k = 0; k < 100; ++k) {
-        double p0 = 1, p1 = z;
-        for (int j = 2; j <= n; ++j) {
-          const double p2 = ((2 * j - 1) * z * p1 - (j - 1) * p0) / j;
-          p0 = p1;
-          p1 = p2;
-        }
-        dp = n * (z * p1 - p0) / (z * z - 1);
-        const double dz = p1 / dp;
-        z -= dz;
-        if (std::fabs(dz) < 1e-16) break;
-      }
-      x[i] = z;
-      w[i] = 2 / ((1 - z * z) * dp * dp);
-    }
-  }
-};
-const GaussLegendre gl;
+using GaussLegendre24 = GaussLegendre<24>;  // tests/support/gauss_legendre.hpp
+const GaussLegendre24 gl;
 
 /// ∫ f over [t0, t1], composite Gauss on m pieces.
 double gauss1(const std::function<double(double)>& f, double t0, double t1, int m) {
   double s = 0;
   const double h = (t1 - t0) / m;
   for (int k = 0; k < m; ++k)
-    for (int i = 0; i < GaussLegendre::n; ++i)
+    for (int i = 0; i < GaussLegendre24::n; ++i)
       s += 0.5 * h * gl.w[i] * f(t0 + h * (k + 0.5 + 0.5 * gl.x[i]));
   return s;
 }
@@ -97,36 +76,13 @@ double quadrature(int which, double x, double y, double a, double b) {
                                               : tensor_quadrature(which, x, y, a, b);
 }
 
-/// Kalker's linear-theory coefficients C11, C22, C23 (Kalker 1990, Table E.3, rows a/b or b/a
-/// = 0.2, 0.5, 1 at ν = 0, 0.25, 0.5), interpolated to ν as CONTACT's routine linrol does
-/// (src/m_hertz.f90: a parabola in 1/C through the three ν columns). Values at ν = 0.28:
+/// Kalker's linear-theory coefficients (Kalker 1990, Table E.3) at ν by the library's one table
+/// (contact/tangential/kalker.hpp, checked entry by entry against the book and CONTACT's linrol
+/// in test_kalker.cpp). Values at ν = 0.28:
 ///   a/b = 0.2: 3.4959, 2.6341, 0.6218;  0.5: 3.7335, 3.0256, 0.9435;  1: 4.2262, 3.7049, 1.4881;
 ///   2: 5.2037, 4.9715, 2.6566;  5: 7.8916, 8.3085, 6.7593.
-struct Linear {
-  double C11, C22, C23;
-};
-Linear kalker(double aob, double nu) {
-  struct Row {
-    double aob, c[3][3];
-  };
-  static const Row rows[] = {
-      {0.2, {{2.59, 3.37, 4.81}, {2.59, 2.63, 2.66}, {.483, .603, .809}}},
-      {0.5, {{2.88, 3.62, 4.83}, {2.88, 3.01, 3.14}, {.827, .929, 1.07}}},
-      {1.0, {{3.40, 4.12, 5.20}, {3.40, 3.67, 3.98}, {1.33, 1.47, 1.63}}},
-      {2.0, {{4.37, 5.10, 6.11}, {4.37, 4.90, 5.56}, {2.35, 2.62, 2.96}}},
-      {5.0, {{6.96, 7.78, 8.82}, {6.96, 8.14, 9.79}, {5.72, 6.63, 7.89}}},
-  };
-  double out[3] = {NAN, NAN, NAN};
-  for (const Row& r : rows)
-    if (std::fabs(r.aob - aob) < 1e-9)
-      for (int k = 0; k < 3; ++k) {
-        const double* c = r.c[k];
-        const double inv = (nu - 0.25) * (nu - 0.5) * 8 / c[0] - (nu - 0.5) * nu * 16 / c[1] +
-                           nu * (nu - 0.25) * 8 / c[2];
-        out[k] = 1 / inv;
-      }
-  return {out[0], out[1], out[2]};
-}
+using Linear = mh::KalkerCoefficients;
+Linear kalker(double aob, double nu) { return mh::kalker_coefficients(aob, nu); }
 
 }  // namespace
 
