@@ -265,7 +265,8 @@ const char* fft_backend() { return "pocketfft"; }
 ///    kernel's spectrum, backward;
 ///  - rows back, complex-to-real (the imaginary parts at kx = 0 and mx/2 are not read, as a c2r
 ///    transform does), only the ny rows that are wanted.
-/// Each 1-D call allocates its own scratch of one sequence inside PocketFFT (rfftp/cfftp::exec).
+/// Each 1-D call's scratch of one sequence (rfftp/cfftp::exec) comes from the thread's
+/// ScratchStack above: no allocation once the thread has transformed its largest grid.
 struct InfluenceGrid::Fft {
   using Vd = mh_pocketfft::Vd;
   static constexpr int L = mh_pocketfft::L;

@@ -73,8 +73,9 @@ class InfluenceGrid {
   InfluenceGrid& operator=(const InfluenceGrid&) = delete;
 
   /// u = C p; p and u hold nx·ny values each (they may alias). No plan is built here. FFTW
-  /// allocates nothing; PocketFFT allocates, inside each of its 1-D calls, a scratch copy of the
-  /// sequences it transforms (about ny + mx/2 small blocks per apply()).
+  /// allocates nothing; PocketFFT's 1-D calls take their scratch from a per-thread stack
+  /// (influence.cpp, ScratchStack), so after a thread's first apply() of its largest grid nothing
+  /// is allocated either (tests/alloc).
   void apply(const double* p, double* u) const;
   /// C_00 = H · love_rectangle(0, 0, dx/2, dy/2) [m/Pa]: displacement of an element's centre per
   /// unit pressure on that element alone.
