@@ -374,14 +374,21 @@ struct InfluenceGrid::Fft {
 
 #endif
 
-InfluenceGrid::InfluenceGrid(int nx, int ny, double dx, double dy, double compliance)
-    : nx_(nx), ny_(ny), dx_(dx), dy_(dy), compliance_(compliance) {
+namespace {
+// The grid both constructors need: at least 1 × 1 elements of positive, finite size.
+void check_grid(int nx, int ny, double dx, double dy) {
   if (nx < 1 || ny < 1)
     throw std::invalid_argument("InfluenceGrid: nx = " + std::to_string(nx) + ", ny = " +
                                 std::to_string(ny) + ": the grid needs at least 1 × 1 elements");
   if (!(dx > 0) || !(dy > 0) || !std::isfinite(dx) || !std::isfinite(dy))
     throw std::invalid_argument("InfluenceGrid: dx = " + std::to_string(dx) + " m, dy = " +
                                 std::to_string(dy) + " m: element sizes must be > 0 and finite");
+}
+}  // namespace
+
+InfluenceGrid::InfluenceGrid(int nx, int ny, double dx, double dy, double compliance)
+    : nx_(nx), ny_(ny), dx_(dx), dy_(dy), compliance_(compliance) {
+  check_grid(nx, ny, dx, dy);
   if (!(compliance > 0) || !std::isfinite(compliance))
     throw std::invalid_argument("InfluenceGrid: compliance = " + std::to_string(compliance) +
                                 " 1/Pa: must be > 0 and finite");
@@ -390,12 +397,7 @@ InfluenceGrid::InfluenceGrid(int nx, int ny, double dx, double dy, double compli
 
 InfluenceGrid::InfluenceGrid(int nx, int ny, double dx, double dy, Kernel kernel)
     : nx_(nx), ny_(ny), dx_(dx), dy_(dy), compliance_(std::nan("")), kernel_(std::move(kernel)) {
-  if (nx < 1 || ny < 1)
-    throw std::invalid_argument("InfluenceGrid: nx = " + std::to_string(nx) + ", ny = " +
-                                std::to_string(ny) + ": the grid needs at least 1 × 1 elements");
-  if (!(dx > 0) || !(dy > 0) || !std::isfinite(dx) || !std::isfinite(dy))
-    throw std::invalid_argument("InfluenceGrid: dx = " + std::to_string(dx) + " m, dy = " +
-                                std::to_string(dy) + " m: element sizes must be > 0 and finite");
+  check_grid(nx, ny, dx, dy);
   if (!kernel_) throw std::invalid_argument("InfluenceGrid: the kernel function is empty");
   init_fft();
 }

@@ -30,9 +30,10 @@ HalfSpaceTangentialResult solve_tangential_patch(const PatchResult& patch, const
                   std::to_string(patch.p.size()) + " pressures)";
     return res;
   }
-  const double G = material.E / (2 * (1 + material.nu));
+  double G = 0, nu = 0;
+  combined_elastic(material, G, nu);  // equal bodies here: G = E / (2 (1 + ν)), ν
   try {
-    HalfSpaceTangentialSolver solver(patch.nx, patch.ns, patch.dx, patch.ds, G, material.nu);
+    HalfSpaceTangentialSolver solver(patch.nx, patch.ns, patch.dx, patch.ds, G, nu);
     return solver.solve(patch.p.data(), patch.x0, patch.s0, c, mu, options);
   } catch (const std::exception& e) {  // invalid grid or material, or no memory
     res.message = std::string("patch ") + std::to_string(patch.patch) + ": " + e.what();
