@@ -341,6 +341,16 @@ MHC_API int32_t mhc_result_n_warnings(const mhc_workspace* ws);
 /** Warning i (0-based) of the last case solved with `ws`, as data into *out (out->struct_size
  *  must be set). MHC_ERR_ARGUMENT when i is out of range. */
 MHC_API mhc_error mhc_result_warning(const mhc_workspace* ws, int32_t i, mhc_warning* out);
+/** mhc_solve_many with each case's warnings as data: the first min(out[i].n_warnings, per_case)
+ *  warnings of case i into warnings[i * per_case + k] (k = 0 ...), each of warning_size bytes
+ *  (sizeof(mhc_warning); the struct_size of each is set by the call). A case with more than
+ *  per_case warnings keeps its count in out[i].n_warnings; the rest are not written (a case has
+ *  at most one warning per class and contact: 8 per case is ample for one or two contacts).
+ *  per_case = 0 or warnings = NULL: as mhc_solve_many. */
+MHC_API mhc_error mhc_solve_many_warnings(const mhc_pair* pair, int32_t prescribe, size_t n, const double* tY_m,
+                                          const double* roll_rad, const double* value, mhc_result* out,
+                                          size_t result_size, mhc_warning* warnings, size_t warning_size,
+                                          size_t per_case, int32_t n_threads);
 /** Warning i of the last case solved with `ws` as written in cases.csv
  *  ("non_hertzian:ellipse=3:gap_kink=2.4>0.1"); "" when i is out of range. Valid until the
  *  thread's next call of this function. */

@@ -83,6 +83,9 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
 /// Convert a case's result. Q: the load prescribed (NaN: the load carried, Fz).
 void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_result* out);
 
+/// Convert one warning to its C form (out->struct_size set by the caller and kept).
+void fill_warning(const Warning& w, mhc_warning* out);
+
 /// Run body(i, ws) for i in [0, n) on n_threads threads (0: all cores), each with its own
 /// workspace on `pair`; blocks of cases are handed out in order. Returns the first non-OK code
 /// of body (the others still run) or an exception's code.

@@ -476,8 +476,9 @@ mhc_error mhc_solve_approach(const mhc_pair* pair, mhc_workspace* ws, double tY_
   return solve_one(pair, ws, true, tY_m, roll_rad, dz_m, out);
 }
 
-mhc_error mhc_solve_many(const mhc_pair* pair, int32_t prescribe, size_t n, const double* tY_m, const double* roll_rad,
-                         const double* value, mhc_result* out, size_t result_size, int32_t n_threads) {
+mhc_error mhc_solve_many_warnings(const mhc_pair* pair, int32_t prescribe, size_t n, const double* tY_m,
+                                  const double* roll_rad, const double* value, mhc_result* out, size_t result_size,
+                                  mhc_warning* warnings, size_t warning_size, size_t per_case, int32_t n_threads) {
   mh::capi::last_message().clear();
   if (mhc_error e = need(pair, "pair")) return e;
   if (n == 0) return MHC_OK;
@@ -488,12 +489,30 @@ mhc_error mhc_solve_many(const mhc_pair* pair, int32_t prescribe, size_t n, cons
     return fail(MHC_ERR_ARGUMENT, "prescribe = " + std::to_string(prescribe) +
                                       ": must be MHC_PRESCRIBE_LOAD (0) or MHC_PRESCRIBE_APPROACH (1)");
   if (n_threads < 0) return fail(MHC_ERR_ARGUMENT, "n_threads = " + std::to_string(n_threads) + ": must be >= 0");
+  const bool with_warnings = warnings != nullptr && per_case > 0;
+  if (with_warnings && warning_size < sizeof(mhc_warning))
+    return fail(MHC_ERR_ARGUMENT, "warning_size = " + std::to_string(warning_size) + ": set it to sizeof(mhc_warning) (" +
+                                      std::to_string(sizeof(mhc_warning)) + ")");
   const bool approach = prescribe == MHC_PRESCRIBE_APPROACH;
   return mh::capi::for_each_case(*pair, n, n_threads, [&](std::size_t i, mhc_workspace& ws) {
     auto* r = reinterpret_cast<mhc_result*>(reinterpret_cast<char*>(out) + i * result_size);
     r->struct_size = result_size;
-    return mh::capi::solve_case(*pair, ws, approach, tY_m[i], roll_rad ? roll_rad[i] : 0.0, value[i], r);
+    const mhc_error e = mh::capi::solve_case(*pair, ws, approach, tY_m[i], roll_rad ? roll_rad[i] : 0.0, value[i], r);
+    if (with_warnings) {
+      const std::size_t m = std::min(per_case, ws.r.warnings.size());
+      for (std::size_t k = 0; k < m; ++k) {
+        auto* w = reinterpret_cast<mhc_warning*>(reinterpret_cast<char*>(warnings) + (i * per_case + k) * warning_size);
+        w->struct_size = warning_size;
+        mh::capi::fill_warning(ws.r.warnings[k], w);
+      }
+    }
+    return e;
   });
+}
+
+mhc_error mhc_solve_many(const mhc_pair* pair, int32_t prescribe, size_t n, const double* tY_m, const double* roll_rad,
+                         const double* value, mhc_result* out, size_t result_size, int32_t n_threads) {
+  return mhc_solve_many_warnings(pair, prescribe, n, tY_m, roll_rad, value, out, result_size, nullptr, 0, 0, n_threads);
 }
 
 }  // extern "C"

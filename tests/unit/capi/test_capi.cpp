@@ -182,6 +182,16 @@ TEST_CASE("C interface: the same numbers as `mhcontact run` on the Manchester sw
   std::vector<mhc_result> many(rows.size());
   REQUIRE(mhc_solve_many(pair, MHC_PRESCRIBE_LOAD, rows.size(), tY.data(), nullptr, Q.data(), many.data(),
                          sizeof(mhc_result), 2) == MHC_OK);
+  // The many-case call with each case's warnings as data (issue 32: it gave bits and a count only).
+  constexpr std::size_t kPerCase = 8;
+  std::vector<mhc_result> many_w(rows.size());
+  std::vector<mhc_warning> wmany(rows.size() * kPerCase);
+  std::memset(static_cast<void*>(wmany.data()), 0xab, wmany.size() * sizeof(mhc_warning));
+  REQUIRE(mhc_solve_many_warnings(pair, MHC_PRESCRIBE_LOAD, rows.size(), tY.data(), nullptr, Q.data(), many_w.data(),
+                                  sizeof(mhc_result), wmany.data(), sizeof(mhc_warning), kPerCase, 2) == MHC_OK);
+  CHECK(mhc_solve_many_warnings(pair, MHC_PRESCRIBE_LOAD, rows.size(), tY.data(), nullptr, Q.data(), many_w.data(),
+                                sizeof(mhc_result), wmany.data(), sizeof(mhc_warning) - 8, kPerCase, 2) == MHC_ERR_ARGUMENT);
+  CHECK(std::string(mhc_last_message()).find("warning_size") != std::string::npos);
   int compared = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     mhc_result r = fresh();
@@ -216,7 +226,10 @@ TEST_CASE("C interface: the same numbers as `mhcontact run` on the Manchester sw
         }
       }
       if (r.status == MHC_STATUS_OUTSIDE_VALIDITY) CHECK(wd.contact_kind >= 0);
+      REQUIRE(static_cast<std::size_t>(k) < kPerCase);
+      CHECK(std::memcmp(&wd, &wmany[i * kPerCase + static_cast<std::size_t>(k)], sizeof wd) == 0);
     }
+    CHECK(std::memcmp(&r, &many_w[i], sizeof r) == 0);
     CHECK(text == rows[i].at("warnings"));
     mhc_warning bad;
     bad.struct_size = sizeof bad;
