@@ -1,5 +1,5 @@
 // wheelset_dynamics: the three checks of the dynamics example (docs/wheelset-dynamics.md).
-//   wheelset_dynamics klingel  [--amplitude-mm A] [--speed V] [--distance D] [--csv FILE]
+//   wheelset_dynamics klingel  [--amplitude-mm A] [--speed V] [--distance D] [--csv FILE] [--half-cycles FILE]
 //   wheelset_dynamics critical [--perturbation-mm A] [--distance D] [--csv FILE]
 //   wheelset_dynamics worn     --wheel FILE [--speed V] [--amplitude-mm A] [--distance D] [--csv FILE]
 // Exit 0 when the check's figures are printed, 2 on a bad argument, 1 on a failed run.
@@ -19,7 +19,7 @@ namespace {
 int usage(const char* why) {
   std::fprintf(stderr,
                "wheelset_dynamics: %s\n"
-               "usage: wheelset_dynamics klingel  [--amplitude-mm A] [--speed V] [--distance D] [--csv FILE]\n"
+               "usage: wheelset_dynamics klingel  [--amplitude-mm A] [--speed V] [--distance D] [--csv FILE] [--half-cycles FILE]\n"
                "       wheelset_dynamics critical [--perturbation-mm A] [--distance D] [--csv FILE]\n"
                "       wheelset_dynamics worn     --wheel FILE [--speed V] [--amplitude-mm A] [--distance D] [--csv FILE]\n"
                "units: mm, m/s, m\n",
@@ -69,7 +69,14 @@ int main(int argc, char** argv) {
     }
     if (cmd == "klingel") {
       const double A = num("amplitude-mm", 3) * 1e-3, V = num("speed", 2), D = num("distance", 60);
+      const std::string hc = a.count("half-cycles") ? a["half-cycles"] : "";
+      a.erase("half-cycles");
       if (!a.empty()) return usage(("unknown option --" + a.begin()->first).c_str());
+      std::ofstream hf;
+      if (!hc.empty()) {
+        hf.open(hc);
+        if (!hf) return usage(("cannot write " + hc).c_str());
+      }
       ContactAdapter c(standard_setup());
       const KlingelResult K = klingel(c, A, V, D);
       std::printf("Klingel, S1002 on 60E1 1:40, free wheelset released at %.3g mm, V = %g m/s: %s\n", A * 1e3, V,
@@ -85,6 +92,12 @@ int main(int argc, char** argv) {
                   100 * K.mean_error(), 100 * K.max_error(), K.amplitude * 1e3, K.L_linear);
       print_cost("  cost", K.run);
       if (out.is_open()) write_samples(out, "klingel", K.run);
+      if (hf.is_open()) {
+        hf << "s0_m,s1_m,peak_mm,tan_gamma_e,L_sim_m,L_klingel_m,error_pct\n";
+        for (const HalfCycle& h : K.half_cycles)
+          hf << h.s0 << ',' << h.s1 << ',' << h.peak * 1e3 << ',' << h.lambda << ',' << h.L_sim << ',' << h.L_klingel
+             << ',' << 100 * h.error() << '\n';
+      }
       return K.run.status == "ok" ? 0 : 1;
     }
     if (cmd == "critical") {

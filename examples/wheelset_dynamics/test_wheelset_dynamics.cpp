@@ -79,6 +79,12 @@ TEST_CASE("Klingel: a free wheelset's wavelength against 2 pi sqrt(r0 s / lambda
   // the same tan γe within 1.2 %) against Klingel at the conicity of its own peak (the EN 15302
   // amplitude is the peak of the oscillation); tolerance 3 % (issue 34).
   ContactAdapter& c = standard_contact();
+  // The conicity is `mhcontact wheelset`'s: the figures it prints for S1002 on 60E1 1:40
+  // (amplitudes 2, 3, 4 mm, conicity.csv of 28 Nov 2026; docs/wheelset-dynamics.md).
+  const GeometryReference g(c.setup());
+  CHECK(g.conicity(2e-3) == Approx(0.2185825615).epsilon(1e-8));
+  CHECK(g.conicity(3e-3) == Approx(0.1741737711).epsilon(1e-8));
+  CHECK(g.conicity(4e-3) == Approx(0.1550775975).epsilon(1e-8));
   const KlingelResult K = klingel(c, 4e-3, 2.0, 60);
   REQUIRE(K.run.status == "ok");
   int n = 0;
