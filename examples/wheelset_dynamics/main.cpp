@@ -2,19 +2,26 @@
 //   wheelset_dynamics klingel  [--amplitude-mm A] [--speed V] [--distance D] [--csv FILE] [--half-cycles FILE]
 //   wheelset_dynamics critical [--perturbation-mm A] [--distance D] [--csv FILE]
 //   wheelset_dynamics worn     --wheel FILE [--speed V] [--amplitude-mm A] [--distance D] [--csv FILE]
-// Exit 0 when the check's figures are printed, 2 on a bad argument, 1 on a failed run.
+// Exit 0 when the check's figures are printed, 1 on a failed run, 2 on a bad argument or input
+// file (mh::InputError: the file, the value and the rule).
 #include <cstdio>
+#include <cmath>
 #include <cstring>
 #include <exception>
 #include <fstream>
 #include <map>
 #include <string>
 
+#include "core/errors.hpp"
 #include "experiments.hpp"
 
 using namespace wsdyn;
 
 namespace {
+
+struct BadArgument : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 int usage(const char* why) {
   std::fprintf(stderr,
@@ -53,8 +60,14 @@ int main(int argc, char** argv) {
     auto it = a.find(k);
     if (it == a.end()) return def;
     size_t pos = 0;
-    const double v = std::stod(it->second, &pos);
-    if (pos != it->second.size() || !(v > 0)) throw std::invalid_argument(std::string("--") + k + " " + it->second + ": a positive number");
+    double v = NAN;
+    try {
+      v = std::stod(it->second, &pos);
+    } catch (const std::exception&) {
+      pos = 0;
+    }
+    if (pos == 0 || pos != it->second.size() || !(v > 0))
+      throw BadArgument(std::string("--") + k + " " + it->second + ": expected a positive number");
     a.erase(it);
     return v;
   };
@@ -148,6 +161,11 @@ int main(int argc, char** argv) {
       return W.elastic.run.status == "ok" && W.plastic.run.status == "ok" ? 0 : 1;
     }
     return usage(("unknown command " + cmd).c_str());
+  } catch (const BadArgument& e) {
+    return usage(e.what());
+  } catch (const mh::InputError& e) {
+    std::fprintf(stderr, "wheelset_dynamics: %s\n", e.what());
+    return mh::kExitInputError;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "wheelset_dynamics: %s\n", e.what());
     return 1;
