@@ -71,8 +71,7 @@ struct WheelsetSetup {
 };
 
 /// The contacts of a wheelset: built once (the pair's geometry), evaluated at every right-hand
-/// side. Not thread-safe (one result buffer per wheel, reused: no allocation after the first
-/// calls).
+/// side. Not thread-safe (one result buffer, reused for both wheels).
 class ContactAdapter {
  public:
   explicit ContactAdapter(const WheelsetSetup& s);
