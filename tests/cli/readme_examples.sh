@@ -113,6 +113,25 @@ fi
 ./build/mhcontact run cases/manchester-tangential.json -o out/tangential
 grep -q ',Fx_kN,Fy_creep_kN,Mz_Nm,F_over_muN,Y_kN$' <(head -1 out/tangential/cases.csv)
 
+# --- docs/wheelset-dynamics.md, "Running it" (built only when SUNDIALS is found) ---------------
+dyn=$(dirname "$bin")/examples/wheelset_dynamics/wheelset_dynamics
+if [ -x "$dyn" ]; then
+  mkdir -p build/examples/wheelset_dynamics tests/data/profiles
+  ln -s "$dyn" build/examples/wheelset_dynamics/wheelset_dynamics
+  cp "$src/tests/data/profiles/worn_high_mileage.prw" tests/data/profiles/
+  mkdir -p out/dyn
+  ./build/examples/wheelset_dynamics/wheelset_dynamics klingel --amplitude-mm 4 --distance 60 --csv out/dyn/klingel.csv --half-cycles out/dyn/klingel_half_cycles.csv
+  ./build/examples/wheelset_dynamics/wheelset_dynamics critical --csv out/dyn/critical.csv
+  ./build/examples/wheelset_dynamics/wheelset_dynamics worn --wheel tests/data/profiles/worn_high_mileage.prw --distance 30
+  test -s out/dyn/klingel_half_cycles.csv && test -s out/dyn/critical.csv
+  if have_mpl python3; then
+    python3 scripts/plot_wheelset_dynamics.py out/dyn -o docs/img
+    test -s docs/img/wheelset_dynamics_klingel.png && test -s docs/img/wheelset_dynamics_critical.png
+  fi
+else
+  echo "readme_examples: $dyn not built (no SUNDIALS): docs/wheelset-dynamics.md's commands not run"
+fi
+
 # --- docs/profiles.md, "8. The profile commands" ----------------------------------------------
 ./build/mhcontact profile info profiles/MBench_S1002_v3.prw
 ./build/mhcontact profile info profiles/MBench_UIC60_v3.prr --json
