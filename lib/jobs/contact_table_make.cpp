@@ -431,6 +431,10 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
       next.push_back(tY_mm[i]);
       bool fail = false;
       for (std::size_t j = 0; j + 1 < Q_kN.size(); ++j) fail = fail || cell_fail[i * (Q_kN.size() - 1) + j];
+      // A node without an answer leaves its cells without one: halving its intervals narrows
+      // that band.
+      for (std::size_t j = 0; j < Q_kN.size(); ++j)
+        fail = fail || is_failure(nodes[i * Q_kN.size() + j]->status) || is_failure(nodes[(i + 1) * Q_kN.size() + j]->status);
       if (fail && tY_mm[i + 1] - tY_mm[i] >= 2 * opt.min_step_mm - 1e-12) {
         next.push_back(rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])));
         split = true;
@@ -443,6 +447,43 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
       err << "mhcontact table: refinement " << round + 1 << ": " << tY_mm.size() << " t_Y nodes\n";
   }
   data.cell_coarse = cell_fail;
+
+  // A t_Y node where some load has no answer (the method's equilibrium not found: at flange onset
+  // the answer jumps there) is dropped from the grid, so that the interpolant runs through with
+  // continuous forces instead of answering nothing around it; the cells that span a dropped node
+  // are coarse (docs/tables.md "Nodes without an answer").
+  std::vector<double> dropped;
+  {
+    const std::size_t nQ = Q_kN.size();
+    std::vector<double> keep;
+    for (std::size_t i = 0; i < tY_mm.size(); ++i) {
+      bool bad = false;
+      for (std::size_t j = 0; j < nQ; ++j) bad = bad || is_failure(solved.at({tY_mm[i], Q_kN[j]}).status);
+      (bad ? dropped : keep).push_back(tY_mm[i]);
+    }
+    if (!dropped.empty() && keep.size() >= 2) {
+      std::vector<const NodeSolve*> nodes;
+      std::vector<double> tY, Q;
+      for (double t : keep) {
+        tY.push_back(t * units::mm);
+        for (double q : Q_kN) nodes.push_back(&solved.at({t, q}));
+      }
+      for (double q : Q_kN) Q.push_back(q * 1e3);
+      data = build_table(tY, Q, nodes);
+      std::vector<std::uint8_t> fail((keep.size() - 1) * (nQ - 1), 0);
+      for (std::size_t i = 0; i + 1 < keep.size(); ++i) {
+        const auto at = std::find(tY_mm.begin(), tY_mm.end(), keep[i]) - tY_mm.begin();
+        const bool same = static_cast<std::size_t>(at) + 1 < tY_mm.size() && tY_mm[static_cast<std::size_t>(at) + 1] == keep[i + 1];
+        for (std::size_t j = 0; j + 1 < nQ; ++j)
+          fail[i * (nQ - 1) + j] = same ? cell_fail[static_cast<std::size_t>(at) * (nQ - 1) + j] : 1;
+      }
+      cell_fail = fail;
+      data.cell_coarse = fail;
+      tY_mm = keep;
+    } else {
+      dropped.clear();
+    }
+  }
 
   // The header.
   nlohmann::json h;
@@ -460,6 +501,7 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   h["Q_kN_range"] = {Q_kN.front(), Q_kN.back()};
   h["tracks"] = data.n_tracks;
   h["refine"] = opt.refine;
+  h["dropped_tY_mm"] = dropped;
   nlohmann::json coarse = nlohmann::json::array();
   for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i)
     for (std::size_t j = 0; j + 1 < Q_kN.size(); ++j)
@@ -515,7 +557,7 @@ int table_job(const CaseFile& cf, const TableMakeOptions& opt, const std::string
     write_contact_table(m.data, f.stream());
     f.commit();
   }
-  std::size_t failed = 0;
+  std::size_t failed = m.data.header["dropped_tY_mm"].size();
   for (CaseStatus s : m.data.node_status) failed += is_failure(s);
   const std::size_t coarse = m.data.header["coarse_cells"].size();
   if (!opt.quiet) {
@@ -529,7 +571,7 @@ int table_job(const CaseFile& cf, const TableMakeOptions& opt, const std::string
           << fmt3(100 * e["area"]["max"].get<double>()) << " %, position max "
           << fmt3(e["position"]["max"].get<double>()) << " mm";
     }
-    err << "; " << coarse << " coarse cells, " << failed << " nodes without an answer\n";
+    err << "; " << coarse << " coarse cells, " << failed << " t_Y nodes without an answer (dropped)\n";
   }
   return coarse || failed ? kExitCasesFailed : kExitOk;
 }
