@@ -52,6 +52,13 @@ for r, p in zip(sorted(rows, key=lambda r: float(r[3])), sorted(patches, key=lam
             sys.exit(f"reader {r} against run {p['N_kN']}, {p['pmax_MPa']}, {p['y_rail_mm']}")
 PY
 
+# The force-history plot of docs/tables.md on a small history in the bench's columns (headless).
+if "$PY" -c 'import matplotlib' 2>/dev/null; then
+  printf 'step,tY_mm,N1_kN,N2_kN,Fy_table_kN,dFy_dtY_kN_per_mm,Fy_direct_kN,status_table\n0,0,10,0,1,0,1,ok\n1,0.5,8,2,2,1,,ok\n2,1,5,5,3,1,3.1,outside_validity\n' > hist.csv
+  MPLBACKEND=Agg "$PY" "$SRC/scripts/plot_table_history.py" hist.csv -o hist.png --steps 0:2
+  check "history plot written" test -s hist.png
+fi
+
 # Must-fail inputs: exit 2, the message names the file and the rule.
 cp "$SRC/cases/manchester.json" mh.json
 sed -i "s|\.\./profiles|$SRC/profiles|g" mh.json

@@ -198,7 +198,7 @@ TEST_CASE("table file: round trip and errors naming the file and line", "[tables
   std::remove(path.c_str());
 }
 
-TEST_CASE("table of a worn measured pair: N within 1 % of Q and pmax within 3 % of direct strip solves", "[tables][slow]") {
+TEST_CASE("table of a worn measured pair: N within 1 % of Q and pmax within 3 % of direct strip solves", "[tables]") {
   // The done-when pair (worn_high_mileage on site_b_hr, docs/tables.md) at the default spacing
   // of docs/tables.md (t_Y 1 mm, Q 40 kN), checked at points off the cell centres the maker
   // measured and refined on: quarter points in t_Y, 0.3 of the cell in Q.
