@@ -356,6 +356,67 @@ MHC_API mhc_error mhc_solve_many_warnings(const mhc_pair* pair, int32_t prescrib
  *  thread's next call of this function. */
 MHC_API const char* mhc_warning_text(const mhc_workspace* ws, int32_t i);
 
+/* ---- contact tables (docs/tables.md) ------------------------------------------------------------
+ * A table made by `mhcontact table` (a grid method at every node of a t_Y x Q grid, contacts
+ * matched across nodes into tracks) read once and interpolated: bicubic Hermite with continuous
+ * values and first derivatives in t_Y and Q; a contact appearing or disappearing between nodes
+ * fades in from N = 0 (no step). Lookups allocate nothing; a table may be shared by any number
+ * of threads. */
+typedef struct mhc_table mhc_table;
+
+/** One contact of a lookup (and, in d_dtY / d_dQ, its derivatives, same fields). */
+typedef struct mhc_table_contact {
+  int32_t track;          /**< 1-based contact track of the table (the CSV's `contact`) */
+  int32_t reserved;
+  double N_N;             /**< normal force */
+  double y_rail_m;        /**< contact reference point on the rail, lateral */
+  double z_rail_m;        /**< its height on the rail profile */
+  double y_wheel_m;       /**< facing wheel-profile point */
+  double gamma_rad;       /**< contact angle */
+  double r_roll_m;        /**< wheel rolling radius */
+  double p_max_Pa;        /**< peak pressure */
+  double area_m2;         /**< contact area */
+  double a_m;             /**< half the contact length along x */
+  double b_m;             /**< half the contact width across */
+  double a_el_m;          /**< equivalent ellipse semi-axis along x (for the tangential method) */
+  double b_el_m;          /**< ... across */
+  double C11;             /**< Kalker's creepage coefficients at a_el/b_el */
+  double C22;
+  double C23;
+} mhc_table_contact;
+
+/** The answer at one (t_Y, Q). Caller-owned: set struct_size = sizeof(mhc_table_result). */
+typedef struct mhc_table_result {
+  size_t struct_size;
+  int32_t status;       /**< mhc_status: the worst of the cell's four nodes (out_of_range outside the
+                             table); outside_validity in a cell that missed its tolerance (coarse) */
+  int32_t n_contacts;   /**< contacts with N > 0 (the first MHC_MAX_CONTACTS are filled) */
+  int32_t coarse;       /**< 1: the cell missed the table's interpolation tolerance */
+  int32_t reserved;
+  double tY_m;
+  double Q_N;
+  double Fz_N;          /**< sum N cos(gamma) */
+  double Fy_N;          /**< sum N sin(gamma), towards the field side */
+  double dFy_dtY_N_per_m;
+  double dFy_dQ;        /**< [-] */
+  mhc_table_contact contact[MHC_MAX_CONTACTS];
+  mhc_table_contact d_dtY[MHC_MAX_CONTACTS];  /**< d/dt_Y of each field of contact[k], per metre */
+  mhc_table_contact d_dQ[MHC_MAX_CONTACTS];   /**< d/dQ of each field of contact[k], per newton */
+} mhc_table_result;
+
+/** Read a table file (MHC_ERR_INPUT with the file, line and rule when it is not one). */
+MHC_API mhc_error mhc_table_read(const char* path, mhc_table** out);
+/** Node ranges of the table [m], [N]; any pointer may be NULL. */
+MHC_API mhc_error mhc_table_range(const mhc_table* t, double* tY_min_m, double* tY_max_m, double* Q_min_N,
+                                  double* Q_max_N);
+/** The table's JSON header (profiles with checksums, method, ranges, units, measured error);
+ *  valid while the table lives. NULL for a null table. */
+MHC_API const char* mhc_table_header(const mhc_table* t);
+/** The answer at (tY_m, Q_N) into *out (out->struct_size must be set). Outside the ranges: status
+ *  out_of_range, no contacts (not an error). */
+MHC_API mhc_error mhc_table_lookup(const mhc_table* t, double tY_m, double Q_N, mhc_table_result* out);
+MHC_API void mhc_table_free(mhc_table* t);
+
 #ifdef __cplusplus
 }
 #endif

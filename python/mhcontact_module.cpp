@@ -226,6 +226,8 @@ double rail_inclination_of(const py::handle& v) {
 
 }  // namespace
 
+void add_tables(py::module_& m, void (*raise)(mhc_error));  // python/tables_module.cpp
+
 PYBIND11_MODULE(_core, m) {
   m.doc() = "mhcontact: wheel-rail normal contact (multi-Hertzian, half-space, strips); docs/python.md";
   g_input_error = py::reinterpret_borrow<py::object>(
@@ -239,6 +241,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("fft_backend") = mhc_fft_backend();
   m.attr("STATUS_NAMES") = py::make_tuple("ok", "no_contact", "out_of_range", "not_converged", "outside_validity", "derailed");
   m.attr("METHOD_NAMES") = py::make_tuple("multi-hertzian", "half-space", "strips", "auto");
+  add_tables(m, [](mhc_error e) { raise(e); });
 
   py::class_<Profile>(m, "Profile", "A wheel or rail profile (immutable).")
       .def_static("read", [](const std::string& path, const std::string& kind) {

@@ -34,5 +34,6 @@ void add_geometry_command(CLI::App& app, CliContext& ctx);           // geometry
 void add_run_command(CLI::App& app, CliContext& ctx);                // run
 void add_merge_command(CLI::App& app, CliContext& ctx);              // merge
 void add_wheelset_command(CLI::App& app, CliContext& ctx);           // wheelset
+void add_table_command(CLI::App& app, CliContext& ctx);               // table
 
 }  // namespace mh

@@ -15,9 +15,9 @@ tY_mm, Fz_kN, pmax_MPa, ...), with NaN where the table has an empty cell.
 import numpy as _np
 
 from ._core import (InputError, METHOD_NAMES, STATUS_NAMES, UnsupportedError, Pair, Profile,
-                    __version__, abi_version, fft_backend)
+                    Table, __version__, abi_version, fft_backend)
 
-__all__ = ["Pair", "Profile", "InputError", "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES",
+__all__ = ["Pair", "Profile", "Table", "InputError", "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES",
            "CASE_COLUMNS", "__version__", "abi_version", "fft_backend"]
 
 #: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp), then the

@@ -160,6 +160,12 @@ if have_mpl /usr/bin/python3; then
   test -s out/fleet/pressure_case_23_pair_0.png && test -s out/fleet/geometry_pair_1_caf.png
 fi
 
+# --- docs/tables.md, "Making a table": exit 1 (a coarse cell, nodes without an answer); the
+# summary the page shows is what the command prints --------------------------------------------
+./build/mhcontact table cases/s1002-60e1-table.json -o out/table.csv 2> "$tmp/table.err" || test $? -eq 1
+test -s out/table.csv
+shown_output docs/tables.md "./build/mhcontact table cases/s1002-60e1-table.json -o out/table.csv" | diff - <(grep '^mhcontact table:' "$tmp/table.err")
+
 # --- docs/cli.md, "Exit codes": a failing case gives 1, bad input 2, CLI syntax >= 100 --------
 set +e
 ./build/mhcontact run /nonexistent.json -o out/x 2>/dev/null; test $? -eq 2 || exit 1

@@ -1,0 +1,44 @@
+// `mhcontact table CASE.json -o FILE` (docs/tables.md): a contact table made by the case file's
+// grid method over its t_Y × Q sweep, checked against direct solves at the cell centres.
+#include <CLI/CLI.hpp>
+
+#include <memory>
+
+#include "cli.hpp"
+#include "input/case_file.hpp"
+#include "jobs/contact_table_make.hpp"
+
+namespace mh {
+
+void add_table_command(CLI::App& app, CliContext& ctx) {
+  struct Opts { std::string case_file, out; TableMakeOptions make; bool no_check = false; };
+  auto o = std::make_shared<Opts>();
+  CLI::App* cmd = app.add_subcommand(
+      "table", "Contact table for time-stepping callers: the case's grid method (strips, half-space, auto) at every "
+               "node of its t_Y x Q sweep, contacts matched across nodes, the interpolation error measured at the "
+               "cell centres and t_Y refined where it misses (writes FILE, CSV with a JSON header). "
+               "Exit 0 if every cell meets its tolerance and every node has an answer, 1 if not.");
+  cmd->add_option("case", o->case_file, "Case file (JSON) with a method other than multi-hertzian and a sweep: its nodes")
+      ->required();
+  cmd->add_option("-o,--output", o->out, "Table file to write (- for standard output)")->required();
+  cmd->add_option("--threads", o->make.threads, "Worker threads (0 = all cores; the table is identical whatever the count)")
+      ->check(CLI::Range(0u, 1024u))->capture_default_str();
+  cmd->add_option("--refine", o->make.refine, "Halvings of a t_Y interval whose cells miss a tolerance")
+      ->check(CLI::Range(0, 8))->capture_default_str();
+  cmd->add_option("--min-step-mm", o->make.min_step_mm, "Smallest t_Y interval refinement makes [mm]")
+      ->check(CLI::Range(0.001, 10.0))->capture_default_str();
+  cmd->add_option("--tol-N", o->make.tol_N, "Tolerance of a contact's normal force, fraction of Q")
+      ->check(CLI::Range(1e-6, 1.0))->capture_default_str();
+  cmd->add_option("--tol-pmax", o->make.tol_pmax, "Tolerance of the peak pressure, fraction")
+      ->check(CLI::Range(1e-6, 1.0))->capture_default_str();
+  cmd->add_flag("--no-check", o->no_check, "Make the nodes only: no direct solves at the cell centres, no refinement");
+  cmd->add_flag("-q,--quiet", o->make.quiet, "No summary on standard error");
+  cmd->callback([o, &ctx] {
+    o->make.check = !o->no_check;
+    if (o->no_check) o->make.refine = 0;
+    const CaseFile cf = load_case_file(o->case_file, true);
+    ctx.exit_code = table_job(cf, o->make, o->out, ctx.out, ctx.err);
+  });
+}
+
+}  // namespace mh

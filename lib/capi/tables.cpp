@@ -1,0 +1,110 @@
+// The C interface of contact tables (include/mhcontact.h, "contact tables"; docs/tables.md):
+// a table read by input/contact_table and its lookup converted into mhc_table_result.
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include <mhcontact.h>
+
+#include "capi/handles.hpp"
+#include "input/contact_table.hpp"
+
+struct mhc_table {
+  explicit mhc_table(mh::ContactTableData d) : look(std::move(d)), header(look.data().header.dump()) {}
+  mh::ContactTableLookup look;
+  std::string header;
+};
+
+namespace {
+
+using mh::capi::guarded;
+using mh::capi::need;
+
+int32_t status_code(mh::CaseStatus s) {
+  switch (s) {
+    case mh::CaseStatus::Ok: return MHC_STATUS_OK;
+    case mh::CaseStatus::NoContact: return MHC_STATUS_NO_CONTACT;
+    case mh::CaseStatus::OutOfRange: return MHC_STATUS_OUT_OF_RANGE;
+    case mh::CaseStatus::NotConverged: return MHC_STATUS_NOT_CONVERGED;
+    case mh::CaseStatus::OutsideValidity: return MHC_STATUS_OUTSIDE_VALIDITY;
+    case mh::CaseStatus::Derailed: return MHC_STATUS_DERAILED;
+  }
+  return MHC_STATUS_NOT_CONVERGED;
+}
+
+// mhc_table_contact holds the table's quantities in kTableColumns order after track, reserved.
+static_assert(sizeof(mhc_table_contact) == 8 + sizeof(double) * mh::kTableQuantities, "mhc_table_contact layout");
+static_assert(MHC_MAX_CONTACTS == mh::kTableMaxContacts, "contact slots");
+
+void put(mhc_table_contact& c, int track, const std::array<double, mh::kTableQuantities>& v) {
+  c.track = track;
+  c.reserved = 0;
+  std::memcpy(&c.N_N, v.data(), sizeof(double) * mh::kTableQuantities);
+}
+
+}  // namespace
+
+extern "C" {
+
+mhc_error mhc_table_read(const char* path, mhc_table** out) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(path, "path")) return e;
+  if (mhc_error e = need(out, "out")) return e;
+  *out = nullptr;
+  return guarded([&] {
+    *out = new mhc_table(mh::read_contact_table(path));
+    return MHC_OK;
+  });
+}
+
+mhc_error mhc_table_range(const mhc_table* t, double* tY_min_m, double* tY_max_m, double* Q_min_N, double* Q_max_N) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(t, "table")) return e;
+  const auto& d = t->look.data();
+  if (tY_min_m) *tY_min_m = d.tY.front();
+  if (tY_max_m) *tY_max_m = d.tY.back();
+  if (Q_min_N) *Q_min_N = d.Q.front();
+  if (Q_max_N) *Q_max_N = d.Q.back();
+  return MHC_OK;
+}
+
+const char* mhc_table_header(const mhc_table* t) { return t ? t->header.c_str() : nullptr; }
+
+mhc_error mhc_table_lookup(const mhc_table* t, double tY_m, double Q_N, mhc_table_result* out) {
+  if (mhc_error e = need(t, "table")) return e;
+  if (mhc_error e = need(out, "result")) return e;
+  if (out->struct_size < sizeof(mhc_table_result))
+    return mh::capi::fail(MHC_ERR_ARGUMENT, "result: struct_size = " + std::to_string(out->struct_size) +
+                                                ": must be sizeof(mhc_table_result) = " +
+                                                std::to_string(sizeof(mhc_table_result)));
+  thread_local mh::TableAnswer a;
+  t->look.lookup(tY_m, Q_N, a);
+  out->status = status_code(a.status);
+  out->n_contacts = a.n_contacts;
+  out->coarse = a.coarse ? 1 : 0;
+  out->reserved = 0;
+  out->tY_m = tY_m;
+  out->Q_N = Q_N;
+  out->Fz_N = a.Fz;
+  out->Fy_N = a.Fy;
+  out->dFy_dtY_N_per_m = a.dFy_dtY;
+  out->dFy_dQ = a.dFy_dQ;
+  const int n = a.n_contacts < MHC_MAX_CONTACTS ? a.n_contacts : MHC_MAX_CONTACTS;
+  for (int k = 0; k < n; ++k) {
+    const mh::TableContact& c = a.c[static_cast<std::size_t>(k)];
+    put(out->contact[k], c.track, c.v);
+    put(out->d_dtY[k], c.track, c.d_dtY);
+    put(out->d_dQ[k], c.track, c.d_dQ);
+  }
+  if (n < MHC_MAX_CONTACTS) {
+    const std::size_t rest = sizeof(mhc_table_contact) * static_cast<std::size_t>(MHC_MAX_CONTACTS - n);
+    std::memset(static_cast<void*>(&out->contact[n]), 0, rest);
+    std::memset(static_cast<void*>(&out->d_dtY[n]), 0, rest);
+    std::memset(static_cast<void*>(&out->d_dQ[n]), 0, rest);
+  }
+  return MHC_OK;
+}
+
+void mhc_table_free(mhc_table* t) { delete t; }
+
+}  // extern "C"

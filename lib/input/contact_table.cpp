@@ -1,0 +1,296 @@
+// Contact tables: the reader and the lookup (contact_table.hpp; docs/tables.md).
+#include "input/contact_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "core/errors.hpp"
+
+namespace mh {
+
+const std::array<TableColumn, kTableQuantities> kTableColumns{{
+    {"N_kN", 1e3, true, true},
+    {"y_rail_mm", 1e-3, false, false},
+    {"z_rail_mm", 1e-3, false, false},
+    {"y_wheel_mm", 1e-3, false, false},
+    {"gamma_deg", M_PI / 180, false, false},
+    {"r_roll_mm", 1e-3, false, false},
+    {"pmax_MPa", 1e6, true, true},
+    {"area_mm2", 1e-6, true, true},
+    {"a_mm", 1e-3, true, true},
+    {"b_mm", 1e-3, true, true},
+    {"a_el_mm", 1e-3, true, true},
+    {"b_el_mm", 1e-3, true, true},
+    {"C11", 1, false, false},
+    {"C22", 1, false, false},
+    {"C23", 1, false, false},
+}};
+
+int status_severity(CaseStatus s) {
+  switch (s) {
+    case CaseStatus::Ok: return 0;
+    case CaseStatus::OutsideValidity: return 1;
+    case CaseStatus::Derailed: return 2;
+    default: return 3;
+  }
+}
+
+namespace {
+
+bool parse_status(const std::string& s, CaseStatus& out) {
+  for (CaseStatus c : {CaseStatus::Ok, CaseStatus::OutsideValidity, CaseStatus::NoContact, CaseStatus::OutOfRange,
+                       CaseStatus::NotConverged, CaseStatus::Derailed})
+    if (s == to_string(c)) return out = c, true;
+  return false;
+}
+
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> f;
+  std::size_t a = 0;
+  for (;;) {
+    const std::size_t b = line.find(',', a);
+    f.push_back(line.substr(a, b == std::string::npos ? std::string::npos : b - a));
+    if (b == std::string::npos) break;
+    a = b + 1;
+  }
+  return f;
+}
+
+double parse_number(const std::string& s, const std::string& where, const std::string& column) {
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v))
+    throw InputError(where, s, "column " + column + " must be a finite number",
+                     "a table is written by `mhcontact table`; regenerate it rather than editing it");
+  return v;
+}
+
+// PCHIP node slopes of the values f[0..n) (stride `stride` in `f`) at abscissae x (docs/tables.md).
+void pchip_slopes(const double* x, std::size_t n, const double* f, std::size_t stride, double* d) {
+  if (n < 2) {
+    if (n == 1) d[0] = 0;
+    return;
+  }
+  auto F = [&](std::size_t i) { return f[i * stride]; };
+  auto D = [&](std::size_t i) -> double& { return d[i * stride]; };
+  if (n == 2) {
+    D(0) = D(1) = (F(1) - F(0)) / (x[1] - x[0]);
+    return;
+  }
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double h0 = x[i] - x[i - 1], h1 = x[i + 1] - x[i];
+    const double s0 = (F(i) - F(i - 1)) / h0, s1 = (F(i + 1) - F(i)) / h1;
+    if (s0 * s1 <= 0) {
+      D(i) = 0;
+    } else {
+      const double w1 = 2 * h1 + h0, w2 = h1 + 2 * h0;
+      D(i) = (w1 + w2) / (w1 / s0 + w2 / s1);
+    }
+  }
+  // Ends: the three-point one-sided formula, kept shape-preserving (as Moler's pchip).
+  auto end_slope = [](double h0, double h1, double s0, double s1) {
+    double e = ((2 * h0 + h1) * s0 - h0 * s1) / (h0 + h1);
+    if (e * s0 <= 0) e = 0;
+    else if (s0 * s1 <= 0 && std::fabs(e) > std::fabs(3 * s0)) e = 3 * s0;
+    return e;
+  };
+  D(0) = end_slope(x[1] - x[0], x[2] - x[1], (F(1) - F(0)) / (x[1] - x[0]), (F(2) - F(1)) / (x[2] - x[1]));
+  const std::size_t m = n - 1;
+  D(m) = end_slope(x[m] - x[m - 1], x[m - 1] - x[m - 2], (F(m) - F(m - 1)) / (x[m] - x[m - 1]),
+                   (F(m - 1) - F(m - 2)) / (x[m - 1] - x[m - 2]));
+}
+
+}  // namespace
+
+ContactTableData read_contact_table(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "cannot open the table file", "check the path");
+  ContactTableData t;
+  std::string line;
+  std::size_t ln = 0;
+  if (!std::getline(in, line) || line.size() < 2 || line[0] != '#')
+    throw InputError(at_line(path, 1), "", "a contact table starts with its JSON header line `# {...}`",
+                     "write it with `mhcontact table CASE.json -o FILE`");
+  ++ln;
+  try {
+    t.header = nlohmann::json::parse(line.substr(1));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(at_line(path, 1), "", std::string("the JSON header does not parse: ") + e.what());
+  }
+  if (!t.header.is_object() || t.header.value("schema", std::string()) != kContactTableSchema)
+    throw InputError(at_line(path, 1), t.header.is_object() ? t.header.value("schema", std::string("(none)")) : "",
+                     std::string("the header's schema must be ") + kContactTableSchema,
+                     "a table of another version: regenerate it with this mhcontact");
+  try {
+    for (double v : t.header.at("tY_mm_nodes").get<std::vector<double>>()) t.tY.push_back(v * 1e-3);
+    for (double v : t.header.at("Q_kN_nodes").get<std::vector<double>>()) t.Q.push_back(v * 1e3);
+    t.n_tracks = t.header.at("tracks").get<int>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(at_line(path, 1), "", std::string("header: tY_mm_nodes, Q_kN_nodes and tracks are required: ") + e.what());
+  }
+  const std::size_t nT = t.nT(), nQ = t.nQ();
+  if (nT < 2 || nQ < 2 || t.n_tracks < 1 || t.n_tracks > 1000)
+    throw InputError(at_line(path, 1), "", "header: at least 2 t_Y nodes, 2 Q nodes and 1 to 1000 tracks");
+  for (std::size_t i = 1; i < nT; ++i)
+    if (!(t.tY[i] > t.tY[i - 1])) throw InputError(at_line(path, 1), "", "header: tY_mm_nodes must increase");
+  for (std::size_t j = 1; j < nQ; ++j)
+    if (!(t.Q[j] > t.Q[j - 1])) throw InputError(at_line(path, 1), "", "header: Q_kN_nodes must increase");
+  const std::size_t nk = static_cast<std::size_t>(t.n_tracks);
+  t.node_status.assign(nT * nQ, CaseStatus::Ok);
+  t.present.assign(nT * nQ * nk, 0);
+  t.v.assign(nT * nQ * nk * kTableQuantities, 0.0);
+  t.cell_coarse.assign((nT - 1) * (nQ - 1), 0);
+  if (t.header.contains("coarse_cells"))
+    for (const auto& c : t.header["coarse_cells"]) {
+      const auto i = c.at(0).get<std::size_t>(), j = c.at(1).get<std::size_t>();
+      if (i + 1 >= nT || j + 1 >= nQ) throw InputError(at_line(path, 1), c.dump(), "header: coarse_cells index outside the grid");
+      t.cell_coarse[i * (nQ - 1) + j] = 1;
+    }
+  // The column line.
+  std::string expect = "tY_mm,Q_kN,status,contact,present";
+  for (const TableColumn& c : kTableColumns) expect += std::string(",") + c.name;
+  if (!std::getline(in, line)) throw InputError(at_line(path, 2), "", "the column line is missing");
+  ++ln;
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  if (line != expect) throw InputError(at_line(path, 2), line, "the columns must be " + expect);
+  std::size_t rows = 0;
+  while (std::getline(in, line)) {
+    ++ln;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    const std::string where = at_line(path, ln);
+    const auto f = split_csv(line);
+    if (f.size() != kTableNodeColumns + kTableQuantities)
+      throw InputError(where, std::to_string(f.size()) + " fields", "a row has " +
+                       std::to_string(kTableNodeColumns + kTableQuantities) + " fields");
+    // Rows in order: t_Y outer, Q, then the track.
+    const std::size_t k = rows % nk, j = (rows / nk) % nQ, i = rows / (nk * nQ);
+    if (i >= nT) throw InputError(where, "", "more rows than the header's nodes × tracks");
+    const double ty = parse_number(f[0], where, "tY_mm") * 1e-3, q = parse_number(f[1], where, "Q_kN") * 1e3;
+    if (std::fabs(ty - t.tY[i]) > 1e-9 || std::fabs(q - t.Q[j]) > 1e-6 * t.Q[j] ||
+        parse_number(f[3], where, "contact") != static_cast<double>(k + 1))
+      throw InputError(where, f[0] + "," + f[1] + "," + f[3], "rows must run t_Y outer, Q, then contact 1.." +
+                       std::to_string(nk) + ", on the header's nodes");
+    CaseStatus st;
+    if (!parse_status(f[2], st)) throw InputError(where, f[2], "status must be one of the cases.csv words");
+    t.node_status[i * nQ + j] = st;
+    const double pr = parse_number(f[4], where, "present");
+    if (pr != 0 && pr != 1) throw InputError(where, f[4], "present must be 0 or 1");
+    t.present[(i * nQ + j) * nk + k] = pr != 0;
+    const std::size_t at = t.at(i, j, static_cast<int>(k));
+    for (int qn = 0; qn < kTableQuantities; ++qn)
+      t.v[at + qn] = parse_number(f[kTableNodeColumns + qn], where, kTableColumns[qn].name) * kTableColumns[qn].to_si;
+    ++rows;
+  }
+  if (rows != nT * nQ * nk)
+    throw InputError(path, std::to_string(rows) + " rows", "a table has one row per node and contact: " +
+                     std::to_string(nT * nQ * nk), "the file is truncated: regenerate it");
+  return t;
+}
+
+ContactTableLookup::ContactTableLookup(ContactTableData data) : d_(std::move(data)) {
+  const std::size_t nT = d_.nT(), nQ = d_.nQ(), nk = static_cast<std::size_t>(d_.n_tracks);
+  dx_.assign(d_.v.size(), 0.0);
+  dy_.assign(d_.v.size(), 0.0);
+  const std::size_t sk = kTableQuantities;
+  for (std::size_t j = 0; j < nQ; ++j)
+    for (std::size_t k = 0; k < nk; ++k)
+      for (std::size_t q = 0; q < sk; ++q) {
+        const std::size_t a = d_.at(0, j, static_cast<int>(k)) + q;
+        pchip_slopes(d_.tY.data(), nT, &d_.v[a], nQ * nk * sk, &dx_[a]);
+      }
+  for (std::size_t i = 0; i < nT; ++i)
+    for (std::size_t k = 0; k < nk; ++k)
+      for (std::size_t q = 0; q < sk; ++q) {
+        const std::size_t a = d_.at(i, 0, static_cast<int>(k)) + q;
+        pchip_slopes(d_.Q.data(), nQ, &d_.v[a], nk * sk, &dy_[a]);
+      }
+  // The tracks that can be non-zero in each cell: present at a corner (a track absent at all four
+  // has N = 0 and zero slopes there).
+  cell_first_.push_back(0);
+  for (std::size_t i = 0; i + 1 < nT; ++i)
+    for (std::size_t j = 0; j + 1 < nQ; ++j) {
+      for (std::size_t k = 0; k < nk; ++k) {
+        bool any = false;
+        for (std::size_t a = 0; a < 2; ++a)
+          for (std::size_t b = 0; b < 2; ++b) any = any || d_.present[((i + a) * nQ + (j + b)) * nk + k];
+        if (any) cell_tracks_.push_back(static_cast<int>(k));
+      }
+      cell_first_.push_back(static_cast<int>(cell_tracks_.size()));
+    }
+}
+
+void ContactTableLookup::lookup(double tY, double Q, TableAnswer& out) const {
+  out.n_contacts = 0;
+  out.Fz = out.Fy = out.dFy_dtY = out.dFy_dQ = 0;
+  out.coarse = false;
+  const std::size_t nT = d_.nT(), nQ = d_.nQ();
+  if (!(tY >= d_.tY.front() && tY <= d_.tY.back() && Q >= d_.Q.front() && Q <= d_.Q.back())) {
+    out.status = CaseStatus::OutOfRange;
+    return;
+  }
+  const std::size_t i = std::min<std::size_t>(
+      nT - 2, static_cast<std::size_t>(std::upper_bound(d_.tY.begin(), d_.tY.end(), tY) - d_.tY.begin()) - 1);
+  const std::size_t j = std::min<std::size_t>(
+      nQ - 2, static_cast<std::size_t>(std::upper_bound(d_.Q.begin(), d_.Q.end(), Q) - d_.Q.begin()) - 1);
+  // Status: the worst of the four corners; a coarse cell is at best outside_validity.
+  CaseStatus st = CaseStatus::Ok;
+  for (std::size_t a = 0; a < 2; ++a)
+    for (std::size_t b = 0; b < 2; ++b) {
+      const CaseStatus s = d_.node_status[(i + a) * nQ + (j + b)];
+      if (status_severity(s) > status_severity(st)) st = s;
+    }
+  out.coarse = d_.cell_coarse[i * (nQ - 1) + j] != 0;
+  if (out.coarse && st == CaseStatus::Ok) st = CaseStatus::OutsideValidity;
+  out.status = st;
+  if (status_severity(st) >= 3) return;
+  // Hermite basis in u (t_Y) and w (Q) and their derivatives.
+  const double hx = d_.tY[i + 1] - d_.tY[i], hy = d_.Q[j + 1] - d_.Q[j];
+  const double u = (tY - d_.tY[i]) / hx, w = (Q - d_.Q[j]) / hy;
+  const double u2 = u * u, u3 = u2 * u, w2 = w * w, w3 = w2 * w;
+  const double H0[2] = {2 * u3 - 3 * u2 + 1, -2 * u3 + 3 * u2}, H1[2] = {hx * (u3 - 2 * u2 + u), hx * (u3 - u2)};
+  const double G0[2] = {2 * w3 - 3 * w2 + 1, -2 * w3 + 3 * w2}, G1[2] = {hy * (w3 - 2 * w2 + w), hy * (w3 - w2)};
+  const double dH0[2] = {(6 * u2 - 6 * u) / hx, (-6 * u2 + 6 * u) / hx}, dH1[2] = {3 * u2 - 4 * u + 1, 3 * u2 - 2 * u};
+  const double dG0[2] = {(6 * w2 - 6 * w) / hy, (-6 * w2 + 6 * w) / hy}, dG1[2] = {3 * w2 - 4 * w + 1, 3 * w2 - 2 * w};
+  const std::size_t cell = i * (nQ - 1) + j;
+  for (int t = cell_first_[cell]; t < cell_first_[cell + 1]; ++t) {
+    const int k = cell_tracks_[static_cast<std::size_t>(t)];
+    std::array<double, kTableQuantities> v{}, vx{}, vy{};
+    for (std::size_t a = 0; a < 2; ++a)
+      for (std::size_t b = 0; b < 2; ++b) {
+        const std::size_t at = d_.at(i + a, j + b, k);
+        const double* f = &d_.v[at];
+        const double* fx = &dx_[at];
+        const double* fy = &dy_[at];
+        const double c0 = H0[a] * G0[b], c1 = H1[a] * G0[b], c2 = H0[a] * G1[b];
+        const double x0 = dH0[a] * G0[b], x1 = dH1[a] * G0[b], x2 = dH0[a] * G1[b];
+        const double y0 = H0[a] * dG0[b], y1 = H1[a] * dG0[b], y2 = H0[a] * dG1[b];
+        for (int q = 0; q < kTableQuantities; ++q) {
+          v[q] += c0 * f[q] + c1 * fx[q] + c2 * fy[q];
+          vx[q] += x0 * f[q] + x1 * fx[q] + x2 * fy[q];
+          vy[q] += y0 * f[q] + y1 * fx[q] + y2 * fy[q];
+        }
+      }
+    if (!(v[kTabN] > 0)) continue;
+    for (int q = 0; q < kTableQuantities; ++q)
+      if (kTableColumns[q].non_negative && v[q] < 0) v[q] = vx[q] = vy[q] = 0;
+    const double cg = std::cos(v[kTabGamma]), sg = std::sin(v[kTabGamma]);
+    out.Fz += v[kTabN] * cg;
+    out.Fy += v[kTabN] * sg;
+    out.dFy_dtY += vx[kTabN] * sg + v[kTabN] * cg * vx[kTabGamma];
+    out.dFy_dQ += vy[kTabN] * sg + v[kTabN] * cg * vy[kTabGamma];
+    if (out.n_contacts < kTableMaxContacts) {
+      TableContact& c = out.c[static_cast<std::size_t>(out.n_contacts)];
+      c.track = k + 1;
+      c.v = v;
+      c.d_dtY = vx;
+      c.d_dQ = vy;
+    }
+    ++out.n_contacts;
+  }
+}
+
+}  // namespace mh

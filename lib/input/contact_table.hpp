@@ -1,0 +1,123 @@
+#pragma once
+// Contact tables (docs/tables.md): the answers of a grid method (strips, half-space, auto) on a
+// tensor grid of nodes in t_Y and load Q, read back and interpolated for a time-stepping caller.
+// This is the light half: the file format's names, the reader and the lookup (the C interface
+// uses it). Making a table (the solves, the contact matching, the error check) is
+// jobs/contact_table_make.hpp.
+//
+// Interpolation: per contact track and quantity, a bicubic Hermite surface on the node grid with
+// node slopes from the monotone piecewise-cubic rule (PCHIP: Fritsch & Carlson, SIAM J. Numer.
+// Anal. 17 (1980) 238–246, with the weighted harmonic mean of Fritsch & Butland, SIAM J. Sci.
+// Stat. Comput. 5 (1984) 300–304) along each axis and zero cross slope: continuous values and
+// first derivatives in t_Y and Q across cells. A contact absent at a node carries N = 0 there
+// (and zero size and pressure); a zero node between loaded ones is a local minimum, where PCHIP
+// puts a zero slope, so a contact appearing between nodes grows from zero force without a step.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "contact/judge/status.hpp"
+
+namespace mh {
+
+/// The schema tag of the table's JSON header; bumped on any incompatible change.
+constexpr const char* kContactTableSchema = "mhcontact.table/1";
+
+/// The per-contact quantities of a table, in the order of their CSV columns.
+enum TableQuantity : int {
+  kTabN,        ///< normal force
+  kTabYRail,    ///< contact reference point on the rail, lateral
+  kTabZRail,    ///< its height on the rail profile
+  kTabYWheel,   ///< facing wheel-profile point
+  kTabGamma,    ///< contact angle
+  kTabRRoll,    ///< wheel rolling radius there
+  kTabPmax,     ///< peak pressure
+  kTabArea,     ///< contact area
+  kTabA,        ///< half the contact length along x
+  kTabB,        ///< half the contact width across, in the contact plane
+  kTabAEl,      ///< equivalent ellipse semi-axis along x (elastic Hertz of N on the patch's curvatures)
+  kTabBEl,      ///< ... across
+  kTabC11,      ///< Kalker's creepage coefficients at a_el/b_el (contact/tangential/kalker.hpp)
+  kTabC22,
+  kTabC23,
+  kTableQuantities
+};
+
+/// A column of the CSV: its name (with its unit) and the factor from the column's unit to SI.
+struct TableColumn {
+  const char* name;
+  double to_si;
+  bool non_negative;  ///< a size, force or pressure: the interpolant is clamped at 0
+  bool fades;         ///< 0 where the contact is absent (else: carried from the nearest node with it)
+};
+extern const std::array<TableColumn, kTableQuantities> kTableColumns;
+
+/// The node columns before the per-contact ones: "tY_mm,Q_kN,status,contact,present".
+constexpr int kTableNodeColumns = 5;
+
+/// A table in memory, SI. Node (i, j) is (tY[i], Q[j]); track k is one contact followed across
+/// nodes (docs/tables.md "Contacts across nodes").
+struct ContactTableData {
+  nlohmann::json header;                 ///< the JSON header as read or made
+  std::vector<double> tY;                ///< [m] increasing
+  std::vector<double> Q;                 ///< [N] increasing
+  int n_tracks = 0;
+  std::vector<CaseStatus> node_status;   ///< [i * nQ + j]
+  std::vector<std::uint8_t> cell_coarse; ///< [i * (nQ-1) + j]: the cell missed its error tolerance after refinement
+  std::vector<std::uint8_t> present;     ///< [(i * nQ + j) * n_tracks + k]
+  std::vector<double> v;                 ///< [((i * nQ + j) * n_tracks + k) * kTableQuantities + q], SI
+  std::size_t nT() const { return tY.size(); }
+  std::size_t nQ() const { return Q.size(); }
+  std::size_t at(std::size_t i, std::size_t j, int k) const {
+    return ((i * nQ() + j) * static_cast<std::size_t>(n_tracks) + static_cast<std::size_t>(k)) * kTableQuantities;
+  }
+};
+
+/// Read a table file (CSV with its JSON header line). Throws InputError naming the file and line.
+ContactTableData read_contact_table(const std::string& path);
+
+/// At most this many contacts in a lookup answer (the C interface's MHC_MAX_CONTACTS).
+constexpr int kTableMaxContacts = 6;
+
+/// One contact of a lookup: the interpolated quantities and their partial derivatives.
+struct TableContact {
+  int track = 0;                                   ///< 1-based track of the table
+  std::array<double, kTableQuantities> v{};        ///< SI
+  std::array<double, kTableQuantities> d_dtY{};    ///< per m
+  std::array<double, kTableQuantities> d_dQ{};     ///< per N
+};
+
+/// The answer at one (t_Y, Q).
+struct TableAnswer {
+  CaseStatus status = CaseStatus::OutOfRange;
+  bool coarse = false;       ///< the cell missed the interpolation tolerance (status outside_validity)
+  int n_contacts = 0;        ///< contacts with N > 0 (may exceed kTableMaxContacts: the rest omitted)
+  double Fz = 0, Fy = 0;     ///< [N] Σ N cos γ, Σ N sin γ
+  double dFy_dtY = 0, dFy_dQ = 0;  ///< [N/m], [-]
+  std::array<TableContact, kTableMaxContacts> c;
+};
+
+/// The interpolant of a table: node slopes made once; lookups allocate nothing and may run on
+/// any number of threads at once.
+class ContactTableLookup {
+ public:
+  explicit ContactTableLookup(ContactTableData data);
+  const ContactTableData& data() const { return d_; }
+  /// The answer at (tY [m], Q [N]); outside the node ranges: status out_of_range, no contact.
+  void lookup(double tY, double Q, TableAnswer& out) const;
+
+ private:
+  ContactTableData d_;
+  std::vector<double> dx_, dy_;  ///< node slopes along t_Y and Q, laid out as d_.v
+  std::vector<int> cell_tracks_; ///< per cell, the tracks present at one of its corners ...
+  std::vector<int> cell_first_;  ///< ... cell_tracks_[cell_first_[c] .. cell_first_[c+1])
+};
+
+/// Severity order of statuses for a cell (the worst of its corners): ok < outside_validity <
+/// derailed < the statuses without an answer.
+int status_severity(CaseStatus s);
+
+}  // namespace mh

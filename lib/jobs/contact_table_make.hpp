@@ -1,0 +1,62 @@
+#pragma once
+// Making a contact table (docs/tables.md): the case file's method (strips, half-space or auto)
+// solved at every node of its t_Y × Q sweep on the jobs' thread pool, each node's contacts
+// matched to those of its neighbours by position into tracks, the interpolant checked against
+// direct solves at every cell's centre, t_Y intervals halved where a cell misses its tolerance,
+// and the table written as CSV with a JSON header (input/contact_table.hpp reads it).
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "geometry/contact_geometry.hpp"
+#include "input/case_file.hpp"
+#include "input/contact_table.hpp"
+
+namespace mh {
+
+/// Options of `mhcontact table` (defaults documented in docs/tables.md).
+struct TableMakeOptions {
+  unsigned threads = 0;       ///< worker threads; 0 = all cores (default). The table does not depend on it.
+  bool check = true;          ///< solve every cell's centre directly and measure the error (default yes)
+  int refine = 3;             ///< halvings of a t_Y interval whose cells miss a tolerance (default 3; 0: none)
+  double min_step_mm = 0.05;  ///< no t_Y interval is halved below this (default 0.05 mm)
+  double tol_N = 0.01;        ///< contact normal force: |ΔN| / Q (default 1 %)
+  double tol_pmax = 0.03;     ///< peak pressure, relative (default 3 %)
+  double tol_area = 0.05;     ///< total area, relative (reported, not refined on; default 5 %)
+  double tol_position_mm = 0.5;  ///< contact position on the rail, mm (reported; default 0.5 mm)
+  bool quiet = false;
+};
+
+/// The error of the interpolant at one check point against the direct solve there.
+struct TableCheckError {
+  double tY = 0, Q = 0;   ///< [m], [N]
+  bool compared = false;  ///< both answered (else the statuses say why)
+  double e_N = 0;         ///< max |ΔN| over the contacts, / Q
+  double e_pmax = 0;      ///< |Δ pmax| / pmax
+  double e_area = 0;      ///< |Δ area| / area
+  double e_position = 0;  ///< [m] max |Δ y_rail| over the contacts carrying ≥ 5 % of Q
+  double e_Fy = 0;        ///< |Δ Fy| / Q
+  CaseStatus direct = CaseStatus::Ok, table = CaseStatus::Ok;
+};
+
+/// A made table and its check.
+struct TableMade {
+  ContactTableData data;                 ///< with its header (the error summary included)
+  std::vector<TableCheckError> checks;   ///< one per cell of the final grid (check on)
+  std::size_t solves = 0;                ///< direct solves made (nodes and check points)
+};
+
+/// Make the table of `cf` (its pair `pg`, method, material; its sweep gives the initial nodes:
+/// t_Y from/to/step or a list, Q a list of at least two values). Throws InputError for a case
+/// file that cannot make a table (a case list, one Q, the multi-Hertzian method).
+TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const TableMakeOptions& opt, std::ostream& err);
+
+/// The table as its file's text (CSV with the JSON header line).
+void write_contact_table(const ContactTableData& t, std::ostream& out);
+
+/// `mhcontact table CASE.json -o FILE`: make, write atomically, print the error summary. Returns
+/// 0, or 1 when some cells stay beyond tolerance (coarse) or some nodes have no answer.
+int table_job(const CaseFile& cf, const TableMakeOptions& opt, const std::string& out_path, std::ostream& out,
+              std::ostream& err);
+
+}  // namespace mh

@@ -1,0 +1,77 @@
+"""Contact tables from Python (docs/tables.md): mhcontact.Table over the C interface, its lookup
+and lookup_many against each other and against the table's nodes, and its errors."""
+import json
+import os
+import subprocess
+import tempfile
+import time
+
+import numpy as np
+import pytest
+
+import mhcontact
+
+SRC = os.environ.get("MHCONTACT_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+BINARY = os.environ.get("MHCONTACT_BINARY", "mhcontact")
+
+
+@pytest.fixture(scope="module")
+def table_path():
+    d = tempfile.mkdtemp()
+    path = os.path.join(d, "table.csv")
+    rc = subprocess.run([BINARY, "table", os.path.join(SRC, "cases", "s1002-60e1-table.json"), "-o", path, "-q",
+                         "--threads", "2"]).returncode
+    assert rc in (0, 1)
+    return path
+
+
+def test_table_lookup(table_path):
+    t = mhcontact.Table(table_path)
+    h = json.loads(t.header)
+    assert h["schema"] == "mhcontact.table/1"
+    assert t.range == pytest.approx((-4e-3, 10e-3, 20e3, 140e3))
+    # At a node the table gives the node's values (the file's rows).
+    with open(table_path) as f:
+        f.readline()
+        names = f.readline().strip().split(",")
+        rows = [dict(zip(names, l.strip().split(","))) for l in f]
+    node = [r for r in rows if float(r["tY_mm"]) == 2 and float(r["Q_kN"]) == 60 and r["present"] == "1"]
+    a = t.lookup(2e-3, 60e3)
+    assert a["status"] == "ok"
+    assert a["n_contacts"] == len(node) == 1
+    assert a["contacts"][0]["N_N"] == pytest.approx(float(node[0]["N_kN"]) * 1e3, rel=1e-12)
+    assert a["contacts"][0]["p_max_Pa"] == pytest.approx(float(node[0]["pmax_MPa"]) * 1e6, rel=1e-12)
+    # lookup_many equals lookup.
+    tY = np.linspace(-4e-3, 10e-3, 997)
+    Q = np.full_like(tY, 73e3)
+    m = t.lookup_many(tY, Q)
+    for i in range(0, len(tY), 37):
+        one = t.lookup(tY[i], Q[i])
+        assert mhcontact.STATUS_NAMES[m["status"][i]] == one["status"]
+        assert m["n_contacts"][i] == one["n_contacts"]
+        assert m["Fy_N"][i] == one["Fy_N"]
+        for k, c in enumerate(one["contacts"]):
+            assert m["N_N"][i, k] == c["N_N"] and m["track"][i, k] == c["track"]
+            assert m["dN_dtY_N_per_m"][i, k] == c["d_dtY"]["N_N"]
+    assert (m["n_contacts"] > 1).any()  # two-point contact near flange onset
+    # Outside: out_of_range, no contact.
+    assert t.lookup(11e-3, 60e3)["status"] == "out_of_range"
+    # The cost of lookup_many (printed, not asserted: the machine is shared).
+    tY = 6e-3 * np.sin(np.linspace(0, 10 * np.pi, 10000)) + 3e-3
+    # CPU time of the thread, best of 5: the first calls also fault in the output arrays' pages.
+    dt = []
+    for _ in range(5):
+        t0 = time.thread_time()
+        m = t.lookup_many(tY, np.full_like(tY, 60e3))
+        dt.append(time.thread_time() - t0)
+    dt = min(dt)
+    print(f"lookup_many: {dt / len(tY) * 1e6:.3f} us a point, {dt / max(1, m['n_contacts'].sum()) * 1e6:.3f} us a contact")
+
+
+def test_table_errors(tmp_path, table_path):
+    bad = tmp_path / "bad.csv"
+    bad.write_text("tY_mm,Q_kN\n1,2\n")
+    with pytest.raises(mhcontact.InputError, match="bad.csv:1"):
+        mhcontact.Table(str(bad))
+    with pytest.raises(ValueError, match="differ in length"):
+        mhcontact.Table(table_path).lookup_many(np.zeros(3), np.zeros(2))

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# `mhcontact table` (docs/tables.md): the shipped example's exit code, summary and header, the
+# Python reader of docs/tables.md run as written (its node values are those `mhcontact run`
+# writes for the same node), and must-fail inputs with their messages and exit code 2.
+# Usage: bash tables.sh <mhcontact binary> <source dir>
+set -u
+BIN="$1"; SRC="$2"
+TMP="$(mktemp -d)"; trap 'rm -rf "$TMP"' EXIT
+cd "$TMP" || exit 1
+fail=0
+check() { local what="$1"; shift; if ! "$@"; then echo "FAIL: $what"; fail=1; fi; }
+PY=/usr/bin/python3; command -v "$PY" >/dev/null || PY=python3
+
+mkdir -p out
+"$BIN" table "$SRC/cases/s1002-60e1-table.json" -o out/table.csv --threads 2 2>stderr.txt
+rc=$?
+# Exit 1: coarse cells at flange onset and t_Y nodes without an answer, dropped (docs/tables.md).
+check "example exit 1" test $rc -eq 1
+check "summary line" grep -q '^mhcontact table: 27 x 4 nodes, 6 contact tracks, .* 9 coarse cells, 3 t_Y nodes without an answer (dropped)$' stderr.txt
+check "header schema" grep -q '^# {.*"schema":"mhcontact.table/1"' out/table.csv
+check "column line" test "$(sed -n 2p out/table.csv)" = "tY_mm,Q_kN,status,contact,present,N_kN,y_rail_mm,z_rail_mm,y_wheel_mm,gamma_deg,r_roll_mm,pmax_MPa,area_mm2,a_mm,b_mm,a_el_mm,b_el_mm,C11,C22,C23"
+check "rows: 27 x 4 nodes x 6 tracks" test "$(tail -n +3 out/table.csv | wc -l)" -eq 648
+check "dropped nodes in the header" grep -q '"dropped_tY_mm":\[6.5,6.625,6.75\]' out/table.csv
+check "profiles with checksums" grep -q '"sha256"' out/table.csv
+# The same table whatever the thread count.
+"$BIN" table "$SRC/cases/s1002-60e1-table.json" -o out/table1.csv --threads 1 -q
+check "thread count" cmp out/table.csv out/table1.csv
+
+# The Python reader of docs/tables.md, as written.
+awk '/^```python/ { b = 1; next } /^```/ { b = 0 } b' "$SRC/docs/tables.md" > reader.py
+check "reader extracted" grep -q "def read_table" reader.py
+"$PY" reader.py > reader.txt 2>&1
+check "reader runs" test $? -eq 0
+check "reader header line" grep -q '^strips 27 x 4 nodes, 6 tracks; N within ' reader.txt
+# Its rows at t_Y = 6 mm, Q = 60 kN against `mhcontact run` of that node (patches.csv).
+"$PY" - "$SRC/cases/s1002-60e1-table.json" <<'PY'
+import json, sys
+c = json.load(open(sys.argv[1]))
+c["sweep"] = {"tY_mm": [6], "Q_kN": [60]}
+json.dump(c, open("node.json", "w"))
+PY
+"$BIN" run node.json -o run6 -q --digits max
+check "reader rows are the run's patches" "$PY" - <<'PY'
+import csv, sys
+rows = [l.split() for l in open("reader.txt").read().splitlines()[1:]]
+patches = list(csv.DictReader(open("run6/patches.csv")))
+if len(rows) != len(patches) or not rows:
+    sys.exit(f"{len(rows)} rows against {len(patches)} patches")
+for r, p in zip(sorted(rows, key=lambda r: float(r[3])), sorted(patches, key=lambda p: float(p["y_rail_mm"]))):
+    for a, b in ((float(r[1]), float(p["N_kN"])), (float(r[2]), float(p["pmax_MPa"])), (float(r[3]), float(p["y_rail_mm"]))):
+        if abs(a - b) > 1e-9 * max(1.0, abs(b)):
+            sys.exit(f"reader {r} against run {p['N_kN']}, {p['pmax_MPa']}, {p['y_rail_mm']}")
+PY
+
+# The force-history plot of docs/tables.md on a small history in the bench's columns (headless).
+if "$PY" -c 'import matplotlib' 2>/dev/null; then
+  printf 'step,tY_mm,N1_kN,N2_kN,Fy_table_kN,dFy_dtY_kN_per_mm,Fy_direct_kN,status_table\n0,0,10,0,1,0,1,ok\n1,0.5,8,2,2,1,,ok\n2,1,5,5,3,1,3.1,outside_validity\n' > hist.csv
+  MPLBACKEND=Agg "$PY" "$SRC/scripts/plot_table_history.py" hist.csv -o hist.png --steps 0:2
+  check "history plot written" test -s hist.png
+fi
+
+# Must-fail inputs: exit 2, the message names the file and the rule.
+cp "$SRC/cases/manchester.json" mh.json
+sed -i "s|\.\./profiles|$SRC/profiles|g" mh.json
+"$BIN" table mh.json -o out/x.csv 2>err.txt; rc=$?
+check "multi-hertzian refused (exit 2)" test $rc -eq 2
+check "multi-hertzian message" grep -q 'mh.json: /method: value multi-hertzian: a table is made by a grid method' err.txt
+sed 's/"method": "multi-hertzian"/"method": "strips"/; s/"Q_kN": \[[^]]*\]/"Q_kN": [50]/' mh.json > one_q.json
+grep -q '"method"' one_q.json || sed -i 's/"model": "elastic",/"model": "elastic", "method": "strips",/' one_q.json
+"$BIN" table one_q.json -o out/x.csv 2>err.txt; rc=$?
+check "one load refused (exit 2)" test $rc -eq 2
+check "one load message" grep -q 'one_q.json: /sweep: a table needs a sweep with at least two t_Y and two Q values' err.txt
+check "nothing written on bad input" test ! -e out/x.csv
+
+test $fail -eq 0 && echo "tables: OK"
+exit $fail
