@@ -28,17 +28,6 @@ std::uint32_t warning_bit(const Warning& w) {
   }
 }
 
-int32_t status_code(CaseStatus s) {
-  switch (s) {
-    case CaseStatus::Ok: return MHC_STATUS_OK;
-    case CaseStatus::NoContact: return MHC_STATUS_NO_CONTACT;
-    case CaseStatus::OutOfRange: return MHC_STATUS_OUT_OF_RANGE;
-    case CaseStatus::NotConverged: return MHC_STATUS_NOT_CONVERGED;
-    case CaseStatus::OutsideValidity: return MHC_STATUS_OUTSIDE_VALIDITY;
-    case CaseStatus::Derailed: return MHC_STATUS_DERAILED;
-  }
-  return MHC_STATUS_NOT_CONVERGED;
-}
 
 int32_t method_code(Method m) {
   switch (m) {
@@ -51,6 +40,18 @@ int32_t method_code(Method m) {
 }
 
 }  // namespace
+
+int32_t status_code(CaseStatus s) {
+  switch (s) {
+    case CaseStatus::Ok: return MHC_STATUS_OK;
+    case CaseStatus::NoContact: return MHC_STATUS_NO_CONTACT;
+    case CaseStatus::OutOfRange: return MHC_STATUS_OUT_OF_RANGE;
+    case CaseStatus::NotConverged: return MHC_STATUS_NOT_CONVERGED;
+    case CaseStatus::OutsideValidity: return MHC_STATUS_OUTSIDE_VALIDITY;
+    case CaseStatus::Derailed: return MHC_STATUS_DERAILED;
+  }
+  return MHC_STATUS_NOT_CONVERGED;
+}
 
 bool result_ok(const mhc_result* out, std::size_t result_size) {
   if (!out) return fail(MHC_ERR_ARGUMENT, "result: null pointer"), false;
@@ -161,6 +162,27 @@ void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_res
   }
 }
 
+void fill_warning(const Warning& w, mhc_warning* out) {
+  const std::size_t size = out->struct_size;
+  std::memset(static_cast<void*>(out), 0, sizeof(mhc_warning));
+  out->struct_size = size;
+  out->class_name = to_string(w.cls);
+  out->outside_validity = is_validity_class(w.cls) ? 1 : 0;
+  out->contact_kind = static_cast<int32_t>(w.kind);
+  out->contact = w.contact;
+  out->contact2 = w.contact2;
+  out->n_measures = w.n;
+  for (int k = 0; k < w.n && k < MHC_WARNING_MAX_MEASURES; ++k) {
+    const Measure& m = w.m[static_cast<std::size_t>(k)];
+    mhc_warning_measure& o = out->measure[k];
+    o.name = name(m.q);
+    o.unit = si_unit(m.q);
+    o.value_si = m.value;
+    o.limit_si = m.rel ? m.limit : std::numeric_limits<double>::quiet_NaN();
+    o.relation = m.rel;
+  }
+}
+
 }  // namespace mh::capi
 
 using namespace mh;
@@ -181,25 +203,7 @@ mhc_error mhc_result_warning(const mhc_workspace* ws, int32_t i, mhc_warning* ou
   if (i < 0 || static_cast<std::size_t>(i) >= ws->r.warnings.size())
     return fail(MHC_ERR_ARGUMENT, "warning " + std::to_string(i) + ": the case has " +
                                       std::to_string(ws->r.warnings.size()) + " (0-based index)");
-  const Warning& w = ws->r.warnings[static_cast<std::size_t>(i)];
-  const std::size_t size = out->struct_size;
-  std::memset(static_cast<void*>(out), 0, sizeof(mhc_warning));
-  out->struct_size = size;
-  out->class_name = to_string(w.cls);
-  out->outside_validity = is_validity_class(w.cls) ? 1 : 0;
-  out->contact_kind = static_cast<int32_t>(w.kind);
-  out->contact = w.contact;
-  out->contact2 = w.contact2;
-  out->n_measures = w.n;
-  for (int k = 0; k < w.n && k < MHC_WARNING_MAX_MEASURES; ++k) {
-    const Measure& m = w.m[static_cast<std::size_t>(k)];
-    mhc_warning_measure& o = out->measure[k];
-    o.name = name(m.q);
-    o.unit = si_unit(m.q);
-    o.value_si = m.value;
-    o.limit_si = m.rel ? m.limit : std::numeric_limits<double>::quiet_NaN();
-    o.relation = m.rel;
-  }
+  mh::capi::fill_warning(ws->r.warnings[static_cast<std::size_t>(i)], out);
   return MHC_OK;
 }
 

@@ -69,6 +69,10 @@ std::string to_string(const WheelsetWarning& w) {
     case WheelsetWarning::Kind::RollInGeometryNeglected:
       return "roll_in_geometry_neglected:roll_mrad=" + thousandths(w.value * 1e3) + ">" +
              thousandths(w.limit * 1e3);
+    case WheelsetWarning::Kind::RollNearFlange:
+      return std::string("roll_near_flange:wheel=") + (w.side > 0 ? "left" : "right") +
+             ":gamma_deg=" + thousandths(w.value * 180 / 3.14159265358979323846) + ">" +
+             thousandths(w.limit * 180 / 3.14159265358979323846);
     case WheelsetWarning::Kind::YawLeadNotModelled:
       return std::string("yaw_lead_not_modelled:wheel=") + (w.side > 0 ? "left" : "right") +
              ":lead_mm=" + thousandths(w.value * 1e3) + ">" + thousandths(w.limit * 1e3);
@@ -76,20 +80,24 @@ std::string to_string(const WheelsetWarning& w) {
   return "unknown";
 }
 
+void WheelsetContact::place(Side& S, int sigma) {
+  S.sigma = sigma;
+  S.R0 = S.geo.nominal_radius;
+  // The taping line lies a = flange_back_distance/2 − flange_back_position from the wheelset
+  // centre; at t_Y = 0 it faces rail y = y_offset, so the rail origin lies c = a − y_offset
+  // from the track centre (geometry/wheelset.hpp: the same placement).
+  S.a = setup_.track.flange_back_distance / 2 - setup_.track.flange_back_position;
+  S.c = S.a - S.geo.y_offset;
+}
+
 WheelsetContact::WheelsetContact(const WheelsetSetup& setup) : setup_(setup) {
   std::string why;
   if (!setup.material.valid(&why)) throw std::invalid_argument("material: " + why);
   auto build = [&](Side& S, int sigma, const Profile& wheel, const Profile& rail, double R0) {
-    S.sigma = sigma;
     TrackSetup t = setup.track;
     t.nominal_radius = R0;
-    S.R0 = R0;
     S.geo = build_geometry(wheel, rail, t, setup.geometry);
-    // The taping line lies a = flange_back_distance/2 − flange_back_position from the wheelset
-    // centre; at t_Y = 0 it faces rail y = y_offset, so the rail origin lies c = a − y_offset
-    // from the track centre (geometry/wheelset.hpp: the same placement).
-    S.a = t.flange_back_distance / 2 - t.flange_back_position;
-    S.c = S.a - S.geo.y_offset;
+    place(S, sigma);
     for (const auto& w : S.geo.warnings) warnings_.push_back(wheel.source + ": " + w);
     for (const Profile* p : {&wheel, &rail})
       for (const auto& w : p->warnings) warnings_.push_back(p->source + ": " + w);
@@ -98,19 +106,58 @@ WheelsetContact::WheelsetContact(const WheelsetSetup& setup) : setup_(setup) {
   build(right_, -1, setup.wheel_right, setup.rail_right, setup.nominal_radius_right);
 }
 
-double WheelsetContact::first_contact_height(int side, double tY) const {
-  const Side& S = side > 0 ? left_ : right_;
-  const ContactGeometry& G = S.geo;
-  if (!G.covers(tY)) return kNaN;
+WheelsetContact::WheelsetContact(const ContactGeometry& left, const ContactGeometry& right, const TrackSetup& track,
+                                 const Material& material, const MethodOptions& method,
+                                 std::vector<std::string> warnings)
+    : warnings_(std::move(warnings)) {
+  setup_.track = track;
+  setup_.material = material;
+  setup_.method = method;
+  setup_.nominal_radius_left = left.nominal_radius;
+  setup_.nominal_radius_right = right.nominal_radius;
+  left_.geo = left;
+  right_.geo = right;
+  place(left_, +1);
+  place(right_, -1);
+}
+
+namespace {
+
+/// The table row k and weight f of t_Y in G's grid (covers(tY) assumed).
+void table_at(const ContactGeometry& G, double tY, std::size_t& k, double& f) {
   const std::size_t n = G.tY.size();
   const double step = (G.tY.back() - G.tY.front()) / static_cast<double>(n - 1);
-  std::size_t k = static_cast<std::size_t>(std::clamp((tY - G.tY.front()) / step, 0.0, static_cast<double>(n - 2)));
+  k = static_cast<std::size_t>(std::clamp((tY - G.tY.front()) / step, 0.0, static_cast<double>(n - 2)));
   k = std::min(k, n - 2);
-  const double f = (tY - G.tY[k]) / (G.tY[k + 1] - G.tY[k]);
+  f = (tY - G.tY[k]) / (G.tY[k + 1] - G.tY[k]);
+}
+
+}  // namespace
+
+double WheelsetContact::first_contact_height(int side, double tY) const {
+  const ContactGeometry& G = (side > 0 ? left_ : right_).geo;
+  if (!G.covers(tY)) return kNaN;
+  std::size_t k = 0;
+  double f = 0;
+  table_at(G, tY, k, f);
   const double gmin = G.z_contact[k] + f * (G.z_contact[k + 1] - G.z_contact[k]);
   // z_contact: the smallest z_w − z_r with the wheel at its datum (wheel frame on the rail frame);
   // lowered by it, the wheel touches, and its axle (R0 above the taping line's z0) stands at:
   return G.wheel_z0 + G.nominal_radius - gmin;
+}
+
+double WheelsetContact::roll_lever(int side, double tY) const {
+  const Side& S = side > 0 ? left_ : right_;
+  const ContactGeometry& G = S.geo;
+  if (!G.covers(tY)) return S.a;
+  std::size_t k = 0;
+  double f = 0;
+  table_at(G, tY, k, f);
+  // The main contact point at t_Y: interpolated within one potential ellipse, else the nearer row's.
+  const CandidateGeom &c0 = G.main_at(k), &c1 = G.main_at(k + 1);
+  auto lever = [&](const CandidateGeom& c) { return S.a + c.y_w - c.r_roll * std::tan(c.gamma); };
+  if (G.main_ellipse[k] != G.main_ellipse[k + 1]) return lever(f < 0.5 ? c0 : c1);
+  return lever(c0) + f * (lever(c1) - lever(c0));
 }
 
 void WheelsetContact::solve_wheel(const Side& S, const WheelsetPose& pose, double roll, WheelResult& w,
@@ -138,8 +185,8 @@ void WheelsetContact::solve_wheel(const Side& S, const WheelsetPose& pose, doubl
     const double Q = s > 0 ? pose.Q_left : pose.Q_right;
     solve_contact(S.geo, mat, w.tY, Q, opt, w.r, &ws.grid);
   } else {
-    // δz_s = h_s − (Z + σ a φ); outside the table h is NaN and the solve says out_of_range.
-    const double dz = std::isfinite(w.h) ? w.h - (pose.Z + s * S.a * roll) : 0.0;
+    // δz_s = h_s − Z − σ φ L_s (roll_lever); outside the table h is NaN and the solve says out_of_range.
+    const double dz = std::isfinite(w.h) ? w.h - pose.Z - s * roll * roll_lever(s, w.tY) : 0.0;
     solve_multi_hertz_approach(S.geo, mat, w.tY, dz, opt.multi_hertzian, ws.approach, w.r);
     solve_tangential(w.r, mat, w.tY, opt.tangential);
     judge_case(w.r, S.geo, mat, w.tY, opt);
@@ -178,9 +225,10 @@ void WheelsetContact::solve_both(const WheelsetPose& pose, const WheelsetStepOpt
                                  WheelsetWorkspace& ws) const {
   double roll = pose.roll;
   if (pose.vertical == WheelsetVertical::Position && pose.solve_roll) {
-    // Both wheels touch at one height: h_L − a_L φ = h_R + a_R φ (z_s = Z + σ a φ).
+    // Both wheels touch at one height: h_L − φ L_L = h_R + φ L_R.
     const double hl = first_contact_height(+1, pose.y), hr = first_contact_height(-1, -pose.y);
-    roll = std::isfinite(hl) && std::isfinite(hr) ? (hl - hr) / (left_.a + right_.a) : 0.0;
+    const double L = roll_lever(+1, pose.y) + roll_lever(-1, -pose.y);
+    roll = std::isfinite(hl) && std::isfinite(hr) && L > 0 ? (hl - hr) / L : 0.0;
   }
   solve_wheel(left_, pose, roll, out.left, ws);
   solve_wheel(right_, pose, roll, out.right, ws);
@@ -199,13 +247,23 @@ void WheelsetContact::solve_both(const WheelsetPose& pose, const WheelsetStepOpt
       const double d = std::isfinite(w.r.dz) ? w.r.dz : w.r.approach;
       return w.h - d;
     };
+    // Z + σ φ L_s = h_s − δ_s on both wheels.
     const double zl = end_height(out.left), zr = end_height(out.right);
-    out.roll = (zl - zr) / (left_.a + right_.a);
-    out.Z = (right_.a * zl + left_.a * zr) / (left_.a + right_.a);
+    const double Ll = roll_lever(+1, pose.y), Lr = roll_lever(-1, -pose.y);
+    out.roll = (zl - zr) / (Ll + Lr);
+    out.Z = zl - out.roll * Ll;
   }
   out.warnings.clear();
   if (std::fabs(out.roll) > opt.roll_limit)
     out.warnings.push_back({WheelsetWarning::Kind::RollInGeometryNeglected, 0, std::fabs(out.roll), opt.roll_limit});
+  if (std::fabs(out.roll) > 1e-4) {
+    for (const WheelResult* w : {&out.left, &out.right}) {
+      double g = 0;
+      for (const ContactPoint& c : w->contacts) g = std::max(g, c.gamma);
+      if (g > opt.roll_flange_gamma)
+        out.warnings.push_back({WheelsetWarning::Kind::RollNearFlange, w->side, g, opt.roll_flange_gamma});
+    }
+  }
   if (pose.yaw != 0) {
     for (const WheelResult* w : {&out.left, &out.right}) {
       // The lead of the contact point of a cone of angle γ at radius r yawed by ψ: r tan γ tan ψ.

@@ -1,5 +1,5 @@
 #pragma once
-// The wheelset call (docs/wheelset-contact.md): both wheels of a rigid wheelset on their rails,
+// The wheelset call (docs/c-api.md "The wheelset call"): both wheels of a rigid wheelset on their rails,
 // one call per time step of a vehicle-dynamics code. Pose and velocities in, per contact and per
 // wheelset the forces in track coordinates out, with the statuses and warnings of the judge and
 // the derivatives an implicit integrator needs.
@@ -18,11 +18,13 @@
 // pair (t_Y > 0: towards that wheel's flange contact).
 //
 // What is modelled, and the limits (each reported as a WheelsetWarning when it applies):
-//  - roll φ (about x, positive raising the left wheel) enters the vertical position of each wheel
-//    (z_s = Z + σ a φ at the taping line), not the contact geometry: each pair's tables are those
-//    of the wheel upright on its rail, so the relative roll ±φ of wheel against rail is neglected
-//    (a contact-angle error of |φ|): warning roll_in_geometry_neglected above
-//    WheelsetStepOptions::roll_limit;
+//  - roll φ (about x, positive raising the left wheel) enters the height of each wheel's contact
+//    to first order (δz_s = h_s − Z − σ φ L_s, roll_lever()), not the contact geometry: each
+//    pair's tables are those of the wheel upright on its rail, so the relative roll ±φ of wheel
+//    against rail is neglected in the contact point, angle and curvatures (a contact-angle error
+//    of |φ|): warning roll_in_geometry_neglected above WheelsetStepOptions::roll_limit; near the
+//    flange the roll moves the contact point itself, which the first-order rule misses: warning
+//    roll_near_flange (WheelsetStepOptions::roll_flange_gamma, with the measured error);
 //  - yaw ψ enters the creepages (η = (ẏ − Ω r ψ)/(V cos γ), docs/method.md §10), not the
 //    contact point: the lead of the contact point ahead of the axle, x ≈ −r tan γ tan ψ for a
 //    cone, is not modelled; warning yaw_lead_not_modelled when |x| exceeds a tenth of the
@@ -70,8 +72,9 @@ struct WheelsetPose {
   WheelsetVertical vertical = WheelsetVertical::Loads;
   double Q_left = 0, Q_right = 0;  ///< [N] vertical loads (Loads)
   /// [m] Position: the axle centre's height in the virtual-penetration sense of eq. 11: each wheel's
-  /// δz_s = h_s(t_Y) − (Z + σ a φ), h_s the axle height at which that wheel first touches its rail
-  /// (rail frames' z = 0 at track z = 0). As mhc_solve_approach, multi-Hertzian only.
+  /// δz_s = h_s(t_Y) − Z − σ φ L_s, h_s the axle height at which that wheel first touches its rail
+  /// upright (rail frames' z = 0 at track z = 0), L_s its roll lever (roll_lever()). As
+  /// mhc_solve_approach, multi-Hertzian only.
   double Z = 0;
   bool solve_roll = true;  ///< Position: φ such that both wheels touch at one height (else `roll` given)
   double roll = 0;      ///< [rad] Position with solve_roll false: the roll φ
@@ -85,13 +88,14 @@ struct WheelsetPose {
 /// A wheelset-level limit that applies to a step (the per-contact statuses and warnings are the
 /// judge's, in each WheelResult::r).
 struct WheelsetWarning {
-  enum class Kind { RollInGeometryNeglected, YawLeadNotModelled };
+  enum class Kind { RollInGeometryNeglected, YawLeadNotModelled, RollNearFlange };
   Kind kind = Kind::RollInGeometryNeglected;
   int side = 0;        ///< +1 left, −1 right, 0 the wheelset
-  double value = 0;    ///< [rad] |φ| / [m] |lead| estimated
-  double limit = 0;    ///< [rad] 0 / [m] a tenth of the semi-axis a
+  double value = 0;    ///< [rad] |φ| / [m] |lead| estimated / [rad] γ of the contact
+  double limit = 0;    ///< [rad] roll_limit / [m] a tenth of the semi-axis a / [rad] roll_flange_gamma
 };
-/// "roll_in_geometry_neglected:roll_mrad=1.2" / "yaw_lead_not_modelled:wheel=left:lead_mm=3.1>0.6"
+/// "roll_in_geometry_neglected:roll_mrad=1.2>1", "yaw_lead_not_modelled:wheel=left:lead_mm=3.1>0.6",
+/// "roll_near_flange:wheel=left:gamma_deg=29>25"
 std::string to_string(const WheelsetWarning& w);
 
 /// Forces and moments [N], [N m] on the wheelset, track frame, moments about the axle centre.
@@ -152,6 +156,12 @@ struct WheelsetStepOptions {
   /// [rad] |φ| above this: roll_in_geometry_neglected (default 1 mrad: the neglected relative roll
   /// turns the normal force by φ, a lateral-force error of φ N cos γ, 0.1 % of N).
   double roll_limit = 1e-3;
+  /// [rad] a loaded contact steeper than this under a roll |φ| > 0.1 mrad: roll_near_flange
+  /// (default 25°). The first-order roll (roll_lever) assumes the contact point stays where the
+  /// upright wheel has it; near the flange the roll moves it (S1002 on 60E1 1:40, the roll solved
+  /// against geometry/wheelset's exact rotation: within 3 % up to y = 6 mm, γ 21°; at 6.5 mm
+  /// (γ 29°) 0.84 against 4.17 mrad: the rolled wheel touches on its flange, γ 68°).
+  double roll_flange_gamma = 25 * 3.14159265358979323846 / 180;
 };
 
 /// One thread's memory for the steps of one wheelset (the grid methods' and the
@@ -169,6 +179,11 @@ class WheelsetContact {
  public:
   /// Throws InputError as build_geometry (a pair that cannot be placed).
   explicit WheelsetContact(const WheelsetSetup& setup);
+  /// From the two pairs' geometry already built (the C interface's pairs; the profiles of
+  /// setup() are then empty): each geometry's nominal radius and placement, `track`'s flange-back
+  /// data, the material and method of both. `warnings`: the pairs' (kept as given).
+  WheelsetContact(const ContactGeometry& left, const ContactGeometry& right, const TrackSetup& track,
+                  const Material& material, const MethodOptions& method, std::vector<std::string> warnings);
 
   const ContactGeometry& geometry(int side) const { return side > 0 ? left_.geo : right_.geo; }
   const WheelsetSetup& setup() const { return setup_; }
@@ -178,6 +193,11 @@ class WheelsetContact {
   /// [m] The axle height at which wheel `side` first touches its rail at its t_Y (linear in the
   /// table); NaN outside the table.
   double first_contact_height(int side, double tY) const;
+  /// [m] The lever L_s of the roll on wheel `side`'s first-contact height at its t_Y: rolling the
+  /// wheelset by φ lowers that height by σ φ L_s to first order, L_s = a + y_w − r tan γ of the
+  /// main contact (y_w, r, γ from the table; the rotated profile's contact point moves, hence the
+  /// r tan γ: at a 60° flange it exceeds a). a outside the table.
+  double roll_lever(int side, double tY) const;
   /// The pairs' warnings (placement), "<profile>: <warning>".
   const std::vector<std::string>& warnings() const { return warnings_; }
 
@@ -196,6 +216,8 @@ class WheelsetContact {
   WheelsetSetup setup_;
   Side left_, right_;
   std::vector<std::string> warnings_;
+
+  void place(Side& S, int sigma);
 
   /// One wheel at t_Y = σ y with its load (Loads) or its δz (Position), into w (no derivatives).
   void solve_wheel(const Side& S, const WheelsetPose& pose, double roll, WheelResult& w, WheelsetWorkspace& ws) const;
