@@ -3,6 +3,7 @@
 // released by mhc_wheelset_step_many. python/mhcontact/__init__.py broadcasts the inputs.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <algorithm>
 #include <cmath>

@@ -59,8 +59,9 @@ def test_position_roll_solved_and_derivatives(wheelset):
     assert lifted["status"][0] == "no_contact"
     Z = 0.5 * (lifted["left_h_m"][0] + lifted["right_h_m"][0]) - 50e-6
     out = wheelset.step(3e-3, Z_m=Z, V_m_per_s=30.0, derivatives=True)
-    assert out["left_dz_m"][0] == pytest.approx(50e-6, abs=1e-12)
-    assert out["right_dz_m"][0] == pytest.approx(50e-6, abs=1e-12)
+    # The roll solved: both wheels at one penetration (the levers differ, so not exactly 50 µm).
+    assert out["left_dz_m"][0] == pytest.approx(out["right_dz_m"][0], abs=1e-12)
+    assert 40e-6 < out["left_dz_m"][0] < 60e-6
     h = 3e-6
     up = wheelset.step(3e-3, Z_m=Z + h, roll_rad=out["roll_rad"][0], V_m_per_s=30.0)
     dn = wheelset.step(3e-3, Z_m=Z - h, roll_rad=out["roll_rad"][0], V_m_per_s=30.0)
@@ -88,15 +89,17 @@ def test_gil_released(wheelset):
             ticks.append(time.perf_counter())
             time.sleep(0.001)
 
-    t = threading.Thread(target=count)
+    t = threading.Thread(target=count, daemon=True)
     t.start()
-    time.sleep(0.01)
-    n0 = len(ticks)
-    t0 = time.perf_counter()
-    wheelset.step(y, Q_left_N=50e3, Q_right_N=50e3, V_m_per_s=30.0, threads=1)
-    elapsed = time.perf_counter() - t0
-    n1 = len(ticks)
-    stop.set()
-    t.join()
+    try:
+        time.sleep(0.01)
+        n0 = len(ticks)
+        t0 = time.perf_counter()
+        wheelset.step(y, Q_left_N=50e3, Q_right_N=50e3, V_m_per_s=30.0, threads=1)
+        elapsed = time.perf_counter() - t0
+        n1 = len(ticks)
+    finally:
+        stop.set()
+        t.join()
     assert elapsed > 0.05
     assert n1 - n0 >= 10, "the counting thread stalled during the steps: the GIL was held"
