@@ -2,13 +2,16 @@
 // call, the first-contact heights against the rigid wheelset geometry (geometry/wheelset.hpp, an
 // independent contact search), the solved roll, the derivatives against finite differences of
 // other steps and against the analytic normal stiffness, and the creep forces' mirror.
-// Breaks guarded (each seen to fail):
-//  - t_Y = y for both wheels (no σ): "mirror symmetry" and "symmetric wheelset" fail;
-//  - Y_track = y_pair on the right wheel (no σ in add_contact): "symmetric wheelset" fails (the
-//    lateral forces add instead of cancelling);
-//  - no σ on the right wheel's yaw in the kinematics: "yaw: the lateral creep forces" fails;
-//  - first_contact_height without the −gmin: "first-contact heights" fails;
-//  - a derivative step halved in the divisor: "derivatives" fails.
+// Breaks guarded (each seen to fail, the tests named):
+//  - t_Y = y for both wheels (no σ): "mirror symmetry", "each contact is the single-pair call",
+//    "first-contact heights", "the yaw lead warning" (and the C test of the single-pair call);
+//  - Y_track = y_pair on the right wheel (no σ in add_contact): "a symmetric wheelset", "mirror
+//    symmetry", "yaw: the lateral creep forces";
+//  - no σ on the right wheel's yaw in the kinematics: "each contact is the single-pair call",
+//    "yaw: the lateral creep forces";
+//  - first_contact_height without the −gmin: "first-contact heights", "derivatives";
+//  - a central difference divided by h instead of 2h: "derivatives";
+//  - the roll lever without its r tan γ (a + y_w only): "first-contact heights and the solved roll".
 #include <catch2/catch.hpp>
 
 #include <cmath>
