@@ -170,6 +170,30 @@ TEST_CASE("C wheelset: bad input is an argument error naming the field, the valu
   p.vertical = 7;
   CHECK(mhc_wheelset_step(fx().ws, w.w, &p, &r) == MHC_ERR_ARGUMENT);
   CHECK(std::string(mhc_last_message()).find("pose.vertical = 7") != std::string::npos);
+  // The axle height given needs the multi-Hertzian method (the approach-prescribed solve).
+  mhc_pair_options o;
+  mhc_pair_options_init(&o);
+  o.rail_inclination = 40;
+  o.method = MHC_METHOD_HALF_SPACE;
+  mhc_pair* hs = nullptr;
+  REQUIRE(mhc_pair_create(fx().wheel, fx().rail, &o, &hs) == MHC_OK);
+  mhc_wheelset* whs = nullptr;
+  REQUIRE(mhc_wheelset_create(hs, hs, nullptr, &whs) == MHC_OK);
+  mhc_wheelset_workspace* wsh = nullptr;
+  REQUIRE(mhc_wheelset_workspace_create(whs, &wsh) == MHC_OK);
+  p = pose(0, 0, 0);
+  p.vertical = MHC_VERTICAL_POSITION;
+  p.solve_roll = 1;
+  p.Z_m = 1.0;
+  CHECK(mhc_wheelset_step(whs, wsh, &p, &r) == MHC_ERR_UNSUPPORTED);
+  CHECK(std::string(mhc_last_message()).find("needs the multi-hertzian method, not half-space") != std::string::npos);
+  // Pairs of different methods make no wheelset.
+  mhc_wheelset* mixed = nullptr;
+  CHECK(mhc_wheelset_create(fx().pair, hs, nullptr, &mixed) == MHC_ERR_ARGUMENT);
+  CHECK(std::string(mhc_last_message()).find("build both pairs with the same method") != std::string::npos);
+  mhc_wheelset_workspace_free(wsh);
+  mhc_wheelset_free(whs);
+  mhc_pair_free(hs);
 }
 
 TEST_CASE("C wheelset: a batch on two threads equals single steps; the wheelset warnings as text",
