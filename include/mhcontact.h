@@ -26,8 +26,17 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The export macro: on Windows dllexport while building the DLL (MHC_BUILDING, set by the build),
+ * dllimport when using it, nothing for a static library (MHC_STATIC); elsewhere the default
+ * visibility (the library hides everything else). */
 #if defined(_WIN32)
+#if defined(MHC_STATIC)
+#define MHC_API
+#elif defined(MHC_BUILDING)
+#define MHC_API __declspec(dllexport)
+#else
 #define MHC_API __declspec(dllimport)
+#endif
 #elif defined(__GNUC__)
 #define MHC_API __attribute__((visibility("default")))
 #else
@@ -416,6 +425,166 @@ MHC_API const char* mhc_table_header(const mhc_table* t);
  *  out_of_range, no contacts (not an error). */
 MHC_API mhc_error mhc_table_lookup(const mhc_table* t, double tY_m, double Q_N, mhc_table_result* out);
 MHC_API void mhc_table_free(mhc_table* t);
+
+/* ---- the wheelset call (docs/c-api.md "The wheelset call") ------------------------------------
+ * Both wheels of a rigid wheelset on their rails, one call per time step: the pose and the
+ * velocities in, per wheel and per wheelset the forces in track coordinates, the statuses, the
+ * warnings and the derivatives out. Built from two pairs (mhc_pair_create): the left wheel on the
+ * left rail and the right wheel on the right rail, every profile in its canonical frame (y to its
+ * field side): the right pair is the mirror image, as the field gives its profiles.
+ * Track frame: x forward, y towards the LEFT rail, z up (right-handed); roll about x (positive
+ * raising the left wheel), yaw about z (positive turning x to the left). A wheelset displacement
+ * y is t_Y = +y on the left pair and -y on the right one.
+ * Limits (reported as MHC_WHEELSET_WARN_* bits): the roll enters each wheel's height, not the
+ * contact geometry (each pair's tables are those of the wheel upright on its rail); the yaw
+ * enters the creepages, not the contact point (its lead ahead of the axle is not modelled). */
+
+/** The interface version of this header: 1 = up to the warnings accessors; 2 = the wheelset
+ *  call, mhc_interface_version. Negotiate at run time with mhc_interface_version(). */
+#define MHC_INTERFACE_VERSION 2
+
+/** The newest interface version the library implements (its return) and, in *oldest when not
+ *  NULL, the oldest it still serves. A caller built against MHC_INTERFACE_VERSION v may use the
+ *  library when oldest <= v; when the return is below v, only the functions and fields of the
+ *  returned version exist (structs versioned by size: the library fills the fields it knows). */
+MHC_API int32_t mhc_interface_version(int32_t* oldest);
+
+typedef struct mhc_wheelset mhc_wheelset;
+typedef struct mhc_wheelset_workspace mhc_wheelset_workspace;
+
+/** What a wheelset adds to its two pairs. mhc_wheelset_options_init fills the defaults.
+ *  struct_size: every earlier size of this struct is accepted (later fields: their defaults). */
+typedef struct mhc_wheelset_options {
+  size_t struct_size;        /**< sizeof(mhc_wheelset_options), set by mhc_wheelset_options_init */
+  double mu;                 /**< Coulomb friction for the creep forces (FASTSIM on each ellipse);
+                                  NaN (default): normal contact only */
+  int32_t fastsim_nx;        /**< FASTSIM cells along x per strip (default 32) */
+  int32_t fastsim_ny;        /**< FASTSIM strips across (default 32) */
+} mhc_wheelset_options;
+
+typedef enum mhc_vertical {
+  MHC_VERTICAL_LOADS = 0,    /**< the two wheel loads given; the roll and height are outputs */
+  MHC_VERTICAL_POSITION = 1  /**< the axle height given (virtual penetration of eq. 11, as
+                                  mhc_solve_approach: multi-Hertzian pairs only) and the roll
+                                  given or solved */
+} mhc_vertical;
+
+/** One step's input (SI, track frame). Set struct_size = sizeof(mhc_wheelset_pose). */
+typedef struct mhc_wheelset_pose {
+  size_t struct_size;
+  int32_t vertical;              /**< mhc_vertical */
+  int32_t solve_roll;            /**< POSITION: 1 the roll such that both wheels touch at one
+                                      height, 0 roll_rad given */
+  double y_m;                    /**< lateral displacement of the wheelset (towards the left rail) */
+  double yaw_rad;                /**< yaw psi */
+  double Q_left_N, Q_right_N;    /**< LOADS: vertical wheel loads (>= 0) */
+  double Z_m;                    /**< POSITION: axle-centre height; each wheel's penetration is
+                                      h_s - Z - s roll L_s, h_s its first-contact height upright,
+                                      L_s = a + y_w - r tan(gamma) its roll lever (s: +1 left) */
+  double roll_rad;               /**< POSITION with solve_roll 0: the roll */
+  double V_m_per_s;              /**< forward speed (> 0 with friction) */
+  double lateral_velocity_m_per_s;
+  double yaw_rate_rad_per_s;
+  double pitch_rate_rad_per_s;   /**< NaN: V / r0 of each wheel */
+  int32_t derivatives;           /**< 1: fill the dF_* fields (central differences, 4 or 6 more
+                                      solves per wheel); 0: NaN */
+  int32_t reserved;
+} mhc_wheelset_pose;
+
+/** One loaded contact of a wheel in track and wheelset coordinates. */
+typedef struct mhc_wheelset_contact {
+  int32_t index;          /**< ellipse or patch index of the pair (1-based) */
+  uint32_t flags;         /**< MHC_CONTACT_* bits */
+  double y_track_m;       /**< contact point on the rail, track frame */
+  double z_track_m;
+  double y_wheelset_m;    /**< on the wheel, from the axle centre (wheelset frame, unrolled) */
+  double z_wheelset_m;    /**< ... (minus the rolling radius) */
+  double gamma_rad;       /**< contact angle (positive towards the gauge corner, each rail's sense) */
+  double r_roll_m;        /**< rolling radius */
+  double N_N;             /**< normal force */
+  double a_m, b_m;        /**< semi-axes along x and across (grid: half length and width) */
+  double Fx_N, Fs_N;      /**< creep forces ON THE WHEEL in the contact plane, along x and s (the
+                               pair's frame: s towards the field side); 0 without friction */
+  double Mn_N_m;          /**< spin moment on the wheel about the normal (the pair's frame) */
+  double F_N[3];          /**< this contact's normal and creep force on the wheelset, track frame */
+  double M_N_m[3];        /**< its moment about the axle centre, track frame */
+} mhc_wheelset_contact;
+
+/** One wheel's answer. */
+typedef struct mhc_wheelset_wheel {
+  int32_t status;         /**< mhc_status of this wheel's pair */
+  uint32_t warnings;      /**< MHC_WARN_* bits (the text and data: mhc_wheelset_warning) */
+  int32_t n_warnings;
+  int32_t n_contacts;     /**< loaded contacts (at most MHC_MAX_CONTACTS filled) */
+  int32_t plastic;        /**< 1 when a contact is plastic */
+  int32_t reserved;
+  double tY_m;            /**< the pair's t_Y */
+  double h_m;             /**< axle height at which this wheel first touches (NaN off the table) */
+  double dz_m;            /**< its vertical virtual penetration (eq. 11) */
+  double Fz_pair_N;       /**< the pair's vertical force, sum N cos(gamma) */
+  double F_N[3];          /**< the wheel's forces on the wheelset, track frame */
+  double M_N_m[3];        /**< their moment about the axle centre */
+  double dF_dy_N_per_m[3];      /**< d F_N / d y (the other inputs held) */
+  double dF_droll_N_per_rad[3]; /**< d F_N / d roll (POSITION; NaN with LOADS) */
+  double dF_dvertical[3];       /**< d F_N / d Z [N/m] (POSITION) or / d Q of this wheel [N/N] (LOADS) */
+  mhc_wheelset_contact contact[MHC_MAX_CONTACTS];
+} mhc_wheelset_wheel;
+
+/** Wheelset warnings (mhc_wheelset_result.wheelset_warnings). */
+#define MHC_WHEELSET_WARN_ROLL_IN_GEOMETRY 0x1u /**< |roll| above 1 mrad: the relative roll of
+                                                     wheel and rail is not in the contact geometry */
+#define MHC_WHEELSET_WARN_YAW_LEAD_LEFT 0x2u    /**< the left contact's lead under yaw (r tan(gamma)
+                                                     tan(psi)) exceeds a tenth of its semi-axis a */
+#define MHC_WHEELSET_WARN_YAW_LEAD_RIGHT 0x4u   /**< the same on the right wheel */
+#define MHC_WHEELSET_WARN_ROLL_NEAR_FLANGE 0x8u /**< a roll above 0.1 mrad with a contact steeper
+                                                     than 25 degrees: the roll moves the contact
+                                                     point there, which the first-order rule misses */
+
+/** One step's answer. Caller-owned: set struct_size. Any size from
+ *  offsetof(mhc_wheelset_result, wheel) up is accepted: the library fills the fields that fit
+ *  (a caller built against an older, smaller struct gets its fields; a newer, larger one gets
+ *  the library's and struct_size set to the bytes filled). */
+typedef struct mhc_wheelset_result {
+  size_t struct_size;
+  int32_t status;              /**< the worse of the two wheels' (a failure before an answer) */
+  uint32_t wheelset_warnings;  /**< MHC_WHEELSET_WARN_* bits (the text: mhc_wheelset_warning_text) */
+  double roll_rad;             /**< given, solved, or (LOADS) from the wheels' penetrations */
+  double Z_m;                  /**< axle-centre height: given, or (LOADS) from the penetrations */
+  double F_N[3];               /**< both wheels' forces on the wheelset, track frame */
+  double M_N_m[3];             /**< their moment about the axle centre */
+  double dF_dy_N_per_m[3];
+  double dF_droll_N_per_rad[3];
+  double dF_dvertical[3];      /**< d/dZ (POSITION), or with both loads moved by one newton (LOADS) */
+  mhc_wheelset_wheel wheel[2]; /**< 0 left, 1 right */
+} mhc_wheelset_result;
+
+MHC_API void mhc_wheelset_options_init(mhc_wheelset_options* opt);
+/** A wheelset from its left and right pairs (copied: they may be freed afterwards). They must
+ *  have the same material, method and flange-back data; opt may be NULL (the defaults). */
+MHC_API mhc_error mhc_wheelset_create(const mhc_pair* left, const mhc_pair* right, const mhc_wheelset_options* opt,
+                                      mhc_wheelset** out);
+MHC_API void mhc_wheelset_free(mhc_wheelset* w);
+/** Scratch memory for one thread's steps (no allocation per step once it has seen one as large). */
+MHC_API mhc_error mhc_wheelset_workspace_create(const mhc_wheelset* w, mhc_wheelset_workspace** out);
+MHC_API void mhc_wheelset_workspace_free(mhc_wheelset_workspace* ws);
+/** One step. A wheel that is not ok is not an error (its status says it; mhc_last_message the
+ *  first such wheel's message). MHC_ERR_ARGUMENT for a bad pose (the field, value and rule),
+ *  MHC_ERR_UNSUPPORTED for POSITION with a grid method. */
+MHC_API mhc_error mhc_wheelset_step(const mhc_wheelset* w, mhc_wheelset_workspace* ws, const mhc_wheelset_pose* pose,
+                                    mhc_wheelset_result* out);
+/** n steps at once: pose[i] into out[i] (arrays of n structs of their struct_size), on n_threads
+ *  threads (0: all cores), each with its own workspace. Results do not depend on the thread count. */
+MHC_API mhc_error mhc_wheelset_step_many(const mhc_wheelset* w, size_t n, const mhc_wheelset_pose* pose,
+                                         mhc_wheelset_result* out, int32_t n_threads);
+/** The warnings of wheel `side` (0 left, 1 right) in the last step of ws, as mhc_result_warning. */
+MHC_API int32_t mhc_wheelset_n_warnings(const mhc_wheelset_workspace* ws, int32_t side);
+MHC_API mhc_error mhc_wheelset_warning(const mhc_wheelset_workspace* ws, int32_t side, int32_t i, mhc_warning* out);
+/** Wheel warning i as in cases.csv, or with side = -1 the wheelset's warning i
+ *  ("yaw_lead_not_modelled:wheel=left:lead_mm=3.1>0.6"); "" out of range. Valid until the
+ *  thread's next call of this function. */
+MHC_API const char* mhc_wheelset_warning_text(const mhc_wheelset_workspace* ws, int32_t side, int32_t i);
+/** Number of wheelset warnings of the last step (side = -1 of mhc_wheelset_warning_text). */
+MHC_API int32_t mhc_wheelset_n_wheelset_warnings(const mhc_wheelset_workspace* ws);
 
 #ifdef __cplusplus
 }

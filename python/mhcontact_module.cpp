@@ -20,6 +20,9 @@
 namespace py = pybind11;
 using mh::units::deg;
 
+/// The Wheelset class (python/wheelset_module.cpp).
+void bind_wheelset(py::module_& m, void (*check)(mhc_error));
+
 namespace {
 
 py::object g_input_error, g_unsupported_error;
@@ -272,6 +275,8 @@ PYBIND11_MODULE(_core, m) {
           }, "(y_m, z_m) as used, after the clean-up.");
 
   py::class_<Pair>(m, "Pair", "A wheel-rail pair: geometry tables, material, model, method (immutable).")
+      // The C handle, for the Wheelset class of its own source (python/wheelset_module.cpp).
+      .def("_capsule", [](const Pair& p) { return py::capsule(static_cast<const void*>(p.p)); })
       .def(py::init([](const Profile& wheel, const Profile& rail, py::dict kw) {
              mhc_pair_options o;
              mhc_pair_options_init(&o);
@@ -422,4 +427,5 @@ PYBIND11_MODULE(_core, m) {
             d["warnings"] = wl;
             return d;
           });
+  bind_wheelset(m, &check);
 }

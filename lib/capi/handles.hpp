@@ -5,6 +5,8 @@
 // input (profiles and case files are read as the command reads them), never output or jobs.
 #include <cstddef>
 #include <functional>
+#include <limits>
+#include <mutex>
 #include <type_traits>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@
 #include "contact/multi_hertz/approach_given.hpp"
 #include "contact/options.hpp"
 #include "contact/solve.hpp"
+#include "core/parallel.hpp"
 #include "geometry/contact_geometry.hpp"
 #include "profile/profile.hpp"
 
@@ -30,6 +33,7 @@ struct mhc_pair {
   mh::Material material;
   mh::MethodOptions options;
   bool plastic = false;  ///< the plastic model (material.p_lim finite: given, or from the yield stress)
+  mh::TrackSetup track;  ///< the track and wheelset data it was placed with (the wheelset call reads them)
   /// The pair's warnings in the command's words, "<profile>: <warning>" (mhc_pair_warning).
   std::vector<std::string> warnings;
 };
@@ -83,12 +87,33 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
 /// Convert a case's result. Q: the load prescribed (NaN: the load carried, Fz).
 void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_result* out);
 
-/// Convert one warning to its C form (out->struct_size set by the caller and kept).
+/// One warning as data into *out (its struct_size kept; the caller checked it).
 void fill_warning(const Warning& w, mhc_warning* out);
 
-/// Run body(i, ws) for i in [0, n) on n_threads threads (0: all cores), each with its own
-/// workspace on `pair`; blocks of cases are handed out in order. Returns the first non-OK code
-/// of body (the others still run) or an exception's code.
+/// The C int status of a case (mhc_status).
+int32_t status_code(CaseStatus s);
+
+/// Run body(i, state) for i in [0, n) on n_threads threads (0: all cores) by the library's one
+/// parallel_for (core/parallel.hpp), each thread with its own make_state(); blocks of 256 items.
+/// Returns the code of the lowest i whose body failed (the others still run), with its message;
+/// an exception propagates (callers run inside guarded()).
+template <class MakeState, class Body>
+mhc_error for_each_index(std::size_t n, int n_threads, MakeState&& make_state, Body&& body) {
+  std::mutex m;
+  std::size_t first_i = std::numeric_limits<std::size_t>::max();
+  mhc_error first = MHC_OK;
+  std::string message;
+  parallel_for(n, n_threads > 0 ? static_cast<unsigned>(n_threads) : 0u, 256, make_state, [&](std::size_t i, auto& state) {
+    const mhc_error c = body(i, state);
+    if (c == MHC_OK) return;
+    std::lock_guard<std::mutex> lock(m);
+    if (i < first_i) first_i = i, first = c, message = last_message();
+  });
+  if (first != MHC_OK) return fail(first, message);
+  return MHC_OK;
+}
+
+/// for_each_index with a workspace on `pair` per thread, inside guarded() (never throws).
 mhc_error for_each_case(const mhc_pair& pair, std::size_t n, int n_threads,
                         const std::function<mhc_error(std::size_t, mhc_workspace&)>& body);
 

@@ -98,44 +98,16 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
 
 mhc_error for_each_case(const mhc_pair& pair, std::size_t n, int n_threads,
                         const std::function<mhc_error(std::size_t, mhc_workspace&)>& body) {
-  unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  std::size_t threads = n_threads > 0 ? static_cast<std::size_t>(n_threads) : hw;
-  constexpr std::size_t kBlock = 256;
-  threads = std::max<std::size_t>(1, std::min(threads, (n + kBlock - 1) / kBlock));
-  std::atomic<std::size_t> next{0};
-  std::vector<mhc_error> codes(threads, MHC_OK);
-  std::vector<std::string> messages(threads);
-  auto worker = [&](std::size_t t) {
-    codes[t] = guarded([&]() -> mhc_error {
-      mhc_workspace ws;
-      ws.pair = &pair;
-      mhc_error first = MHC_OK;
-      for (;;) {
-        const std::size_t b = next.fetch_add(kBlock);
-        if (b >= n) break;
-        const std::size_t e = std::min(n, b + kBlock);
-        for (std::size_t i = b; i < e; ++i) {
-          const mhc_error c = body(i, ws);
-          if (c != MHC_OK && first == MHC_OK) {
-            first = c;
-            messages[t] = last_message();
-          }
-        }
-      }
-      return first;
-    });
-    if (codes[t] != MHC_OK && messages[t].empty()) messages[t] = last_message();
-  };
-  if (threads == 1) {
-    worker(0);
-  } else {
-    std::vector<std::thread> pool;
-    for (std::size_t t = 0; t < threads; ++t) pool.emplace_back(worker, t);
-    for (std::thread& th : pool) th.join();
-  }
-  for (std::size_t t = 0; t < threads; ++t)
-    if (codes[t] != MHC_OK) return fail(codes[t], messages[t]);
-  return MHC_OK;
+  return guarded([&] {
+    return for_each_index(
+        n, n_threads,
+        [&] {
+          auto ws = std::make_unique<mhc_workspace>();
+          ws->pair = &pair;
+          return ws;
+        },
+        [&](std::size_t i, std::unique_ptr<mhc_workspace>& ws) { return body(i, *ws); });
+  });
 }
 
 }  // namespace mh::capi
@@ -161,6 +133,7 @@ void place_pair(mhc_pair& pair, Profile wheel, Profile rail, const Inclination& 
   pair.pg.cant = check_rail_cant(pair.pg.rail, incl);
   for (const auto& w : pair.pg.cant.warnings) pair.pg.rail.warnings.push_back(w);
   pair.pg.geo = build_geometry(pair.pg.wheel, pair.pg.rail, track, geo);
+  pair.track = track;
   // The warnings the command prints for this pair (jobs/run.cpp build_pair_geometry, warn_profiles).
   for (const auto& w : pair.pg.geo.warnings) pair.pg.wheel.warnings.push_back(w);
   for (const Profile* p : {&pair.pg.wheel, &pair.pg.rail})

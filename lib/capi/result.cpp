@@ -28,17 +28,6 @@ std::uint32_t warning_bit(const Warning& w) {
   }
 }
 
-int32_t status_code(CaseStatus s) {
-  switch (s) {
-    case CaseStatus::Ok: return MHC_STATUS_OK;
-    case CaseStatus::NoContact: return MHC_STATUS_NO_CONTACT;
-    case CaseStatus::OutOfRange: return MHC_STATUS_OUT_OF_RANGE;
-    case CaseStatus::NotConverged: return MHC_STATUS_NOT_CONVERGED;
-    case CaseStatus::OutsideValidity: return MHC_STATUS_OUTSIDE_VALIDITY;
-    case CaseStatus::Derailed: return MHC_STATUS_DERAILED;
-  }
-  return MHC_STATUS_NOT_CONVERGED;
-}
 
 int32_t method_code(Method m) {
   switch (m) {
@@ -51,6 +40,18 @@ int32_t method_code(Method m) {
 }
 
 }  // namespace
+
+int32_t status_code(CaseStatus s) {
+  switch (s) {
+    case CaseStatus::Ok: return MHC_STATUS_OK;
+    case CaseStatus::NoContact: return MHC_STATUS_NO_CONTACT;
+    case CaseStatus::OutOfRange: return MHC_STATUS_OUT_OF_RANGE;
+    case CaseStatus::NotConverged: return MHC_STATUS_NOT_CONVERGED;
+    case CaseStatus::OutsideValidity: return MHC_STATUS_OUTSIDE_VALIDITY;
+    case CaseStatus::Derailed: return MHC_STATUS_DERAILED;
+  }
+  return MHC_STATUS_NOT_CONVERGED;
+}
 
 bool result_ok(const mhc_result* out, std::size_t result_size) {
   if (!out) return fail(MHC_ERR_ARGUMENT, "result: null pointer"), false;

@@ -269,9 +269,26 @@ struct NodeTable {
 };
 
 const NodeTable& node_table(const ProfileCurve& C, std::uint64_t build_id, int which) {
-  thread_local NodeTable t[2];
-  NodeTable& T = t[which];
-  if (T.id != build_id || T.curve != &C) T.make(C, build_id);
+  // A few tables per thread and kind, the least recently used replaced: a caller alternating
+  // between pairs (the two wheels of a wheelset step) finds both made, instead of remaking one
+  // (and allocating) at every call.
+  constexpr int kSlots = 4;
+  thread_local NodeTable t[2][kSlots];
+  thread_local std::uint64_t used[2][kSlots] = {};
+  thread_local std::uint64_t clock = 0;
+  ++clock;
+  int lru = 0;
+  for (int i = 0; i < kSlots; ++i) {
+    NodeTable& T = t[which][i];
+    if (T.id == build_id && T.curve == &C) {
+      used[which][i] = clock;
+      return T;
+    }
+    if (used[which][i] < used[which][lru]) lru = i;
+  }
+  NodeTable& T = t[which][lru];
+  T.make(C, build_id);
+  used[which][lru] = clock;
   return T;
 }
 

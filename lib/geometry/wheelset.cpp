@@ -6,13 +6,13 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 #include <utility>
 
 #include <boost/math/tools/minima.hpp>
 
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
+#include "core/parallel.hpp"
 #include "core/roots.hpp"
 
 namespace mh {
@@ -408,15 +408,11 @@ bool Wheelset::mirrored() const {
 
 std::vector<WheelsetState> Wheelset::sweep(const std::vector<double>& ys, unsigned threads) const {
   std::vector<WheelsetState> out(ys.size());
-  const std::size_t n = ys.size(), nt = std::max<std::size_t>(1, std::min<std::size_t>(threads, n / 64 + 1));
+  const std::size_t n = ys.size();
+  // The library's one parallel loop (core/parallel.hpp), blocks of 64 rows; each row is written
+  // to its own slot, so the results do not depend on the thread count.
   auto parallel = [&](auto&& row) {
-    auto work = [&](std::size_t t) {
-      for (std::size_t k = n * t / nt; k < n * (t + 1) / nt; ++k) row(k);
-    };
-    std::vector<std::thread> pool;
-    for (std::size_t t = 1; t < nt; ++t) pool.emplace_back(work, t);
-    work(0);
-    for (auto& th : pool) th.join();
+    parallel_for(n, std::max(1u, threads), 64, [] { return 0; }, [&](std::size_t k, int&) { row(k); });
   };
   if (!mirrored()) {
     parallel([&](std::size_t k) { out[k] = at(ys[k]); });

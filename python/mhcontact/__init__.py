@@ -14,11 +14,11 @@ tY_mm, Fz_kN, pmax_MPa, ...), with NaN where the table has an empty cell.
 """
 import numpy as _np
 
-from ._core import (InputError, METHOD_NAMES, STATUS_NAMES, UnsupportedError, Pair, Profile,
-                    Table, __version__, abi_version, fft_backend)
+from ._core import (INTERFACE_VERSION, InputError, METHOD_NAMES, STATUS_NAMES, UnsupportedError, Pair, Profile,
+                    Table, Wheelset, __version__, abi_version, fft_backend)
 
-__all__ = ["Pair", "Profile", "Table", "InputError", "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES",
-           "CASE_COLUMNS", "__version__", "abi_version", "fft_backend"]
+__all__ = ["Pair", "Profile", "Table", "Wheelset", "InputError", "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES",
+           "CASE_COLUMNS", "INTERFACE_VERSION", "__version__", "abi_version", "fft_backend"]
 
 #: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp), then the
 #: vertical contact stiffness dFz/d(dz) (not in cases.csv).
@@ -100,3 +100,44 @@ def _pair_solve_many(self, tY_m, Q_N=None, dz_m=None, threads=0):
 
 Pair.solve = _pair_solve
 Pair.solve_many = _pair_solve_many
+
+
+# Wheelset (the extension's class): Wheelset(left_pair, right_pair, mu=nan, fastsim_nx=32,
+# fastsim_ny=32), both pairs built from profiles in their canonical frames (the right pair is
+# mirrored, as the field gives its profiles); mu finite: the creep forces (FASTSIM). Track frame:
+# x forward, y towards the LEFT rail, z up (docs/python.md "The wheelset call").
+
+def _wheelset_step(self, y_m, Q_left_N=None, Q_right_N=None, Z_m=None, roll_rad=None, yaw_rad=0.0,
+                   V_m_per_s=1.0, lateral_velocity_m_per_s=0.0, yaw_rate_rad_per_s=0.0,
+                   pitch_rate_rad_per_s=float("nan"), derivatives=False, threads=1):
+    """Steps of the wheelset, every input broadcast against the others (numpy arrays or floats):
+    the loads Q_left_N, Q_right_N [N] (the roll and height are then outputs), or the axle height
+    Z_m [m] with roll_rad given (None: solved so that both wheels touch). A dict of 1-D arrays
+    (F_N, M_N_m and the derivatives: n x 3, track frame), status strings, the main contact of each
+    wheel (left_N_N, left_gamma_rad, ...); the steps run on `threads` threads (0: all cores)
+    without the GIL."""
+    loads = Q_left_N is not None or Q_right_N is not None
+    if loads == (Z_m is not None):
+        raise ValueError("give either the loads Q_left_N and Q_right_N, or the axle height Z_m")
+    if loads and (Q_left_N is None or Q_right_N is None):
+        raise ValueError("give both loads, Q_left_N and Q_right_N")
+    solve_roll = not loads and roll_rad is None
+    args = {"y_m": y_m, "yaw_rad": yaw_rad, "Q_left_N": Q_left_N if loads else 0.0,
+            "Q_right_N": Q_right_N if loads else 0.0, "Z_m": 0.0 if loads else Z_m,
+            "roll_rad": 0.0 if roll_rad is None else roll_rad, "V_m_per_s": V_m_per_s,
+            "lateral_velocity_m_per_s": lateral_velocity_m_per_s, "yaw_rate_rad_per_s": yaw_rate_rad_per_s,
+            "pitch_rate_rad_per_s": pitch_rate_rad_per_s}
+    units = {"y_m": "m", "yaw_rad": "rad", "Q_left_N": "N", "Q_right_N": "N", "Z_m": "m", "roll_rad": "rad",
+             "V_m_per_s": "m/s", "lateral_velocity_m_per_s": "m/s", "yaw_rate_rad_per_s": "rad/s",
+             "pitch_rate_rad_per_s": "rad/s"}
+    arrays = _np.broadcast_arrays(*[_numbers(k, v, units[k]) for k, v in args.items()])
+    cols = {k: _np.ascontiguousarray(a.ravel()) for k, a in zip(args, arrays)}
+    out = self._step_many(cols, 0 if loads else 1, solve_roll, bool(derivatives), int(threads))
+    names = _np.asarray(STATUS_NAMES)
+    for k in ("status", "left_status", "right_status"):
+        out[k] = names[out.pop(k + "_code")]
+    return out
+
+
+Wheelset.step = _wheelset_step
+

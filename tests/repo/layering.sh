@@ -11,14 +11,16 @@
 #   < tangential_solve (tangential/tangential_solve.*: the tangential problem of a solved case)
 #   < multi_hertz < grid (what the grid methods share) < half_space | strips (siblings: neither
 #   includes the other) < solve (dispatch and auto).
+# After contact comes wheelset_contact (the wheelset call: both pairs of a wheelset per step,
+# lib/wheelset_contact/), before input.
 # Last comes capi (the C interface and the Python module's core, include/mhcontact.h): it may use
 # core … contact and input (profiles and case files read as the command reads them), but not
 # output or jobs, so that the embeddable library carries no table writer and no job runner.
-# The core layers (core, profile, geometry, contact) include neither nlohmann-json nor CLI11;
+# The core layers (core, profile, geometry, contact, wheelset_contact) include neither nlohmann-json nor CLI11;
 # nothing in lib/ includes CLI11 (only apps/mhcontact does).
 set -uo pipefail
 src=$1
-layers=(core profile geometry contact input output jobs capi)
+layers=(core profile geometry contact wheelset_contact input output jobs capi)
 rooms=(tangential options judge_status ellipse case_result judge tangential_solve multi_hertz grid half_space strips solve)
 room_rank=(0 1 2 3 4 5 6 7 8 9 9 10)
 rank() { local i; for i in "${!layers[@]}"; do [ "${layers[$i]}" = "$1" ] && { echo "$i"; return; }; done; echo -1; }
@@ -52,7 +54,7 @@ check_tree() {  # prints the violations of the tree $1, returns 1 if any
       fi
     done < <(grep -o '#include "[^"]*"' "$root/$f" | sed 's/#include "//; s/"$//')
     if grep -q '#include <CLI/' "$root/$f"; then echo "layering: $f includes CLI11 (only apps/ may)"; bad=1; fi
-    if [ "$r_own" -le 3 ] && grep -q '#include <nlohmann/' "$root/$f"; then echo "layering: $f ($own) includes nlohmann-json (the core layers may not)"; bad=1; fi
+    if [ "$r_own" -le 4 ] && grep -q '#include <nlohmann/' "$root/$f"; then echo "layering: $f ($own) includes nlohmann-json (the core layers may not)"; bad=1; fi
   done
   return $bad
 }

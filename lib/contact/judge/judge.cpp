@@ -1,6 +1,7 @@
 #include "contact/judge/judge.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "contact/ellipse/hertz_validity.hpp"
@@ -95,17 +96,29 @@ void add_vehicle_state_warnings(CaseResult& r, const ContactGeometry& G, const V
 
 void decide_status(CaseResult& r) {
   if (r.status != CaseStatus::Ok && r.status != CaseStatus::OutsideValidity) return;
-  const std::vector<WarningClass> classes = validity_failures(r.warnings);
-  if (r.status == CaseStatus::Ok && !classes.empty()) {
+  // The distinct validity classes in order of first appearance (validity_failures()), on the
+  // stack and the message appended in place: a time-stepping caller's result, its message's
+  // capacity grown, allocates nothing here (tests/alloc: the wheelset call).
+  std::array<WarningClass, 64> classes{};
+  std::size_t n = 0;
+  for (const Warning& w : r.warnings)
+    if (is_validity_class(w.cls) && n < classes.size() &&
+        std::find(classes.begin(), classes.begin() + static_cast<std::ptrdiff_t>(n), w.cls) ==
+            classes.begin() + static_cast<std::ptrdiff_t>(n))
+      classes[n++] = w.cls;
+  if (r.status == CaseStatus::Ok && n > 0) {
     r.status = CaseStatus::OutsideValidity;
     r.message = "outside the validity of the method: ";
-    for (std::size_t i = 0; i < classes.size(); ++i) r.message += std::string(i ? ", " : "") + to_string(classes[i]);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i) r.message += ", ";
+      r.message += to_string(classes[i]);
+    }
     r.message += " (see warnings)";
   }
   if (has_class(r.warnings, WarningClass::Derailed)) {
     r.status = CaseStatus::Derailed;
     r.message = "the wheel rides on its flange tip, off the rail (see warnings)" +
-                (classes.empty() ? std::string() : "; " + r.message);
+                (n == 0 ? std::string() : "; " + r.message);
   }
 }
 

@@ -14,6 +14,7 @@
 
 #include "geometry/wheelset.hpp"
 #include "profile/read.hpp"
+#include "profile/standard_profiles.hpp"
 
 using mh::Profile;
 
@@ -106,4 +107,26 @@ TEST_CASE("wheelset contact search: the pruned scan gives the plain scan's conta
   // Both kinds of row were exercised.
   CHECK(jumps >= 10);
   CHECK(two_point >= 10);
+}
+
+// The sweep shares its rows by the library's parallel loop (core/parallel.hpp): the same states
+// whatever the thread count, the mirrored shortcut and roll solved alike.
+TEST_CASE("wheelset sweep: the same states on 1 and 3 threads", "[wheelset]") {
+  const mh::Profile w = mh::make_standard_profile("S1002", mh::Inclination::None);
+  const mh::Profile r = mh::make_standard_profile("60E1", mh::Inclination::In40);
+  std::vector<double> ys;
+  for (int i = -400; i <= 400; ++i) ys.push_back(i * 2e-5);
+  for (mh::WheelsetRoll roll : {mh::WheelsetRoll::None, mh::WheelsetRoll::Solved}) {
+    mh::WheelsetOptions o;
+    o.roll = roll;
+    const mh::Wheelset W(w, w, r, r, mh::WheelsetPlacement{}, o);
+    const auto a = W.sweep(ys, 1), b = W.sweep(ys, 3);
+    REQUIRE(a.size() == b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      CHECK(a[k].left.y_r == b[k].left.y_r);
+      CHECK(a[k].right.y_r == b[k].right.y_r);
+      CHECK((a[k].roll == b[k].roll || (std::isnan(a[k].roll) && std::isnan(b[k].roll))));
+      CHECK(a[k].left.two_point == b[k].left.two_point);
+    }
+  }
 }

@@ -1,0 +1,354 @@
+#include "wheelset_contact/wheelset_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "contact/judge/judge.hpp"
+#include "contact/tangential/tangential_solve.hpp"
+#include "core/numfmt.hpp"
+
+namespace mh {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+void check_finite(double v, const char* field, const char* unit) {
+  if (!std::isfinite(v))
+    throw std::invalid_argument(std::string("pose.") + field + " = " + format_number(v) + " " + unit +
+                                ": must be finite");
+}
+
+/// The force a contact exerts on the wheel in its pair's frame (x, y towards the field side, z up):
+/// the normal N along n = (0, −sin γ, cos γ) out of the rail, the creep forces Fx along x and Fs
+/// along s = (0, cos γ, sin γ) (tangential_types.hpp: forces on the wheel).
+void add_contact(ContactPoint& c, int sigma, double a_tl, double y_r, double z_r, double y_w, double c_rail,
+                 const TangentialResult& t) {
+  const double sg = std::sin(c.gamma), cg = std::cos(c.gamma);
+  c.Fx = t.solved ? t.Fx : 0.0;
+  c.Fs = t.solved ? t.Fy : 0.0;
+  c.Mn = t.solved ? t.Mz : 0.0;
+  c.Y = sigma * (c_rail + y_r);
+  c.Z = z_r;
+  c.Y_ws = sigma * (a_tl + y_w);
+  c.Z_ws = -c.r_roll;
+  // Track frame: x and z as the pair's, y = σ y_pair.
+  const double fy_pair = -c.N * sg + c.Fs * cg;
+  std::array<double, 3>& F = c.on_wheelset.F;
+  F = {c.Fx, sigma * fy_pair, c.N * cg + c.Fs * sg};
+  // Moments about the axle centre: the contact at (0, Y_ws, Z_ws) (the lead of the contact point
+  // is not modelled), plus the spin moment about the normal, n_track = (0, −σ sin γ, cos γ), whose
+  // scalar changes sign with the mirror (docs/tangential.md): σ Mn n_track.
+  const double py = c.Y_ws, pz = c.Z_ws;
+  std::array<double, 3>& M = c.on_wheelset.M;
+  M = {py * F[2] - pz * F[1], pz * F[0], -py * F[0]};
+  M[1] += -c.Mn * sg;
+  M[2] += sigma * c.Mn * cg;
+}
+
+void add_wrench(Wrench& to, const Wrench& w) {
+  for (int k = 0; k < 3; ++k) to.F[k] += w.F[k], to.M[k] += w.M[k];
+}
+
+/// v rounded to 0.001, as written in a warning (the shortest text of the rounded value).
+std::string thousandths(double v) { return format_number(std::round(v * 1e3) / 1e3); }
+
+/// Worse status: a failure before an answer, an answer not ok before ok.
+CaseStatus worse(CaseStatus a, CaseStatus b) {
+  auto rank = [](CaseStatus s) { return is_failure(s) ? 2 : s == CaseStatus::Ok ? 0 : 1; };
+  return rank(b) > rank(a) ? b : a;
+}
+
+}  // namespace
+
+std::string to_string(const WheelsetWarning& w) {
+  switch (w.kind) {
+    case WheelsetWarning::Kind::RollInGeometryNeglected:
+      return "roll_in_geometry_neglected:roll_mrad=" + thousandths(w.value * 1e3) + ">" +
+             thousandths(w.limit * 1e3);
+    case WheelsetWarning::Kind::RollNearFlange:
+      return std::string("roll_near_flange:wheel=") + (w.side > 0 ? "left" : "right") +
+             ":gamma_deg=" + thousandths(w.value * 180 / 3.14159265358979323846) + ">" +
+             thousandths(w.limit * 180 / 3.14159265358979323846);
+    case WheelsetWarning::Kind::YawLeadNotModelled:
+      return std::string("yaw_lead_not_modelled:wheel=") + (w.side > 0 ? "left" : "right") +
+             ":lead_mm=" + thousandths(w.value * 1e3) + ">" + thousandths(w.limit * 1e3);
+  }
+  return "unknown";
+}
+
+void WheelsetContact::place(Side& S, int sigma) {
+  S.sigma = sigma;
+  S.R0 = S.geo.nominal_radius;
+  // The taping line lies a = flange_back_distance/2 − flange_back_position from the wheelset
+  // centre; at t_Y = 0 it faces rail y = y_offset, so the rail origin lies c = a − y_offset
+  // from the track centre (geometry/wheelset.hpp: the same placement).
+  S.a = setup_.track.flange_back_distance / 2 - setup_.track.flange_back_position;
+  S.c = S.a - S.geo.y_offset;
+}
+
+WheelsetContact::WheelsetContact(const WheelsetSetup& setup) : setup_(setup) {
+  std::string why;
+  if (!setup.material.valid(&why)) throw std::invalid_argument("material: " + why);
+  auto build = [&](Side& S, int sigma, const Profile& wheel, const Profile& rail, double R0) {
+    TrackSetup t = setup.track;
+    t.nominal_radius = R0;
+    S.geo = build_geometry(wheel, rail, t, setup.geometry);
+    place(S, sigma);
+    for (const auto& w : S.geo.warnings) warnings_.push_back(wheel.source + ": " + w);
+    for (const Profile* p : {&wheel, &rail})
+      for (const auto& w : p->warnings) warnings_.push_back(p->source + ": " + w);
+  };
+  build(left_, +1, setup.wheel_left, setup.rail_left, setup.nominal_radius_left);
+  build(right_, -1, setup.wheel_right, setup.rail_right, setup.nominal_radius_right);
+}
+
+WheelsetContact::WheelsetContact(const ContactGeometry& left, const ContactGeometry& right, const TrackSetup& track,
+                                 const Material& material, const MethodOptions& method,
+                                 std::vector<std::string> warnings)
+    : warnings_(std::move(warnings)) {
+  setup_.track = track;
+  setup_.material = material;
+  setup_.method = method;
+  setup_.nominal_radius_left = left.nominal_radius;
+  setup_.nominal_radius_right = right.nominal_radius;
+  left_.geo = left;
+  right_.geo = right;
+  place(left_, +1);
+  place(right_, -1);
+}
+
+namespace {
+
+/// The table row k and weight f of t_Y in G's grid (covers(tY) assumed).
+void table_at(const ContactGeometry& G, double tY, std::size_t& k, double& f) {
+  const std::size_t n = G.tY.size();
+  const double step = (G.tY.back() - G.tY.front()) / static_cast<double>(n - 1);
+  k = static_cast<std::size_t>(std::clamp((tY - G.tY.front()) / step, 0.0, static_cast<double>(n - 2)));
+  k = std::min(k, n - 2);
+  f = (tY - G.tY[k]) / (G.tY[k + 1] - G.tY[k]);
+}
+
+}  // namespace
+
+double WheelsetContact::first_contact_height(int side, double tY) const {
+  const ContactGeometry& G = (side > 0 ? left_ : right_).geo;
+  if (!G.covers(tY)) return kNaN;
+  std::size_t k = 0;
+  double f = 0;
+  table_at(G, tY, k, f);
+  const double gmin = G.z_contact[k] + f * (G.z_contact[k + 1] - G.z_contact[k]);
+  // z_contact: the smallest z_w − z_r with the wheel at its datum (wheel frame on the rail frame);
+  // lowered by it, the wheel touches, and its axle (R0 above the taping line's z0) stands at:
+  return G.wheel_z0 + G.nominal_radius - gmin;
+}
+
+double WheelsetContact::roll_lever(int side, double tY) const {
+  const Side& S = side > 0 ? left_ : right_;
+  const ContactGeometry& G = S.geo;
+  if (!G.covers(tY)) return S.a;
+  std::size_t k = 0;
+  double f = 0;
+  table_at(G, tY, k, f);
+  // The main contact point at t_Y: interpolated within one potential ellipse, else the nearer row's.
+  const CandidateGeom &c0 = G.main_at(k), &c1 = G.main_at(k + 1);
+  auto lever = [&](const CandidateGeom& c) { return S.a + c.y_w - c.r_roll * std::tan(c.gamma); };
+  if (G.main_ellipse[k] != G.main_ellipse[k + 1]) return lever(f < 0.5 ? c0 : c1);
+  return lever(c0) + f * (lever(c1) - lever(c0));
+}
+
+void WheelsetContact::solve_wheel(const Side& S, const WheelsetPose& pose, double roll, WheelResult& w,
+                                  WheelsetWorkspace& ws) const {
+  const int s = S.sigma;
+  w.side = s;
+  w.tY = s * pose.y;
+  w.h = first_contact_height(s, w.tY);
+  MethodOptions opt = setup_.method;
+  TangentialOptions& tg = opt.tangential;
+  if (tg.enabled()) {
+    // The pair's frame: lateral and yaw quantities with the track's signs times σ.
+    tg.source = TangentialOptions::Source::Kinematics;
+    tg.kin.V = pose.V;
+    tg.kin.yaw = s * pose.yaw;
+    tg.kin.lateral_velocity = s * pose.lateral_velocity;
+    tg.kin.yaw_rate = s * pose.yaw_rate;
+    tg.kin.pitch_rate = pose.pitch_rate;
+    tg.yaw_per_tY = 0;
+    tg.l_origin = S.a;
+    tg.r0 = S.R0;
+  }
+  const Material& mat = setup_.material;
+  if (pose.vertical == WheelsetVertical::Loads) {
+    const double Q = s > 0 ? pose.Q_left : pose.Q_right;
+    solve_contact(S.geo, mat, w.tY, Q, opt, w.r, &ws.grid);
+  } else {
+    // δz_s = h_s − Z − σ φ L_s (roll_lever); outside the table h is NaN and the solve says out_of_range.
+    const double dz = std::isfinite(w.h) ? w.h - pose.Z - s * roll * roll_lever(s, w.tY) : 0.0;
+    solve_multi_hertz_approach(S.geo, mat, w.tY, dz, opt.multi_hertzian, ws.approach, w.r);
+    solve_tangential(w.r, mat, w.tY, opt.tangential);
+    judge_case(w.r, S.geo, mat, w.tY, opt);
+  }
+  w.contacts.clear();
+  w.on_wheelset = Wrench{};
+  const bool answer = !is_failure(w.r.status);
+  if (!answer) return;
+  for (const LoadedEllipse& L : w.r.loaded) {
+    if (!(L.s.N > 0)) continue;
+    ContactPoint c;
+    c.index = L.ellipse;
+    c.gamma = L.g.gamma;
+    c.r_roll = L.g.r_roll;
+    c.N = L.s.N;
+    c.a = L.s.a, c.b = L.s.b;
+    add_contact(c, s, S.a, L.g.y_r, L.z_r, L.g.y_w, S.c, L.t);
+    add_wrench(w.on_wheelset, c.on_wheelset);
+    w.contacts.push_back(c);
+  }
+  for (const PatchResult& P : w.r.patches) {
+    if (!(P.N > 0)) continue;
+    ContactPoint c;
+    c.index = P.patch;
+    c.gamma = P.gamma;
+    c.r_roll = P.r_roll;
+    c.N = P.N;
+    c.a = P.length_x / 2, c.b = P.width_s / 2;
+    add_contact(c, s, S.a, P.y_r, P.z_r, P.y_w, S.c, P.t);
+    add_wrench(w.on_wheelset, c.on_wheelset);
+    w.contacts.push_back(c);
+  }
+}
+
+void WheelsetContact::solve_both(const WheelsetPose& pose, const WheelsetStepOptions& opt, WheelsetResult& out,
+                                 WheelsetWorkspace& ws) const {
+  double roll = pose.roll;
+  if (pose.vertical == WheelsetVertical::Position && pose.solve_roll) {
+    // Both wheels touch at one height: h_L − φ L_L = h_R + φ L_R.
+    const double hl = first_contact_height(+1, pose.y), hr = first_contact_height(-1, -pose.y);
+    const double L = roll_lever(+1, pose.y) + roll_lever(-1, -pose.y);
+    roll = std::isfinite(hl) && std::isfinite(hr) && L > 0 ? (hl - hr) / L : 0.0;
+  }
+  solve_wheel(left_, pose, roll, out.left, ws);
+  solve_wheel(right_, pose, roll, out.right, ws);
+  out.status = worse(out.left.r.status, out.right.r.status);
+  out.total = Wrench{};
+  add_wrench(out.total, out.left.on_wheelset);
+  add_wrench(out.total, out.right.on_wheelset);
+  if (pose.vertical == WheelsetVertical::Position) {
+    out.roll = roll;
+    out.Z = pose.Z;
+  } else {
+    // Each wheel's axle end stands its descent below first contact: the virtual penetration δz
+    // of eq. 11 (multi-Hertzian, as Position prescribes it), the rigid approach otherwise.
+    auto end_height = [](const WheelResult& w) {
+      if (is_failure(w.r.status)) return kNaN;
+      const double d = std::isfinite(w.r.dz) ? w.r.dz : w.r.approach;
+      return w.h - d;
+    };
+    // Z + σ φ L_s = h_s − δ_s on both wheels.
+    const double zl = end_height(out.left), zr = end_height(out.right);
+    const double Ll = roll_lever(+1, pose.y), Lr = roll_lever(-1, -pose.y);
+    out.roll = (zl - zr) / (Ll + Lr);
+    out.Z = zl - out.roll * Ll;
+  }
+  out.warnings.clear();
+  if (std::fabs(out.roll) > opt.roll_limit)
+    out.warnings.push_back({WheelsetWarning::Kind::RollInGeometryNeglected, 0, std::fabs(out.roll), opt.roll_limit});
+  if (std::fabs(out.roll) > 1e-4) {
+    for (const WheelResult* w : {&out.left, &out.right}) {
+      double g = 0;
+      for (const ContactPoint& c : w->contacts) g = std::max(g, c.gamma);
+      if (g > opt.roll_flange_gamma)
+        out.warnings.push_back({WheelsetWarning::Kind::RollNearFlange, w->side, g, opt.roll_flange_gamma});
+    }
+  }
+  if (pose.yaw != 0) {
+    for (const WheelResult* w : {&out.left, &out.right}) {
+      // The lead of the contact point of a cone of angle γ at radius r yawed by ψ: r tan γ tan ψ.
+      double worst = 0, limit = 0;
+      bool over = false;
+      for (const ContactPoint& c : w->contacts) {
+        const double lead = std::fabs(c.r_roll * std::tan(c.gamma) * std::tan(pose.yaw));
+        const double lim = opt.lead_fraction * c.a;
+        if (lead > lim && (!over || lead - lim > worst - limit)) worst = lead, limit = lim, over = true;
+      }
+      if (over) out.warnings.push_back({WheelsetWarning::Kind::YawLeadNotModelled, w->side, worst, limit});
+    }
+  }
+}
+
+void WheelsetContact::step(const WheelsetPose& pose, const WheelsetStepOptions& opt, WheelsetResult& out,
+                           WheelsetWorkspace& ws) const {
+  check_finite(pose.y, "y", "m");
+  check_finite(pose.yaw, "yaw", "rad");
+  const bool position = pose.vertical == WheelsetVertical::Position;
+  if (position) {
+    check_finite(pose.Z, "Z", "m");
+    if (!pose.solve_roll) check_finite(pose.roll, "roll", "rad");
+    if (setup_.method.method != Method::MultiHertzian)
+      throw std::invalid_argument(std::string("pose.vertical = position needs the multi-hertzian method, not ") +
+                                  to_string(setup_.method.method) + " (give the loads instead)");
+  } else {
+    for (const auto& [f, q] : {std::pair<const char*, double>{"Q_left", pose.Q_left}, {"Q_right", pose.Q_right}})
+      if (!(q >= 0) || !std::isfinite(q))
+        throw std::invalid_argument(std::string("pose.") + f + " = " + format_number(q) +
+                                    " N: a vertical load must be >= 0 and finite");
+  }
+  if (setup_.method.tangential.enabled()) {
+    if (!(pose.V > 0) || !std::isfinite(pose.V))
+      throw std::invalid_argument("pose.V = " + format_number(pose.V) +
+                                  " m/s: the forward speed must be > 0 and finite with friction (the creepages divide by it)");
+    check_finite(pose.lateral_velocity, "lateral_velocity", "m/s");
+    check_finite(pose.yaw_rate, "yaw_rate", "rad/s");
+  }
+  solve_both(pose, opt, out, ws);
+  for (auto* d : {&out.dF_dy, &out.dF_droll, &out.dF_dvertical, &out.left.dF_dy, &out.left.dF_droll,
+                  &out.left.dF_dvertical, &out.right.dF_dy, &out.right.dF_droll, &out.right.dF_dvertical})
+    d->fill(kNaN);
+  if (!opt.derivatives) return;
+
+  // Central differences, each wheel alone (the other inputs held; the roll at its value).
+  WheelResult& wp = ws.plus;
+  WheelResult& wm = ws.minus;
+  auto diff = [&](const Side& S, const WheelsetPose& p_plus, double roll_plus, const WheelsetPose& p_minus,
+                  double roll_minus, double h, std::array<double, 3>& d) {
+    solve_wheel(S, p_plus, roll_plus, wp, ws);
+    solve_wheel(S, p_minus, roll_minus, wm, ws);
+    for (int k = 0; k < 3; ++k) d[k] = (wp.on_wheelset.F[k] - wm.on_wheelset.F[k]) / (2 * h);
+  };
+  WheelsetPose fixed = pose;
+  if (position) fixed.solve_roll = false, fixed.roll = out.roll;
+  const double roll = out.roll;
+  for (const Side* S : {&left_, &right_}) {
+    WheelResult& w = S->sigma > 0 ? out.left : out.right;
+    WheelsetPose a = fixed, b = fixed;
+    a.y += opt.fd_y, b.y -= opt.fd_y;
+    diff(*S, a, roll, b, roll, opt.fd_y, w.dF_dy);
+    if (position) {
+      diff(*S, fixed, roll + opt.fd_roll, fixed, roll - opt.fd_roll, opt.fd_roll, w.dF_droll);
+      a = fixed, b = fixed;
+      a.Z += opt.fd_Z, b.Z -= opt.fd_Z;
+      diff(*S, a, roll, b, roll, opt.fd_Z, w.dF_dvertical);
+    } else {
+      a = fixed, b = fixed;
+      double& qa = S->sigma > 0 ? a.Q_left : a.Q_right;
+      double& qb = S->sigma > 0 ? b.Q_left : b.Q_right;
+      const double h = std::max(qa, 1.0) * opt.fd_Q;
+      qa += h;
+      qb = std::max(0.0, qb - h);
+      const double span = qa - qb;
+      solve_wheel(*S, a, roll, wp, ws);
+      solve_wheel(*S, b, roll, wm, ws);
+      for (int k = 0; k < 3; ++k) w.dF_dvertical[k] = (wp.on_wheelset.F[k] - wm.on_wheelset.F[k]) / span;
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    out.dF_dy[k] = out.left.dF_dy[k] + out.right.dF_dy[k];
+    out.dF_droll[k] = out.left.dF_droll[k] + out.right.dF_droll[k];
+    out.dF_dvertical[k] = out.left.dF_dvertical[k] + out.right.dF_dvertical[k];
+  }
+}
+
+}  // namespace mh

@@ -1,0 +1,105 @@
+"""The wheelset call from Python (python/wheelset_module.cpp, mhcontact.Wheelset): the same numbers
+as the single-pair call and as single steps, broadcasting, threads, the GIL released, errors.
+Breaks guarded (each seen to fail): the binding reading Q_right_N for the left wheel fails
+test_each_wheel_is_the_pair_call; the GIL kept during the steps fails test_gil_released."""
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import mhcontact
+
+
+@pytest.fixture(scope="module")
+def pair():
+    return mhcontact.Pair(mhcontact.Profile.standard("S1002"), mhcontact.Profile.standard("60E1"),
+                          {"rail_inclination": "1:40"})
+
+
+@pytest.fixture(scope="module")
+def wheelset(pair):
+    return mhcontact.Wheelset(pair, pair, mu=0.3)
+
+
+def test_each_wheel_is_the_pair_call(pair):
+    ws = mhcontact.Wheelset(pair, pair)  # no friction: the normal forces alone
+    y = np.linspace(-6e-3, 8e-3, 15)
+    out = ws.step(y, Q_left_N=60e3, Q_right_N=40e3)
+    left = pair.solve_many(y, Q_N=60e3)
+    right = pair.solve_many(-y, Q_N=40e3)
+    # Fz of each wheel on the wheelset: the pair's Fz (kN in the pair's columns).
+    np.testing.assert_allclose(out["left_F_N"][:, 2], left["Fz_kN"] * 1e3, rtol=1e-12)
+    np.testing.assert_allclose(out["right_F_N"][:, 2], right["Fz_kN"] * 1e3, rtol=1e-12)
+    # Lateral: the left rail's field side is +y, the right one's -y; forces on the wheel oppose the rail's.
+    np.testing.assert_allclose(out["left_F_N"][:, 1], -left["Fy_kN"] * 1e3, rtol=1e-12, atol=1e-6)
+    np.testing.assert_allclose(out["right_F_N"][:, 1], right["Fy_kN"] * 1e3, rtol=1e-12, atol=1e-6)
+    assert list(out["left_status"]) == list(left["status"])
+
+
+def test_mirror_and_broadcast(wheelset):
+    y = np.array([2e-3, 5e-3, 7.5e-3])
+    a = wheelset.step(y, Q_left_N=50e3, Q_right_N=50e3, V_m_per_s=30.0)
+    b = wheelset.step(-y, Q_left_N=50e3, Q_right_N=50e3, V_m_per_s=30.0)
+    np.testing.assert_allclose(a["F_N"][:, 1], -b["F_N"][:, 1], rtol=1e-12, atol=1e-6)
+    np.testing.assert_allclose(a["left_N_N"], b["right_N_N"], rtol=1e-12)
+    assert a["F_N"].shape == (3, 3)
+
+
+def test_threads_give_the_same_numbers(wheelset):
+    y = np.linspace(-7e-3, 7e-3, 3000)
+    one = wheelset.step(y, Q_left_N=50e3, Q_right_N=45e3, yaw_rad=1e-3, V_m_per_s=30.0, threads=1)
+    two = wheelset.step(y, Q_left_N=50e3, Q_right_N=45e3, yaw_rad=1e-3, V_m_per_s=30.0, threads=2)
+    for k in ("F_N", "M_N_m", "left_N_N", "roll_rad"):
+        np.testing.assert_array_equal(one[k], two[k])
+
+
+def test_position_roll_solved_and_derivatives(wheelset):
+    lifted = wheelset.step(3e-3, Z_m=1.0, V_m_per_s=30.0)
+    assert lifted["status"][0] == "no_contact"
+    Z = 0.5 * (lifted["left_h_m"][0] + lifted["right_h_m"][0]) - 50e-6
+    out = wheelset.step(3e-3, Z_m=Z, V_m_per_s=30.0, derivatives=True)
+    # The roll solved: both wheels at one penetration (the levers differ, so not exactly 50 µm).
+    assert out["left_dz_m"][0] == pytest.approx(out["right_dz_m"][0], abs=1e-12)
+    assert 40e-6 < out["left_dz_m"][0] < 60e-6
+    h = 3e-6
+    up = wheelset.step(3e-3, Z_m=Z + h, roll_rad=out["roll_rad"][0], V_m_per_s=30.0)
+    dn = wheelset.step(3e-3, Z_m=Z - h, roll_rad=out["roll_rad"][0], V_m_per_s=30.0)
+    fd = (up["F_N"][0, 2] - dn["F_N"][0, 2]) / (2 * h)
+    assert out["dF_dvertical"][0, 2] == pytest.approx(fd, rel=0.02)
+
+
+def test_errors(wheelset):
+    with pytest.raises(ValueError, match="pose.Q_left = -1 N"):
+        wheelset.step(0.0, Q_left_N=-1.0, Q_right_N=1e3, V_m_per_s=30.0)
+    with pytest.raises(ValueError, match="either the loads"):
+        wheelset.step(0.0, V_m_per_s=30.0)
+    with pytest.raises(ValueError, match="pose.V = 0 m/s"):
+        wheelset.step(0.0, Q_left_N=1e3, Q_right_N=1e3, V_m_per_s=0.0)
+
+
+def test_gil_released(wheelset):
+    # A Python thread keeps counting while the steps run: with the GIL held it would stall.
+    y = np.linspace(-6e-3, 6e-3, 20000)
+    ticks = []
+    stop = threading.Event()
+
+    def count():
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.001)
+
+    t = threading.Thread(target=count, daemon=True)
+    t.start()
+    try:
+        time.sleep(0.01)
+        n0 = len(ticks)
+        t0 = time.perf_counter()
+        wheelset.step(y, Q_left_N=50e3, Q_right_N=50e3, V_m_per_s=30.0, threads=1)
+        elapsed = time.perf_counter() - t0
+        n1 = len(ticks)
+    finally:
+        stop.set()
+        t.join()
+    assert elapsed > 0.05
+    assert n1 - n0 >= 10, "the counting thread stalled during the steps: the GIL was held"

@@ -1,0 +1,294 @@
+// The wheelset call (wheelset_contact/wheelset_contact.hpp): symmetry, mirror, the single-pair
+// call, the first-contact heights against the rigid wheelset geometry (geometry/wheelset.hpp, an
+// independent contact search), the solved roll, the derivatives against finite differences of
+// other steps and against the analytic normal stiffness, and the creep forces' mirror.
+// Breaks guarded (each seen to fail, the tests named):
+//  - t_Y = y for both wheels (no σ): "mirror symmetry", "each contact is the single-pair call",
+//    "first-contact heights", "the yaw lead warning" (and the C test of the single-pair call);
+//  - Y_track = y_pair on the right wheel (no σ in add_contact): "a symmetric wheelset", "mirror
+//    symmetry", "yaw: the lateral creep forces";
+//  - no σ on the right wheel's yaw in the kinematics: "each contact is the single-pair call",
+//    "yaw: the lateral creep forces";
+//  - first_contact_height without the −gmin: "first-contact heights", "derivatives";
+//  - a central difference divided by h instead of 2h: "derivatives";
+//  - the roll lever without its r tan γ (a + y_w only): "first-contact heights and the solved roll".
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "contact/multi_hertz/approach_given.hpp"
+#include "contact/solve.hpp"
+#include "geometry/wheelset.hpp"
+#include "profile/standard_profiles.hpp"
+#include "wheelset_contact/wheelset_contact.hpp"
+
+namespace {
+
+constexpr double mm = 1e-3;
+
+mh::WheelsetSetup s1002_60e1(bool friction) {
+  mh::WheelsetSetup s;
+  s.wheel_left = s.wheel_right = mh::make_standard_profile("S1002", mh::Inclination::None);
+  s.rail_left = s.rail_right = mh::make_standard_profile("60E1", mh::Inclination::In40);
+  if (friction) s.method.tangential.mu = 0.3;
+  return s;
+}
+
+const mh::WheelsetContact& ws_fixture(bool friction) {
+  static const mh::WheelsetContact dry(s1002_60e1(false));
+  static const mh::WheelsetContact wet(s1002_60e1(true));
+  return friction ? wet : dry;
+}
+
+mh::WheelsetPose loads(double y, double Q) {
+  mh::WheelsetPose p;
+  p.y = y;
+  p.Q_left = p.Q_right = Q;
+  p.V = 30;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("wheelset: a symmetric wheelset at zero shift gives equal contacts", "[wheelset_contact]") {
+  const auto& W = ws_fixture(true);
+  mh::WheelsetWorkspace ws;
+  mh::WheelsetResult r;
+  W.step(loads(0, 50e3), {}, r, ws);
+  REQUIRE(r.left.r.status == r.right.r.status);
+  REQUIRE(r.left.contacts.size() == r.right.contacts.size());
+  REQUIRE(!r.left.contacts.empty());
+  for (std::size_t i = 0; i < r.left.contacts.size(); ++i) {
+    const auto &L = r.left.contacts[i], &R = r.right.contacts[i];
+    CHECK(L.N == Approx(R.N).epsilon(1e-12));
+    CHECK(L.gamma == Approx(R.gamma).epsilon(1e-12));
+    CHECK(L.Y == Approx(-R.Y).epsilon(1e-12));
+    CHECK(L.Y_ws == Approx(-R.Y_ws).epsilon(1e-12));
+  }
+  // Forces on the wheelset: the lateral ones cancel; the normal forces carry the loads (the creep
+  // forces in the inclined contact planes add their own vertical part, equal on both wheels).
+  CHECK(std::fabs(r.total.F[1]) < 1e-6 * 50e3);
+  CHECK(r.left.r.Fz + r.right.r.Fz == Approx(100e3).epsilon(1e-6));
+  CHECK(r.left.on_wheelset.F[2] == Approx(r.right.on_wheelset.F[2]).epsilon(1e-12));
+  CHECK(std::fabs(r.roll) < 1e-12);
+  // Rolling at the nominal radius on the taping line: no net yaw moment from a centred wheelset.
+  CHECK(std::fabs(r.total.M[2]) < 1e-6 * 50e3);
+}
+
+TEST_CASE("wheelset: mirror symmetry at +y and -y", "[wheelset_contact]") {
+  const auto& W = ws_fixture(true);
+  mh::WheelsetWorkspace ws;
+  for (double y : {2.0 * mm, 5.5 * mm, 7.5 * mm}) {
+    INFO("y = " << y / mm << " mm");
+    mh::WheelsetResult p, m;
+    W.step(loads(y, 60e3), {}, p, ws);
+    W.step(loads(-y, 60e3), {}, m, ws);
+    REQUIRE(p.left.contacts.size() == m.right.contacts.size());
+    for (std::size_t i = 0; i < p.left.contacts.size(); ++i) {
+      CHECK(p.left.contacts[i].N == Approx(m.right.contacts[i].N).epsilon(1e-12));
+      CHECK(p.left.contacts[i].Y == Approx(-m.right.contacts[i].Y).epsilon(1e-12));
+    }
+    CHECK(p.total.F[0] == Approx(m.total.F[0]).margin(1e-6));
+    CHECK(p.total.F[1] == Approx(-m.total.F[1]).margin(1e-6));
+    CHECK(p.total.F[2] == Approx(m.total.F[2]).margin(1e-6));
+    CHECK(p.total.M[2] == Approx(-m.total.M[2]).margin(1e-6));
+    CHECK(p.roll == Approx(-m.roll).margin(1e-15));
+    // Towards the left rail (y > 0), the left flange pushes the wheelset back to the right.
+    if (y > 7 * mm) CHECK(p.total.F[1] < -10e3);
+  }
+}
+
+TEST_CASE("wheelset: each contact is the single-pair call at t_Y = sigma y", "[wheelset_contact]") {
+  const auto& W = ws_fixture(true);
+  const mh::WheelsetSetup s = s1002_60e1(true);
+  mh::WheelsetWorkspace ws;
+  mh::WheelsetPose p = loads(3.1 * mm, 70e3);
+  p.Q_right = 40e3;
+  p.yaw = 2e-3;
+  p.lateral_velocity = 0.05;
+  p.yaw_rate = 0.1;
+  mh::WheelsetResult r;
+  W.step(p, {}, r, ws);
+  for (int sigma : {+1, -1}) {
+    mh::TrackSetup t = s.track;
+    const mh::ContactGeometry G = mh::build_geometry(s.wheel_left, s.rail_left, t, s.geometry);
+    mh::MethodOptions o = s.method;
+    o.tangential.kin.V = 30;
+    o.tangential.kin.yaw = sigma * p.yaw;
+    o.tangential.kin.lateral_velocity = sigma * p.lateral_velocity;
+    o.tangential.kin.yaw_rate = sigma * p.yaw_rate;
+    o.tangential.l_origin = 0.75;
+    const double Q = sigma > 0 ? p.Q_left : p.Q_right;
+    const mh::CaseResult c = mh::solve_contact(G, s.material, sigma * p.y, Q, o);
+    const mh::WheelResult& w = sigma > 0 ? r.left : r.right;
+    REQUIRE(c.loaded.size() == w.r.loaded.size());
+    CHECK(c.status == w.r.status);
+    CHECK(c.dz == w.r.dz);
+    for (std::size_t i = 0; i < c.loaded.size(); ++i) {
+      CHECK(c.loaded[i].s.N == w.r.loaded[i].s.N);
+      CHECK(c.loaded[i].t.Fx == w.r.loaded[i].t.Fx);
+      CHECK(c.loaded[i].t.Fy == w.r.loaded[i].t.Fy);
+    }
+  }
+}
+
+TEST_CASE("wheelset: first-contact heights and the solved roll against the rigid wheelset geometry",
+          "[wheelset_contact]") {
+  // geometry/wheelset.hpp finds each wheel's contact by its own scan of the gap (y towards the
+  // RIGHT rail there: y_geom = −y). Its heights h are where the axle touches with the profiles
+  // smoothed on a 0.02 mm grid (the tables here: 0.01 mm): 1 µm.
+  const auto& W = ws_fixture(false);
+  const mh::WheelsetSetup s = s1002_60e1(false);
+  mh::Wheelset geo(s.wheel_left, s.wheel_right, s.rail_left, s.rail_right, mh::WheelsetPlacement{});
+  mh::WheelsetOptions so;
+  so.roll = mh::WheelsetRoll::Solved;
+  mh::Wheelset geo_roll(s.wheel_left, s.wheel_right, s.rail_left, s.rail_right, mh::WheelsetPlacement{}, so);
+  CHECK(W.rail_origin(+1) == Approx(geo.rail_origin(-1)).margin(1e-9));
+  CHECK(W.rail_origin(-1) == Approx(geo.rail_origin(+1)).margin(1e-9));
+  mh::WheelsetWorkspace ws;
+  for (double y : {-6.0 * mm, -2.0 * mm, 0.0, 1.5 * mm, 4.0 * mm, 6.0 * mm, 6.5 * mm}) {
+    INFO("y = " << y / mm << " mm");
+    const mh::WheelsetState st = geo.at(-y);
+    REQUIRE(st.found);
+    CHECK(W.first_contact_height(+1, y) == Approx(st.left.h).margin(1e-6));
+    CHECK(W.first_contact_height(-1, -y) == Approx(st.right.h).margin(1e-6));
+    // Roll solved, the wheelset 20 µm below the height where both wheels touch: both carry the
+    // same virtual penetration, so both are loaded.
+    mh::WheelsetPose p;
+    p.y = y;
+    p.vertical = mh::WheelsetVertical::Position;
+    p.solve_roll = true;
+    const double hl = W.first_contact_height(+1, y), hr = W.first_contact_height(-1, -y);
+    const double Ll = W.roll_lever(+1, y), Lr = W.roll_lever(-1, -y);
+    p.Z = hl - (hl - hr) / (Ll + Lr) * Ll - 20e-6;
+    mh::WheelsetResult r;
+    W.step(p, {}, r, ws);
+    CHECK(r.left.r.dz == Approx(20e-6).margin(1e-12));
+    CHECK(r.right.r.dz == Approx(20e-6).margin(1e-12));
+    CHECK(r.left.r.Fz > 0);
+    CHECK(r.right.r.Fz > 0);
+    // The roll of the first-order rule (roll_lever: each wheel upright on its rail, the contact
+    // point where the upright wheel has it) against the exact rotation of geometry/wheelset (roll
+    // positive raising the RIGHT end there): within 3 %, or 5 µrad, while the contacts stay below
+    // 25°; beyond, the roll moves the contact onto the flange and the rule fails, which the
+    // warning roll_near_flange says (6.5 mm: 0.84 against 4.17 mrad, measured).
+    const mh::WheelsetState sr = geo_roll.at(-y);
+    REQUIRE(sr.converged);
+    bool near_flange = false;
+    for (const auto& w : r.warnings) near_flange = near_flange || w.kind == mh::WheelsetWarning::Kind::RollNearFlange;
+    if (std::fabs(y) <= 6 * mm) {
+      CHECK(r.roll == Approx(-sr.roll).margin(std::max(5e-6, 0.03 * std::fabs(sr.roll))));
+      CHECK(!near_flange);
+    } else {
+      CHECK(near_flange);
+    }
+  }
+}
+
+TEST_CASE("wheelset: derivatives against finite differences of other steps and the analytic stiffness",
+          "[wheelset_contact]") {
+  const auto& W = ws_fixture(true);
+  mh::WheelsetWorkspace ws;
+  mh::WheelsetPose p;
+  p.y = 3.0 * mm;
+  p.yaw = 1e-3;
+  p.V = 30;
+  p.vertical = mh::WheelsetVertical::Position;
+  const double hl = W.first_contact_height(+1, p.y), hr = W.first_contact_height(-1, -p.y);
+  p.Z = 0.5 * (hl + hr) - 60e-6;
+  mh::WheelsetResult r;
+  W.step(p, {}, r, ws);  // the roll where both touch, then 0.02 mrad more (15 µm at a wheel)
+  p.solve_roll = false;
+  p.roll = r.roll + 2e-5;
+  mh::WheelsetStepOptions o;
+  o.derivatives = true;
+  W.step(p, o, r, ws);
+  REQUIRE(r.status != mh::CaseStatus::NoContact);
+  // Analytic: Fz of a wheel is Σ N cos γ, N of each ellipse a function of δz = h − Z − σ a φ:
+  // dFz/dZ = −Σ dN/dh0 cos² γ (approach_given.hpp, eq. 11) — the creep forces' share aside
+  // (FASTSIM's forces scale with N: their vertical part Fs sin γ moves with N too; included by
+  // the finite differences, small against N cos γ at tread contact).
+  for (const mh::WheelResult* w : {&r.left, &r.right}) {
+    double k = 0;
+    for (const auto& L : w->r.loaded) k += mh::normal_stiffness(L) * std::cos(L.g.gamma) * std::cos(L.g.gamma);
+    CHECK(w->dF_dvertical[2] == Approx(-k).epsilon(0.02));
+  }
+  // Finite differences of whole steps with other steps (3x the default's).
+  auto fd = [&](auto set, double h) {
+    mh::WheelsetPose a = p, b = p;
+    set(a, h);
+    set(b, -h);
+    mh::WheelsetResult ra, rb;
+    W.step(a, {}, ra, ws);
+    W.step(b, {}, rb, ws);
+    std::array<double, 3> d;
+    for (int k = 0; k < 3; ++k) d[k] = (ra.total.F[k] - rb.total.F[k]) / (2 * h);
+    return d;
+  };
+  const auto dy = fd([](mh::WheelsetPose& q, double h) { q.y += h; }, 3e-5);
+  const auto dr = fd([](mh::WheelsetPose& q, double h) { q.roll += h; }, 3e-5);
+  const auto dZ = fd([](mh::WheelsetPose& q, double h) { q.Z += h; }, 3e-6);
+  for (int k = 0; k < 3; ++k) {
+    INFO("component " << k);
+    // Tolerance: 2 % of the largest component of each derivative (the differences' truncation
+    // and the tables' linear interpolation in t_Y).
+    auto scale = [](const std::array<double, 3>& d) { return std::max({std::fabs(d[0]), std::fabs(d[1]), std::fabs(d[2])}); };
+    CHECK(r.dF_dy[k] == Approx(dy[k]).margin(0.02 * scale(dy)));
+    CHECK(r.dF_droll[k] == Approx(dr[k]).margin(0.02 * scale(dr)));
+    CHECK(r.dF_dvertical[k] == Approx(dZ[k]).margin(0.02 * scale(dZ)));
+  }
+}
+
+TEST_CASE("wheelset: yaw: the lateral creep forces of both wheels act the same way", "[wheelset_contact]") {
+  // A centred symmetric wheelset yawed by a small ψ (linear range): both wheels slip sideways
+  // alike, so the change of their lateral creep forces in the track frame is the same on both
+  // (with the mirror's signs wrong the changes are opposite). The spin's share, pointing outwards
+  // on each wheel, is in both steps and drops out of the change.
+  const auto& W = ws_fixture(true);
+  mh::WheelsetWorkspace ws;
+  mh::WheelsetResult r0, r;
+  mh::WheelsetPose p = loads(1 * mm, 50e3);
+  W.step(p, {}, r0, ws);
+  p.yaw = 0.1e-3;
+  W.step(p, {}, r, ws);
+  REQUIRE(r.left.r.tangential.solved);
+  const double dl = r.left.on_wheelset.F[1] - r0.left.on_wheelset.F[1];
+  const double dr = r.right.on_wheelset.F[1] - r0.right.on_wheelset.F[1];
+  // The two contacts differ at y = 1 mm (t_Y = ±1 mm: other radii, angles, ellipses): 20 %.
+  CHECK(dl == Approx(dr).epsilon(0.2));
+  // Held at ẏ = 0, a wheel rolling along its yawed x slips towards −y at the contact (−Ω r ψ):
+  // the rail pushes it towards +y, the way the wheelset would run.
+  CHECK(dl > 100);
+  CHECK(dr > 100);
+}
+
+TEST_CASE("wheelset: the yaw lead warning at flange contact, not at the tread", "[wheelset_contact]") {
+  const auto& W = ws_fixture(true);
+  mh::WheelsetWorkspace ws;
+  mh::WheelsetResult r;
+  mh::WheelsetPose p = loads(0, 50e3);
+  p.yaw = 5e-3;
+  W.step(p, {}, r, ws);
+  CHECK(r.warnings.empty());
+  p.y = 8 * mm;  // left flange (and a roll above 1 mrad: roll_in_geometry_neglected too)
+  W.step(p, {}, r, ws);
+  int leads = 0;
+  for (const auto& w : r.warnings) {
+    if (w.kind != mh::WheelsetWarning::Kind::YawLeadNotModelled) continue;
+    ++leads;
+    CHECK(w.side == +1);
+    CHECK(mh::to_string(w).rfind("yaw_lead_not_modelled:wheel=left:lead_mm=", 0) == 0);
+  }
+  CHECK(leads == 1);
+}
+
+TEST_CASE("wheelset: bad input names the field, the value and the rule", "[wheelset_contact]") {
+  const auto& W = ws_fixture(true);
+  mh::WheelsetWorkspace ws;
+  mh::WheelsetResult r;
+  mh::WheelsetPose p = loads(0, -1);
+  CHECK_THROWS_WITH(W.step(p, {}, r, ws), Catch::Contains("pose.Q_left = -1 N") && Catch::Contains(">= 0"));
+  p = loads(0, 1e3);
+  p.V = 0;
+  CHECK_THROWS_WITH(W.step(p, {}, r, ws), Catch::Contains("pose.V = 0 m/s"));
+}
