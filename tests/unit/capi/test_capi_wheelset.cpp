@@ -112,7 +112,7 @@ TEST_CASE("C wheelset: each wheel is the single-pair call at t_Y = +-y", "[capi]
   CHECK(r.wheel[0].Fz_pair_N + r.wheel[1].Fz_pair_N == Approx(105e3).epsilon(1e-6));
 }
 
-TEST_CASE("C wheelset: an older, smaller result is filled up to its size; a newer, larger one gets the library's",
+TEST_CASE("C wheelset: an older, smaller result is filled up to its size and a newer, larger one gets the library's",
           "[capi][wheelset_contact]") {
   Ws w;
   const mhc_wheelset_pose p = pose(2e-3, 50e3, 50e3);
@@ -196,7 +196,7 @@ TEST_CASE("C wheelset: bad input is an argument error naming the field, the valu
   mhc_pair_free(hs);
 }
 
-TEST_CASE("C wheelset: a batch on two threads equals single steps; the wheelset warnings as text",
+TEST_CASE("C wheelset: a batch on two threads equals single steps, the wheelset warnings as text",
           "[capi][wheelset_contact]") {
   std::vector<mhc_wheelset_pose> poses;
   for (int i = 0; i < 600; ++i) {
