@@ -9,6 +9,7 @@
 #include "contact/judge/judge.hpp"
 #include "contact/half_space/tangential_patch.hpp"
 #include "contact/tangential/tangential_solve.hpp"
+#include "core/roots.hpp"
 #include "geometry/gap.hpp"
 
 namespace mh {
@@ -28,6 +29,112 @@ HalfSpaceOptions half_space_options(const MethodOptions& opt) {
 void tangential_step(CaseResult& r, const Material& mat, double tY, const MethodOptions& opt) {
   solve_tangential(r, mat, tY, opt.tangential);
   solve_tangential_patches(r, mat, opt.tangential.mu);
+}
+
+// The vertical equilibrium with the creep forces (docs/tangential.md, "Vertical equilibrium"):
+//   Q = Σ N_i cos γ_i + Σ Fy_i sin γ_i,
+// Fy_i the lateral creep force ON THE WHEEL along the contact plane's ŝ = (0, cos γ, sin γ)
+// (tangential_types.hpp), so that Fy_i sin γ_i is its share of the load, downwards on the rail
+// (TangentialSums::Fz_creep). The normal solvers balance Q_n = Σ N_i cos γ_i; every contact's N_i
+// follows from the one rigid approach, so a root in Q_n is a root in the approach — the split
+// between contacts is the normal solver's at that approach, each contact's creep force recomputed
+// at its own N_i. f(Q_n) = Q_n + Fz_creep(Q_n) − Q is nearly linear (|dFz_creep/dQ_n| ≤ μ tan γ):
+// secant steps from Q_n = Q bracket the root, TOMS 748 (core/roots.hpp) closes it. Where the
+// creep forces lift the wheel faster than the load grows (μ tan γ ≥ 1 in full slip: Nadal's
+// limit) f has no root and the row is not_converged with a message saying so.
+// r: solved at Q with its tangential step; resolve(Q_n, r) solves the normal problem at Q_n
+// into r with its tangential step. Returns true when r was solved again (at another load).
+template <class Resolve>
+bool creep_equilibrium(CaseResult& r, double Q, const TangentialOptions& t, Resolve&& resolve) {
+  if (!t.enabled() || !t.vertical_equilibrium || is_failure(r.status) || !r.tangential.solved) return false;
+  double last = Q;  // the load r holds the solution of
+  bool failed = false, resolved = false;
+  auto f = [&](double Qn) -> double {
+    if (Qn != last) {
+      resolve(Qn, r);
+      last = Qn;
+      resolved = true;
+    }
+    if (is_failure(r.status) || !r.tangential.solved) {
+      failed = true;
+      return NAN;
+    }
+    return Qn + r.tangential.Fz_creep - Q;
+  };
+  auto fail = [&](const std::string& why) {
+    r.status = CaseStatus::NotConverged;
+    r.message = "no vertical equilibrium with the creep forces (Q = sum N cos(gamma) + Fy sin(gamma)): " + why;
+    return resolved;
+  };
+  const double f_abs = 1e-7 * Q;  // 1 mN at 10 kN; the normal solvers' residuals are below
+  double x0 = Q, f0 = f(Q);
+  double x1 = x0, f1 = f0;
+  if (std::fabs(f0) > f_abs) {
+    // Secant steps (the first a fixed-point step, slope 1), 1 % beyond the estimate so that the
+    // root is bracketed when f is as linear as it nearly is.
+    double slope = 1;
+    for (int k = 0; k < 8 && !failed && std::fabs(f1) > f_abs && (k == 0 || (f0 < 0) == (f1 < 0)); ++k) {
+      if (k > 0) {
+        slope = (f1 - f0) / (x1 - x0);
+        x0 = x1;
+        f0 = f1;
+      }
+      if (!(slope > 0)) return fail("the creep forces' vertical share falls faster than the normal load grows (flange climbing: mu tan(gamma) >= 1)");
+      const double x = x0 - 1.01 * f0 / slope;
+      if (!(x > 0)) return fail("the normal load would have to be negative (flange climbing: mu tan(gamma) >= 1)");
+      x1 = x;
+      f1 = f(x1);
+    }
+    if (failed) return fail(r.message.empty() ? std::string("a solve on the way failed") : r.message);
+    if (std::fabs(f1) > f_abs) {
+      if ((f0 < 0) == (f1 < 0)) return fail("no bracket of the root found in 8 secant steps");
+      RootTolerance tol;
+      tol.f_abs = f_abs;
+      tol.rel = 1e-12;
+      tol.max_iterations = 40;
+      const bool up = x0 < x1;
+      const RootResult root = bracketed_root(f, up ? x0 : x1, up ? x1 : x0, up ? f0 : f1, up ? f1 : f0, tol);
+      if (failed) return fail(r.message.empty() ? std::string("a solve on the way failed") : r.message);
+      if (!(std::fabs(root.f) <= 1e-5 * Q)) return fail("the root finder stopped at a residual of " + std::to_string(root.f / Q));
+      f(root.x);
+    }
+  }
+  r.Fz += r.tangential.Fz_creep;
+  r.residual = (r.Fz - Q) / Q;
+  return resolved;
+}
+
+// The leading `auto` warnings of a row (why it was handed on), kept across a solve again.
+std::vector<Warning> auto_warnings(const CaseResult& r) {
+  std::vector<Warning> w;
+  for (const Warning& x : r.warnings) {
+    if (x.cls != WarningClass::Auto) break;
+    w.push_back(x);
+  }
+  return w;
+}
+
+// The tangential step of a row solved by method m at Q, with the vertical equilibrium (above):
+// the multi-Hertzian and half-space methods are solved again at the loads the root asks for; a
+// strip row has no creep forces (not solved) and stays. ws: the workspace of the caller (or null).
+bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY, double Q,
+                                 const MethodOptions& opt, GridWorkspace* ws) {
+  tangential_step(r, mat, tY, opt);
+  if (r.method != Method::MultiHertzian && r.method != Method::HalfSpace) return false;
+  const std::vector<Warning> handed = auto_warnings(r);
+  const Method m = r.method;
+  const bool again = creep_equilibrium(r, Q, opt.tangential, [&](double Qn, CaseResult& out) {
+    if (m == Method::MultiHertzian) {
+      solve_multi_hertz(G, mat, tY, Qn, opt.multi_hertzian, out);
+    } else if (ws) {
+      solve_half_space(G, mat, tY, Qn, half_space_options(opt), ws->half_space, out);
+    } else {
+      out = solve_half_space(G, mat, tY, Qn, half_space_options(opt));
+    }
+    tangential_step(out, mat, tY, opt);
+  });
+  if (again && !handed.empty()) r.warnings.insert(r.warnings.begin(), handed.begin(), handed.end());
+  return again;
 }
 
 // "auto" (docs/method.md §9): the multi-Hertzian answer is kept when it can be trusted — it
@@ -71,7 +178,9 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
     hand_on = false;
   }
   if (!hand_on) {
-    tangential_step(mhr, mat, tY, opt);  // before Y/Q: Y includes the creep forces
+    // Before Y/Q (Y includes the creep forces). Solved again at another load for the vertical
+    // equilibrium, the row's validity warnings are those of the load it ends at.
+    if (tangential_with_equilibrium(mhr, G, mat, tY, Q, opt, nullptr)) add_validity_warnings(mhr, G, mat, tY, opt);
     add_vehicle_state_warnings(mhr, G);
     decide_status(mhr);
     return mhr;
@@ -132,7 +241,7 @@ CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double t
   // auto's multi-Hertzian rows were judged already (their tests decided whether to keep them);
   // the grid rows it hands back are judged here like any other.
   if (opt.method != Method::Auto || r.method != Method::MultiHertzian) {
-    tangential_step(r, mat, tY, opt);
+    tangential_with_equilibrium(r, G, mat, tY, Q, opt, nullptr);
     judge_case(r, G, mat, tY, opt);
   }
   return r;
@@ -163,7 +272,7 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
       break;
     default: out = solve_contact(G, mat, tY, Q, opt); return;
   }
-  tangential_step(out, mat, tY, opt);
+  tangential_with_equilibrium(out, G, mat, tY, Q, opt, ws);
   judge_case(out, G, mat, tY, opt);  // as above
 }
 
