@@ -84,7 +84,7 @@ struct PatchResult {
   double dx = 0, ds = 0, x0 = 0, s0 = 0;
   std::vector<double> p;    ///< [Pa]
   std::vector<StripOut> strips;  ///< strip method: the loaded strips (kept for --strips)
-  /// The tangential problem: the creepages only (the grid methods do not solve it yet: solved false).
+  /// The tangential problem of this patch (exact steady rolling on its pressure; solved false: not asked or failed).
   TangentialResult t;
 };
 

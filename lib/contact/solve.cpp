@@ -24,11 +24,76 @@ HalfSpaceOptions half_space_options(const MethodOptions& opt) {
   return o;
 }
 
+// The strip-method options of a solve: with friction every patch's strips are kept, the
+// tangential step lays them on a grid (solve_tangential_strips).
+StripMethodOptions strip_options(const MethodOptions& opt) {
+  StripMethodOptions o = opt.strips;
+  o.keep_strips = o.keep_strips || opt.tangential.enabled();
+  return o;
+}
+
+// The strip method's tangential problem (docs/tangential.md, "Strips"): each strip patch's
+// pressure laid on a grid of its own strip width across — on strip j the semi-ellipse
+// q_j √(1 − ((x − c_j)/a_j)²), flat-topped at p_lim when plastic — and square-or-finer elements
+// along x, then solved there by the exact steady-rolling solver as a half-space patch
+// (solve_tangential_patch). The grid's pressures are scaled to carry the patch's N exactly (the
+// raster's quadrature error), so that in full sliding |F| = μN. A patch whose solve fails keeps
+// solved = false (the row then carries tangential_unsupported).
+void solve_tangential_strips(CaseResult& r, const Material& mat, double mu) {
+  if (r.method != Method::Strips || !r.tangential.asked || !(mu > 0)) return;
+  PatchResult g;
+  for (PatchResult& P : r.patches) {
+    if (P.strips.empty() || !(P.N > 0) || !(P.element > 0)) continue;
+    const double ds = P.element;
+    double s_lo = INFINITY, s_hi = -INFINITY, x_lo = INFINITY, x_hi = -INFINITY;
+    for (const StripOut& S : P.strips) {
+      s_lo = std::min(s_lo, S.s);
+      s_hi = std::max(s_hi, S.s);
+      x_lo = std::min(x_lo, S.c - S.a);
+      x_hi = std::max(x_hi, S.c + S.a);
+    }
+    // At least 32 elements along the patch, none longer than the strip width.
+    const double dx = std::min(ds, (x_hi - x_lo) / 32);
+    g.patch = P.patch;
+    g.nx = static_cast<int>(std::ceil((x_hi - x_lo) / dx));
+    g.ns = static_cast<int>(std::lround((s_hi - s_lo) / ds)) + 1;
+    g.dx = dx;
+    g.ds = ds;
+    g.x0 = x_lo + 0.5 * dx;
+    g.s0 = s_lo;
+    g.p.assign(static_cast<std::size_t>(g.nx) * static_cast<std::size_t>(g.ns), 0.0);
+    double total = 0;
+    for (const StripOut& S : P.strips) {
+      const long j = std::lround((S.s - s_lo) / ds);
+      if (j < 0 || j >= g.ns || !(S.a > 0)) continue;
+      for (int i = 0; i < g.nx; ++i) {
+        const double u = (g.x0 + i * dx - S.c) / S.a;
+        if (std::fabs(u) >= 1) continue;
+        double p = S.q * std::sqrt(1 - u * u);
+        if (S.plastic) p = std::min(p, mat.p_lim);
+        g.p[static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx) + static_cast<std::size_t>(i)] = p;
+        total += p * dx * ds;
+      }
+    }
+    if (!(total > 0)) continue;
+    for (double& p : g.p) p *= P.N / total;
+    const Creepages c = P.t.c;
+    const HalfSpaceTangentialResult t = solve_tangential_patch(g, mat, c, mu);
+    if (t.status != TangentialStatus::Ok) continue;
+    P.t = t.forces;
+    P.t.c = c;
+    P.t.mu = mu;
+  }
+  sum_tangential(r, mu);
+}
+
 // The tangential problem of a solved row (docs/tangential.md): creepages of every contact,
-// FASTSIM per ellipse, the exact solution per half-space patch, the case sums.
+// FASTSIM per ellipse, the exact solution per half-space patch and per strip patch (above), the
+// case sums.
 void tangential_step(CaseResult& r, const Material& mat, double tY, const MethodOptions& opt) {
   solve_tangential(r, mat, tY, opt.tangential);
   solve_tangential_patches(r, mat, opt.tangential.mu);
+  solve_tangential_strips(r, mat, opt.tangential.mu);
 }
 
 // The vertical equilibrium with the creep forces (docs/tangential.md, "Vertical equilibrium"):
@@ -115,17 +180,20 @@ std::vector<Warning> auto_warnings(const CaseResult& r) {
 }
 
 // The tangential step of a row solved by method m at Q, with the vertical equilibrium (above):
-// the multi-Hertzian and half-space methods are solved again at the loads the root asks for; a
-// strip row has no creep forces (not solved) and stays. ws: the workspace of the caller (or null).
+// the row's method is solved again at the loads the root asks for. ws: the caller's workspace
+// (or null).
 bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY, double Q,
                                  const MethodOptions& opt, GridWorkspace* ws) {
   tangential_step(r, mat, tY, opt);
-  if (r.method != Method::MultiHertzian && r.method != Method::HalfSpace) return false;
+
   const std::vector<Warning> handed = auto_warnings(r);
   const Method m = r.method;
   const bool again = creep_equilibrium(r, Q, opt.tangential, [&](double Qn, CaseResult& out) {
     if (m == Method::MultiHertzian) {
       solve_multi_hertz(G, mat, tY, Qn, opt.multi_hertzian, out);
+    } else if (m == Method::Strips) {
+      if (ws) solve_strip_method(G, mat, tY, Qn, strip_options(opt), ws->strips, out);
+      else out = solve_strip_method(G, mat, tY, Qn, strip_options(opt));
     } else if (ws) {
       solve_half_space(G, mat, tY, Qn, half_space_options(opt), ws->half_space, out);
     } else {
@@ -195,7 +263,7 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
     elastic_mh = solve_multi_hertz(G, elastic, tY, Q);
     start = &elastic_mh;
   }
-  CaseResult sr = solve_strip_method(G, mat, tY, Q, opt.strips, start);
+  CaseResult sr = solve_strip_method(G, mat, tY, Q, strip_options(opt), start);
   sr.warnings.insert(sr.warnings.begin(), why);
   // A strip answer is kept when it passes its physical checks (contact/grid/grid_checks.hpp: no
   // warning of a validity class). Otherwise (not converged, e.g. a load inside a jump of its
@@ -233,7 +301,7 @@ CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double t
   switch (opt.method) {
     case Method::Auto: r = solve_auto(G, mat, tY, Q, opt); break;
     case Method::HalfSpace: r = solve_half_space(G, mat, tY, Q, half_space_options(opt)); break;
-    case Method::Strips: r = solve_strip_method(G, mat, tY, Q, opt.strips); break;
+    case Method::Strips: r = solve_strip_method(G, mat, tY, Q, strip_options(opt)); break;
     case Method::MultiHertzian:
     default: r = solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian); break;
   }
@@ -268,7 +336,7 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
         out = solve_contact(G, mat, tY, Q, opt);
         return;
       }
-      solve_strip_method(G, mat, tY, Q, opt.strips, ws->strips, out);
+      solve_strip_method(G, mat, tY, Q, strip_options(opt), ws->strips, out);
       break;
     default: out = solve_contact(G, mat, tY, Q, opt); return;
   }
