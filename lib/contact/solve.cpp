@@ -212,6 +212,12 @@ bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const 
 CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt) {
   CaseResult mhr = solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian);
   if (mhr.status == CaseStatus::OutOfRange) return mhr;
+  // With friction the row is first balanced with its creep forces (tangential_with_equilibrium),
+  // so that the tests below judge the row that would be kept; the grid methods still start from
+  // the solution at Q (a copy kept for them).
+  CaseResult mh_at_Q;
+  if (opt.tangential.enabled()) mh_at_Q = mhr;
+  tangential_with_equilibrium(mhr, G, mat, tY, Q, opt, nullptr);
   // The judge's tests on the multi-Hertzian answer (judge.hpp): the Hertz validity of each
   // ellipse, an excluded non-Hertzian candidate, interacting ellipses, a corner of the gap inside
   // a patch (hertz_validity.hpp, gap_kink: the edge-gap test measures the profiles' sampled
@@ -246,17 +252,14 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
     hand_on = false;
   }
   if (!hand_on) {
-    // Before Y/Q (Y includes the creep forces). Solved again at another load for the vertical
-    // equilibrium, the row's validity warnings are those of the load it ends at.
-    if (tangential_with_equilibrium(mhr, G, mat, tY, Q, opt, nullptr)) add_validity_warnings(mhr, G, mat, tY, opt);
-    add_vehicle_state_warnings(mhr, G);
+    add_vehicle_state_warnings(mhr, G);  // after the tangential step: Y includes the creep forces
     decide_status(mhr);
     return mhr;
   }
   // The grid methods start from the elastic multi-Hertzian solution: mhr itself when the model
   // is elastic, else one elastic solve shared by strips and the half-space fallback.
   CaseResult elastic_mh;
-  const CaseResult* start = &mhr;
+  const CaseResult* start = opt.tangential.enabled() ? &mh_at_Q : &mhr;
   if (std::isfinite(mat.p_lim)) {
     Material elastic = mat;
     elastic.p_lim = INFINITY;
