@@ -585,6 +585,80 @@ MHC_API mhc_error mhc_wheelset_warning(const mhc_wheelset_workspace* ws, int32_t
 MHC_API const char* mhc_wheelset_warning_text(const mhc_wheelset_workspace* ws, int32_t side, int32_t i);
 /** Number of wheelset warnings of the last step (side = -1 of mhc_wheelset_warning_text). */
 MHC_API int32_t mhc_wheelset_n_wheelset_warnings(const mhc_wheelset_workspace* ws);
+/* ---- tangential contact: friction, kinematics, creep forces ----------------------------------
+   docs/tangential.md and docs/c-api.md "Creep forces". A pair solves the tangential problem when
+   a friction coefficient is set (mhc_pair_set_tangential, or `friction` in the case file of
+   mhc_pair_from_case_file); mhc_result_tangential then gives the creep forces of the last case a
+   workspace solved with mhc_solve_load. Forces act ON THE RAIL, per contact in its contact frame
+   (x rolling, s in the contact plane towards the field side, Mz about the normal x cross s). */
+
+/** The tangential inputs of a pair (the case file's `friction`, `kinematics` | `creepages`).
+ *  mhc_tangential_options_init fills the defaults and struct_size. Fields are only ever appended:
+ *  a caller compiled against an earlier header passes its own struct_size and the fields it does
+ *  not have keep their defaults. */
+typedef struct mhc_tangential_options {
+  size_t struct_size;          /**< sizeof(mhc_tangential_options), set by mhc_tangential_options_init */
+  double mu;                   /**< Coulomb friction coefficient; NaN (default): no tangential problem */
+  int32_t creepages_given;     /**< 0 (default): creepages from the kinematics below; 1: xi, eta, phi */
+  int32_t reserved;
+  /* kinematics, in the pair's frame (y towards the field side: docs/tangential.md "left and right") */
+  double speed_m_s;            /**< forward speed V > 0 (default 30) */
+  double yaw_rad;              /**< yaw angle at t_Y = 0 (default 0) */
+  double yaw_rad_per_m;        /**< yaw added per metre of t_Y (default 0; A-2.2: 2.4 rad/m) */
+  double lateral_velocity_m_s; /**< default 0 */
+  double yaw_rate_rad_s;       /**< default 0 */
+  double pitch_rate_rad_s;     /**< wheel rotation rate; NaN (default): rolling at the nominal radius */
+  /* creepages given (creepages_given = 1), the same for every contact */
+  double xi;                   /**< longitudinal creepage (default 0) */
+  double eta;                  /**< lateral creepage, in the contact plane (default 0) */
+  double phi_per_m;            /**< spin creepage [rad/m] (default 0) */
+  int32_t vertical_equilibrium; /**< 1 (default): Q balanced with the creep forces' vertical
+                                     components (docs/method.md §10); 0: sum N cos(gamma) = Q */
+  int32_t reserved2;
+} mhc_tangential_options;
+
+/** Fill *opt with the defaults (no friction) and its struct_size. */
+MHC_API void mhc_tangential_options_init(mhc_tangential_options* opt);
+/** Set the pair's tangential inputs (replacing those of its case file). Call it before solving:
+ *  not while another thread solves with the pair. opt->struct_size: sizeof of this or an earlier
+ *  version of the struct (at least up to phi_per_m). MHC_ERR_ARGUMENT names a field out of range
+ *  (mu < 0 or > 2, V <= 0, a value not finite). */
+MHC_API mhc_error mhc_pair_set_tangential(mhc_pair* pair, const mhc_tangential_options* opt);
+
+/** The creep forces of one contact (the tangential columns of ellipses.csv / patches.csv). */
+typedef struct mhc_contact_tangential {
+  int32_t solved;              /**< 1 when this contact's tangential problem was solved */
+  int32_t reserved;
+  double xi, eta, phi_per_m;   /**< its creepages (phi in rad/m) */
+  double Fx_N;                 /**< creep force on the rail along x */
+  double Fy_N;                 /**< ... along s (in the contact plane, towards the field side) */
+  double Mz_Nm;                /**< spin moment on the rail about the contact normal */
+  double adhesion_fraction;    /**< adhesion area / contact area */
+  double Tgamma_N;             /**< Fx xi + Fy eta [N = J/m] */
+  double Tgamma_spin_N;        /**< Mz phi [N] */
+} mhc_contact_tangential;
+
+/** The creep forces of a case: its sums (the tangential columns of cases.csv) and per contact in
+ *  the order of mhc_result.contact. Caller-owned: set struct_size = sizeof(mhc_tangential). */
+typedef struct mhc_tangential {
+  size_t struct_size;          /**< set by the caller: sizeof(mhc_tangential) */
+  int32_t asked;               /**< 1 when the pair has a friction coefficient */
+  int32_t solved;              /**< 1 when every loaded contact's problem was solved */
+  int32_t n_contacts;          /**< contacts filled below (min(n_contacts, MHC_MAX_CONTACTS)) */
+  int32_t reserved;
+  double mu;                   /**< the friction coefficient */
+  double Fx_N;                 /**< sum of Fx on the rail */
+  double Fy_creep_N;           /**< sum of Fy cos(gamma): the creep forces' lateral part, towards the field side */
+  double Mz_Nm;                /**< sum of Mz */
+  double F_over_muN;           /**< sum |F| / (mu sum N) */
+  double Y_N;                  /**< lateral force on the rail with the creep forces, sum N sin(gamma) + Fy_creep_N */
+  double Fz_creep_N;           /**< the creep forces' share of the vertical load, downwards (docs/method.md §10) */
+  mhc_contact_tangential contact[MHC_MAX_CONTACTS];
+} mhc_tangential;
+
+/** The creep forces of the last case solved with `ws` into *out (out->struct_size must be
+ *  sizeof(mhc_tangential)). Without friction: asked = 0, every value NaN. */
+MHC_API mhc_error mhc_result_tangential(const mhc_workspace* ws, mhc_tangential* out);
 
 #ifdef __cplusplus
 }

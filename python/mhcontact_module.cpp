@@ -182,6 +182,51 @@ py::dict result_dict(const mhc_result& r) {
   return d;
 }
 
+/// The creep forces of the case just solved with ws (friction given: mhc_result_tangential) into
+/// its dict and its contacts' dicts, named as the tangential columns of cases.csv and
+/// ellipses.csv / patches.csv (docs/tangential.md; a contact's Fy_kN there is Fs_kN here, the
+/// contact dict's Fy_kN being N sin(gamma)); Y_over_Q then includes them, as in cases.csv.
+void add_tangential(const mhc_workspace* ws, const mhc_result& r, py::dict& d) {
+  mhc_tangential t;
+  t.struct_size = sizeof t;
+  if (mhc_result_tangential(ws, &t) != MHC_OK || !t.asked) return;
+  d["Fx_kN"] = t.Fx_N / 1e3;
+  d["Fy_creep_kN"] = t.Fy_creep_N / 1e3;
+  d["Mz_Nm"] = t.Mz_Nm;
+  d["F_over_muN"] = t.F_over_muN;
+  d["Y_kN"] = t.Y_N / 1e3;
+  d["Fz_creep_kN"] = t.Fz_creep_N / 1e3;
+  if (t.solved) d["Y_over_Q"] = r.Fz_N > 0 ? t.Y_N / r.Fz_N : NAN;
+  py::list cs = d["contacts"];
+  for (int k = 0; k < t.n_contacts && k < static_cast<int>(cs.size()); ++k) {
+    py::dict c = cs[static_cast<std::size_t>(k)];
+    const mhc_contact_tangential& x = t.contact[k];
+    c["xi"] = x.xi;
+    c["eta"] = x.eta;
+    c["phi_per_mm"] = x.phi_per_m / 1e3;
+    c["Fx_kN"] = x.Fx_N / 1e3;
+    c["Fs_kN"] = x.Fy_N / 1e3;  // ellipses.csv's tangential Fy_kN (this dict's Fy_kN is N sin(gamma))
+    c["Mz_Nm"] = x.Mz_Nm;
+    c["adhesion_fraction"] = x.adhesion_fraction;
+    c["Tgamma_N"] = x.Tgamma_N;
+    c["Tgamma_spin_N"] = x.Tgamma_spin_N;
+  }
+}
+
+/// The tangential columns of solve_many (cases.csv's, after the others), with friction only.
+const char* kTangentialCols[] = {"Fx_kN", "Fy_creep_kN", "Mz_Nm", "F_over_muN", "Y_kN", "Fz_creep_kN"};
+constexpr int kNTangential = sizeof kTangentialCols / sizeof kTangentialCols[0];
+
+/// When the case's creep forces were solved, its Y_over_Q is that of cases.csv: Y (with them) / Fz.
+void fill_tangential_columns(const mhc_workspace* ws, const mhc_result& r, std::size_t i, double* const* f, double* y_over_q) {
+  mhc_tangential t;
+  t.struct_size = sizeof t;
+  if (mhc_result_tangential(ws, &t) != MHC_OK) return;
+  const double v[kNTangential] = {t.Fx_N / 1e3, t.Fy_creep_N / 1e3, t.Mz_Nm, t.F_over_muN, t.Y_N / 1e3, t.Fz_creep_N / 1e3};
+  for (int c = 0; c < kNTangential; ++c) f[c][i] = v[c];
+  if (t.solved) y_over_q[i] = r.Fz_N > 0 ? t.Y_N / r.Fz_N : NAN;
+}
+
 /// The float columns of solve_many, in the order of cases.csv, then the stiffness.
 const char* kFloatCols[] = {"tY_mm",    "Q_kN",     "dz_virtual_mm", "approach_mm",    "iterations",
                             "residual", "Fz_kN",    "Fy_kN",         "Y_over_Q",       "pmax_MPa",       "area_mm2",
@@ -365,6 +410,37 @@ PYBIND11_MODULE(_core, m) {
             for (int32_t i = 0; i < mhc_pair_n_warnings(p.p); ++i) l.append(mhc_pair_warning(p.p, i));
             return l;
           }, "The pair's warnings, as the command prints them (mhc_pair_warning): profiles, rail cant, placement.")
+      .def("set_tangential", [](Pair& p, const py::dict& options) {
+            mhc_tangential_options o;
+            mhc_tangential_options_init(&o);
+            for (const auto& item : options) {
+              const std::string k = py::str(item.first);
+              if (k == "vertical_equilibrium") {
+                o.vertical_equilibrium = item.second.cast<bool>() ? 1 : 0;
+                continue;
+              }
+              const double v = option_number(k, item.second);
+              if (k == "mu") o.mu = v;
+              else if (k == "speed_m_s") o.speed_m_s = v;
+              else if (k == "yaw_rad") o.yaw_rad = v;
+              else if (k == "yaw_rad_per_m") o.yaw_rad_per_m = v;
+              else if (k == "lateral_velocity_m_s") o.lateral_velocity_m_s = v;
+              else if (k == "yaw_rate_rad_s") o.yaw_rate_rad_s = v;
+              else if (k == "pitch_rate_rad_s") o.pitch_rate_rad_s = v;
+              else if (k == "xi" || k == "eta" || k == "phi_per_m") {
+                o.creepages_given = 1;
+                (k == "xi" ? o.xi : k == "eta" ? o.eta : o.phi_per_m) = v;
+              } else {
+                throw py::type_error("set_tangential: unknown option " + k +
+                                     " (the fields of mhc_tangential_options, docs/python.md)");
+              }
+            }
+            check(mhc_pair_set_tangential(p.p, &o));
+          }, py::arg("options"),
+          "set_tangential({'mu': 0.3, 'speed_m_s': 30, 'yaw_rad': 2e-3, ...}) or with creepages\n"
+          "{'mu': 0.3, 'xi': ..., 'eta': ..., 'phi_per_m': ...}: the tangential problem of every later\n"
+          "solve (docs/tangential.md; fields of mhc_tangential_options, SI). Not while another thread\n"
+          "solves with the pair.")
       .def("_solve", [](const Pair& p, double tY_m, double value, bool approach, double roll_rad) {
             mhc_workspace* ws = nullptr;
             check(mhc_workspace_create(p.p, &ws));
@@ -373,10 +449,12 @@ PYBIND11_MODULE(_core, m) {
             const mhc_error e = approach ? mhc_solve_approach(p.p, ws, tY_m, roll_rad, value, &r)
                                          : mhc_solve_load(p.p, ws, tY_m, roll_rad, value, &r);
             const std::vector<CaseWarning> w = e == MHC_OK ? case_warnings(ws) : std::vector<CaseWarning>();
-            mhc_workspace_free(ws);
+            if (e != MHC_OK) mhc_workspace_free(ws);
             check(e);
             py::dict d = result_dict(r);
             d["warnings"] = warnings_list(w);
+            add_tangential(ws, r, d);
+            mhc_workspace_free(ws);
             return d;
           })
       .def("_solve_many", [](const Pair& p, py::array_t<double, py::array::c_style | py::array::forcecast> tY_m,
@@ -400,6 +478,15 @@ PYBIND11_MODULE(_core, m) {
             const double* t = tY_m.data();
             const double* v = value.data();
             std::vector<std::vector<CaseWarning>> warns(n);
+            // With friction, the tangential columns of cases.csv (NaN where not solved).
+            const bool tangential = mh::capi::pair_has_friction(*p.p);
+            std::vector<py::array_t<double>> tcols;
+            std::vector<double*> tf;
+            for (int c = 0; tangential && c < kNTangential; ++c) {
+              tcols.emplace_back(n);
+              tf.push_back(tcols.back().mutable_data());
+            }
+            double* yq = f[8];  // Y_over_Q
             mhc_error e;
             {
               py::gil_scoped_release nogil;  // the solve runs without the GIL
@@ -410,6 +497,7 @@ PYBIND11_MODULE(_core, m) {
                 if (c == MHC_OK) {
                   fill_columns(r, i, f.data(), st, me, nc, pl, nw);
                   warns[i] = case_warnings(&ws);
+                  if (tangential) fill_tangential_columns(&ws, r, i, tf.data(), yq);
                 }
                 return c;
               });
@@ -417,6 +505,7 @@ PYBIND11_MODULE(_core, m) {
             check(e);
             py::dict d;
             for (int c = 0; c < kNFloat; ++c) d[kFloatCols[c]] = fcols[static_cast<std::size_t>(c)];
+            for (int c = 0; tangential && c < kNTangential; ++c) d[kTangentialCols[c]] = tcols[static_cast<std::size_t>(c)];
             d["status_code"] = status;
             d["method_code"] = method;
             d["n_contacts"] = n_contacts;

@@ -87,6 +87,11 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
 /// Convert a case's result. Q: the load prescribed (NaN: the load carried, Fz).
 void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_result* out);
 
+/// Convert a case's creep forces (capi/tangential.cpp; out->struct_size kept). mu: the pair's.
+void fill_tangential(const CaseResult& r, double mu, mhc_tangential* out);
+/// Whether the pair solves the tangential problem (a friction coefficient set).
+inline bool pair_has_friction(const mhc_pair& p) { return p.options.tangential.enabled(); }
+
 /// One warning as data into *out (its struct_size kept; the caller checked it).
 void fill_warning(const Warning& w, mhc_warning* out);
 

@@ -361,6 +361,9 @@ mhc_error mhc_pair_create(const mhc_profile* wheel, const mhc_profile* rail, con
     track.flange_back_distance = opt->flange_back_distance_m;
     track.flange_back_position = opt->flange_back_position_m;
     track.nominal_radius = opt->nominal_radius_m;
+    // The creepages' track data, as the case file's reader sets them (mhc_pair_set_tangential).
+    mo.tangential.r0 = track.nominal_radius;
+    mo.tangential.l_origin = 0.5 * track.flange_back_distance - track.flange_back_position;
     if (has_positioning && opt->positioning == MHC_POSITIONING_EXPLICIT) {
       track.positioning = TrackSetup::Positioning::Explicit;
       track.lateral_offset = opt->lateral_offset_m;

@@ -84,7 +84,7 @@ struct PatchResult {
   double dx = 0, ds = 0, x0 = 0, s0 = 0;
   std::vector<double> p;    ///< [Pa]
   std::vector<StripOut> strips;  ///< strip method: the loaded strips (kept for --strips)
-  /// The tangential problem: the creepages only (the grid methods do not solve it yet: solved false).
+  /// The tangential problem of this patch (exact steady rolling on its pressure; solved false: not asked or failed).
   TangentialResult t;
 };
 
@@ -97,6 +97,10 @@ struct TangentialSums {
   double Fy_creep = NAN;   ///< [N] Σ Fy_i cos γ_i on the rail: the creep forces' lateral component, towards the field side
   double Mz = NAN;         ///< [N m] Σ Mz_i on the rail, each about its own contact normal
   double F_over_muN = NAN; ///< [-] Σ |F_i| / (μ Σ N_i): the friction used
+  /// [N] Σ Fy_i sin γ_i with Fy_i the lateral creep force ON THE WHEEL (− that on the rail): the
+  /// creep forces' share of the vertical load the rail carries, downwards (docs/tangential.md,
+  /// "Vertical equilibrium"). The case's Fz is Σ N_i cos γ_i + Fz_creep.
+  double Fz_creep = NAN;
 };
 
 struct CaseResult {

@@ -9,6 +9,7 @@
 #include "contact/judge/judge.hpp"
 #include "contact/half_space/tangential_patch.hpp"
 #include "contact/tangential/tangential_solve.hpp"
+#include "core/roots.hpp"
 #include "geometry/gap.hpp"
 
 namespace mh {
@@ -23,11 +24,185 @@ HalfSpaceOptions half_space_options(const MethodOptions& opt) {
   return o;
 }
 
+// The strip-method options of a solve: with friction every patch's strips are kept, the
+// tangential step lays them on a grid (solve_tangential_strips).
+StripMethodOptions strip_options(const MethodOptions& opt) {
+  StripMethodOptions o = opt.strips;
+  o.keep_strips = o.keep_strips || opt.tangential.enabled();
+  return o;
+}
+
+// The strip method's tangential problem (docs/tangential.md, "Strips"): each strip patch's
+// pressure laid on a grid of its own strip width across — on strip j the semi-ellipse
+// q_j √(1 − ((x − c_j)/a_j)²), flat-topped at p_lim when plastic — and square-or-finer elements
+// along x, then solved there by the exact steady-rolling solver as a half-space patch
+// (solve_tangential_patch). The grid's pressures are scaled to carry the patch's N exactly (the
+// raster's quadrature error), so that in full sliding |F| = μN. A patch whose solve fails keeps
+// solved = false (the row then carries tangential_unsupported).
+void solve_tangential_strips(CaseResult& r, const Material& mat, double mu) {
+  if (r.method != Method::Strips || !r.tangential.asked || !(mu > 0)) return;
+  PatchResult g;
+  for (PatchResult& P : r.patches) {
+    if (P.strips.empty() || !(P.N > 0) || !(P.element > 0)) continue;
+    const double ds = P.element;
+    double s_lo = INFINITY, s_hi = -INFINITY, x_lo = INFINITY, x_hi = -INFINITY;
+    for (const StripOut& S : P.strips) {
+      s_lo = std::min(s_lo, S.s);
+      s_hi = std::max(s_hi, S.s);
+      x_lo = std::min(x_lo, S.c - S.a);
+      x_hi = std::max(x_hi, S.c + S.a);
+    }
+    // At least 32 elements along the patch, none longer than the strip width.
+    const double dx = std::min(ds, (x_hi - x_lo) / 32);
+    g.patch = P.patch;
+    g.nx = static_cast<int>(std::ceil((x_hi - x_lo) / dx));
+    g.ns = static_cast<int>(std::lround((s_hi - s_lo) / ds)) + 1;
+    g.dx = dx;
+    g.ds = ds;
+    g.x0 = x_lo + 0.5 * dx;
+    g.s0 = s_lo;
+    g.p.assign(static_cast<std::size_t>(g.nx) * static_cast<std::size_t>(g.ns), 0.0);
+    double total = 0;
+    for (const StripOut& S : P.strips) {
+      const long j = std::lround((S.s - s_lo) / ds);
+      if (j < 0 || j >= g.ns || !(S.a > 0)) continue;
+      for (int i = 0; i < g.nx; ++i) {
+        const double u = (g.x0 + i * dx - S.c) / S.a;
+        if (std::fabs(u) >= 1) continue;
+        double p = S.q * std::sqrt(1 - u * u);
+        if (S.plastic) p = std::min(p, mat.p_lim);
+        g.p[static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx) + static_cast<std::size_t>(i)] = p;
+        total += p * dx * ds;
+      }
+    }
+    if (!(total > 0)) continue;
+    for (double& p : g.p) p *= P.N / total;
+    const Creepages c = P.t.c;
+    const HalfSpaceTangentialResult t = solve_tangential_patch(g, mat, c, mu);
+    if (t.status != TangentialStatus::Ok) continue;
+    P.t = t.forces;
+    P.t.c = c;
+    P.t.mu = mu;
+  }
+  sum_tangential(r, mu);
+}
+
 // The tangential problem of a solved row (docs/tangential.md): creepages of every contact,
-// FASTSIM per ellipse, the exact solution per half-space patch, the case sums.
+// FASTSIM per ellipse, the exact solution per half-space patch and per strip patch (above), the
+// case sums.
 void tangential_step(CaseResult& r, const Material& mat, double tY, const MethodOptions& opt) {
   solve_tangential(r, mat, tY, opt.tangential);
   solve_tangential_patches(r, mat, opt.tangential.mu);
+  solve_tangential_strips(r, mat, opt.tangential.mu);
+}
+
+// The vertical equilibrium with the creep forces (docs/tangential.md, "Vertical equilibrium"):
+//   Q = Σ N_i cos γ_i + Σ Fy_i sin γ_i,
+// Fy_i the lateral creep force ON THE WHEEL along the contact plane's ŝ = (0, cos γ, sin γ)
+// (tangential_types.hpp), so that Fy_i sin γ_i is its share of the load, downwards on the rail
+// (TangentialSums::Fz_creep). The normal solvers balance Q_n = Σ N_i cos γ_i; every contact's N_i
+// follows from the one rigid approach, so a root in Q_n is a root in the approach — the split
+// between contacts is the normal solver's at that approach, each contact's creep force recomputed
+// at its own N_i. f(Q_n) = Q_n + Fz_creep(Q_n) − Q is nearly linear (|dFz_creep/dQ_n| ≤ μ tan γ):
+// secant steps from Q_n = Q bracket the root, TOMS 748 (core/roots.hpp) closes it. Where the
+// creep forces lift the wheel faster than the load grows (μ tan γ ≥ 1 in full slip: Nadal's
+// limit) f has no root and the row is not_converged with a message saying so.
+// r: solved at Q with its tangential step; resolve(Q_n, r) solves the normal problem at Q_n
+// into r with its tangential step. Returns true when r was solved again (at another load).
+template <class Resolve>
+bool creep_equilibrium(CaseResult& r, double Q, const TangentialOptions& t, Resolve&& resolve) {
+  if (!t.enabled() || !t.vertical_equilibrium || is_failure(r.status) || !r.tangential.solved) return false;
+  double last = Q;  // the load r holds the solution of
+  bool failed = false, resolved = false;
+  auto f = [&](double Qn) -> double {
+    if (Qn != last) {
+      resolve(Qn, r);
+      last = Qn;
+      resolved = true;
+    }
+    if (is_failure(r.status) || !r.tangential.solved) {
+      failed = true;
+      return NAN;
+    }
+    return Qn + r.tangential.Fz_creep - Q;
+  };
+  auto fail = [&](const std::string& why) {
+    r.status = CaseStatus::NotConverged;
+    r.message = "no vertical equilibrium with the creep forces (Q = sum N cos(gamma) + Fy sin(gamma)): " + why;
+    return resolved;
+  };
+  const double f_abs = 1e-7 * Q;  // 1 mN at 10 kN; the normal solvers' residuals are below
+  double x0 = Q, f0 = f(Q);
+  double x1 = x0, f1 = f0;
+  if (std::fabs(f0) > f_abs) {
+    // Secant steps (the first a fixed-point step, slope 1), 1 % beyond the estimate so that the
+    // root is bracketed when f is as linear as it nearly is.
+    double slope = 1;
+    for (int k = 0; k < 8 && !failed && std::fabs(f1) > f_abs && (k == 0 || (f0 < 0) == (f1 < 0)); ++k) {
+      if (k > 0) {
+        slope = (f1 - f0) / (x1 - x0);
+        x0 = x1;
+        f0 = f1;
+      }
+      if (!(slope > 0)) return fail("the creep forces' vertical share falls faster than the normal load grows (flange climbing: mu tan(gamma) >= 1)");
+      const double x = x0 - 1.01 * f0 / slope;
+      if (!(x > 0)) return fail("the normal load would have to be negative (flange climbing: mu tan(gamma) >= 1)");
+      x1 = x;
+      f1 = f(x1);
+    }
+    if (failed) return fail(r.message.empty() ? std::string("a solve on the way failed") : r.message);
+    if (std::fabs(f1) > f_abs) {
+      if ((f0 < 0) == (f1 < 0)) return fail("no bracket of the root found in 8 secant steps");
+      RootTolerance tol;
+      tol.f_abs = f_abs;
+      tol.rel = 1e-12;
+      tol.max_iterations = 40;
+      const bool up = x0 < x1;
+      const RootResult root = bracketed_root(f, up ? x0 : x1, up ? x1 : x0, up ? f0 : f1, up ? f1 : f0, tol);
+      if (failed) return fail(r.message.empty() ? std::string("a solve on the way failed") : r.message);
+      if (!(std::fabs(root.f) <= 1e-5 * Q)) return fail("the root finder stopped at a residual of " + std::to_string(root.f / Q));
+      f(root.x);
+    }
+  }
+  r.Fz += r.tangential.Fz_creep;
+  r.residual = (r.Fz - Q) / Q;
+  return resolved;
+}
+
+// The leading `auto` warnings of a row (why it was handed on), kept across a solve again.
+std::vector<Warning> auto_warnings(const CaseResult& r) {
+  std::vector<Warning> w;
+  for (const Warning& x : r.warnings) {
+    if (x.cls != WarningClass::Auto) break;
+    w.push_back(x);
+  }
+  return w;
+}
+
+// The tangential step of a row solved by method m at Q, with the vertical equilibrium (above):
+// the row's method is solved again at the loads the root asks for. ws: the caller's workspace
+// (or null).
+bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY, double Q,
+                                 const MethodOptions& opt, GridWorkspace* ws) {
+  tangential_step(r, mat, tY, opt);
+
+  const std::vector<Warning> handed = auto_warnings(r);
+  const Method m = r.method;
+  const bool again = creep_equilibrium(r, Q, opt.tangential, [&](double Qn, CaseResult& out) {
+    if (m == Method::MultiHertzian) {
+      solve_multi_hertz(G, mat, tY, Qn, opt.multi_hertzian, out);
+    } else if (m == Method::Strips) {
+      if (ws) solve_strip_method(G, mat, tY, Qn, strip_options(opt), ws->strips, out);
+      else out = solve_strip_method(G, mat, tY, Qn, strip_options(opt));
+    } else if (ws) {
+      solve_half_space(G, mat, tY, Qn, half_space_options(opt), ws->half_space, out);
+    } else {
+      out = solve_half_space(G, mat, tY, Qn, half_space_options(opt));
+    }
+    tangential_step(out, mat, tY, opt);
+  });
+  if (again && !handed.empty()) r.warnings.insert(r.warnings.begin(), handed.begin(), handed.end());
+  return again;
 }
 
 // "auto" (docs/method.md §9): the multi-Hertzian answer is kept when it can be trusted — it
@@ -37,6 +212,12 @@ void tangential_step(CaseResult& r, const Material& mat, double tY, const Method
 CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt) {
   CaseResult mhr = solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian);
   if (mhr.status == CaseStatus::OutOfRange) return mhr;
+  // With friction the row is first balanced with its creep forces (tangential_with_equilibrium),
+  // so that the tests below judge the row that would be kept; the grid methods still start from
+  // the solution at Q (a copy kept for them).
+  CaseResult mh_at_Q;
+  if (opt.tangential.enabled()) mh_at_Q = mhr;
+  tangential_with_equilibrium(mhr, G, mat, tY, Q, opt, nullptr);
   // The judge's tests on the multi-Hertzian answer (judge.hpp): the Hertz validity of each
   // ellipse, an excluded non-Hertzian candidate, interacting ellipses, a corner of the gap inside
   // a patch (hertz_validity.hpp, gap_kink: the edge-gap test measures the profiles' sampled
@@ -71,22 +252,21 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
     hand_on = false;
   }
   if (!hand_on) {
-    tangential_step(mhr, mat, tY, opt);  // before Y/Q: Y includes the creep forces
-    add_vehicle_state_warnings(mhr, G);
+    add_vehicle_state_warnings(mhr, G);  // after the tangential step: Y includes the creep forces
     decide_status(mhr);
     return mhr;
   }
   // The grid methods start from the elastic multi-Hertzian solution: mhr itself when the model
   // is elastic, else one elastic solve shared by strips and the half-space fallback.
   CaseResult elastic_mh;
-  const CaseResult* start = &mhr;
+  const CaseResult* start = opt.tangential.enabled() ? &mh_at_Q : &mhr;
   if (std::isfinite(mat.p_lim)) {
     Material elastic = mat;
     elastic.p_lim = INFINITY;
     elastic_mh = solve_multi_hertz(G, elastic, tY, Q);
     start = &elastic_mh;
   }
-  CaseResult sr = solve_strip_method(G, mat, tY, Q, opt.strips, start);
+  CaseResult sr = solve_strip_method(G, mat, tY, Q, strip_options(opt), start);
   sr.warnings.insert(sr.warnings.begin(), why);
   // A strip answer is kept when it passes its physical checks (contact/grid/grid_checks.hpp: no
   // warning of a validity class). Otherwise (not converged, e.g. a load inside a jump of its
@@ -124,7 +304,7 @@ CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double t
   switch (opt.method) {
     case Method::Auto: r = solve_auto(G, mat, tY, Q, opt); break;
     case Method::HalfSpace: r = solve_half_space(G, mat, tY, Q, half_space_options(opt)); break;
-    case Method::Strips: r = solve_strip_method(G, mat, tY, Q, opt.strips); break;
+    case Method::Strips: r = solve_strip_method(G, mat, tY, Q, strip_options(opt)); break;
     case Method::MultiHertzian:
     default: r = solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian); break;
   }
@@ -132,7 +312,7 @@ CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double t
   // auto's multi-Hertzian rows were judged already (their tests decided whether to keep them);
   // the grid rows it hands back are judged here like any other.
   if (opt.method != Method::Auto || r.method != Method::MultiHertzian) {
-    tangential_step(r, mat, tY, opt);
+    tangential_with_equilibrium(r, G, mat, tY, Q, opt, nullptr);
     judge_case(r, G, mat, tY, opt);
   }
   return r;
@@ -159,11 +339,11 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
         out = solve_contact(G, mat, tY, Q, opt);
         return;
       }
-      solve_strip_method(G, mat, tY, Q, opt.strips, ws->strips, out);
+      solve_strip_method(G, mat, tY, Q, strip_options(opt), ws->strips, out);
       break;
     default: out = solve_contact(G, mat, tY, Q, opt); return;
   }
-  tangential_step(out, mat, tY, opt);
+  tangential_with_equilibrium(out, G, mat, tY, Q, opt, ws);
   judge_case(out, G, mat, tY, opt);  // as above
 }
 

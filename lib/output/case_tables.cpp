@@ -175,6 +175,7 @@ void tangential_case_fields(Sink& k, const CaseResult& r, bool failed) {
   k.optional("Mz_Nm", ok ? t.Mz : nan);
   k.optional("F_over_muN", ok ? t.F_over_muN : nan);
   k.optional("Y_kN", ok ? (r.Fy + t.Fy_creep) / units::kN : nan);
+  k.optional("Fz_creep_kN", ok ? t.Fz_creep / units::kN : nan);
 }
 
 // One contact patch of a grid method, after its case, t_Y and Q (patches.csv) or in its case's

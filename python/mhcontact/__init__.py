@@ -18,13 +18,17 @@ from ._core import (INTERFACE_VERSION, InputError, METHOD_NAMES, STATUS_NAMES, U
                     Table, Wheelset, __version__, abi_version, fft_backend)
 
 __all__ = ["Pair", "Profile", "Table", "Wheelset", "InputError", "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES",
-           "CASE_COLUMNS", "INTERFACE_VERSION", "__version__", "abi_version", "fft_backend"]
+           "CASE_COLUMNS", "TANGENTIAL_COLUMNS", "INTERFACE_VERSION", "__version__", "abi_version", "fft_backend"]
 
 #: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp), then the
 #: vertical contact stiffness dFz/d(dz) (not in cases.csv).
 CASE_COLUMNS = ("case", "tY_mm", "Q_kN", "status", "method", "dz_virtual_mm", "approach_mm", "iterations",
                 "residual", "n_contacts", "Fz_kN", "Fy_kN", "Y_over_Q", "pmax_MPa", "area_mm2", "gamma_main_deg",
                 "r_roll_main_mm", "plastic", "n_warnings", "dFz_ddz_kN_per_mm")
+
+#: With friction (a case file's `friction`, or Pair.set_tangential), solve_many adds the
+#: tangential columns of cases.csv after these (docs/tangential.md; docs/python.md "Creep forces").
+TANGENTIAL_COLUMNS = ("Fx_kN", "Fy_creep_kN", "Mz_Nm", "F_over_muN", "Y_kN", "Fz_creep_kN")
 
 
 def _prescribed(Q_N, dz_m):
@@ -91,6 +95,9 @@ def _pair_solve_many(self, tY_m, Q_N=None, dz_m=None, threads=0):
         elif name == "method":
             out[name] = method
         else:
+            out[name] = raw[name]
+    for name in TANGENTIAL_COLUMNS:
+        if name in raw:
             out[name] = raw[name]
     # Per case, a list of warning dicts (class, outside_validity, contact_kind, contact,
     # contact2, measures, text), the `warnings` column of cases.csv as data.

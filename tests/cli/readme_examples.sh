@@ -111,7 +111,7 @@ fi
 
 # --- docs/tangential.md, "Worked example": creep forces of a yawed wheelset -------------------
 ./build/mhcontact run cases/manchester-tangential.json -o out/tangential
-grep -q ',Fx_kN,Fy_creep_kN,Mz_Nm,F_over_muN,Y_kN$' <(head -1 out/tangential/cases.csv)
+grep -q ',Fx_kN,Fy_creep_kN,Mz_Nm,F_over_muN,Y_kN,Fz_creep_kN$' <(head -1 out/tangential/cases.csv)
 
 # --- docs/wheelset-dynamics.md, "Running it" (built only when SUNDIALS is found) ---------------
 dyn=$(dirname "$bin")/examples/wheelset_dynamics/wheelset_dynamics

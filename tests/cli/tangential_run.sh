@@ -2,8 +2,8 @@
 # The tangential problem through `run` (docs/tangential.md): with friction and kinematics the
 # tables end with the tangential columns (forces on the rail, Tγ = Fx ξ + Fy η, Y_kN = Fy_kN + Fy_creep_kN,
 # Y_over_Q = Y_kN / Fz_kN), the worked example of docs/tangential.md prints what the page shows;
-# the strip method leaves the forces empty with tangential_unsupported (the half-space method's
-# exact solve per patch: tests/unit/contact/test_creepage.cpp); without friction no column is
+# the strip method fills them too (its patches solved exactly on the strips' pressure:
+# tests/unit/contact/test_strips_tangential.cpp); without friction no column is
 # added. Breaks seen to fail: the sign of the output forces flipped (Tgamma check), Y_over_Q
 # without the creep forces (Y check).
 set -euo pipefail
@@ -44,8 +44,10 @@ for r in e:
     Rwyy = float(geo[(r["tY_mm"], r["ellipse"])]["R_wyy_mm"])
     assert abs(float(r["eta"]) + psi * Rwyy / 460) <= 1e-9 + 1e-6 * abs(psi), (r["eta"], psi, Rwyy)
 s = rows("out/s/cases.csv"); p = rows("out/s/patches.csv")
-assert all("tangential_unsupported" in r["warnings"] and r["status"] != "ok" for r in s)
-assert all(r["Fx_kN"] == "" and r["xi"] != "" for r in p)
+# The strip method solves each patch's tangential problem on its strips' pressure (exact solver).
+assert all("tangential_unsupported" not in r["warnings"] and r["Fx_kN"] != "" for r in s)
+assert all(r["Fx_kN"] != "" and r["xi"] != "" and 0 <= float(r["adhesion_fraction"]) <= 1 for r in p)
+assert all(0 < float(r["F_over_muN"]) <= 1 + 1e-9 for r in s)
 plain = rows("out/plain/cases.csv")
 assert "Fx_kN" not in plain[0] and "Y_kN" not in plain[0]
 print("tangential_run: ok")

@@ -53,7 +53,7 @@ const std::vector<WarningClassInfo>& warning_classes() {
       {C::SmoothingSensitive, "smoothing_sensitive", false, "the peak pressure or the area moves by more than the trust table's tolerance when the contact smoothing length is halved or doubled (docs/profiles.md §7; informational)"},
       // Friction given, but the row's method does not solve the tangential problem yet
       // (contact/tangential/tangential_solve.hpp): its creep forces are empty, not 0.
-      {C::TangentialUnsupported, "tangential_unsupported", true, "friction given, but the row's tangential problem is not solved (strips: not yet; half-space: a patch's exact solve failed or the bodies' elastic constants differ): its creep-force columns are empty (docs/tangential.md)"},
+      {C::TangentialUnsupported, "tangential_unsupported", true, "friction given, but the row's tangential problem is not solved (half-space or strips: a patch's exact solve failed or the bodies' elastic constants differ): its creep-force columns are empty (docs/tangential.md)"},
   };
   return k;
 }

@@ -28,6 +28,12 @@ struct TangentialOptions {
   /// [m] nominal rolling radius r0 (track.nominal_radius): the pitch rate's default V / r0.
   double r0 = 0.46;
   FastsimOptions fastsim;
+  /// Whether the vertical load Q is balanced with the creep forces' vertical components,
+  /// Q = Σ (N_i cos γ_i + Fy_i sin γ_i) (docs/tangential.md, "Vertical equilibrium"; default
+  /// true, as CONTACT's module 1 does), by the methods that solve the tangential problem
+  /// (multi-Hertzian, half-space). false: Σ N_i cos γ_i = Q, the creep forces computed after
+  /// (a caller balancing the load itself, e.g. with the wheelset's full equilibrium).
+  bool vertical_equilibrium = true;
   bool enabled() const { return std::isfinite(mu); }
 };
 

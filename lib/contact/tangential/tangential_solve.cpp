@@ -54,21 +54,22 @@ void solve_tangential(CaseResult& r, const Material& mat, double tY, const Tange
 }
 
 void sum_tangential(CaseResult& r, double mu) {
-  double Fx = 0, Fy = 0, Mz = 0, F = 0, N = 0;
+  double Fx = 0, Fy = 0, Mz = 0, F = 0, N = 0, Fz = 0;
   bool all = !r.loaded.empty() || !r.patches.empty();
-  auto add = [&](const TangentialResult& t, double Nc, double cos_gamma) {
+  auto add = [&](const TangentialResult& t, double Nc, double cos_gamma, double sin_gamma) {
     if (!t.solved) {
       all = all && !(Nc > 0);  // an unloaded ellipse has nothing to solve
       return;
     }
     Fx -= t.Fx;  // on the rail
     Fy -= t.Fy * cos_gamma;
+    Fz += t.Fy * sin_gamma;  // −(on the rail along ŝ) · ŝ_z: downwards on the rail
     Mz -= t.Mz;
     F += std::hypot(t.Fx, t.Fy);
     N += Nc;
   };
-  for (const LoadedEllipse& L : r.loaded) add(L.t, L.s.N > 0 && L.s.a > 0 && L.s.b > 0 ? L.s.N : 0, L.cos_gamma);
-  for (const PatchResult& P : r.patches) add(P.t, P.N, std::cos(P.gamma));
+  for (const LoadedEllipse& L : r.loaded) add(L.t, L.s.N > 0 && L.s.a > 0 && L.s.b > 0 ? L.s.N : 0, L.cos_gamma, L.sin_gamma);
+  for (const PatchResult& P : r.patches) add(P.t, P.N, std::cos(P.gamma), std::sin(P.gamma));
   r.tangential.solved = false;
   if (!all || !(N > 0)) return;
   r.tangential.solved = true;
@@ -76,6 +77,7 @@ void sum_tangential(CaseResult& r, double mu) {
   r.tangential.Fy_creep = Fy;
   r.tangential.Mz = Mz;
   r.tangential.F_over_muN = mu > 0 ? F / (mu * N) : NAN;
+  r.tangential.Fz_creep = Fz;
 }
 
 }  // namespace mh

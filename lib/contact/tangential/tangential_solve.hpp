@@ -2,9 +2,9 @@
 // The tangential problem of a solved case (docs/tangential.md): the creepages of each contact
 // (from the kinematics or as given) and FASTSIM on each loaded multi-Hertzian ellipse. A grid
 // patch gets its creepages here; the half-space method solves its patches exactly afterwards
-// (contact/half_space/tangential_patch.hpp, solve_tangential_patches); the strips do not solve it
-// yet: their contacts keep TangentialResult::solved false (NaN columns) and the case carries the
-// warning `tangential_unsupported`.
+// (contact/half_space/tangential_patch.hpp, solve_tangential_patches), the strip method its
+// patches on their strips' pressure (contact/solve.cpp); a patch whose solve fails keeps
+// TangentialResult::solved false (NaN columns) and the case carries `tangential_unsupported`.
 #include "contact/case_result.hpp"
 #include "contact/options.hpp"
 

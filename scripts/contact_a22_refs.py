@@ -1,0 +1,56 @@
+#!/usr/bin/env python3
+"""The Manchester A-2.2 references of tests/data/contact_tangential/mbench_a22_right.csv.
+
+Reads CONTACT's shipped input deck and expected output of the benchmark's case A-2.2, right wheel
+(examples/mbench_a22_right.inp and .ref_out of CONTACT, github.com/eve70a/CONTACT) and writes one
+row per case: the wheelset's lateral position and yaw from the deck, and from the output the
+contact patch's angle, creepages and total forces as CONTACT prints them (its signs and units;
+tests/data/contact_tangential/README.md says how they map onto mhcontact's).
+
+    python3 scripts/contact_a22_refs.py CONTACT_EXAMPLES_DIR OUT.csv
+"""
+import re
+import sys
+
+
+def numbers(line):
+    return [float(x) for x in line.split()]
+
+
+def main(examples, out):
+    inp = open(f"{examples}/mbench_a22_right.inp").read().splitlines()
+    pose = [numbers(l.split("S, Y")[0]) for l in inp if "S, Y, FZ, ROLL, YAW, PITCH" in l]
+    ref = open(f"{examples}/mbench_a22_right.ref_out").read().splitlines()
+    rows, cur = [], None
+    for i, l in enumerate(ref):
+        if re.match(r"^ Case +\d+", l):
+            cur = {"case": int(l.split()[1])}
+            rows.append(cur)
+            cur["npatch"] = 0
+        elif "DELTCP(TR)" in l:
+            cur["npatch"] += 1
+            cur["deltcp_rad"] = numbers(ref[i + 1])[3]
+        elif l.split()[:3] == ["CHI", "DQ", "VELOC"]:
+            v = numbers(ref[i + 1])
+            cur["cksi"], cur["ceta"], cur["cphi_per_mm"] = v[3], v[4], v[5]
+        elif l.split()[:3] == ["FN", "FX", "FS"]:
+            v = numbers(ref[i + 1])
+            cur["FN_N"], cur["FX_N"], cur["FS_N"], cur["MN_Nmm"] = v[:4]
+        elif l.split()[:3] == ["FX(TR)", "FY(TR)", "FZ(TR)"]:
+            v = numbers(ref[i + 1])
+            cur["FY_TR_N"], cur["FZ_TR_N"] = v[1], v[2]
+        elif l.split()[:3] == ["NPOT", "NCON", "NADH"]:
+            v = numbers(ref[i + 1])
+            cur["ncon"], cur["nadh"] = int(v[1]), int(v[2])
+    assert len(rows) == len(pose) == 21, (len(rows), len(pose))
+    cols = ["case", "tY_mm", "yaw_mrad", "npatch", "deltcp_rad", "cksi", "ceta", "cphi_per_mm",
+            "FN_N", "FX_N", "FS_N", "MN_Nmm", "FY_TR_N", "FZ_TR_N", "ncon", "nadh"]
+    with open(out, "w") as f:
+        f.write(",".join(cols) + "\n")
+        for r, p in zip(rows, pose):
+            r["tY_mm"], r["yaw_mrad"] = p[1], p[4] * 1e3
+            f.write(",".join(f"{r[c]:g}" if isinstance(r[c], float) else str(r[c]) for c in cols) + "\n")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2])
