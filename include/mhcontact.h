@@ -521,7 +521,8 @@ typedef struct mhc_wheelset_wheel {
   double tY_m;            /**< the pair's t_Y */
   double h_m;             /**< axle height at which this wheel first touches (NaN off the table) */
   double dz_m;            /**< its vertical virtual penetration (eq. 11) */
-  double Fz_pair_N;       /**< the pair's vertical force, sum N cos(gamma) */
+  double Fz_pair_N;       /**< the pair's vertical force: sum N cos(gamma), plus with friction the creep
+                                forces' vertical share (docs/method.md §10 eq. 10.1): the wheel's load */
   double F_N[3];          /**< the wheel's forces on the wheelset, track frame */
   double M_N_m[3];        /**< their moment about the axle centre */
   double dF_dy_N_per_m[3];      /**< d F_N / d y (the other inputs held) */

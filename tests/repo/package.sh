@@ -36,15 +36,18 @@ done < "$tmp/shown.txt"
 "$tmp/c_build/c_stepping" "$src/cases/manchester.json" > "$tmp/m.out"
 "$tmp/c_build/c_stepping" /nonexistent.json 2> "$tmp/err" && { echo "package: a missing case file must fail"; exit 1; }
 grep -q 'c_stepping: /nonexistent.json: input: ' "$tmp/err" || { echo "package: error message"; cat "$tmp/err"; exit 1; }
-# The wheelset call: examples/c_wheelset, a second consumer of the installed package; its first
-# row (y = 0) must be left-right symmetric (equal main contacts) and docs/c-api.md "The wheelset
-# call" prints this run's output (each shown line but "..." is a line of it).
+# The wheelset call: examples/c_wheelset, a second consumer of the installed package; its rows at
+# y = 0 with yaw +2 mrad (t 0.0) and -2 mrad (t 0.5) must be each other's mirror image (equal
+# contact angles; the left wheel's load of one the right wheel's of the other: the yaw's lateral
+# creep forces shift load between the wheels through the vertical equilibrium), and
+# docs/c-api.md "The wheelset call" prints this run's output (each shown line but "..." is a
+# line of it).
 cp -r "$tmp/p/share/doc/mhcontact/examples/c_wheelset" "$tmp/c_wheelset"
 cmake -S "$tmp/c_wheelset" -B "$tmp/w_build" -DCMAKE_PREFIX_PATH="$tmp/p" >/dev/null
 cmake --build "$tmp/w_build" >/dev/null
 "$tmp/w_build/c_wheelset" > "$tmp/w.out"
 [ "$(grep -cE '^[0-9.]+,-?[0-9.]+,-?[0-9.]+,(ok|outside_validity),' "$tmp/w.out")" = 11 ] || { echo "package: c_wheelset: expected 11 solved rows"; cat "$tmp/w.out"; exit 1; }
-awk -F, '$1 == "0.0" { exit !($10 == $12 && $11 == $13) }' "$tmp/w.out" || { echo "package: c_wheelset: y = 0 not symmetric"; cat "$tmp/w.out"; exit 1; }
+awk -F, '$1 == "0.0" { g0 = $10 == $12; l = $11; r = $13 } $1 == "0.5" { ok = g0 && $10 == $12 && $11 == r && $13 == l } END { exit !ok }' "$tmp/w.out" || { echo "package: c_wheelset: y = 0 with yaw +-2 mrad not mirror images"; cat "$tmp/w.out"; exit 1; }
 grep -q '^dFz/dZ -' "$tmp/w.out" || { echo "package: c_wheelset: no derivatives"; cat "$tmp/w.out"; exit 1; }
 awk '/^    \/tmp\/cw\/c_wheelset$/ { on = 1; next } on && /^    / { sub(/^    /, ""); print; next } on && NF { exit }' \
   "$src/docs/c-api.md" | grep -vx '\.\.\.' | grep -v '^$' > "$tmp/shown_w.txt"

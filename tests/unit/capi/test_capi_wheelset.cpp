@@ -23,6 +23,7 @@ struct Fixture {
   mhc_profile *wheel = nullptr, *rail = nullptr;
   mhc_pair* pair = nullptr;
   mhc_wheelset* ws = nullptr;
+  mhc_wheelset* ws_normal = nullptr;  ///< the same without friction: normal contact only
   Fixture() {
     REQUIRE(mhc_profile_standard("S1002", &wheel) == MHC_OK);
     REQUIRE(mhc_profile_standard("60E1", &rail) == MHC_OK);
@@ -35,9 +36,12 @@ struct Fixture {
     wo.mu = 0.3;
     // The same pair on both sides: the right one is its mirror image (canonical frames).
     REQUIRE(mhc_wheelset_create(pair, pair, &wo, &ws) == MHC_OK);
+    mhc_wheelset_options_init(&wo);
+    REQUIRE(mhc_wheelset_create(pair, pair, &wo, &ws_normal) == MHC_OK);
   }
   ~Fixture() {
     mhc_wheelset_free(ws);
+    mhc_wheelset_free(ws_normal);
     mhc_pair_free(pair);
     mhc_profile_free(wheel);
     mhc_profile_free(rail);
@@ -78,11 +82,15 @@ TEST_CASE("C wheelset: the interface version is negotiable at run time", "[capi]
 }
 
 TEST_CASE("C wheelset: each wheel is the single-pair call at t_Y = +-y", "[capi][wheelset_contact]") {
-  Ws w;
+  // Normal contact only: the single-pair call has no friction (with it, the creep forces' vertical
+  // share enters each wheel's load balance, docs/method.md §10 eq. 10.1; checked below).
+  mhc_wheelset_workspace* w0 = nullptr;
+  REQUIRE(mhc_wheelset_workspace_create(fx().ws_normal, &w0) == MHC_OK);
   mhc_wheelset_result r;
   r.struct_size = sizeof r;
   const mhc_wheelset_pose p = pose(4e-3, 60e3, 45e3);
-  REQUIRE(mhc_wheelset_step(fx().ws, w.w, &p, &r) == MHC_OK);
+  REQUIRE(mhc_wheelset_step(fx().ws_normal, w0, &p, &r) == MHC_OK);
+  mhc_wheelset_workspace_free(w0);
   mhc_workspace* pw = nullptr;
   REQUIRE(mhc_workspace_create(fx().pair, &pw) == MHC_OK);
   for (int side = 0; side < 2; ++side) {
@@ -107,9 +115,21 @@ TEST_CASE("C wheelset: each wheel is the single-pair call at t_Y = +-y", "[capi]
     }
   }
   mhc_workspace_free(pw);
-  // Vertical balance: the two loads (the normal forces' vertical parts; the creep forces' share
-  // in the steep contact planes is not a load).
-  CHECK(r.wheel[0].Fz_pair_N + r.wheel[1].Fz_pair_N == Approx(105e3).epsilon(1e-6));
+  CHECK(r.wheel[0].Fz_pair_N + r.wheel[1].Fz_pair_N == Approx(105e3).epsilon(1e-12));
+  // With friction each wheel's vertical force, normal and creep forces together, carries its
+  // load (to the equilibrium's 1e-7 Q), and the normal forces alone do not.
+  Ws w;
+  mhc_wheelset_result rf;
+  rf.struct_size = sizeof rf;
+  REQUIRE(mhc_wheelset_step(fx().ws, w.w, &p, &rf) == MHC_OK);
+  for (int side = 0; side < 2; ++side) {
+    const double Q = side == 0 ? p.Q_left_N : p.Q_right_N;
+    CHECK(rf.wheel[side].Fz_pair_N == Approx(Q).epsilon(1e-6));
+    double N_cos = 0;
+    for (int i = 0; i < rf.wheel[side].n_contacts && i < MHC_MAX_CONTACTS; ++i)
+      N_cos += rf.wheel[side].contact[i].N_N * std::cos(rf.wheel[side].contact[i].gamma_rad);
+    CHECK(std::fabs(N_cos - Q) > 1e-6 * Q);
+  }
 }
 
 TEST_CASE("C wheelset: an older, smaller result is filled up to its size and a newer, larger one gets the library's",

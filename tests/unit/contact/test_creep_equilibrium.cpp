@@ -54,7 +54,7 @@ TEST_CASE("creep equilibrium: full lateral slip on one contact, N = Q / (cos gam
   }
 }
 
-TEST_CASE("creep equilibrium: off, Sigma N cos gamma = Q as without friction; beyond Nadal's friction angle, not_converged", "[tangential][equilibrium]") {
+TEST_CASE("creep equilibrium: off, Sigma N cos gamma = Q as without friction, and beyond Nadal's friction angle, not_converged", "[tangential][equilibrium]") {
   const ContactGeometry& G = testing::manchester_geometry();
   const double Q = 10e3;
   MethodOptions off = sliding(Method::MultiHertzian, 0.05);
