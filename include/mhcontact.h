@@ -660,6 +660,47 @@ typedef struct mhc_tangential {
 /** The creep forces of the last case solved with `ws` into *out (out->struct_size must be
  *  sizeof(mhc_tangential)). Without friction: asked = 0, every value NaN. */
 MHC_API mhc_error mhc_result_tangential(const mhc_workspace* ws, mhc_tangential* out);
+/* ---- RCF, damage and wear of the last case's contacts (lib/capi/rcf.cpp) ---------------------- */
+
+/** The RCF indicators, damage and wear of one contact of the last case solved with a workspace
+ *  (docs/methods.md "RCF indicators", "Damage and wear functions", "Subsurface stresses"): the
+ *  same values as the RCF, damage and wear columns of ellipses.csv and patches.csv with the
+ *  functions' published default constants. NaN where not defined (no friction: no creep forces). */
+typedef struct mhc_rcf_contact {
+  size_t struct_size;         /**< set by the caller: sizeof(mhc_rcf_contact) */
+  double N_N;                 /**< normal force of the contact */
+  double traction;            /**< |F|/N from its creep forces (NaN without friction) */
+  double Tgamma_N;            /**< Tγ = Fx ξ + Fy η [N = J/m], forces on the rail */
+  double Tgamma_spin_N;       /**< the spin term Mz φ [N] */
+  double damage_per_axle;     /**< Burstow's Whole Life Rail Model damage per axle passage */
+  double wear_rate_kg_per_m3; /**< USFD wear rate: mass per metre rolled per unit contact area */
+  double wear_kg_per_m;       /**< mass worn per metre rolled */
+  double p0_el_Pa;            /**< elastic Hertz peak pressure of N on the contact's elastic ellipse */
+  double p0_el_over_k;        /**< p0_el / k (NaN without k) */
+  double elastic_limit;       /**< first-yield limit of p0/k at this traction and aspect ratio */
+  double shakedown_limit;     /**< elastic shakedown limit of p0/k */
+  double FI_surf_el;          /**< surface fatigue index f − k/p0_el */
+  int32_t shakedown_regime;   /**< 0 elastic, 1 elastic shakedown, 2 plastic shakedown, 3 ratchetting, -1 unknown */
+  int32_t reserved;
+} mhc_rcf_contact;
+
+/** Contact i (0-based: the loaded ellipses, or the grid patches, in increasing rail y) of the last
+ *  case solved with `ws`, with shear yield k_Pa (NaN: σ_y/√3 of the pair's material, NaN if it has
+ *  none), into *out (out->struct_size must be set). MHC_ERR_ARGUMENT when i is out of range. */
+MHC_API mhc_error mhc_result_rcf(const mhc_workspace* ws, int32_t i, double k_Pa, mhc_rcf_contact* out);
+
+/** The peaks of the elastic stress field below a Hertzian ellipse (semi-axes a_m along x, the
+ *  rolling direction, and b_m; peak pressure p0_Pa) with full-slip traction (fx, fy) p, Poisson's
+ *  ratio nu (docs/methods.md "Subsurface stresses"; about 0.5 s). */
+typedef struct mhc_subsurface {
+  size_t struct_size;          /**< set by the caller: sizeof(mhc_subsurface) */
+  double vm_max_Pa, vm_depth_m;            /**< largest von Mises stress, its depth */
+  double tau_max_Pa, tau_depth_m;          /**< largest principal shear stress, its depth */
+  double tau_orth_amp_Pa, tau_orth_depth_m; /**< orthogonal shear amplitude over a pass, its depth */
+  double tau_eq_amp_Pa, sigma_h_Pa;        /**< equivalent shear amplitude and hydrostatic stress (FI_sub) */
+} mhc_subsurface;
+MHC_API mhc_error mhc_hertz_subsurface(double a_m, double b_m, double p0_Pa, double fx, double fy, double nu,
+                                       mhc_subsurface* out);
 
 #ifdef __cplusplus
 }

@@ -393,17 +393,74 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     std::string why;
     if (!o.valid(&why)) c.fail("/half_space", &h, why);
   }
-  // RCF indicators (docs/outputs.md "RCF columns"): f, and k or the material's yield.
+  // RCF indicators (docs/outputs.md "RCF columns"): f (the contacts' own |F|/N when friction is
+  // given), and k or the material's yield; the damage and wear functions' constants and the
+  // t_Y distribution of the damage (docs/outputs.md "Damage and wear columns").
   if (j.contains("rcf")) {
     const json& h = j.at("rcf");
-    c.only_keys(h, "/rcf", {"traction_coefficient", "shear_yield_MPa"});
-    if (!h.contains("traction_coefficient")) c.fail("/rcf", &h, "needs traction_coefficient (f = T/N)");
-    cf.rcf.f = c.number(h, "/rcf", "traction_coefficient");
-    if (!(cf.rcf.f >= 0 && cf.rcf.f <= 1))
-      c.fail("/rcf/traction_coefficient", &h.at("traction_coefficient"), "must be in [0, 1]");
+    c.only_keys(h, "/rcf", {"traction_coefficient", "shear_yield_MPa", "burstow", "usfd_wear", "tY_distribution", "subsurface"});
+    const bool friction = j.contains("friction");
+    if (friction) {
+      if (h.contains("traction_coefficient"))
+        c.fail("/rcf/traction_coefficient", &h.at("traction_coefficient"),
+               "not an input when friction is given: each contact's traction coefficient is its own |F|/N from the creep forces",
+               "remove rcf.traction_coefficient, or remove friction to use a given f");
+      cf.rcf.actual = true;
+    } else {
+      if (!h.contains("traction_coefficient"))
+        c.fail("/rcf", &h, "needs traction_coefficient (f = T/N) when friction is not given",
+               "add \"traction_coefficient\": 0.3, or give \"friction\" to use each contact's own |F|/N");
+      cf.rcf.f = c.number(h, "/rcf", "traction_coefficient");
+      if (!(cf.rcf.f >= 0 && cf.rcf.f <= 1))
+        c.fail("/rcf/traction_coefficient", &h.at("traction_coefficient"), "must be in [0, 1]");
+    }
     if (h.contains("shear_yield_MPa")) cf.rcf.k = c.positive(h, "/rcf", "shear_yield_MPa") * units::MPa;
     if (!std::isfinite(rcf_shear_yield(cf.material, cf.rcf)))
       c.fail("/rcf", &h, "needs shear_yield_MPa (k = sigma_y/sqrt(3)): the material gives no yield stress");
+    for (const char* key : {"burstow", "usfd_wear"})
+      if (h.contains(key) && !friction)
+        c.fail(std::string("/rcf/") + key, &h.at(key), "needs friction.coefficient: Tgamma comes from the creep forces",
+               "add \"friction\": {\"coefficient\": 0.3}, or remove rcf." + std::string(key));
+    if (h.contains("burstow")) {
+      const json& b = h.at("burstow");
+      c.only_keys(b, "/rcf/burstow", {"Tgamma_threshold_N", "Tgamma_peak_N", "damage_peak", "Tgamma_zero_N"});
+      BurstowOptions& o = cf.rcf.burstow;
+      if (b.contains("Tgamma_threshold_N")) o.Tgamma_threshold_N = c.number(b, "/rcf/burstow", "Tgamma_threshold_N");
+      if (b.contains("Tgamma_peak_N")) o.Tgamma_peak_N = c.number(b, "/rcf/burstow", "Tgamma_peak_N");
+      if (b.contains("damage_peak")) o.damage_peak = c.positive(b, "/rcf/burstow", "damage_peak");
+      if (b.contains("Tgamma_zero_N")) o.Tgamma_zero_N = c.number(b, "/rcf/burstow", "Tgamma_zero_N");
+      const std::string why = o.invalid();
+      if (!why.empty()) c.fail("/rcf/burstow", &b, why, "the published defaults are 15, 65, 175 J/m and 1e-5");
+    }
+    if (h.contains("usfd_wear")) {
+      const json& u = h.at("usfd_wear");
+      c.only_keys(u, "/rcf/usfd_wear", {"K1", "x1_N_per_mm2", "K2", "x2_N_per_mm2", "K3"});
+      UsfdWearOptions& o = cf.rcf.usfd;
+      if (u.contains("K1")) o.K1 = c.number(u, "/rcf/usfd_wear", "K1");
+      if (u.contains("x1_N_per_mm2")) o.x1 = c.number(u, "/rcf/usfd_wear", "x1_N_per_mm2");
+      if (u.contains("K2")) o.K2 = c.number(u, "/rcf/usfd_wear", "K2");
+      if (u.contains("x2_N_per_mm2")) o.x2 = c.number(u, "/rcf/usfd_wear", "x2_N_per_mm2");
+      if (u.contains("K3")) o.K3 = c.number(u, "/rcf/usfd_wear", "K3");
+      const std::string why = o.invalid();
+      if (!why.empty()) c.fail("/rcf/usfd_wear", &u, why, "the published defaults are K1 5.3, x1 10.4, K2 55.0, x2 77.2, K3 61.9");
+    }
+    if (h.contains("subsurface")) {
+      const json& u = h.at("subsurface");
+      c.only_keys(u, "/rcf/subsurface", {"dang_van_c"});
+      cf.rcf.subsurface = true;
+      if (u.contains("dang_van_c")) cf.rcf.dang_van_c = c.number(u, "/rcf/subsurface", "dang_van_c");
+      if (u.contains("dang_van_c") && !(cf.rcf.dang_van_c >= 0 && cf.rcf.dang_van_c <= 1))
+        c.fail("/rcf/subsurface/dang_van_c", &u.at("dang_van_c"), "must be in [0, 1]", "steels: about 0.3");
+    }
+    if (h.contains("tY_distribution")) {
+      const json& d = h.at("tY_distribution");
+      c.only_keys(d, "/rcf/tY_distribution", {"mean_mm", "sd_mm"});
+      if (!d.contains("mean_mm") || !d.contains("sd_mm"))
+        c.fail("/rcf/tY_distribution", &d, "needs mean_mm and sd_mm (a normal distribution of t_Y)",
+               "e.g. \"tY_distribution\": {\"mean_mm\": 0, \"sd_mm\": 2}");
+      cf.rcf.tY_mean = c.number(d, "/rcf/tY_distribution", "mean_mm") * units::mm;
+      cf.rcf.tY_sd = c.positive(d, "/rcf/tY_distribution", "sd_mm") * units::mm;
+    }
   }
   // Tangential problem (docs/tangential.md): friction and the wheelset's motion or the creepages.
   parse_tangential(c, j, cf);
@@ -527,8 +584,22 @@ nlohmann::json CaseFile::resolved_json() const {
                     {"blend", t.fastsim.blend}};
   }
   if (rcf.enabled()) {
-    j["rcf"] = {{"traction_coefficient", rcf.f}};
+    j["rcf"] = json::object();
+    if (!rcf.actual) j["rcf"]["traction_coefficient"] = rcf.f;
     if (std::isfinite(rcf.k)) j["rcf"]["shear_yield_MPa"] = rcf.k / units::MPa;
+    if (rcf.actual) {
+      const BurstowOptions& b = rcf.burstow;
+      j["rcf"]["burstow"] = {{"Tgamma_threshold_N", b.Tgamma_threshold_N}, {"Tgamma_peak_N", b.Tgamma_peak_N},
+                             {"damage_peak", b.damage_peak}, {"Tgamma_zero_N", b.Tgamma_zero_N}};
+      const UsfdWearOptions& u = rcf.usfd;
+      j["rcf"]["usfd_wear"] = {{"K1", u.K1}, {"x1_N_per_mm2", u.x1}, {"K2", u.K2}, {"x2_N_per_mm2", u.x2}, {"K3", u.K3}};
+    }
+    if (rcf.subsurface) {
+      j["rcf"]["subsurface"] = json::object();
+      if (std::isfinite(rcf.dang_van_c)) j["rcf"]["subsurface"]["dang_van_c"] = rcf.dang_van_c;
+    }
+    if (std::isfinite(rcf.tY_sd))
+      j["rcf"]["tY_distribution"] = {{"mean_mm", rcf.tY_mean * units::per_mm}, {"sd_mm", rcf.tY_sd * units::per_mm}};
   }
   if (method == Method::HalfSpace)
     j["half_space"] = {{"dx_mm", half_space.dx * units::per_mm}, {"ds_mm", half_space.ds * units::per_mm},

@@ -12,7 +12,7 @@
 #include "profile/profile.hpp"
 #include "profile/read.hpp"
 #include "contact/options.hpp"
-#include "contact/ellipse/rcf.hpp"
+#include "contact/rcf/shakedown.hpp"
 
 namespace mh {
 

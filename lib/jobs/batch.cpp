@@ -67,9 +67,9 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     if (writes_patches(M)) fpa = std::make_unique<OutputFile>(rd.path("patches.csv"));
     fpp = std::make_unique<OutputFile>(rd.path("pairs.csv"));
     fc->stream() << "pair," << cases_csv_header(shared.tangential.enabled(), shared.rcf.enabled());
-    if (fe) fe->stream() << "pair," << ellipses_csv_header(plastic, shared.rcf.enabled(), shared.tangential.enabled());
+    if (fe) fe->stream() << "pair," << ellipses_csv_header(plastic, shared.rcf.enabled(), shared.tangential.enabled(), shared.rcf.subsurface);
     if (fg) fg->stream() << "pair," << geometry_csv_header();
-    if (fpa) fpa->stream() << "pair," << patches_csv_header(plastic, shared.rcf.enabled(), shared.tangential.enabled());
+    if (fpa) fpa->stream() << "pair," << patches_csv_header(plastic, shared.rcf.enabled(), shared.tangential.enabled(), shared.rcf.subsurface);
     fpp->stream() << "pair,name,wheel,rail,status,n_ellipses,wheel_sha256,rail_sha256,message\n";
   }
   if (np) {

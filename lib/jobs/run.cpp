@@ -224,13 +224,13 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
       fc->stream() << cases_csv_header(cf.tangential.enabled(), cf.rcf.enabled());
       if (writes_ellipses(M)) {
         fe = std::make_unique<OutputFile>(rd->path("ellipses.csv"));
-        fe->stream() << ellipses_csv_header(plastic, cf.rcf.enabled(), cf.tangential.enabled());
+        fe->stream() << ellipses_csv_header(plastic, cf.rcf.enabled(), cf.tangential.enabled(), cf.rcf.subsurface);
         fg = std::make_unique<OutputFile>(rd->path("geometry.csv"));
         fg->stream() << geometry_csv_header();
       }
       if (writes_patches(M)) {
         fpa = std::make_unique<OutputFile>(rd->path("patches.csv"));
-        fpa->stream() << patches_csv_header(plastic, cf.rcf.enabled(), cf.tangential.enabled());
+        fpa->stream() << patches_csv_header(plastic, cf.rcf.enabled(), cf.tangential.enabled(), cf.rcf.subsurface);
       }
     }
     if (want_json) fj = std::make_unique<OutputFile>(rd->path("results.json"));

@@ -341,8 +341,9 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   // The band's solves keep nothing but the case summary (pmax, area).
   MethodOptions mo_band = cf.method_options();
   const bool with_band = band.half && band.twice;
-  RcfOptions rcf = cf.rcf;  // the RCF columns, k resolved (contact/ellipse/rcf.hpp)
+  RcfOptions rcf = cf.rcf;  // the RCF columns, k resolved (contact/rcf/shakedown.hpp)
   if (rcf.enabled()) rcf.k = rcf_shear_yield(cf.material, cf.rcf);
+  rcf.nu = cf.material.nur();  // the subsurface stresses are the rail's
   const bool tang = cf.tangential.enabled();  // the tangential columns (docs/tangential.md)
   const std::uint64_t n = end - first;
   if (n == 0) return;

@@ -48,7 +48,7 @@ void format_strips(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, 
 std::string strips_csv_header();
 
 /// The column names of the tables (docs/outputs.md).
-std::string patches_csv_header(bool plastic, bool rcf = false, bool tangential = false);
+std::string patches_csv_header(bool plastic, bool rcf = false, bool tangential = false, bool subsurface = false);
 /// Which per-contact tables a method writes: ellipses.csv (multi-Hertzian, and "auto" for the cases
 /// it keeps), patches.csv (grid methods, and "auto" for the cases it hands to the strip method).
 bool writes_ellipses(Method m);
@@ -57,7 +57,7 @@ bool writes_patches(Method m);
 std::string pressure_table_header(Method m, bool plastic);
 std::string patch_pressure_csv_header();
 std::string cases_csv_header(bool tangential = false, bool rcf = false);
-std::string ellipses_csv_header(bool plastic, bool rcf = false, bool tangential = false);
+std::string ellipses_csv_header(bool plastic, bool rcf = false, bool tangential = false, bool subsurface = false);
 
 /// geometry.csv: what ellipses.csv would repeat for every Q, once per (t_Y,
 /// potential ellipse). Its header, and the rows of the candidates `cands` at the case t_Y `tY_mm`

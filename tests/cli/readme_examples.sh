@@ -92,6 +92,14 @@ grep -q '^y_mm,' out/en15302/wheelset.csv && test -s out/en15302/conicity.csv
 ./build/mhcontact hertz --R-wyy 460 --R-rxx 300 --N 150 --E 210 --nu 0.3 --yield 500
 ./build/mhcontact hertz --R-wyy 460 --R-rxx 300 --N 150 --E 210 --nu 0.3 --yield 800
 
+# --- docs/methods.md, "Damage and wear functions": the worked example -----------------------------
+./build/mhcontact run cases/manchester-rcf.json -o out/manchester-rcf
+grep -q '^case,tY_mm,Q_kN,ellipse' out/manchester-rcf/ellipses.csv
+if have_mpl /usr/bin/python3; then
+  /usr/bin/python3 scripts/plot_rcf.py out/manchester-rcf -o out/rcf.png
+  test -s out/rcf.png
+fi
+
 # --- docs/methods.md, "Half-space", "Strips", "Comparing the methods" --------------------------
 ./build/mhcontact run cases/manchester-halfspace.json -o out/manchester-halfspace
 test "$(wc -l < out/manchester-halfspace/patches.csv)" -eq 18
@@ -111,7 +119,7 @@ fi
 
 # --- docs/tangential.md, "Worked example": creep forces of a yawed wheelset -------------------
 ./build/mhcontact run cases/manchester-tangential.json -o out/tangential
-grep -q ',Fx_kN,Fy_creep_kN,Mz_Nm,F_over_muN,Y_kN,Fz_creep_kN$' <(head -1 out/tangential/cases.csv)
+grep -q ',Fx_kN,Fy_creep_kN,Mz_Nm,F_over_muN,Y_kN,Fz_creep_kN,D_burstow_per_axle,wear_ug_per_m$' <(head -1 out/tangential/cases.csv)
 
 # --- docs/wheelset-dynamics.md, "Running it" (built only when SUNDIALS is found) ---------------
 dyn=$(dirname "$bin")/examples/wheelset_dynamics/wheelset_dynamics

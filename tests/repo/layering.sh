@@ -10,7 +10,8 @@
 #   < judge (judge/judge.*: the one rule that decides a solved case's status)
 #   < tangential_solve (tangential/tangential_solve.*: the tangential problem of a solved case)
 #   < multi_hertz < grid (what the grid methods share) < half_space | strips (siblings: neither
-#   includes the other) < solve (dispatch and auto).
+#   includes the other) < solve (dispatch and auto) | rcf (rcf/*: RCF indicators, damage and wear,
+#   subsurface stresses; after the strips for the library's one Gauss–Legendre rule).
 # After contact comes wheelset_contact (the wheelset call: both pairs of a wheelset per step,
 # lib/wheelset_contact/), before input.
 # Last comes capi (the C interface and the Python module's core, include/mhcontact.h): it may use
@@ -21,8 +22,8 @@
 set -uo pipefail
 src=$1
 layers=(core profile geometry contact wheelset_contact input output jobs capi)
-rooms=(tangential options judge_status ellipse case_result judge tangential_solve multi_hertz grid half_space strips solve)
-room_rank=(0 1 2 3 4 5 6 7 8 9 9 10)
+rooms=(tangential options judge_status ellipse case_result judge tangential_solve multi_hertz grid half_space strips solve rcf)
+room_rank=(0 1 2 3 4 5 6 7 8 9 9 10 10)
 rank() { local i; for i in "${!layers[@]}"; do [ "${layers[$i]}" = "$1" ] && { echo "$i"; return; }; done; echo -1; }
 room() {  # the room of lib/contact/<rest> given <rest>: its folder, or the file's stem at the top
   case "$1" in judge/status.*) echo judge_status ;; tangential/tangential_solve.*) echo tangential_solve ;; */*) echo "${1%%/*}" ;; *) local b=${1%.*}; echo "$b" ;; esac

@@ -1,6 +1,6 @@
 #pragma once
 // The elastic Hertz ellipse of each grid patch's load, for the indicators defined with the
-// elastic Hertzian pressure of the load (rcf.hpp; docs/outputs.md "RCF columns"): a patch's normal
+// elastic Hertzian pressure of the load (contact/rcf/shakedown.hpp; docs/outputs.md "RCF columns"): a patch's normal
 // force N on the curvatures A, B (eq. 1) of the elastic multi-Hertzian ellipse whose contact point
 // lies inside the patch, by the project's Hertz solution (hertz.hpp: a = m C, b = n C, eqs. 2–4).
 // It does not depend on the law or the grid (a capped patch's area is the plastic one).

@@ -1,0 +1,144 @@
+#pragma once
+// Rolling-contact-fatigue indicators of one contact (docs/methods.md "RCF
+// indicators"): the point on Johnson's shakedown map and the surface fatigue index of Ekberg,
+// Kabo and Andersson (2002). Both are defined with the ELASTIC Hertzian peak pressure p0 of the
+// contact's normal load (Johnson 1985 §9.3; Ekberg et al. 2002 eq. 2), never with a plastic
+// patch's pressure or area: the callers pass the elastic Hertz semi-axes at the load N (the
+// ellipse law's a_el, b_el; for a grid patch, docs/outputs.md "RCF columns"). SI throughout.
+// Header-only, no state.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "contact/options.hpp"
+#include "contact/rcf/damage.hpp"
+
+namespace mh {
+
+/// RCF input (case file "rcf"): traction coefficient f = T/N [-] and shear yield k [Pa]
+/// (NaN: from the material's yield stress, k = σ_y/√3). With friction given (the tangential
+/// problem solved) f is not an input: each contact's actual traction coefficient |F|/N is used
+/// (`actual`). The damage and wear functions' constants (damage.hpp) apply to the Tγ columns
+/// written with friction, with or without the shakedown columns.
+struct RcfOptions {
+  double f = NAN;
+  double k = NAN;
+  bool actual = false;      ///< f per contact from its creep forces, |F|/N (friction given)
+  BurstowOptions burstow;   ///< "rcf": {"burstow": {...}}
+  UsfdWearOptions usfd;     ///< "rcf": {"usfd_wear": {...}}
+  /// [m] "rcf": {"tY_distribution": {"mean_mm", "sd_mm"}}: a normal distribution of the lateral
+  /// displacement t_Y weighting the damage over a sweep (scripts/plot_rcf.py); NaN: not given.
+  double tY_mean = NAN, tY_sd = NAN;
+  /// "rcf": {"subsurface": {...}}: the stresses below each contact's elastic Hertz ellipse with
+  /// full-slip traction f (subsurface.hpp; about 0.5 s per contact), in the rail (Poisson's ratio
+  /// nu, the rail's); dang_van_c [-] the Dang Van parameter of FI_sub (NaN: no FI_sub column value).
+  bool subsurface = false;
+  double nu = 0.28;
+  double dang_van_c = NAN;
+  bool enabled() const { return std::isfinite(f) || actual; }
+  /// [-] The traction coefficient of a contact carrying N [N] with tangential force (Fx, Fy) [N]:
+  /// the user's f, or with `actual` |F|/N (NaN when the contact's tangential problem is unsolved).
+  double traction(double N, double Fx, double Fy, bool solved) const {
+    if (!actual) return f;
+    return solved && N > 0 ? std::hypot(Fx, Fy) / N : NAN;
+  }
+};
+
+/// [Pa] The tensile yield stress σ_y the indicators use: the softer body's (Material::yield_min),
+/// NaN when the case gives none.
+inline double material_yield(const Material& mat) { return mat.yield_min(); }
+
+/// [Pa] k: the user's shear yield if given, else σ_y/√3 (von Mises) from material_yield();
+/// NaN when neither is known.
+inline double rcf_shear_yield(const Material& mat, const RcfOptions& o) {
+  if (std::isfinite(o.k)) return o.k;
+  return material_yield(mat) / std::sqrt(3.0);
+}
+
+/// Region of Johnson's shakedown map (docs/methods.md "RCF indicators").
+enum class ShakedownRegime { Elastic, ElasticShakedown, PlasticShakedown, Ratchetting };
+inline const char* to_string(ShakedownRegime r) {
+  switch (r) {
+    case ShakedownRegime::Elastic: return "elastic";
+    case ShakedownRegime::ElasticShakedown: return "elastic_shakedown";
+    case ShakedownRegime::PlasticShakedown: return "plastic_shakedown";
+    case ShakedownRegime::Ratchetting: return "ratchetting";
+  }
+  return "?";
+}
+
+/// The RCF indicators of one contact.
+struct RcfPoint {
+  double p0_el = NAN;           ///< [Pa] elastic Hertz peak pressure of the load, 3N/(2π a_el b_el)
+  double p0_el_over_k = NAN;    ///< [-] p0_el/k
+  double elastic_limit = NAN;   ///< [-] p0/k of first yield at this f and aspect ratio
+  double shakedown_limit = NAN; ///< [-] p0/k of the elastic shakedown limit at this f and aspect ratio
+  double fi_surf_el = NAN;      ///< [-] FI_surf = f − 2π a_el b_el k / (3N) = f − k/p0_el
+  ShakedownRegime regime = ShakedownRegime::Elastic;
+};
+
+/// [-] The largest von Mises stress below a frictionless Hertz contact, over p0, at Poisson's
+/// ratio ν, from the closed forms: the circular contact on its axis (Johnson, Contact Mechanics,
+/// 1985, §3.4, eq. 3.45: σ_z = −p0/(1 + t²), σ_r = σ_θ = p0[−(1 + ν)(1 − t atan(1/t)) + ½/(1 + t²)],
+/// t = z/a; von Mises |σ_r − σ_z|) and the line contact on its plane of symmetry (Johnson §7.1,
+/// McEwen 1949: σ_x = −p0[(1 + 2t²)/√(1 + t²) − 2t], σ_z = −p0/√(1 + t²), σ_y = ν(σ_x + σ_z),
+/// plane strain). Maximised in t by golden-section search (the functions are unimodal). At ν = 0.3:
+/// 0.6200 at 0.481 a (circle) and 0.5575 at 0.704 b (line).
+inline double frictionless_vm_peak(bool line, double nu) {
+  auto vm = [&](double t) {
+    if (line) {
+      const double r = std::sqrt(1 + t * t);
+      const double sx = -((1 + 2 * t * t) / r - 2 * t), sz = -1 / r, sy = nu * (sx + sz);
+      return std::sqrt(0.5 * ((sx - sy) * (sx - sy) + (sy - sz) * (sy - sz) + (sz - sx) * (sz - sx)));
+    }
+    const double s = 1 / (1 + t * t), sr = -(1 + nu) * (1 - t * std::atan(1 / t)) + 0.5 * s;
+    return std::fabs(sr + s);
+  };
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  double a = 0.05, b = 2.0, c = b - g * (b - a), d = a + g * (b - a), fc = vm(c), fd = vm(d);
+  while (b - a > 1e-9) {
+    if (fc >= fd) b = d, d = c, fd = fc, c = b - g * (b - a), fc = vm(c);
+    else a = c, c = d, fc = fd, d = a + g * (b - a), fd = vm(d);
+  }
+  return std::max(fc, fd);
+}
+
+/// Frictionless limits of p0/k for the aspect ratio e = min(a,b)/max(a,b), linear in e between
+/// line contact (e = 0) and circular contact (e = 1) [project interpolation]:
+///   first yield (von Mises, k = σ_y/√3): √3 / frictionless_vm_peak at the material's ν: 3.107
+///   (line) and 2.793 (circle) at ν = 0.3 (Johnson's rounded "p0 = 1.60 Y" for the circle is 2.77);
+///   elastic shakedown (Johnson 1985 §9.3, line contact, elastic–perfectly plastic; Ponter, Hearle &
+///   Johnson 1985, point contact): 4.0 (line), 4.7 (circle), not re-derived here.
+inline double frictionless_elastic_limit(double e, double nu = 0.3) {
+  const double line = std::sqrt(3.0) / frictionless_vm_peak(true, nu);
+  const double circle = std::sqrt(3.0) / frictionless_vm_peak(false, nu);
+  return line + (circle - line) * e;
+}
+inline double frictionless_shakedown_limit(double e) { return 4.0 + (4.7 - 4.0) * e; }
+
+/// The point of a contact carrying N [N] whose ELASTIC Hertz patch at that load has semi-axes
+/// a_el, b_el [m] (its aspect ratio sets the limits), with traction coefficient f, shear
+/// yield k [Pa] and Poisson's ratio ν (of the first-yield limit). Each limit is the frictionless
+/// (subsurface) value capped by the surface limit p0/k = 1/f (f p0 = k). Regime: below the first
+/// yield limit, elastic; below the shakedown limit, elastic shakedown; above it, ratchetting
+/// when the surface limit is exceeded (f p0/k > 1, FI_surf > 0), else plastic shakedown
+/// (subsurface cyclic plasticity). NaN inputs give NaN values.
+inline RcfPoint rcf_point(double f, double k, double N, double a_el, double b_el, double nu = 0.3) {
+  constexpr double pi = 3.14159265358979323846;
+  RcfPoint r;
+  if (!(N > 0 && a_el > 0 && b_el > 0 && k > 0 && f >= 0)) return r;
+  r.p0_el = 1.5 * N / (pi * a_el * b_el);
+  const double e = std::min(a_el, b_el) / std::max(a_el, b_el);
+  const double surface = f > 0 ? 1.0 / f : INFINITY;
+  r.p0_el_over_k = r.p0_el / k;
+  r.elastic_limit = std::min(frictionless_elastic_limit(e, nu), surface);
+  r.shakedown_limit = std::min(frictionless_shakedown_limit(e), surface);
+  r.fi_surf_el = f - 2.0 * pi * a_el * b_el * k / (3.0 * N);
+  if (r.p0_el_over_k <= r.elastic_limit) r.regime = ShakedownRegime::Elastic;
+  else if (r.p0_el_over_k <= r.shakedown_limit) r.regime = ShakedownRegime::ElasticShakedown;
+  else if (r.fi_surf_el > 0) r.regime = ShakedownRegime::Ratchetting;
+  else r.regime = ShakedownRegime::PlasticShakedown;
+  return r;
+}
+
+}  // namespace mh
