@@ -17,7 +17,9 @@ import numpy as _np
 from ._core import (InputError, METHOD_NAMES, STATUS_NAMES, UnsupportedError, Pair, Profile,
                     __version__, abi_version, fft_backend)
 
-__all__ = ["Pair", "Profile", "InputError", "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES",
+from .fleet import fleet, read_tables
+
+__all__ = ["fleet", "read_tables", "Pair", "Profile", "InputError", "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES",
            "CASE_COLUMNS", "__version__", "abi_version", "fft_backend"]
 
 #: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp), then the
