@@ -18,6 +18,8 @@
 #include "core/units.hpp"
 
 namespace py = pybind11;
+
+void bind_fleet(py::module_& m, py::object input_error);  // python/mhcontact_fleet.cpp
 using mh::units::deg;
 
 /// The Wheelset class (python/wheelset_module.cpp).
@@ -284,6 +286,7 @@ PYBIND11_MODULE(_core, m) {
       PyErr_NewException("mhcontact.UnsupportedError", PyExc_NotImplementedError, nullptr));
   m.attr("InputError") = g_input_error;
   m.attr("UnsupportedError") = g_unsupported_error;
+  bind_fleet(m, g_input_error);
   m.attr("__version__") = mhc_version();
   m.attr("abi_version") = mhc_abi_version();
   m.attr("fft_backend") = mhc_fft_backend();

@@ -7,6 +7,7 @@
 #include "core/errors.hpp"
 #include "input/manifest.hpp"
 #include "jobs/batch.hpp"
+#include "jobs/resume.hpp"
 #include "jobs/run.hpp"
 #include "jobs/shards.hpp"
 
@@ -36,7 +37,7 @@ void add_geometry_command(CLI::App& app, CliContext& ctx) {
 }
 
 void add_run_command(CLI::App& app, CliContext& ctx) {
-  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false, strips = false, fail_on_warning = false; std::string shard, fail_on, digits = "10", pressure_cases; };
+  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false, strips = false, fail_on_warning = false, resume = false; std::string shard, fail_on, digits = "10", pressure_cases; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Solve every case of the case file's sweep (or of a batch manifest over many profile pairs) (writes DIR/cases.csv, DIR/ellipses.csv, DIR/geometry.csv, "
@@ -65,6 +66,9 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
       ->type_name("CLASSES");
   cmd->add_flag("--force", o->force, "Write pressure.csv even when it would be larger than the limit of 10 GB");
   cmd->add_option("--shard", o->shard, "K/N: run only the K-th of N deterministic slices of the case list (join them with `mhcontact merge`)");
+  cmd->add_flag("--resume", o->resume,
+                "Batch manifest: run pair by pair into DIR.parts/ and merge into DIR; after an interruption the same "
+                "command skips the pairs already complete (docs/cluster.md)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or summary on standard error");
   cmd->callback([o, fail_on, &ctx] {
     RunOptions ro;
@@ -84,7 +88,11 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
     ro.digits = parse_digits(o->digits);
     ro.progress = (&ctx.err == &std::cerr) && ::isatty(2);
     if (is_manifest(j)) {
-      ctx.exit_code = batch_job(parse_manifest(j, o->case_file), ro, ctx.out, ctx.err);
+      const Manifest m = parse_manifest(j, o->case_file);
+      ctx.exit_code = o->resume ? resumable_batch_job(m, ro, ctx.out, ctx.err) : batch_job(m, ro, ctx.out, ctx.err);
+    } else if (o->resume) {
+      throw InputError("--resume", o->case_file, "is for batch manifests (a fleet of pairs)",
+                       "split a case file's sweep with --shard K/N and re-run the missing shards");
     } else {
       ctx.exit_code = run_job(parse_case_json(j, o->case_file, true), ro, ctx.out, ctx.err);
     }

@@ -177,7 +177,12 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
       pw->end_array();
       pw->end();
     }
-    if (opt.progress && !opt.quiet) err << "\rmhcontact run: pair " << (k + 1 - first) << "/" << (end - first) << std::flush;
+    if (opt.progress && !opt.quiet) {
+      const std::uint64_t n_per = shared.case_count();
+      err << "\r" << progress_line((k + 1 - first) * n_per, (end - first) * n_per,
+                                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count())
+          << std::flush;
+    }
   }
   const std::uint64_t failed = counts.failed;  // cases not ok, invalid pairs' cases included
   const nlohmann::json summary = {{"pairs", end - first}, {"invalid_pairs", invalid}, {"cases", cases_total},

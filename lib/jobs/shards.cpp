@@ -99,6 +99,25 @@ std::uint64_t uint_field(const nlohmann::json& m, const char* key, const std::st
   return it->get<std::uint64_t>();
 }
 
+// A run names its profile files relative to its output directory (inputs_json); a shard's are
+// relative to the shard's directory. Rewrite them relative to the merged directory, as the
+// single run writes them: `inputs` is an "inputs" object (wheel/rail → profile → file).
+template <class Json>
+void rebase_profile_files(Json& inputs, const fs::path& shard_dir, const fs::path& out_dir) {
+  if (!inputs.is_object()) return;
+  for (const char* side : {"wheel", "rail"}) {
+    if (!inputs.contains(side) || !inputs[side].is_object() || !inputs[side].contains("profile")) continue;
+    Json& p = inputs[side]["profile"];
+    if (!p.is_object() || !p.contains("file") || !p["file"].is_string()) continue;
+    const fs::path file = p["file"].template get<std::string>();
+    if (file.is_absolute()) continue;  // written absolute when no relative path existed
+    std::error_code ec;
+    const fs::path abs = fs::absolute(shard_dir, ec) / file;
+    const fs::path rel = fs::relative(abs, fs::absolute(out_dir, ec), ec);
+    p["file"] = (ec || rel.empty()) ? abs.lexically_normal().string() : rel.string();
+  }
+}
+
 }  // namespace
 
 int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, std::ostream& err, bool quiet) {
@@ -241,7 +260,21 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
         throw InputError(files[i].second, "", "two shards hold " + files[i].first + " (shards of different runs?)");
     for (const auto& [name, src] : files) {
       OutputFile f(rd.path(name));
-      f.stream() << read_all(src);
+      const bool geometry_json = fs::path(name).filename() == "geometry.json";
+      if (!geometry_json) {
+        f.stream() << read_all(src);
+      } else {
+        // Written by write_pair_geometry as nlohmann::json::dump(2): parsed, its inputs rebased
+        // and dumped again, it is byte for byte what the single run writes.
+        nlohmann::json g;
+        try {
+          g = nlohmann::json::parse(read_all(src));
+        } catch (const nlohmann::json::exception& e) {
+          throw InputError(src, "", std::string("not a geometry.json of mhcontact run: ") + e.what());
+        }
+        if (g.is_object() && g.contains("inputs")) rebase_profile_files(g["inputs"], fs::path(src).parent_path().parent_path().parent_path(), out_dir);
+        f.stream() << g.dump(2) << "\n";
+      }
       f.commit();
     }
   }
@@ -292,6 +325,12 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
         w = std::make_unique<JsonObjectStream>(f.stream());
         for (auto it = t.begin(); it != t.end(); ++it) {
           if (it.key() == key || it.key() == "summary") continue;
+          if (it.key() == "inputs") {
+            nlohmann::ordered_json in = it.value();
+            rebase_profile_files(in, shards[k].dir, out_dir);
+            w->member("inputs", in);
+            continue;
+          }
           if (it.key() == "geometry" && has_geometry) {
             // Streamed as run_job writes it: one record a line.
             w->begin_array("geometry");
@@ -314,6 +353,12 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
             pw.begin_array("geometry");
             for (const auto& g : it.value()) pw.element_json(g);
             pw.end_array();
+            continue;
+          }
+          if (it.key() == "inputs") {
+            nlohmann::ordered_json in = it.value();
+            rebase_profile_files(in, shards[k].dir, out_dir);
+            pw.member("inputs", in);
             continue;
           }
           pw.member(it.key(), it.value());

@@ -17,8 +17,11 @@ import numpy as _np
 from ._core import (INTERFACE_VERSION, InputError, METHOD_NAMES, STATUS_NAMES, UnsupportedError, Pair, Profile,
                     Table, Wheelset, __version__, abi_version, fft_backend)
 
-__all__ = ["Pair", "Profile", "Table", "Wheelset", "InputError", "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES",
-           "CASE_COLUMNS", "TANGENTIAL_COLUMNS", "INTERFACE_VERSION", "__version__", "abi_version", "fft_backend"]
+from .fleet import fleet, read_tables
+
+__all__ = ["fleet", "read_tables", "Pair", "Profile", "Table", "Wheelset", "InputError", "UnsupportedError",
+           "STATUS_NAMES", "METHOD_NAMES", "CASE_COLUMNS", "TANGENTIAL_COLUMNS", "INTERFACE_VERSION", "__version__",
+           "abi_version", "fft_backend"]
 
 #: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp), then the
 #: vertical contact stiffness dFz/d(dz) (not in cases.csv).

@@ -7,9 +7,9 @@ bin=$1; src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 sed -e 's|"sweep": .*|"sweep": {"tY_mm": {"from": -6, "to": 10, "step": 0.002}, "Q_kN": {"from": 10, "to": 150, "step": 1}}|' \
     -e "s|\"\\.\\./profiles/|\"$src/profiles/|g" "$src/cases/manchester.json" > "$tmp/big.json"
-python3 - "$bin" "$tmp" <<'PY'
-import os, pty, re, select, signal, sys, time
-bin, tmp = sys.argv[1], sys.argv[2]
+python3 - "$bin" "$tmp" "$src" <<'PY'
+import os, pty, re, select, signal, subprocess, sys, time
+bin, tmp, src = sys.argv[1], sys.argv[2], sys.argv[3]
 
 def run(args, interrupt_after=None):
     pid, fd = pty.fork()
@@ -50,5 +50,19 @@ assert len(kept) == 1 and "was left as it was (the previous complete run)" in ke
 out, status = run(["run", tmp + "/big.json", "-o", tmp + "/new", "--format", "csv", "--threads", "1"], interrupt_after=0.5)
 assert "mhcontact: interrupted: nothing was kept" in out, out
 assert not os.path.exists(tmp + "/new")
+# A fleet (batch manifest), plain and --resume: the same line in cases; none with -q or when
+# standard error is not a terminal.
+fleet = os.path.join(src, "cases", "fleet.json")
+for extra in ([], ["--resume"]):
+    out, status = run(["run", fleet, "-o", tmp + "/fleet" + "".join(extra), "--threads", "1"] + extra)
+    assert os.WEXITSTATUS(status) in (0, 1), (status, out)
+    lines = [l for l in re.split(r"[\r\n]", out) if l.startswith("mhcontact run: ") and "cases/s" in l]
+    assert lines, out
+    assert re.search(r"\d+/396 cases \(\d+ %\), \d+ cases/s, (\d+ s|\d+ min \d+ s|\?) left", lines[0]), lines[0]
+    assert "396/396 cases (100 %)" in lines[-1], lines[-1]
+    out, status = run(["run", fleet, "-o", tmp + "/fleetq" + "".join(extra), "-q"] + extra)
+    assert "cases/s" not in out, out
+    p = subprocess.run([bin, "run", fleet, "-o", tmp + "/fleetp" + "".join(extra)] + extra, stderr=subprocess.PIPE, text=True)
+    assert "cases/s" not in p.stderr and p.stderr, p.stderr
 print("progress_tty: OK")
 PY

@@ -156,6 +156,11 @@ if command -v parallel >/dev/null && parallel --version 2>/dev/null | grep -q "G
   cmp out/par/cases.csv out/manchester/cases.csv
 fi
 
+# --- docs/cluster.md, "A resumable fleet" (the Slurm lines are run by tests/cluster/slurm.sh on a
+# private Slurm, the Dask example by python/tests/test_fleet_dask.py) --------------------------------
+./build/mhcontact run cases/fleet.json -o out/fleet-resumable --resume
+cmp out/fleet-resumable/cases.csv out/fleet/cases.csv
+
 # --- docs/plots.md --------------------------------------------------------------------------
 if have_mpl /usr/bin/python3; then
   /usr/bin/python3 scripts/plot_geometry.py out/geo --tY 5
@@ -206,8 +211,9 @@ PY
 # half-space solves of 33 cases, several times that under the sanitizers; run it by hand when
 # that table is updated), and the field trust table of docs/trust.md (every method on 164 cases and
 # a 0.1 mm half-space reference: minutes of CPU; tests/cli/trust_selftest.sh and trust_subset.sh
-# run the same script on a few cases).
-exempt='^(bash scripts/test\.sh|sbatch |bash scripts/fuzz\.sh |valgrind |/usr/bin/python3 scripts/compare_methods\.py cases/manchester-plastic\.json |python3 scripts/trust_table\.py )'
+# run the same script on a few cases), and the pip installation of docs/python.md (a fresh virtual
+# environment and a build of the module: tests/repo/pip_install.sh runs it).
+exempt='^(bash scripts/test\.sh|sbatch |python3 -m venv --system-site-packages |venv/bin/pip |venv/bin/python |bash scripts/fuzz\.sh |valgrind |/usr/bin/python3 scripts/compare_methods\.py cases/manchester-plastic\.json |python3 scripts/trust_table\.py )'
 commands() {  # the command lines of the ```sh blocks of file $1
   awk '/^```sh/ { b = 1; next } /^```/ { b = 0 } b' "$1" | join_lines
 }

@@ -1,0 +1,90 @@
+// The fleet entry of the Python module (mhcontact.fleet, python/mhcontact/fleet.py): one shard of
+// `mhcontact run` and `mhcontact merge`, called in-process through lib/jobs (the same code as
+// the command, so the same tables), with the GIL released while they run. No signal handlers are
+// installed (unlike the command): a Dask worker keeps its own.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <exception>
+#include <sstream>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/errors.hpp"
+#include "input/case_file.hpp"
+#include "input/manifest.hpp"
+#include "jobs/batch.hpp"
+#include "jobs/run.hpp"
+#include "jobs/shards.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+// Runs f() without the GIL and returns its result; an InputError becomes `input_error`
+// (mhcontact.InputError) with the command's message, any other failure a RuntimeError.
+template <class F>
+auto guarded(const py::object& input_error, F&& f) -> decltype(f()) {
+  decltype(f()) result{};
+  std::string input_msg, other_msg;
+  {
+    py::gil_scoped_release release;
+    try {
+      result = f();
+    } catch (const mh::InputError& e) {
+      input_msg = e.what();
+    } catch (const std::exception& e) {
+      other_msg = e.what();
+    }
+  }
+  if (!input_msg.empty()) {
+    PyErr_SetString(input_error.ptr(), input_msg.c_str());
+    throw py::error_already_set();
+  }
+  if (!other_msg.empty()) throw std::runtime_error(other_msg);
+  return result;
+}
+
+// A job's (exit code, what it wrote on its error stream).
+template <class F>
+py::tuple call_job(const py::object& input_error, F&& f) {
+  std::ostringstream err;
+  const int rc = guarded(input_error, [&] { return f(err); });
+  return py::make_tuple(rc, err.str());
+}
+
+}  // namespace
+
+void bind_fleet(py::module_& m, py::object input_error) {
+  m.def("_fleet_units", [input_error](const std::string& path) {
+        const auto units = guarded(input_error, [&] {
+          const nlohmann::json j = mh::read_json_file(path);
+          if (mh::is_manifest(j)) return std::pair<std::string, std::uint64_t>("pair", mh::parse_manifest(j, path).pairs.size());
+          return std::pair<std::string, std::uint64_t>("case", mh::parse_case_json(j, path, true).case_count());
+        });
+        return py::make_tuple(units.first, units.second);
+      }, py::arg("path"),
+      "(unit, count): a manifest's pairs (\"pair\") or a case file's cases (\"case\"), the units a shard slices.");
+  m.def("_run_shard", [input_error](const std::string& path, const std::string& out_dir, unsigned k, unsigned n,
+                                    unsigned threads, int digits) {
+        return call_job(input_error, [&](std::ostream& err) {
+          mh::RunOptions ro;
+          ro.out_dir = out_dir;
+          ro.shard_index = k;
+          ro.shard_count = n;
+          ro.threads = threads;
+          ro.digits = digits;
+          ro.quiet = true;
+          std::ostringstream out;
+          const nlohmann::json j = mh::read_json_file(path);
+          if (mh::is_manifest(j)) return mh::batch_job(mh::parse_manifest(j, path), ro, out, err);
+          return mh::run_job(mh::parse_case_json(j, path, true), ro, out, err);
+        });
+      }, py::arg("path"), py::arg("out_dir"), py::arg("k"), py::arg("n"), py::arg("threads"), py::arg("digits"),
+      "`mhcontact run PATH -o OUT_DIR --shard K/N --threads T --digits D -q`: (exit code, standard error).");
+  m.def("_merge", [input_error](const std::vector<std::string>& dirs, const std::string& out_dir) {
+        return call_job(input_error, [&](std::ostream& err) { return mh::merge_job(dirs, out_dir, err, true); });
+      }, py::arg("dirs"), py::arg("out_dir"), "`mhcontact merge DIRS -o OUT_DIR -q`: (exit code, standard error).");
+}

@@ -1,0 +1,77 @@
+"""mhcontact.fleet on a Dask LocalCluster (127.0.0.1, two worker processes): the merged output
+directory is byte for byte the command's, and the returned tables are its CSV tables
+(docs/cluster.md, the Dask route)."""
+import filecmp
+import os
+import subprocess
+
+import numpy as np
+import pytest
+from dask.distributed import Client, LocalCluster
+
+import mhcontact
+
+SRC = os.environ.get("MHCONTACT_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+BINARY = os.environ.get("MHCONTACT_BINARY", "mhcontact")
+FLEET = os.path.join(SRC, "cases", "fleet.json")
+SWEEP = os.path.join(SRC, "cases", "manchester.json")
+
+
+@pytest.fixture(scope="module")
+def client():
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                      dashboard_address=None) as cluster, Client(cluster) as c:
+        yield c
+
+
+def command_run(path, out):
+    rc = subprocess.run([BINARY, "run", path, "-o", out, "-q"]).returncode
+    assert rc in (0, 1), rc
+    return rc
+
+
+def same_files(a, b):
+    """Every file of run a (as listed by its run.json's tree) is in b with the same bytes."""
+    names = []
+    for root, _, files in os.walk(a):
+        names += [os.path.relpath(os.path.join(root, f), a) for f in files if f != "run.json"]
+    assert names
+    _, mismatch, errors = filecmp.cmpfiles(a, b, names, shallow=False)
+    assert not mismatch and not errors, (mismatch, errors)
+    return names
+
+
+def same_tables(t, u):
+    assert t.keys() == u.keys()
+    for name in t:
+        assert t[name].keys() == u[name].keys()
+        for col in t[name]:
+            np.testing.assert_array_equal(t[name][col], u[name][col], err_msg=name + "." + col)
+
+
+def test_fleet_on_dask_equals_the_command(client, tmp_path):
+    rc = command_run(FLEET, str(tmp_path / "single"))
+    res = mhcontact.fleet(FLEET, client, tmp_path / "dask")
+    assert res["shards"] == 4 and res["exit_code"] == rc  # one shard per pair
+    names = same_files(str(tmp_path / "single"), res["out_dir"])
+    assert "cases.csv" in names and "pairs/3/geometry.json" in names
+    same_tables(res["tables"], mhcontact.read_tables(str(tmp_path / "single")))
+    cases = res["tables"]["cases"]
+    assert len(cases["Fz_kN"]) == 4 * 33 * 3 and set(cases["pair"]) == {0, 1, 2, 3}
+
+
+def test_sweep_on_dask_in_slices_of_cases(client, tmp_path):
+    command_run(SWEEP, str(tmp_path / "single"))
+    res = mhcontact.fleet(SWEEP, client, tmp_path / "dask", shards=3)
+    assert res["shards"] == 3
+    same_files(str(tmp_path / "single"), res["out_dir"])
+
+
+def test_without_a_client_and_bad_input(tmp_path):
+    res = mhcontact.fleet(SWEEP, None, tmp_path / "local", shards=2)
+    command_run(SWEEP, str(tmp_path / "single"))
+    same_files(str(tmp_path / "single"), res["out_dir"])
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"wheels": ["nothing-*.prw"], "rails": [{"standard": "60E1"}], "inclination": "1:40"}')
+    with pytest.raises(mhcontact.InputError, match="nothing-"):
+        mhcontact.fleet(str(bad), None, tmp_path / "bad")
