@@ -440,7 +440,9 @@ MHC_API void mhc_table_free(mhc_table* t);
  * enters the creepages, not the contact point (its lead ahead of the axle is not modelled). */
 
 /** The interface version of this header: 1 = up to the warnings accessors; 2 = the wheelset
- *  call, mhc_interface_version. Negotiate at run time with mhc_interface_version(). */
+ *  call, mhc_interface_version, mhc_solve_many_warnings, the creep forces (mhc_pair_set_tangential,
+ *  mhc_result_tangential), the contact tables (mhc_table_*) and the RCF accessors (mhc_result_rcf,
+ *  mhc_hertz_subsurface). Negotiate at run time with mhc_interface_version(). */
 #define MHC_INTERFACE_VERSION 2
 
 /** The newest interface version the library implements (its return) and, in *oldest when not
