@@ -421,7 +421,7 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
       look.lookup(ty, q, ans);
       checks.push_back(compare(ans, solved.at(centres[c]), ty, q));
       const TableCheckError& e = checks.back();
-      cell_fail[c] = e.compared && (e.e_N > opt.tol_N || e.e_pmax > opt.tol_pmax);
+      cell_fail[c] = e.compared && (e.e_N > opt.tol_N || e.e_pmax > opt.tol_pmax || e.e_area > opt.tol_area);
     }
     if (round >= opt.refine) break;
     // Halve every t_Y interval with a failing cell (not below min_step_mm).

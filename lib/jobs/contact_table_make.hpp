@@ -22,7 +22,7 @@ struct TableMakeOptions {
   double min_step_mm = 0.05;  ///< no t_Y interval is halved below this (default 0.05 mm)
   double tol_N = 0.01;        ///< contact normal force: |ΔN| / Q (default 1 %)
   double tol_pmax = 0.03;     ///< peak pressure, relative (default 3 %)
-  double tol_area = 0.05;     ///< total area, relative (reported, not refined on; default 5 %)
+  double tol_area = 0.05;     ///< total area, relative (default 5 %)
   double tol_position_mm = 0.5;  ///< contact position on the rail, mm (reported; default 0.5 mm)
   bool quiet = false;
 };
