@@ -77,6 +77,9 @@ mhc_error guarded(GuardedBody f) noexcept;
 
 /// Check an mhc_result pointer and its struct_size; false with the message set otherwise.
 bool result_ok(const mhc_result* out, std::size_t result_size);
+/// Check the struct_size of a caller's mhc_warning (field names the argument as the caller
+/// wrote it, e.g. "out->struct_size"); false with the message set otherwise.
+bool warning_size_ok(std::size_t size, const char* field);
 
 /// Solve one case: Q prescribed (approach = false) or the approach dz prescribed (approach =
 /// true), at tY [m] and roll [rad]. Fills *out; sets the message for a case that is not ok.

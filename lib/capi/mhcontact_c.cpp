@@ -466,9 +466,7 @@ mhc_error mhc_solve_many_warnings(const mhc_pair* pair, int32_t prescribe, size_
                                       ": must be MHC_PRESCRIBE_LOAD (0) or MHC_PRESCRIBE_APPROACH (1)");
   if (n_threads < 0) return fail(MHC_ERR_ARGUMENT, "n_threads = " + std::to_string(n_threads) + ": must be >= 0");
   const bool with_warnings = warnings != nullptr && per_case > 0;
-  if (with_warnings && warning_size < sizeof(mhc_warning))
-    return fail(MHC_ERR_ARGUMENT, "warning_size = " + std::to_string(warning_size) + ": set it to sizeof(mhc_warning) (" +
-                                      std::to_string(sizeof(mhc_warning)) + ")");
+  if (with_warnings && !mh::capi::warning_size_ok(warning_size, "warning_size")) return MHC_ERR_ARGUMENT;
   const bool approach = prescribe == MHC_PRESCRIBE_APPROACH;
   return mh::capi::for_each_case(*pair, n, n_threads, [&](std::size_t i, mhc_workspace& ws) {
     auto* r = reinterpret_cast<mhc_result*>(reinterpret_cast<char*>(out) + i * result_size);

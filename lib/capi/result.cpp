@@ -63,6 +63,13 @@ bool result_ok(const mhc_result* out, std::size_t result_size) {
   return true;
 }
 
+bool warning_size_ok(std::size_t size, const char* field) {
+  if (size >= sizeof(mhc_warning)) return true;
+  return fail(MHC_ERR_ARGUMENT, std::string(field) + " = " + std::to_string(size) + ": set it to sizeof(mhc_warning) (" +
+                                    std::to_string(sizeof(mhc_warning)) + ")"),
+         false;
+}
+
 void fill_result(const CaseResult& r, double tY, double Q, bool plastic, mhc_result* out) {
   // Every field is set below; of the ~1 kB contact array only the slots left unused are cleared
   // (so that equal cases give equal bytes).
@@ -197,9 +204,7 @@ mhc_error mhc_result_warning(const mhc_workspace* ws, int32_t i, mhc_warning* ou
   mh::capi::last_message().clear();
   if (mhc_error e = need(ws, "ws")) return e;
   if (mhc_error e = need(out, "out")) return e;
-  if (out->struct_size < sizeof(mhc_warning))
-    return fail(MHC_ERR_ARGUMENT, "out->struct_size = " + std::to_string(out->struct_size) +
-                                      ": set it to sizeof(mhc_warning) (" + std::to_string(sizeof(mhc_warning)) + ")");
+  if (!mh::capi::warning_size_ok(out->struct_size, "out->struct_size")) return MHC_ERR_ARGUMENT;
   if (i < 0 || static_cast<std::size_t>(i) >= ws->r.warnings.size())
     return fail(MHC_ERR_ARGUMENT, "warning " + std::to_string(i) + ": the case has " +
                                       std::to_string(ws->r.warnings.size()) + " (0-based index)");

@@ -325,9 +325,7 @@ mhc_error mhc_wheelset_warning(const mhc_wheelset_workspace* ws, int32_t side, i
   mh::capi::last_message().clear();
   if (mhc_error e = need(ws, "ws")) return e;
   if (mhc_error e = need(out, "out")) return e;
-  if (out->struct_size < sizeof(mhc_warning))
-    return fail(MHC_ERR_ARGUMENT, "out->struct_size = " + std::to_string(out->struct_size) +
-                                      ": set it to sizeof(mhc_warning) (" + std::to_string(sizeof(mhc_warning)) + ")");
+  if (!mh::capi::warning_size_ok(out->struct_size, "out->struct_size")) return MHC_ERR_ARGUMENT;
   const auto* v = wheel_warnings(ws, side);
   if (!v) return fail(MHC_ERR_ARGUMENT, "side = " + std::to_string(side) + ": must be 0 (left) or 1 (right)");
   if (i < 0 || static_cast<std::size_t>(i) >= v->size())

@@ -244,3 +244,38 @@ TEST_CASE("C wheelset: a batch on two threads equals single steps, the wheelset 
   }
   CHECK(lead_seen);
 }
+
+TEST_CASE("C wheelset: each wheel's warnings as data agree with their text, and a short struct is refused",
+          "[capi][wheelset_contact]") {
+  // Across the flange: some wheel of some step carries warnings (checked below, not assumed).
+  Ws w;
+  int seen = 0;
+  for (double y_mm = -10; y_mm <= 10; y_mm += 1) {
+    mhc_wheelset_result r;
+    r.struct_size = sizeof r;
+    const mhc_wheelset_pose p = pose(y_mm * 1e-3, 110e3, 110e3);
+    REQUIRE(mhc_wheelset_step(fx().ws, w.w, &p, &r) == MHC_OK);
+    for (int32_t side = 0; side < 2; ++side) {
+      for (int32_t k = 0; k < mhc_wheelset_n_warnings(w.w, side); ++k) {
+        INFO("y " << y_mm << " mm, side " << side << ", warning " << k);
+        mhc_warning wd;
+        wd.struct_size = sizeof wd;
+        REQUIRE(mhc_wheelset_warning(w.w, side, k, &wd) == MHC_OK);
+        const std::string text = mhc_wheelset_warning_text(w.w, side, k);
+        CHECK(text.rfind(std::string(wd.class_name) + ":", 0) == 0);
+        ++seen;
+        wd.struct_size = sizeof wd - 8;
+        CHECK(mhc_wheelset_warning(w.w, side, k, &wd) == MHC_ERR_ARGUMENT);
+        CHECK(std::string(mhc_last_message()).rfind("out->struct_size = ", 0) == 0);
+      }
+      mhc_warning out_of_range;
+      out_of_range.struct_size = sizeof out_of_range;
+      CHECK(mhc_wheelset_warning(w.w, side, mhc_wheelset_n_warnings(w.w, side), &out_of_range) == MHC_ERR_ARGUMENT);
+    }
+    mhc_warning bad_side;
+    bad_side.struct_size = sizeof bad_side;
+    CHECK(mhc_wheelset_warning(w.w, 2, 0, &bad_side) == MHC_ERR_ARGUMENT);
+    CHECK(std::string(mhc_last_message()).rfind("side = 2", 0) == 0);
+  }
+  CHECK(seen > 0);
+}
