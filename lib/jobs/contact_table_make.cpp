@@ -19,7 +19,7 @@
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
 #include "core/units.hpp"
-#include "jobs/pool.hpp"
+#include "core/parallel.hpp"
 #include "jobs/run.hpp"
 #include "output/output_file.hpp"
 #include "output/pair_tables.hpp"

@@ -21,7 +21,7 @@
 #include "contact/judge/judge.hpp"
 #include "contact/solve.hpp"
 #include "core/errors.hpp"
-#include "jobs/pool.hpp"
+#include "core/parallel.hpp"
 #include "output/case_tables.hpp"
 #include "output/cells.hpp"
 #include "output/output_file.hpp"
