@@ -31,23 +31,13 @@
 
 #include "contact/solve.hpp"
 #include "manchester_fixture.hpp"
-#include "output/csv_table.hpp"
+#include "support/data_csv.hpp"
 
 using namespace mh;
 
 namespace {
-CsvTable read_a22() {
-  const std::string path = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/contact_tangential/mbench_a22_right.csv";
-  std::ifstream in(path);
-  REQUIRE(in.good());
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_csv(ss.str(), path);
-}
-double num(const CsvTable& t, std::size_t r, const char* c) {
-  REQUIRE(t.has_column(c));
-  return std::stod(t.rows[r][static_cast<std::size_t>(t.column(c))]);
-}
+CsvTable read_a22() { return test::read_data_csv("contact_tangential/mbench_a22_right.csv"); }
+using test::csv_num;
 }  // namespace
 
 TEST_CASE("half-space creep forces against CONTACT on Manchester A-2.2 (right wheel)", "[tangential][half_space][contact][a22]") {
@@ -62,15 +52,15 @@ TEST_CASE("half-space creep forces against CONTACT on Manchester A-2.2 (right wh
   mo.tangential.source = TangentialOptions::Source::Creepages;
   double worst_N = 0, worst_F = 0, worst_M = 0, worst_a = 0, worst_f = 0;
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
-    const int id = static_cast<int>(num(t, i, "case"));
-    const double FN = num(t, i, "FN_N"), FX = num(t, i, "FX_N"), FS = num(t, i, "FS_N"), MN = num(t, i, "MN_Nmm") * 1e-3;
-    const double gamma_c = -num(t, i, "deltcp_rad");
-    INFO("case " << id << " t_Y " << num(t, i, "tY_mm") << " mm");
+    const int id = static_cast<int>(csv_num(t, i, "case"));
+    const double FN = csv_num(t, i, "FN_N"), FX = csv_num(t, i, "FX_N"), FS = csv_num(t, i, "FS_N"), MN = csv_num(t, i, "MN_Nmm") * 1e-3;
+    const double gamma_c = -csv_num(t, i, "deltcp_rad");
+    INFO("case " << id << " t_Y " << csv_num(t, i, "tY_mm") << " mm");
     // Eq. 10.1 on CONTACT's numbers, in our signs (FS on the rail along s: Fy on the wheel = −FS).
     CHECK(std::abs(FN * std::cos(gamma_c) - FS * std::sin(gamma_c) - Q) < 1e-3 * Q);
     if (!tread.count(id) && !flange.count(id)) continue;
-    mo.tangential.creep = {-num(t, i, "cksi"), -num(t, i, "ceta"), -num(t, i, "cphi_per_mm") * 1e3};
-    const CaseResult r = solve_contact(G, testing::steel(), num(t, i, "tY_mm") * 1e-3, Q, mo);
+    mo.tangential.creep = {-csv_num(t, i, "cksi"), -csv_num(t, i, "ceta"), -csv_num(t, i, "cphi_per_mm") * 1e3};
+    const CaseResult r = solve_contact(G, testing::steel(), csv_num(t, i, "tY_mm") * 1e-3, Q, mo);
     REQUIRE(!is_failure(r.status));
     REQUIRE(r.patches.size() == 1);
     const PatchResult& P = r.patches[0];
@@ -81,7 +71,7 @@ TEST_CASE("half-space creep forces against CONTACT on Manchester A-2.2 (right wh
     if (tread.count(id)) {
       REQUIRE(std::abs(P.gamma - gamma_c) < 1.0 * units::deg);
       const double c = 0.5 * std::sqrt(P.length_x * P.width_s);
-      const double adh = num(t, i, "nadh") / num(t, i, "ncon");
+      const double adh = csv_num(t, i, "nadh") / csv_num(t, i, "ncon");
       CHECK(std::abs(P.N - FN) < 10.0);
       CHECK(std::abs(Fx - FX) < 5e-3 * mu * FN);
       CHECK(std::abs(Fy - FS) < 5e-3 * mu * FN);

@@ -15,23 +15,13 @@
 #include <string>
 
 #include "contact/tangential/fastsim.hpp"
-#include "output/csv_table.hpp"
+#include "support/data_csv.hpp"
 
 using namespace mh;
 
 namespace {
-CsvTable read_module3() {
-  const std::string path = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/contact_tangential/module3_hertz.csv";
-  std::ifstream in(path);
-  REQUIRE(in.good());
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_csv(ss.str(), path);
-}
-double num(const CsvTable& t, std::size_t r, const char* c) {
-  REQUIRE(t.has_column(c));
-  return std::stod(t.rows[r][static_cast<std::size_t>(t.column(c))]);
-}
+CsvTable read_module3() { return test::read_data_csv("contact_tangential/module3_hertz.csv"); }
+using test::csv_num;
 }  // namespace
 
 TEST_CASE("FASTSIM against CONTACT's FASTSIM on the module-3 cases", "[tangential][fastsim][contact]") {
@@ -42,11 +32,11 @@ TEST_CASE("FASTSIM against CONTACT's FASTSIM on the module-3 cases", "[tangentia
   o.blend = true;
   double worst_F = 0, worst_M = 0;
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
-    const double a = num(t, i, "a_mm") * 1e-3, b = num(t, i, "b_mm") * 1e-3, N = num(t, i, "FN_N");
-    const double mu = num(t, i, "mu"), nu = num(t, i, "nu"), G = num(t, i, "G_MPa") * 1e6;
-    const Creepages cr{num(t, i, "xi"), num(t, i, "eta"), num(t, i, "phi_per_mm") * 1e3};
+    const double a = csv_num(t, i, "a_mm") * 1e-3, b = csv_num(t, i, "b_mm") * 1e-3, N = csv_num(t, i, "FN_N");
+    const double mu = csv_num(t, i, "mu"), nu = csv_num(t, i, "nu"), G = csv_num(t, i, "G_MPa") * 1e6;
+    const Creepages cr{csv_num(t, i, "xi"), csv_num(t, i, "eta"), csv_num(t, i, "phi_per_mm") * 1e3};
     const TangentialResult r = fastsim(cr, a, b, N, mu, G, nu, o);
-    auto ext = [&](const char* coarse, const char* fine) { return (5 * num(t, i, fine) - num(t, i, coarse)) / 4; };
+    auto ext = [&](const char* coarse, const char* fine) { return (5 * csv_num(t, i, fine) - csv_num(t, i, coarse)) / 4; };
     const double Fx = ext("fastsim_Fx_N", "fastsim_fine_Fx_N"), Fy = ext("fastsim_Fy_N", "fastsim_fine_Fy_N");
     const double Mz = ext("fastsim_Mz_Nmm", "fastsim_fine_Mz_Nmm") * 1e-3;
     const double muN = mu * N;
