@@ -6,81 +6,80 @@
 namespace wsdyn {
 
 namespace {
-/// The geometry's t_Y grid: the default (−10 … 12 mm) mirrored, so that the left wheel at −y
-/// and the right at +y lie on the same grid.
-mh::GeometryOptions geometry_options() {
-  mh::GeometryOptions g;
-  g.tY_min = -12e-3;
-  g.tY_max = 12e-3;
-  return g;
-}
-}  // namespace
 
-ContactAdapter::ContactAdapter(const WheelsetSetup& s)
-    : s_(s),
-      geo_(mh::build_geometry(s.wheel, s.rail, s.track, geometry_options())),
-      l_origin_(s.track.flange_back_distance / 2 - s.track.flange_back_position) {
-  opt_.method = mh::Method::MultiHertzian;
-  mh::TangentialOptions& t = opt_.tangential;
+/// The wheelset call's setup: the same wheel and rail on both sides (each mirrored by the call),
+/// the multi-Hertzian method with FASTSIM, the tables over |y| ≤ 12 mm.
+mh::WheelsetSetup wheelset_setup(const WheelsetSetup& s) {
+  mh::WheelsetSetup w;
+  w.wheel_left = w.wheel_right = s.wheel;
+  w.rail_left = w.rail_right = s.rail;
+  w.track = s.track;
+  w.nominal_radius_left = w.nominal_radius_right = s.track.nominal_radius;
+  w.material = s.material;
+  w.method.method = mh::Method::MultiHertzian;
+  mh::TangentialOptions& t = w.method.tangential;
   t.mu = s.mu;
   t.source = mh::TangentialOptions::Source::Kinematics;
-  t.l_origin = l_origin_;
-  t.r0 = s.track.nominal_radius;
   t.fastsim = s.fastsim;
-}
-
-WheelContactForces ContactAdapter::wheel(int side, const WheelsetMotion& m) {
-  // Pair frame (method.md §10): the right wheel's is the track frame, the left wheel's its mirror.
-  const double sg = side;
-  const double tY = sg * m.y;
-  mh::Kinematics& k = opt_.tangential.kin;
-  k.V = m.V;
-  k.yaw = sg * m.psi;
-  k.lateral_velocity = sg * m.y_dot;
-  k.yaw_rate = sg * m.psi_dot;
-  k.pitch_rate = m.Omega;
-  mh::solve_contact(geo_, s_.material, tY, s_.Q, opt_, res_);
-  ++calls_;
-  WheelContactForces w;
-  w.status = res_.status;
-  w.ok = !mh::is_failure(res_.status) && res_.tangential.solved;
-  double N_main = -1;
-  for (const mh::LoadedEllipse& L : res_.loaded) {
-    if (L.s.N <= 0) continue;
-    ++w.n_contacts;
-    const double cg = L.cos_gamma, sgm = L.sin_gamma;
-    // On the wheel, pair frame: the normal force along n = (0, −sin γ, cos γ), the creep force Fy
-    // along ŝ = (0, cos γ, sin γ), Fx along x (tangential_types.hpp).
-    const double Fy_pair = -L.s.N * sgm + L.t.Fy * cg;
-    w.F_Y += sg * Fy_pair;
-    w.F_Y_creep += sg * L.t.Fy * cg;
-    w.F_X += L.t.Fx;
-    // The contact's |Y| from the centre plane: l = l_origin + t_Y + y_w (method.md §10).
-    const double l = l_origin_ + tY + L.g.y_w;
-    // Yaw moment (sense X → Y) of a force F_X at Y_c = side · l: −Y_c F_X.
-    w.M_Z += -sg * l * L.t.Fx;
-    // A forward force at the contact, r below the axle, slows the rolling wheel.
-    w.M_axle += -L.g.r_roll * L.t.Fx;
-    w.N += L.s.N;
-    w.p_max = std::max(w.p_max, L.s.p_max);
-    w.plastic = w.plastic || L.s.plastic;
-    if (L.s.N > N_main) {
-      N_main = L.s.N;
-      w.gamma = L.g.gamma;
-      w.r = L.g.r_roll;
-      w.l = l;
-      w.a = L.s.a;
-      w.b = L.s.b;
-    }
-  }
-  if (w.n_contacts == 0) w.ok = false;
+  w.geometry.tY_min = -12e-3;
+  w.geometry.tY_max = 12e-3;
   return w;
 }
 
+/// One wheel of the call's result in the example's frame (Y towards the right rail).
+WheelContactForces wheel_forces(const mh::WheelResult& w) {
+  WheelContactForces f;
+  f.status = w.r.status;
+  f.ok = !mh::is_failure(w.r.status) && w.r.tangential.solved;
+  // The call's track frame has y to the left: F_Y = −F_y, M_Z = −M_z; M_y is the moment in the
+  // sense of rolling forward (x forward, y left: a rotation about +y rolls the wheel forward).
+  f.F_X = w.on_wheelset.F[0];
+  f.F_Y = -w.on_wheelset.F[1];
+  f.M_Z = -w.on_wheelset.M[2];
+  f.M_axle = w.on_wheelset.M[1];
+  double N_main = -1;
+  for (const mh::ContactPoint& c : w.contacts) {
+    ++f.n_contacts;
+    f.N += c.N;
+    // The creep force Fs along s = (0, cos γ, sin γ) of the pair; the pair's y is σ y_track.
+    f.F_Y_creep += -w.side * c.Fs * std::cos(c.gamma);
+    if (c.N > N_main) {
+      N_main = c.N;
+      f.gamma = c.gamma;
+      f.r = c.r_roll;
+      f.l = std::abs(c.Y_ws);
+      f.a = c.a;
+      f.b = c.b;
+    }
+  }
+  for (const mh::LoadedEllipse& L : w.r.loaded) {
+    if (!(L.s.N > 0)) continue;
+    f.p_max = std::max(f.p_max, L.s.p_max);
+    f.plastic = f.plastic || L.s.plastic;
+  }
+  if (f.n_contacts == 0) f.ok = false;
+  return f;
+}
+
+}  // namespace
+
+ContactAdapter::ContactAdapter(const WheelsetSetup& s) : s_(s), contact_(wheelset_setup(s)) {}
+
 WheelsetForces ContactAdapter::evaluate(const WheelsetMotion& m) {
+  mh::WheelsetPose p;
+  p.y = -m.y;
+  p.yaw = -m.psi;
+  p.vertical = mh::WheelsetVertical::Loads;
+  p.Q_left = p.Q_right = s_.Q;
+  p.V = m.V;
+  p.lateral_velocity = -m.y_dot;
+  p.yaw_rate = -m.psi_dot;
+  p.pitch_rate = m.Omega;
+  contact_.step(p, step_options_, res_, ws_);
+  ++calls_;
   WheelsetForces f;
-  f.right = wheel(+1, m);
-  f.left = wheel(-1, m);
+  f.left = wheel_forces(res_.left);
+  f.right = wheel_forces(res_.right);
   f.F_Y = f.left.F_Y + f.right.F_Y;
   f.M_Z = f.left.M_Z + f.right.M_Z;
   f.F_X = f.left.F_X + f.right.F_X;

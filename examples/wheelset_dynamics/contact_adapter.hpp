@@ -1,22 +1,21 @@
 #pragma once
-// The wheelset's two contacts for the dynamics example: the one place that calls mhcontact's
-// contact solve. Until the library has a wheelset call, each wheel is one per-pair solve
-// (geometry/contact_geometry.hpp, contact/solve.hpp): the right wheel at t_Y = y, the left wheel
-// as the mirrored pair at t_Y = −y (docs/tangential.md, "Left and right wheel"). Switching to the
-// wheelset call changes this file only.
+// The wheelset's two contacts for the dynamics example: the one place that calls mhcontact. It
+// calls the library's wheelset call (wheelset_contact/wheelset_contact.hpp, the C++ layer of
+// mhc_wheelset_step): both wheels at once, each wheel's load balanced with its creep forces'
+// vertical share (docs/method.md §10 eq. 10.1), the forces and moments on the wheelset in track
+// coordinates, the spin moments included.
 //
 // Track frame of the example (docs/wheelset.md "Placement"): X forward, Y lateral positive
 // towards the RIGHT rail, Z up; the yaw ψ turns X towards +Y, and the yaw moment M_Z is taken in
-// the same sense. With this frame the right wheel's pair frame (method.md §1, §10: y towards the
-// field side) is the track frame itself, and the left wheel's is its mirror image: its t_Y, ψ, ẏ,
-// ψ̇ are the track's negated, and so are its lateral results.
+// the same sense. The wheelset call's frame has y towards the LEFT rail (x forward, z up, yaw
+// turning x towards +y): Y = −y, ψ = −ψ_call, F_Y = −F_y, M_Z = −M_z, and the moment about the
+// axle in the sense of rolling forward is M_y.
 #include <memory>
 
 #include "contact/case_result.hpp"
 #include "contact/options.hpp"
-#include "contact/solve.hpp"
-#include "geometry/contact_geometry.hpp"
 #include "profile/profile.hpp"
+#include "wheelset_contact/wheelset_contact.hpp"
 
 namespace wsdyn {
 
@@ -35,7 +34,7 @@ struct WheelContactForces {
   double F_X = 0;      ///< [N] longitudinal creep force
   double F_Y = 0;      ///< [N] lateral: normal forces' share N sin γ and the creep forces' Fy cos γ
   double F_Y_creep = 0;  ///< [N] the creep forces' share of F_Y alone
-  double M_Z = 0;      ///< [N m] yaw moment about the wheelset centre of the longitudinal creep forces (−Y_c F_X)
+  double M_Z = 0;      ///< [N m] yaw moment about the wheelset centre: the longitudinal creep forces' (−Y_c F_X) and the spin moments' share
   double M_axle = 0;   ///< [N m] moment about the axle, in the sense of rolling forward: −Σ r F_X
   double N = 0;        ///< [N] Σ normal forces
   // The main (most loaded) contact: where it is, for output and the linear model.
@@ -75,25 +74,21 @@ struct WheelsetSetup {
 class ContactAdapter {
  public:
   explicit ContactAdapter(const WheelsetSetup& s);
-  /// Both wheels' contacts at the motion m; the normal problem at the vertical load Q per wheel
-  /// (Σ N cos γ = Q, Kalker's quasi-identity: the creep forces' vertical share is not fed back),
-  /// the tangential by FASTSIM on each loaded ellipse.
+  /// Both wheels' contacts at the motion m: one step of the wheelset call with the vertical load
+  /// Q on each wheel (Σ N cos γ + Σ Fy sin γ = Q), the tangential by FASTSIM on each loaded ellipse.
   WheelsetForces evaluate(const WheelsetMotion& m);
   /// [m] |Y| of the wheel profile's taping line from the centre plane (FBD/2 − flange-back position).
-  double l_origin() const { return l_origin_; }
-  const mh::ContactGeometry& geometry() const { return geo_; }
+  double l_origin() const { return contact_.taping_line(+1); }
   const WheelsetSetup& setup() const { return s_; }
   long calls() const { return calls_; }
 
  private:
   WheelsetSetup s_;
-  mh::ContactGeometry geo_;
-  double l_origin_;
-  mh::MethodOptions opt_;
-  mh::CaseResult res_;
+  mh::WheelsetContact contact_;
+  mh::WheelsetStepOptions step_options_;
+  mh::WheelsetWorkspace ws_;
+  mh::WheelsetResult res_;
   long calls_ = 0;
-  /// One wheel in its pair frame: side +1 right, −1 left.
-  WheelContactForces wheel(int side, const WheelsetMotion& m);
 };
 
 }  // namespace wsdyn

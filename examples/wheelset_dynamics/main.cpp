@@ -40,9 +40,9 @@ void write_samples(std::ofstream& f, const std::string& run, const RunResult& R)
 }
 
 void print_cost(const char* what, const RunResult& R) {
-  std::printf("%s: %ld steps, %ld right-hand sides (%ld contact solves, 2 per side), %.3f s: %.1f us per step, "
-              "%.2f us per contact solve\n",
-              what, R.steps, R.rhs_evals, R.contact_calls, R.wall_seconds, R.us_per_step(), R.us_per_contact());
+  std::printf("%s: %ld steps, %ld right-hand sides (%ld wheelset calls, 1 per side), %.3f s CPU: %.1f us per step, "
+              "%.2f us per wheelset call\n",
+              what, R.steps, R.rhs_evals, R.contact_calls, R.cpu_seconds, R.us_per_step(), R.us_per_call());
 }
 
 }  // namespace

@@ -54,13 +54,13 @@ struct RunResult {
   std::vector<Sample> samples;
   std::vector<double> zero_times;   ///< [s] y = 0
   std::vector<double> peak_times, peak_values;  ///< [s], [m] at ẏ = 0 (signed y)
-  long steps = 0, rhs_evals = 0, contact_calls = 0, jac_evals = 0;
+  long steps = 0, rhs_evals = 0, contact_calls = 0, jac_evals = 0;  // contact_calls: wheelset calls (both wheels)
   double p_max = 0;          ///< [Pa] the largest contact pressure of any right-hand side
   long plastic_rhs = 0;      ///< right-hand sides with a plastic ellipse on either wheel
-  double wall_seconds = 0;   ///< integration time
-  double us_per_step() const { return steps > 0 ? 1e6 * wall_seconds / static_cast<double>(steps) : 0; }
-  double us_per_contact() const {
-    return contact_calls > 0 ? 1e6 * wall_seconds / static_cast<double>(contact_calls) : 0;
+  double cpu_seconds = 0;    ///< integration time, CPU time of the process
+  double us_per_step() const { return steps > 0 ? 1e6 * cpu_seconds / static_cast<double>(steps) : 0; }
+  double us_per_call() const {
+    return contact_calls > 0 ? 1e6 * cpu_seconds / static_cast<double>(contact_calls) : 0;
   }
   /// [m] wavelength from the zero crossings from `skip` on: V × 2 × mean half period.
   double wavelength(std::size_t skip = 1) const;
