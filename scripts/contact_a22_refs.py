@@ -3,7 +3,8 @@
 
 Reads CONTACT's shipped input deck and expected output of the benchmark's case A-2.2, right wheel
 (examples/mbench_a22_right.inp and .ref_out of CONTACT, github.com/eve70a/CONTACT) and writes one
-row per case: the wheelset's lateral position and yaw from the deck, and from the output the
+row per case: the wheelset's lateral position, yaw, roll and pitch rate from the deck (the pitch
+rate is the deck's VPITCH of each case, not V over the nominal radius), and from the output the
 contact patch's angle, creepages and total forces as CONTACT prints them (its signs and units;
 tests/data/contact_tangential/README.md says how they map onto mhcontact's).
 
@@ -20,6 +21,7 @@ def numbers(line):
 def main(examples, out):
     inp = open(f"{examples}/mbench_a22_right.inp").read().splitlines()
     pose = [numbers(l.split("S, Y")[0]) for l in inp if "S, Y, FZ, ROLL, YAW, PITCH" in l]
+    vel = [numbers(l.split("VS,VY")[0]) for l in inp if "VS,VY,VZ, VROLL,VYAW,VPITCH" in l]
     ref = open(f"{examples}/mbench_a22_right.ref_out").read().splitlines()
     rows, cur = [], None
     for i, l in enumerate(ref):
@@ -42,14 +44,19 @@ def main(examples, out):
         elif l.split()[:3] == ["NPOT", "NCON", "NADH"]:
             v = numbers(ref[i + 1])
             cur["ncon"], cur["nadh"] = int(v[1]), int(v[2])
-    assert len(rows) == len(pose) == 21, (len(rows), len(pose))
+    assert len(rows) == len(pose) == len(vel) == 21, (len(rows), len(pose), len(vel))
     cols = ["case", "tY_mm", "yaw_mrad", "npatch", "deltcp_rad", "cksi", "ceta", "cphi_per_mm",
-            "FN_N", "FX_N", "FS_N", "MN_Nmm", "FY_TR_N", "FZ_TR_N", "ncon", "nadh"]
+            "FN_N", "FX_N", "FS_N", "MN_Nmm", "FY_TR_N", "FZ_TR_N", "ncon", "nadh",
+            "roll_rad", "vs_mm_s", "vpitch_rad_s"]
     with open(out, "w") as f:
         f.write(",".join(cols) + "\n")
-        for r, p in zip(rows, pose):
+        for r, p, v in zip(rows, pose, vel):
             r["tY_mm"], r["yaw_mrad"] = p[1], p[4] * 1e3
-            f.write(",".join(f"{r[c]:g}" if isinstance(r[c], float) else str(r[c]) for c in cols) + "\n")
+            r["roll_rad"], r["vs_mm_s"], r["vpitch_rad_s"] = p[3], v[0], v[5]
+            # CONTACT's printed numbers to their 4 digits; the deck's inputs as written there.
+            full = {"roll_rad", "vs_mm_s", "vpitch_rad_s"}
+            f.write(",".join((f"{r[c]:.10g}" if c in full else f"{r[c]:g}") if isinstance(r[c], float) else str(r[c])
+                             for c in cols) + "\n")
 
 
 if __name__ == "__main__":
