@@ -82,11 +82,9 @@ TangentialResult fastsim(const Creepages& cr, double a, double b, double N, doub
   //
   // Speed: each cell's traction depends on the previous one through a square root and a division
   // where it slips, so one strip alone runs at the latency of that chain. kLanes strips are
-  // marched side by side (independent chains the processor overlaps, and which the compiler may
-  // put in vector registers), without branches: the scale is computed everywhere and chosen where
-  // the cell slips. Each strip's arithmetic and the order of the sums are those of a strip-by-strip
-  // march, so the results do not depend on kLanes. Lanes past the last strip run with a = 0 and
-  // are not summed.
+  // marched side by side, independent chains the processor overlaps. Each strip's arithmetic and
+  // the order of the sums are those of a strip-by-strip march, so the results do not depend on
+  // kLanes. Lanes past the last strip run with a = 0 and are not summed.
   constexpr int kLanes = 4;
   const double gx = cr.xi / L.L1, gy = cr.eta / L.L2, gs = cr.phi / L.L3;
   double Fx = 0, Fy = 0, Mz = 0, n_adh = 0, n_all = 0;
