@@ -2,7 +2,9 @@
  * (mhc_wheelset_step: both wheels, multi-Hertzian normal contact and FASTSIM creep forces), the
  * figure of docs/performance.md "The wheelset call" (printed, never asserted: the machines are
  * shared). Plain C: what a host program sees.
- * Usage: mhcontact_bench_wheelset_step [STEPS] (default 10000)
+ * Usage: mhcontact_bench_wheelset_step [STEPS [ONLY]] (default 10000 steps, every figure)
+ * ONLY = wet | many | coarse | dry runs that one figure (for callgrind's instruction counts:
+ * valgrind --tool=callgrind build/mhcontact_bench_wheelset_step 200 wet).
  * S1002 on 60E1 at 1:40, mu = 0.3, V = 30 m/s, Q = 50 kN per wheel; the wheelset runs a
  * sinusoid y = 6 sin(2 pi i / STEPS) mm with yaw 2 mrad sin(...), one reused workspace. The time
  * is the thread's CPU time (a shared machine's waiting not counted), the median of 5 repeats,
@@ -72,6 +74,7 @@ static double run(const mhc_wheelset* w, const mhc_wheelset_pose* poses, mhc_whe
 
 int main(int argc, char** argv) {
   const size_t n = argc > 1 ? (size_t)atol(argv[1]) : 10000;
+  const char* only = argc > 2 ? argv[2] : "";
   mhc_profile *wheel = NULL, *rail = NULL;
   mhc_pair* pair = NULL;
   mhc_pair_options po;
@@ -102,12 +105,18 @@ int main(int argc, char** argv) {
     p->pitch_rate_rad_per_s = NAN;
   }
   printf("wheelset step, S1002/60E1 1:40, y = 6 mm sin, %zu steps (CPU time per step, median of 5)\n", n);
-  printf("  mhc_wheelset_step, normal + tangential (mu 0.3): %.2f us\n", run(wet, poses, res, n, 0));
-  printf("  mhc_wheelset_step_many, 1 thread, same steps:    %.2f us\n", run(wet, poses, res, n, 1));
-  for (i = 0; i < n; ++i) ok += res[i].status == MHC_STATUS_OK;
-  printf("  mhc_wheelset_step, FASTSIM 16 x 16:              %.2f us\n", run(coarse, poses, res, n, 0));
-  printf("  mhc_wheelset_step, normal only:                  %.2f us\n", run(dry, poses, res, n, 0));
-  printf("  steps ok: %zu of %zu (the others outside_validity: flange contact near a jump)\n", ok, n);
+  if (!*only || !strcmp(only, "wet"))
+    printf("  mhc_wheelset_step, normal + tangential (mu 0.3): %.2f us\n", run(wet, poses, res, n, 0));
+  if (!*only || !strcmp(only, "many")) {
+    printf("  mhc_wheelset_step_many, 1 thread, same steps:    %.2f us\n", run(wet, poses, res, n, 1));
+    for (i = 0; i < n; ++i) ok += res[i].status == MHC_STATUS_OK;
+  }
+  if (!*only || !strcmp(only, "coarse"))
+    printf("  mhc_wheelset_step, FASTSIM 16 x 16:              %.2f us\n", run(coarse, poses, res, n, 0));
+  if (!*only || !strcmp(only, "dry"))
+    printf("  mhc_wheelset_step, normal only:                  %.2f us\n", run(dry, poses, res, n, 0));
+  if (!*only || !strcmp(only, "many"))
+    printf("  steps ok: %zu of %zu (the others outside_validity: flange contact near a jump)\n", ok, n);
   mhc_wheelset_free(wet);
   mhc_wheelset_free(dry);
   mhc_wheelset_free(coarse);

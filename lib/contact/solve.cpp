@@ -104,9 +104,9 @@ void tangential_step(CaseResult& r, const Material& mat, double tY, const Method
 // follows from the one rigid approach, so a root in Q_n is a root in the approach — the split
 // between contacts is the normal solver's at that approach, each contact's creep force recomputed
 // at its own N_i. f(Q_n) = Q_n + Fz_creep(Q_n) − Q is nearly linear (|dFz_creep/dQ_n| ≤ μ tan γ):
-// secant steps from Q_n = Q bracket the root, TOMS 748 (core/roots.hpp) closes it. Where the
-// creep forces lift the wheel faster than the load grows (μ tan γ ≥ 1 in full slip: Nadal's
-// limit) f has no root and the row is not_converged with a message saying so.
+// secant steps from Q_n = Q (below) approach the root, TOMS 748 (core/roots.hpp) closes it once
+// they step across it. Where the creep forces lift the wheel faster than the load grows
+// (μ tan γ ≥ 1 in full slip: Nadal's limit) f has no root and the row is not_converged with a message saying so.
 // r: solved at Q with its tangential step; resolve(Q_n, r) solves the normal problem at Q_n
 // into r with its tangential step. Returns true when r was solved again (at another load).
 template <class Resolve>
@@ -135,9 +135,12 @@ bool creep_equilibrium(CaseResult& r, double Q, const TangentialOptions& t, Reso
   double x0 = Q, f0 = f(Q);
   double x1 = x0, f1 = f0;
   if (std::fabs(f0) > f_abs) {
-    // Secant steps (the first a fixed-point step, slope 1), 1 % beyond the estimate so that the
-    // root is bracketed when f is as linear as it nearly is.
-    double slope = 1;
+    // Secant steps from Q. The first slope 1 + dFz_creep/dQ_n from the scaling of the creep forces
+    // with the load, Fz_creep ∝ Q_n^p: p = 1 in full slip (F = μN), 2/3 in the linear limit
+    // (F ∝ c² ∝ N^(2/3), Hertz), in between by the saturation |F|/(μN); then the secant's own.
+    // They stop at the first sign change short of the tolerance (TOMS 748 below closes the root).
+    const double sat = std::isfinite(r.tangential.F_over_muN) ? std::clamp(r.tangential.F_over_muN, 0.0, 1.0) : 1.0;
+    double slope = std::clamp(1.0 + (2.0 + sat) / 3.0 * f0 / Q, 0.5, 2.0);
     for (int k = 0; k < 8 && !failed && std::fabs(f1) > f_abs && (k == 0 || (f0 < 0) == (f1 < 0)); ++k) {
       if (k > 0) {
         slope = (f1 - f0) / (x1 - x0);
@@ -145,7 +148,7 @@ bool creep_equilibrium(CaseResult& r, double Q, const TangentialOptions& t, Reso
         f0 = f1;
       }
       if (!(slope > 0)) return fail("the creep forces' vertical share falls faster than the normal load grows (flange climbing: mu tan(gamma) >= 1)");
-      const double x = x0 - 1.01 * f0 / slope;
+      const double x = x0 - f0 / slope;
       if (!(x > 0)) return fail("the normal load would have to be negative (flange climbing: mu tan(gamma) >= 1)");
       x1 = x;
       f1 = f(x1);
