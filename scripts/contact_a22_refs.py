@@ -18,11 +18,9 @@ def numbers(line):
     return [float(x) for x in line.split()]
 
 
-def main(examples, out):
-    inp = open(f"{examples}/mbench_a22_right.inp").read().splitlines()
-    pose = [numbers(l.split("S, Y")[0]) for l in inp if "S, Y, FZ, ROLL, YAW, PITCH" in l]
-    vel = [numbers(l.split("VS,VY")[0]) for l in inp if "VS,VY,VZ, VROLL,VYAW,VPITCH" in l]
-    ref = open(f"{examples}/mbench_a22_right.ref_out").read().splitlines()
+def parse_output(ref):
+    """One dict per case of a CONTACT module-1 output (its lines): the patch's angle, creepages,
+    total forces, the track-frame forces and the element counts, as CONTACT prints them."""
     rows, cur = [], None
     for i, l in enumerate(ref):
         if re.match(r"^ Case +\d+", l):
@@ -44,6 +42,20 @@ def main(examples, out):
         elif l.split()[:3] == ["NPOT", "NCON", "NADH"]:
             v = numbers(ref[i + 1])
             cur["ncon"], cur["nadh"] = int(v[1]), int(v[2])
+    return rows
+
+
+def deck_inputs(inp):
+    """Per case of a module-1 deck (its lines): the S, Y, FZ, ROLL, YAW, PITCH and the VS, VY, VZ,
+    VROLL, VYAW, VPITCH lines' numbers."""
+    pose = [numbers(l.split("S, Y")[0]) for l in inp if "S, Y, FZ, ROLL, YAW, PITCH" in l]
+    vel = [numbers(l.split("VS,VY")[0]) for l in inp if "VS,VY,VZ, VROLL,VYAW,VPITCH" in l]
+    return pose, vel
+
+
+def main(examples, out):
+    pose, vel = deck_inputs(open(f"{examples}/mbench_a22_right.inp").read().splitlines())
+    rows = parse_output(open(f"{examples}/mbench_a22_right.ref_out").read().splitlines())
     assert len(rows) == len(pose) == len(vel) == 21, (len(rows), len(pose), len(vel))
     cols = ["case", "tY_mm", "yaw_mrad", "npatch", "deltcp_rad", "cksi", "ceta", "cphi_per_mm",
             "FN_N", "FX_N", "FS_N", "MN_Nmm", "FY_TR_N", "FZ_TR_N", "ncon", "nadh",
