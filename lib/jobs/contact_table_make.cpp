@@ -382,10 +382,9 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   auto solve_missing = [&](const std::vector<std::pair<double, double>>& pts_mm) {
     std::vector<std::pair<double, double>> todo, si;
     for (const auto& p : pts_mm)
-      if (!solved.count(p)) todo.push_back(p), si.emplace_back(p.first * units::mm, p.second * 1e3);
+      if (!solved.count(p)) todo.push_back(p);
     std::sort(todo.begin(), todo.end());
     todo.erase(std::unique(todo.begin(), todo.end()), todo.end());
-    si.clear();
     for (const auto& p : todo) si.emplace_back(p.first * units::mm, p.second * 1e3);
     const auto res = solve_points(cf, pg, si, pool);
     for (std::size_t k = 0; k < todo.size(); ++k) solved[todo[k]] = res[k];
