@@ -276,3 +276,52 @@ TEST_CASE("table: a cell whose area misses its tolerance is coarse and not ok", 
   }
   CHECK(area_only > 0);  // the pair has such cells (else the test tests nothing)
 }
+
+TEST_CASE("table refinement in Q: one 120 kN load interval is halved until N, pmax and area hold", "[tables]") {
+  // The worn measured pair of the test above with Q nodes 20 and 140 kN only: along Q the peak
+  // pressure grows about as Q^(1/3) and the area as Q^(2/3) (Hertz), so the interpolant between
+  // two load nodes (a straight line) misses pmax by about 8 % at the interval's middle while t_Y
+  // at 1 mm is fine. The maker must halve Q, not t_Y, and then hold the tolerances at loads it
+  // neither checked nor refined on (0.3 and 0.7 of the 120 kN span, quarter points in t_Y)
+  // against direct strip solves. Broken on purpose (no Q interval ever marked for halving): the
+  // maker halved t_Y three times in vain (to 0.125 mm), Q kept its 2 nodes, cells stayed coarse,
+  // and this test failed.
+  const nlohmann::json j = {{"wheel", {{"profile", "../profiles/worn_high_mileage.prw"}, {"nominal_radius_mm", 460}}},
+                      {"rail", {{"profile", "../profiles/site_b_hr.prr"}, {"inclination", "as-is"}}},
+                      {"track", {{"gauge_mm", 1435}, {"gauge_height_mm", 14}, {"flange_back_distance_mm", 1360},
+                                 {"flange_back_position_mm", -70}}},
+                      {"material", {{"E_GPa", 210}, {"nu", 0.28}}},
+                      {"method", "strips"},
+                      {"sweep", {{"tY_mm", {{"from", -3}, {"to", 3}, {"step", 1}}}, {"Q_kN", {20, 140}}}}};
+  const CaseFile cf = parse_case_json(j, std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/q-refine.json", true);
+  const PairGeometry pg = build_pair_geometry(cf);
+  std::ostringstream err;
+  TableMakeOptions opt;
+  opt.threads = 2;
+  opt.quiet = true;
+  const TableMade made = make_contact_table(cf, pg, opt, err);
+  INFO("Q nodes " << made.data.header["Q_kN_nodes"].dump() << ", t_Y nodes " << made.data.header["tY_mm_nodes"].dump());
+  CHECK(made.data.nQ() > 2);
+  CHECK(made.data.nT() == 7);  // t_Y at 1 mm holds: not halved
+  CHECK(made.data.header["coarse_cells"].empty());
+  const ContactTableLookup look(made.data);
+  TableAnswer a;
+  CaseResult r;
+  int compared = 0;
+  for (double t_mm = -2.75; t_mm < 3; t_mm += 1.5)
+    for (double Q_kN : {56.0, 104.0}) {
+      const double t = t_mm * 1e-3, Q = Q_kN * 1e3;
+      r = solve_contact(pg.geo, cf.material, t, Q, cf.method_options());
+      look.lookup(t, Q, a);
+      REQUIRE(r.status == CaseStatus::Ok);
+      REQUIRE(a.status == CaseStatus::Ok);
+      REQUIRE(r.patches.size() == 1);
+      REQUIRE(a.n_contacts == 1);
+      INFO("t_Y = " << t_mm << " mm, Q = " << Q_kN << " kN");
+      CHECK(std::fabs(a.c[0].v[kTabN] - r.patches[0].N) / Q < 0.01);
+      CHECK(a.c[0].v[kTabPmax] == Approx(r.pmax).epsilon(0.03));
+      CHECK(a.c[0].v[kTabArea] == Approx(r.area).epsilon(0.05));
+      ++compared;
+    }
+  CHECK(compared == 8);
+}
