@@ -19,6 +19,7 @@
 #include "input/contact_table.hpp"
 #include "jobs/contact_table_make.hpp"
 #include "jobs/run.hpp"
+#include "wheelset_contact/wheelset_contact.hpp"
 
 namespace {
 
@@ -324,4 +325,44 @@ TEST_CASE("table refinement in Q: one 120 kN load interval is halved until N, pm
       ++compared;
     }
   CHECK(compared == 8);
+}
+
+TEST_CASE("a wheelset from two pair tables: lookups at t_Y = +y (left) and -y (right) are the wheelset call's wheels", "[tables]") {
+  // docs/tables.md: a table is one pair; a wheelset is the left pair's table at t_Y = y and the
+  // right pair's at t_Y = -y (the wheelset call's placement, docs/c-api.md "Frame"), each at its
+  // wheel's load. The worn measured pair on both sides (one table serves both) against the
+  // wheelset call by the strip method with unequal loads: each wheel's Fy and Fz (pair frame)
+  // within the table's tolerance of N (1 % of that wheel's Q). Broken on purpose (the right
+  // wheel looked up at t_Y = +y): the right wheel's Fy missed at 4 of its 6 points, by up to
+  // 3.1 % of Q, and this failed.
+  const CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/worn-table.json", true);
+  const PairGeometry pg = build_pair_geometry(cf);
+  std::ostringstream err;
+  TableMakeOptions opt;
+  opt.threads = 2;
+  opt.quiet = true;
+  const ContactTableLookup look(make_contact_table(cf, pg, opt, err).data);
+  const WheelsetContact ws(pg.geo, pg.geo, cf.track, cf.material, cf.method_options(), {});
+  WheelsetWorkspace work;
+  WheelsetResult r;
+  TableAnswer a;
+  WheelsetPose pose;
+  pose.Q_left = 60e3;
+  pose.Q_right = 95e3;
+  int compared = 0;
+  for (double y_mm = -5.3; y_mm < 6; y_mm += 1.9) {
+    pose.y = y_mm * 1e-3;
+    ws.step(pose, WheelsetStepOptions(), r, work);
+    for (const WheelResult* w : {&r.left, &r.right}) {
+      const double Q = w == &r.left ? pose.Q_left : pose.Q_right;
+      INFO("y = " << y_mm << " mm, " << (w == &r.left ? "left" : "right") << " wheel, t_Y = " << w->tY * 1e3 << " mm");
+      REQUIRE(w->r.status == CaseStatus::Ok);
+      look.lookup(w == &r.left ? pose.y : -pose.y, Q, a);
+      REQUIRE(a.status == CaseStatus::Ok);
+      CHECK(std::fabs(a.Fy - w->r.Fy) / Q < 0.01);
+      CHECK(std::fabs(a.Fz - Q) / Q < 0.01);
+      ++compared;
+    }
+  }
+  CHECK(compared == 12);
 }
