@@ -279,22 +279,16 @@ TEST_CASE("table: a cell whose area misses its tolerance is coarse and not ok", 
 }
 
 TEST_CASE("table refinement in Q: one 120 kN load interval is halved until N, pmax and area hold", "[tables]") {
-  // The worn measured pair of the test above with Q nodes 20 and 140 kN only: along Q the peak
-  // pressure grows about as Q^(1/3) and the area as Q^(2/3) (Hertz), so the interpolant between
-  // two load nodes (a straight line) misses pmax by about 8 % at the interval's middle while t_Y
-  // at 1 mm is fine. The maker must halve Q, not t_Y, and then hold the tolerances at loads it
+  // tests/data/tables/worn-table-q.json: the worn measured pair of the test above, t_Y -3 ... 3 mm,
+  // with Q nodes 20 and 140 kN only: along Q the peak pressure grows about as Q^(1/3) and the
+  // area as Q^(2/3) (Hertz), so the interpolant between two load nodes (a straight line) misses
+  // pmax by 8.2 % and the area by 8.4 % at the cell centres (`mhcontact table ... --refine 0`)
+  // while t_Y at 1 mm is fine. The maker must halve Q, not t_Y, and then hold the tolerances at loads it
   // neither checked nor refined on (0.3 and 0.7 of the 120 kN span, quarter points in t_Y)
   // against direct strip solves. Broken on purpose (no Q interval ever marked for halving): the
   // maker halved t_Y three times in vain (to 0.125 mm), Q kept its 2 nodes, cells stayed coarse,
   // and this test failed.
-  const nlohmann::json j = {{"wheel", {{"profile", "../profiles/worn_high_mileage.prw"}, {"nominal_radius_mm", 460}}},
-                      {"rail", {{"profile", "../profiles/site_b_hr.prr"}, {"inclination", "as-is"}}},
-                      {"track", {{"gauge_mm", 1435}, {"gauge_height_mm", 14}, {"flange_back_distance_mm", 1360},
-                                 {"flange_back_position_mm", -70}}},
-                      {"material", {{"E_GPa", 210}, {"nu", 0.28}}},
-                      {"method", "strips"},
-                      {"sweep", {{"tY_mm", {{"from", -3}, {"to", 3}, {"step", 1}}}, {"Q_kN", {20, 140}}}}};
-  const CaseFile cf = parse_case_json(j, std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/q-refine.json", true);
+  const CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/worn-table-q.json", true);
   const PairGeometry pg = build_pair_geometry(cf);
   std::ostringstream err;
   TableMakeOptions opt;
