@@ -451,8 +451,10 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
         const double sT = std::max(score(edges[k]), score(edges[k + 1]));
         const double sQ = std::max(score(edges[k + 2]), score(edges[k + 3]));
         k += 4;
-        const bool q = sT <= 1 && sQ > sT;
-        split_q[c % nQc] |= q;
+        const std::size_t j = c % nQc;
+        const bool q_can = Q_kN[j + 1] - Q_kN[j] >= 2 * opt.min_Q_step_kN - 1e-12;  // else t_Y is all that is left
+        const bool q = q_can && sT <= 1 && sQ > sT;
+        split_q[j] |= q;
         split_t[c / nQc] |= !q;
       }
     // A node without an answer leaves its cells without one: halving its t_Y intervals narrows
