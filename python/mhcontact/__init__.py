@@ -19,8 +19,8 @@ from ._core import (INTERFACE_VERSION, InputError, MAX_CONTACTS, METHOD_NAMES, S
 
 from .fleet import fleet, read_tables
 
-__all__ = ["fleet", "read_tables", "Pair", "Profile", "Table", "TableResult", "MAX_CONTACTS", "Wheelset", "InputError", "UnsupportedError",
-           "STATUS_NAMES", "METHOD_NAMES", "CASE_COLUMNS", "TANGENTIAL_COLUMNS", "INTERFACE_VERSION", "__version__",
+__all__ = ["fleet", "read_tables", "Pair", "Profile", "Table", "TableResult", "MAX_CONTACTS", "Wheelset", "InputError",
+           "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES", "CASE_COLUMNS", "TANGENTIAL_COLUMNS", "INTERFACE_VERSION", "__version__",
            "abi_version", "fft_backend"]
 
 #: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp), then the
