@@ -2,7 +2,11 @@
 // mhc_table_* (include/mhcontact.h, "contact tables"). SI in and out (m, N, Pa, rad).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
+#include <time.h>
+
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,17 +30,53 @@ static_assert(sizeof(mhc_table_contact) == 8 + 8 * kNFields, "mhc_table_contact 
 
 const double* fields(const mhc_table_contact& c) { return &c.N_N; }
 
-py::dict contact_dict(const mhc_table_contact& c, const mhc_table_contact& dt, const mhc_table_contact& dq) {
-  py::dict d, ddt, ddq;
-  d["track"] = c.track;
-  for (int f = 0; f < kNFields; ++f) {
-    d[kFields[f]] = fields(c)[f];
-    ddt[kFields[f]] = fields(dt)[f];
-    ddq[kFields[f]] = fields(dq)[f];
+// The dictionary keys of `lookup`, made once rather than from a C string at every call (with the
+// values boxed explicitly: 3 µs a lookup before, 1.4–1.7 µs after, docs/performance.md). Never
+// freed (as statics they would be destroyed after the interpreter).
+struct Keys {
+  py::str field[kNFields], track, d_dtY, d_dQ, status, coarse, n_contacts, Fz, Fy, dFy_dtY, dFy_dQ, contacts;
+  Keys() {
+    for (int f = 0; f < kNFields; ++f) field[f] = py::str(kFields[f]);
+    track = py::str("track"), d_dtY = py::str("d_dtY"), d_dQ = py::str("d_dQ"), status = py::str("status");
+    coarse = py::str("coarse"), n_contacts = py::str("n_contacts"), Fz = py::str("Fz_N"), Fy = py::str("Fy_N");
+    dFy_dtY = py::str("dFy_dtY_N_per_m"), dFy_dQ = py::str("dFy_dQ"), contacts = py::str("contacts");
   }
-  d["d_dtY"] = ddt;
-  d["d_dQ"] = ddq;
+};
+const Keys& keys() {
+  static const Keys* k = new Keys();
+  return *k;
+}
+
+py::dict contact_dict(const Keys& K, const mhc_table_contact& c, const mhc_table_contact& dt, const mhc_table_contact& dq) {
+  py::dict d, ddt, ddq;
+  d[K.track] = py::int_(c.track);
+  for (int f = 0; f < kNFields; ++f) {
+    d[K.field[f]] = py::float_(fields(c)[f]);
+    ddt[K.field[f]] = py::float_(fields(dt)[f]);
+    ddq[K.field[f]] = py::float_(fields(dq)[f]);
+  }
+  d[K.d_dtY] = ddt;
+  d[K.d_dQ] = ddq;
   return d;
+}
+
+// The answer of `lookup_into`: an mhc_table_result owned by Python, its scalars as properties and
+// its contact slots as numpy views of the struct (no copy; valid while the result lives): the
+// single-point lookup without building a dict.
+struct TableResult {
+  mhc_table_result r;
+  TableResult() {
+    std::memset(static_cast<void*>(&r), 0, sizeof r);
+    r.struct_size = sizeof r;
+    r.status = MHC_STATUS_OUT_OF_RANGE;
+  }
+};
+
+// A (MHC_MAX_CONTACTS, kNFields) view of the fields of slots `first` (contact, d_dtY or d_dQ).
+py::array slot_view(py::object self, mhc_table_contact* first) {
+  return py::array(py::dtype::of<double>(), {static_cast<py::ssize_t>(MHC_MAX_CONTACTS), static_cast<py::ssize_t>(kNFields)},
+                   {static_cast<py::ssize_t>(sizeof(mhc_table_contact)), static_cast<py::ssize_t>(sizeof(double))},
+                   &first->N_N, self);
 }
 
 }  // namespace
@@ -44,6 +84,37 @@ py::dict contact_dict(const mhc_table_contact& c, const mhc_table_contact& dt, c
 /// Called from the module's PYBIND11_MODULE (python/mhcontact_module.cpp); `raise` turns a C
 /// error code into the module's exception.
 void add_tables(py::module_& m, void (*raise)(mhc_error)) {
+  py::tuple field_names(kNFields);
+  for (int f = 0; f < kNFields; ++f) field_names[static_cast<std::size_t>(f)] = py::str(kFields[f]);
+  py::class_<TableResult>(m, "TableResult",
+                          "The answer of Table.lookup_into, reused from call to call (docs/tables.md \"From Python\"). "
+                          "values, d_dtY and d_dQ are numpy views (MAX_CONTACTS x len(FIELDS)) of its contact slots "
+                          "and track one of their tracks (0 where empty): take them once, they see every later lookup.")
+      .def(py::init<>())
+      .def_property_readonly_static("FIELDS", [field_names](py::object) { return field_names; },
+                                    "the columns of values, d_dtY and d_dQ (SI)")
+      .def_property_readonly("status", [](const TableResult& x) { return mhc_status_name(x.r.status); })
+      .def_property_readonly("status_code", [](const TableResult& x) { return x.r.status; }, "index in STATUS_NAMES")
+      .def_property_readonly("coarse", [](const TableResult& x) { return x.r.coarse != 0; })
+      .def_property_readonly("n_contacts", [](const TableResult& x) { return x.r.n_contacts; })
+      .def_property_readonly("tY_m", [](const TableResult& x) { return x.r.tY_m; })
+      .def_property_readonly("Q_N", [](const TableResult& x) { return x.r.Q_N; })
+      .def_property_readonly("Fz_N", [](const TableResult& x) { return x.r.Fz_N; })
+      .def_property_readonly("Fy_N", [](const TableResult& x) { return x.r.Fy_N; })
+      .def_property_readonly("dFy_dtY_N_per_m", [](const TableResult& x) { return x.r.dFy_dtY_N_per_m; })
+      .def_property_readonly("dFy_dQ", [](const TableResult& x) { return x.r.dFy_dQ; })
+      .def_property_readonly("track", [](py::object self) {
+            TableResult& x = self.cast<TableResult&>();
+            return py::array(py::dtype::of<int32_t>(), {static_cast<py::ssize_t>(MHC_MAX_CONTACTS)},
+                             {static_cast<py::ssize_t>(sizeof(mhc_table_contact))}, &x.r.contact[0].track, self);
+          })
+      .def_property_readonly("values", [](py::object self) { return slot_view(self, self.cast<TableResult&>().r.contact); })
+      .def_property_readonly("d_dtY", [](py::object self) { return slot_view(self, self.cast<TableResult&>().r.d_dtY); },
+                             "per metre")
+      .def_property_readonly("d_dQ", [](py::object self) { return slot_view(self, self.cast<TableResult&>().r.d_dQ); },
+                             "per newton");
+  m.attr("MAX_CONTACTS") = MHC_MAX_CONTACTS;
+
   py::class_<Table>(m, "Table", "A contact table made by `mhcontact table` (docs/tables.md), read once; lookups are "
                                 "thread-safe and allocate nothing in the C library.")
       .def(py::init([raise](const std::string& path) {
@@ -64,22 +135,54 @@ void add_tables(py::module_& m, void (*raise)(mhc_error)) {
             mhc_table_result r;
             r.struct_size = sizeof r;
             mhc_table_lookup(t.t, tY_m, Q_N, &r);
+            const Keys& K = keys();
             py::dict d;
-            d["status"] = mhc_status_name(r.status);
-            d["coarse"] = r.coarse != 0;
-            d["n_contacts"] = r.n_contacts;
-            d["Fz_N"] = r.Fz_N;
-            d["Fy_N"] = r.Fy_N;
-            d["dFy_dtY_N_per_m"] = r.dFy_dtY_N_per_m;
-            d["dFy_dQ"] = r.dFy_dQ;
-            py::list cs;
-            for (int k = 0; k < r.n_contacts && k < MHC_MAX_CONTACTS; ++k)
-              cs.append(contact_dict(r.contact[k], r.d_dtY[k], r.d_dQ[k]));
-            d["contacts"] = cs;
+            d[K.status] = py::str(mhc_status_name(r.status));
+            d[K.coarse] = py::bool_(r.coarse != 0);
+            d[K.n_contacts] = py::int_(r.n_contacts);
+            d[K.Fz] = py::float_(r.Fz_N);
+            d[K.Fy] = py::float_(r.Fy_N);
+            d[K.dFy_dtY] = py::float_(r.dFy_dtY_N_per_m);
+            d[K.dFy_dQ] = py::float_(r.dFy_dQ);
+            const int n = r.n_contacts < MHC_MAX_CONTACTS ? r.n_contacts : MHC_MAX_CONTACTS;
+            py::list cs(static_cast<std::size_t>(n));
+            for (int k = 0; k < n; ++k)
+              cs[static_cast<std::size_t>(k)] = contact_dict(K, r.contact[k], r.d_dtY[k], r.d_dQ[k]);
+            d[K.contacts] = cs;
             return d;
           }, py::arg("tY_m"), py::arg("Q_N"),
           "The answer at one point: status, coarse, n_contacts, Fz_N, Fy_N, dFy_dtY_N_per_m, dFy_dQ and the contacts "
           "(each with d_dtY and d_dQ of its fields)")
+      .def("lookup_into", [](const Table& t, double tY_m, double Q_N, TableResult& out) {
+            mhc_table_lookup(t.t, tY_m, Q_N, &out.r);
+            return out.r.status;
+          }, py::arg("tY_m"), py::arg("Q_N"), py::arg("out"),
+          "The answer at one point into `out` (a TableResult, reused); returns its status code (index in "
+          "STATUS_NAMES). The fast single-point lookup: no dict, no allocation")
+      .def("_c_lookup_seconds", [](const Table& t, py::array_t<double, py::array::c_style | py::array::forcecast> tY_m,
+                                   py::array_t<double, py::array::c_style | py::array::forcecast> Q_N, int repeats) {
+            // The benchmark's reference (bench/tables/bench_table_python.py): the C lookup in a C loop
+            // over the points, CPU time of the thread per lookup, one figure per repeat.
+            const std::size_t n = static_cast<std::size_t>(tY_m.size());
+            if (static_cast<std::size_t>(Q_N.size()) != n || n == 0) throw py::value_error("tY_m and Q_N: one non-zero length");
+            const double* ty = tY_m.data();
+            const double* q = Q_N.data();
+            std::vector<double> per;
+            {
+              py::gil_scoped_release nogil;
+              mhc_table_result r;
+              r.struct_size = sizeof r;
+              for (int rep = 0; rep < repeats; ++rep) {
+                timespec a, b;
+                clock_gettime(CLOCK_THREAD_CPUTIME_ID, &a);
+                for (std::size_t i = 0; i < n; ++i) mhc_table_lookup(t.t, ty[i], q[i], &r);
+                clock_gettime(CLOCK_THREAD_CPUTIME_ID, &b);
+                per.push_back((static_cast<double>(b.tv_sec - a.tv_sec) + 1e-9 * static_cast<double>(b.tv_nsec - a.tv_nsec)) /
+                              static_cast<double>(n));
+              }
+            }
+            return per;
+          }, py::arg("tY_m"), py::arg("Q_N"), py::arg("repeats") = 5)
       .def("lookup_many", [](const Table& t, py::array_t<double, py::array::c_style | py::array::forcecast> tY_m,
                              py::array_t<double, py::array::c_style | py::array::forcecast> Q_N) {
             const std::size_t n = static_cast<std::size_t>(tY_m.size());

@@ -382,10 +382,9 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   auto solve_missing = [&](const std::vector<std::pair<double, double>>& pts_mm) {
     std::vector<std::pair<double, double>> todo, si;
     for (const auto& p : pts_mm)
-      if (!solved.count(p)) todo.push_back(p), si.emplace_back(p.first * units::mm, p.second * 1e3);
+      if (!solved.count(p)) todo.push_back(p);
     std::sort(todo.begin(), todo.end());
     todo.erase(std::unique(todo.begin(), todo.end()), todo.end());
-    si.clear();
     for (const auto& p : todo) si.emplace_back(p.first * units::mm, p.second * 1e3);
     const auto res = solve_points(cf, pg, si, pool);
     for (std::size_t k = 0; k < todo.size(); ++k) solved[todo[k]] = res[k];
@@ -424,27 +423,66 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
       cell_fail[c] = e.compared && (e.e_N > opt.tol_N || e.e_pmax > opt.tol_pmax || e.e_area > opt.tol_area);
     }
     if (round >= opt.refine) break;
-    // Halve every t_Y interval with a failing cell (not below min_step_mm).
-    std::vector<double> next;
-    bool split = false;
-    for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i) {
-      next.push_back(tY_mm[i]);
-      bool fail = false;
-      for (std::size_t j = 0; j + 1 < Q_kN.size(); ++j) fail = fail || cell_fail[i * (Q_kN.size() - 1) + j];
-      // A node without an answer leaves its cells without one: halving its intervals narrows
-      // that band.
-      for (std::size_t j = 0; j < Q_kN.size(); ++j)
-        fail = fail || is_failure(nodes[i * Q_kN.size() + j]->status) || is_failure(nodes[(i + 1) * Q_kN.size() + j]->status);
-      if (fail && tY_mm[i + 1] - tY_mm[i] >= 2 * opt.min_step_mm - 1e-12) {
-        next.push_back(rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])));
-        split = true;
+    // Which way to halve a failing cell (docs/tables.md "Check and refinement"): its edges'
+    // midpoints measure the interpolation along one axis alone, (t_Y midpoint, Q node) along t_Y
+    // and (t_Y node, Q midpoint) along Q. Q is halved when the edges along t_Y hold their
+    // tolerances and those along Q come nearer to missing theirs; else t_Y. Where both miss
+    // (flange onset, a contact appearing) t_Y, along which contacts jump: a halved Q interval
+    // adds a row of nodes across the whole t_Y range.
+    const std::size_t nQc = Q_kN.size() - 1;
+    std::vector<std::pair<double, double>> edges;
+    for (std::size_t c = 0; c < cell_fail.size(); ++c)
+      if (cell_fail[c]) {
+        const std::size_t i = c / nQc, j = c % nQc;
+        const double tm = rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])), qm = 0.5 * (Q_kN[j] + Q_kN[j + 1]);
+        edges.insert(edges.end(), {{tm, Q_kN[j]}, {tm, Q_kN[j + 1]}, {tY_mm[i], qm}, {tY_mm[i + 1], qm}});
       }
-    }
-    next.push_back(tY_mm.back());
-    if (!split) break;
-    tY_mm = next;
+    solve_missing(edges);
+    // An edge midpoint's error in units of its tolerances (> 1: missed; 0 where not compared).
+    auto score = [&](const std::pair<double, double>& p) {
+      look.lookup(p.first * units::mm, p.second * 1e3, ans);
+      const TableCheckError e = compare(ans, solved.at(p), p.first * units::mm, p.second * 1e3);
+      if (!e.compared) return 0.0;
+      return std::max({e.e_N / opt.tol_N, e.e_pmax / opt.tol_pmax, e.e_area / opt.tol_area});
+    };
+    std::vector<std::uint8_t> split_t(tY_mm.size() - 1, 0), split_q(nQc, 0);
+    for (std::size_t c = 0, k = 0; c < cell_fail.size(); ++c)
+      if (cell_fail[c]) {
+        const double sT = std::max(score(edges[k]), score(edges[k + 1]));
+        const double sQ = std::max(score(edges[k + 2]), score(edges[k + 3]));
+        k += 4;
+        const std::size_t j = c % nQc;
+        const bool q_can = Q_kN[j + 1] - Q_kN[j] >= 2 * opt.min_Q_step_kN - 1e-12;  // else t_Y is all that is left
+        const bool q = q_can && sT <= 1 && sQ > sT;
+        split_q[j] |= q;
+        split_t[c / nQc] |= !q;
+      }
+    // A node without an answer leaves its cells without one: halving its t_Y intervals narrows
+    // that band.
+    for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i)
+      for (std::size_t j = 0; j < Q_kN.size(); ++j)
+        split_t[i] |= is_failure(nodes[i * Q_kN.size() + j]->status) || is_failure(nodes[(i + 1) * Q_kN.size() + j]->status);
+    // Halve the marked intervals (not below min_step_mm, min_Q_step_kN).
+    auto halve = [](const std::vector<double>& x, const std::vector<std::uint8_t>& mark, double min_step, bool round_mm) {
+      std::vector<double> next;
+      for (std::size_t i = 0; i + 1 < x.size(); ++i) {
+        next.push_back(x[i]);
+        if (mark[i] && x[i + 1] - x[i] >= 2 * min_step - 1e-12) {
+          const double m = 0.5 * (x[i] + x[i + 1]);
+          next.push_back(round_mm ? rounded_mm(m) : m);
+        }
+      }
+      next.push_back(x.back());
+      return next;
+    };
+    std::vector<double> next_t = halve(tY_mm, split_t, opt.min_step_mm, true);
+    std::vector<double> next_q = halve(Q_kN, split_q, opt.min_Q_step_kN, false);
+    if (next_t.size() == tY_mm.size() && next_q.size() == Q_kN.size()) break;
+    tY_mm = next_t;
+    Q_kN = next_q;
     if (!opt.quiet)
-      err << "mhcontact table: refinement " << round + 1 << ": " << tY_mm.size() << " t_Y nodes\n";
+      err << "mhcontact table: refinement " << round + 1 << ": " << tY_mm.size() << " t_Y nodes, " << Q_kN.size()
+          << " Q nodes\n";
   }
   data.cell_coarse = cell_fail;
 

@@ -18,8 +18,9 @@ namespace mh {
 struct TableMakeOptions {
   unsigned threads = 0;       ///< worker threads; 0 = all cores (default). The table does not depend on it.
   bool check = true;          ///< solve every cell's centre directly and measure the error (default yes)
-  int refine = 3;             ///< halvings of a t_Y interval whose cells miss a tolerance (default 3; 0: none)
+  int refine = 3;             ///< rounds of halving the t_Y and Q intervals whose cells miss a tolerance (default 3; 0: none)
   double min_step_mm = 0.05;  ///< no t_Y interval is halved below this (default 0.05 mm)
+  double min_Q_step_kN = 5;   ///< no Q interval is halved below this (default 5 kN)
   double tol_N = 0.01;        ///< contact normal force: |ΔN| / Q (default 1 %)
   double tol_pmax = 0.03;     ///< peak pressure, relative (default 3 %)
   double tol_area = 0.05;     ///< total area, relative (default 5 %)

@@ -14,13 +14,13 @@ tY_mm, Fz_kN, pmax_MPa, ...), with NaN where the table has an empty cell.
 """
 import numpy as _np
 
-from ._core import (INTERFACE_VERSION, InputError, METHOD_NAMES, STATUS_NAMES, UnsupportedError, Pair, Profile,
-                    Table, Wheelset, __version__, abi_version, fft_backend)
+from ._core import (INTERFACE_VERSION, InputError, MAX_CONTACTS, METHOD_NAMES, STATUS_NAMES, UnsupportedError, Pair,
+                    Profile, Table, TableResult, Wheelset, __version__, abi_version, fft_backend)
 
 from .fleet import fleet, read_tables
 
-__all__ = ["fleet", "read_tables", "Pair", "Profile", "Table", "Wheelset", "InputError", "UnsupportedError",
-           "STATUS_NAMES", "METHOD_NAMES", "CASE_COLUMNS", "TANGENTIAL_COLUMNS", "INTERFACE_VERSION", "__version__",
+__all__ = ["fleet", "read_tables", "Pair", "Profile", "Table", "TableResult", "MAX_CONTACTS", "Wheelset", "InputError",
+           "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES", "CASE_COLUMNS", "TANGENTIAL_COLUMNS", "INTERFACE_VERSION", "__version__",
            "abi_version", "fft_backend"]
 
 #: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp), then the

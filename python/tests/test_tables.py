@@ -68,6 +68,50 @@ def test_table_lookup(table_path):
     print(f"lookup_many: {dt / len(tY) * 1e6:.3f} us a point, {dt / max(1, m['n_contacts'].sum()) * 1e6:.3f} us a contact")
 
 
+def test_table_lookup_into(table_path):
+    """lookup_into fills a reused TableResult whose views equal lookup's dicts at every point, the
+    slots past n_contacts zero; the views taken once follow later lookups (docs/python.md)."""
+    t = mhcontact.Table(table_path)
+    r = mhcontact.TableResult()
+    fields = mhcontact.TableResult.FIELDS
+    assert fields[0] == "N_N" and len(fields) == 15
+    values, d_dtY, d_dQ, track = r.values, r.d_dtY, r.d_dQ, r.track
+    assert values.shape == (mhcontact.MAX_CONTACTS, len(fields))
+    seen_two = False
+    for tY in np.linspace(-4.2e-3, 10.1e-3, 301):
+        for Q in (20e3, 47e3, 139e3):
+            code = t.lookup_into(tY, Q, r)
+            one = t.lookup(tY, Q)
+            assert mhcontact.STATUS_NAMES[code] == r.status == one["status"]
+            assert r.status_code == code
+            assert (r.coarse, r.n_contacts) == (one["coarse"], one["n_contacts"])
+            assert (r.Fz_N, r.Fy_N, r.dFy_dtY_N_per_m, r.dFy_dQ) == (
+                one["Fz_N"], one["Fy_N"], one["dFy_dtY_N_per_m"], one["dFy_dQ"])
+            assert (r.tY_m, r.Q_N) == (tY, Q)
+            n = min(r.n_contacts, mhcontact.MAX_CONTACTS)
+            seen_two = seen_two or n > 1
+            for k, c in enumerate(one["contacts"]):
+                assert track[k] == c["track"]
+                for f, name in enumerate(fields):
+                    assert values[k, f] == c[name]
+                    assert d_dtY[k, f] == c["d_dtY"][name]
+                    assert d_dQ[k, f] == c["d_dQ"][name]
+            assert not values[n:].any() and not d_dtY[n:].any() and not track[n:].any()
+    assert seen_two
+    # The pattern of docs/python.md.
+    N = r.values[:, 0]
+    assert t.lookup_into(2e-3, 60e3, r) == 0
+    assert N[:r.n_contacts].sum() == pytest.approx(t.lookup(2e-3, 60e3)["contacts"][0]["N_N"], rel=1e-15)
+    # Outside the table: out_of_range, no contact.
+    assert mhcontact.STATUS_NAMES[t.lookup_into(11e-3, 60e3, r)] == "out_of_range"
+    assert r.n_contacts == 0 and not values.any()
+    # The views keep the result alive.
+    v = mhcontact.TableResult().values
+    assert v.shape == (mhcontact.MAX_CONTACTS, len(fields)) and not v.any()
+    with pytest.raises(TypeError):
+        t.lookup_into(0.0, 60e3, None)
+
+
 def test_table_errors(tmp_path, table_path):
     bad = tmp_path / "bad.csv"
     bad.write_text("tY_mm,Q_kN\n1,2\n")
@@ -75,3 +119,14 @@ def test_table_errors(tmp_path, table_path):
         mhcontact.Table(str(bad))
     with pytest.raises(ValueError, match="differ in length"):
         mhcontact.Table(table_path).lookup_many(np.zeros(3), np.zeros(2))
+
+
+def test_bench_table_python_runs(table_path):
+    """bench/tables/bench_table_python.py (docs/performance.md "Contact tables") runs as shown, on a
+    short history: every way timed, the C lookup first with ratio 1."""
+    import sys
+    out = subprocess.run([sys.executable, os.path.join(SRC, "bench", "tables", "bench_table_python.py"), table_path, "500"],
+                         capture_output=True, text=True, check=True).stdout
+    rows = {l.split()[0]: l.split()[1:] for l in out.splitlines()[2:]}
+    assert list(rows) == ["C", "lookup_into", "lookup", "lookup_many", "loop"]
+    assert float(rows["C"][2]) == 1.0 and all(float(v[0]) > 0 for v in rows.values())

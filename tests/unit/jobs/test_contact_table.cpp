@@ -19,6 +19,7 @@
 #include "input/contact_table.hpp"
 #include "jobs/contact_table_make.hpp"
 #include "jobs/run.hpp"
+#include "wheelset_contact/wheelset_contact.hpp"
 
 namespace {
 
@@ -275,4 +276,87 @@ TEST_CASE("table: a cell whose area misses its tolerance is coarse and not ok", 
     CHECK(a.status != CaseStatus::Ok);
   }
   CHECK(area_only > 0);  // the pair has such cells (else the test tests nothing)
+}
+
+TEST_CASE("table refinement in Q: one 120 kN load interval is halved until N, pmax and area hold", "[tables]") {
+  // tests/data/tables/worn-table-q.json: the worn measured pair of the test above, t_Y -3 ... 3 mm,
+  // with Q nodes 20 and 140 kN only: along Q the peak pressure grows about as Q^(1/3) and the
+  // area as Q^(2/3) (Hertz), so the interpolant between two load nodes (a straight line) misses
+  // pmax by 8.2 % and the area by 8.4 % at the cell centres (`mhcontact table ... --refine 0`)
+  // while t_Y at 1 mm is fine. The maker must halve Q, not t_Y, and then hold the tolerances at loads it
+  // neither checked nor refined on (0.3 and 0.7 of the 120 kN span, quarter points in t_Y)
+  // against direct strip solves. Broken on purpose (no Q interval ever marked for halving): the
+  // maker halved t_Y three times in vain (to 0.125 mm), Q kept its 2 nodes, cells stayed coarse,
+  // and this test failed.
+  const CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/worn-table-q.json", true);
+  const PairGeometry pg = build_pair_geometry(cf);
+  std::ostringstream err;
+  TableMakeOptions opt;
+  opt.threads = 2;
+  opt.quiet = true;
+  const TableMade made = make_contact_table(cf, pg, opt, err);
+  INFO("Q nodes " << made.data.header["Q_kN_nodes"].dump() << ", t_Y nodes " << made.data.header["tY_mm_nodes"].dump());
+  CHECK(made.data.nQ() > 2);
+  CHECK(made.data.nT() == 7);  // t_Y at 1 mm holds: not halved
+  CHECK(made.data.header["coarse_cells"].empty());
+  const ContactTableLookup look(made.data);
+  TableAnswer a;
+  CaseResult r;
+  int compared = 0;
+  for (double t_mm = -2.75; t_mm < 3; t_mm += 1.5)
+    for (double Q_kN : {56.0, 104.0}) {
+      const double t = t_mm * 1e-3, Q = Q_kN * 1e3;
+      r = solve_contact(pg.geo, cf.material, t, Q, cf.method_options());
+      look.lookup(t, Q, a);
+      REQUIRE(r.status == CaseStatus::Ok);
+      REQUIRE(a.status == CaseStatus::Ok);
+      REQUIRE(r.patches.size() == 1);
+      REQUIRE(a.n_contacts == 1);
+      INFO("t_Y = " << t_mm << " mm, Q = " << Q_kN << " kN");
+      CHECK(std::fabs(a.c[0].v[kTabN] - r.patches[0].N) / Q < 0.01);
+      CHECK(a.c[0].v[kTabPmax] == Approx(r.pmax).epsilon(0.03));
+      CHECK(a.c[0].v[kTabArea] == Approx(r.area).epsilon(0.05));
+      ++compared;
+    }
+  CHECK(compared == 8);
+}
+
+TEST_CASE("a wheelset from two pair tables: lookups at t_Y = +y (left) and -y (right) are the wheelset call's wheels", "[tables]") {
+  // docs/tables.md: a table is one pair; a wheelset is the left pair's table at t_Y = y and the
+  // right pair's at t_Y = -y (the wheelset call's placement, docs/c-api.md "Frame"), each at its
+  // wheel's load. The worn measured pair on both sides (one table serves both) against the
+  // wheelset call by the strip method with unequal loads: each wheel's Fy and Fz (pair frame)
+  // within the table's tolerance of N (1 % of that wheel's Q). Broken on purpose (the right
+  // wheel looked up at t_Y = +y): the right wheel's Fy missed at 4 of its 6 points, by up to
+  // 3.1 % of Q, and this failed.
+  const CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/worn-table.json", true);
+  const PairGeometry pg = build_pair_geometry(cf);
+  std::ostringstream err;
+  TableMakeOptions opt;
+  opt.threads = 2;
+  opt.quiet = true;
+  const ContactTableLookup look(make_contact_table(cf, pg, opt, err).data);
+  const WheelsetContact ws(pg.geo, pg.geo, cf.track, cf.material, cf.method_options(), {});
+  WheelsetWorkspace work;
+  WheelsetResult r;
+  TableAnswer a;
+  WheelsetPose pose;
+  pose.Q_left = 60e3;
+  pose.Q_right = 95e3;
+  int compared = 0;
+  for (double y_mm = -5.3; y_mm < 6; y_mm += 1.9) {
+    pose.y = y_mm * 1e-3;
+    ws.step(pose, WheelsetStepOptions(), r, work);
+    for (const WheelResult* w : {&r.left, &r.right}) {
+      const double Q = w == &r.left ? pose.Q_left : pose.Q_right;
+      INFO("y = " << y_mm << " mm, " << (w == &r.left ? "left" : "right") << " wheel, t_Y = " << w->tY * 1e3 << " mm");
+      REQUIRE(w->r.status == CaseStatus::Ok);
+      look.lookup(w == &r.left ? pose.y : -pose.y, Q, a);
+      REQUIRE(a.status == CaseStatus::Ok);
+      CHECK(std::fabs(a.Fy - w->r.Fy) / Q < 0.01);
+      CHECK(std::fabs(a.Fz - Q) / Q < 0.01);
+      ++compared;
+    }
+  }
+  CHECK(compared == 12);
 }
