@@ -462,7 +462,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
         }
       }
       if (have != want)
-        bad_results(d.path, 0, "it holds " + std::to_string(have) + " " + key + ", its shard.json " + std::to_string(want));
+        bad_results(d.path, static_cast<std::size_t>(recs.data() - d.text.data()), "it holds " + std::to_string(have) + " " + key + ", its shard.json " + std::to_string(want));
     }
     w.end_array();
     w.member("summary", summary);
