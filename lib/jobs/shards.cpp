@@ -15,6 +15,13 @@
 
 #include <nlohmann/json.hpp>
 
+#if defined(__unix__) || defined(__APPLE__)
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
+
 #include "core/errors.hpp"
 #include "output/json_stream.hpp"
 #include "output/output_file.hpp"
@@ -120,6 +127,45 @@ void rebase_profile_files(Json& inputs, const fs::path& shard_dir, const fs::pat
   }
 }
 
+
+// A shard's results.json, read-only: mapped where the system has mmap (no copy of hundreds of MB
+// into the process, no zeroed buffer), else read whole.
+class ShardText {
+ public:
+  explicit ShardText(const std::string& path) {
+#if defined(__unix__) || defined(__APPLE__)
+    const int fd = ::open(path.c_str(), O_RDONLY);
+    if (fd < 0) throw InputError(path, "", "cannot read (is this the output directory of a `run --shard`?)");
+    struct stat st {};
+    if (::fstat(fd, &st) == 0 && st.st_size > 0) {
+      size_ = static_cast<std::size_t>(st.st_size);
+      void* p = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
+      if (p != MAP_FAILED) map_ = p;
+    }
+    ::close(fd);
+    if (map_) {
+      text_ = std::string_view(static_cast<const char*>(map_), size_);
+      return;
+    }
+#endif
+    copy_ = read_all(path);
+    text_ = copy_;
+  }
+  ~ShardText() {
+#if defined(__unix__) || defined(__APPLE__)
+    if (map_) ::munmap(map_, size_);
+#endif
+  }
+  ShardText(const ShardText&) = delete;
+  ShardText& operator=(const ShardText&) = delete;
+  std::string_view text() const { return text_; }
+
+ private:
+  void* map_ = nullptr;
+  std::size_t size_ = 0;
+  std::string copy_;
+  std::string_view text_;
+};
 
 // results.json as JsonObjectStream (output/json_stream.hpp) writes it, split as text without
 // parsing it: an object's members stand one per line at its indentation `pad` (2 in the
@@ -369,18 +415,22 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     // Memory: one shard's results.json at a time.
     const std::string key = batch ? "pairs" : "cases";
     struct Doc {
-      std::string path, text;
+      std::string path;
+      ShardText file;
+      std::string_view text;
       std::vector<JsonMember> members;
+      explicit Doc(const std::string& p) : path(p), file(p), text(file.text()) {}
     };
     auto load = [&](unsigned k) {
-      Doc d{shards[k].dir + "/results.json", read_all(shards[k].dir + "/results.json"), {}};
+      auto doc = std::make_unique<Doc>(shards[k].dir + "/results.json");
+      Doc& d = *doc;
       const std::size_t past = split_object(d.text, 0, 2, &d.members, d.path);
       if (d.text.substr(past) != "\n") bad_results(d.path, past, "text after the document's end");
       if (d.members.empty() || d.members.front().key != "schema" || d.members.back().key != "summary")
         bad_results(d.path, 0, "its first member must be \"schema\" and its last \"summary\"");
       const JsonMember* recs = find_member(d.members, key);
       if (!recs) bad_results(d.path, 0, "no \"" + key + "\" array");
-      return d;
+      return doc;
     };
     // A run's "geometry" records (one per (t_Y, ellipse), before the cases) are spread over the
     // shards like geometry.csv: a first pass keeps each record once, in shard order.
@@ -389,7 +439,8 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     if (!batch) {
       std::unordered_set<std::string> seen;
       for (unsigned k = 0; k < N; ++k) {
-        const Doc d = load(k);
+        const auto doc = load(k);
+        const Doc& d = *doc;
         const JsonMember* g = find_member(d.members, "geometry");
         if (!g) continue;
         has_geometry = true;
@@ -416,7 +467,8 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     JsonObjectStream w(f.stream());
     std::string schema;
     for (unsigned k = 0; k < N; ++k) {
-      const Doc d = load(k);
+      const auto doc = load(k);
+      const Doc& d = *doc;
       if (k == 0) {
         schema = std::string(d.members.front().value);
         for (const auto& m : d.members) {
