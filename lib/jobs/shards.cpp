@@ -496,10 +496,11 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
       } else {
         // A pair's record is an object (indentation 6) with its own arrays: copied member by
         // member, its "inputs" rebased.
-        for (std::size_t p = 0; p < recs.size();) {
-          if (!text_at(recs, p, "    {")) bad_results(d.path, p, "a pair record expected at indentation 4");
+        const std::size_t begin = static_cast<std::size_t>(recs.data() - d.text.data()), stop = begin + recs.size();
+        for (std::size_t p = begin; p < stop;) {
+          if (!text_at(d.text, p, "    {")) bad_results(d.path, p, "a pair record expected at indentation 4");
           std::vector<JsonMember> pm;
-          const std::size_t past = split_object(recs, p + 4, 6, &pm, d.path);
+          const std::size_t past = split_object(d.text, p + 4, 6, &pm, d.path);
           w.element_open();
           JsonObjectStream pw(f.stream(), 6);
           for (const auto& m : pm) {
@@ -508,8 +509,8 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
           }
           pw.end();
           ++have;
-          if (past == recs.size()) break;
-          if (!text_at(recs, past, ",\n")) bad_results(d.path, past, "pair records not separated by a comma and a newline");
+          if (past == stop) break;
+          if (past > stop || !text_at(d.text, past, ",\n")) bad_results(d.path, past, "pair records not separated by a comma and a newline");
           p = past + 2;
         }
       }
