@@ -6,14 +6,21 @@
 #include <map>
 #include <memory>
 #include <ostream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <unordered_set>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
 
 #include "core/errors.hpp"
 #include "output/json_stream.hpp"
@@ -44,9 +51,11 @@ namespace {
 std::string read_all(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "cannot read (is this the output directory of a `run --shard`?)");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  in.seekg(0, std::ios::end);
+  std::string text(static_cast<std::size_t>(std::max<std::streamoff>(in.tellg(), 0)), '\0');
+  in.seekg(0);
+  if (!in.read(text.data(), static_cast<std::streamsize>(text.size()))) throw InputError(path, "", "cannot read it to its end");
+  return text;
 }
 
 // Open a shard's CSV file and check its header against `header` (set from the first shard);
@@ -70,7 +79,7 @@ void append_csv(const std::string& path, std::ostream& out, std::string* header,
 }
 
 // geometry.csv of the shards: rows in shard order, a row whose key (its first `key_fields`
-// fields: tY_mm,ellipse, or pair,tY_mm,ellipse) an earlier shard already wrote is skipped, so the
+// fields: tY_mm,ellipse, in a case file's shards) an earlier shard already wrote is skipped, so the
 // rows are those of one run: each (t_Y, ellipse) once, in order of first appearance in case order.
 // Memory: the keys (a few per distinct t_Y).
 void append_csv_dedupe(const std::string& path, std::ostream& out, std::string* header, bool with_header,
@@ -116,6 +125,122 @@ void rebase_profile_files(Json& inputs, const fs::path& shard_dir, const fs::pat
     const fs::path rel = fs::relative(abs, fs::absolute(out_dir, ec), ec);
     p["file"] = (ec || rel.empty()) ? abs.lexically_normal().string() : rel.string();
   }
+}
+
+
+// A shard's results.json, read-only: mapped where the system has mmap (no copy of hundreds of MB
+// into the process, no zeroed buffer), else read whole.
+class ShardText {
+ public:
+  explicit ShardText(const std::string& path) {
+#if defined(__unix__) || defined(__APPLE__)
+    const int fd = ::open(path.c_str(), O_RDONLY);
+    if (fd < 0) throw InputError(path, "", "cannot read (is this the output directory of a `run --shard`?)");
+    struct stat st {};
+    if (::fstat(fd, &st) == 0 && st.st_size > 0) {
+      size_ = static_cast<std::size_t>(st.st_size);
+      void* p = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
+      if (p != MAP_FAILED) map_ = p;
+    }
+    ::close(fd);
+    if (map_) {
+      text_ = std::string_view(static_cast<const char*>(map_), size_);
+      return;
+    }
+#endif
+    copy_ = read_all(path);
+    text_ = copy_;
+  }
+  ~ShardText() {
+#if defined(__unix__) || defined(__APPLE__)
+    if (map_) ::munmap(map_, size_);
+#endif
+  }
+  ShardText(const ShardText&) = delete;
+  ShardText& operator=(const ShardText&) = delete;
+  std::string_view text() const { return text_; }
+
+ private:
+  void* map_ = nullptr;
+  std::size_t size_ = 0;
+  std::string copy_;
+  std::string_view text_;
+};
+
+// results.json as JsonObjectStream (output/json_stream.hpp) writes it, split as text without
+// parsing it: an object's members stand one per line at its indentation `pad` (2 in the
+// document, 6 in a batch's pair record), `"key": value`, the value's continuation lines indented
+// deeper, its closing bracket at `pad`; a streamed array's records one per line at 2 × pad.
+// JSON strings hold no raw newline, so a line of exactly `pad` spaces and a quote after a comma
+// starts the next member, and a line of `pad` - 2 spaces and `}` closes the object.
+struct JsonMember {
+  std::string key;
+  std::string_view value;  // as it stands after `"key": `
+};
+
+bool text_at(std::string_view t, std::size_t p, std::string_view s) { return p <= t.size() && t.substr(p, s.size()) == s; }
+
+[[noreturn]] void bad_results(const std::string& path, std::size_t at, const std::string& what) {
+  throw InputError(path, "at byte " + std::to_string(at), "not a results.json as mhcontact run writes it: " + what,
+                   "give the shard directories as `run --shard` wrote them (re-run that shard)");
+}
+
+// The members of the object whose `{` is t[open]; returns the index just past its `}`.
+std::size_t split_object(std::string_view t, std::size_t open, std::size_t pad, std::vector<JsonMember>* out, const std::string& path) {
+  const std::string lead = "\n" + std::string(pad, ' '), close = "\n" + std::string(pad - 2, ' ') + "}";
+  if (open >= t.size() || t[open] != '{') bad_results(path, open, "an object expected");
+  std::size_t p = open + 1;
+  if (text_at(t, p, close)) return p + close.size();
+  for (;;) {
+    if (!text_at(t, p, lead + "\"")) bad_results(path, p, "a member expected at indentation " + std::to_string(pad));
+    const std::size_t k = p + lead.size() + 1, ke = t.find('"', k);
+    if (ke == std::string_view::npos || !text_at(t, ke + 1, ": ")) bad_results(path, k, "a member's key expected");
+    std::string key(t.substr(k, ke - k));
+    const std::size_t v = ke + 3;
+    for (std::size_t q = v;; ++q) {
+      q = t.find('\n', q);
+      if (q == std::string_view::npos) bad_results(path, v, "the document ends inside the member \"" + key + "\"");
+      if (t[q - 1] == ',' && text_at(t, q, lead + "\"")) {
+        out->push_back({std::move(key), t.substr(v, q - 1 - v)});
+        p = q;
+        break;
+      }
+      if (text_at(t, q, close)) {
+        out->push_back({std::move(key), t.substr(v, q - v)});
+        return q + close.size();
+      }
+    }
+  }
+}
+
+// The records of a streamed array member (`value` of a member at indentation `pad`) as
+// JsonObjectStream::elements_verbatim takes them; empty for `[]`.
+std::string_view array_records(std::string_view value, std::size_t pad, const std::string& path, const std::string& key) {
+  if (value == "[]") return {};
+  const std::string tail = "\n" + std::string(pad, ' ') + "]";
+  if (value.size() < 2 + tail.size() || value.substr(0, 2) != "[\n" || value.substr(value.size() - tail.size()) != tail)
+    bad_results(path, 0, "\"" + key + "\" is not an array of records");
+  return value.substr(2, value.size() - 2 - tail.size());
+}
+
+const JsonMember* find_member(const std::vector<JsonMember>& ms, const std::string& key) {
+  for (const auto& m : ms)
+    if (m.key == key) return &m;
+  return nullptr;
+}
+
+// A member `inputs` written as the member "inputs" of a stream at `pad`: its profile files
+// rebased from the shard's directory to the merged one (parsed: a few hundred bytes).
+void write_inputs_rebased(JsonObjectStream& w, std::string_view value, const std::string& shard_dir, const std::string& out_dir,
+                          const std::string& path) {
+  nlohmann::ordered_json in;
+  try {
+    in = nlohmann::ordered_json::parse(value);
+  } catch (const nlohmann::json::exception& e) {
+    bad_results(path, 0, std::string("its \"inputs\" do not parse: ") + e.what());
+  }
+  rebase_profile_files(in, shard_dir, out_dir);
+  w.member("inputs", in);
 }
 
 }  // namespace
@@ -232,7 +357,9 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     std::string header;
     std::unordered_set<std::string> seen;
     for (unsigned k = 0; k < N; ++k) {
-      if (t == "geometry.csv") append_csv_dedupe(shards[k].dir + "/" + t, f.stream(), &header, k == 0, batch ? 3 : 2, seen);
+      // A batch's shards hold disjoint pairs, and its geometry.csv rows start with the pair: no
+      // row can repeat.
+      if (t == "geometry.csv" && !batch) append_csv_dedupe(shards[k].dir + "/" + t, f.stream(), &header, k == 0, 2, seen);
       else append_csv(shards[k].dir + "/" + t, f.stream(), &header, k == 0);
     }
     f.commit();
@@ -279,99 +406,120 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     }
   }
   if (json) {
-    // Each shard's results.json holds the same head, its own cases (or pairs) and its summary:
-    // parse each, keep the first head, stream the records of all in order, write the summary of
-    // the whole run. Memory: one shard's results.json at a time.
+    // Each shard's results.json holds the same head, its own cases (or pairs) and its summary.
+    // Copied as text (split_object: no parse, no re-serialisation, so the merge costs about a
+    // copy of the bytes): the first shard's head, the records of all in order, then the summary
+    // of the whole run. Parsed: only the "inputs" (rebased to the merged directory) and, for a
+    // case file, the "geometry" records (to keep each once). Checked: the layout, the schema
+    // (the same as the first shard's) and the number of records (the shard's slice).
+    // Memory: one shard's results.json at a time.
     const std::string key = batch ? "pairs" : "cases";
+    struct Doc {
+      std::string path;
+      ShardText file;
+      std::string_view text;
+      std::vector<JsonMember> members;
+      explicit Doc(const std::string& p) : path(p), file(p), text(file.text()) {}
+    };
+    auto load = [&](unsigned k) {
+      auto doc = std::make_unique<Doc>(shards[k].dir + "/results.json");
+      Doc& d = *doc;
+      const std::size_t past = split_object(d.text, 0, 2, &d.members, d.path);
+      if (d.text.substr(past) != "\n") bad_results(d.path, past, "text after the document's end");
+      if (d.members.empty() || d.members.front().key != "schema" || d.members.back().key != "summary")
+        bad_results(d.path, 0, "its first member must be \"schema\" and its last \"summary\"");
+      const JsonMember* recs = find_member(d.members, key);
+      if (!recs) bad_results(d.path, 0, "no \"" + key + "\" array");
+      return doc;
+    };
     // A run's "geometry" records (one per (t_Y, ellipse), before the cases) are spread over the
-    // shards like geometry.csv: a first pass reads each shard's head (its cases skipped while
-    // parsing) and keeps each record once, in shard order.
-    std::vector<nlohmann::ordered_json> geometry;
+    // shards like geometry.csv: a first pass keeps each record once, in shard order.
+    std::vector<std::string> geometry;
     bool has_geometry = false;
     if (!batch) {
       std::unordered_set<std::string> seen;
       for (unsigned k = 0; k < N; ++k) {
-        const std::string path = shards[k].dir + "/results.json";
-        nlohmann::ordered_json t;
-        try {
-          t = nlohmann::ordered_json::parse(read_all(path), [](int depth, nlohmann::ordered_json::parse_event_t ev,
-                                                               nlohmann::ordered_json& parsed) {
-            return !(depth == 1 && ev == nlohmann::ordered_json::parse_event_t::key && parsed == "cases");
-          });
-        } catch (const nlohmann::json::exception& e) {
-          throw InputError(path, "", std::string("not a results.json of mhcontact run: ") + e.what());
-        }
-        if (!t.is_object() || !t.contains("geometry")) continue;
-        if (!t["geometry"].is_array()) throw InputError(path, "", "not a results.json of mhcontact run (geometry is not an array)");
+        const auto doc = load(k);
+        const Doc& d = *doc;
+        const JsonMember* g = find_member(d.members, "geometry");
+        if (!g) continue;
         has_geometry = true;
-        for (auto& rec : t["geometry"]) {
-          if (!seen.insert(rec.value("tY_mm", nlohmann::ordered_json()).dump() + "," + rec.value("ellipse", nlohmann::ordered_json()).dump()).second) continue;
-          geometry.push_back(std::move(rec));
+        std::string_view recs = array_records(g->value, 2, d.path, "geometry");
+        const std::string sep = ",\n    ";
+        while (!recs.empty()) {
+          if (!text_at(recs, 0, "    ")) bad_results(d.path, 0, "a \"geometry\" record not at indentation 4");
+          const std::size_t e = recs.find(sep);
+          const std::string_view rec = recs.substr(4, e == std::string_view::npos ? std::string_view::npos : e - 4);
+          recs = e == std::string_view::npos ? std::string_view() : recs.substr(e + 2);
+          nlohmann::ordered_json r;
+          try {
+            r = nlohmann::ordered_json::parse(rec);
+          } catch (const nlohmann::json::exception& ex) {
+            bad_results(d.path, 0, std::string("a \"geometry\" record does not parse: ") + ex.what());
+          }
+          if (!r.is_object()) bad_results(d.path, 0, "a \"geometry\" record is not an object");
+          if (seen.insert(r.value("tY_mm", nlohmann::ordered_json()).dump() + "," + r.value("ellipse", nlohmann::ordered_json()).dump()).second)
+            geometry.emplace_back(rec);
         }
       }
     }
     OutputFile f(rd.path("results.json"));
-    std::unique_ptr<JsonObjectStream> w;
+    JsonObjectStream w(f.stream());
+    std::string schema;
     for (unsigned k = 0; k < N; ++k) {
-      const std::string path = shards[k].dir + "/results.json";
-      nlohmann::ordered_json t;  // keeps the members in the order they were written
-      try {
-        t = nlohmann::ordered_json::parse(read_all(path));
-      } catch (const nlohmann::json::exception& e) {
-        throw InputError(path, "", std::string("not a results.json of mhcontact run: ") + e.what());
-      }
-      if (!t.is_object() || !t.contains(key) || !t[key].is_array()) throw InputError(path, "", "not a results.json of mhcontact run");
+      const auto doc = load(k);
+      const Doc& d = *doc;
       if (k == 0) {
-        w = std::make_unique<JsonObjectStream>(f.stream());
-        for (auto it = t.begin(); it != t.end(); ++it) {
-          if (it.key() == key || it.key() == "summary") continue;
-          if (it.key() == "inputs") {
-            nlohmann::ordered_json in = it.value();
-            rebase_profile_files(in, shards[k].dir, out_dir);
-            w->member("inputs", in);
-            continue;
+        schema = std::string(d.members.front().value);
+        for (const auto& m : d.members) {
+          if (m.key == key || m.key == "summary") continue;
+          if (m.key == "inputs") write_inputs_rebased(w, m.value, shards[k].dir, out_dir, d.path);
+          else if (m.key == "geometry" && has_geometry) {
+            w.begin_array("geometry");
+            for (const auto& g : geometry) w.element(g);
+            w.end_array();
+          } else {
+            w.member_verbatim(m.key, m.value);
           }
-          if (it.key() == "geometry" && has_geometry) {
-            // Streamed as run_job writes it: one record a line.
-            w->begin_array("geometry");
-            for (const auto& g : geometry) w->element_json(g);
-            w->end_array();
-            continue;
-          }
-          w->member(it.key(), it.value());
         }
-        w->begin_array(key);
+        w.begin_array(key);
+      } else if (d.members.front().value != schema) {
+        bad_results(d.path, 0, "schema " + std::string(d.members.front().value) + ", the first shard's is " + schema);
       }
-      for (const auto& rec : t[key]) {
-        if (!batch) { w->element_json(rec); continue; }
-        // A pair's record is an object with its own streamed case array (as batch_job writes it).
-        w->element_open();
-        JsonObjectStream pw(f.stream(), 6);
-        for (auto it = rec.begin(); it != rec.end(); ++it) {
-          if (it.key() == "cases") continue;
-          if (it.key() == "geometry" && it.value().is_array()) {  // streamed, as batch_job writes it
-            pw.begin_array("geometry");
-            for (const auto& g : it.value()) pw.element_json(g);
-            pw.end_array();
-            continue;
+      const std::string_view recs = array_records(find_member(d.members, key)->value, 2, d.path, key);
+      const std::uint64_t want = shards[k].meta["end"].get<std::uint64_t>() - shards[k].meta["first"].get<std::uint64_t>();
+      std::uint64_t have = 0;
+      if (!batch) {
+        // A case record is one line: the records are copied in one piece.
+        have = recs.empty() ? 0 : 1 + static_cast<std::uint64_t>(std::count(recs.begin(), recs.end(), '\n'));
+        w.elements_verbatim(recs);
+      } else {
+        // A pair's record is an object (indentation 6) with its own arrays: copied member by
+        // member, its "inputs" rebased.
+        const std::size_t begin = static_cast<std::size_t>(recs.data() - d.text.data()), stop = begin + recs.size();
+        for (std::size_t p = begin; p < stop;) {
+          if (!text_at(d.text, p, "    {")) bad_results(d.path, p, "a pair record expected at indentation 4");
+          std::vector<JsonMember> pm;
+          const std::size_t past = split_object(d.text, p + 4, 6, &pm, d.path);
+          w.element_open();
+          JsonObjectStream pw(f.stream(), 6);
+          for (const auto& m : pm) {
+            if (m.key == "inputs") write_inputs_rebased(pw, m.value, shards[k].dir, out_dir, d.path);
+            else pw.member_verbatim(m.key, m.value);
           }
-          if (it.key() == "inputs") {
-            nlohmann::ordered_json in = it.value();
-            rebase_profile_files(in, shards[k].dir, out_dir);
-            pw.member("inputs", in);
-            continue;
-          }
-          pw.member(it.key(), it.value());
+          pw.end();
+          ++have;
+          if (past == stop) break;
+          if (past > stop || !text_at(d.text, past, ",\n")) bad_results(d.path, past, "pair records not separated by a comma and a newline");
+          p = past + 2;
         }
-        pw.begin_array("cases");
-        for (const auto& c : rec.value("cases", nlohmann::ordered_json::array())) pw.element_json(c);
-        pw.end_array();
-        pw.end();
       }
+      if (have != want)
+        bad_results(d.path, static_cast<std::size_t>(recs.data() - d.text.data()), "it holds " + std::to_string(have) + " " + key + ", its shard.json " + std::to_string(want));
     }
-    w->end_array();
-    w->member("summary", summary);
-    w->end();
+    w.end_array();
+    w.member("summary", summary);
+    w.end();
     f.commit();
   }
   rd.finish("merge", shards[0].meta.value("program", nlohmann::json::object()), {{"summary", summary}, {"shards", N}});

@@ -50,6 +50,17 @@ void JsonObjectStream::element_open() {
   first_element_ = false;
 }
 
+void JsonObjectStream::member_verbatim(const std::string& key, std::string_view value) {
+  separator();
+  o_ << nlohmann::json(key).dump() << ": " << value;
+}
+
+void JsonObjectStream::elements_verbatim(std::string_view records) {
+  if (records.empty()) return;
+  o_ << (first_element_ ? "\n" : ",\n") << records;
+  first_element_ = false;
+}
+
 void JsonObjectStream::end_array() {
   if (!first_element_) o_ << "\n" << pad_;
   o_ << "]";

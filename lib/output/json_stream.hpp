@@ -4,6 +4,7 @@
 // need not be held in memory). Every value is written by nlohmann::json, never spliced as text.
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <type_traits>
 
 #include <nlohmann/json.hpp>
@@ -29,6 +30,13 @@ class JsonObjectStream {
   void element_json(const nlohmann::ordered_json& value);
   /// Starts an element of the open array that another JsonObjectStream (indent + 4) writes.
   void element_open();
+  /// Text copied from a document this class wrote with the same indentation (mhcontact merge:
+  /// no parse, no re-serialisation). member_verbatim: a member whose `value` is as it stood after
+  /// `"key": ` (continuation lines already indented). elements_verbatim: records of the open
+  /// array, `records` one or more of its records as they stood between the array's `[` + newline
+  /// and its newline + `]` (the first record's indentation included); empty: nothing.
+  void member_verbatim(const std::string& key, std::string_view value);
+  void elements_verbatim(std::string_view records);
   void end_array();
   /// Closes the object (a document: and a final newline).
   void end();

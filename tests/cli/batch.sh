@@ -43,6 +43,17 @@ for f in cases.csv ellipses.csv geometry.csv pairs.csv results.json; do cmp "$tm
 diff -r "$tmp/bad/pairs" "$tmp/bm/pairs"
 test -n "$(ls "$tmp/bm/pairs")"
 for f in $(cd "$tmp/bm" && find pairs -type f); do grep -q "\"$f\"" "$tmp/bm/run.json" || { echo "$f not in run.json" >&2; exit 1; }; done
+# merge copies the pair records as text and counts them against shard.json: a shard's
+# results.json that lost its last pair record is refused (exit 2), naming the file.
+for k in 1 2; do "$bin" run "$tmp/bad.json" -o "$tmp/bt$k" --shard $k/2 -q || test $? -eq 1; done
+/usr/bin/python3 -c '
+import sys
+t = open(sys.argv[1]).read()
+i = t.rindex("\n    {"); j = t.index("\n  ],\n  \"summary\"", i)
+open(sys.argv[1], "w").write(t[:i - 1] + t[j:])' "$tmp/bt2/results.json"
+set +e; "$bin" merge "$tmp/bt1" "$tmp/bt2" -o "$tmp/btm" -q 2>"$tmp/err"; rc=$?; set -e
+test $rc -eq 2 || { echo "expected exit 2 for a cut pair record" >&2; exit 1; }
+grep -q "$tmp/bt2/results.json: .*holds 1 pairs, its shard.json 2" "$tmp/err" || { cat "$tmp/err" >&2; exit 1; }
 
 # Malformed manifests: exit 2 with the JSON path.
 expect2() { set +e; "$bin" run "$1" -o "$tmp/x" -q 2>"$tmp/err"; rc=$?; set -e; test $rc -eq 2 || { echo "expected exit 2 for $1" >&2; exit 1; }; grep -q "$2" "$tmp/err" || { cat "$tmp/err" >&2; exit 1; }; }

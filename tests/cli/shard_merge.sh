@@ -49,4 +49,14 @@ grep -q "different runs" "$tmp/err"
 expect2 "$bin" run "$src/cases/manchester.json" -o "$tmp/x" --shard 4/3
 grep -q "K/N" "$tmp/err"
 test ! -e "$tmp/m2/cases.csv"
+# results.json is merged as text, checked against shard.json: a shard's document that lost a
+# case record (cut by hand, a disk full) or is not in the layout run writes is refused, naming it.
+cp -r "$tmp/s2" "$tmp/s2cut"
+awk '/^  "cases": \[/ {c = 1; print; next} c == 1 {c = 2; next} {print}' "$tmp/s2/results.json" > "$tmp/s2cut/results.json"
+expect2 "$bin" merge "$tmp/s1" "$tmp/s2cut" "$tmp/s3" -o "$tmp/m5"
+grep -q "$tmp/s2cut/results.json: .*holds 32 cases, its shard.json 33" "$tmp/err" || { cat "$tmp/err"; exit 1; }
+/usr/bin/python3 -c 'import json, sys; json.dump(json.load(open(sys.argv[1])), open(sys.argv[2], "w"))' "$tmp/s2/results.json" "$tmp/s2cut/results.json"
+expect2 "$bin" merge "$tmp/s1" "$tmp/s2cut" "$tmp/s3" -o "$tmp/m5"
+grep -q "$tmp/s2cut/results.json: .*not a results.json as mhcontact run writes it" "$tmp/err" || { cat "$tmp/err"; exit 1; }
+test ! -e "$tmp/m5/cases.csv"
 echo "shard_merge: OK"
