@@ -206,7 +206,12 @@ inline double grid_mm(double m) { return std::round(m * 1e12) / 1e9; }
 inline void csv_text(std::string& s, const std::string& t) {
   if (t.find_first_of(",\"\n") == std::string::npos) { s += t; return; }
   s += '"';
-  for (char c : t) { if (c == '"') s += '"'; s += c; }
+  std::size_t from = 0;
+  for (std::size_t q; (q = t.find('"', from)) != std::string::npos; from = q + 1) {
+    s.append(t, from, q + 1 - from);  // up to and including the quote, then the quote again
+    s += '"';
+  }
+  s.append(t, from, std::string::npos);
   s += '"';
 }
 
