@@ -325,18 +325,22 @@ bool plane_polyline(const NodeLevel& T, double ya, double yb, double dy, double 
   const double nb = static_cast<double>(bins.A.size());
   double* A = bins.A.data();
   double* U = bins.U.data();
-  double prev_D = c + T.m[k0] * sn, D_min = prev_D, E = T.e[k0], A_abs = 0;
-  if (!(prev_D - asn * T.dev[k0] >= KinkBound::kMinSlopeFactor)) return false;
-  for (std::size_t k = k0 + 1; k < k1; ++k) {  // interval k: nodes k, k + 1; the kink at node k
-    const double D = c + T.m[k] * sn;
-    if (!(D - asn * T.dev[k] >= KinkBound::kMinSlopeFactor)) return false;
+  // Plain pointers and signed indices: the loop's loads stay in registers, and int ↔ double
+  // conversions are single instructions (size_t's are not).
+  const double *Ty = T.y.data(), *Tz = T.z.data(), *Tm = T.m.data(), *Tdev = T.dev.data(), *Te = T.e.data();
+  const int i0 = static_cast<int>(k0), i1 = static_cast<int>(k1);
+  double prev_D = c + Tm[i0] * sn, D_min = prev_D, E = Te[i0], A_abs = 0;
+  if (!(prev_D - asn * Tdev[i0] >= KinkBound::kMinSlopeFactor)) return false;
+  for (int k = i0 + 1; k < i1; ++k) {  // interval k: nodes k, k + 1; the kink at node k
+    const double D = c + Tm[k] * sn;
+    if (!(D - asn * Tdev[k] >= KinkBound::kMinSlopeFactor)) return false;
     D_min = std::min(D_min, D);
-    E = std::max(E, T.e[k]);
-    const double J = sign * (T.m[k] - T.m[k - 1]) / (D * prev_D);
+    E = std::max(E, Te[k]);
+    const double J = sign * (Tm[k] - Tm[k - 1]) / (D * prev_D);
     A_abs += std::fabs(J);
-    const double t = ((T.y[k] + ys) * c + (T.z[k] + zs) * sn - g0) * ih;
+    const double t = ((Ty[k] + ys) * c + (Tz[k] + zs) * sn - g0) * ih;
     if (t >= 0 && t < nb) {  // a kink outside the bins weighs nothing at every centre
-      const std::size_t j = static_cast<std::size_t>(t);
+      const int j = static_cast<int>(t);
       A[j] += J;
       U[j] += J * (t - static_cast<double>(j));
     }
