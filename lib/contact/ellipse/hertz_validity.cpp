@@ -100,7 +100,6 @@ GapKink gap_kink(const WheelRailGap& gap, const CandidateGeom& g, double B, doub
         k.bounded = true;
         return k;
       }
-      if (!kb.found) break;  // a gauge face or a steep turn of the normals: at any spacing
     }
   std::array<double, n + 5> G;
   normal_gaps(gap, P, 0, -b - h, 0.5 * h, n + 5, dz, G.data());  // s = −b − h + (h/2) i
