@@ -160,7 +160,8 @@ inline void num(std::string& s, double v) {
   const int d = digits();
   if (d <= 0) { append_number(s, v); return; }
   char buf[64];
-  s.append(buf, general_digits(buf, v, d));
+  // (pointer, length): the iterator-range append goes through basic_string::_M_replace.
+  s.append(buf, static_cast<std::size_t>(general_digits(buf, v, d) - buf));
 }
 /// num() for values that repeat over consecutive rows (a sweep's t_Y and Q, an ellipse's geometry,
 /// the same for every load at one t_Y): a small per-thread cache of the formatted text, keyed by
