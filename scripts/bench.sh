@@ -9,7 +9,7 @@ ny=${1:-2000}; nq=${2:-500}
 # The multi-Hertzian sweep with the judge against the build before the gap-corner bound (CPU time,
 # the same bytes checked; docs/performance.md).
 bash scripts/bench_judge.sh 3
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+tmp=$(mktemp -d); trap 'rm -rf "$tmp" .bench-sweep-ref' EXIT
 step=$(awk -v n="$ny" 'BEGIN{printf "%.10g", 16/(n-1)}')
 qstep=$(awk -v n="$nq" 'BEGIN{printf "%.10g", 140/(n-1)}')
 sed -e "s|\"sweep\": .*|\"sweep\": {\"tY_mm\": {\"from\": -6, \"to\": 10, \"step\": $step}, \"Q_kN\": {\"from\": 10, \"to\": 150, \"step\": $qstep}}|" \
