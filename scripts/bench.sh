@@ -9,7 +9,7 @@ ny=${1:-2000}; nq=${2:-500}
 # The multi-Hertzian sweep with the judge against the build before the gap-corner bound (CPU time,
 # the same bytes checked; docs/performance.md).
 bash scripts/bench_judge.sh 3
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+tmp=$(mktemp -d); trap 'rm -rf "$tmp" .bench-sweep-ref' EXIT
 step=$(awk -v n="$ny" 'BEGIN{printf "%.10g", 16/(n-1)}')
 qstep=$(awk -v n="$nq" 'BEGIN{printf "%.10g", 140/(n-1)}')
 sed -e "s|\"sweep\": .*|\"sweep\": {\"tY_mm\": {\"from\": -6, \"to\": 10, \"step\": $step}, \"Q_kN\": {\"from\": 10, \"to\": 150, \"step\": $qstep}}|" \
@@ -19,24 +19,36 @@ ncases=$((ny * nq))
 # slow spell on both), median wall time and peak RSS [KB] of each.
 # fresh: into a new directory; rerun: replacing the previous run's 400 MB set, whose removal at
 # the end (~0.1 s of kernel time, serial) is part of the time.
-once() {  # $1 = threads, $2 = fresh|rerun, $3 = file to append "wall rss" to
+once() {  # $1 = threads, $2 = fresh|rerun, $3 = file to append "wall rss cpu" to, $4 = build dir (default build)
   if [ "$2" = fresh ]; then rm -rf "$tmp/out"; sync; sleep 0.2; fi
-  /usr/bin/time -f "%e %M" -o "$tmp/time" ./build/mhcontact run "$tmp/big.json" -o "$tmp/out" --format csv --threads "$1" -q || true
-  cat "$tmp/time" >> "$3"
+  /usr/bin/time -f "%e %M %U %S" -o "$tmp/time" "./${4:-build}/mhcontact" run "$tmp/big.json" -o "$tmp/out" --format csv --threads "$1" -q || true
+  awk '{print $1, $2, $3 + $4}' "$tmp/time" >> "$3"
 }
 median() { sort -g | sed -n 3p; }
+echo "load average before the end-to-end runs: $(cut -d' ' -f1-3 /proc/loadavg)"
 for mode in fresh rerun; do
   : > "$tmp/t1"; : > "$tmp/tn"
   for r in 1 2 3 4 5; do once 1 $mode "$tmp/t1"; once 0 $mode "$tmp/tn"; done
-  t1=$(cut -d' ' -f1 "$tmp/t1" | median); m1=$(cut -d' ' -f2 "$tmp/t1" | median)
-  tn=$(cut -d' ' -f1 "$tmp/tn" | median); mn=$(cut -d' ' -f2 "$tmp/tn" | median)
+  t1=$(cut -d' ' -f1 "$tmp/t1" | median); m1=$(cut -d' ' -f2 "$tmp/t1" | median); c1=$(cut -d' ' -f3 "$tmp/t1" | median)
+  tn=$(cut -d' ' -f1 "$tmp/tn" | median); mn=$(cut -d' ' -f2 "$tmp/tn" | median); cn=$(cut -d' ' -f3 "$tmp/tn" | median)
   echo "end-to-end run, $ncases cases to CSV, median of 5, $mode output directory:"
-  awk -v t="$t1" -v m="$m1" -v n="$ncases" 'BEGIN{printf "  --threads 1:      %.2f s wall, %.0f cases/s, peak RSS %.0f MB\n", t, n/t, m/1024}'
-  awk -v t="$tn" -v m="$mn" -v n="$ncases" -v c="$(nproc)" 'BEGIN{printf "  all %d cores:     %.2f s wall, %.0f cases/s, peak RSS %.0f MB\n", c, t, n/t, m/1024}'
+  awk -v t="$t1" -v m="$m1" -v c="$c1" -v n="$ncases" 'BEGIN{printf "  --threads 1:      %.2f s wall, %.0f cases/s, peak RSS %.0f MB, CPU %.2f s (user + sys)\n", t, n/t, m/1024, c}'
+  awk -v t="$tn" -v m="$mn" -v cp="$cn" -v n="$ncases" -v c="$(nproc)" 'BEGIN{printf "  all %d cores:     %.2f s wall, %.0f cases/s, peak RSS %.0f MB, CPU %.2f s (user + sys)\n", c, t, n/t, m/1024, cp}'
   awk -v a="$t1" -v b="$tn" 'BEGIN{printf "  speed-up:         %.2f\n", a/b}'
   echo "  all runs [s], one thread: $(cut -d' ' -f1 "$tmp/t1" | sort -g | tr '\n' ' ')"
   echo "  all runs [s], all cores:  $(cut -d' ' -f1 "$tmp/tn" | sort -g | tr '\n' ' ')"
 done
+# REF_BUILD=DIR (a build directory of another commit, e.g. bench_judge.sh's build-ref): the same
+# sweep by its mhcontact, alternated with this build's, one thread, 3 runs each, CPU time medians
+# and their ratio (the machine is shared: CPU time, not wall time, compares two builds).
+if [ -n "${REF_BUILD:-}" ]; then
+  ln -sfn "$(cd "$REF_BUILD" && pwd)" .bench-sweep-ref
+  : > "$tmp/r1"; : > "$tmp/b1"
+  for r in 1 2 3; do once 1 fresh "$tmp/r1" .bench-sweep-ref; once 1 fresh "$tmp/b1"; done
+  rm -f .bench-sweep-ref
+  rc=$(cut -d' ' -f3 "$tmp/r1" | sort -g | sed -n 2p); bc=$(cut -d' ' -f3 "$tmp/b1" | sort -g | sed -n 2p)
+  awk -v a="$rc" -v b="$bc" -v r="$REF_BUILD" 'BEGIN{printf "  --threads 1 against %s (median of 3 CPU times): reference %.2f s, this build %.2f s, ratio %.3f\n", r, a, b, b / a}'
+fi
 ls -la "$tmp/out" | awk 'NR>1{print "  " $5 " bytes  " $9}'
 # The grid methods (half-space, strips) on the CONTACT benchmark sweep (median and worst per case).
 ./build/mhcontact_bench_grid . 3

@@ -197,17 +197,27 @@ void normal_gaps(const WheelRailGap& gap, const PatchPlane& P, double x, double 
 
 namespace {
 
-// One curve's polyline seen from the plane (gap_kink_bound): the kinks J_k at plane coordinates
-// s_k (increasing), the largest Hermite deviation from the polyline E and the least D.
-// P0, P1: the prefix sums Σ_{j<k} J_j and Σ_{j<k} J_j s_j; A: Σ |J| + Σ |J s| / h for their
-// rounding.
-struct PlanePolyline {
-  std::vector<double> s, P0, P1;
-  double E = 0, D_min = INFINITY, A0 = 0, A1 = 0;
-  void clear() {
-    s.clear(); P0.assign(1, 0.0); P1.assign(1, 0.0);
-    E = 0; D_min = INFINITY; A0 = A1 = 0;
+// The kinks of both polylines seen from the plane (gap_kink_bound), summed into bins of width
+// h/2 whose edges are the centres' grid g_j = s_first − h + (h/2) j: on each bin every centre's
+// weight (1 − |s_k − s_i|/h)₊ is linear in the kink's place u = (s_k − g_j)/(h/2) ∈ [0, 1), so
+// the bin's Σ J and Σ J u give each centre's sum exactly. A_abs: Σ |J| (for the rounding).
+struct KinkBins {
+  std::vector<double> A, U;
+  double g0 = 0, inv_half_h = 0, A_abs = 0, coord = 0;
+  int kinks = 0;
+  void reset(double g0_, double h, int nb) {
+    A.assign(static_cast<std::size_t>(nb), 0.0);
+    U.assign(static_cast<std::size_t>(nb), 0.0);
+    g0 = g0_;
+    inv_half_h = 2 / h;
+    A_abs = coord = 0;
+    kinks = 0;
   }
+};
+// One curve's polyline seen from the plane: the largest Hermite deviation from it E and the
+// least D over its intervals (its kinks go into KinkBins).
+struct PlanePolyline {
+  double E = 0, D_min = INFINITY;
 };
 
 // A curve's nodes as z(y) gives them (z(node_y(k)), within ~1e-19 m of the node's z: node_y
@@ -220,6 +230,7 @@ struct PlanePolyline {
 // curve and thread.
 struct NodeLevel {
   std::vector<double> y, z, m, dev, e;
+  double abs_max = 0;  // [m] max |y| + max |z| over the nodes (the rounding of their plane coordinates)
 };
 struct NodeTable {
   static constexpr int kLevels = 8;  // coarse spacing up to 128 nodes (1.28 mm at 0.01 mm)
@@ -244,6 +255,9 @@ struct NodeTable {
       f.dev[k] = std::fabs(dz[k] - f.m[k]) + std::fabs(dz[k + 1] - f.m[k]);
       f.e[k] = 4.0 / 27.0 * dy * f.dev[k] + 1e-15;
     }
+    double ay = 0, az = 0;
+    for (std::size_t k = 0; k < n; ++k) { ay = std::max(ay, std::fabs(f.y[k])); az = std::max(az, std::fabs(f.z[k])); }
+    f.abs_max = ay + az;
     for (int l = 1; l < kLevels; ++l) {
       const std::size_t step = std::size_t{1} << l;
       NodeLevel& L = level[l];
@@ -251,6 +265,7 @@ struct NodeTable {
       L.y.resize(nc); L.z.resize(nc);
       for (std::size_t k = 0; k < nc; ++k) { L.y[k] = f.y[k * step]; L.z[k] = f.z[k * step]; }
       L.m.assign(nc ? nc - 1 : 0, 0); L.dev.assign(L.m.size(), 0); L.e.assign(L.m.size(), 0);
+      L.abs_max = f.abs_max;
       for (std::size_t k = 0; k + 1 < nc; ++k) {
         const std::size_t j0 = k * step, j1 = j0 + step;
         const double m = (f.z[j1] - f.z[j0]) / (f.y[j1] - f.y[j0]);
@@ -294,9 +309,10 @@ const NodeTable& node_table(const ProfileCurve& C, std::uint64_t build_id, int w
 
 // The nodes whose intervals cover [ya, yb] (the curve's own y) with one more on each side,
 // placed in the rail frame at y + dy, z + dzv, seen from plane P (c, sn); `sign` +1 the wheel,
-// −1 the rail (G = h_w − h_r). False when the range reaches beyond the nodes or D < kMinSlopeFactor.
+// −1 the rail (G = h_w − h_r): their kinks into `bins`. False when the range reaches beyond the
+// nodes or D < kMinSlopeFactor.
 bool plane_polyline(const NodeLevel& T, double ya, double yb, double dy, double dzv, const PatchPlane& P, double c,
-                    double sn, double sign, PlanePolyline& out) {
+                    double sn, double sign, PlanePolyline& out, KinkBins& bins) {
   const std::size_t n = T.y.size();
   if (n < 3) return false;
   const double hg = T.y[1] - T.y[0];
@@ -304,101 +320,92 @@ bool plane_polyline(const NodeLevel& T, double ya, double yb, double dy, double 
   if (!(ka >= 0) || !(kb <= static_cast<double>(n - 1))) return false;
   const std::size_t k0 = static_cast<std::size_t>(ka), k1 = static_cast<std::size_t>(kb);
   const double asn = std::fabs(sn);
-  const std::size_t nk = k1 - k0 - 1;  // kinks at the nodes k0 + 1 … k1 − 1
-  out.s.resize(nk);
-  out.P0.resize(nk + 1);
-  out.P1.resize(nk + 1);
-  double prev_D = 0, D_min = INFINITY, E = 0, A0 = 0, A1 = 0, p0 = 0, p1 = 0;
   const double ys = dy - P.y_ref, zs = dzv - P.z_ref;
-  for (std::size_t k = k0; k < k1; ++k) {  // interval k: nodes k, k + 1
-    const double D = c + T.m[k] * sn;
-    if (!(D - asn * T.dev[k] >= KinkBound::kMinSlopeFactor)) return false;
+  const double g0 = bins.g0, ih = bins.inv_half_h;
+  const double nb = static_cast<double>(bins.A.size());
+  double* A = bins.A.data();
+  double* U = bins.U.data();
+  // Plain pointers and signed indices: the loop's loads stay in registers, and int ↔ double
+  // conversions are single instructions (size_t's are not).
+  const double *Ty = T.y.data(), *Tz = T.z.data(), *Tm = T.m.data(), *Tdev = T.dev.data(), *Te = T.e.data();
+  const int i0 = static_cast<int>(k0), i1 = static_cast<int>(k1);
+  double prev_D = c + Tm[i0] * sn, D_min = prev_D, E = Te[i0], A_abs = 0;
+  if (!(prev_D - asn * Tdev[i0] >= KinkBound::kMinSlopeFactor)) return false;
+  for (int k = i0 + 1; k < i1; ++k) {  // interval k: nodes k, k + 1; the kink at node k
+    const double D = c + Tm[k] * sn;
+    if (!(D - asn * Tdev[k] >= KinkBound::kMinSlopeFactor)) return false;
     D_min = std::min(D_min, D);
-    E = std::max(E, T.e[k]);
-    if (k > k0) {  // the kink at node k
-      const double sk = (T.y[k] + ys) * c + (T.z[k] + zs) * sn;
-      const double J = sign * (T.m[k] - T.m[k - 1]) / (D * prev_D);
-      const std::size_t i = k - k0 - 1;
-      out.s[i] = sk;
-      p0 += J;
-      p1 += J * sk;
-      out.P0[i + 1] = p0;
-      out.P1[i + 1] = p1;
-      A0 += std::fabs(J);
-      A1 += std::fabs(J * sk);
+    E = std::max(E, Te[k]);
+    const double J = sign * (Tm[k] - Tm[k - 1]) / (D * prev_D);
+    A_abs += std::fabs(J);
+    const double t = ((Ty[k] + ys) * c + (Tz[k] + zs) * sn - g0) * ih;
+    if (t >= 0 && t < nb) {  // a kink outside the bins weighs nothing at every centre
+      const int j = static_cast<int>(t);
+      A[j] += J;
+      U[j] += J * (t - static_cast<double>(j));
     }
     prev_D = D;
   }
   out.D_min = D_min;
   out.E = E;
-  out.A0 = A0;
-  out.A1 = A1;
+  bins.A_abs += A_abs;
+  bins.kinks += static_cast<int>(k1 - k0 - 1);
+  bins.coord = std::max(bins.coord, T.abs_max + std::fabs(dy) + std::fabs(dzv) + std::fabs(P.y_ref) + std::fabs(P.z_ref));
   return true;
 }
 
 }  // namespace
 
 KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, double s_first, double h, int n, double B,
-                         double dz) {
+                         double dz, double spacing) {
   KinkBound out;
   const double c = std::cos(P.gamma), sn = std::sin(P.gamma);
   // The span of the samples, [s_first − h, s_last + h]. The face is met by the normals below some
   // s (qz + (qy − y_f) cos γ / sin γ grows with s at rate 1/sin γ): none on the span if none at
   // its start.
   const double sa = s_first - h, sb = s_first + 0.5 * h * (n - 1) + h;
-  if (gap.build_id() == 0) return out;
+  if (gap.build_id() == 0 || n < 1) return out;
   const NormalHits a = normal_hits(gap, P, c, sn, 0, sa, dz), b = normal_hits(gap, P, c, sn, 0, sb, dz);
   if (a.on_face || b.on_face) return out;
-  thread_local PlanePolyline rail, wheel;
-  rail.clear();
-  wheel.clear();
+  // Bins j = 0 … n + 2 of width h/2 from g_0 = s_first − h (KinkBins): centre i is g_{i+2}.
+  thread_local KinkBins bins;
+  bins.reset(sa, h, n + 3);
+  PlanePolyline rail, wheel;
   const NodeTable& Tr0 = node_table(gap.rail_curve(), gap.build_id(), 0);
   const NodeTable& Tw0 = node_table(gap.wheel_curve(), gap.build_id(), 1);
-  // The polylines through every 2^l-th node, spaced at most h/2: their kinks' second differences
-  // stay those of the curve at the samples' scale, their distance from it at most about κ h²/32.
+  // The polylines through every 2^l-th node, spaced at most `spacing`: the coarser, the fewer
+  // kinks to sum and the larger their distance from the curve (about κ Δ²/8 at spacing Δ).
   auto level = [&](const NodeTable& T) -> const NodeLevel& {
     const NodeLevel& f = T.level[0];
     if (f.y.size() < 2) return f;
     int l = 0;
-    while (l + 1 < NodeTable::kLevels && (f.y[1] - f.y[0]) * static_cast<double>(std::size_t{1} << (l + 1)) <= 0.5 * h) ++l;
+    while (l + 1 < NodeTable::kLevels && (f.y[1] - f.y[0]) * static_cast<double>(std::size_t{1} << (l + 1)) <= spacing) ++l;
     return T.level[l];
   };
   const NodeLevel& Tr = level(Tr0);
   const NodeLevel& Tw = level(Tw0);
-  if (!plane_polyline(Tr, a.qy - a.h_r * sn, b.qy - b.h_r * sn, 0, 0, P, c, sn, -1, rail)) return out;
+  if (!plane_polyline(Tr, a.qy - a.h_r * sn, b.qy - b.h_r * sn, 0, 0, P, c, sn, -1, rail, bins)) return out;
   if (!plane_polyline(Tw, gap.y_wheel(a.qy - a.h_w * sn), gap.y_wheel(b.qy - b.h_w * sn), a.qy - gap.y_wheel(a.qy),
-                      -gap.wheel_lift() - dz, P, c, sn, 1, wheel))
+                      -gap.wheel_lift() - dz, P, c, sn, 1, wheel, bins))
     return out;
   const double eta = wheel.E / wheel.D_min + rail.E / rail.D_min;
-  // Σ_k J_k (1 − |s_k − s_i|/h)₊ for each centre from the prefix sums: over the kinks in
-  // (s_i − h, s_i] it is ΣJ − (s_i ΣJ − ΣJs)/h, over those in (s_i, s_i + h) ΣJ − (ΣJs − s_i ΣJ)/h;
-  // the three ends move forward with s_i (each curve's s_k increase).
-  struct Cursor {
-    const PlanePolyline* L;
-    std::size_t a = 0, m = 0, e = 0;
-    double sum(double si, double h) {
-      const std::vector<double>& s = L->s;
-      while (a < s.size() && s[a] <= si - h) ++a;
-      while (m < s.size() && s[m] <= si) ++m;
-      while (e < s.size() && s[e] < si + h) ++e;
-      m = std::max(m, a);
-      e = std::max(e, m);
-      const double l0 = L->P0[m] - L->P0[a], l1 = L->P1[m] - L->P1[a];
-      const double r0 = L->P0[e] - L->P0[m], r1 = L->P1[e] - L->P1[m];
-      return l0 - (si * l0 - l1) / h + r0 - (r1 - si * r0) / h;
-    }
-  };
-  Cursor cr{&rail}, cw{&wheel};
+  // Σ_k J_k (1 − |s_k − s_i|/h)₊ for centre i from bins i … i + 3 (offsets −2 … 1 from the
+  // centre's edge g_{i+2}): weights u/2, (1 + u)/2, 1 − u/2, (1 − u)/2.
+  const double* A = bins.A.data();
+  const double* U = bins.U.data();
+  const double twoBh = 2 * B * h;
   double worst = 0;
   for (int i = 0; i < n; ++i) {
-    const double si = s_first + 0.5 * h * i;
-    worst = std::max(worst, std::fabs(cr.sum(si, h) + cw.sum(si, h) - 2 * B * h));
+    const double S = 0.5 * U[i] + 0.5 * (A[i + 1] + U[i + 1]) + (A[i + 2] - 0.5 * U[i + 2]) + 0.5 * (A[i + 3] - U[i + 3]);
+    worst = std::max(worst, std::fabs(S - twoBh));
   }
-  // The rounding of the prefix sums and their differences (a sum of k terms is within
-  // k ε_mach Σ|terms|; the factor 8 covers the differences and products).
-  const double kinks = static_cast<double>(rail.s.size() + wheel.s.size());
-  const double s_max = std::max(std::fabs(sa), std::fabs(sb));
-  worst += 8 * DBL_EPSILON * kinks * (rail.A0 + wheel.A0 + (rail.A1 + wheel.A1 + s_max * (rail.A0 + wheel.A0)) / h);
+  // The rounding: a kink's plane coordinate is within δ = 8 ε (its coordinates' magnitudes) of
+  // the exact one, and so is a centre's, which moves its weights by at most 2 δ / (h/2) plus
+  // ε t (t < n + 3, its place in bins); each bin sum and a centre's eight terms add at most
+  // (kinks + 8) ε Σ |J| (|J u| ≤ |J|). Doubled.
+  const double delta = 8 * DBL_EPSILON * (bins.coord + std::fabs(s_first) + 2 * h);
+  worst += 2 * bins.A_abs *
+           (4 * delta / h + DBL_EPSILON * (n + 3) + DBL_EPSILON * (bins.kinks + 8));
   out.dtheta = worst * (1 + 1e-9) + 4 * (eta + kGapError) / h;
   out.found = std::isfinite(out.dtheta);
   return out;

@@ -141,7 +141,14 @@ struct KinkBound {
 /// ε: the error of a sampled normal gap allowed for by the bound [m] (normal_gap's Newton solves
 /// stop at steps below 1e-13 m, converging quadratically; coordinates below 1 m round at 1e-16 m).
 constexpr double kGapError = 1e-12;
+/// `spacing` [m]: the polylines are those through every 2^l-th node with the largest l whose
+/// spacing is at most this (default h/2): a coarser one sums fewer kinks, its deviation from the
+/// curve larger.
 KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, double s_first, double h, int n, double B,
-                         double dz);
+                         double dz, double spacing);
+inline KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, double s_first, double h, int n, double B,
+                                double dz) {
+  return gap_kink_bound(gap, P, s_first, h, n, B, dz, 0.5 * h);
+}
 
 }  // namespace mh

@@ -347,8 +347,14 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                  bool plastic, bool want_csv, bool want_json, Formatted& f, const char* status_text,
                  const RcfOptions& rcf, bool tangential) {
   const char* status = status_text ? status_text : to_string(r.status);
-  const std::vector<std::string> warn_text = warning_texts(r.warnings);
-  const std::string warn = join(warn_text, ";");
+  // The warnings' cell, their texts joined by ';' (warning_text(), appended in place).
+  thread_local std::string warn;
+  warn.clear();
+  if (want_csv)
+    for (std::size_t i = 0; i < r.warnings.size(); ++i) {
+      if (i) warn += ';';
+      append_warning_text(warn, r.warnings[i]);
+    }
   // The main contact: the loaded ellipse carrying the largest normal force.
   const LoadedEllipse* main = nullptr;
   bool any_plastic = false;
@@ -468,7 +474,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     j["r_roll_main_mm"] = rv(r_roll_main);
     j["plastic"] = failed ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(any_plastic);
     j["n_warnings"] = r.warnings.size();
-    j["warnings"] = warn_text;
+    j["warnings"] = warning_texts(r.warnings);
     j["message"] = r.message;
     j["pmax_half_L_MPa"] = rv(r.pmax_half_L / units::MPa);
     j["pmax_double_L_MPa"] = rv(r.pmax_double_L / units::MPa);

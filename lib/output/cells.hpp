@@ -160,7 +160,8 @@ inline void num(std::string& s, double v) {
   const int d = digits();
   if (d <= 0) { append_number(s, v); return; }
   char buf[64];
-  s.append(buf, general_digits(buf, v, d));
+  // (pointer, length): the iterator-range append goes through basic_string::_M_replace.
+  s.append(buf, static_cast<std::size_t>(general_digits(buf, v, d) - buf));
 }
 /// num() for values that repeat over consecutive rows (a sweep's t_Y and Q, an ellipse's geometry,
 /// the same for every load at one t_Y): a small per-thread cache of the formatted text, keyed by
@@ -206,7 +207,12 @@ inline double grid_mm(double m) { return std::round(m * 1e12) / 1e9; }
 inline void csv_text(std::string& s, const std::string& t) {
   if (t.find_first_of(",\"\n") == std::string::npos) { s += t; return; }
   s += '"';
-  for (char c : t) { if (c == '"') s += '"'; s += c; }
+  std::size_t from = 0;
+  for (std::size_t q; (q = t.find('"', from)) != std::string::npos; from = q + 1) {
+    s.append(t, from, q + 1 - from);  // up to and including the quote, then the quote again
+    s += '"';
+  }
+  s.append(t, from, std::string::npos);
   s += '"';
 }
 

@@ -88,16 +88,19 @@ GapKink gap_kink(const WheelRailGap& gap, const CandidateGeom& g, double B, doub
   const double h = b / 40;
   constexpr int n = 160;  // s = −b … b in steps of h/2
   // First the bound (geometry/gap.hpp, gap_kink_bound): the centres s = −b … b.
-  if (use_bound) {
-    const KinkBound kb = gap_kink_bound(gap, P, -b, h, n + 1, B, dz);
-    const double ratio = E_pair * kb.dtheta / (2 * M_PI * p0);
-    if (kb.found && ratio <= opt.max_gap_mean_error * (1 - 1e-9)) {
-      k.dtheta = kb.dtheta;
-      k.kink_ratio = ratio;
-      k.bounded = true;
-      return k;
+  // First on the polylines spaced at most h (half the kinks to sum), then at most h/2 (closer
+  // to the curves: the patches near the limit, flange roots).
+  if (use_bound)
+    for (const double spacing : {h, 0.5 * h}) {
+      const KinkBound kb = gap_kink_bound(gap, P, -b, h, n + 1, B, dz, spacing);
+      const double ratio = E_pair * kb.dtheta / (2 * M_PI * p0);
+      if (kb.found && ratio <= opt.max_gap_mean_error * (1 - 1e-9)) {
+        k.dtheta = kb.dtheta;
+        k.kink_ratio = ratio;
+        k.bounded = true;
+        return k;
+      }
     }
-  }
   std::array<double, n + 5> G;
   normal_gaps(gap, P, 0, -b - h, 0.5 * h, n + 5, dz, G.data());  // s = −b − h + (h/2) i
   for (int i = 2; i <= n + 2; ++i) {  // s_i = −b + (i − 2) h/2, neighbours two samples away

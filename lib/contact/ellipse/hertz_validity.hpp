@@ -91,7 +91,8 @@ HertzValidity hertz_validity(const ContactGeometry& G, const CandidateGeom& g, d
 ///
 /// The samples cost about 330 profile evaluations per ellipse (two Newton solves each). Most
 /// patches are shown valid without them, by a bound of Δθ from the profiles' nodes (geometry/
-/// gap.hpp, gap_kink_bound: the polylines through the nodes, whose second differences are
+/// gap.hpp, gap_kink_bound: the polylines through the nodes spaced at most h, then at most h/2
+/// when that does not pass the patch, whose second differences are
 /// exact sums over their kinks, plus the largest deviation of the curves from them). When
 /// E* Δθ / (2π p0) from that bound is within the limit the test passes with the bound as its
 /// figures (`bounded`); otherwise (a corner, a patch too small for the deviation, a normal on the

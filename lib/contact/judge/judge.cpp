@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "contact/ellipse/hertz_validity.hpp"
 #include "contact/judge/evidence.hpp"
@@ -59,7 +60,27 @@ void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Materi
   const LoadedEllipse* first = &r.loaded.front();
   for (const LoadedEllipse& L : r.loaded)
     if (L.g.gap < first->g.gap) first = &L;
-  const WheelRailGap gap(G, tY, first->g.y_r);
+  // The gap is that of t_Y and the first contact's candidate only, not of the load: kept per
+  // thread for the next case with the same three (a sweep's cases at one t_Y, every Q).
+  struct GapCache {
+    std::uint64_t id = 0;
+    const ProfileCurve *w = nullptr, *r = nullptr;
+    double tY = 0, y = 0;
+    std::optional<WheelRailGap> gap;
+  };
+  thread_local GapCache cache;
+  const ProfileCurve* wc = G.wheel_gap_curve ? G.wheel_gap_curve.get() : G.wheel_curve.get();
+  const ProfileCurve* rc = G.rail_gap_curve ? G.rail_gap_curve.get() : G.rail_curve.get();
+  if (!cache.gap || G.build_id == 0 || cache.id != G.build_id || cache.w != wc || cache.r != rc || cache.tY != tY ||
+      cache.y != first->g.y_r) {
+    cache.gap.emplace(G, tY, first->g.y_r);
+    cache.id = G.build_id;
+    cache.w = wc;
+    cache.r = rc;
+    cache.tY = tY;
+    cache.y = first->g.y_r;
+  }
+  const WheelRailGap& gap = *cache.gap;
   for (const LoadedEllipse& L : r.loaded) {
     const GapKink k = gap_kink(gap, L.g, L.B, L.s.b, L.s.p0, 0.5 * mat.E_star(), r.approach, vo);
     if (k.valid) continue;

@@ -144,7 +144,13 @@ const char* name(Quantity q) { return info(q).name; }
 const char* si_unit(Quantity q) { return info(q).unit; }
 
 std::string warning_text(const Warning& w) {
-  std::string s = to_string(w.cls);
+  std::string s;
+  append_warning_text(s, w);
+  return s;
+}
+
+void append_warning_text(std::string& s, const Warning& w) {
+  s += to_string(w.cls);
   if (w.cls == WarningClass::Auto) {
     s += ':';
     s += to_string(w.to);
@@ -170,7 +176,7 @@ std::string warning_text(const Warning& w) {
         if (w.has_failed) { s += ':'; s += to_string(w.failed); }
         break;
     }
-    if (w.reason != AutoReason::GapKink) return s;
+    if (w.reason != AutoReason::GapKink) return;
   } else {
     switch (w.kind) {
       case ContactKind::None: break;
@@ -196,7 +202,6 @@ std::string warning_text(const Warning& w) {
       append_formatted(s, m.limit, q, q.limit);
     }
   }
-  return s;
 }
 
 std::vector<std::string> warning_texts(const std::vector<Warning>& ws) {

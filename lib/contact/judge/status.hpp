@@ -165,6 +165,8 @@ struct Warning {
 /// "non_hertzian:ellipse=4:b_over_R=22.331>0.3", "interacting:ellipses=1+3:edge_gap_mm=7<8",
 /// "auto:strips:ellipse 2 not Hertzian". The one place a warning becomes text.
 std::string warning_text(const Warning& w);
+/// The same text appended to `s` (a row's cell built in place: no string per warning).
+void append_warning_text(std::string& s, const Warning& w);
 /// Each of `ws` as text, in order.
 std::vector<std::string> warning_texts(const std::vector<Warning>& ws);
 
