@@ -24,6 +24,7 @@ using mh::units::deg;
 
 /// The Wheelset class (python/wheelset_module.cpp).
 void bind_wheelset(py::module_& m, void (*check)(mhc_error));
+void bind_rcf(py::module_& m, void (*check)(mhc_error));  // python/rcf_module.cpp
 
 namespace {
 
@@ -520,4 +521,5 @@ PYBIND11_MODULE(_core, m) {
             return d;
           });
   bind_wheelset(m, &check);
+  bind_rcf(m, &check);
 }

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "capi/handles.hpp"
-#include "contact/rcf/damage.hpp"
+#include "contact/rcf/contact_damage.hpp"
 #include "contact/rcf/shakedown.hpp"
 #include "contact/rcf/subsurface.hpp"
 #include "core/units.hpp"
@@ -42,7 +42,7 @@ mhc_error mhc_result_rcf(const mhc_workspace* ws, int32_t i, double k_Pa, mhc_rc
   const mh::TangentialResult* t;
   if (!r.loaded.empty()) {
     const mh::LoadedEllipse& L = r.loaded[static_cast<std::size_t>(i)];
-    N = L.s.N, a_el = L.s.a_el, b_el = L.s.b_el, A = mh::units::pi * L.s.a * L.s.b, t = &L.t;
+    N = L.s.N, a_el = L.s.a_el, b_el = L.s.b_el, A = mh::wear_area(L), t = &L.t;
   } else {
     const mh::PatchResult& P = r.patches[static_cast<std::size_t>(i)];
     N = P.N, a_el = P.a_el, b_el = P.b_el, A = P.area, t = &P.t;
@@ -55,14 +55,14 @@ mhc_error mhc_result_rcf(const mhc_workspace* ws, int32_t i, double k_Pa, mhc_rc
   o.k = std::isfinite(k_Pa) ? k_Pa : mh::material_yield(ws->pair->material) / std::sqrt(3.0);
   const double f = o.traction(N, t->Fx, t->Fy, t->solved);
   const mh::RcfPoint p = mh::rcf_point(f, o.k, N, a_el, b_el, ws->pair->material.nur());
-  const mh::Wear w = t->solved ? mh::usfd_wear(t->Tgamma, A) : mh::Wear{};
+  const mh::ContactDamage d = mh::contact_damage(*t, N, A);  // the published defaults (damage.hpp)
   out->N_N = N;
   out->traction = f;
   out->Tgamma_N = t->solved ? t->Tgamma : kNaN;
   out->Tgamma_spin_N = t->solved ? t->Tgamma_spin : kNaN;
-  out->damage_per_axle = t->solved ? mh::burstow_damage(t->Tgamma) : kNaN;
-  out->wear_rate_kg_per_m3 = w.rate;
-  out->wear_kg_per_m = w.per_metre;
+  out->damage_per_axle = d.damage;
+  out->wear_rate_kg_per_m3 = d.wear_rate;
+  out->wear_kg_per_m = d.wear_per_metre;
   out->p0_el_Pa = N > 0 && a_el > 0 && b_el > 0 ? 1.5 * N / (mh::units::pi * a_el * b_el) : kNaN;
   out->p0_el_over_k = p.p0_el_over_k;
   out->elastic_limit = p.elastic_limit;

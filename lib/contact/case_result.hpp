@@ -17,6 +17,23 @@
 
 namespace mh {
 
+/// Damage and wear of one contact (docs/outputs.md "Damage and wear columns"), filled once per
+/// case by damage_step (contact/rcf/contact_damage.hpp); NaN where its tangential problem is not
+/// solved.
+struct ContactDamage {
+  double traction = NAN;        ///< [-] the actual traction coefficient |F|/N
+  double damage = NAN;          ///< [-] Burstow damage per axle passage (burstow_damage)
+  double wear_rate = NAN;       ///< [kg/m³] USFD wear rate over the contact's area A (usfd_wear)
+  double wear_per_metre = NAN;  ///< [kg/m] mass worn per metre rolled
+};
+
+/// The sums over a case's contacts (one wheel's passage): NaN unless every contact's tangential
+/// problem is solved (TangentialSums::solved).
+struct CaseDamage {
+  double damage = NAN;          ///< [-] Σ Burstow damage per axle passage
+  double wear_per_metre = NAN;  ///< [kg/m] Σ mass worn per metre rolled
+};
+
 /// One loaded ellipse of a multi-Hertzian solution.
 struct LoadedEllipse {
   int ellipse = 0;          ///< 1-based index of the potential ellipse
@@ -30,6 +47,7 @@ struct LoadedEllipse {
   double z_r = 0;           ///< [m] rail profile z at y_r (the rail's frame, as in profiles.csv)
   double z_w = 0;           ///< [m] wheel profile z at y_w (the wheel's frame, as in profiles.csv)
   TangentialResult t;       ///< the tangential problem (FASTSIM on this ellipse; solved false: not asked)
+  ContactDamage damage;     ///< damage and wear from t (contact/rcf/contact_damage.hpp, damage_step)
 };
 
 /// One contact patch of a grid method (half-space, strips): its own tangent plane (docs/method.md §8).
@@ -86,6 +104,7 @@ struct PatchResult {
   std::vector<StripOut> strips;  ///< strip method: the loaded strips (kept for --strips)
   /// The tangential problem of this patch (exact steady rolling on its pressure; solved false: not asked or failed).
   TangentialResult t;
+  ContactDamage damage;     ///< damage and wear from t (contact/rcf/contact_damage.hpp, damage_step)
 };
 
 /// The tangential problem summed over a case's contacts (docs/tangential.md). Forces ON THE RAIL,
@@ -129,6 +148,7 @@ struct CaseResult {
   /// that solve without an answer.
   double pmax_half_L = NAN, pmax_double_L = NAN, area_half_L = NAN, area_double_L = NAN;
   TangentialSums tangential;          ///< friction given: the creep forces (docs/tangential.md)
+  CaseDamage damage;                  ///< friction given: Σ damage and wear (contact/rcf/contact_damage.hpp)
 };
 
 /// Reset r to a fresh CaseResult's values, its message and vectors keeping their capacity (the
@@ -144,6 +164,7 @@ inline void reset_case_result(CaseResult& r) {
   r.n_contacts = 0;
   r.pmax_half_L = r.pmax_double_L = r.area_half_L = r.area_double_L = NAN;
   r.tangential = TangentialSums{};
+  r.damage = CaseDamage{};
   r.loaded.clear();
   r.patches.clear();
 }

@@ -20,6 +20,7 @@
 
 #include "contact/judge/judge.hpp"
 #include "contact/solve.hpp"
+#include "contact/rcf/contact_damage.hpp"
 #include "core/errors.hpp"
 #include "core/parallel.hpp"
 #include "output/case_tables.hpp"
@@ -404,6 +405,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
             judge_smoothing_band(r, solve_contact(*band.half, cf.material, cp.tY, cp.Q, mo_row),
                                  solve_contact(*band.twice, cf.material, cp.tY, cp.Q, mo_row));
           }
+          damage_step(r, rcf.burstow, rcf.usfd);  // the damage and wear of the Tγ columns, once per case
           S.status[i] = r.status;
           auto& kinds = S.warning_kinds[i];
           kinds.clear();

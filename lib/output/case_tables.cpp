@@ -10,9 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "contact/judge/judge.hpp"
-#include "contact/rcf/subsurface.hpp"
 #include "core/units.hpp"
+#include "output/case_sinks.hpp"
 #include "output/cells.hpp"
+#include "output/rcf_columns.hpp"
 
 namespace mh {
 
@@ -81,187 +82,6 @@ const Col kPlasticTailCols[] = {
 // has area_mm2).
 const Col kAreaCol = {"area_mm2", [](const LoadedEllipse& e) { return units::pi * e.s.a * e.s.b * units::per_mm2; }};
 
-// The columns of a contact written by field, in order, to a sink: one home for the names and
-// the order of patches.csv and the "patches" records of results.json, and of the RCF columns of
-// both per-contact tables. A sink has number(name, v) (as num() writes it in CSV; null in JSON when
-// not finite), optional(name, v) (empty in CSV and null in JSON when v is not finite),
-// integer(name, i) and text(name, t) (t null: empty in CSV, null in JSON).
-struct CsvSink {
-  std::string& s;
-  void number(const char*, double v) { s += ','; num(s, v); }
-  void optional(const char*, double v) { s += ','; if (std::isfinite(v)) num(s, v); }
-  void integer(const char*, long long i) { s += ','; append_number(s, i); }
-  void text(const char*, const char* t) { s += ','; if (t) s += t; }
-};
-struct HeaderSink {
-  std::string& s;
-  void number(const char* n, double) { s += ','; s += n; }
-  void optional(const char* n, double) { s += ','; s += n; }
-  void integer(const char* n, long long) { s += ','; s += n; }
-  void text(const char* n, const char*) { s += ','; s += n; }
-};
-struct JsonSink {
-  nlohmann::ordered_json& j;
-  static nlohmann::ordered_json value(double v) {
-    return std::isfinite(v) ? nlohmann::ordered_json(rounded(v)) : nlohmann::ordered_json(nullptr);
-  }
-  void number(const char* n, double v) { j[n] = value(v); }
-  void optional(const char* n, double v) { j[n] = value(v); }
-  void integer(const char* n, long long i) { j[n] = i; }
-  void text(const char* n, const char* t) { j[n] = t ? nlohmann::ordered_json(t) : nlohmann::ordered_json(nullptr); }
-};
-
-// The RCF columns (docs/outputs.md "RCF columns"), appended last to ellipses.csv and patches.csv
-// and to their JSON records: by their definitions, from the elastic Hertz patch of the load N
-// (semi-axes a_el, b_el; NaN: not known, the cells empty).
-// The stresses below a contact's ELASTIC Hertz ellipse (a_el, b_el, p0_el of its N; never a plastic
-// patch's) with full-slip traction f: along the contact's own force (Fx, Fy) with friction given,
-// else along x (contact/rcf/subsurface.hpp; docs/outputs.md "Subsurface columns"). The search costs
-// about 0.5 s per contact: the last results of this thread are kept, so that the CSV and JSON
-// records of a contact (formatted one after the other) search once.
-SubsurfacePeaks subsurface_of(const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
-                              double f) {
-  if (!(N > 0 && a_el > 0 && b_el > 0 && f >= 0)) return {};
-  HertzLoad L;
-  L.a = a_el, L.b = b_el, L.p0 = 1.5 * N / (units::pi * a_el * b_el), L.nu = o.nu;
-  const double F = std::hypot(t.Fx, t.Fy);
-  if (o.actual && F > 0) L.fx = f * t.Fx / F, L.fy = f * t.Fy / F;
-  else L.fx = f;
-  struct Memo { HertzLoad L; SubsurfacePeaks P; bool used = false; };
-  static thread_local Memo memo[8];
-  static thread_local int next = 0;
-  for (const Memo& m : memo)
-    if (m.used && m.L.a == L.a && m.L.b == L.b && m.L.p0 == L.p0 && m.L.fx == L.fx && m.L.fy == L.fy && m.L.nu == L.nu)
-      return m.P;
-  Memo& m = memo[next];
-  next = (next + 1) % 8;
-  m.L = L, m.P = subsurface_peaks(L), m.used = true;
-  return m.P;
-}
-template <class Sink>
-void subsurface_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
-                       double f) {
-  const SubsurfacePeaks P = std::isfinite(f) ? subsurface_of(o, N, a_el, b_el, t, f) : SubsurfacePeaks{};
-  k.number("sub_vm_max_MPa", P.vm_max / units::MPa);
-  k.number("sub_vm_depth_mm", P.vm_z * units::per_mm);
-  k.number("sub_tau_max_MPa", P.tau_max / units::MPa);
-  k.number("sub_tau_depth_mm", P.tau_z * units::per_mm);
-  k.number("sub_tau_orth_amp_MPa", P.tau_orth_amp / units::MPa);
-  k.number("sub_tau_orth_depth_mm", P.tau_orth_z * units::per_mm);
-  k.number("sub_tau_eq_amp_MPa", P.tau_eq_amp / units::MPa);
-  k.number("sub_sigma_h_MPa", P.sigma_h / units::MPa);
-  k.number("FI_sub_MPa", fi_sub(P, o.dang_van_c) / units::MPa);
-}
-// The traction coefficient is the user's f, or with friction given the contact's own |F|/N
-// (RcfOptions::traction; empty where its tangential problem is unsolved).
-template <class Sink>
-void rcf_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t) {
-  const double f = o.traction(N, t.Fx, t.Fy, t.solved);
-  const RcfPoint p = rcf_point(f, o.k, N, a_el, b_el, o.nu);
-  k.number("traction_coefficient", f);
-  k.number("k_MPa", o.k / units::MPa);
-  k.number("p0_el_over_k", p.p0_el_over_k);
-  k.number("elastic_limit_p0_over_k", p.elastic_limit);
-  k.number("shakedown_limit_p0_over_k", p.shakedown_limit);
-  k.text("shakedown_regime", std::isfinite(p.p0_el_over_k) ? to_string(p.regime) : nullptr);
-  k.number("FI_surf_el", p.fi_surf_el);
-  if (o.subsurface) subsurface_fields(k, o, N, a_el, b_el, t, f);
-}
-// The worst contact's RCF indicators in cases.csv and the case record (docs/outputs.md "RCF
-// columns"), after the band columns: the contact (ellipse or patch number, by the row's method)
-// whose elastic Hertz p0_el/k is the largest, its regime, and the largest FI_surf_el of the case's
-// contacts (with one f for every contact, FI_surf = f − k/p0_el: the same contact; with each
-// contact's own traction, possibly another). One place for a run that mixes methods (auto),
-// whose per-contact RCF columns are split between ellipses.csv and patches.csv.
-template <class Sink>
-void rcf_case_fields(Sink& k, const RcfOptions& o, const CaseResult& r, bool failed) {
-  RcfPoint worst;
-  double which = NAN, fi_max = NAN;
-  auto consider = [&](int contact, double N, double a_el, double b_el, const TangentialResult& t) {
-    const RcfPoint p = rcf_point(o.traction(N, t.Fx, t.Fy, t.solved), o.k, N, a_el, b_el, o.nu);
-    if (std::isfinite(p.p0_el_over_k) && !(p.p0_el_over_k <= worst.p0_el_over_k)) worst = p, which = contact;
-    if (std::isfinite(p.fi_surf_el) && !(p.fi_surf_el <= fi_max)) fi_max = p.fi_surf_el;
-  };
-  if (!failed) {
-    for (const LoadedEllipse& L : r.loaded) consider(L.ellipse, L.s.N, L.s.a_el, L.s.b_el, L.t);
-    for (const PatchResult& P : r.patches) consider(P.patch, P.N, P.a_el, P.b_el, P.t);
-  }
-  const bool any = std::isfinite(which);
-  k.optional("rcf_worst_contact", which);
-  k.optional("rcf_worst_p0_el_over_k", worst.p0_el_over_k);
-  k.text("rcf_worst_shakedown_regime", any ? to_string(worst.regime) : nullptr);
-  k.optional("rcf_worst_FI_surf_el", fi_max);
-}
-// The tangential columns of one contact (docs/tangential.md), appended last to ellipses.csv and
-// patches.csv and to their JSON records when friction is given: the creepages, then the creep
-// forces and the spin moment ON THE RAIL in the contact frame (x rolling, s towards the field
-// side, the moment about n = x × s), the adhesion fraction and Tγ (empty where not solved).
-template <class Sink>
-void tangential_fields(Sink& k, const TangentialResult& t) {
-  k.optional("xi", t.c.xi);
-  k.optional("eta", t.c.eta);
-  k.optional("phi_per_mm", t.c.phi * units::mm);
-  const double nan = NAN;
-  k.optional("Fx_kN", t.solved ? -t.Fx / units::kN : nan);
-  k.optional("Fy_kN", t.solved ? -t.Fy / units::kN : nan);
-  k.optional("Mz_Nm", t.solved ? -t.Mz : nan);
-  k.optional("adhesion_fraction", t.solved ? t.adhesion_fraction : nan);
-  k.optional("Tgamma_N", t.solved ? t.Tgamma : nan);
-  k.optional("Tgamma_spin_N", t.solved ? t.Tgamma_spin : nan);
-}
-// Damage and wear of one contact from its Tγ = Fx ξ + Fy η (contact/rcf/damage.hpp; docs/outputs.md
-// "Damage and wear columns"), after the tangential columns: the actual traction coefficient |F|/N,
-// the Burstow damage per axle passage, the USFD wear rate over the contact's area A as solved
-// (area_mm2 of the row: the plastic patch's under a plastic law) and the mass worn per metre.
-struct ContactDamage {
-  double traction = NAN, damage = NAN, wear_rate = NAN, wear_per_metre = NAN;
-};
-inline ContactDamage contact_damage(const RcfOptions& o, const TangentialResult& t, double N, double A) {
-  ContactDamage d;
-  if (!t.solved) return d;
-  d.traction = N > 0 ? std::hypot(t.Fx, t.Fy) / N : NAN;
-  d.damage = burstow_damage(t.Tgamma, o.burstow);
-  const Wear w = usfd_wear(t.Tgamma, A, o.usfd);
-  d.wear_rate = w.rate;
-  d.wear_per_metre = w.per_metre;
-  return d;
-}
-constexpr double kUgPerMMm2 = 1e-3;  // [kg/m³] in 1 µg/(m·mm²)
-constexpr double kUgPerM = 1e-9;     // [kg/m] in 1 µg/m
-template <class Sink>
-void damage_fields(Sink& k, const ContactDamage& d) {
-  k.optional("traction_actual", d.traction);
-  k.optional("D_burstow_per_axle", d.damage);
-  k.optional("wear_rate_ug_per_m_mm2", d.wear_rate / kUgPerMMm2);
-  k.optional("wear_ug_per_m", d.wear_per_metre / kUgPerM);
-}
-// The per-case sums (cases.csv, the case record), after every other column.
-template <class Sink>
-void tangential_case_fields(Sink& k, const CaseResult& r, bool failed, const RcfOptions& o) {
-  const TangentialSums& t = r.tangential;
-  const bool ok = !failed && t.solved;
-  const double nan = NAN;
-  k.optional("Fx_kN", ok ? t.Fx / units::kN : nan);
-  k.optional("Fy_creep_kN", ok ? t.Fy_creep / units::kN : nan);
-  k.optional("Mz_Nm", ok ? t.Mz : nan);
-  k.optional("F_over_muN", ok ? t.F_over_muN : nan);
-  k.optional("Y_kN", ok ? (r.Fy + t.Fy_creep) / units::kN : nan);
-  k.optional("Fz_creep_kN", ok ? t.Fz_creep / units::kN : nan);
-  // Σ over the case's contacts of the Burstow damage per axle and of the mass worn per metre
-  // (one wheel's passage; damage_fields).
-  double D = 0, W = 0;
-  for (const LoadedEllipse& L : r.loaded) {
-    const ContactDamage d = contact_damage(o, L.t, L.s.N, units::pi * L.s.a * L.s.b);
-    D += d.damage, W += d.wear_per_metre;
-  }
-  for (const PatchResult& P : r.patches) {
-    const ContactDamage d = contact_damage(o, P.t, P.N, P.area);
-    D += d.damage, W += d.wear_per_metre;
-  }
-  k.optional("D_burstow_per_axle", ok ? D : nan);
-  k.optional("wear_ug_per_m", ok ? W / kUgPerM : nan);
-}
-
 // One contact patch of a grid method, after its case, t_Y and Q (patches.csv) or in its case's
 // record (results.json).
 template <class Sink>
@@ -300,7 +120,7 @@ void patch_fields(Sink& k, const PatchResult& P, bool plastic, const RcfOptions&
   }
   if (tangential) {
     tangential_fields(k, P.t);
-    damage_fields(k, contact_damage(rcf, P.t, P.N, P.area));
+    damage_fields(k, P.damage);
   }
 }
 
@@ -417,7 +237,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     }
     if (tangential) {
       CsvSink k{s};
-      tangential_case_fields(k, r, failed, rcf);
+      tangential_case_fields(k, r, failed);
     }
     s += '\n';
     std::string& e = f.ellipses;
@@ -445,7 +265,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (tangential) {
         CsvSink k{e};
         tangential_fields(k, L.t);
-        damage_fields(k, contact_damage(rcf, L.t, L.s.N, units::pi * L.s.a * L.s.b));
+        damage_fields(k, L.damage);
       }
       e += '\n';
     }
@@ -486,7 +306,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     }
     if (tangential) {
       JsonSink k{j};
-      tangential_case_fields(k, r, failed, rcf);
+      tangential_case_fields(k, r, failed);
     }
     nlohmann::ordered_json el = nlohmann::ordered_json::array();
     for (const LoadedEllipse& L : r.loaded) {
@@ -510,7 +330,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (tangential) {
         JsonSink k{e};
         tangential_fields(k, L.t);
-        damage_fields(k, contact_damage(rcf, L.t, L.s.N, units::pi * L.s.a * L.s.b));
+        damage_fields(k, L.damage);
       }
       el.push_back(std::move(e));
     }
@@ -609,7 +429,7 @@ std::string cases_csv_header(bool tangential, bool rcf) {
   }
   if (tangential) {
     HeaderSink k{s};
-    tangential_case_fields(k, CaseResult{}, true, RcfOptions{});
+    tangential_case_fields(k, CaseResult{}, true);
   }
   return s + "\n";
 }

@@ -15,13 +15,14 @@ tY_mm, Fz_kN, pmax_MPa, ...), with NaN where the table has an empty cell.
 import numpy as _np
 
 from ._core import (INTERFACE_VERSION, InputError, MAX_CONTACTS, METHOD_NAMES, STATUS_NAMES, UnsupportedError, Pair,
-                    Profile, Table, TableResult, Wheelset, __version__, abi_version, fft_backend)
+                    Profile, Table, TableResult, Wheelset, __version__, abi_version, fft_backend, hertz_subsurface)
+from ._core import _pair_rcf as _core_pair_rcf
 
 from .fleet import fleet, read_tables
 
 __all__ = ["fleet", "read_tables", "Pair", "Profile", "Table", "TableResult", "MAX_CONTACTS", "Wheelset", "InputError",
            "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES", "CASE_COLUMNS", "TANGENTIAL_COLUMNS", "INTERFACE_VERSION", "__version__",
-           "abi_version", "fft_backend"]
+           "abi_version", "fft_backend", "hertz_subsurface"]
 
 #: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp), then the
 #: vertical contact stiffness dFz/d(dz) (not in cases.csv).
@@ -110,6 +111,19 @@ def _pair_solve_many(self, tY_m, Q_N=None, dz_m=None, threads=0):
 
 Pair.solve = _pair_solve
 Pair.solve_many = _pair_solve_many
+
+
+def _pair_rcf(self, tY_m, Q_N, k_Pa=float("nan")):
+    """The RCF indicators, damage and wear of each contact of one case (load Q_N [N] at tY_m [m]),
+    as the RCF and damage columns of ellipses.csv / patches.csv with the published default
+    constants (docs/python.md "RCF, damage and wear"): a list of dicts, one per contact in the
+    order of solve()'s 'contacts'. k_Pa: the shear yield k [Pa] (NaN: sigma_y/sqrt(3) of the
+    pair's material; NaN values where neither is known). Needs friction for the damage and wear
+    and the actual traction (a case file's `friction` or set_tangential); NaN without."""
+    return _core_pair_rcf(self, _number("tY_m", tY_m, "m"), _number("Q_N", Q_N, "N"), _number("k_Pa", k_Pa, "Pa"))
+
+
+Pair.rcf = _pair_rcf
 
 
 # Wheelset (the extension's class): Wheelset(left_pair, right_pair, mu=nan, fastsim_nx=32,

@@ -2,6 +2,7 @@
 #include "contact/rcf/subsurface.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -18,6 +19,8 @@ void add(Stress& s, const Stress& d, double w) {
   s.xx += w * d.xx, s.yy += w * d.yy, s.zz += w * d.zz;
   s.xy += w * d.xy, s.xz += w * d.xz, s.yz += w * d.yz;
 }
+
+}  // namespace
 
 // Boussinesq: unit normal force pressing on the surface at the origin, stress at (x, y, z)
 // relative to it (Johnson 1985 eq. 3.20, in cylindrical components turned to Cartesian; the
@@ -63,6 +66,8 @@ Stress cerruti_y(double x, double y, double z, double nu) {
   s.xx = t.yy, s.yy = t.xx, s.zz = t.zz, s.xy = t.xy, s.xz = t.yz, s.yz = t.xz;
   return s;
 }
+
+namespace {
 
 struct Rule {
   std::vector<double> x, w;
@@ -152,18 +157,19 @@ namespace {
 
 // The pass of the load along x at fixed (y, z) (equivalently the field point moving through a
 // fixed load): its von Mises peak and the amplitude measures of SubsurfacePeaks, on nx points
-// across the ellipse's chord at y, the unloaded state (0) included.
+// across the loaded chord at y (0.98 of it), the unloaded state (0) included.
 struct Pass {
   double vm = 0, vm_x = 0;
   double tau_orth_amp = 0, tau_eq_amp = 0, sigma_h_at_vm = 0, tau_max = 0;
 };
-Pass pass_at(const HertzLoad& L, double y, double z, const SubsurfaceOptions& o) {
+Pass pass_at(const StressField& F, double y, double z, int nx) {
   Pass P;
-  const double half = L.a * std::sqrt(std::max(0.0, 1 - y * y / (L.b * L.b))) * 0.98;
+  const std::pair<double, double> chord = F.chord(y);
+  const double mid = 0.5 * (chord.first + chord.second), half = 0.5 * (chord.second - chord.first) * 0.98;
   Stress lo, hi;  // componentwise min and max, starting from the unloaded state
-  for (int i = 0; i < o.nx; ++i) {
-    const double x = o.nx > 1 ? -half + 2 * half * i / (o.nx - 1) : 0.0;
-    const Stress s = hertz_stress(L, x, y, z, o);
+  for (int i = 0; i < nx; ++i) {
+    const double x = nx > 1 ? mid - half + 2 * half * i / (nx - 1) : mid;
+    const Stress s = F.stress(x, y, z);
     const double vm = von_mises(s);
     if (vm > P.vm) P.vm = vm, P.vm_x = x, P.sigma_h_at_vm = (s.xx + s.yy + s.zz) / 3;
     P.tau_max = std::max(P.tau_max, max_shear(s));
@@ -182,8 +188,6 @@ Pass pass_at(const HertzLoad& L, double y, double z, const SubsurfaceOptions& o)
   return P;
 }
 
-}  // namespace
-
 // The largest of g(z) on [z_lo, z_hi] by golden-section search, to tol [m].
 template <class G>
 double golden_max(double z_lo, double z_hi, double tol, G g, double* arg) {
@@ -199,11 +203,12 @@ double golden_max(double z_lo, double z_hi, double tol, G g, double* arg) {
   return std::max(gc, gd);
 }
 
-SubsurfacePeaks subsurface_peaks(const HertzLoad& L, const SubsurfaceOptions& o) {
+}  // namespace
+
+SubsurfacePeaks field_peaks(const StressField& F, const SubsurfaceOptions& o) {
   SubsurfacePeaks R;
-  if (!(L.a > 0 && L.b > 0 && L.p0 > 0)) return R;
-  const double c = std::min(L.a, L.b);
-  const int ny = L.fy == 0 ? 1 : std::max(1, o.ny);  // y = 0 is a symmetry plane when f_y = 0
+  const double c = F.depth_scale;
+  const int ny = std::max(1, F.ny);
   // Depths denser near the surface: z = c (z_min + (z_max − z_min) t²), t uniform.
   auto depth = [&](int k) {
     const double t = o.nz > 1 ? double(k) / (o.nz - 1) : 0.0;
@@ -212,9 +217,9 @@ SubsurfacePeaks subsurface_peaks(const HertzLoad& L, const SubsurfaceOptions& o)
   struct Best { double v = -1, y = 0; int k = 0; };
   Best vm, tau, orth, eq;
   for (int j = 0; j < ny; ++j) {
-    const double y = ny > 1 ? L.b * 0.8 * (2.0 * j / (ny - 1) - 1) : 0.0;
+    const double y = ny > 1 ? F.y_lo + (F.y_hi - F.y_lo) * j / (ny - 1) : 0.5 * (F.y_lo + F.y_hi);
     for (int k = 0; k < o.nz; ++k) {
-      const Pass P = pass_at(L, y, depth(k), o);
+      const Pass P = pass_at(F, y, depth(k), o.nx);
       if (P.vm > vm.v) vm = {P.vm, y, k};
       if (P.tau_max > tau.v) tau = {P.tau_max, y, k};
       if (P.tau_orth_amp > orth.v) orth = {P.tau_orth_amp, y, k};
@@ -227,17 +232,32 @@ SubsurfacePeaks subsurface_peaks(const HertzLoad& L, const SubsurfaceOptions& o)
   auto refine = [&](const Best& B, auto measure, double* z) {
     if (B.k == 0) { *z = depth(0); return B.v; }
     const double lo = depth(B.k - 1), hi = depth(std::min(B.k + 1, o.nz - 1));
-    return std::max(B.v, golden_max(lo, hi, tol, [&](double zz) { return measure(pass_at(L, B.y, zz, o)); }, z));
+    return std::max(B.v, golden_max(lo, hi, tol, [&](double zz) { return measure(pass_at(F, B.y, zz, o.nx)); }, z));
   };
   R.vm_max = refine(vm, [](const Pass& P) { return P.vm; }, &R.vm_z);
   R.vm_y = vm.y;
-  R.vm_x = pass_at(L, vm.y, R.vm_z, o).vm_x;
+  R.vm_x = pass_at(F, vm.y, R.vm_z, o.nx).vm_x;
   R.surface = vm.k == 0;
   R.tau_max = refine(tau, [](const Pass& P) { return P.tau_max; }, &R.tau_z);
   R.tau_orth_amp = refine(orth, [](const Pass& P) { return P.tau_orth_amp; }, &R.tau_orth_z);
   R.tau_eq_amp = refine(eq, [](const Pass& P) { return P.tau_eq_amp; }, &R.tau_eq_z);
-  R.sigma_h = pass_at(L, eq.y, R.tau_eq_z, o).sigma_h_at_vm;
+  R.sigma_h = pass_at(F, eq.y, R.tau_eq_z, o.nx).sigma_h_at_vm;
   return R;
+}
+
+SubsurfacePeaks subsurface_peaks(const HertzLoad& L, const SubsurfaceOptions& o) {
+  if (!(L.a > 0 && L.b > 0 && L.p0 > 0)) return {};
+  StressField F;
+  F.stress = [&](double x, double y, double z) { return hertz_stress(L, x, y, z, o); };
+  F.chord = [&](double y) {
+    const double h = L.a * std::sqrt(std::max(0.0, 1 - y * y / (L.b * L.b)));
+    return std::make_pair(-h, h);
+  };
+  F.depth_scale = std::min(L.a, L.b);
+  F.ny = L.fy == 0 ? 1 : std::max(1, o.ny);  // y = 0 is a symmetry plane when f_y = 0
+  F.y_lo = F.ny > 1 ? -0.8 * L.b : 0.0;
+  F.y_hi = F.ny > 1 ? 0.8 * L.b : 0.0;
+  return field_peaks(F, o);
 }
 
 }  // namespace mh

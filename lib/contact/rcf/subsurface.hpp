@@ -14,6 +14,9 @@
 // Sign convention: tension positive; z into the body; the surface loads act ON the body (σ_zz =
 // −p, σ_xz = −q_x at the surface). SI throughout.
 #include <cmath>
+#include <functional>
+#include <utility>
+#include <vector>
 
 namespace mh {
 
@@ -21,6 +24,13 @@ namespace mh {
 struct Stress {
   double xx = 0, yy = 0, zz = 0, xy = 0, xz = 0, yz = 0;
 };
+
+/// The point-force solutions [Pa per N] at (x, y, z) relative to the force's point on the surface,
+/// z > 0: Boussinesq's for a unit normal force pressing on the body (Johnson 1985 eq. 3.20),
+/// Cerruti's for a unit tangential force along +x and along +y acting on the body (eqs. 3.22–3.23).
+Stress boussinesq(double x, double y, double z, double nu);
+Stress cerruti_x(double x, double y, double z, double nu);
+Stress cerruti_y(double x, double y, double z, double nu);
 
 /// [Pa] von Mises equivalent stress √(3 J2).
 double von_mises(const Stress& s);
@@ -71,6 +81,20 @@ struct SubsurfacePeaks {
   bool surface = false;                  ///< the von Mises peak lies on the shallowest depth searched
 };
 SubsurfacePeaks subsurface_peaks(const HertzLoad& L, const SubsurfaceOptions& o = {});
+
+/// A stress field below a surface load, for the peak search: the stress at (x, y, z); the loaded
+/// chord [x_lo, x_hi] at y (the pass of the load along x runs over 0.98 of it); the rows searched,
+/// ny values of y evenly over [y_lo, y_hi] (one row at their mean when ny = 1); the length that
+/// scales the depths searched (SubsurfaceOptions::z_min, z_max).
+struct StressField {
+  std::function<Stress(double x, double y, double z)> stress;
+  std::function<std::pair<double, double>(double y)> chord;
+  double depth_scale = 0;
+  int ny = 1;
+  double y_lo = 0, y_hi = 0;
+};
+/// The peaks of a field (as subsurface_peaks, which is this search on the Hertz field).
+SubsurfacePeaks field_peaks(const StressField& F, const SubsurfaceOptions& o = {});
 
 /// [Pa] Subsurface fatigue index in the Dang Van form of Ekberg, Kabo & Andersson (2002):
 /// FI_sub = τ_eq,a + c σ_h, subsurface initiation predicted where it exceeds the material's shear
