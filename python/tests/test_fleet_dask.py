@@ -75,3 +75,23 @@ def test_without_a_client_and_bad_input(tmp_path):
     bad.write_text('{"wheels": ["nothing-*.prw"], "rails": [{"standard": "60E1"}], "inclination": "1:40"}')
     with pytest.raises(mhcontact.InputError, match="nothing-"):
         mhcontact.fleet(str(bad), None, tmp_path / "bad")
+
+
+def test_a_worker_that_shares_the_file_system_sends_nothing_back(tmp_path):
+    # The worker's side of the token (python/mhcontact/fleet.py): the client's token file found
+    # with its bytes means the shard is already where the client reads it (nothing sent); a
+    # missing or different token, a worker on another file system: every file sent back, and
+    # the client writes them as the shard wrote them.
+    import sys
+    fl = sys.modules["mhcontact.fleet"]
+    shard = str(tmp_path / "w" / "shard1")
+    token = (str(tmp_path / "token"), b"0123456789abcdef")
+    with open(token[0], "wb") as f:
+        f.write(token[1])
+    k, rc, _, files = fl._shard_task(SWEEP, shard, 1, 3, 1, 10, token)
+    assert (k, files) == (1, None) and rc in (0, 1)
+    k, rc, _, files = fl._shard_task(SWEEP, shard + "b", 1, 3, 1, 10, (token[0], b"another client.."))
+    assert files is not None and "cases.csv" in files and "shard.json" in files
+    fl._place(files, str(tmp_path / "client" / "shard1"))
+    names = same_files(shard, str(tmp_path / "client" / "shard1"))
+    assert "cases.csv" in names

@@ -1,0 +1,70 @@
+#!/usr/bin/env python3
+"""The cost of the Dask route against the local run, per case (docs/cluster.md#cost): the fleet
+of cases/fleet.json (4 pairs) with a finer t_Y step, run (1) by `mhcontact run` in one process
+on every core, (2) by mhcontact.fleet on a LocalCluster on 127.0.0.1 (one worker process per core,
+one thread each; the cluster started before the clock), merged into a directory, (3) locally
+again; the merged files compared with the local run's byte for byte. Wall times.
+
+    PYTHONPATH=build/python /usr/bin/python3 scripts/bench_dask.py [tY step mm, default 0.01] [method]
+"""
+import filecmp
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+import mhcontact
+from dask.distributed import Client, LocalCluster
+
+src = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+binary = os.path.realpath(os.environ.get("MHCONTACT", os.path.join(src, "build", "mhcontact")))
+step = sys.argv[1] if len(sys.argv) > 1 else "0.01"
+method = sys.argv[2] if len(sys.argv) > 2 else "multi-hertzian"
+
+
+def main():
+    tmp = tempfile.mkdtemp()
+    try:
+        text = open(os.path.join(src, "cases", "fleet.json")).read()
+        text = text.replace('"step": 0.5', f'"step": {step}')
+        text = text.replace('"model": "elastic",', f'"model": "elastic", "method": "{method}",')
+        text = re.sub(r'"\.\./profiles/', f'"{src}/profiles/', text)
+        case = os.path.join(tmp, "fleet.json")
+        open(case, "w").write(text)
+        ncores = os.cpu_count() or 1
+
+        def local(name):
+            t0 = time.time()
+            rc = subprocess.run([binary, "run", case, "-o", os.path.join(tmp, name), "-q", "--threads", str(ncores)]).returncode
+            assert rc in (0, 1), rc
+            return time.time() - t0
+
+        t_local1 = local("local1")
+        cases = sum(1 for _ in open(os.path.join(tmp, "local1", "cases.csv"))) - 1
+        with LocalCluster(n_workers=ncores, threads_per_worker=1, host="127.0.0.1", dashboard_address=None,
+                          processes=True) as cluster, Client(cluster) as client:
+            client.run(lambda: __import__("mhcontact") and 0)  # the module loaded in each worker
+            t0 = time.time()
+            res = mhcontact.fleet(case, client, os.path.join(tmp, "dask"))
+            t_dask = time.time() - t0
+        t_local2 = local("local2")
+        a, b = os.path.join(tmp, "local1"), os.path.join(tmp, "dask")
+        for root, _, files in os.walk(a):
+            for f in files:
+                if f == "run.json":
+                    continue  # the command line and times differ
+                rel = os.path.relpath(os.path.join(root, f), a)
+                assert filecmp.cmp(os.path.join(a, rel), os.path.join(b, rel), shallow=False), rel
+        mean_local = (t_local1 + t_local2) / 2
+        print(f"{method}, {cases} cases, {ncores} cores: local {t_local1:.2f} s and {t_local2:.2f} s "
+              f"({1e6 * mean_local / cases:.1f} us a case); Dask {t_dask:.2f} s ({1e6 * t_dask / cases:.1f} us a case, "
+              f"{res['shards']} shards): {100 * (t_dask / mean_local - 1):+.1f} % over the mean local; the same bytes")
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
