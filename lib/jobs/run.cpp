@@ -30,8 +30,7 @@ nlohmann::json program_json() {
 nlohmann::json pair_summary_json(const PairGeometry& pg) {
   nlohmann::json j;
   if (pg.geo.wheel_curve && pg.geo.rail_curve)
-    j["profiles"] = {{"wheel", pg.geo.wheel_curve->noise().measured ? "measured" : "exact"},
-                     {"rail", pg.geo.rail_curve->noise().measured ? "measured" : "exact"}};
+    j["profiles"] = {{"wheel", pg.geo.wheel_curve->noise().class_name()}, {"rail", pg.geo.rail_curve->noise().class_name()}};
   // Smoothing for contact (profiles.md §7): per profile, the spline's length L, 0 when not smoothed.
   if (pg.geo.wheel_gap_curve && pg.geo.rail_gap_curve)
     j["contact_smoothing_mm"] = {{"wheel", std::round(pg.geo.wheel_gap_curve->smoothing_length() * 1e6) / 1e3},

@@ -14,10 +14,21 @@ namespace mh {
 using namespace cells;
 
 nlohmann::json noise_json(const NoiseDecision& d) {
-  return {{"class", d.measured ? "measured" : "exact"}, {"forced", d.forced},
-          {"median_residual_um", d.median_residual * 1e6}, {"print_step_mm", d.print_step * units::per_mm},
-          {"rounding_rms_um", d.rounding_rms * 1e6}, {"threshold_um", d.threshold * 1e6},
-          {"sigma_um", std::round(d.sigma * 1e9) / 1e3}, {"reason", d.reason}};
+  nlohmann::json j = {{"class", d.class_name()}, {"forced", d.forced},
+                      {"median_residual_um", d.median_residual * 1e6}, {"print_step_mm", d.print_step * units::per_mm},
+                      {"rounding_rms_um", d.rounding_rms * 1e6}, {"threshold_um", d.threshold * 1e6},
+                      {"sigma_um", std::round(d.sigma * 1e9) / 1e3}, {"reason", d.reason}};
+  if (d.mixed()) {
+    nlohmann::json a = nlohmann::json::array();
+    for (const NoiseRegion& r : d.regions)
+      a.push_back({{"class", r.measured ? "measured" : "exact"},
+                   {"y_from_mm", std::isfinite(r.y_from) ? nlohmann::json(r.y_from * units::per_mm) : nlohmann::json(nullptr)},
+                   {"y_to_mm", std::isfinite(r.y_to) ? nlohmann::json(r.y_to * units::per_mm) : nlohmann::json(nullptr)},
+                   {"print_step_mm", r.print_step * units::per_mm}, {"median_residual_um", r.median_residual * 1e6},
+                   {"threshold_um", r.threshold * 1e6}, {"sigma_um", std::round(r.sigma * 1e9) / 1e3}});
+    j["regions"] = a;
+  }
+  return j;
 }
 
 nlohmann::json cant_json(const RailCant& c) {

@@ -1,5 +1,7 @@
 #include "profile/curve.hpp"
 
+#include "profile/print_regions.hpp"
+
 #include "core/roots.hpp"
 
 #include <algorithm>
@@ -169,12 +171,18 @@ LocalFit fit_window(const std::vector<double>& y, const std::vector<double>& z, 
 std::optional<SmoothedProfile> smooth_for_contact(const Profile& p, const NoiseDecision& noise,
                                                   const std::optional<double>& L, const NoiseSmoothingOptions& opt) {
   if (!noise.measured) return std::nullopt;
+  // A mixed profile's exact regions are kept as they are (NoiseDecision::regions).
+  std::vector<char> keep;
+  if (noise.mixed()) {
+    keep.resize(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) keep[i] = noise.exact_at(p.y[i]);
+  }
   if (L) {
     if (!(*L > 0)) return std::nullopt;
-    return smooth_profile(p, *L * opt.length_scale);
+    return smooth_profile(p, *L * opt.length_scale, keep);
   }
   if (!(noise.sigma > 0)) return std::nullopt;
-  return smooth_profile_to_noise(p, noise.sigma, opt);
+  return smooth_profile_to_noise(p, noise.sigma, opt, keep);
 }
 
 ProfileNoise parse_profile_noise(const std::string& s) {
@@ -205,18 +213,56 @@ ProfileCurve::ProfileCurve(const Profile& p, const CurveOptions& opt) {
   // Measured or exact (profiles.md "Measured or exact"): the residual against what rounding the
   // printed coordinates explains.
   NoiseDecision& d = noise_;
-  d.median_residual = median_rms_;
-  d.print_step = p.print_step;
-  d.rounding_rms = p.print_step / std::sqrt(12.0);
+  std::string rule;
+  d = classify_noise(centred, 0, centred.size(), median_rms_, p.print_step, opt, &rule);
+  if (opt.noise != ProfileNoise::Auto) {
+    d.forced = true;
+    d.measured = opt.noise == ProfileNoise::Measured;
+    d.reason = std::string(d.measured ? "measured" : "exact") + ": forced by the noise option; " + rule;
+  } else {
+    classify_regions(p, centred, opt);
+  }
+  const bool wide = opt.measured_window_half_width > opt.window_half_width;
+  if (d.mixed() && wide) {
+    // The narrow window's curve at the exact regions' nodes, the wide one's elsewhere.
+    build(p, opt, opt.window_half_width, false, &centred);
+    const std::vector<double> z = z_, dz = dz_, k = k_;
+    const std::vector<signed char> side = side_;
+    build(p, opt, opt.measured_window_half_width);
+    for (std::size_t j = 0; j < z_.size(); ++j)
+      if (d.exact_at(node_y(j))) z_[j] = z[j], dz_[j] = dz[j], k_[j] = k[j], side_[j] = side[j];
+    median_rms_ = d.median_residual;
+  } else if (d.measured && wide) {
+    build(p, opt, opt.measured_window_half_width);
+  } else {
+    build(p, opt, opt.window_half_width, false, &centred);
+  }
+}
+
+bool NoiseDecision::exact_at(double y) const {
+  for (const NoiseRegion& r : regions)
+    if (y >= r.y_from && y <= r.y_to) return !r.measured;
+  return false;
+}
+
+NoiseDecision ProfileCurve::classify_noise(const std::vector<LocalFit>& centred, std::size_t j0, std::size_t j1,
+                                           double median_residual, double print_step, const CurveOptions& opt,
+                                           std::string* rule_out) {
+  NoiseDecision d;
+  d.median_residual = median_residual;
+  d.print_step = print_step;
+  d.rounding_rms = print_step / std::sqrt(12.0);
   d.threshold = std::max(opt.noise_threshold, opt.quantisation_factor * d.rounding_rms);
   {
     std::vector<double> v;
     std::vector<int> k;
-    for (const LocalFit& f : centred)
+    for (std::size_t j = j0; j < j1; ++j) {
+      const LocalFit& f = centred[j];
       if (f.ok && f.points > 3 && std::isfinite(f.rms)) {
         v.push_back(f.rms * f.rms * f.points / (f.points - 3));
         k.push_back(f.points);
       }
+    }
     if (!v.empty()) {
       const auto mid = static_cast<std::ptrdiff_t>(v.size() / 2);
       std::nth_element(v.begin(), v.begin() + mid, v.end());
@@ -226,26 +272,61 @@ ProfileCurve::ProfileCurve(const Profile& p, const CurveOptions& opt) {
       d.sigma = std::sqrt(v[v.size() / 2] / median_chi2);
     }
   }
-  const std::string step = p.print_step > 0 ? "the printed " + print_step_text(p.print_step) : "";
+  const std::string step = print_step > 0 ? "the printed " + print_step_text(print_step) : "";
   const std::string rule =
       "median residual " + um(d.median_residual) + (d.median_residual > d.threshold ? " > " : " <= ") + um(d.threshold) +
       (opt.quantisation_factor * d.rounding_rms > opt.noise_threshold
            ? " (" + format_number(opt.quantisation_factor) + " x " + um(d.rounding_rms) + ", rounding to " + step + ")"
            : " (noise threshold" + (step.empty() ? std::string() : "; rounding to " + step + " explains " + um(d.rounding_rms)) + ")");
   const bool coarse = d.rounding_rms > opt.max_exact_rounding && d.median_residual > opt.noise_threshold;
-  const std::string coarse_rule = "printed to " + print_step_text(p.print_step) + ", whose rounding (" +
+  const std::string coarse_rule = "printed to " + print_step_text(print_step) + ", whose rounding (" +
                                   um(d.rounding_rms) + " RMS) exceeds " + um(opt.max_exact_rounding) +
                                   ": noise to the narrow window; " + rule;
-  if (opt.noise == ProfileNoise::Auto) {
-    d.measured = d.median_residual > (coarse ? opt.noise_threshold : d.threshold);
-    d.reason = std::string(d.measured ? "measured: " : "exact: ") + (coarse ? coarse_rule : rule);
-  } else {
-    d.forced = true;
-    d.measured = opt.noise == ProfileNoise::Measured;
-    d.reason = std::string(d.measured ? "measured" : "exact") + ": forced by the noise option; " + rule;
+  d.measured = d.median_residual > (coarse ? opt.noise_threshold : d.threshold);
+  d.reason = std::string(d.measured ? "measured: " : "exact: ") + (coarse ? coarse_rule : rule);
+  if (rule_out) *rule_out = rule;
+  return d;
+}
+
+void ProfileCurve::classify_regions(const Profile& p, const std::vector<LocalFit>& centred, const CurveOptions& opt) {
+  const std::vector<PrintRegion> pr = print_regions(p);
+  if (pr.size() < 2 || centred.empty()) return;
+  NoiseDecision& d = noise_;
+  std::vector<NoiseRegion> regions;
+  std::string reason;
+  double sigma = 0;
+  bool any_measured = false, any_exact = false;
+  for (std::size_t r = 0; r < pr.size(); ++r) {
+    NoiseRegion g;
+    // Boundaries halfway between the regions' outer points (the profile's ends beyond).
+    g.y_from = r == 0 ? -std::numeric_limits<double>::infinity() : 0.5 * (p.y[pr[r - 1].last] + p.y[pr[r].first]);
+    g.y_to = r + 1 == pr.size() ? std::numeric_limits<double>::infinity() : 0.5 * (p.y[pr[r].last] + p.y[pr[r + 1].first]);
+    g.print_step = pr[r].step;
+    // The narrow centred fits at its nodes (node j at node_y(j): the nodes built so far).
+    std::size_t j0 = centred.size(), j1 = 0;
+    for (std::size_t j = 0; j < centred.size(); ++j)
+      if (node_y(j) >= g.y_from && node_y(j) <= g.y_to) j0 = std::min(j0, j), j1 = j + 1;
+    if (j0 >= j1) continue;  // outside the nodes built (CurveOptions::y_from, y_to)
+    std::vector<double> rms;
+    for (std::size_t j = j0; j < j1; ++j) rms.push_back(centred[j].rms);
+    std::nth_element(rms.begin(), rms.begin() + static_cast<std::ptrdiff_t>(rms.size() / 2), rms.end());
+    const NoiseDecision c = classify_noise(centred, j0, j1, rms[rms.size() / 2], g.print_step, opt);
+    g.median_residual = c.median_residual;
+    g.threshold = c.threshold;
+    g.sigma = c.sigma;
+    g.measured = c.measured;
+    (g.measured ? any_measured : any_exact) = true;
+    if (g.measured) sigma = std::max(sigma, g.sigma);
+    const std::string from = std::isfinite(g.y_from) ? format_number(std::round(g.y_from * 1e5) / 100) : "start";
+    const std::string to = std::isfinite(g.y_to) ? format_number(std::round(g.y_to * 1e5) / 100) : "end";
+    reason += (reason.empty() ? "" : "; ") + std::string("y ") + from + " … " + to + " mm " + c.reason;
+    regions.push_back(g);
   }
-  if (d.measured && opt.measured_window_half_width > opt.window_half_width) build(p, opt, opt.measured_window_half_width);
-  else build(p, opt, opt.window_half_width, false, &centred);
+  if (!(any_measured && any_exact)) return;  // one class: the whole profile's decision stands
+  d.regions = std::move(regions);
+  d.measured = true;
+  d.sigma = sigma;
+  d.reason = "mixed, by printed precision: " + reason;
 }
 
 void ProfileCurve::build(const Profile& p, const CurveOptions& opt, double w, bool centred_only,

@@ -72,6 +72,16 @@ struct CurveOptions {
   double y_to = std::numeric_limits<double>::infinity();
 };
 
+/// One region of a file printed to one precision (print_regions.hpp), classed on its own.
+struct NoiseRegion {
+  double y_from = 0, y_to = 0;  ///< [m] its points' y range (boundaries halfway to the next region's)
+  double print_step = 0;        ///< [m] its printed step
+  double median_residual = 0;   ///< [m] of the narrow centred fits at its nodes
+  double threshold = 0;         ///< [m] as NoiseDecision::threshold, from its own step
+  double sigma = 0;             ///< [m] its noise σ (as NoiseDecision::sigma, over its nodes)
+  bool measured = false;
+};
+
 /// How a profile was classified by the curve fit (ProfileCurve::noise()).
 struct NoiseDecision {
   bool measured = false;        ///< true: the wide window was used
@@ -90,6 +100,17 @@ struct NoiseDecision {
   double sigma = 0;
   /// "exact: median residual 0.28 µm <= 0.87 µm (3 × 0.29 µm, rounding to the printed 0.001 mm)".
   std::string reason;
+  /// A file printed to different precision along the profile whose regions class differently
+  /// (profiles.md §7 "Region by region"): each region, in y order. Then `measured` is true, the
+  /// wide window is used in the measured regions and the narrow one in the exact ones, `sigma`
+  /// is the largest measured region's, and the smoothing for contact keeps the exact regions'
+  /// points. Empty otherwise (one class for the whole profile, decided as above).
+  std::vector<NoiseRegion> regions;
+  bool mixed() const { return !regions.empty(); }
+  /// "exact", "measured" or "mixed" (the outputs' spelling).
+  const char* class_name() const { return mixed() ? "mixed" : measured ? "measured" : "exact"; }
+  /// Whether rail/wheel y lies in an exact region of a mixed profile.
+  bool exact_at(double y) const;
 };
 
 namespace curve_detail {
@@ -172,6 +193,15 @@ class ProfileCurve {
   /// curve, taking the centred fits from `*centred` when given (the same window, fitted before).
   void build(const Profile& p, const CurveOptions& opt, double w, bool centred_only = false,
              std::vector<curve_detail::LocalFit>* centred = nullptr);
+  /// Measured or exact from the narrow centred fits of nodes [j0, j1) and their median RMS
+  /// residual, against the rounding of `print_step` (profiles.md "Measured or exact"); `rule_out`
+  /// receives the comparison's text without the class.
+  static NoiseDecision classify_noise(const std::vector<curve_detail::LocalFit>& centred, std::size_t j0, std::size_t j1,
+                                      double median_residual, double print_step, const CurveOptions& opt,
+                                      std::string* rule_out = nullptr);
+  /// A file printed to different precision along the profile (print_regions.hpp): each region
+  /// classed by its own nodes' fits; noise_.regions set when the classes differ.
+  void classify_regions(const Profile& p, const std::vector<curve_detail::LocalFit>& centred, const CurveOptions& opt);
 };
 
 }  // namespace mh

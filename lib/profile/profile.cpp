@@ -68,9 +68,11 @@ double inclination_angle(const Inclination& i) {
 
 void rotate_towards_track_centre(Profile& p, double angle) {
   if (angle == 0.0 || p.size() == 0) return;
+  if (p.point_step.size() != p.size()) p.point_step.clear();
   if (!p.face_y.empty()) {
     // A vertical gauge face turned is no longer vertical: it goes back among the points (foot
     // first), and the rule below keeps what stays a function z(y).
+    if (!p.point_step.empty()) p.point_step.insert(p.point_step.begin(), p.face_y.size(), p.point_step.front());
     p.y.insert(p.y.begin(), p.face_y.rbegin(), p.face_y.rend());
     p.z.insert(p.z.begin(), p.face_z.rbegin(), p.face_z.rend());
     p.face_y.clear();
@@ -93,6 +95,9 @@ void rotate_towards_track_centre(Profile& p, double angle) {
   const std::size_t clipped = a + (y.size() - 1 - b);
   p.y.assign(y.begin() + static_cast<std::ptrdiff_t>(a), y.begin() + static_cast<std::ptrdiff_t>(b + 1));
   p.z.assign(z.begin() + static_cast<std::ptrdiff_t>(a), z.begin() + static_cast<std::ptrdiff_t>(b + 1));
+  if (!p.point_step.empty())
+    p.point_step.assign(p.point_step.begin() + static_cast<std::ptrdiff_t>(a),
+                        p.point_step.begin() + static_cast<std::ptrdiff_t>(b + 1));
   if (clipped)
     p.warnings.push_back("inclination: clipped " + std::to_string(clipped) +
                          " flank points that became vertical or overhanging");

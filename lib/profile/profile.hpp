@@ -50,6 +50,12 @@ struct Profile {
   /// drawing elements. The curvature fit compares its residual with the rounding error this
   /// step explains (curve.hpp, profiles.md "Measured or exact").
   double print_step = 0;
+  /// [m] The printed step of each point (its finer coordinate's 10^-d mm; 0: unknown, e.g. a
+  /// sampled drawing element), empty when not known at all (generated profiles). Where it
+  /// varies along a file (a stitched measurement printed partly to 17 digits and partly to 4)
+  /// the noise is classed region by region (profile/print_regions.hpp). Code that adds,
+  /// removes or reorders points keeps it in step, or clears it.
+  std::vector<double> point_step;
   /// [m] Rails: the gauge face below the first point where a function z(y) cannot hold it, as
   /// the 60E1/54E1/60E2 flank that a 1:20 cant makes vertical (profiles.md "Inclination"): its
   /// points from the one next to (y[0], z[0]) downwards to its foot, each face_y equal to y[0]

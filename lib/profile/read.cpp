@@ -116,6 +116,10 @@ Profile read_profile(const std::string& path, const ProfileReadOptions& opt) {
   p.taping_line = r.taping_line;
   p.file_measures = r.measures;
   p.print_step = r.print_step * opt.scale / 1000;
+  if (!r.line_step.empty()) {
+    p.point_step.resize(r.size());
+    for (std::size_t k = 0; k < r.size(); ++k) p.point_step[k] = r.step_of_line(r.line[k]) * opt.scale / 1000;
+  }
   p.y.resize(r.size());
   p.z.resize(r.size());
   for (std::size_t k = 0; k < r.size(); ++k) p.y[k] = r.y[k] / 1000 + 0.0, p.z[k] = r.z[k] / 1000 + 0.0;  // +0.0: no -0; "/ 1000" so that "* 1000" gives the file digits back

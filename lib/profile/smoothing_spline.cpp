@@ -178,23 +178,42 @@ SmoothedProfile smooth_weighted(const Profile& p, double L, const std::vector<do
 
 }  // namespace
 
+namespace {
+/// The local weight factor of a kept point: the local length L c^(−1/4) = kKeepLength.
+double keep_factor(double L) { return std::max(1.0, std::pow(L / kKeepLength, 4)); }
+}  // namespace
+
 SmoothedProfile smooth_profile(const Profile& p, double L) {
   return smooth_weighted(p, L, std::vector<double>(p.size(), 1.0));
 }
 
-SmoothedProfile smooth_profile_to_noise(const Profile& p, double sigma, const NoiseSmoothingOptions& opt) {
+SmoothedProfile smooth_profile(const Profile& p, double L, const std::vector<char>& keep) {
+  std::vector<double> c(p.size(), 1.0);
+  for (std::size_t i = 0; i < keep.size() && i < c.size(); ++i)
+    if (keep[i]) c[i] = keep_factor(L);
+  return smooth_weighted(p, L, c);
+}
+
+SmoothedProfile smooth_profile_to_noise(const Profile& p, double sigma, const NoiseSmoothingOptions& opt,
+                                        const std::vector<char>& keep) {
   const std::size_t n = p.size();
   if (!(sigma > 0) || !(opt.length_scale > 0) || !(opt.L_min > 0) || !(opt.L_max >= opt.L_min) || !(opt.sigma_ref > 0) || !(opt.spacing_ref > 0) || n < 3)
     throw std::invalid_argument("smooth_profile_to_noise: needs sigma > 0, 0 < L_min <= L_max, positive references, 3 points");
   // 1. The length from the noise and the point spacing (header).
+  const auto kept = [&](std::size_t i) { return i < keep.size() && keep[i] != 0; };
   std::vector<double> d;
-  for (std::size_t i = 1; i < n; ++i) d.push_back(std::hypot(p.y[i] - p.y[i - 1], p.z[i] - p.z[i - 1]));
+  for (std::size_t i = 1; i < n; ++i)
+    if (!kept(i) && !kept(i - 1)) d.push_back(std::hypot(p.y[i] - p.y[i - 1], p.z[i] - p.z[i - 1]));
+  if (d.empty())
+    throw std::invalid_argument("smooth_profile_to_noise: every point is kept (nothing to smooth)");
   std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
   const double spacing = d[d.size() / 2];
   const double L0 = opt.L_ref * std::pow(sigma / opt.sigma_ref, 2.0 / 3.0) * std::cbrt(spacing / opt.spacing_ref);
   const double L = std::clamp(L0, opt.L_min, opt.L_max);
   // 2. ... and no more: the local discrepancy guard (header).
   std::vector<double> c(n, 1.0), e, s;
+  for (std::size_t i = 0; i < n; ++i)
+    if (kept(i)) c[i] = keep_factor(L);
   SmoothedProfile sp = smooth_weighted(p, L, c, &e, &s);
   const double c_max = std::pow(L / opt.L_min, 4);  // the local length L c^(−1/4) stays ≥ L_min
   double from = 0, to = 0;
@@ -226,7 +245,10 @@ SmoothedProfile smooth_profile_to_noise(const Profile& p, double sigma, const No
   if (opt.length_scale != 1.0) sp = smooth_weighted(p, Ls, c);
   sp.sigma = sigma;
   sp.at_bound = L != L0;
-  sp.L_local_min = Ls * std::pow(*std::max_element(c.begin(), c.end()), -0.25);
+  double c_max_local = 1;  // the guard's shortest local length (kept points aside)
+  for (std::size_t i = 0; i < n; ++i)
+    if (!kept(i)) c_max_local = std::max(c_max_local, c[i]);
+  sp.L_local_min = Ls * std::pow(c_max_local, -0.25);
   sp.local_from = shortened ? from : 0;
   sp.local_to = shortened ? to : 0;
   return sp;

@@ -66,6 +66,13 @@ struct SmoothedProfile {
 };
 SmoothedProfile smooth_profile(const Profile& p, double L);
 
+/// Points a smoothing keeps where they are (a mixed profile's exact regions, curve.hpp
+/// NoiseDecision::regions): their weights are raised so that the spline's local length there is
+/// kKeepLength, far below any geometry of a profile: it passes through them.
+constexpr double kKeepLength = 1e-5;  ///< [m] (10 µm, the curve's grid step)
+/// The same as smooth_profile with the points where keep[i] is non-zero kept (keep empty: none).
+SmoothedProfile smooth_profile(const Profile& p, double L, const std::vector<char>& keep);
+
 /// The smoothing length chosen from the noise (smooth_profile_to_noise; documented defaults).
 struct NoiseSmoothingOptions {
   /// The reference point of the length rule: L_ref at noise sigma_ref and point spacing
@@ -99,6 +106,9 @@ struct NoiseSmoothingOptions {
 ///     lambda / w_i sets the local length), up to local_steps times, not below L_min;
 ///  3. with opt.length_scale != 1, the spline of steps 1–2 is made again with L × length_scale
 ///     and the same local weights (every length scaled, the shortened regions kept).
-SmoothedProfile smooth_profile_to_noise(const Profile& p, double sigma, const NoiseSmoothingOptions& opt = {});
+///  Points where keep[i] is non-zero (keep empty: none) are kept (kKeepLength), and the point
+///  spacing of step 1 is the median over the other points.
+SmoothedProfile smooth_profile_to_noise(const Profile& p, double sigma, const NoiseSmoothingOptions& opt = {},
+                                        const std::vector<char>& keep = {});
 
 }  // namespace mh

@@ -41,17 +41,28 @@ struct RawProfile {
   /// Smallest printed step of the coordinates (the most decimals seen), in the file's length
   /// units until the reader scales it to mm; 0: not printed (sampled elements) or unknown.
   double print_step = 0;
+  /// The printed step of each file line's point: the finer of its two coordinates' steps (the
+  /// decimals a point shows; trailing zeros a writer dropped make a step coarser than the
+  /// precision, which Profile::point_step's user allows for), in the same units as print_step,
+  /// indexed by file line (0: no printed point on that line).
+  std::vector<double> line_step;
   /// Rails: the vertical gauge face found by the clean-up (Profile::face_y, face_z), mm.
   std::vector<double> face_y, face_z;
   void add(double yy, double zz, std::size_t ln) { y.push_back(yy); z.push_back(zz); line.push_back(ln); }
   /// The same from the tokens as printed; records their printed step.
   void add(const std::string& ty, const std::string& tz, const std::string& where, std::size_t ln) {
     add(parse_number(ty, where), parse_number(tz, where), ln);
+    double finest = 0;
     for (const std::string* t : {&ty, &tz}) {
       const double q = printed_step(*t);
       if (q > 0 && (print_step == 0 || q < print_step)) print_step = q;
+      if (q > 0 && (finest == 0 || q < finest)) finest = q;
     }
+    if (line_step.size() <= ln) line_step.resize(ln + 1, 0.0);
+    line_step[ln] = finest;
   }
+  /// The printed step of the point on file line `ln` (0: unknown).
+  double step_of_line(std::size_t ln) const { return ln < line_step.size() ? line_step[ln] : 0.0; }
   std::size_t size() const { return y.size(); }
 };
 

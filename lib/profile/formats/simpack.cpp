@@ -114,6 +114,7 @@ RawProfile read_simpack(const std::string& path, const std::vector<std::string>&
     t.z[k] = -z * to_mm;
   }
   t.print_step = r.print_step * to_mm;
+  for (double& q : t.line_step) q *= to_mm;
   if (inversion) {
     std::reverse(t.y.begin(), t.y.end());
     std::reverse(t.z.begin(), t.z.end());
