@@ -17,6 +17,8 @@ slip area in per cent to 1 decimal.
 
 Usage:
   python3 scripts/contact_test_table.py OUT_CSV RUN_FINE RUN_COARSE RUN_RHO
+  python3 scripts/contact_test_table.py --grid-change CSV   (the reference's own grid change:
+      median, 95th percentile (nearest rank) and largest |fine − coarse| per column; docs/trust.md)
 RUN_FINE, RUN_COARSE: the standard output of `test_table MX` at two grids (file names containing
 mxNN); the coarse one goes into the *_coarse columns, so that the table carries its own
 grid-convergence evidence. RUN_RHO: the output of the 16-digit copy (any MX).
@@ -45,7 +47,18 @@ def read(path):
     return rho, cases
 
 
+def grid_change(path):
+    import csv
+    rows = list(csv.DictReader(l for l in open(path) if not l.startswith("#")))
+    for n in ("Fx_muN", "Fy_muN", "Mz_muNc", "adhesion_fraction"):
+        e = sorted(abs(float(r[n]) - float(r[n + "_coarse"])) for r in rows)
+        q = lambda p: e[min(len(e) - 1, math.ceil(p * len(e)) - 1)]
+        print(f"{n}: median {q(0.5):.4f} p95 {q(0.95):.4f} max {e[-1]:.4f}")
+
+
 def main():
+    if sys.argv[1] == "--grid-change":
+        return grid_change(sys.argv[2])
     out, fine, coarse, rho_run = sys.argv[1:5]
     mx_f = int(re.search(r"mx(\d+)", fine).group(1))
     mx_c = int(re.search(r"mx(\d+)", coarse).group(1))

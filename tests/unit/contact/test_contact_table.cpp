@@ -151,7 +151,7 @@ TEST_CASE("The exact half-space solver against CONTACT's table, every 20th case"
   CHECK(quantile(e.fy_no_spin, 1) <= 0.02);
   CHECK(quantile(e.mz, 1) <= 0.05);
   CHECK(quantile(e.adh, 1) <= 0.05);
-  // Missed on CONTACT's grid: the lateral force from spin, up to 2.8 % of μN (every 10th case,
+  // Missed on CONTACT's grid: the lateral force from spin, up to 2.8 % of μN (every 20th case,
   // 29 Nov 2026), first order in the element size (4.8 % at 17 elements across, 1.45 % with this
   // solver on a grid twice as fine: "[contact_table_exact_fine]"; docs/trust.md). Held at what
   // was measured, so that it cannot grow unseen.
