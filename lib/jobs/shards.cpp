@@ -584,10 +584,13 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
         }
         // The members after the records: `,` then the next member's line.
         if (!text_at(d.text, p, ",\n")) bad_results(d.path, p, "its last member must be \"summary\"");
+        d.members.push_back({key, {}, 0});  // the records, copied above
         p = split_members(d.text, p + 1, 2, &d.members, d.path);
       }
       if (d.text.substr(p) != "\n") bad_results(d.path, p, "text after the document's end");
-      if (d.members.back().key != "summary") bad_results(d.path, 0, "its first member must be \"schema\" and its last \"summary\"");
+      // The run writes "summary" alone after the records (only the members before them are copied).
+      if (d.members.back().key != "summary" || d.members[d.members.size() - 2].key != key)
+        bad_results(d.path, 0, "its first member must be \"schema\", and \"summary\" alone must follow the \"" + key + "\"");
       if (have != want)
         bad_results(d.path, at, "it holds " + std::to_string(have) + " " + key + ", its shard.json " + std::to_string(want));
       f.start_writeback();

@@ -59,6 +59,14 @@ grep -q "$tmp/s2cut/results.json: .*holds 32 cases, its shard.json 33" "$tmp/err
 expect2 "$bin" merge "$tmp/s1" "$tmp/s2cut" "$tmp/s3" -o "$tmp/m5"
 grep -q "$tmp/s2cut/results.json: .*not a results.json as mhcontact run writes it" "$tmp/err" || { cat "$tmp/err"; exit 1; }
 test ! -e "$tmp/m5/cases.csv"
+# ... and so is one with a member after its records (the run writes "summary" alone there; the
+# merge copies only the members before the records, so it would be lost).
+/usr/bin/python3 -c '
+import sys
+t = open(sys.argv[1]).read(); i = t.index("\n  \"summary\"")
+open(sys.argv[2], "w").write(t[:i] + "\n  \"extra\": 1," + t[i:])' "$tmp/s2/results.json" "$tmp/s2cut/results.json"
+expect2 "$bin" merge "$tmp/s1" "$tmp/s2cut" "$tmp/s3" -o "$tmp/m5"
+grep -q "$tmp/s2cut/results.json: .*\"summary\" alone must follow the \"cases\"" "$tmp/err" || { cat "$tmp/err"; exit 1; }
 
 # Shards whose tables and records are large (64 kB and more a piece): merge copies those pieces
 # inside the kernel (copy_file_range) instead of writing them; the bytes are the same. A case
