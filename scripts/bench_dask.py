@@ -6,10 +6,15 @@ one thread each; the cluster started before the clock), merged into a directory,
 again; the merged files compared with the local run's byte for byte. Wall times.
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/bench_dask.py [tY step mm, default 0.01] [method]
+
+THREADS=T sets fleet()'s threads (each shard's threads; default 1). Besides the wall times it
+prints the CPU time (user + sys) of the local runs and of the route (the workers' processes and
+this one, the client's merge included), which other jobs on a shared machine stretch less.
 """
 import filecmp
 import os
 import re
+import resource
 import shutil
 import subprocess
 import sys
@@ -36,10 +41,21 @@ def main():
         open(case, "w").write(text)
         ncores = os.cpu_count() or 1
 
+        def children_cpu():
+            r = resource.getrusage(resource.RUSAGE_CHILDREN)
+            return r.ru_utime + r.ru_stime
+
+        def own_cpu():
+            r = resource.getrusage(resource.RUSAGE_SELF)
+            return r.ru_utime + r.ru_stime
+
+        cpu_local = []
+
         def local(name):
-            t0 = time.time()
+            t0, c0 = time.time(), children_cpu()
             rc = subprocess.run([binary, "run", case, "-o", os.path.join(tmp, name), "-q", "--threads", str(ncores)]).returncode
             assert rc in (0, 1), rc
+            cpu_local.append(children_cpu() - c0)
             return time.time() - t0
 
         t_local1 = local("local1")
@@ -47,9 +63,15 @@ def main():
         with LocalCluster(n_workers=ncores, threads_per_worker=1, host="127.0.0.1", dashboard_address=None,
                           processes=True) as cluster, Client(cluster) as client:
             client.run(lambda: __import__("mhcontact") and 0)  # the module loaded in each worker
-            t0 = time.time()
-            res = mhcontact.fleet(case, client, os.path.join(tmp, "dask"))
+
+            def workers_cpu():
+                return sum(client.run(lambda: sum(resource.getrusage(resource.RUSAGE_SELF)[:2])).values())
+
+            w0, c0, t0 = workers_cpu(), own_cpu(), time.time()
+            res = mhcontact.fleet(case, client, os.path.join(tmp, "dask"), threads=int(os.environ.get("THREADS", "1")))
             t_dask = time.time() - t0
+            cpu_client = own_cpu() - c0
+            cpu_workers = workers_cpu() - w0
         t_local2 = local("local2")
         a, b = os.path.join(tmp, "local1"), os.path.join(tmp, "dask")
         for root, _, files in os.walk(a):
@@ -61,7 +83,9 @@ def main():
         mean_local = (t_local1 + t_local2) / 2
         print(f"{method}, {cases} cases, {ncores} cores: local {t_local1:.2f} s and {t_local2:.2f} s "
               f"({1e6 * mean_local / cases:.1f} us a case); Dask {t_dask:.2f} s ({1e6 * t_dask / cases:.1f} us a case, "
-              f"{res['shards']} shards): {100 * (t_dask / mean_local - 1):+.1f} % over the mean local; the same bytes")
+              f"{res['shards']} shards): {100 * (t_dask / mean_local - 1):+.1f} % over the mean local; the same bytes; "
+              f"CPU s: local {cpu_local[0]:.2f} and {cpu_local[1]:.2f}, Dask workers {cpu_workers:.2f} + client {cpu_client:.2f} "
+              f"({100 * ((cpu_workers + cpu_client) / (sum(cpu_local) / 2) - 1):+.1f} %)")
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

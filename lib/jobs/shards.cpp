@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <memory>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -58,6 +57,74 @@ std::string read_all(const std::string& path) {
   return text;
 }
 
+// A shard's file, read-only: mapped where the system has mmap (no copy of hundreds of MB into
+// the process, no zeroed buffer), else read whole. `populate`: every page mapped at once
+// (MAP_POPULATE) for a pass over the whole text, instead of a page fault per 4 kB page.
+// The file stays open, so that pieces of it can be copied by the kernel (put_verbatim).
+class ShardText {
+ public:
+  ShardText(const std::string& path, bool populate, const char* missing_rule) {
+#if defined(__unix__) || defined(__APPLE__)
+    fd_ = ::open(path.c_str(), O_RDONLY);
+    if (fd_ < 0) throw InputError(path, "", missing_rule);
+    struct stat st {};
+    if (::fstat(fd_, &st) == 0 && st.st_size > 0) {
+      size_ = static_cast<std::size_t>(st.st_size);
+      int flags = MAP_PRIVATE;
+#ifdef MAP_POPULATE
+      if (populate) flags |= MAP_POPULATE;
+#endif
+      void* p = ::mmap(nullptr, size_, PROT_READ, flags, fd_, 0);
+      if (p != MAP_FAILED) map_ = p;
+    }
+    if (map_) {
+      text_ = std::string_view(static_cast<const char*>(map_), size_);
+      return;
+    }
+    ::close(fd_);
+    fd_ = -1;
+#endif
+    (void)populate;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "", missing_rule);
+    copy_ = read_all(path);
+    text_ = copy_;
+  }
+  ~ShardText() {
+#if defined(__unix__) || defined(__APPLE__)
+    if (map_) ::munmap(map_, size_);
+    if (fd_ >= 0) ::close(fd_);
+#endif
+  }
+  ShardText(const ShardText&) = delete;
+  ShardText& operator=(const ShardText&) = delete;
+  std::string_view text() const { return text_; }
+  /// The open file (-1: read whole, not mapped).
+  int fd() const { return fd_; }
+  /// The byte offset in the file of `part`, a view into text() (-1: the text is a copy).
+  long long offset(std::string_view part) const {
+    if (fd_ < 0 || part.data() < text_.data() || part.data() + part.size() > text_.data() + text_.size()) return -1;
+    return static_cast<long long>(part.data() - text_.data());
+  }
+
+ private:
+  int fd_ = -1;
+  void* map_ = nullptr;
+  std::size_t size_ = 0;
+  std::string copy_;
+  std::string_view text_;
+};
+
+// `text`, a view into `src`, appended to `f`: a piece of 64 kB or more by a copy inside the kernel
+// (OutputFile::append_copy; through the process the bytes cost twice the CPU time: the pages
+// mapped in, then copied into the page cache), a smaller one or where the system cannot, written.
+void put_verbatim(OutputFile& f, const ShardText& src, std::string_view text) {
+  constexpr std::size_t kMinCopy = std::size_t{1} << 16;
+  const long long at = src.offset(text);
+  if (text.size() >= kMinCopy && at >= 0 && f.append_copy(src.fd(), at, text.size())) return;
+  f.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
+}
+
 // Open a shard's CSV file and check its header against `header` (set from the first shard);
 // the header is copied to `out` when `with_header`.
 std::ifstream open_shard_csv(const std::string& path, std::ostream& out, std::string* header, bool with_header) {
@@ -71,11 +138,17 @@ std::ifstream open_shard_csv(const std::string& path, std::ostream& out, std::st
   return in;
 }
 
-// Copy a CSV file to `out`, skipping its header unless `with_header`; the header must equal `header`.
-void append_csv(const std::string& path, std::ostream& out, std::string* header, bool with_header) {
-  std::ifstream in = open_shard_csv(path, out, header, with_header);
-  char buf[1 << 16];
-  while (in.read(buf, sizeof buf) || in.gcount() > 0) out.write(buf, in.gcount());
+// Copy a CSV file to `f`, skipping its header unless `with_header`; the header must equal `header`.
+// The rows are copied as they stand (put_verbatim).
+void append_csv(const std::string& path, OutputFile& f, std::string* header, bool with_header) {
+  const ShardText csv(path, false, "missing in a shard directory");
+  const std::string_view t = csv.text();
+  const std::size_t nl = t.find('\n');
+  const std::string_view line = t.substr(0, nl);
+  if (header->empty()) *header = std::string(line);
+  else if (line != *header) throw InputError(path, "", "its header differs from the first shard's");
+  if (with_header) f.stream() << line << '\n';
+  if (nl != std::string_view::npos) put_verbatim(f, csv, t.substr(nl + 1));
 }
 
 // geometry.csv of the shards: rows in shard order, a row whose key (its first `key_fields`
@@ -128,45 +201,6 @@ void rebase_profile_files(Json& inputs, const fs::path& shard_dir, const fs::pat
 }
 
 
-// A shard's results.json, read-only: mapped where the system has mmap (no copy of hundreds of MB
-// into the process, no zeroed buffer), else read whole.
-class ShardText {
- public:
-  explicit ShardText(const std::string& path) {
-#if defined(__unix__) || defined(__APPLE__)
-    const int fd = ::open(path.c_str(), O_RDONLY);
-    if (fd < 0) throw InputError(path, "", "cannot read (is this the output directory of a `run --shard`?)");
-    struct stat st {};
-    if (::fstat(fd, &st) == 0 && st.st_size > 0) {
-      size_ = static_cast<std::size_t>(st.st_size);
-      void* p = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
-      if (p != MAP_FAILED) map_ = p;
-    }
-    ::close(fd);
-    if (map_) {
-      text_ = std::string_view(static_cast<const char*>(map_), size_);
-      return;
-    }
-#endif
-    copy_ = read_all(path);
-    text_ = copy_;
-  }
-  ~ShardText() {
-#if defined(__unix__) || defined(__APPLE__)
-    if (map_) ::munmap(map_, size_);
-#endif
-  }
-  ShardText(const ShardText&) = delete;
-  ShardText& operator=(const ShardText&) = delete;
-  std::string_view text() const { return text_; }
-
- private:
-  void* map_ = nullptr;
-  std::size_t size_ = 0;
-  std::string copy_;
-  std::string_view text_;
-};
-
 // results.json as JsonObjectStream (output/json_stream.hpp) writes it, split as text without
 // parsing it: an object's members stand one per line at its indentation `pad` (2 in the
 // document, 6 in a batch's pair record), `"key": value`, the value's continuation lines indented
@@ -176,6 +210,7 @@ class ShardText {
 struct JsonMember {
   std::string key;
   std::string_view value;  // as it stands after `"key": `
+  std::size_t lines = 0;   // newlines in value (a streamed array: its records + 1)
 };
 
 bool text_at(std::string_view t, std::size_t p, std::string_view s) { return p <= t.size() && t.substr(p, s.size()) == s; }
@@ -185,32 +220,57 @@ bool text_at(std::string_view t, std::size_t p, std::string_view s) { return p <
                    "give the shard directories as `run --shard` wrote them (re-run that shard)");
 }
 
-// The members of the object whose `{` is t[open]; returns the index just past its `}`.
-std::size_t split_object(std::string_view t, std::size_t open, std::size_t pad, std::vector<JsonMember>* out, const std::string& path) {
+// The members of the object whose `{` is t[open]; returns the index just past its `}`. With
+// `stop_at` given, stops at the start of the member of that key (which is not split, nor the
+// members after it) and returns its index. One pass over the text: a memchr per line.
+// split_members: the same from t[p], the newline before a member (or before the object's `}`).
+std::size_t split_members(std::string_view t, std::size_t p, std::size_t pad, std::vector<JsonMember>* out, const std::string& path,
+                          std::string_view stop_at = {}) {
   const std::string lead = "\n" + std::string(pad, ' '), close = "\n" + std::string(pad - 2, ' ') + "}";
-  if (open >= t.size() || t[open] != '{') bad_results(path, open, "an object expected");
-  std::size_t p = open + 1;
   if (text_at(t, p, close)) return p + close.size();
   for (;;) {
     if (!text_at(t, p, lead + "\"")) bad_results(path, p, "a member expected at indentation " + std::to_string(pad));
     const std::size_t k = p + lead.size() + 1, ke = t.find('"', k);
     if (ke == std::string_view::npos || !text_at(t, ke + 1, ": ")) bad_results(path, k, "a member's key expected");
     std::string key(t.substr(k, ke - k));
+    if (!stop_at.empty() && key == stop_at) return p;
     const std::size_t v = ke + 3;
-    for (std::size_t q = v;; ++q) {
+    for (std::size_t q = v, lines = 0;; ++q, ++lines) {
       q = t.find('\n', q);
       if (q == std::string_view::npos) bad_results(path, v, "the document ends inside the member \"" + key + "\"");
       if (t[q - 1] == ',' && text_at(t, q, lead + "\"")) {
-        out->push_back({std::move(key), t.substr(v, q - 1 - v)});
+        out->push_back({std::move(key), t.substr(v, q - 1 - v), lines});
         p = q;
         break;
       }
       if (text_at(t, q, close)) {
-        out->push_back({std::move(key), t.substr(v, q - v)});
+        out->push_back({std::move(key), t.substr(v, q - v), lines});
         return q + close.size();
       }
     }
   }
+}
+
+std::size_t split_object(std::string_view t, std::size_t open, std::size_t pad, std::vector<JsonMember>* out, const std::string& path,
+                         std::string_view stop_at = {}) {
+  if (open >= t.size() || t[open] != '{') bad_results(path, open, "an object expected");
+  return split_members(t, open + 1, pad, out, path, stop_at);
+}
+
+// A member `key` whose value is `value`, a view into `src`, copied as it stands (a large value by
+// put_verbatim; the stream writes the separator, the key and the value's first byte).
+void member_copied(JsonObjectStream& w, OutputFile& f, const ShardText& src, const std::string& key, std::string_view value) {
+  if (value.size() < 2) return w.member_verbatim(key, value);
+  w.member_verbatim(key, value.substr(0, 1));
+  put_verbatim(f, src, value.substr(1));
+}
+
+// Records of the open array of `w` as JsonObjectStream::elements_verbatim takes them, `records`
+// a view into `src` (the stream writes the separator and the first byte, the rest put_verbatim).
+void elements_copied(JsonObjectStream& w, OutputFile& f, const ShardText& src, std::string_view records) {
+  if (records.empty()) return;
+  w.elements_verbatim(records.substr(0, 1));
+  put_verbatim(f, src, records.substr(1));
 }
 
 // The records of a streamed array member (`value` of a member at indentation `pad`) as
@@ -360,7 +420,8 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
       // A batch's shards hold disjoint pairs, and its geometry.csv rows start with the pair: no
       // row can repeat.
       if (t == "geometry.csv" && !batch) append_csv_dedupe(shards[k].dir + "/" + t, f.stream(), &header, k == 0, 2, seen);
-      else append_csv(shards[k].dir + "/" + t, f.stream(), &header, k == 0);
+      else append_csv(shards[k].dir + "/" + t, f, &header, k == 0);
+      f.start_writeback();
     }
     f.commit();
   }
@@ -419,28 +480,19 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
       ShardText file;
       std::string_view text;
       std::vector<JsonMember> members;
-      explicit Doc(const std::string& p) : path(p), file(p), text(file.text()) {}
-    };
-    auto load = [&](unsigned k) {
-      auto doc = std::make_unique<Doc>(shards[k].dir + "/results.json");
-      Doc& d = *doc;
-      const std::size_t past = split_object(d.text, 0, 2, &d.members, d.path);
-      if (d.text.substr(past) != "\n") bad_results(d.path, past, "text after the document's end");
-      if (d.members.empty() || d.members.front().key != "schema" || d.members.back().key != "summary")
-        bad_results(d.path, 0, "its first member must be \"schema\" and its last \"summary\"");
-      const JsonMember* recs = find_member(d.members, key);
-      if (!recs) bad_results(d.path, 0, "no \"" + key + "\" array");
-      return doc;
+      Doc(const std::string& p, bool whole)
+          : path(p), file(p, whole, "cannot read (is this the output directory of a `run --shard`?)"), text(file.text()) {}
     };
     // A run's "geometry" records (one per (t_Y, ellipse), before the cases) are spread over the
-    // shards like geometry.csv: a first pass keeps each record once, in shard order.
+    // shards like geometry.csv: a first pass over the members before the cases keeps each record
+    // once, in shard order (the second pass checks the whole document).
     std::vector<std::string> geometry;
     bool has_geometry = false;
     if (!batch) {
       std::unordered_set<std::string> seen;
       for (unsigned k = 0; k < N; ++k) {
-        const auto doc = load(k);
-        const Doc& d = *doc;
+        Doc d(shards[k].dir + "/results.json", false);
+        split_object(d.text, 0, 2, &d.members, d.path, key);
         const JsonMember* g = find_member(d.members, "geometry");
         if (!g) continue;
         has_geometry = true;
@@ -467,12 +519,14 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     JsonObjectStream w(f.stream());
     std::string schema;
     for (unsigned k = 0; k < N; ++k) {
-      const auto doc = load(k);
-      const Doc& d = *doc;
+      // One pass over each shard's text (mapped whole): the members before the records, the
+      // records (counted as they are split), the members after them.
+      Doc d(shards[k].dir + "/results.json", true);
+      std::size_t p = split_object(d.text, 0, 2, &d.members, d.path, key);
+      if (d.members.empty() || d.members.front().key != "schema") bad_results(d.path, 0, "its first member must be \"schema\"");
       if (k == 0) {
         schema = std::string(d.members.front().value);
         for (const auto& m : d.members) {
-          if (m.key == key || m.key == "summary") continue;
           if (m.key == "inputs") write_inputs_rebased(w, m.value, shards[k].dir, out_dir, d.path);
           else if (m.key == "geometry" && has_geometry) {
             w.begin_array("geometry");
@@ -486,36 +540,60 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
       } else if (d.members.front().value != schema) {
         bad_results(d.path, 0, "schema " + std::string(d.members.front().value) + ", the first shard's is " + schema);
       }
-      const std::string_view recs = array_records(find_member(d.members, key)->value, 2, d.path, key);
+      const std::string head = "\n  \"" + key + "\": ";
+      if (!text_at(d.text, p, head)) bad_results(d.path, p, "no \"" + key + "\" array");
+      const std::size_t at = p;
       const std::uint64_t want = shards[k].meta["end"].get<std::uint64_t>() - shards[k].meta["first"].get<std::uint64_t>();
       std::uint64_t have = 0;
       if (!batch) {
-        // A case record is one line: the records are copied in one piece.
-        have = recs.empty() ? 0 : 1 + static_cast<std::uint64_t>(std::count(recs.begin(), recs.end(), '\n'));
-        w.elements_verbatim(recs);
+        // A case record is one line: the records are counted by their lines and copied in one piece.
+        const std::size_t n_before = d.members.size();
+        p = split_members(d.text, p, 2, &d.members, d.path);
+        const JsonMember& cases = d.members[n_before];
+        elements_copied(w, f, d.file, array_records(cases.value, 2, d.path, key));
+        have = cases.lines > 0 ? cases.lines - 1 : 0;
       } else {
         // A pair's record is an object (indentation 6) with its own arrays: copied member by
         // member, its "inputs" rebased.
-        const std::size_t begin = static_cast<std::size_t>(recs.data() - d.text.data()), stop = begin + recs.size();
-        for (std::size_t p = begin; p < stop;) {
-          if (!text_at(d.text, p, "    {")) bad_results(d.path, p, "a pair record expected at indentation 4");
-          std::vector<JsonMember> pm;
-          const std::size_t past = split_object(d.text, p + 4, 6, &pm, d.path);
-          w.element_open();
-          JsonObjectStream pw(f.stream(), 6);
-          for (const auto& m : pm) {
-            if (m.key == "inputs") write_inputs_rebased(pw, m.value, shards[k].dir, out_dir, d.path);
-            else pw.member_verbatim(m.key, m.value);
+        p += head.size();
+        if (text_at(d.text, p, "[]")) {
+          p += 2;
+        } else {
+          if (!text_at(d.text, p, "[\n")) bad_results(d.path, p, "\"pairs\" is not an array of records");
+          for (p += 2;;) {
+            if (!text_at(d.text, p, "    {")) bad_results(d.path, p, "a pair record expected at indentation 4");
+            std::vector<JsonMember> pm;
+            const std::size_t past = split_object(d.text, p + 4, 6, &pm, d.path);
+            w.element_open();
+            JsonObjectStream pw(f.stream(), 6);
+            for (const auto& m : pm) {
+              if (m.key == "inputs") write_inputs_rebased(pw, m.value, shards[k].dir, out_dir, d.path);
+              else member_copied(pw, f, d.file, m.key, m.value);
+            }
+            pw.end();
+            ++have;
+            if (text_at(d.text, past, ",\n")) {
+              p = past + 2;
+            } else if (text_at(d.text, past, "\n  ]")) {
+              p = past + 4;
+              break;
+            } else {
+              bad_results(d.path, past, "pair records not separated by a comma and a newline");
+            }
           }
-          pw.end();
-          ++have;
-          if (past == stop) break;
-          if (past > stop || !text_at(d.text, past, ",\n")) bad_results(d.path, past, "pair records not separated by a comma and a newline");
-          p = past + 2;
         }
+        // The members after the records: `,` then the next member's line.
+        if (!text_at(d.text, p, ",\n")) bad_results(d.path, p, "its last member must be \"summary\"");
+        d.members.push_back({key, {}, 0});  // the records, copied above
+        p = split_members(d.text, p + 1, 2, &d.members, d.path);
       }
+      if (d.text.substr(p) != "\n") bad_results(d.path, p, "text after the document's end");
+      // The run writes "summary" alone after the records (only the members before them are copied).
+      if (d.members.back().key != "summary" || d.members[d.members.size() - 2].key != key)
+        bad_results(d.path, 0, "its first member must be \"schema\", and \"summary\" alone must follow the \"" + key + "\"");
       if (have != want)
-        bad_results(d.path, static_cast<std::size_t>(recs.data() - d.text.data()), "it holds " + std::to_string(have) + " " + key + ", its shard.json " + std::to_string(want));
+        bad_results(d.path, at, "it holds " + std::to_string(have) + " " + key + ", its shard.json " + std::to_string(want));
+      f.start_writeback();
     }
     w.end_array();
     w.member("summary", summary);

@@ -134,6 +134,32 @@ void OutputFile::start_writeback() {
 #endif
 }
 
+bool OutputFile::append_copy(int in_fd, long long offset, std::size_t length) {
+#if defined(__linux__)
+  if (fd_ < 0 || !out_) return false;
+  out_.flush();
+  const std::streamoff at = out_.tellp();
+  if (!out_ || at < 0) return false;
+  loff_t in = offset, to = at;
+  for (std::size_t left = length; left > 0;) {
+    const ssize_t r = ::copy_file_range(in_fd, &in, fd_, &to, left, 0);
+    if (r < 0 && left == length && (errno == ENOSYS || errno == EXDEV || errno == EINVAL || errno == EOPNOTSUPP || errno == EBADF))
+      return false;
+    if (r < 0) throw OutputError(path_, std::string("writing the output file failed: ") + std::strerror(errno));
+    if (r == 0) throw OutputError(path_, "copying into it: its source file ended early", "was the source changed while it was read?");
+    left -= static_cast<std::size_t>(r);
+  }
+  out_.seekp(at + static_cast<std::streamoff>(length));
+  if (!out_) throw OutputError(path_, "writing the output file failed", "disk full?");
+  return true;
+#else
+  (void)in_fd;
+  (void)offset;
+  (void)length;
+  return false;
+#endif
+}
+
 void OutputFile::commit() {
   out_.flush();
   if (!out_) throw OutputError(path_, "writing the output file failed", "disk full?");

@@ -5,6 +5,7 @@
 // Temporaries of a run killed by a signal are removed by the signal handler installed by the
 // CLI (see cli.cpp); a hard kill (SIGKILL) leaves at most a *.tmp.* file, never a complete-
 // looking NAME.
+#include <cstddef>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -40,6 +41,12 @@ class OutputFile {
   /// A long sweep calls it after each chunk, so that commit()'s fsync finds little left to do
   /// instead of flushing hundreds of MB at the end while every other core waits.
   void start_writeback();
+  /// Append `length` bytes of the open file `in_fd`, from byte `offset`, by a copy inside the
+  /// kernel (Linux copy_file_range: the bytes do not pass through this process, and a file
+  /// system that shares blocks may share them). Returns false, having written nothing, where the
+  /// system cannot (another system, an old kernel, another file system): the caller then writes
+  /// the bytes through stream(). Throws OutputError on a failed write or a source that ends early.
+  bool append_copy(int in_fd, long long offset, std::size_t length);
 
  private:
   std::string path_;
