@@ -30,6 +30,81 @@ static_assert(sizeof(mhc_table_contact) == 8 + 8 * kNFields, "mhc_table_contact 
 
 const double* fields(const mhc_table_contact& c) { return &c.N_N; }
 
+// lookup_many's output arrays (docs/python.md "Contact tables"): made once per call, or the
+// caller's, checked for their type, shape and layout, then filled without the GIL.
+struct ManyPtrs {
+  int8_t* st = nullptr;
+  int32_t* nc = nullptr;
+  int32_t* tr = nullptr;
+  double *fz = nullptr, *fy = nullptr, *dfy = nullptr;
+  std::vector<double*> per;  ///< the contact fields, then dN_dtY, dN_dQ: n x MHC_MAX_CONTACTS each
+};
+
+template <class T>
+T* many_array(const py::dict& d, const char* key, std::size_t n, bool per_slot) {
+  if (!d.contains(key)) throw py::value_error(std::string("out: the key ") + key + " is missing (pass a dict that "
+                                              "lookup_many returned, or Table.many_result(n))");
+  py::array a = d[key].cast<py::array>();
+  const bool shape = per_slot ? a.ndim() == 2 && static_cast<std::size_t>(a.shape(0)) == n && a.shape(1) == MHC_MAX_CONTACTS
+                              : a.ndim() == 1 && static_cast<std::size_t>(a.shape(0)) == n;
+  if (!a.dtype().is(py::dtype::of<T>()) || !(a.flags() & py::array::c_style) || !shape || !a.writeable())
+    throw py::value_error(std::string("out[\"") + key + "\"]: must be a writeable C-contiguous " +
+                          std::string(py::str(py::dtype::of<T>())) + " array of shape (" + std::to_string(n) +
+                          (per_slot ? ", " + std::to_string(MHC_MAX_CONTACTS) : std::string(",")) +
+                          ") for " + std::to_string(n) + " points (Table.many_result(n) makes one)");
+  return static_cast<T*>(a.mutable_data());
+}
+
+py::dict many_result(std::size_t n) {
+  const py::ssize_t N = static_cast<py::ssize_t>(n), K = MHC_MAX_CONTACTS;
+  py::dict d;
+  d["status"] = py::array_t<int8_t>(N);
+  d["n_contacts"] = py::array_t<int32_t>(N);
+  d["Fz_N"] = py::array_t<double>(N);
+  d["Fy_N"] = py::array_t<double>(N);
+  d["dFy_dtY_N_per_m"] = py::array_t<double>(N);
+  d["track"] = py::array_t<int32_t>(std::vector<py::ssize_t>{N, K});
+  for (int f = 0; f < kNFields; ++f) d[kFields[f]] = py::array_t<double>(std::vector<py::ssize_t>{N, K});
+  d["dN_dtY_N_per_m"] = py::array_t<double>(std::vector<py::ssize_t>{N, K});
+  d["dN_dQ"] = py::array_t<double>(std::vector<py::ssize_t>{N, K});
+  return d;
+}
+
+ManyPtrs many_ptrs(const py::dict& d, std::size_t n) {
+  ManyPtrs p;
+  p.st = many_array<int8_t>(d, "status", n, false);
+  p.nc = many_array<int32_t>(d, "n_contacts", n, false);
+  p.fz = many_array<double>(d, "Fz_N", n, false);
+  p.fy = many_array<double>(d, "Fy_N", n, false);
+  p.dfy = many_array<double>(d, "dFy_dtY_N_per_m", n, false);
+  p.tr = many_array<int32_t>(d, "track", n, true);
+  for (int f = 0; f < kNFields; ++f) p.per.push_back(many_array<double>(d, kFields[f], n, true));
+  p.per.push_back(many_array<double>(d, "dN_dtY_N_per_m", n, true));
+  p.per.push_back(many_array<double>(d, "dN_dQ", n, true));
+  return p;
+}
+
+void many_fill(const mhc_table* t, std::size_t n, const double* ty, const double* q, ManyPtrs& p) {
+  const std::size_t K = MHC_MAX_CONTACTS;
+  mhc_table_result r;
+  r.struct_size = sizeof r;
+  for (std::size_t i = 0; i < n; ++i) {
+    mhc_table_lookup(t, ty[i], q[i], &r);
+    p.st[i] = static_cast<int8_t>(r.status);
+    p.nc[i] = r.n_contacts;
+    p.fz[i] = r.Fz_N;
+    p.fy[i] = r.Fy_N;
+    p.dfy[i] = r.dFy_dtY_N_per_m;
+    for (std::size_t k = 0; k < K; ++k) {
+      const bool on = static_cast<int>(k) < r.n_contacts;
+      p.tr[i * K + k] = on ? r.contact[k].track : 0;
+      for (int f = 0; f < kNFields; ++f) p.per[static_cast<std::size_t>(f)][i * K + k] = on ? fields(r.contact[k])[f] : 0.0;
+      p.per[kNFields][i * K + k] = on ? r.d_dtY[k].N_N : 0.0;
+      p.per[kNFields + 1][i * K + k] = on ? r.d_dQ[k].N_N : 0.0;
+    }
+  }
+}
+
 // The dictionary keys of `lookup`, made once rather than from a C string at every call (with the
 // values boxed explicitly: 3 µs a lookup before, 1.4–1.7 µs after, docs/performance.md). Never
 // freed (as statics they would be destroyed after the interpreter).
@@ -184,57 +259,24 @@ void add_tables(py::module_& m, void (*raise)(mhc_error)) {
             return per;
           }, py::arg("tY_m"), py::arg("Q_N"), py::arg("repeats") = 5)
       .def("lookup_many", [](const Table& t, py::array_t<double, py::array::c_style | py::array::forcecast> tY_m,
-                             py::array_t<double, py::array::c_style | py::array::forcecast> Q_N) {
+                             py::array_t<double, py::array::c_style | py::array::forcecast> Q_N, py::object out) {
             const std::size_t n = static_cast<std::size_t>(tY_m.size());
             if (static_cast<std::size_t>(Q_N.size()) != n) throw py::value_error("tY_m and Q_N differ in length");
-            const std::size_t K = MHC_MAX_CONTACTS;
-            py::array_t<int8_t> status(n);
-            py::array_t<int32_t> nc(n);
-            py::array_t<double> Fz(n), Fy(n), dFy(n);
-            std::vector<py::array_t<double>> per;
-            for (int f = 0; f < kNFields + 2; ++f) per.emplace_back(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(K)});
-            py::array_t<int32_t> track(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(K)});
+            py::dict d = out.is_none() ? many_result(n) : out.cast<py::dict>();
+            ManyPtrs p = many_ptrs(d, n);
             const double* ty = tY_m.data();
             const double* q = Q_N.data();
-            int8_t* st = status.mutable_data();
-            int32_t* n_c = nc.mutable_data();
-            int32_t* tr = track.mutable_data();
-            double *fz = Fz.mutable_data(), *fy = Fy.mutable_data(), *dfy = dFy.mutable_data();
-            std::vector<double*> p;
-            for (auto& a : per) p.push_back(a.mutable_data());
             {
               py::gil_scoped_release nogil;
-              mhc_table_result r;
-              r.struct_size = sizeof r;
-              for (std::size_t i = 0; i < n; ++i) {
-                mhc_table_lookup(t.t, ty[i], q[i], &r);
-                st[i] = static_cast<int8_t>(r.status);
-                n_c[i] = r.n_contacts;
-                fz[i] = r.Fz_N;
-                fy[i] = r.Fy_N;
-                dfy[i] = r.dFy_dtY_N_per_m;
-                for (std::size_t k = 0; k < K; ++k) {
-                  const bool on = static_cast<int>(k) < r.n_contacts;
-                  tr[i * K + k] = on ? r.contact[k].track : 0;
-                  for (int f = 0; f < kNFields; ++f) p[static_cast<std::size_t>(f)][i * K + k] = on ? fields(r.contact[k])[f] : 0.0;
-                  p[kNFields][i * K + k] = on ? r.d_dtY[k].N_N : 0.0;
-                  p[kNFields + 1][i * K + k] = on ? r.d_dQ[k].N_N : 0.0;
-                }
-              }
+              many_fill(t.t, n, ty, q, p);
             }
-            py::dict d;
-            d["status"] = status;
-            d["n_contacts"] = nc;
-            d["Fz_N"] = Fz;
-            d["Fy_N"] = Fy;
-            d["dFy_dtY_N_per_m"] = dFy;
-            d["track"] = track;
-            for (int f = 0; f < kNFields; ++f) d[kFields[f]] = per[static_cast<std::size_t>(f)];
-            d["dN_dtY_N_per_m"] = per[kNFields];
-            d["dN_dQ"] = per[kNFields + 1];
             return d;
-          }, py::arg("tY_m"), py::arg("Q_N"),
+          }, py::arg("tY_m"), py::arg("Q_N"), py::arg("out") = py::none(),
           "Many points at once (numpy arrays of one length): status (codes of STATUS_NAMES), n_contacts, Fz_N, Fy_N, "
           "dFy_dtY_N_per_m, and per contact slot (n x 6 arrays, 0 where empty) track, the fields of lookup's "
-          "contacts, dN_dtY_N_per_m and dN_dQ");
+          "contacts, dN_dtY_N_per_m and dN_dQ, as a dict of arrays. With out= (a dict that lookup_many returned "
+          "for as many points, or Table.many_result(n)) the answers are written into its arrays and out is "
+          "returned: no allocation per call")
+      .def_static("many_result", [](std::size_t n) { return many_result(n); }, py::arg("n"),
+                  "The dict of output arrays of lookup_many for n points (not yet filled), to pass as out=");
 }

@@ -35,5 +35,6 @@ void add_run_command(CLI::App& app, CliContext& ctx);                // run
 void add_merge_command(CLI::App& app, CliContext& ctx);              // merge
 void add_wheelset_command(CLI::App& app, CliContext& ctx);           // wheelset
 void add_table_command(CLI::App& app, CliContext& ctx);               // table
+void add_table_export_command(CLI::App& app, CliContext& ctx);        // table-export
 
 }  // namespace mh

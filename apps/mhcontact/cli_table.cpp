@@ -1,17 +1,20 @@
 // `mhcontact table CASE.json -o FILE` (docs/tables.md): a contact table made by the case file's
-// grid method over its t_Y × Q sweep, checked against direct solves at the cell centres.
+// grid method over its t_Y × Q sweep, checked against direct solves at the cell centres; and
+// `mhcontact table-export TABLE.csv -o FILE`: the table on a regular grid for MBS codes.
 #include <CLI/CLI.hpp>
 
 #include <memory>
 
 #include "cli.hpp"
 #include "input/case_file.hpp"
+#include "jobs/contact_table_export.hpp"
 #include "jobs/contact_table_make.hpp"
+#include "jobs/contact_table_shards.hpp"
 
 namespace mh {
 
 void add_table_command(CLI::App& app, CliContext& ctx) {
-  struct Opts { std::string case_file, out; TableMakeOptions make; bool no_check = false; };
+  struct Opts { std::string case_file, out, shard; std::vector<std::string> merge; TableMakeOptions make; bool no_check = false; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "table", "Contact table for time-stepping callers: the case's grid method (strips, half-space, auto) at every "
@@ -35,12 +38,36 @@ void add_table_command(CLI::App& app, CliContext& ctx) {
       ->check(CLI::Range(1e-6, 1.0))->capture_default_str();
   cmd->add_flag("--no-check", o->no_check, "Make the nodes only: no direct solves at the cell centres, no refinement");
   cmd->add_flag("-q,--quiet", o->make.quiet, "No summary on standard error");
+  auto* shard = cmd->add_option("--shard", o->shard, "Solve only the K-th of N slices of the first round's points "
+                                                     "(nodes and cell centres) and write them to the output (JSON)");
+  cmd->add_option("--merge", o->merge, "Shard files of this case (all N of one split): take their solves, refine here, "
+                                       "write the table (byte for byte the one-process table)")
+      ->excludes(shard);
   cmd->callback([o, &ctx] {
     o->make.check = !o->no_check;
     if (o->no_check) o->make.refine = 0;
     const CaseFile cf = load_case_file(o->case_file, true);
-    ctx.exit_code = table_job(cf, o->make, o->out, ctx.out, ctx.err);
+    ctx.exit_code = o->shard.empty() ? table_job(cf, o->make, o->out, ctx.out, ctx.err, o->merge)
+                                     : table_shard_job(cf, o->make, o->shard, o->out, ctx.out, ctx.err);
   });
+}
+
+void add_table_export_command(CLI::App& app, CliContext& ctx) {
+  struct Opts { std::string table, out; TableExportOptions ex; bool quiet = false; };
+  auto o = std::make_shared<Opts>();
+  CLI::App* cmd = app.add_subcommand(
+      "table-export", "A contact table resampled on a regular t_Y x Q grid for table-driven contact elements of MBS "
+                      "codes: the table's interpolant at every grid point, every contact track, the table's columns "
+                      "with units; the error of reading it bilinearly measured and written into its header.");
+  cmd->add_option("table", o->table, "Contact table written by `mhcontact table`")->required();
+  cmd->add_option("-o,--output", o->out, "Export file to write (- for standard output)")->required();
+  cmd->add_option("--tY-step-mm", o->ex.tY_step_mm, "Grid step in t_Y [mm]; must divide the table's t_Y range "
+                                                    "(default: the table's smallest t_Y interval, at most 0.25 mm)")
+      ->check(CLI::Range(0.001, 100.0));
+  cmd->add_option("--Q-step-kN", o->ex.Q_step_kN, "Grid step in Q [kN]; must divide the table's Q range")
+      ->check(CLI::Range(0.01, 10000.0))->capture_default_str();
+  cmd->add_flag("-q,--quiet", o->quiet, "No summary on standard error");
+  cmd->callback([o, &ctx] { ctx.exit_code = table_export_job(o->table, o->ex, o->out, ctx.out, ctx.err, o->quiet); });
 }
 
 }  // namespace mh

@@ -11,7 +11,8 @@ timed as CPU time of the thread per lookup, median of 15 repeats:
   C            mhc_table_lookup in a C loop (Table._c_lookup_seconds: no Python in the loop);
   lookup_into  Table.lookup_into(tY, Q, result) in a Python loop, the result reused;
   lookup       Table.lookup(tY, Q) in a Python loop (a dict per call);
-  lookup_many  Table.lookup_many over all points at once, per point;
+  lookup_many  Table.lookup_many over all points at once, per point (fresh output arrays);
+  many_out     the same into output arrays made once (lookup_many(..., out=), no allocation);
   loop         the same Python loop calling nothing (its share of the two above).
 """
 import os
@@ -75,10 +76,12 @@ c = sorted(t._c_lookup_seconds(tY, Q, REPEATS))[REPEATS // 2]
 into = timed(loop_into)
 dct = timed(loop_dict)
 many = timed(lambda: t.lookup_many(tY, Q))
+out = mhcontact.Table.many_result(steps)
+many_out = timed(lambda: t.lookup_many(tY, Q, out=out))
 empty = timed(loop_empty)
 contacts = t.lookup_many(tY, Q)["n_contacts"].sum() / steps
 print("mhcontact %s: table %s, %d steps, %.2f contacts a step; CPU time of the thread per lookup, median of %d"
       % (mhcontact.__version__, path, steps, contacts, REPEATS))
 print("%-12s %8s %8s %10s" % ("way", "us/call", "us/cont.", "x C"))
-for name, s in (("C", c), ("lookup_into", into), ("lookup", dct), ("lookup_many", many), ("loop", empty)):
+for name, s in (("C", c), ("lookup_into", into), ("lookup", dct), ("lookup_many", many), ("many_out", many_out), ("loop", empty)):
     print("%-12s %8.3f %8.3f %10.1f" % (name, s * 1e6, s * 1e6 / contacts, s / c))

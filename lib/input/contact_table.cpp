@@ -105,7 +105,7 @@ void pchip_slopes(const double* x, std::size_t n, const double* f, std::size_t s
 
 }  // namespace
 
-ContactTableData read_contact_table(const std::string& path) {
+ContactTableData read_contact_table(const std::string& path, const char* schema) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "cannot open the table file", "check the path");
   ContactTableData t;
@@ -120,9 +120,9 @@ ContactTableData read_contact_table(const std::string& path) {
   } catch (const nlohmann::json::exception& e) {
     throw InputError(at_line(path, 1), "", std::string("the JSON header does not parse: ") + e.what());
   }
-  if (!t.header.is_object() || t.header.value("schema", std::string()) != kContactTableSchema)
+  if (!t.header.is_object() || t.header.value("schema", std::string()) != schema)
     throw InputError(at_line(path, 1), t.header.is_object() ? t.header.value("schema", std::string("(none)")) : "",
-                     std::string("the header's schema must be ") + kContactTableSchema,
+                     std::string("the header's schema must be ") + schema,
                      "a table of another version: regenerate it with this mhcontact");
   try {
     for (double v : t.header.at("tY_mm_nodes").get<std::vector<double>>()) t.tY.push_back(v * 1e-3);
@@ -227,15 +227,14 @@ void ContactTableLookup::lookup(double tY, double Q, TableAnswer& out) const {
   out.n_contacts = 0;
   out.Fz = out.Fy = out.dFy_dtY = out.dFy_dQ = 0;
   out.coarse = false;
-  const std::size_t nT = d_.nT(), nQ = d_.nQ();
+  const std::size_t nQ = d_.nQ();
   if (!(tY >= d_.tY.front() && tY <= d_.tY.back() && Q >= d_.Q.front() && Q <= d_.Q.back())) {
     out.status = CaseStatus::OutOfRange;
     return;
   }
-  const std::size_t i = std::min<std::size_t>(
-      nT - 2, static_cast<std::size_t>(std::upper_bound(d_.tY.begin(), d_.tY.end(), tY) - d_.tY.begin()) - 1);
-  const std::size_t j = std::min<std::size_t>(
-      nQ - 2, static_cast<std::size_t>(std::upper_bound(d_.Q.begin(), d_.Q.end(), Q) - d_.Q.begin()) - 1);
+  Basis B;
+  basis(tY, Q, B);
+  const std::size_t i = B.i, j = B.j;
   // Status: the worst of the four corners; a coarse cell is at best outside_validity.
   CaseStatus st = CaseStatus::Ok;
   for (std::size_t a = 0; a < 2; ++a)
@@ -247,33 +246,11 @@ void ContactTableLookup::lookup(double tY, double Q, TableAnswer& out) const {
   if (out.coarse && st == CaseStatus::Ok) st = CaseStatus::OutsideValidity;
   out.status = st;
   if (status_severity(st) >= 3) return;
-  // Hermite basis in u (t_Y) and w (Q) and their derivatives.
-  const double hx = d_.tY[i + 1] - d_.tY[i], hy = d_.Q[j + 1] - d_.Q[j];
-  const double u = (tY - d_.tY[i]) / hx, w = (Q - d_.Q[j]) / hy;
-  const double u2 = u * u, u3 = u2 * u, w2 = w * w, w3 = w2 * w;
-  const double H0[2] = {2 * u3 - 3 * u2 + 1, -2 * u3 + 3 * u2}, H1[2] = {hx * (u3 - 2 * u2 + u), hx * (u3 - u2)};
-  const double G0[2] = {2 * w3 - 3 * w2 + 1, -2 * w3 + 3 * w2}, G1[2] = {hy * (w3 - 2 * w2 + w), hy * (w3 - w2)};
-  const double dH0[2] = {(6 * u2 - 6 * u) / hx, (-6 * u2 + 6 * u) / hx}, dH1[2] = {3 * u2 - 4 * u + 1, 3 * u2 - 2 * u};
-  const double dG0[2] = {(6 * w2 - 6 * w) / hy, (-6 * w2 + 6 * w) / hy}, dG1[2] = {3 * w2 - 4 * w + 1, 3 * w2 - 2 * w};
   const std::size_t cell = i * (nQ - 1) + j;
+  std::array<double, kTableQuantities> v, vx, vy;
   for (int t = cell_first_[cell]; t < cell_first_[cell + 1]; ++t) {
     const int k = cell_tracks_[static_cast<std::size_t>(t)];
-    std::array<double, kTableQuantities> v{}, vx{}, vy{};
-    for (std::size_t a = 0; a < 2; ++a)
-      for (std::size_t b = 0; b < 2; ++b) {
-        const std::size_t at = d_.at(i + a, j + b, k);
-        const double* f = &d_.v[at];
-        const double* fx = &dx_[at];
-        const double* fy = &dy_[at];
-        const double c0 = H0[a] * G0[b], c1 = H1[a] * G0[b], c2 = H0[a] * G1[b];
-        const double x0 = dH0[a] * G0[b], x1 = dH1[a] * G0[b], x2 = dH0[a] * G1[b];
-        const double y0 = H0[a] * dG0[b], y1 = H1[a] * dG0[b], y2 = H0[a] * dG1[b];
-        for (int q = 0; q < kTableQuantities; ++q) {
-          v[q] += c0 * f[q] + c1 * fx[q] + c2 * fy[q];
-          vx[q] += x0 * f[q] + x1 * fx[q] + x2 * fy[q];
-          vy[q] += y0 * f[q] + y1 * fx[q] + y2 * fy[q];
-        }
-      }
+    hermite(B, k, v, vx, vy);
     if (!(v[kTabN] > 0)) continue;
     for (int q = 0; q < kTableQuantities; ++q)
       if (kTableColumns[q].non_negative && v[q] < 0) v[q] = vx[q] = vy[q] = 0;
@@ -291,6 +268,60 @@ void ContactTableLookup::lookup(double tY, double Q, TableAnswer& out) const {
     }
     ++out.n_contacts;
   }
+}
+
+void ContactTableLookup::basis(double tY, double Q, Basis& B) const {
+  const std::size_t nT = d_.nT(), nQ = d_.nQ();
+  const std::size_t i = std::min<std::size_t>(
+      nT - 2, static_cast<std::size_t>(std::upper_bound(d_.tY.begin(), d_.tY.end(), tY) - d_.tY.begin()) - 1);
+  const std::size_t j = std::min<std::size_t>(
+      nQ - 2, static_cast<std::size_t>(std::upper_bound(d_.Q.begin(), d_.Q.end(), Q) - d_.Q.begin()) - 1);
+  B.i = i;
+  B.j = j;
+  // Hermite basis in u (t_Y) and w (Q) and their derivatives.
+  const double hx = d_.tY[i + 1] - d_.tY[i], hy = d_.Q[j + 1] - d_.Q[j];
+  const double u = (tY - d_.tY[i]) / hx, w = (Q - d_.Q[j]) / hy;
+  const double u2 = u * u, u3 = u2 * u, w2 = w * w, w3 = w2 * w;
+  B.H0[0] = 2 * u3 - 3 * u2 + 1, B.H0[1] = -2 * u3 + 3 * u2;
+  B.H1[0] = hx * (u3 - 2 * u2 + u), B.H1[1] = hx * (u3 - u2);
+  B.G0[0] = 2 * w3 - 3 * w2 + 1, B.G0[1] = -2 * w3 + 3 * w2;
+  B.G1[0] = hy * (w3 - 2 * w2 + w), B.G1[1] = hy * (w3 - w2);
+  B.dH0[0] = (6 * u2 - 6 * u) / hx, B.dH0[1] = (-6 * u2 + 6 * u) / hx;
+  B.dH1[0] = 3 * u2 - 4 * u + 1, B.dH1[1] = 3 * u2 - 2 * u;
+  B.dG0[0] = (6 * w2 - 6 * w) / hy, B.dG0[1] = (-6 * w2 + 6 * w) / hy;
+  B.dG1[0] = 3 * w2 - 4 * w + 1, B.dG1[1] = 3 * w2 - 2 * w;
+}
+
+inline void ContactTableLookup::hermite(const Basis& B, int k, std::array<double, kTableQuantities>& v,
+                                        std::array<double, kTableQuantities>& vx,
+                                        std::array<double, kTableQuantities>& vy) const {
+  v.fill(0);
+  vx.fill(0);
+  vy.fill(0);
+  for (std::size_t a = 0; a < 2; ++a)
+    for (std::size_t b = 0; b < 2; ++b) {
+      const std::size_t at = d_.at(B.i + a, B.j + b, k);
+      const double* f = &d_.v[at];
+      const double* fx = &dx_[at];
+      const double* fy = &dy_[at];
+      const double c0 = B.H0[a] * B.G0[b], c1 = B.H1[a] * B.G0[b], c2 = B.H0[a] * B.G1[b];
+      const double x0 = B.dH0[a] * B.G0[b], x1 = B.dH1[a] * B.G0[b], x2 = B.dH0[a] * B.G1[b];
+      const double y0 = B.H0[a] * B.dG0[b], y1 = B.H1[a] * B.dG0[b], y2 = B.H0[a] * B.dG1[b];
+      for (int q = 0; q < kTableQuantities; ++q) {
+        v[q] += c0 * f[q] + c1 * fx[q] + c2 * fy[q];
+        vx[q] += x0 * f[q] + x1 * fx[q] + x2 * fy[q];
+        vy[q] += y0 * f[q] + y1 * fx[q] + y2 * fy[q];
+      }
+    }
+}
+
+void ContactTableLookup::track_values(double tY, double Q, int k, std::array<double, kTableQuantities>& v) const {
+  Basis B;
+  basis(tY, Q, B);
+  std::array<double, kTableQuantities> vx, vy;
+  hermite(B, k, v, vx, vy);
+  for (int q = 0; q < kTableQuantities; ++q)
+    if (kTableColumns[q].non_negative && v[q] < 0) v[q] = 0;
 }
 
 }  // namespace mh

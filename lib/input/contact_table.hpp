@@ -25,6 +25,8 @@ namespace mh {
 
 /// The schema tag of the table's JSON header; bumped on any incompatible change.
 constexpr const char* kContactTableSchema = "mhcontact.table/1";
+/// The schema tag of a table's export on a regular grid (`mhcontact table-export`, docs/tables.md).
+constexpr const char* kContactTableExportSchema = "mhcontact.table-export/1";
 
 /// The per-contact quantities of a table, in the order of their CSV columns.
 enum TableQuantity : int {
@@ -76,8 +78,10 @@ struct ContactTableData {
   }
 };
 
-/// Read a table file (CSV with its JSON header line). Throws InputError naming the file and line.
-ContactTableData read_contact_table(const std::string& path);
+/// Read a table file (CSV with its JSON header line) whose header's schema is `schema` (a table,
+/// or with kContactTableExportSchema its export: the same layout). Throws InputError naming the
+/// file and line.
+ContactTableData read_contact_table(const std::string& path, const char* schema = kContactTableSchema);
 
 /// At most this many contacts in a lookup answer (the C interface's MHC_MAX_CONTACTS).
 constexpr int kTableMaxContacts = 6;
@@ -108,12 +112,25 @@ class ContactTableLookup {
   const ContactTableData& data() const { return d_; }
   /// The answer at (tY [m], Q [N]); outside the node ranges: status out_of_range, no contact.
   void lookup(double tY, double Q, TableAnswer& out) const;
+  /// The interpolant of one track k (0-based) at (tY, Q) inside the node ranges, whether its N is
+  /// above 0 or not (sizes, forces and pressures clamped at 0): what an export writes for every
+  /// track at every point.
+  void track_values(double tY, double Q, int k, std::array<double, kTableQuantities>& v) const;
 
  private:
   ContactTableData d_;
   std::vector<double> dx_, dy_;  ///< node slopes along t_Y and Q, laid out as d_.v
   std::vector<int> cell_tracks_; ///< per cell, the tracks present at one of its corners ...
   std::vector<int> cell_first_;  ///< ... cell_tracks_[cell_first_[c] .. cell_first_[c+1])
+  /// The Hermite basis of the cell holding (tY, Q), inside the node ranges: made once a lookup.
+  struct Basis {
+    std::size_t i = 0, j = 0;  ///< the cell (i, j)
+    double H0[2], H1[2], G0[2], G1[2], dH0[2], dH1[2], dG0[2], dG1[2];
+  };
+  void basis(double tY, double Q, Basis& B) const;
+  /// Track k's Hermite surface at the basis's point: values and their derivatives.
+  void hermite(const Basis& B, int k, std::array<double, kTableQuantities>& v, std::array<double, kTableQuantities>& vx,
+               std::array<double, kTableQuantities>& vy) const;
 };
 
 /// Severity order of statuses for a cell (the worst of its corners): ok < outside_validity <

@@ -2,10 +2,8 @@
 #include "jobs/contact_table_make.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <map>
-#include <exception>
 #include <iomanip>
 #include <numeric>
 #include <ostream>
@@ -14,119 +12,18 @@
 #include <utility>
 
 #include "contact/solve.hpp"
-#include "contact/tangential/kalker.hpp"
-#include "contact/tangential/tangential_solve.hpp"
 #include "core/errors.hpp"
 #include "core/numfmt.hpp"
 #include "core/units.hpp"
 #include "core/parallel.hpp"
+#include "jobs/contact_table_shards.hpp"
+#include "jobs/contact_table_solves.hpp"
 #include "jobs/run.hpp"
 #include "output/output_file.hpp"
 #include "output/pair_tables.hpp"
 
 namespace mh {
 namespace {
-
-/// One contact of a solved node, in the table's quantities, with its extent on the rail.
-struct NodeContact {
-  std::array<double, kTableQuantities> v{};
-  double y_lo = 0, y_hi = 0;  ///< [m] rail y of its lateral ends
-};
-
-/// What is kept of one direct solve.
-struct NodeSolve {
-  CaseStatus status = CaseStatus::NotConverged;
-  double pmax = 0, area = 0, Fy = 0;
-  std::vector<NodeContact> contacts;  ///< in increasing rail y
-};
-
-NodeSolve extract(const CaseResult& r, double nu) {
-  NodeSolve n;
-  n.status = r.status;
-  if (is_failure(r.status)) return n;
-  n.pmax = r.pmax;
-  n.area = r.area;
-  n.Fy = r.Fy;
-  auto kalker = [&](NodeContact& c) {
-    const double a = c.v[kTabAEl], b = c.v[kTabBEl];
-    const KalkerCoefficients k = a > 0 && b > 0 ? kalker_coefficients(a / b, nu) : KalkerCoefficients{};
-    c.v[kTabC11] = k.C11;
-    c.v[kTabC22] = k.C22;
-    c.v[kTabC23] = k.C23;
-  };
-  for (const LoadedEllipse& L : r.loaded) {
-    NodeContact c;
-    c.v[kTabN] = L.s.N;
-    c.v[kTabYRail] = L.g.y_r;
-    c.v[kTabZRail] = L.z_r;
-    c.v[kTabYWheel] = L.g.y_w;
-    c.v[kTabGamma] = L.g.gamma;
-    c.v[kTabRRoll] = L.g.r_roll;
-    c.v[kTabPmax] = L.s.p_max;
-    c.v[kTabArea] = units::pi * L.s.a * L.s.b;
-    c.v[kTabA] = c.v[kTabAEl] = L.s.a;
-    c.v[kTabB] = c.v[kTabBEl] = L.s.b;
-    kalker(c);
-    c.y_lo = L.g.y_r - L.s.b * L.cos_gamma;
-    c.y_hi = L.g.y_r + L.s.b * L.cos_gamma;
-    n.contacts.push_back(c);
-  }
-  for (const PatchResult& P : r.patches) {
-    NodeContact c;
-    const double cg = std::cos(P.gamma);
-    c.v[kTabN] = P.N;
-    c.v[kTabYRail] = P.y_r;
-    c.v[kTabZRail] = P.z_r;
-    c.v[kTabYWheel] = P.y_w;
-    c.v[kTabGamma] = P.gamma;
-    c.v[kTabRRoll] = P.r_roll;
-    c.v[kTabPmax] = P.pmax;
-    c.v[kTabArea] = P.area;
-    c.v[kTabA] = 0.5 * P.length_x;
-    c.v[kTabB] = 0.5 * P.width_s;
-    // The equivalent ellipse: the elastic Hertz ellipse of N on the patch's curvatures where the
-    // patch has one (PatchResult::a_el), else the patch's half extents.
-    const bool el = std::isfinite(P.a_el) && std::isfinite(P.b_el) && P.a_el > 0 && P.b_el > 0;
-    c.v[kTabAEl] = el ? P.a_el : c.v[kTabA];
-    c.v[kTabBEl] = el ? P.b_el : c.v[kTabB];
-    kalker(c);
-    c.y_lo = P.y_r + std::min(P.s_lo, P.s_hi) * cg;
-    c.y_hi = P.y_r + std::max(P.s_lo, P.s_hi) * cg;
-    n.contacts.push_back(c);
-  }
-  std::sort(n.contacts.begin(), n.contacts.end(),
-            [](const NodeContact& a, const NodeContact& b) { return a.v[kTabYRail] < b.v[kTabYRail]; });
-  return n;
-}
-
-/// Solve the points (tY [m], Q [N]) on the pool, one workspace per thread.
-std::vector<NodeSolve> solve_points(const CaseFile& cf, const PairGeometry& pg, const std::vector<std::pair<double, double>>& pts,
-                                    Pool& pool) {
-  std::vector<NodeSolve> out(pts.size());
-  double G = 0, nu = 0;
-  combined_elastic(cf.material, G, nu);
-  const MethodOptions mo = cf.method_options();
-  std::atomic<std::size_t> next{0};
-  std::vector<std::exception_ptr> errors(pool.size());
-  pool.run([&](unsigned t) {
-    try {
-      GridWorkspace ws;
-      CaseResult r;
-      for (;;) {
-        const std::size_t k = next.fetch_add(1);
-        if (k >= pts.size()) break;
-        solve_contact(pg.geo, cf.material, pts[k].first, pts[k].second, mo, r, &ws);
-        out[k] = extract(r, nu);
-      }
-    } catch (...) {
-      errors[t] = std::current_exception();
-      next = pts.size();
-    }
-  });
-  for (auto& e : errors)
-    if (e) std::rethrow_exception(e);
-  return out;
-}
 
 /// Overlap of two contacts' rail extents, widened by `margin` [m] (> 0: they may be one contact).
 double overlap(const NodeContact& a, const NodeContact& b, double margin) {
@@ -357,7 +254,7 @@ nlohmann::json error_summary(const std::vector<TableCheckError>& checks, const T
 
 }  // namespace
 
-TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const TableMakeOptions& opt, std::ostream& err) {
+void table_initial_nodes(const CaseFile& cf, std::vector<double>& tY_mm, std::vector<double>& Q_kN) {
   const std::string where = cf.path + ": /sweep";
   if (!cf.cases.empty() || cf.sweep_tY_mm.size() < 2 || cf.sweep_Q_kN.size() < 2)
     throw InputError(where, "", "a table needs a sweep with at least two t_Y and two Q values (its nodes)",
@@ -365,7 +262,8 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   if (cf.method == Method::MultiHertzian)
     throw InputError(cf.path + ": /method", "multi-hertzian", "a table is made by a grid method: strips, half-space or auto",
                      "the multi-Hertzian method is as fast as a table lookup: call it directly");
-  std::vector<double> tY_mm, Q_kN;
+  tY_mm.clear();
+  Q_kN.clear();
   for (std::uint64_t i = 0; i < cf.sweep_tY_mm.size(); ++i) tY_mm.push_back(cf.sweep_tY_mm.at(i));
   for (std::uint64_t i = 0; i < cf.sweep_Q_kN.size(); ++i) Q_kN.push_back(cf.sweep_Q_kN.at(i));
   std::sort(tY_mm.begin(), tY_mm.end());
@@ -374,11 +272,31 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   Q_kN.erase(std::unique(Q_kN.begin(), Q_kN.end()), Q_kN.end());
   if (tY_mm.size() < 2 || Q_kN.size() < 2 || !(Q_kN.front() > 0))
     throw InputError(where, "", "a table needs two distinct t_Y values and two distinct loads Q > 0");
+}
+
+std::vector<std::pair<double, double>> table_first_points(const CaseFile& cf, const TableMakeOptions& opt) {
+  std::vector<double> tY_mm, Q_kN;
+  table_initial_nodes(cf, tY_mm, Q_kN);
+  std::vector<std::pair<double, double>> pts;
+  for (double t : tY_mm)
+    for (double q : Q_kN) pts.emplace_back(t, q);
+  if (opt.check)
+    for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i)
+      for (std::size_t j = 0; j + 1 < Q_kN.size(); ++j)
+        pts.emplace_back(rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])), 0.5 * (Q_kN[j] + Q_kN[j + 1]));
+  return pts;
+}
+
+TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const TableMakeOptions& opt, std::ostream& err,
+                             const TableSolves* presolved) {
+  std::vector<double> tY_mm, Q_kN;
+  table_initial_nodes(cf, tY_mm, Q_kN);
 
   const unsigned nt = std::max(1u, opt.threads ? opt.threads : std::thread::hardware_concurrency());
   Pool pool(nt);
   TableMade made;
-  std::map<std::pair<double, double>, NodeSolve> solved;  // (tY mm, Q kN) → solve
+  TableSolves solved;  // (tY mm, Q kN) → solve
+  if (presolved) solved = *presolved;
   auto solve_missing = [&](const std::vector<std::pair<double, double>>& pts_mm) {
     std::vector<std::pair<double, double>> todo, si;
     for (const auto& p : pts_mm)
@@ -584,10 +502,12 @@ void write_contact_table(const ContactTableData& t, std::ostream& out) {
 }
 
 int table_job(const CaseFile& cf, const TableMakeOptions& opt, const std::string& out_path, std::ostream& out,
-              std::ostream& err) {
+              std::ostream& err, const std::vector<std::string>& shard_files) {
   const PairGeometry pg = build_pair_geometry(cf);
   if (!opt.quiet) warn_profiles(pg, err);
-  const TableMade m = make_contact_table(cf, pg, opt, err);
+  TableSolves pre;
+  if (!shard_files.empty()) pre = read_table_shards(cf, pg, opt, shard_files);
+  const TableMade m = make_contact_table(cf, pg, opt, err, shard_files.empty() ? nullptr : &pre);
   if (out_path == "-") {
     write_contact_table(m.data, out);
   } else {

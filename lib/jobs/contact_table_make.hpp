@@ -5,7 +5,9 @@
 // direct solves at every cell's centre, t_Y intervals halved where a cell misses its tolerance,
 // and the table written as CSV with a JSON header (input/contact_table.hpp reads it).
 #include <iosfwd>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry/contact_geometry.hpp"
@@ -47,17 +49,32 @@ struct TableMade {
   std::size_t solves = 0;                ///< direct solves made (nodes and check points)
 };
 
-/// Make the table of `cf` (its pair `pg`, method, material; its sweep gives the initial nodes:
-/// t_Y from/to/step or a list, Q a list of at least two values). Throws InputError for a case
-/// file that cannot make a table (a case list, one Q, the multi-Hertzian method).
-TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const TableMakeOptions& opt, std::ostream& err);
+struct NodeSolve;
+using TableSolves = std::map<std::pair<double, double>, NodeSolve>;
+
+/// The initial nodes of `cf`'s table (its sweep: t_Y from/to/step or a list, Q a list of at
+/// least two values), sorted, in mm and kN. Throws InputError for a case file that cannot make a
+/// table (a case list, one Q, the multi-Hertzian method).
+void table_initial_nodes(const CaseFile& cf, std::vector<double>& tY_mm, std::vector<double>& Q_kN);
+
+/// The points the first round of making solves (t_Y [mm], Q [kN]): the initial nodes, then with
+/// `opt.check` the centres of their cells. The shards of `mhcontact table --shard K/N` split them.
+std::vector<std::pair<double, double>> table_first_points(const CaseFile& cf, const TableMakeOptions& opt);
+
+/// Make the table of `cf` (its pair `pg`, method, material; its sweep gives the initial nodes).
+/// `presolved` (the shards' solves, contact_table_shards.hpp) are taken instead of solving those
+/// points again: the table is the same. Throws InputError as table_initial_nodes.
+TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const TableMakeOptions& opt, std::ostream& err,
+                             const TableSolves* presolved = nullptr);
 
 /// The table as its file's text (CSV with the JSON header line).
 void write_contact_table(const ContactTableData& t, std::ostream& out);
 
 /// `mhcontact table CASE.json -o FILE`: make, write atomically, print the error summary. Returns
-/// 0, or 1 when some cells stay beyond tolerance (coarse) or some nodes have no answer.
+/// 0, or 1 when some cells stay beyond tolerance (coarse) or some nodes have no answer. With
+/// `shard_files` (`--merge`), the first round's solves are the shards' (contact_table_shards.hpp)
+/// and the refinement is solved here: the table is byte for byte the one-process table.
 int table_job(const CaseFile& cf, const TableMakeOptions& opt, const std::string& out_path, std::ostream& out,
-              std::ostream& err);
+              std::ostream& err, const std::vector<std::string>& shard_files = {});
 
 }  // namespace mh

@@ -112,6 +112,58 @@ def test_table_lookup_into(table_path):
         t.lookup_into(0.0, 60e3, None)
 
 
+def test_table_lookup_many_out(table_path):
+    """lookup_many(..., out=) writes into the caller's arrays (the same objects, the same memory)
+    the values lookup_many returns freshly; arrays of another shape, dtype or layout are refused
+    with the key and the rule (docs/python.md)."""
+    t = mhcontact.Table(table_path)
+    tY = np.linspace(-4.2e-3, 10.1e-3, 613)
+    Q = np.full_like(tY, 58e3)
+    fresh = t.lookup_many(tY, Q)
+    out = mhcontact.Table.many_result(len(tY))
+    assert sorted(out) == sorted(fresh)
+    where = {k: v.__array_interface__["data"][0] for k, v in out.items()}
+    ret = t.lookup_many(tY, Q, out=out)
+    assert ret is out
+    for k, v in fresh.items():
+        assert out[k].dtype == v.dtype and out[k].shape == v.shape
+        assert np.array_equal(out[k], v), k
+        assert out[k].__array_interface__["data"][0] == where[k], k
+    # Reused for other points: every slot rewritten (a slot emptied since is 0 again).
+    t.lookup_many(tY[::-1].copy(), Q, out=out)
+    again = t.lookup_many(tY[::-1].copy(), Q)
+    for k, v in again.items():
+        assert np.array_equal(out[k], v), k
+    # A dict that lookup_many returned serves as out too.
+    t.lookup_many(tY, Q, out=again)
+    assert np.array_equal(again["N_N"], fresh["N_N"])
+    with pytest.raises(ValueError, match=r'out\["status"\]: must be a writeable C-contiguous int8 array of shape \(612,\) for 612 points'):
+        t.lookup_many(tY[:612], Q[:612], out=out)
+    bad = mhcontact.Table.many_result(len(tY))
+    bad["Fy_N"] = np.zeros(len(tY), dtype=np.float32)
+    with pytest.raises(ValueError, match=r'out\["Fy_N"\]'):
+        t.lookup_many(tY, Q, out=bad)
+    bad = mhcontact.Table.many_result(len(tY))
+    bad["track"] = np.zeros((6, len(tY)), dtype=np.int32).T
+    with pytest.raises(ValueError, match=r'out\["track"\]'):
+        t.lookup_many(tY, Q, out=bad)
+    del bad["track"]
+    with pytest.raises(ValueError, match="the key track is missing"):
+        t.lookup_many(tY, Q, out=bad)
+    # The cost with and without out= (printed, not asserted: the machine is shared), CPU time of
+    # the thread, median of 15 calls on 10,000 points.
+    tY = 6e-3 * np.sin(np.linspace(0, 10 * np.pi, 10000)) + 3e-3
+    Q = np.full_like(tY, 60e3)
+    out = mhcontact.Table.many_result(len(tY))
+    for name, call in (("fresh arrays", lambda: t.lookup_many(tY, Q)), ("out=", lambda: t.lookup_many(tY, Q, out=out))):
+        dt = []
+        for _ in range(15):
+            t0 = time.thread_time()
+            call()
+            dt.append(time.thread_time() - t0)
+        print(f"lookup_many, {name}: {sorted(dt)[7] / len(tY) * 1e6:.3f} us a point (median of 15)")
+
+
 def test_table_errors(tmp_path, table_path):
     bad = tmp_path / "bad.csv"
     bad.write_text("tY_mm,Q_kN\n1,2\n")
@@ -128,5 +180,5 @@ def test_bench_table_python_runs(table_path):
     out = subprocess.run([sys.executable, os.path.join(SRC, "bench", "tables", "bench_table_python.py"), table_path, "500"],
                          capture_output=True, text=True, check=True).stdout
     rows = {l.split()[0]: l.split()[1:] for l in out.splitlines()[2:]}
-    assert list(rows) == ["C", "lookup_into", "lookup", "lookup_many", "loop"]
+    assert list(rows) == ["C", "lookup_into", "lookup", "lookup_many", "many_out", "loop"]
     assert float(rows["C"][2]) == 1.0 and all(float(v[0]) > 0 for v in rows.values())

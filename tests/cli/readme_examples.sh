@@ -179,6 +179,15 @@ fi
 test -s out/table.csv
 shown_output docs/tables.md "./build/mhcontact table cases/s1002-60e1-table.json -o out/table.csv" | diff - <(grep '^mhcontact table:' "$tmp/table.err")
 
+# --- docs/tables.md, "Export for MBS codes" and "Shards": the export's summary is the page's; the
+# merged shards are byte for byte the table above ---------------------------------------------
+./build/mhcontact table-export out/table.csv -o out/export.csv 2> "$tmp/export.err"
+shown_output docs/tables.md "./build/mhcontact table-export out/table.csv -o out/export.csv" | diff - "$tmp/export.err"
+./build/mhcontact table cases/s1002-60e1-table.json --shard 1/2 -o out/table-part1.json
+./build/mhcontact table cases/s1002-60e1-table.json --shard 2/2 -o out/table-part2.json
+./build/mhcontact table cases/s1002-60e1-table.json --merge out/table-part1.json out/table-part2.json -o out/table-merged.csv || test $? -eq 1
+cmp out/table.csv out/table-merged.csv
+
 # --- docs/cli.md, "Exit codes": a failing case gives 1, bad input 2, CLI syntax >= 100 --------
 set +e
 ./build/mhcontact run /nonexistent.json -o out/x 2>/dev/null; test $? -eq 2 || exit 1

@@ -59,6 +59,32 @@ if "$PY" -c 'import matplotlib' 2>/dev/null; then
   check "history plot written" test -s hist.png
 fi
 
+# The export for MBS codes (docs/tables.md "Export for MBS codes"): a regular grid, the source's
+# checksum in its header, the measured error; a step that does not divide the range refused.
+"$BIN" table-export out/table.csv -o out/export.csv --tY-step-mm 0.25 --Q-step-kN 10 2>stderr.txt
+check "export exit 0" test $? -eq 0
+check "export summary" grep -q '^mhcontact table-export: 57 x 13 points, 6 contact tracks; bilinear error at the table.s ok nodes, ' stderr.txt
+check "export schema" grep -q '^# {.*"schema":"mhcontact.table-export/1"' out/export.csv
+check "export names the table's checksum" grep -q "\"sha256\":\"$(sha256sum out/table.csv | cut -c1-64)\"" out/export.csv
+check "export columns: the table's" test "$(sed -n 2p out/export.csv)" = "$(sed -n 2p out/table.csv)"
+check "rows: 57 x 13 points x 6 tracks" test "$(tail -n +3 out/export.csv | wc -l)" -eq 4446
+"$BIN" table-export out/table.csv -o out/x.csv --tY-step-mm 0.3 2>err.txt; rc=$?
+check "export step refused (exit 2)" test $rc -eq 2
+check "export step message" grep -q -- '--tY-step-mm: value 0.3.*must divide the table.s range -4 ... 10 mm' err.txt
+"$BIN" table-export "$SRC/cases/s1002-60e1-table.json" -o out/x.csv 2>err.txt; rc=$?
+check "export of a non-table refused (exit 2)" test $rc -eq 2
+
+# Shards (docs/tables.md "Shards"): the merged table byte for byte the one-process table.
+cp "$SRC/tests/data/tables/worn-table-q.json" q.json
+sed -i "s|\.\./profiles|$SRC/tests/data/profiles|g" q.json
+"$BIN" table q.json -o out/q.csv -q --threads 2
+for k in 1 2; do "$BIN" table q.json --shard $k/2 -o out/q$k.json -q --threads 2; done
+"$BIN" table q.json --merge out/q2.json out/q1.json -o out/q-merged.csv -q --threads 2
+check "sharded table = one-process table" cmp out/q.csv out/q-merged.csv
+"$BIN" table q.json --merge out/q1.json -o out/x.csv 2>err.txt; rc=$?
+check "missing shard refused (exit 2)" test $rc -eq 2
+check "missing shard message" grep -q 'shard 2/2 is missing' err.txt
+
 # Must-fail inputs: exit 2, the message names the file and the rule.
 cp "$SRC/cases/manchester.json" mh.json
 sed -i "s|\.\./profiles|$SRC/profiles|g" mh.json

@@ -1,0 +1,50 @@
+#pragma once
+// The direct solves a contact table is made of (docs/tables.md "How it is made"): what is kept
+// of one solve at a point (t_Y, Q) in the table's quantities, the solves of many points on the
+// jobs' thread pool, and their JSON form for the shards of `mhcontact table --shard K/N`
+// (contact_table_shards.hpp). Internal to the jobs layer.
+#include <array>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "contact/case_result.hpp"
+#include "core/parallel.hpp"
+#include "geometry/contact_geometry.hpp"
+#include "input/case_file.hpp"
+#include "input/contact_table.hpp"
+
+namespace mh {
+
+/// One contact of a solved node, in the table's quantities, with its extent on the rail.
+struct NodeContact {
+  std::array<double, kTableQuantities> v{};
+  double y_lo = 0, y_hi = 0;  ///< [m] rail y of its lateral ends
+};
+
+/// What is kept of one direct solve.
+struct NodeSolve {
+  CaseStatus status = CaseStatus::NotConverged;
+  double pmax = 0, area = 0, Fy = 0;
+  std::vector<NodeContact> contacts;  ///< in increasing rail y
+};
+
+/// The solves of a table by point (t_Y [mm], Q [kN]): the nodes' and the check points'.
+using TableSolves = std::map<std::pair<double, double>, NodeSolve>;
+
+/// What a table keeps of the case result `r` (nu: the pair's combined Poisson ratio).
+NodeSolve extract(const CaseResult& r, double nu);
+
+/// Solve the points (tY [m], Q [N]) by the case's method on the pool, one workspace per thread.
+/// The answers do not depend on the thread count.
+std::vector<NodeSolve> solve_points(const CaseFile& cf, const PairGeometry& pg,
+                                    const std::vector<std::pair<double, double>>& pts, Pool& pool);
+
+/// A solve as JSON and back, every number exact (non-finite numbers as null and back as NaN).
+/// from_json throws InputError naming `where` for a malformed solve.
+nlohmann::json solve_to_json(const NodeSolve& s);
+NodeSolve solve_from_json(const nlohmann::json& j, const std::string& where);
+
+}  // namespace mh
