@@ -336,8 +336,10 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   const bool want_csv = out.cases != nullptr, want_json = out.json != nullptr;
   const int np = out.pressure ? opt.pressure_grid : 0;
   MethodOptions mo = cf.method_options();
-  mo.half_space.keep_pressure = np > 0;
-  mo.strips.keep_strips = out.strips != nullptr;
+  // The subsurface columns of a grid patch from its own pressure ("subsurface": {"grid": true}).
+  const bool grid_stresses = cf.rcf.enabled() && cf.rcf.subsurface && cf.rcf.subsurface_grid;
+  mo.half_space.keep_pressure = np > 0 || grid_stresses;
+  mo.strips.keep_strips = out.strips != nullptr || grid_stresses;
   const bool grid_method = mo.method != Method::MultiHertzian;
   // The band's solves keep nothing but the case summary (pmax, area).
   MethodOptions mo_band = cf.method_options();

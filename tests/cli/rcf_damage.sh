@@ -83,12 +83,13 @@ base '{"shear_yield_MPa": 300, "subsurface": {"dang_van_c": 0.3}}' "$fric" | sed
 "$py" - "$tmp/s" <<'PY'
 import csv, math, sys
 E = list(csv.DictReader(open(sys.argv[1] + "/ellipses.csv")))
-cols = ["sub_vm_max_MPa", "sub_vm_depth_mm", "sub_tau_max_MPa", "sub_tau_depth_mm", "sub_tau_orth_amp_MPa",
+cols = ["sub_source", "sub_vm_max_MPa", "sub_vm_depth_mm", "sub_tau_max_MPa", "sub_tau_depth_mm", "sub_tau_orth_amp_MPa",
         "sub_tau_orth_depth_mm", "sub_tau_eq_amp_MPa", "sub_sigma_h_MPa", "FI_sub_MPa"]
 h = list(E[0])
 i = h.index("FI_surf_el")
 assert h[i + 1:i + 1 + len(cols)] == cols, h[i + 1:i + 10]
 for e in E:
+    assert e["sub_source"] == "hertz_ellipse", e["sub_source"]
     p0 = 300 * float(e["p0_el_over_k"])
     vm, tau = float(e["sub_vm_max_MPa"]), float(e["sub_tau_max_MPa"])
     # Any stress state: τ_max ≤ σ_vM/√3 ≤ (2/√3) τ_max; a Hertz contact's peaks 0.55–0.75 p0 (von Mises)
@@ -97,6 +98,23 @@ for e in E:
     fi = float(e["sub_tau_eq_amp_MPa"]) + 0.3 * float(e["sub_sigma_h_MPa"])
     assert abs(float(e["FI_sub_MPa"]) - fi) < 1e-6 * abs(fi) + 1e-9, e
 print("rcf_damage: subsurface columns present and consistent")
+PY
+# Below a grid patch's own pressure ("grid": true): a half-space patch (882 elements, about 1 s),
+# without friction (then only this option keeps the patch's pressure for the columns: broken once,
+# not keeping it, the row fell back to its Hertz ellipse).
+base '{"traction_coefficient": 0.3, "shear_yield_MPa": 300, "subsurface": {"grid": true}}' "\"method\": \"half-space\"," |
+  sed 's/"tY_mm": \[0, 2, 4, 6, 7, 8\], "Q_kN": 100/"tY_mm": [4], "Q_kN": 20/' > "$tmp/g.json"
+"$bin" run "$tmp/g.json" -o "$tmp/g" -q --format csv
+"$py" - "$tmp/g" <<'PY'
+import csv, math, sys
+P = list(csv.DictReader(open(sys.argv[1] + "/patches.csv")))
+assert len(P) == 1 and P[0]["sub_source"] == "grid_patch", [p["sub_source"] for p in P]
+p = P[0]
+vm, tau, pmax = float(p["sub_vm_max_MPa"]), float(p["sub_tau_max_MPa"]), float(p["pmax_MPa"])
+assert tau <= vm / math.sqrt(3) * (1 + 1e-9) and vm / math.sqrt(3) <= 2 / math.sqrt(3) * tau * (1 + 1e-9), p
+assert 0.5 * pmax < vm < 0.8 * pmax, (vm, pmax)
+assert float(p["sub_vm_depth_mm"]) >= float(p["element_mm"]), p  # searched from one element deep
+print("rcf_damage: a grid patch's subsurface columns from its own pressure")
 PY
 # Contradicting inputs: exit code 2, the JSON path named.
 expect_error() {  # $1: file, $2: the path the message must name
