@@ -71,6 +71,30 @@ PY
 # results.json echoes the inputs (the distribution, the constants) and carries the same keys.
 grep -q '"tY_distribution"' "$tmp/f/results.json"
 grep -q '"D_burstow_per_axle"' "$tmp/f/results.json"
+# The damage and wear weighted by the t_Y distribution N(3 mm, 2 mm) in the run's summary
+# (results.json and run.json "rcf_tY_weighted"), against the trapezoid weights computed here from
+# cases.csv: node i stands for the interval between the midpoints to its neighbours.
+"$py" - "$tmp/f" <<'PY'
+import csv, json, math, sys
+d = sys.argv[1]
+C = [c for c in csv.DictReader(open(d + "/cases.csv")) if c["D_burstow_per_axle"] != ""]
+t = [float(c["tY_mm"]) for c in C]
+assert t == sorted(t) and len(t) >= 3, t
+w = []
+for i in range(len(t)):
+    lo = (t[i - 1] + t[i]) / 2 if i > 0 else t[i]
+    hi = (t[i] + t[i + 1]) / 2 if i + 1 < len(t) else t[i]
+    w.append(math.exp(-0.5 * ((t[i] - 3) / 2) ** 2) * (hi - lo))
+D = sum(wi * float(c["D_burstow_per_axle"]) for wi, c in zip(w, C)) / sum(w)
+W = sum(wi * float(c["wear_ug_per_m"]) for wi, c in zip(w, C)) / sum(w)
+for name in ("results.json", "run.json"):
+    s = json.load(open(d + "/" + name))["summary"]["rcf_tY_weighted"]
+    assert len(s) == 1 and s[0]["Q_kN"] == 100 and s[0]["cases"] == len(C), s
+    assert abs(s[0]["D_burstow_per_axle"] - D) <= 1e-6 * D, (name, s[0], D)
+    assert abs(s[0]["wear_ug_per_m"] - W) <= 1e-6 * W, (name, s[0], W)
+    assert s[0]["tY_mean_mm"] == 3 and s[0]["tY_sd_mm"] == 2 and s[0]["tY_from_mm"] == t[0] and s[0]["tY_to_mm"] == t[-1], s
+print(f"rcf_damage: t_Y-weighted damage {D:.6g} per axle, wear {W:.6g} ug/m in the summary")
+PY
 # The damage weighted by the t_Y distribution (scripts/plot_rcf.py), when matplotlib is present.
 if "$py" -c "import matplotlib" 2>/dev/null; then
   MPLBACKEND=Agg "$py" "$src/scripts/plot_rcf.py" "$tmp/f" -o "$tmp/rcf.png" > "$tmp/plot.txt"
