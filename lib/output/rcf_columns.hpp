@@ -25,8 +25,8 @@ SubsurfacePeaks subsurface_of(const RcfOptions& o, double N, double a_el, double
                               double f);
 // With "subsurface": {"grid": true}, the stresses below a grid patch from its own element pressure
 // (half-space: PatchResult::p; strips: their semi-ellipses laid on a grid of the strip width) with
-// full-slip traction f p on the rail along the contact's own force (-F/|F|, F on the wheel; along x
-// without one), the ellipse's convention; the per-element traction is not kept in the result.
+// full-slip traction f p (as for the ellipse) on the rail along the contact's own force (-F/|F|, F
+// on the wheel; along x without one): the per-element traction is not kept in the result.
 // False (P untouched) for a patch with elements at the plastic cap, or without its pressure.
 bool grid_subsurface_of(const RcfOptions& o, const PatchResult& patch, double f, SubsurfacePeaks& P);
 // `patch`: the row's grid patch, or null (an ellipse row). sub_source says which load the stresses
