@@ -7,7 +7,9 @@ map, each contact of the sweep as a point (traction coefficient, p0_el/k) with t
 curves at the run's aspect ratios; the Burstow damage per axle and the USFD wear per metre against
 t_Y. With --tY-mean/--tY-sd (or the case file's "rcf": {"tY_distribution"} echoed in results.json)
 it prints the damage and wear weighted by that normal distribution of t_Y over the sweep's t_Y
-(trapezoidal weights of the normal density, normalised over the sweep's range).
+(trapezoidal weights of the normal density, normalised over the sweep's range): the numbers that a
+whole run's summary carries as rcf_tY_weighted (docs/outputs.md "Damage and wear over t_Y"), here
+also for a merged sharded run or another distribution.
 
 Usage: scripts/plot_rcf.py DIR [DIR ...] [-o rcf.png] [--tY-mean MM --tY-sd MM]
 """

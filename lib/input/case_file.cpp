@@ -446,8 +446,9 @@ CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool 
     }
     if (h.contains("subsurface")) {
       const json& u = h.at("subsurface");
-      c.only_keys(u, "/rcf/subsurface", {"dang_van_c"});
+      c.only_keys(u, "/rcf/subsurface", {"dang_van_c", "grid"});
       cf.rcf.subsurface = true;
+      if (u.contains("grid")) cf.rcf.subsurface_grid = c.boolean(u, "/rcf/subsurface", "grid");
       if (u.contains("dang_van_c")) cf.rcf.dang_van_c = c.number(u, "/rcf/subsurface", "dang_van_c");
       if (u.contains("dang_van_c") && !(cf.rcf.dang_van_c >= 0 && cf.rcf.dang_van_c <= 1))
         c.fail("/rcf/subsurface/dang_van_c", &u.at("dang_van_c"), "must be in [0, 1]", "steels: about 0.3");
@@ -597,6 +598,7 @@ nlohmann::json CaseFile::resolved_json() const {
     if (rcf.subsurface) {
       j["rcf"]["subsurface"] = json::object();
       if (std::isfinite(rcf.dang_van_c)) j["rcf"]["subsurface"]["dang_van_c"] = rcf.dang_van_c;
+      j["rcf"]["subsurface"]["grid"] = rcf.subsurface_grid;
     }
     if (std::isfinite(rcf.tY_sd))
       j["rcf"]["tY_distribution"] = {{"mean_mm", rcf.tY_mean * units::per_mm}, {"sd_mm", rcf.tY_sd * units::per_mm}};

@@ -259,6 +259,9 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   if (jw) jw->begin_array("cases");
   const std::uint64_t n = end - first;
   SweepCounts counts;
+  // The damage weighted over t_Y needs every t_Y of the sweep: a whole run, not one shard of it.
+  if (opt.shard_count == 1 && cf.tangential.enabled())
+    counts.tY_mean_mm = cf.rcf.tY_mean * units::per_mm, counts.tY_sd_mm = cf.rcf.tY_sd * units::per_mm;
   if (opt.strips) {
     fs = std::make_unique<OutputFile>(rd->path("strips.csv"));
     fs->stream() << strips_csv_header();

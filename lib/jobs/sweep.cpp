@@ -21,6 +21,7 @@
 #include "contact/judge/judge.hpp"
 #include "contact/solve.hpp"
 #include "contact/rcf/contact_damage.hpp"
+#include "contact/rcf/ty_weighting.hpp"
 #include "core/errors.hpp"
 #include "core/parallel.hpp"
 #include "output/case_tables.hpp"
@@ -143,6 +144,34 @@ std::vector<std::string> parse_fail_on(const std::string& text) {
   return classes;
 }
 
+nlohmann::json SweepCounts::rcf_ty_json() const {
+  auto number_or_null = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  std::map<double, std::vector<const DamagePoint*>> by_Q;
+  for (const DamagePoint& d : damage_points) by_Q[d.Q_kN].push_back(&d);
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& [Q, pts] : by_Q) {
+    std::vector<std::pair<double, double>> D, W;
+    double lo = INFINITY, hi = -INFINITY;
+    std::uint64_t unsolved = 0;
+    for (const DamagePoint* d : pts) {
+      if (!d->solved) {
+        ++unsolved;
+        continue;
+      }
+      D.emplace_back(d->tY_mm, d->damage), W.emplace_back(d->tY_mm, d->wear_ug_per_m);
+      lo = std::min(lo, d->tY_mm), hi = std::max(hi, d->tY_mm);
+    }
+    const double nan = NAN;
+    const bool any = !D.empty();
+    a.push_back({{"Q_kN", Q}, {"tY_mean_mm", tY_mean_mm}, {"tY_sd_mm", tY_sd_mm},
+                 {"tY_from_mm", any ? nlohmann::json(lo) : nlohmann::json()}, {"tY_to_mm", any ? nlohmann::json(hi) : nlohmann::json()},
+                 {"cases", D.size()}, {"cases_unsolved", unsolved},
+                 {"D_burstow_per_axle", number_or_null(any ? ty_weighted(D, tY_mean_mm, tY_sd_mm) : nan)},
+                 {"wear_ug_per_m", number_or_null(any ? ty_weighted(W, tY_mean_mm, tY_sd_mm) : nan)}});
+  }
+  return a;
+}
+
 std::string warnings_failure(const RunOptions& opt, const SweepCounts& counts, std::uint64_t cant_warnings) {
   if (opt.fail_on_warning) {
     if (!counts.with_warnings && !cant_warnings) return {};
@@ -216,6 +245,7 @@ struct Slot {
   std::vector<Block> blocks;
   std::vector<CaseStatus> status;
   std::vector<std::vector<std::string>> warning_kinds;  ///< per case, each kind once
+  std::vector<SweepCounts::DamagePoint> damage;          ///< per case, when SweepCounts collects them
   std::size_t m = 0;
   std::size_t n_blocks = 0;  ///< blocks filled for this chunk (the last chunk may use fewer)
 };
@@ -336,8 +366,10 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   const bool want_csv = out.cases != nullptr, want_json = out.json != nullptr;
   const int np = out.pressure ? opt.pressure_grid : 0;
   MethodOptions mo = cf.method_options();
-  mo.half_space.keep_pressure = np > 0;
-  mo.strips.keep_strips = out.strips != nullptr;
+  // The subsurface columns of a grid patch from its own pressure ("subsurface": {"grid": true}).
+  const bool grid_stresses = cf.rcf.enabled() && cf.rcf.subsurface && cf.rcf.subsurface_grid;
+  mo.half_space.keep_pressure = np > 0 || grid_stresses;
+  mo.strips.keep_strips = out.strips != nullptr || grid_stresses;
   const bool grid_method = mo.method != Method::MultiHertzian;
   // The band's solves keep nothing but the case summary (pmax, area).
   MethodOptions mo_band = cf.method_options();
@@ -362,7 +394,9 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
     s.blocks.resize(n_slices);
     s.status.resize(static_cast<std::size_t>(std::min<std::uint64_t>(chunk, n)));
     s.warning_kinds.resize(s.status.size());
+    s.damage.resize(s.status.size());
   }
+  const bool collect_damage = counts->tY_sd_mm > 0 && tang;
   std::mutex fail_mutex;
   std::uint64_t fail_case = UINT64_MAX;
   std::string fail_what;
@@ -407,6 +441,9 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
           }
           damage_step(r, rcf.burstow, rcf.usfd);  // the damage and wear of the Tγ columns, once per case
           S.status[i] = r.status;
+          if (collect_damage)
+            S.damage[i] = {cp.Q_kN, cp.tY_mm, r.damage.damage, r.damage.wear_per_metre * 1e9 /* kg/m → µg/m */,
+                           !is_failure(r.status) && r.tangential.solved};
           auto& kinds = S.warning_kinds[i];
           kinds.clear();
           for (const Warning& w : r.warnings) {
@@ -459,6 +496,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
       if (is_failure(S.status[i])) ++counts->failed;
       for (const std::string& k : S.warning_kinds[i]) ++counts->warnings[k];
       if (!S.warning_kinds[i].empty()) ++counts->with_warnings;
+      if (collect_damage) counts->damage_points.push_back(S.damage[i]);
     }
     if (writer) {
       writer->submit(&S);

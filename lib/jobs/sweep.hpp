@@ -2,6 +2,7 @@
 // The sweep runner: solves a range of the cases of a case file on one profile pair's geometry in
 // parallel chunks, formats each case's rows in its worker, and writes them to the sinks in case
 // order, so the output is byte-identical whatever the thread count.
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -106,11 +107,28 @@ struct SweepCounts {
   /// e.g. "non_hertzian_excluded"); a case with several warnings of one kind counts once.
   std::map<std::string, std::uint64_t> warnings;
   std::uint64_t with_warnings = 0;  ///< cases with any warning
+  /// "rcf": {"tY_distribution"} with friction: the damage and wear of every case, for the
+  /// summary's "rcf_tY_weighted" (rcf_ty_json()). Collected by solve_cases when tY_sd_mm > 0,
+  /// which the caller sets for a whole sweep only (not for one shard of it: the weights need
+  /// every t_Y).
+  double tY_mean_mm = NAN, tY_sd_mm = NAN;
+  struct DamagePoint {
+    double Q_kN, tY_mm;
+    double damage;         ///< [-] per axle, Σ over the case's contacts (cases.csv D_burstow_per_axle)
+    double wear_ug_per_m;  ///< [µg/m] Σ over the contacts (cases.csv wear_ug_per_m)
+    bool solved;           ///< an answer with every contact's tangential problem solved
+  };
+  std::vector<DamagePoint> damage_points;
   /// The summary object of results.json, run.json and shard.json.
   nlohmann::json summary_json(std::uint64_t cases) const {
-    return {{"cases", cases}, {"failed", failed}, {"by_status", by_status}, {"cases_with_warnings", with_warnings},
-            {"warnings", warnings}};
+    nlohmann::json j = {{"cases", cases}, {"failed", failed}, {"by_status", by_status},
+                        {"cases_with_warnings", with_warnings}, {"warnings", warnings}};
+    if (tY_sd_mm > 0) j["rcf_tY_weighted"] = rcf_ty_json();
+    return j;
   }
+  /// Per load Q of the sweep (ascending): the damage and wear weighted over its t_Y by the normal
+  /// distribution N(tY_mean_mm, tY_sd_mm) (contact/rcf/ty_weighting.hpp), over the cases solved.
+  nlohmann::json rcf_ty_json() const;
 };
 
 /// --fail-on-warning and --fail-on: "" when the run need not exit 1 for its warnings, else the

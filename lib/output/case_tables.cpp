@@ -116,7 +116,7 @@ void patch_fields(Sink& k, const PatchResult& P, bool plastic, const RcfOptions&
     k.number("capped_load_kN", P.capped_load / units::kN);
   }
   if (rcf.enabled()) {
-    rcf_fields(k, rcf, P.N, P.a_el, P.b_el, P.t);  // the elastic Hertz ellipse of N (patch_elastic.hpp)
+    rcf_fields(k, rcf, P.N, P.a_el, P.b_el, P.t, &P);  // the elastic Hertz ellipse of N (patch_elastic.hpp)
   }
   if (tangential) {
     tangential_fields(k, P.t);

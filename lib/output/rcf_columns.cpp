@@ -1,6 +1,10 @@
 // The subsurface search of one contact for the RCF columns (rcf_columns.hpp).
 #include "output/rcf_columns.hpp"
 
+#include <algorithm>
+
+#include "contact/rcf/grid_subsurface.hpp"
+
 namespace mh {
 
 SubsurfacePeaks subsurface_of(const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
@@ -22,4 +26,77 @@ SubsurfacePeaks subsurface_of(const RcfOptions& o, double N, double a_el, double
   m.L = L, m.P = subsurface_peaks(L), m.used = true;
   return m.P;
 }
+
+namespace {
+
+// The pressure of a grid patch as uniform elements: the half-space method's own grid, or the
+// strips' semi-ellipses q √(1 − ((x − c)/a)²) at the centres of elements of the strip width
+// across and at least 32 along (as the strips' tangential step lays them, solve.cpp), scaled to
+// carry the patch's N. Empty when the patch kept neither.
+GridLoad patch_pressure(const PatchResult& P) {
+  GridLoad G;
+  if (!P.p.empty() && P.nx > 0 && P.ns > 0) {
+    G.nx = P.nx, G.ny = P.ns, G.dx = P.dx, G.dy = P.ds, G.x0 = P.x0, G.y0 = P.s0;
+    G.p = P.p;
+    return G;
+  }
+  if (P.strips.empty() || !(P.element > 0) || !(P.N > 0)) return G;
+  double s_lo = INFINITY, s_hi = -INFINITY, x_lo = INFINITY, x_hi = -INFINITY;
+  for (const StripOut& S : P.strips) {
+    s_lo = std::min(s_lo, S.s), s_hi = std::max(s_hi, S.s);
+    x_lo = std::min(x_lo, S.c - S.a), x_hi = std::max(x_hi, S.c + S.a);
+  }
+  const double ds = P.element, dx = std::min(ds, (x_hi - x_lo) / 32);
+  G.nx = std::max(1, static_cast<int>(std::ceil((x_hi - x_lo) / dx)));
+  G.ny = static_cast<int>(std::lround((s_hi - s_lo) / ds)) + 1;
+  G.dx = dx, G.dy = ds, G.x0 = x_lo + 0.5 * dx, G.y0 = s_lo;
+  G.p.assign(static_cast<std::size_t>(G.nx * G.ny), 0.0);
+  double sum = 0;
+  for (const StripOut& S : P.strips) {
+    const int j = static_cast<int>(std::lround((S.s - s_lo) / ds));
+    for (int i = 0; i < G.nx; ++i) {
+      const double t = (G.x0 + i * dx - S.c) / S.a;
+      if (std::fabs(t) >= 1) continue;
+      const double p = S.q * std::sqrt(1 - t * t);
+      G.p[static_cast<std::size_t>(i + G.nx * j)] = p;
+      sum += p * dx * ds;
+    }
+  }
+  if (sum > 0)
+    for (double& p : G.p) p *= P.N / sum;
+  return G;
+}
+
+}  // namespace
+
+bool grid_subsurface_of(const RcfOptions& o, const PatchResult& patch, double f, SubsurfacePeaks& out) {
+  if (patch.plastic_area > 0 || !(f >= 0)) return false;  // elastic stresses of a yielded patch: not computed
+  GridLoad G = patch_pressure(patch);
+  if (G.p.empty()) return false;
+  G.nu = o.nu;
+  if (f > 0) {
+    // Full slip f p on the rail, against the force on the wheel (along x without one).
+    const double F = std::hypot(patch.t.Fx, patch.t.Fy);
+    const double ux = o.actual && F > 0 ? -patch.t.Fx / F : 1.0, uy = o.actual && F > 0 ? -patch.t.Fy / F : 0.0;
+    G.qx.resize(G.p.size()), G.qy.resize(G.p.size());
+    for (std::size_t e = 0; e < G.p.size(); ++e) G.qx[e] = f * ux * G.p[e], G.qy[e] = f * uy * G.p[e];
+  }
+  // The CSV and JSON records of a patch are formatted one after the other: search once.
+  struct Memo { GridLoad G; SubsurfacePeaks P; bool used = false; };
+  static thread_local Memo memo[4];
+  static thread_local int next = 0;
+  auto same = [](const GridLoad& a, const GridLoad& b) {
+    return a.nx == b.nx && a.ny == b.ny && a.dx == b.dx && a.dy == b.dy && a.x0 == b.x0 && a.y0 == b.y0 &&
+           a.nu == b.nu && a.p == b.p && a.qx == b.qx && a.qy == b.qy;
+  };
+  for (const Memo& m : memo)
+    if (m.used && same(m.G, G)) return out = m.P, true;
+  Memo& m = memo[next];
+  next = (next + 1) % 4;
+  m.P = grid_subsurface_peaks(G);
+  m.G = std::move(G), m.used = true;
+  out = m.P;
+  return true;
+}
+
 }  // namespace mh

@@ -23,10 +23,22 @@ namespace mh {
 // records of a contact (formatted one after the other) search once.
 SubsurfacePeaks subsurface_of(const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
                               double f);
+// With "subsurface": {"grid": true}, the stresses below a grid patch from its own element pressure
+// (half-space: PatchResult::p; strips: their semi-ellipses laid on a grid of the strip width) with
+// full-slip traction f p (as for the ellipse) on the rail along the contact's own force (-F/|F|, F
+// on the wheel; along x without one): the per-element traction is not kept in the result.
+// False (P untouched) for a patch with elements at the plastic cap, or without its pressure.
+bool grid_subsurface_of(const RcfOptions& o, const PatchResult& patch, double f, SubsurfacePeaks& P);
+// `patch`: the row's grid patch, or null (an ellipse row). sub_source says which load the stresses
+// are of: "hertz_ellipse" (the elastic Hertz ellipse of N) or "grid_patch" (the patch's own pressure).
 template <class Sink>
 void subsurface_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
-                       double f) {
-  const SubsurfacePeaks P = std::isfinite(f) ? subsurface_of(o, N, a_el, b_el, t, f) : SubsurfacePeaks{};
+                       double f, const PatchResult* patch = nullptr) {
+  SubsurfacePeaks P;
+  const char* source = nullptr;
+  if (std::isfinite(f) && patch && o.subsurface_grid && grid_subsurface_of(o, *patch, f, P)) source = "grid_patch";
+  else if (std::isfinite(f) && (P = subsurface_of(o, N, a_el, b_el, t, f), std::isfinite(P.vm_max))) source = "hertz_ellipse";
+  k.text("sub_source", source);
   k.number("sub_vm_max_MPa", P.vm_max / units::MPa);
   k.number("sub_vm_depth_mm", P.vm_z * units::per_mm);
   k.number("sub_tau_max_MPa", P.tau_max / units::MPa);
@@ -40,7 +52,8 @@ void subsurface_fields(Sink& k, const RcfOptions& o, double N, double a_el, doub
 // The traction coefficient is the user's f, or with friction given the contact's own |F|/N
 // (RcfOptions::traction; empty where its tangential problem is unsolved).
 template <class Sink>
-void rcf_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t) {
+void rcf_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
+                const PatchResult* patch = nullptr) {
   const double f = o.traction(N, t.Fx, t.Fy, t.solved);
   const RcfPoint p = rcf_point(f, o.k, N, a_el, b_el, o.nu);
   k.number("traction_coefficient", f);
@@ -50,7 +63,7 @@ void rcf_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el
   k.number("shakedown_limit_p0_over_k", p.shakedown_limit);
   k.text("shakedown_regime", std::isfinite(p.p0_el_over_k) ? to_string(p.regime) : nullptr);
   k.number("FI_surf_el", p.fi_surf_el);
-  if (o.subsurface) subsurface_fields(k, o, N, a_el, b_el, t, f);
+  if (o.subsurface) subsurface_fields(k, o, N, a_el, b_el, t, f, patch);
 }
 // The worst contact's RCF indicators in cases.csv and the case record (docs/outputs.md "RCF
 // columns"), after the band columns: the contact (ellipse or patch number, by the row's method)

@@ -71,6 +71,30 @@ PY
 # results.json echoes the inputs (the distribution, the constants) and carries the same keys.
 grep -q '"tY_distribution"' "$tmp/f/results.json"
 grep -q '"D_burstow_per_axle"' "$tmp/f/results.json"
+# The damage and wear weighted by the t_Y distribution N(3 mm, 2 mm) in the run's summary
+# (results.json and run.json "rcf_tY_weighted"), against the trapezoid weights computed here from
+# cases.csv: node i stands for the interval between the midpoints to its neighbours.
+"$py" - "$tmp/f" <<'PY'
+import csv, json, math, sys
+d = sys.argv[1]
+C = [c for c in csv.DictReader(open(d + "/cases.csv")) if c["D_burstow_per_axle"] != ""]
+t = [float(c["tY_mm"]) for c in C]
+assert t == sorted(t) and len(t) >= 3, t
+w = []
+for i in range(len(t)):
+    lo = (t[i - 1] + t[i]) / 2 if i > 0 else t[i]
+    hi = (t[i] + t[i + 1]) / 2 if i + 1 < len(t) else t[i]
+    w.append(math.exp(-0.5 * ((t[i] - 3) / 2) ** 2) * (hi - lo))
+D = sum(wi * float(c["D_burstow_per_axle"]) for wi, c in zip(w, C)) / sum(w)
+W = sum(wi * float(c["wear_ug_per_m"]) for wi, c in zip(w, C)) / sum(w)
+for name in ("results.json", "run.json"):
+    s = json.load(open(d + "/" + name))["summary"]["rcf_tY_weighted"]
+    assert len(s) == 1 and s[0]["Q_kN"] == 100 and s[0]["cases"] == len(C), s
+    assert abs(s[0]["D_burstow_per_axle"] - D) <= 1e-6 * D, (name, s[0], D)
+    assert abs(s[0]["wear_ug_per_m"] - W) <= 1e-6 * W, (name, s[0], W)
+    assert s[0]["tY_mean_mm"] == 3 and s[0]["tY_sd_mm"] == 2 and s[0]["tY_from_mm"] == t[0] and s[0]["tY_to_mm"] == t[-1], s
+print(f"rcf_damage: t_Y-weighted damage {D:.6g} per axle, wear {W:.6g} ug/m in the summary")
+PY
 # The damage weighted by the t_Y distribution (scripts/plot_rcf.py), when matplotlib is present.
 if "$py" -c "import matplotlib" 2>/dev/null; then
   MPLBACKEND=Agg "$py" "$src/scripts/plot_rcf.py" "$tmp/f" -o "$tmp/rcf.png" > "$tmp/plot.txt"
@@ -83,12 +107,13 @@ base '{"shear_yield_MPa": 300, "subsurface": {"dang_van_c": 0.3}}' "$fric" | sed
 "$py" - "$tmp/s" <<'PY'
 import csv, math, sys
 E = list(csv.DictReader(open(sys.argv[1] + "/ellipses.csv")))
-cols = ["sub_vm_max_MPa", "sub_vm_depth_mm", "sub_tau_max_MPa", "sub_tau_depth_mm", "sub_tau_orth_amp_MPa",
+cols = ["sub_source", "sub_vm_max_MPa", "sub_vm_depth_mm", "sub_tau_max_MPa", "sub_tau_depth_mm", "sub_tau_orth_amp_MPa",
         "sub_tau_orth_depth_mm", "sub_tau_eq_amp_MPa", "sub_sigma_h_MPa", "FI_sub_MPa"]
 h = list(E[0])
 i = h.index("FI_surf_el")
 assert h[i + 1:i + 1 + len(cols)] == cols, h[i + 1:i + 10]
 for e in E:
+    assert e["sub_source"] == "hertz_ellipse", e["sub_source"]
     p0 = 300 * float(e["p0_el_over_k"])
     vm, tau = float(e["sub_vm_max_MPa"]), float(e["sub_tau_max_MPa"])
     # Any stress state: τ_max ≤ σ_vM/√3 ≤ (2/√3) τ_max; a Hertz contact's peaks 0.55–0.75 p0 (von Mises)
@@ -97,6 +122,23 @@ for e in E:
     fi = float(e["sub_tau_eq_amp_MPa"]) + 0.3 * float(e["sub_sigma_h_MPa"])
     assert abs(float(e["FI_sub_MPa"]) - fi) < 1e-6 * abs(fi) + 1e-9, e
 print("rcf_damage: subsurface columns present and consistent")
+PY
+# Below a grid patch's own pressure ("grid": true): a half-space patch (882 elements, about 1 s),
+# without friction (then only this option keeps the patch's pressure for the columns: broken once,
+# not keeping it, the row fell back to its Hertz ellipse).
+base '{"traction_coefficient": 0.3, "shear_yield_MPa": 300, "subsurface": {"grid": true}}' "\"method\": \"half-space\"," |
+  sed 's/"tY_mm": \[0, 2, 4, 6, 7, 8\], "Q_kN": 100/"tY_mm": [4], "Q_kN": 20/' > "$tmp/g.json"
+"$bin" run "$tmp/g.json" -o "$tmp/g" -q --format csv
+"$py" - "$tmp/g" <<'PY'
+import csv, math, sys
+P = list(csv.DictReader(open(sys.argv[1] + "/patches.csv")))
+assert len(P) == 1 and P[0]["sub_source"] == "grid_patch", [p["sub_source"] for p in P]
+p = P[0]
+vm, tau, pmax = float(p["sub_vm_max_MPa"]), float(p["sub_tau_max_MPa"]), float(p["pmax_MPa"])
+assert tau <= vm / math.sqrt(3) * (1 + 1e-9) and vm / math.sqrt(3) <= 2 / math.sqrt(3) * tau * (1 + 1e-9), p
+assert 0.5 * pmax < vm < 0.8 * pmax, (vm, pmax)
+assert float(p["sub_vm_depth_mm"]) >= float(p["element_mm"]), p  # searched from one element deep
+print("rcf_damage: a grid patch's subsurface columns from its own pressure")
 PY
 # Contradicting inputs: exit code 2, the JSON path named.
 expect_error() {  # $1: file, $2: the path the message must name

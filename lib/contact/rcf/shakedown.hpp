@@ -33,6 +33,10 @@ struct RcfOptions {
   /// full-slip traction f (subsurface.hpp; about 0.5 s per contact), in the rail (Poisson's ratio
   /// nu, the rail's); dang_van_c [-] the Dang Van parameter of FI_sub (NaN: no FI_sub column value).
   bool subsurface = false;
+  /// "rcf": {"subsurface": {"grid": true}}: a grid patch's stresses from its own element
+  /// pressure (grid_subsurface.hpp; seconds per patch) instead of its elastic Hertz ellipse; never
+  /// for a patch with elements at the plastic cap (docs/outputs.md "Subsurface columns").
+  bool subsurface_grid = false;
   double nu = 0.28;
   double dang_van_c = NAN;
   bool enabled() const { return std::isfinite(f) || actual; }
