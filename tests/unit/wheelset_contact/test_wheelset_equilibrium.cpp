@@ -72,7 +72,7 @@ TEST_CASE("wheelset: the vertical equilibrium to 1e-5 Q against the same steps t
   // Two balances within 1e-5 Q and 1e-10 Q of the load: Q_n = Σ N cos γ differs by at most
   // 1e-5 Q / (1 + dFz_creep/dQ_n) ≈ 1e-5 Q on these steps, a contact's N by that over cos γ
   // (γ ≤ 70°: ×3); the forces on the wheel by the same order. Bounds in newtons at Q = 50 kN.
-  INFO("largest |dN| " << worst_N << " N, |dF| " << worst_F << " N");
+  WARN("wheelset 1e-5 Q against 1e-10 Q: largest |dN| " << worst_N << " N, |dF| " << worst_F << " N");
   CHECK(worst_N <= 1.5);
   CHECK(worst_F <= 1.5);
 }
