@@ -72,7 +72,8 @@ struct FastsimGrid {
 ///   dF/dN = F/N − (ξ ∂F/∂ξ + η ∂F/∂η) / (3N),
 /// the bracket the derivative of F(λξ, λη, φ) in λ at λ = 1, marched beside the tractions
 /// (exact for the discrete march: adhesion is linear in the gradients, slip projects onto the
-/// bound, dp = (B/|p|) (dp − p (p·dp)/|p|²)).
+/// bound, dp = (B/|p|) (dp − p (p·dp)/|p|²)). With o.blend the flexibilities move with the
+/// creepages, which the derivative does not follow: then an approximation.
 TangentialResult fastsim(const Creepages& cr, double a, double b, double N, double mu, double G,
                          double nu, const FastsimOptions& o = {}, FastsimGrid* grid = nullptr);
 
