@@ -460,8 +460,8 @@ typedef struct mhc_wheelset_options {
   size_t struct_size;        /**< sizeof(mhc_wheelset_options), set by mhc_wheelset_options_init */
   double mu;                 /**< Coulomb friction for the creep forces (FASTSIM on each ellipse);
                                   NaN (default): normal contact only */
-  int32_t fastsim_nx;        /**< FASTSIM cells along x per strip (default 32) */
-  int32_t fastsim_ny;        /**< FASTSIM strips across (default 32) */
+  int32_t fastsim_nx;        /**< FASTSIM cells along x per strip (default 16: the wheelset call's, docs/performance.md) */
+  int32_t fastsim_ny;        /**< FASTSIM strips across (default 16) */
 } mhc_wheelset_options;
 
 typedef enum mhc_vertical {

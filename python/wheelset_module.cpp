@@ -112,8 +112,8 @@ void bind_wheelset(py::module_& m, void (*check)(mhc_error)) {
              check(mhc_wheelset_create(pair_of(left), pair_of(right), &o, &w->w));
              return w;
            }),
-           py::arg("left"), py::arg("right"), py::arg("mu") = NAN, py::arg("fastsim_nx") = 32,
-           py::arg("fastsim_ny") = 32)
+           py::arg("left"), py::arg("right"), py::arg("mu") = NAN, py::arg("fastsim_nx") = 16,
+           py::arg("fastsim_ny") = 16)
       .def("_step_many",
            [check](const Wheelset& w, const std::map<std::string, Arr>& in, int vertical, bool solve_roll,
                    bool derivatives, int threads) {

@@ -194,9 +194,7 @@ void mhc_wheelset_options_init(mhc_wheelset_options* o) {
   std::memset(static_cast<void*>(o), 0, sizeof *o);
   o->struct_size = sizeof *o;
   o->mu = std::numeric_limits<double>::quiet_NaN();
-  const mh::FastsimOptions f;
-  o->fastsim_nx = f.nx;
-  o->fastsim_ny = f.ny;
+  o->fastsim_nx = o->fastsim_ny = mh::kWheelsetFastsimCells;  // the wheelset call's default (wheelset_contact.hpp)
 }
 
 mhc_error mhc_wheelset_create(const mhc_pair* left, const mhc_pair* right, const mhc_wheelset_options* opt,
@@ -241,14 +239,15 @@ mhc_error mhc_wheelset_create(const mhc_pair* left, const mhc_pair* right, const
                                           ": a friction coefficient must be in (0, 2], or NaN (no creep forces)");
       method.tangential.mu = o.mu;
     }
-    if (opt && opt->struct_size > kOptionsMinSize) {
-      if (o.fastsim_nx < 2 || o.fastsim_nx > mh::kFastsimMaxN || o.fastsim_ny < 2 || o.fastsim_ny > mh::kFastsimMaxN)
-        return fail(MHC_ERR_ARGUMENT, "options.fastsim_nx, fastsim_ny = " + std::to_string(o.fastsim_nx) + ", " +
-                                          std::to_string(o.fastsim_ny) + ": must be 2 to " +
-                                          std::to_string(mh::kFastsimMaxN));
-      method.tangential.fastsim.nx = o.fastsim_nx;
-      method.tangential.fastsim.ny = o.fastsim_ny;
-    }
+    // The wheelset call's tangential defaults (wheelset_contact.hpp), the grid as the options say
+    // (an older caller's, without the fields: the default of mhc_wheelset_options_init).
+    method = mh::wheelset_method_options(method);
+    if (o.fastsim_nx < 2 || o.fastsim_nx > mh::kFastsimMaxN || o.fastsim_ny < 2 || o.fastsim_ny > mh::kFastsimMaxN)
+      return fail(MHC_ERR_ARGUMENT, "options.fastsim_nx, fastsim_ny = " + std::to_string(o.fastsim_nx) + ", " +
+                                        std::to_string(o.fastsim_ny) + ": must be 2 to " +
+                                        std::to_string(mh::kFastsimMaxN));
+    method.tangential.fastsim.nx = o.fastsim_nx;
+    method.tangential.fastsim.ny = o.fastsim_ny;
     std::vector<std::string> warnings = left->warnings;
     warnings.insert(warnings.end(), right->warnings.begin(), right->warnings.end());
     auto w = std::make_unique<mhc_wheelset>();

@@ -96,6 +96,34 @@ void tangential_step(CaseResult& r, const Material& mat, double tY, const Method
   solve_tangential_strips(r, mat, opt.tangential.mu);
 }
 
+// The slope df/dQ_n of the vertical equilibrium's f(Q_n) = Q_n + Fz_creep(Q_n) − Q (below) at a
+// solved row r (f0 = f there). Multi-Hertzian rows whose loaded ellipses are elastic: each
+// ellipse's N_i follows the rigid approach δz (h_i = (δz − g_i) cos γ_i, eq. 11:
+// dN_i/dδz = (dN/dh0)_i cos γ_i, dQ_n/dδz = Σ (dN/dh0)_i cos² γ_i), its creep force's share of
+// Fz_creep = Σ Fy_i sin γ_i by FASTSIM's load slope (fastsim.hpp, load_slope: Kalker's
+// similarity, marched where |sin γ_i| ≥ kLoadSlopeSinGamma) or else by the scaling below; exact
+// for a fixed set of loaded ellipses where the load slope is marched. Otherwise (grid patches,
+// plastic ellipses) from the scaling of the creep forces with the load, Fz_creep ∝ Q_n^p: p = 1 in
+// full slip (F = μN), 2/3 in the linear limit (F ∝ c² ∝ N^(2/3), Hertz), in between by the
+// saturation |F|/(μN).
+double equilibrium_slope(const CaseResult& r, double Q, double f0, double mu) {
+  auto p_of = [](double sat) { return (2.0 + std::clamp(sat, 0.0, 1.0)) / 3.0; };
+  double dQn = 0, dFz = 0;
+  bool ellipses = r.patches.empty() && !r.loaded.empty();
+  for (const LoadedEllipse& L : r.loaded) {
+    if (!(L.s.N > 0)) continue;
+    if (L.s.plastic || !(L.s.dN_dh0 > 0) || !L.t.solved) ellipses = false;
+    const double dN = L.s.dN_dh0 * L.cos_gamma;  // dN_i/dδz
+    const double dFy_dN = std::isfinite(L.t.dFy_dN) ? L.t.dFy_dN
+                                                    : p_of(std::hypot(L.t.Fx, L.t.Fy) / (mu * L.s.N)) * L.t.Fy / L.s.N;
+    dQn += dN * L.cos_gamma;
+    dFz += dFy_dN * L.sin_gamma * dN;
+  }
+  if (ellipses && dQn > 0 && std::isfinite(dFz)) return 1.0 + dFz / dQn;
+  const double sat = std::isfinite(r.tangential.F_over_muN) ? r.tangential.F_over_muN : 1.0;
+  return 1.0 + p_of(sat) * f0 / Q;
+}
+
 // The vertical equilibrium with the creep forces (docs/tangential.md, "Vertical equilibrium"):
 //   Q = Σ N_i cos γ_i + Σ Fy_i sin γ_i,
 // Fy_i the lateral creep force ON THE WHEEL along the contact plane's ŝ = (0, cos γ, sin γ)
@@ -131,16 +159,13 @@ bool creep_equilibrium(CaseResult& r, double Q, const TangentialOptions& t, Reso
     r.message = "no vertical equilibrium with the creep forces (Q = sum N cos(gamma) + Fy sin(gamma)): " + why;
     return resolved;
   };
-  const double f_abs = 1e-7 * Q;  // 1 mN at 10 kN; the normal solvers' residuals are below
+  const double f_abs = t.equilibrium_tolerance * Q;  // 1e-7: 1 mN at 10 kN; the normal solvers' residuals are below
   double x0 = Q, f0 = f(Q);
   double x1 = x0, f1 = f0;
   if (std::fabs(f0) > f_abs) {
-    // Secant steps from Q. The first slope 1 + dFz_creep/dQ_n from the scaling of the creep forces
-    // with the load, Fz_creep ∝ Q_n^p: p = 1 in full slip (F = μN), 2/3 in the linear limit
-    // (F ∝ c² ∝ N^(2/3), Hertz), in between by the saturation |F|/(μN); then the secant's own.
+    // Secant steps from Q: the first slope equilibrium_slope's (above), then the secant's own.
     // They stop at the first sign change short of the tolerance (TOMS 748 below closes the root).
-    const double sat = std::isfinite(r.tangential.F_over_muN) ? std::clamp(r.tangential.F_over_muN, 0.0, 1.0) : 1.0;
-    double slope = std::clamp(1.0 + (2.0 + sat) / 3.0 * f0 / Q, 0.5, 2.0);
+    double slope = std::clamp(equilibrium_slope(r, Q, f0, t.mu), 0.5, 2.0);
     for (int k = 0; k < 8 && !failed && std::fabs(f1) > f_abs && (k == 0 || (f0 < 0) == (f1 < 0)); ++k) {
       if (k > 0) {
         slope = (f1 - f0) / (x1 - x0);
@@ -163,7 +188,7 @@ bool creep_equilibrium(CaseResult& r, double Q, const TangentialOptions& t, Reso
       const bool up = x0 < x1;
       const RootResult root = bracketed_root(f, up ? x0 : x1, up ? x1 : x0, up ? f0 : f1, up ? f1 : f0, tol);
       if (failed) return fail(r.message.empty() ? std::string("a solve on the way failed") : r.message);
-      if (!(std::fabs(root.f) <= 1e-5 * Q)) return fail("the root finder stopped at a residual of " + std::to_string(root.f / Q));
+      if (!(std::fabs(root.f) <= std::max(1e-5, 10 * t.equilibrium_tolerance) * Q)) return fail("the root finder stopped at a residual of " + std::to_string(root.f / Q));
       f(root.x);
     }
   }
@@ -187,7 +212,12 @@ std::vector<Warning> auto_warnings(const CaseResult& r) {
 // (or null).
 bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const Material& mat, double tY, double Q,
                                  const MethodOptions& opt, GridWorkspace* ws) {
-  tangential_step(r, mat, tY, opt);
+  // At Q with FASTSIM's load slope when the equilibrium will aim with it (equilibrium_slope).
+  TangentialOptions first = opt.tangential;
+  first.fastsim.load_slope = first.vertical_equilibrium && r.method == Method::MultiHertzian;
+  solve_tangential(r, mat, tY, first);
+  solve_tangential_patches(r, mat, opt.tangential.mu);
+  solve_tangential_strips(r, mat, opt.tangential.mu);
 
   const std::vector<Warning> handed = auto_warnings(r);
   const Method m = r.method;

@@ -44,6 +44,26 @@
 
 namespace mh {
 
+/// The wheelset call's defaults for the creep forces, apart from the single-pair call's
+/// (docs/performance.md "The wheelset call"):
+///  - FASTSIM on 16 × 16 cells (the single pair: 32 × 32): it meets every accuracy target of
+///    issue 33 against the independent references (docs/tangential.md "Grid of FASTSIM": Kalker's
+///    linear theory within 0.24 %, CONTACT's exact solution at medians 0–1.9 % and p95 ≤ 5.9 %,
+///    the same as 32 × 32 since FASTSIM's own model error dominates its grid error of ≤ 1.7 % μN)
+///    at a third of the cost;
+///  - the vertical equilibrium to 1e-5 Q (the single pair: 1e-7 Q): 0.5 N at 50 kN, a tenth
+///    of what the 16 × 16 grid itself moves the creep forces' vertical share; one FASTSIM solve
+///    less per wheel on most steps.
+constexpr int kWheelsetFastsimCells = 16;
+constexpr double kWheelsetEquilibriumTolerance = 1e-5;
+
+/// m with the wheelset call's defaults above in its tangential options.
+inline MethodOptions wheelset_method_options(MethodOptions m = {}) {
+  m.tangential.fastsim.nx = m.tangential.fastsim.ny = kWheelsetFastsimCells;
+  m.tangential.equilibrium_tolerance = kWheelsetEquilibriumTolerance;
+  return m;
+}
+
 /// What a wheelset is built from. Profiles in their canonical frames (y towards the field side,
 /// z up; rails with their inclination applied); the left ones may be copies of the right ones.
 struct WheelsetSetup {
@@ -54,8 +74,9 @@ struct WheelsetSetup {
   double nominal_radius_left = 0.460, nominal_radius_right = 0.460;  ///< [m] R0 at each taping line
   Material material;
   /// Method and its options; tangential.mu finite: the creep forces are solved (FASTSIM on each
-  /// multi-Hertzian ellipse), tangential.kin is replaced by each step's velocities.
-  MethodOptions method;
+  /// multi-Hertzian ellipse), tangential.kin is replaced by each step's velocities. Default: the
+  /// wheelset call's (wheelset_method_options).
+  MethodOptions method = wheelset_method_options();
   GeometryOptions geometry;  ///< the t_Y range of the tables covers |y| up to its bounds
 };
 

@@ -42,8 +42,13 @@ void blend(FastsimFlexibilities& L, const Creepages& cr, double a, double b, dou
 
 }  // namespace
 
-TangentialResult fastsim(const Creepages& cr, double a, double b, double N, double mu, double G,
-                         double nu, const FastsimOptions& o, FastsimGrid* grid) {
+namespace {
+
+// The march (fastsim() below); kSlope: also the derivative of the tractions in λ, the creepages
+// ξ, η scaled by λ (fastsim.hpp, load_slope), beside the same arithmetic.
+template <bool kSlope>
+TangentialResult march(const Creepages& cr, double a, double b, double N, double mu, double G, double nu,
+                       const FastsimOptions& o, FastsimGrid* grid) {
   assert(a > 0 && b > 0 && N >= 0 && mu >= 0 && G > 0 && o.nx >= 1 && o.ny >= 1 && o.nx <= kFastsimMaxN);
   const int nx = o.nx, ny = o.ny;
   FastsimFlexibilities L = fastsim_flexibilities(a, b, G, nu);
@@ -62,10 +67,12 @@ TangentialResult fastsim(const Creepages& cr, double a, double b, double N, doub
   // every strip: tabulated once (on the stack: no allocation).
   const double dy = 2.0 * b / ny, ds = 2.0 / nx;
   double f[kFastsimMaxN];
+  double rf[kSlope ? kFastsimMaxN : 1];  // kSlope: 1/f(s_k), the bound's reciprocal without a division per cell
   double Rs = 0;
   for (int k = 0; k < nx; ++k) {
     const double s = 1.0 - (k + 0.5) * ds, u = 1.0 - s * s;
     f[k] = ell ? std::sqrt(u) : u;
+    if (kSlope) rf[k] = 1.0 / f[k];
     Rs += ds * f[k];
   }
   double Ry = 0;
@@ -87,10 +94,11 @@ TangentialResult fastsim(const Creepages& cr, double a, double b, double N, doub
   // kLanes. Lanes past the last strip run with a = 0 and are not summed.
   constexpr int kLanes = 4;
   const double gx = cr.xi / L.L1, gy = cr.eta / L.L2, gs = cr.phi / L.L3;
-  double Fx = 0, Fy = 0, Mz = 0, n_adh = 0, n_all = 0;
+  double Fx = 0, Fy = 0, Mz = 0, n_adh = 0, n_all = 0, dFx = 0, dFy = 0;
   for (int j0 = 0; j0 < ny; j0 += kLanes) {
     double aj[kLanes], h[kLanes], y[kLanes], brow[kLanes], gxy[kLanes], pnr[kLanes];
     double px[kLanes], py[kLanes], x[kLanes], rFx[kLanes], rFy[kLanes], rM[kLanes];
+    double dpx[kLanes], dpy[kLanes], rdFx[kLanes], rdFy[kLanes], rbrow[kLanes];  // kSlope: d/dλ
     int rA[kLanes];
     bool slip[kLanes];
     for (int l = 0; l < kLanes; ++l) {
@@ -106,12 +114,18 @@ TangentialResult fastsim(const Creepages& cr, double a, double b, double N, doub
       px[l] = py[l] = 0;
       x[l] = aj[l];
       rFx[l] = rFy[l] = rM[l] = 0;
+      dpx[l] = dpy[l] = rdFx[l] = rdFy[l] = 0;
+      rbrow[l] = brow[l] > 0 ? 1.0 / brow[l] : 0.0;
       rA[l] = 0;
     }
     for (int k = 0; k < nx; ++k) {
       const double fk = f[k], kc = k + 0.5;
       for (int l = 0; l < kLanes; ++l) {
         const double xn = aj[l] - kc * h[l];
+        if (kSlope) {
+          dpx[l] -= gx * (x[l] - xn);
+          dpy[l] -= gy * (x[l] - xn);
+        }
         px[l] -= gxy[l] * (x[l] - xn);
         py[l] -= gy * (x[l] - xn) + 0.5 * gs * (x[l] * x[l] - xn * xn);  // ∫_{xn}^{x} (η/L2 + φ x'/L3) dx'
         x[l] = xn;
@@ -121,8 +135,18 @@ TangentialResult fastsim(const Creepages& cr, double a, double b, double N, doub
         // Onto the bound, in the direction of the adhesion traction (Kalker 1982).
         if (sl) {
           const double scale = bound / std::sqrt(pt2);
+          if (kSlope) {  // the projection's derivative: scale (dp − p (p·dp)/|p|²), 1/|p| = scale/bound
+            const double ip = scale * rbrow[l] * rf[k];
+            const double pd = (px[l] * dpx[l] + py[l] * dpy[l]) * ip * ip;
+            dpx[l] = scale * (dpx[l] - px[l] * pd);
+            dpy[l] = scale * (dpy[l] - py[l] * pd);
+          }
           px[l] *= scale;
           py[l] *= scale;
+        }
+        if (kSlope) {
+          rdFx[l] += dpx[l];
+          rdFy[l] += dpy[l];
         }
         rA[l] += sl ? 0 : 1;
         slip[l] = sl;
@@ -147,6 +171,10 @@ TangentialResult fastsim(const Creepages& cr, double a, double b, double N, doub
       Fx += wA * rFx[l];
       Fy += wA * rFy[l];
       Mz += wA * rM[l];
+      if (kSlope) {
+        dFx += wA * rdFx[l];
+        dFy += wA * rdFy[l];
+      }
       n_adh += wA * rA[l];
       n_all += wA * nx;
     }
@@ -163,7 +191,19 @@ TangentialResult fastsim(const Creepages& cr, double a, double b, double N, doub
   r.Tgamma_spin = -Mz * cr.phi;
   r.iterations = 0;
   r.solved = true;
+  if (kSlope && N > 0) {
+    // Kalker's similarity (fastsim.hpp): dF/dN = F/N − (ξ ∂F/∂ξ + η ∂F/∂η)/(3N).
+    r.dFx_dN = (Fx - dFx / 3.0) / N;
+    r.dFy_dN = (Fy - dFy / 3.0) / N;
+  }
   return r;
+}
+
+}  // namespace
+
+TangentialResult fastsim(const Creepages& cr, double a, double b, double N, double mu, double G,
+                         double nu, const FastsimOptions& o, FastsimGrid* grid) {
+  return o.load_slope ? march<true>(cr, a, b, N, mu, G, nu, o, grid) : march<false>(cr, a, b, N, mu, G, nu, o, grid);
 }
 
 }  // namespace mh

@@ -41,6 +41,10 @@ struct FastsimOptions {
   /// into one at large creepage, as CONTACT 25.2 applies it when the creepages are given (module 3,
   /// F = 0). Off by default: Kalker's three flexibilities.
   bool blend = false;
+  /// Also the forces' derivative in the load at fixed creepages (TangentialResult::dFx_dN,
+  /// dFy_dN; fastsim() below): what the vertical equilibrium's first step aims with
+  /// (contact/solve.cpp). Off by default; the forces are the same bit for bit either way.
+  bool load_slope = false;
 };
 
 /// The flexibilities [m/Pa] of an ellipse (a along x, b across) of the material G, ν.
@@ -61,6 +65,15 @@ struct FastsimGrid {
 /// FASTSIM on the ellipse a × b [m] under the normal force N [N], friction μ, shear modulus G [Pa]
 /// and Poisson's ratio ν, for the creepages cr (tangential_types.hpp: convention and frame).
 /// Allocates nothing unless grid is given (then only while it grows).
+///
+/// With o.load_slope, dF/dN of the ellipse loaded as Hertz's (a, b ∝ N^(1/3) at a fixed a/b) at
+/// fixed creepages, by Kalker's similarity: FASTSIM's F/(μN) depends on ξ and η through
+/// G ab ξ/(μN) ∝ ξ N^(−1/3) and on φ through G (ab)^(3/2) φ/(μN), independent of N, so
+///   dF/dN = F/N − (ξ ∂F/∂ξ + η ∂F/∂η) / (3N),
+/// the bracket the derivative of F(λξ, λη, φ) in λ at λ = 1, marched beside the tractions
+/// (exact for the discrete march: adhesion is linear in the gradients, slip projects onto the
+/// bound, dp = (B/|p|) (dp − p (p·dp)/|p|²)). With o.blend the flexibilities move with the
+/// creepages, which the derivative does not follow: then an approximation.
 TangentialResult fastsim(const Creepages& cr, double a, double b, double N, double mu, double G,
                          double nu, const FastsimOptions& o = {}, FastsimGrid* grid = nullptr);
 

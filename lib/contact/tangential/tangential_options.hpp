@@ -34,6 +34,9 @@ struct TangentialOptions {
   /// (multi-Hertzian, half-space). false: Σ N_i cos γ_i = Q, the creep forces computed after
   /// (a caller balancing the load itself, e.g. with the wheelset's full equilibrium).
   bool vertical_equilibrium = true;
+  /// [-] The vertical equilibrium's tolerance, |Σ (N_i cos γ_i + Fy_i sin γ_i) − Q| ≤ it × Q
+  /// (default 1e-7: 1 mN at 10 kN; the wheelset call's default is its own, wheelset_contact.hpp).
+  double equilibrium_tolerance = 1e-7;
   bool enabled() const { return std::isfinite(mu); }
 };
 

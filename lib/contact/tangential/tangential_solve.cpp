@@ -43,7 +43,16 @@ void solve_tangential(CaseResult& r, const Material& mat, double tY, const Tange
     if (!(L.s.N > 0 && L.s.a > 0 && L.s.b > 0)) continue;
     // FASTSIM on the patch the normal law carries (the plastic patch when plastic; its traction
     // bound the elliptical one of that patch: docs/tangential.md, limits).
-    L.t = fastsim(L.t.c, L.s.a, L.s.b, L.s.N, opt.mu, G, nu, opt.fastsim);
+    // The load slope (fastsim.hpp) only where the creep force has a vertical share worth aiming
+    // the equilibrium with: |sin γ| ≥ kLoadSlopeSinGamma (the flange and its root; the tread's
+    // share is aimed from its saturation: contact/solve.cpp, equilibrium_slope).
+    if (opt.fastsim.load_slope && !(std::fabs(L.sin_gamma) >= kLoadSlopeSinGamma)) {
+      FastsimOptions o = opt.fastsim;
+      o.load_slope = false;
+      L.t = fastsim(L.t.c, L.s.a, L.s.b, L.s.N, opt.mu, G, nu, o);
+    } else {
+      L.t = fastsim(L.t.c, L.s.a, L.s.b, L.s.N, opt.mu, G, nu, opt.fastsim);
+    }
   }
   for (PatchResult& P : r.patches) {
     P.t = TangentialResult{};

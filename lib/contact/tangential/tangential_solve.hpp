@@ -14,6 +14,11 @@ namespace mh {
 /// 1/G = (1/G1 + 1/G2)/2, ν/G = (ν1/G1 + ν2/G2)/2).
 void combined_elastic(const Material& mat, double& G, double& nu);
 
+/// [-] |sin γ| from which an ellipse's FASTSIM marches its load slope when opt.fastsim.load_slope
+/// asks for it (γ ≥ 5.7°): below, its creep force's vertical share Fy sin γ is small enough to
+/// be aimed from its saturation (contact/solve.cpp, equilibrium_slope).
+constexpr double kLoadSlopeSinGamma = 0.1;
+
 /// Fill r's tangential results when opt.enabled() (nothing otherwise). t_Y [m]: the case's.
 void solve_tangential(CaseResult& r, const Material& mat, double tY, const TangentialOptions& opt);
 

@@ -31,6 +31,9 @@ struct TangentialResult {
   double Tgamma = 0;
   double Tgamma_spin = 0;           ///< [N] the spin term Mz φ (forces on the rail), reported apart
   int iterations = 0;               ///< solver iterations (0 for closed forms)
+  /// [-] dFx/dN, dFy/dN at fixed creepages, Hertz-loaded (FASTSIM with FastsimOptions::load_slope;
+  /// else NaN)
+  double dFx_dN = NAN, dFy_dN = NAN;
   bool solved = false;              ///< false: not asked (no friction given) or failed (see status)
 };
 
