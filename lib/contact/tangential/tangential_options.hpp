@@ -34,6 +34,10 @@ struct TangentialOptions {
   /// (multi-Hertzian, half-space). false: Σ N_i cos γ_i = Q, the creep forces computed after
   /// (a caller balancing the load itself, e.g. with the wheelset's full equilibrium).
   bool vertical_equilibrium = true;
+  /// Keep each contact's traction per element (CaseResult::ellipse_traction, PatchResult::traction;
+  /// contact/tangential/traction_grid.hpp) for the traction grid of `run --pressure-grid`. Default
+  /// false: nothing is kept and nothing allocated for it.
+  bool keep_traction = false;
   bool enabled() const { return std::isfinite(mu); }
 };
 
