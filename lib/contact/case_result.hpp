@@ -13,6 +13,7 @@
 #include "contact/ellipse/hertz_validity.hpp"
 #include "contact/judge/status.hpp"
 #include "contact/tangential/tangential_types.hpp"
+#include "contact/tangential/traction_grid.hpp"
 #include "geometry/contact_geometry.hpp"
 
 namespace mh {
@@ -105,6 +106,8 @@ struct PatchResult {
   /// The tangential problem of this patch (exact steady rolling on its pressure; solved false: not asked or failed).
   TangentialResult t;
   ContactDamage damage;     ///< damage and wear from t (contact/rcf/contact_damage.hpp, damage_step)
+  /// The tractions per element of t's solve (TangentialOptions::keep_traction only; empty otherwise).
+  PatchTraction traction;
 };
 
 /// The tangential problem summed over a case's contacts (docs/tangential.md). Forces ON THE RAIL,
@@ -149,6 +152,9 @@ struct CaseResult {
   double pmax_half_L = NAN, pmax_double_L = NAN, area_half_L = NAN, area_double_L = NAN;
   TangentialSums tangential;          ///< friction given: the creep forces (docs/tangential.md)
   CaseDamage damage;                  ///< friction given: Σ damage and wear (contact/rcf/contact_damage.hpp)
+  /// FASTSIM's cells of each loaded ellipse, in the order of `loaded` (TangentialOptions::keep_traction
+  /// only; empty otherwise, and an ellipse without a tangential solve has empty cells).
+  std::vector<EllipseTraction> ellipse_traction;
 };
 
 /// Reset r to a fresh CaseResult's values, its message and vectors keeping their capacity (the
@@ -167,6 +173,7 @@ inline void reset_case_result(CaseResult& r) {
   r.damage = CaseDamage{};
   r.loaded.clear();
   r.patches.clear();
+  r.ellipse_traction.clear();
 }
 
 }  // namespace mh

@@ -39,7 +39,7 @@ StripMethodOptions strip_options(const MethodOptions& opt) {
 // (solve_tangential_patch). The grid's pressures are scaled to carry the patch's N exactly (the
 // raster's quadrature error), so that in full sliding |F| = μN. A patch whose solve fails keeps
 // solved = false (the row then carries tangential_unsupported).
-void solve_tangential_strips(CaseResult& r, const Material& mat, double mu) {
+void solve_tangential_strips(CaseResult& r, const Material& mat, double mu, bool keep_traction) {
   if (r.method != Method::Strips || !r.tangential.asked || !(mu > 0)) return;
   PatchResult g;
   for (PatchResult& P : r.patches) {
@@ -78,7 +78,8 @@ void solve_tangential_strips(CaseResult& r, const Material& mat, double mu) {
     if (!(total > 0)) continue;
     for (double& p : g.p) p *= P.N / total;
     const Creepages c = P.t.c;
-    const HalfSpaceTangentialResult t = solve_tangential_patch(g, mat, c, mu);
+    // keep_traction: the tractions on this grid, with its pressure (traction_grid.hpp).
+    const HalfSpaceTangentialResult t = solve_tangential_patch(g, mat, c, mu, {}, keep_traction ? &P.traction : nullptr);
     if (t.status != TangentialStatus::Ok) continue;
     P.t = t.forces;
     P.t.c = c;
@@ -92,8 +93,8 @@ void solve_tangential_strips(CaseResult& r, const Material& mat, double mu) {
 // case sums.
 void tangential_step(CaseResult& r, const Material& mat, double tY, const MethodOptions& opt) {
   solve_tangential(r, mat, tY, opt.tangential);
-  solve_tangential_patches(r, mat, opt.tangential.mu);
-  solve_tangential_strips(r, mat, opt.tangential.mu);
+  solve_tangential_patches(r, mat, opt.tangential.mu, opt.tangential.keep_traction);
+  solve_tangential_strips(r, mat, opt.tangential.mu, opt.tangential.keep_traction);
 }
 
 // The slope df/dQ_n of the vertical equilibrium's f(Q_n) = Q_n + Fz_creep(Q_n) − Q (below) at a
@@ -216,8 +217,8 @@ bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const 
   TangentialOptions first = opt.tangential;
   first.fastsim.load_slope = first.vertical_equilibrium && r.method == Method::MultiHertzian;
   solve_tangential(r, mat, tY, first);
-  solve_tangential_patches(r, mat, opt.tangential.mu);
-  solve_tangential_strips(r, mat, opt.tangential.mu);
+  solve_tangential_patches(r, mat, opt.tangential.mu, opt.tangential.keep_traction);
+  solve_tangential_strips(r, mat, opt.tangential.mu, opt.tangential.keep_traction);
 
   const std::vector<Warning> handed = auto_warnings(r);
   const Method m = r.method;

@@ -54,7 +54,8 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
                      "use a single grid method or the multi-Hertzian method");
   const int np = opt.pressure_grid;
   check_pressure_cases(opt, shared.case_count());
-  check_pressure_grid(np, (end - first) * opt.pressure_cases.count_in(0, shared.case_count()), plastic, opt.force);
+  check_pressure_grid(np, (end - first) * opt.pressure_cases.count_in(0, shared.case_count()), plastic, opt.force,
+                      shared.tangential.enabled());
   RunDirectory rd(opt.out_dir);
   std::unique_ptr<OutputFile> fc, fe, fg, fpa, fp, fpp, fj;
   std::unique_ptr<JsonObjectStream> jw;
@@ -74,7 +75,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   }
   if (np) {
     fp = std::make_unique<OutputFile>(rd.path("pressure.csv"));
-    fp->stream() << "pair," << pressure_table_header(M, plastic);
+    fp->stream() << "pair," << pressure_table_header(M, plastic, shared.tangential.enabled());
   }
   if (opt.json) {
     fj = std::make_unique<OutputFile>(rd.path("results.json"));

@@ -211,12 +211,12 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   check_pressure_cases(opt, cf.case_count());
   check_pressure_grid(np, opt.pressure_cases.count_in(cf.case_count() * (opt.shard_index - 1) / opt.shard_count,
                                                       cf.case_count() * opt.shard_index / opt.shard_count),
-                      plastic, opt.force);
+                      plastic, opt.force, cf.tangential.enabled());
   if (!to_stdout) {
     rd = std::make_unique<RunDirectory>(opt.out_dir);
     if (np) {
       fp = std::make_unique<OutputFile>(rd->path("pressure.csv"));
-      fp->stream() << pressure_table_header(M, plastic);
+      fp->stream() << pressure_table_header(M, plastic, cf.tangential.enabled());
     }
     if (want_csv) {
       fc = std::make_unique<OutputFile>(rd->path("cases.csv"));

@@ -96,12 +96,13 @@ void check_pressure_cases(const RunOptions& opt, std::uint64_t cases) {
                          std::to_string(cases - 1) + ")");
 }
 
-void check_pressure_grid(int N, std::uint64_t cases, bool plastic, bool force) {
+void check_pressure_grid(int N, std::uint64_t cases, bool plastic, bool force, bool tangential) {
   if (N == 0) return;
   if (N < 2 || N > 1000)
     throw InputError("--pressure-grid", std::to_string(N), "must be between 2 and 1000 points per axis");
-  // A lower bound: one loaded ellipse per case, rows of about 52 bytes (64 plastic).
-  const double row = plastic ? 64 : 52;
+  // A lower bound: one loaded ellipse per case, rows of about 52 bytes (64 plastic), 36 more
+  // with the traction columns (friction given).
+  const double row = (plastic ? 64 : 52) + (tangential ? 36 : 0);
   const double bytes = static_cast<double>(cases) * N * N * row;
   if (bytes > kPressureLimitBytes && !force) {
     char buf[64];
@@ -378,6 +379,10 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   if (rcf.enabled()) rcf.k = rcf_shear_yield(cf.material, cf.rcf);
   rcf.nu = cf.material.nur();  // the subsurface stresses are the rail's
   const bool tang = cf.tangential.enabled();  // the tangential columns (docs/tangential.md)
+  // The cases whose pressure grid is written keep their tractions per element too (the traction
+  // columns of pressure.csv); every other case keeps nothing (TangentialOptions::keep_traction).
+  MethodOptions mo_grid = mo;
+  mo_grid.tangential.keep_traction = tang && np > 0;
   const std::uint64_t n = end - first;
   if (n == 0) return;
   const unsigned threads = std::max(1u, opt.threads ? opt.threads : std::thread::hardware_concurrency());
@@ -428,7 +433,8 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
         const CasePoint cp = cf.case_at(c0 + i);
         try {
           if (g_case_hook) g_case_hook(c0 + i);
-          CaseResult r = solve_contact(G, cf.material, cp.tY, cp.Q, mo);
+          const bool grid_case = np && opt.pressure_cases.contains(c0 + i);
+          CaseResult r = solve_contact(G, cf.material, cp.tY, cp.Q, grid_case ? mo_grid : mo);
           // The band compares like with like: solved again by the method that solved the row
           // (for `auto`, the L/2 surface must not hand a strip row back to the ellipses), and not
           // for a row `auto` kept multi-Hertzian (its tables are on the window fit, not on the
@@ -462,9 +468,9 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
             }
           }
           if (want_json) B.json.push_back(std::move(f.json));
-          if (np && opt.pressure_cases.contains(c0 + i)) {
-            if (grid_method) format_patch_pressure(c0 + i, r, f.pressure);
-            else format_pressure(c0 + i, r, plastic, np, f.pressure);
+          if (grid_case) {
+            if (grid_method) format_patch_pressure(c0 + i, r, f.pressure, tang);
+            else format_pressure(c0 + i, r, plastic, np, f.pressure, tang);
             append_prefixed(B.pressure, out.prefix, f.pressure);
           }
           if (out.strips) {

@@ -41,7 +41,8 @@ struct RunOptions {
   bool progress = false;        ///< progress display on `err` (the CLI sets it when err is a terminal)
   std::size_t chunk = 8192;     ///< cases solved per parallel batch (default 8192)
   /// N > 0: also write DIR/pressure.csv, the pressure of every loaded ellipse on an N × N grid
-  /// over its patch (x along the rolling direction, y lateral in the contact plane). Default 0.
+  /// over its patch (x along the rolling direction, y lateral in the contact plane), with friction
+  /// also the tangential traction there (docs/outputs.md "pressure.csv"). Default 0.
   int pressure_grid = 0;
   /// The cases (their `case` numbers; in a batch, per pair) whose pressure grid is written;
   /// default: every case (--pressure-cases).
@@ -77,7 +78,8 @@ constexpr double kPressureLimitBytes = 10e9;
 
 /// Refuse (InputError on --pressure-grid) a pressure grid of N×N points for `cases` cases whose
 /// estimated pressure.csv is larger than kPressureLimitBytes, unless `force`. Also checks 2 <= N <= 1000.
-void check_pressure_grid(int N, std::uint64_t cases, bool plastic, bool force);
+/// `tangential`: its rows carry the traction columns.
+void check_pressure_grid(int N, std::uint64_t cases, bool plastic, bool force, bool tangential = false);
 /// Refuse --pressure-cases without --pressure-grid, or naming a case beyond the `cases` of the
 /// case file (InputError on --pressure-cases).
 void check_pressure_cases(const RunOptions& opt, std::uint64_t cases);

@@ -132,10 +132,15 @@ void patch_fields(Sink& k, const PatchResult& P, bool plastic, const RcfOptions&
 // flattened above first yield by the yield law) and, in plastic mode, the elastic Hertz
 // pressure at the same load on the elastic patch (a_el, b_el).
 void format_pressure(std::uint64_t idx, const CaseResult& r, bool plastic, int N,
-                     std::string& s) {
+                     std::string& s, bool tangential) {
   s.clear();
-  for (const LoadedEllipse& L : r.loaded) {
+  for (std::size_t e = 0; e < r.loaded.size(); ++e) {
+    const LoadedEllipse& L = r.loaded[e];
     const double a = L.s.a, b = L.s.b;
+    // The traction columns: FASTSIM's cells of this ellipse, resampled at the grid points
+    // (traction_grid.hpp); empty cells where they were not kept or not solved.
+    const EllipseTraction* T = tangential && e < r.ellipse_traction.size() && L.t.solved &&
+                                       !r.ellipse_traction[e].empty() ? &r.ellipse_traction[e] : nullptr;
     const double p0_el = 1.5 * L.s.N / (units::pi * L.s.a_el * L.s.b_el);
     for (int i = 0; i < N; ++i) {
       const double x = -a + 2 * a * i / (N - 1);
@@ -152,6 +157,15 @@ void format_pressure(std::uint64_t idx, const CaseResult& r, bool plastic, int N
         if (plastic) {
           const double qe = 1 - (x * x) / (L.s.a_el * L.s.a_el) - (y * y) / (L.s.b_el * L.s.b_el);
           s += ','; num(s, (qe > 0 ? p0_el * std::sqrt(qe) : 0.0) / units::MPa);
+        }
+        if (T) {
+          // On the rail (the files' convention, docs/tangential.md): minus the traction on the wheel.
+          const TractionSample t = fastsim_traction_at(*T, a, b, L.t.mu, x, y);
+          s += ','; num(s, (0.0 - t.px) / units::MPa);  // 0 − p: no "-0"
+          s += ','; num(s, (0.0 - t.py) / units::MPa);
+          s += ','; s += t.slip ? '1' : '0';
+        } else if (tangential) {
+          s += ",,,";
         }
         s += '\n';
       }
@@ -361,21 +375,35 @@ void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
   }
 }
 
-void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& s) {
+void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& s, bool tangential) {
   s.clear();
   for (const PatchResult& P : r.patches) {
     const double c = std::cos(P.gamma);
-    for (int j = 0; j < P.ns; ++j)
-      for (int i = 0; i < P.nx; ++i) {
-        const double p = P.p[static_cast<std::size_t>(i + P.nx * j)];
+    // With the tractions kept: the elements of the grid they were solved on (the half-space:
+    // the normal solve's own; strips: the grid of the strips' pressure, traction_grid.hpp).
+    const PatchTraction* T = tangential && !P.traction.empty() && P.t.solved ? &P.traction : nullptr;
+    const int nx = T ? T->nx : P.nx, ns = T ? T->ns : P.ns;
+    const double dx = T ? T->dx : P.dx, ds = T ? T->ds : P.ds, x0 = T ? T->x0 : P.x0, s0 = T ? T->s0 : P.s0;
+    const std::vector<double>& pn = T ? T->pn : P.p;
+    for (int j = 0; j < ns; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const std::size_t k = static_cast<std::size_t>(i) + static_cast<std::size_t>(nx) * static_cast<std::size_t>(j);
+        const double p = pn[k];
         if (!(p > 0)) continue;
-        const double x = P.x0 + i * P.dx, sp = P.s0 + j * P.ds;
+        const double x = x0 + i * dx, sp = s0 + j * ds;
         append_number(s, static_cast<long long>(idx));
         s += ','; append_number(s, static_cast<long long>(P.patch));
         s += ','; num(s, x * units::per_mm);
         s += ','; num(s, sp * units::per_mm);
         s += ','; num(s, (P.y_r + sp * c) * units::per_mm);
         s += ','; num(s, p / units::MPa);
+        if (T) {  // on the rail: minus the traction on the wheel
+          s += ','; num(s, (0.0 - T->px[k]) / units::MPa);
+          s += ','; num(s, (0.0 - T->py[k]) / units::MPa);
+          s += ','; s += T->slip[k] ? '1' : '0';
+        } else if (tangential) {
+          s += ",,,";
+        }
         s += '\n';
       }
   }
@@ -413,11 +441,17 @@ std::string patches_csv_header(bool plastic, bool rcf, bool tangential, bool sub
 
 bool writes_ellipses(Method m) { return m == Method::MultiHertzian || m == Method::Auto; }
 bool writes_patches(Method m) { return m != Method::MultiHertzian; }
-std::string pressure_table_header(Method m, bool plastic) {
-  return m == Method::MultiHertzian ? pressure_csv_header(plastic) : patch_pressure_csv_header();
+std::string pressure_table_header(Method m, bool plastic, bool tangential) {
+  return m == Method::MultiHertzian ? pressure_csv_header(plastic, tangential) : patch_pressure_csv_header(tangential);
 }
 
-std::string patch_pressure_csv_header() { return "case,patch,x_mm,s_mm,y_rail_mm,p_MPa\n"; }
+namespace {
+const char* const kTractionCols = ",px_MPa,py_MPa,slip";  // docs/outputs.md "pressure.csv"
+}  // namespace
+
+std::string patch_pressure_csv_header(bool tangential) {
+  return std::string("case,patch,x_mm,s_mm,y_rail_mm,p_MPa") + (tangential ? kTractionCols : "") + "\n";
+}
 
 std::string cases_csv_header(bool tangential, bool rcf) {
   std::string s = "case,tY_mm,Q_kN,status,method,dz_virtual_mm,approach_mm,iterations,residual,n_contacts,Fz_kN,Fy_kN,Y_over_Q,"
@@ -434,8 +468,9 @@ std::string cases_csv_header(bool tangential, bool rcf) {
   return s + "\n";
 }
 
-std::string pressure_csv_header(bool plastic) {
-  return plastic ? "case,ellipse,x_mm,y_mm,p_MPa,p_elastic_MPa\n" : "case,ellipse,x_mm,y_mm,p_MPa\n";
+std::string pressure_csv_header(bool plastic, bool tangential) {
+  return std::string(plastic ? "case,ellipse,x_mm,y_mm,p_MPa,p_elastic_MPa" : "case,ellipse,x_mm,y_mm,p_MPa") +
+         (tangential ? kTractionCols : "") + "\n";
 }
 
 std::string ellipses_csv_header(bool plastic, bool rcf, bool tangential, bool subsurface) {

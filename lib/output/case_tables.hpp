@@ -28,9 +28,11 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
                  const char* status_text = nullptr, const RcfOptions& rcf = {}, bool tangential = false);
 
 /// The pressure of each loaded ellipse of `r` on an N × N grid over its patch (method.md §5),
-/// into `s` (pressure.csv rows).
+/// into `s` (pressure.csv rows). `tangential` (friction given): the rows end with the traction
+/// columns px_MPa, py_MPa, slip (docs/outputs.md), from r.ellipse_traction (empty cells where it
+/// was not kept: TangentialOptions::keep_traction).
 void format_pressure(std::uint64_t idx, const CaseResult& r, bool plastic, int N,
-                     std::string& s);
+                     std::string& s, bool tangential = false);
 
 /// patches.csv rows of a grid method's case (one row per contact patch), into `s`.
 /// With rcf.enabled() (k resolved: rcf_shear_yield) both tables end with the RCF columns
@@ -40,8 +42,9 @@ void format_pressure(std::uint64_t idx, const CaseResult& r, bool plastic, int N
 void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, bool plastic, std::string& s,
                     const RcfOptions& rcf = {}, bool tangential = false);
 /// The element pressures of every patch of a grid method's case (elements in contact only), into
-/// `s` (pressure.csv rows of the grid methods).
-void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& s);
+/// `s` (pressure.csv rows of the grid methods). `tangential`: with the traction columns, from
+/// each PatchResult::traction where kept (then on its grid: strips' rows exist only there).
+void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& s, bool tangential = false);
 
 /// strips.csv rows of a strip-method case (one row per loaded strip), into `s`.
 void format_strips(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, std::string& s);
@@ -54,8 +57,8 @@ std::string patches_csv_header(bool plastic, bool rcf = false, bool tangential =
 bool writes_ellipses(Method m);
 bool writes_patches(Method m);
 /// The header of pressure.csv of a method ("auto" writes none).
-std::string pressure_table_header(Method m, bool plastic);
-std::string patch_pressure_csv_header();
+std::string pressure_table_header(Method m, bool plastic, bool tangential = false);
+std::string patch_pressure_csv_header(bool tangential = false);
 std::string cases_csv_header(bool tangential = false, bool rcf = false);
 std::string ellipses_csv_header(bool plastic, bool rcf = false, bool tangential = false, bool subsurface = false);
 
@@ -67,6 +70,6 @@ std::string ellipses_csv_header(bool plastic, bool rcf = false, bool tangential 
 std::string geometry_csv_header();
 void format_geometry(double tY_mm, const std::vector<CandidateEllipse>& cands, bool want_csv, bool want_json,
                      std::string& csv, std::vector<std::string>* json);
-std::string pressure_csv_header(bool plastic);
+std::string pressure_csv_header(bool plastic, bool tangential = false);
 
 }  // namespace mh

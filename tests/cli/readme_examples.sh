@@ -171,6 +171,9 @@ if have_mpl /usr/bin/python3; then
   /usr/bin/python3 scripts/plot_pressure.py out/fleet --pair 0 --case 23
   /usr/bin/python3 scripts/plot_geometry.py out/fleet --pair 1
   test -s out/fleet/pressure_case_23_pair_0.png && test -s out/fleet/geometry_pair_1_caf.png
+  ./build/mhcontact run cases/manchester-rcf.json -o out/traction --pressure-grid 41 --pressure-cases 1
+  /usr/bin/python3 scripts/plot_traction.py out/traction --case 1
+  test -s out/traction/traction_case_1.png
 fi
 
 # --- docs/tables.md, "Making a table": exit 1 (a coarse cell, nodes without an answer); the

@@ -9,7 +9,9 @@ namespace mh {
 
 HalfSpaceTangentialResult solve_tangential_patch(const PatchResult& patch, const Material& material,
                                                  const Creepages& c, double mu,
-                                                 const HalfSpaceTangentialOptions& options) {
+                                                 const HalfSpaceTangentialOptions& options,
+                                                 PatchTraction* keep) {
+  if (keep) keep->clear();
   HalfSpaceTangentialResult res;
   res.forces.c = c;
   res.forces.mu = mu;
@@ -34,18 +36,32 @@ HalfSpaceTangentialResult solve_tangential_patch(const PatchResult& patch, const
   combined_elastic(material, G, nu);  // equal bodies here: G = E / (2 (1 + ν)), ν
   try {
     HalfSpaceTangentialSolver solver(patch.nx, patch.ns, patch.dx, patch.ds, G, nu);
-    return solver.solve(patch.p.data(), patch.x0, patch.s0, c, mu, options);
+    HalfSpaceTangentialResult out = solver.solve(patch.p.data(), patch.x0, patch.s0, c, mu, options);
+    if (keep && out.status == TangentialStatus::Ok) {
+      keep->nx = patch.nx;
+      keep->ns = patch.ns;
+      keep->dx = patch.dx;
+      keep->ds = patch.ds;
+      keep->x0 = patch.x0;
+      keep->s0 = patch.s0;
+      keep->pn = patch.p;
+      keep->px = solver.px();
+      keep->py = solver.py();
+      keep->slip.resize(n);
+      for (std::size_t i = 0; i < n; ++i) keep->slip[i] = solver.state()[i] == ElementState::Slip;
+    }
+    return out;
   } catch (const std::exception& e) {  // invalid grid or material, or no memory
     res.message = std::string("patch ") + std::to_string(patch.patch) + ": " + e.what();
     return res;
   }
 }
 
-void solve_tangential_patches(CaseResult& r, const Material& material, double mu) {
+void solve_tangential_patches(CaseResult& r, const Material& material, double mu, bool keep_traction) {
   if (r.method != Method::HalfSpace || !r.tangential.asked || !(mu > 0)) return;
   for (PatchResult& P : r.patches) {
     const Creepages c = P.t.c;
-    const HalfSpaceTangentialResult t = solve_tangential_patch(P, material, c, mu);
+    const HalfSpaceTangentialResult t = solve_tangential_patch(P, material, c, mu, {}, keep_traction ? &P.traction : nullptr);
     if (t.status != TangentialStatus::Ok) continue;
     P.t = t.forces;
     P.t.c = c;

@@ -17,16 +17,19 @@ namespace mh {
 /// elastic constants (Material without E_rail, nu_rail, or with the same values): the
 /// decoupling of the normal and tangential problems holds only then; otherwise the result is
 /// NotConverged with a message naming the rule. G = E / (2 (1 + ν)). Never throws for numerical
-/// reasons; builds one solver (allocates) per call.
+/// reasons; builds one solver (allocates) per call. `keep` (optional): the tractions per element
+/// of a converged solve on the patch's grid (traction_grid.hpp); cleared otherwise.
 HalfSpaceTangentialResult solve_tangential_patch(const PatchResult& patch, const Material& material,
                                                  const Creepages& c, double mu,
-                                                 const HalfSpaceTangentialOptions& options = {});
+                                                 const HalfSpaceTangentialOptions& options = {},
+                                                 PatchTraction* keep = nullptr);
 
 /// The half-space method's tangential step (docs/tangential.md, "Half-space"): every patch of a
 /// half-space row whose creepages solve_tangential set (friction given) and whose pressure grid was
 /// kept (HalfSpaceOptions::keep_pressure) is solved exactly; the case sums follow
 /// (sum_tangential). A patch whose solve fails keeps solved = false (the row then carries
-/// tangential_unsupported). No-op for other methods or without friction.
-void solve_tangential_patches(CaseResult& r, const Material& material, double mu);
+/// tangential_unsupported). No-op for other methods or without friction. keep_traction: each
+/// patch's tractions per element into PatchResult::traction.
+void solve_tangential_patches(CaseResult& r, const Material& material, double mu, bool keep_traction = false);
 
 }  // namespace mh

@@ -37,6 +37,10 @@ struct TangentialOptions {
   /// [-] The vertical equilibrium's tolerance, |Σ (N_i cos γ_i + Fy_i sin γ_i) − Q| ≤ it × Q
   /// (default 1e-7: 1 mN at 10 kN; the wheelset call's default is its own, wheelset_contact.hpp).
   double equilibrium_tolerance = 1e-7;
+  /// Keep each contact's traction per element (CaseResult::ellipse_traction, PatchResult::traction;
+  /// contact/tangential/traction_grid.hpp) for the traction grid of `run --pressure-grid`. Default
+  /// false: nothing is kept and nothing allocated for it.
+  bool keep_traction = false;
   bool enabled() const { return std::isfinite(mu); }
 };
 

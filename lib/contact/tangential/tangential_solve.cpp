@@ -36,22 +36,32 @@ void solve_tangential(CaseResult& r, const Material& mat, double tY, const Tange
   r.tangential.asked = true;
   double G = 0, nu = 0;
   combined_elastic(mat, G, nu);
-  for (LoadedEllipse& L : r.loaded) {
+  // The cells of each ellipse only when asked (run --pressure-grid): otherwise nothing is kept.
+  if (opt.keep_traction) r.ellipse_traction.resize(r.loaded.size());
+  else r.ellipse_traction.clear();
+  for (std::size_t i = 0; i < r.loaded.size(); ++i) {
+    LoadedEllipse& L = r.loaded[i];
     L.t = TangentialResult{};
     L.t.c = creepages_of(opt, tY, L.g.r_roll, L.g.gamma, L.g.y_w);
     L.t.mu = opt.mu;
+    EllipseTraction* keep = opt.keep_traction ? &r.ellipse_traction[i] : nullptr;
+    if (keep) {
+      keep->cells.nx = keep->cells.ny = 0;
+      keep->bound = opt.fastsim.bound;
+    }
     if (!(L.s.N > 0 && L.s.a > 0 && L.s.b > 0)) continue;
     // FASTSIM on the patch the normal law carries (the plastic patch when plastic; its traction
     // bound the elliptical one of that patch: docs/tangential.md, limits).
     // The load slope (fastsim.hpp) only where the creep force has a vertical share worth aiming
     // the equilibrium with: |sin γ| ≥ kLoadSlopeSinGamma (the flange and its root; the tread's
     // share is aimed from its saturation: contact/solve.cpp, equilibrium_slope).
+    FastsimGrid* cells = keep ? &keep->cells : nullptr;
     if (opt.fastsim.load_slope && !(std::fabs(L.sin_gamma) >= kLoadSlopeSinGamma)) {
       FastsimOptions o = opt.fastsim;
       o.load_slope = false;
-      L.t = fastsim(L.t.c, L.s.a, L.s.b, L.s.N, opt.mu, G, nu, o);
+      L.t = fastsim(L.t.c, L.s.a, L.s.b, L.s.N, opt.mu, G, nu, o, cells);
     } else {
-      L.t = fastsim(L.t.c, L.s.a, L.s.b, L.s.N, opt.mu, G, nu, opt.fastsim);
+      L.t = fastsim(L.t.c, L.s.a, L.s.b, L.s.N, opt.mu, G, nu, opt.fastsim, cells);
     }
   }
   for (PatchResult& P : r.patches) {
