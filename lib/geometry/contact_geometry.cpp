@@ -201,10 +201,9 @@ void ContactGeometry::rolled_wheel_at(double t, double roll, double y_r, double*
 }
 
 bool ContactGeometry::candidates_at(double t, double roll, CandidateGeom* out, int* main) const {
-  if (roll == 0.0 || !wheel_curve || !rail_curve || strip_y.empty() || strip_ellipse.size() != strip_y.size()) {
-    candidates_at(t, out, main);
+  candidates_at(t, out, main);  // the upright candidates: their points, and the answer at δ = 0
+  if (roll == 0.0 || !wheel_curve || !rail_curve || strip_y.empty() || strip_ellipse.size() != strip_y.size())
     return true;
-  }
   const ProfileCurve& W = *wheel_curve;
   const ProfileCurve& R = *rail_curve;
   const std::size_t ns = strip_y.size(), ne = ellipses.size();
@@ -217,30 +216,25 @@ bool ContactGeometry::candidates_at(double t, double roll, CandidateGeom* out, i
     const double zw = W.z(yw, &d);
     return zw + sn * (yw + zw * d) - strip_zr[j];
   };
-  auto covered = [&](std::size_t j) { return W.contains(strip_y[j] - s); };
-  // Each ellipse's smallest separation over its part of the rail: every 5th strip, then the strips
-  // around the best of them.
+  // The smallest rolled separation over the strips: every 5th strip, then those around the best.
   constexpr std::size_t kStride = 5;
-  thread_local std::vector<std::size_t> best_j;
-  thread_local std::vector<double> best_g;
-  best_j.assign(ne, ns);
-  best_g.assign(ne, std::numeric_limits<double>::infinity());
+  std::size_t jb = ns;
+  double gb = std::numeric_limits<double>::infinity();
   auto consider = [&](std::size_t j) {
-    if (!covered(j)) return;
-    const std::size_t e = static_cast<std::size_t>(strip_ellipse[j]);
+    if (!W.contains(strip_y[j] - s)) return;
     const double g = sep1(j);
-    if (g < best_g[e]) best_g[e] = g, best_j[e] = j;
+    if (g < gb) gb = g, jb = j;
   };
   for (std::size_t j = 0; j < ns; j += kStride) consider(j);
   consider(ns - 1);
-  for (std::size_t e = 0; e < ne; ++e) {
-    if (best_j[e] == ns) continue;
-    const std::size_t j0 = best_j[e];
-    for (std::size_t j = j0 > kStride ? j0 - kStride : 0; j <= std::min(j0 + kStride, ns - 1); ++j)
-      if (static_cast<std::size_t>(strip_ellipse[j]) == e) consider(j);
+  if (jb == ns) return false;
+  {
+    const std::size_t j0 = jb;
+    for (std::size_t j = j0 > kStride ? j0 - kStride : 0; j <= std::min(j0 + kStride, ns - 1); ++j) consider(j);
   }
   // Refined between the neighbouring strips to the root of the rolled gap's slope,
-  // tan(θ_w + δ) − z_r'(y) with tan θ_w = z_w'(y_w).
+  // tan(θ_w + δ) − z_r'(y) with tan θ_w = z_w'(y_w) (as refine_minimum: sign changes over
+  // sub-intervals, each bisected).
   auto slope = [&](double y) {
     double dw, dr;
     W.z(y - s + W.z(y - s) * sn, &dw);  // the wheel's slope at the point facing y (first order)
@@ -252,60 +246,39 @@ bool ContactGeometry::candidates_at(double t, double roll, CandidateGeom* out, i
     rolled_wheel_at(t, roll, y, &yw, &zw);
     return zw - R.z(y);
   };
+  const std::size_t j = jb;
+  const double a = std::max(strip_y[j > 2 ? j - 3 : 0], W.y_min() + s),
+               b = std::min(strip_y[std::min(j + 3, ns - 1)], W.y_max() + s);
+  double ym_best = strip_y[j], gm_best = sep(ym_best);
+  constexpr int kSub = 6;
+  double y0 = a, d0 = a < b ? slope(a) : 0.0;
+  for (int i = 1; a < b && i <= kSub; ++i) {
+    const double y1 = a + (b - a) * i / kSub, d1 = slope(y1);
+    if (d0 < 0 && d1 >= 0) {
+      RootTolerance tol;
+      tol.abs = 1e-9;
+      tol.rel = 0;
+      tol.max_iterations = 60;
+      const double ym = bisected_root(slope, y0, y1, tol).x, gm = sep(ym);
+      if (gm < gm_best) ym_best = ym, gm_best = gm;
+    }
+    y0 = y1;
+    d0 = d1;
+  }
+  // The rolled minimum is the candidate of the ellipse whose part of the rail holds it; every
+  // other ellipse keeps its upright candidate's point (method.md §3.6), its separation that of the
+  // rolled wheel there: so δ → 0 gives the upright candidates back (continuous in δ).
+  const std::size_t em = static_cast<std::size_t>(strip_ellipse[j]);
   thread_local std::vector<double> y_c, g_c;
-  y_c.assign(ne, 0.0);
-  g_c.assign(ne, std::numeric_limits<double>::infinity());
-  // Only the candidates within kRefine of the smallest separation are refined between strips (the
-  // others, 0.2 mm apart or more, carry no load at any rail load: their strip is kept).
-  constexpr double kRefine = 0.2e-3;
-  const double g_min = *std::min_element(best_g.begin(), best_g.end());
-  bool any = false;
+  y_c.resize(ne);
+  g_c.resize(ne);
   for (std::size_t e = 0; e < ne; ++e) {
-    const std::size_t j = best_j[e];
-    if (j == ns) continue;
-    any = true;
-    if (best_g[e] > g_min + kRefine) {
-      y_c[e] = strip_y[j];
-      g_c[e] = sep(y_c[e]);
-      continue;
-    }
-    const double a = std::max(strip_y[j > 2 ? j - 3 : 0], W.y_min() + s),
-                 b = std::min(strip_y[std::min(j + 3, ns - 1)], W.y_max() + s);
-    double yb = strip_y[j], gb = sep(yb);
-    // As refine_minimum: the sign changes of the slope over sub-intervals, each bisected.
-    constexpr int kSub = 6;
-    double y0 = a, d0 = a < b ? slope(a) : 0.0;
-    for (int i = 1; a < b && i <= kSub; ++i) {
-      const double y1 = a + (b - a) * i / kSub, d1 = slope(y1);
-      if (d0 < 0 && d1 >= 0) {
-        RootTolerance tol;
-        tol.abs = 1e-9;
-        tol.rel = 0;
-        tol.max_iterations = 60;
-        const double ym = bisected_root(slope, y0, y1, tol).x, gm = sep(ym);
-        if (gm < gb) yb = ym, gb = gm;
-      }
-      y0 = y1;
-      d0 = d1;
-    }
-    y_c[e] = yb;
-    g_c[e] = gb;
+    y_c[e] = e == em ? ym_best : out[e].y_r;
+    g_c[e] = e == em ? gm_best : sep(y_c[e]);
   }
-  if (!any) {
-    candidates_at(t, out, main);
-    return false;
-  }
-  // An ellipse whose part of the rail the wheel does not face: the point of its range nearest the
-  // wheel's middle (its gap is then large).
-  std::size_t m = 0;
-  for (std::size_t e = 0; e < ne; ++e) {
-    if (!(g_c[e] < std::numeric_limits<double>::infinity())) {
-      const double yr = std::clamp(s + 0.5 * (W.y_min() + W.y_max()), ellipses[e].y_r_min, ellipses[e].y_r_max);
-      y_c[e] = yr;
-      g_c[e] = sep(yr);
-    }
+  std::size_t m = em;
+  for (std::size_t e = 0; e < ne; ++e)
     if (g_c[e] < g_c[m]) m = e;
-  }
   for (std::size_t e = 0; e < ne; ++e) {
     CandidateGeom& c = out[e];
     fill_candidate(t, y_c[e], e == m, g_c[m], c);

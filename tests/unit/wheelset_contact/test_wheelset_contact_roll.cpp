@@ -6,7 +6,7 @@
 //
 // Held at about 1.5 times the differences measured on 29 Nov 2026 (table in docs/c-api.md, "Roll"; ours, upright and CONTACT),
 // per Y: the contact angle within 0.015 / 0.0006 / 0.0019 rad, N within 10 N (CONTACT prints four
-// digits), Fx within 28 / 5.4 / 7.8 % of μN, Fs within 2.5 / 2.1 / 2.5 %, Mz within 0.4 N m at Y 2
+// digits), Fx within 25 / 5.4 / 7.8 % of μN, Fs within 2.5 / 2.1 / 2.5 %, Mz within 0.4 N m at Y 2
 // and 4 mm. At Y = 0 the tread contact is nearly conformal: one Hertz ellipse with FASTSIM is 11 %
 // of μN off in Fx with no roll at all, and its spin moment is a quarter of CONTACT's (−1.3 against
 // −4.6 N m: not held there); the roll's own effect is what the wide band still checks (the
@@ -84,7 +84,7 @@ TEST_CASE("wheelset call: the roll in the contact geometry against CONTACT modul
   const double mu = 0.3;
   // Per Y (0, 2, 4 mm): |γ − γ_CONTACT| [rad], |Fx − FX| and |Fs − FS| as fractions of μN.
   struct Tol { double gamma, F, Fs; };
-  const Tol tol[3] = {{0.015, 0.28, 0.025}, {0.0006, 0.054, 0.021}, {0.0019, 0.078, 0.025}};
+  const Tol tol[3] = {{0.015, 0.25, 0.025}, {0.0006, 0.054, 0.021}, {0.0019, 0.078, 0.025}};
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     Row c;
     c.id = static_cast<int>(mh::test::csv_num(t, i, "case"));
