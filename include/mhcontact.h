@@ -63,7 +63,7 @@ typedef enum mhc_error {
                                 value, the rule and the unit: docs/c-api.md "Errors") */
   MHC_ERR_INPUT = 2,       /**< unreadable or invalid input data (profile file, points, case file,
                                 a pair that cannot be placed): the command's exit code 2 */
-  MHC_ERR_UNSUPPORTED = 3, /**< a valid request this pair cannot honour: a relative roll, an
+  MHC_ERR_UNSUPPORTED = 3, /**< a valid request this pair cannot honour: a relative roll or an
                                 approach-prescribed solve with a grid method */
   MHC_ERR_MEMORY = 4,      /**< out of memory */
   MHC_ERR_INTERNAL = 5     /**< a bug: please report with the message */
@@ -293,7 +293,9 @@ MHC_API mhc_error mhc_workspace_create(const mhc_pair* pair, mhc_workspace** out
 MHC_API void mhc_workspace_free(mhc_workspace* ws);
 
 /** One case with the vertical load prescribed (eq. 10): the wheel at lateral displacement tY_m
- *  and relative roll roll_rad (only 0 is supported: MHC_ERR_UNSUPPORTED otherwise), carrying
+ *  and relative roll roll_rad (the wheel rolled against the rail about x, pair frame, positive
+ *  raising its field side; docs/method.md section 3 item 8: multi-hertzian pairs only,
+ *  MHC_ERR_UNSUPPORTED for the others; |roll_rad| <= 0.05, else MHC_ERR_ARGUMENT), carrying
  *  Q_N. Fills *out (out->struct_size must be set). Any method. Q_N = 0: no_contact (a wheel
  *  lifted); Q_N negative, not finite, or above the plausible range (2000 kN: docs/case-file.md
  *  "Plausible ranges"): MHC_ERR_ARGUMENT, the message naming the value and the rule. */
