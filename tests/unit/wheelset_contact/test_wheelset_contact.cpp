@@ -277,7 +277,7 @@ TEST_CASE("wheelset: the yaw lead warning at flange contact, not at the tread", 
   p.yaw = 5e-3;
   W.step(p, {}, r, ws);
   CHECK(r.warnings.empty());
-  p.y = 8 * mm;  // left flange (and a roll above 1 mrad: roll_in_geometry_neglected too)
+  p.y = 8 * mm;  // left flange (its roll of several mrad in the geometry: no roll warning)
   W.step(p, {}, r, ws);
   int leads = 0;
   for (const auto& w : r.warnings) {
