@@ -63,7 +63,7 @@ typedef enum mhc_error {
                                 value, the rule and the unit: docs/c-api.md "Errors") */
   MHC_ERR_INPUT = 2,       /**< unreadable or invalid input data (profile file, points, case file,
                                 a pair that cannot be placed): the command's exit code 2 */
-  MHC_ERR_UNSUPPORTED = 3, /**< a valid request this pair cannot honour: a relative roll, an
+  MHC_ERR_UNSUPPORTED = 3, /**< a valid request this pair cannot honour: a relative roll or an
                                 approach-prescribed solve with a grid method */
   MHC_ERR_MEMORY = 4,      /**< out of memory */
   MHC_ERR_INTERNAL = 5     /**< a bug: please report with the message */
@@ -293,7 +293,9 @@ MHC_API mhc_error mhc_workspace_create(const mhc_pair* pair, mhc_workspace** out
 MHC_API void mhc_workspace_free(mhc_workspace* ws);
 
 /** One case with the vertical load prescribed (eq. 10): the wheel at lateral displacement tY_m
- *  and relative roll roll_rad (only 0 is supported: MHC_ERR_UNSUPPORTED otherwise), carrying
+ *  and relative roll roll_rad (the wheel rolled against the rail about x, pair frame, positive
+ *  raising its field side; docs/method.md section 3 item 8: multi-hertzian pairs only,
+ *  MHC_ERR_UNSUPPORTED for the others; |roll_rad| <= 0.05, else MHC_ERR_ARGUMENT), carrying
  *  Q_N. Fills *out (out->struct_size must be set). Any method. Q_N = 0: no_contact (a wheel
  *  lifted); Q_N negative, not finite, or above the plausible range (2000 kN: docs/case-file.md
  *  "Plausible ranges"): MHC_ERR_ARGUMENT, the message naming the value and the rule. */
@@ -435,9 +437,13 @@ MHC_API void mhc_table_free(mhc_table* t);
  * Track frame: x forward, y towards the LEFT rail, z up (right-handed); roll about x (positive
  * raising the left wheel), yaw about z (positive turning x to the left). A wheelset displacement
  * y is t_Y = +y on the left pair and -y on the right one.
- * Limits (reported as MHC_WHEELSET_WARN_* bits): the roll enters each wheel's height, not the
- * contact geometry (each pair's tables are those of the wheel upright on its rail); the yaw
- * enters the creepages, not the contact point (its lead ahead of the axle is not modelled). */
+ * The roll: with the multi-Hertzian method each wheel is rolled against its rail about the axle
+ * centre (contact point, angle, curvatures, heights and spin of the rolled wheel; docs/method.md
+ * section 3.8); the pairs' tables must cover |y| + 0.46 m |roll| in t_Y (a pair's default -10 ... 12
+ * mm: a flange contact beyond about 7 mm with its roll leaves it: out_of_range). The grid methods
+ * keep each wheel upright, the roll entering its height only (MHC_WHEELSET_WARN_ROLL_* bits).
+ * Limits (reported as MHC_WHEELSET_WARN_* bits): the yaw enters the creepages, not the contact
+ * point (its lead ahead of the axle is not modelled). */
 
 /** The interface version of this header: 1 = up to the warnings accessors; 2 = the wheelset
  *  call, mhc_interface_version, mhc_solve_many_warnings, the creep forces (mhc_pair_set_tangential,
@@ -481,8 +487,9 @@ typedef struct mhc_wheelset_pose {
   double yaw_rad;                /**< yaw psi */
   double Q_left_N, Q_right_N;    /**< LOADS: vertical wheel loads (>= 0) */
   double Z_m;                    /**< POSITION: axle-centre height; each wheel's penetration is
-                                      h_s - Z - s roll L_s, h_s its first-contact height upright,
-                                      L_s = a + y_w - r tan(gamma) its roll lever (s: +1 left) */
+                                      h_s(roll) - Z, h_s(roll) the axle height at which that wheel,
+                                      rolled, first touches (grid methods: h_s - s roll L_s, h_s
+                                      upright, L_s = a + y_w - r tan(gamma), s: +1 left) */
   double roll_rad;               /**< POSITION with solve_roll 0: the roll */
   double V_m_per_s;              /**< forward speed (> 0 with friction) */
   double lateral_velocity_m_per_s;
@@ -534,14 +541,16 @@ typedef struct mhc_wheelset_wheel {
 } mhc_wheelset_wheel;
 
 /** Wheelset warnings (mhc_wheelset_result.wheelset_warnings). */
-#define MHC_WHEELSET_WARN_ROLL_IN_GEOMETRY 0x1u /**< |roll| above 1 mrad: the relative roll of
-                                                     wheel and rail is not in the contact geometry */
+#define MHC_WHEELSET_WARN_ROLL_IN_GEOMETRY 0x1u /**< grid methods: |roll| above 1 mrad, the relative
+                                                     roll of wheel and rail is not in their contact
+                                                     geometry (the multi-Hertzian method models it) */
 #define MHC_WHEELSET_WARN_YAW_LEAD_LEFT 0x2u    /**< the left contact's lead under yaw (r tan(gamma)
                                                      tan(psi)) exceeds a tenth of its semi-axis a */
 #define MHC_WHEELSET_WARN_YAW_LEAD_RIGHT 0x4u   /**< the same on the right wheel */
-#define MHC_WHEELSET_WARN_ROLL_NEAR_FLANGE 0x8u /**< a roll above 0.1 mrad with a contact steeper
-                                                     than 25 degrees: the roll moves the contact
-                                                     point there, which the first-order rule misses */
+#define MHC_WHEELSET_WARN_ROLL_NEAR_FLANGE 0x8u /**< grid methods: a roll above 0.1 mrad with a contact
+                                                     steeper than 25 degrees: the roll moves the
+                                                     contact point there, which their first-order
+                                                     rule misses */
 
 /** One step's answer. Caller-owned: set struct_size. Any size from
  *  offsetof(mhc_wheelset_result, wheel) up is accepted: the library fills the fields that fit

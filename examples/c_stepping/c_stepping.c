@@ -72,8 +72,12 @@ int main(int argc, char** argv) {
              r.dFz_ddz_N_per_m / 1e6);
     }
   }
-  /* An unsupported request is refused, never ignored. */
-  if (mhc_solve_load(pair, ws, 0.0, 0.01, 50e3, &r) == MHC_ERR_UNSUPPORTED)
+  /* The wheel rolled 1 mrad against the rail (towards its field side); a roll out of range is
+     refused, never ignored. */
+  if (check(mhc_solve_load(pair, ws, 0.0, 1e-3, 50e3, &r), "solve with roll")) goto done;
+  printf("roll 1 mrad: Fz %.3f kN, Fy %.3f kN, contact angle %.3f deg\n", r.Fz_N / 1e3, r.Fy_N / 1e3,
+         r.gamma_main_rad * 180 / pi);
+  if (mhc_solve_load(pair, ws, 0.0, 0.1, 50e3, &r) != MHC_OK)
     printf("roll refused: %s\n", mhc_last_message());
   rc = 0;
 done:

@@ -73,23 +73,35 @@ mhc_error guarded(GuardedBody f) noexcept {
 
 mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, double tY, double roll, double value,
                      mhc_result* out) {
-  if (roll != 0.0)
-    return fail(MHC_ERR_UNSUPPORTED, "roll = " + format_number(roll) +
-                                         " rad: a relative roll is not supported (the geometry tables are "
-                                         "built for the wheel upright on the rail); pass 0");
+  if (!(std::fabs(roll) <= 0.05))
+    return fail(MHC_ERR_ARGUMENT, "roll = " + format_number(roll) +
+                                      " rad: the relative roll must be finite and within [-0.05, 0.05] rad");
+  if (roll != 0.0 && pair.options.method != Method::MultiHertzian)
+    return fail(MHC_ERR_UNSUPPORTED, "roll = " + format_number(roll) + " rad: a relative roll is modelled by the "
+                                         "multi-hertzian method only, not by " + to_string(pair.options.method) +
+                                         " (its contact gap is the upright wheel's); pass 0 or use multi_hertzian");
   if (!std::isfinite(tY)) return fail(MHC_ERR_ARGUMENT, "t_Y = " + format_number(tY) + " m: must be finite");
+  // The wheel rolled by δ against the rail (docs/method.md §3 item 8): its candidates and its spin.
+  MethodOptions rolled;
+  const MethodOptions* opt = &pair.options;
+  if (roll != 0.0) {
+    rolled = pair.options;
+    rolled.multi_hertzian.roll = roll;
+    rolled.tangential.kin.roll = roll;
+    opt = &rolled;
+  }
   if (approach) {
     if (pair.options.method != Method::MultiHertzian)
       return fail(MHC_ERR_UNSUPPORTED, std::string("the approach-prescribed solve needs the multi-hertzian method, "
                                                    "not ") + to_string(pair.options.method));
-    solve_multi_hertz_approach(pair.pg.geo, pair.material, tY, value, pair.options.multi_hertzian, ws.approach, ws.r);
+    solve_multi_hertz_approach(pair.pg.geo, pair.material, tY, value, opt->multi_hertzian, ws.approach, ws.r);
     // As solve_contact: the tangential problem (a case file with friction), then the one judge.
-    solve_tangential(ws.r, pair.material, tY, pair.options.tangential);
-    judge_case(ws.r, pair.pg.geo, pair.material, tY, pair.options);
+    solve_tangential(ws.r, pair.material, tY, opt->tangential);
+    judge_case(ws.r, pair.pg.geo, pair.material, tY, *opt);
     fill_result(ws.r, tY, std::numeric_limits<double>::quiet_NaN(), pair.plastic, out);
   } else {
     if (const std::string bad = check_load(value); !bad.empty()) return fail(MHC_ERR_ARGUMENT, bad);
-    solve_contact(pair.pg.geo, pair.material, tY, value, pair.options, ws.r, &ws.grid);
+    solve_contact(pair.pg.geo, pair.material, tY, value, *opt, ws.r, &ws.grid);
     fill_result(ws.r, tY, value, pair.plastic, out);
   }
   if (ws.r.status != CaseStatus::Ok) last_message() = ws.r.message;

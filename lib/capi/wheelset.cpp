@@ -47,7 +47,9 @@ mh::WheelsetPose to_pose(const mhc_wheelset_pose& p) {
     throw std::invalid_argument("pose.vertical = " + std::to_string(p.vertical) +
                                 ": must be MHC_VERTICAL_LOADS (0) or MHC_VERTICAL_POSITION (1)");
   o.vertical = p.vertical == MHC_VERTICAL_LOADS ? mh::WheelsetVertical::Loads : mh::WheelsetVertical::Position;
-  o.solve_roll = p.solve_roll != 0;
+  // LOADS: the roll is always solved (the wheel loads and a rigid axle fix it; solve_roll applies
+  // to POSITION only, as documented).
+  o.solve_roll = o.vertical == mh::WheelsetVertical::Loads || p.solve_roll != 0;
   o.y = p.y_m;
   o.yaw = p.yaw_rad;
   o.Q_left = p.Q_left_N;

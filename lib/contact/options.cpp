@@ -1,5 +1,6 @@
 #include "contact/options.hpp"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -79,6 +80,7 @@ bool HertzValidityOptions::valid(std::string* why) const {
 bool MultiHertzOptions::valid(std::string* why) const {
   if (!(rtol > 0 && rtol < 1e-3)) { if (why) *why = "rtol must be in (0, 1e-3)"; return false; }
   if (max_iterations < 1 || max_iterations > 10000) { if (why) *why = "max_iterations must be in [1, 10000]"; return false; }
+  if (!(std::fabs(roll) <= 0.05)) { if (why) *why = "roll must be within [-0.05, 0.05] rad"; return false; }
   if (!validity.valid(why)) return false;
   return true;
 }

@@ -111,6 +111,12 @@ struct MultiHertzOptions {
   int max_iterations = 60; ///< Newton iterations (evaluations of eq. 10) before `not_converged` (default 60)
   bool exact_coefficients = false;  ///< Hertz m, n, ρ by the exact solve instead of the fast table (default: table)
   HertzValidityOptions validity;    ///< limits of the per-ellipse Hertz validity test (hertz_validity.hpp)
+  /// [rad] The case's relative roll δ of the wheel against the rail (about x, pair frame, positive
+  /// raising the wheel's field side; method.md §3.8): the candidates are those of the rolled
+  /// wheel (ContactGeometry::candidates_at(t, δ)). Per case, set by the caller (the wheelset
+  /// call, the C interface's roll_rad); default 0, the wheel upright. Only this method models it:
+  /// solve_contact refuses it for the others. |δ| ≤ 50 mrad.
+  double roll = 0;
   bool valid(std::string* why) const;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -333,7 +334,17 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
 
 }  // namespace
 
+// A relative roll (MultiHertzOptions::roll) is modelled by the multi-Hertzian method only: the grid
+// methods' gap (geometry/gap.hpp) is the upright wheel's.
+static void check_roll(const MethodOptions& opt) {
+  if (opt.multi_hertzian.roll != 0 && opt.method != Method::MultiHertzian)
+    throw std::invalid_argument("a relative roll of " + std::to_string(opt.multi_hertzian.roll) + " rad is modelled by "
+                                "the multi-hertzian method only, not by " + to_string(opt.method) +
+                                " (its contact gap is the upright wheel's): use multi_hertzian or a roll of 0");
+}
+
 CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt) {
+  check_roll(opt);
   CaseResult r;
   switch (opt.method) {
     case Method::Auto: r = solve_auto(G, mat, tY, Q, opt); break;
@@ -359,6 +370,7 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
 
 void solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt,
                    CaseResult& out, GridWorkspace* ws) {
+  check_roll(opt);
   switch (opt.method) {
     case Method::MultiHertzian: solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian, out); break;
     case Method::HalfSpace:

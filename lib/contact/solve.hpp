@@ -10,7 +10,8 @@
 
 namespace mh {
 
-/// Solve one case by opt.method. Never throws for a numerical reason (the status says it).
+/// Solve one case by opt.method. Never throws for a numerical reason (the status says it);
+/// std::invalid_argument for a relative roll (opt.multi_hertzian.roll ≠ 0) with another method.
 CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt);
 
 /// The same into `out`. The multi-Hertzian method reuses out's vectors (solve_multi_hertz's

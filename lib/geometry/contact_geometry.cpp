@@ -186,6 +186,116 @@ void ContactGeometry::candidates_at(double t, CandidateGeom* out, int* main) con
   if (main) *main = static_cast<int>(m);
 }
 
+void ContactGeometry::rolled_wheel_at(double t, double roll, double y_r, double* y_w, double* z_w) const {
+  // The wheel point (y_w, z_w) rotated by δ about the wheel's origin lies at rail
+  // (s + y_w cos δ − z_w sin δ, y_w sin δ + z_w cos δ), s = y_offset + t (eq. 3.8.1). The y_w facing
+  // y_r to first order in δ, y_w = y_0 + z_w(y_0) sin δ with y_0 = y_r − s (one profile evaluation;
+  // the rest is O(δ² z_w z_w'), below 0.1 nm for |δ| ≤ 10 mrad on a flange).
+  const ProfileCurve& W = *wheel_curve;
+  const double y0 = y_r - (y_offset + t), sn = std::sin(roll), c = std::cos(roll);
+  double d0;
+  const double z0 = W.z(y0, &d0);
+  const double dy = z0 * sn;
+  *y_w = y0 + dy;
+  *z_w = *y_w * sn + (z0 + d0 * dy) * c;
+}
+
+bool ContactGeometry::candidates_at(double t, double roll, CandidateGeom* out, int* main) const {
+  candidates_at(t, out, main);  // the upright candidates: their points, and the answer at δ = 0
+  if (roll == 0.0 || !wheel_curve || !rail_curve || strip_y.empty() || strip_ellipse.size() != strip_y.size())
+    return true;
+  const ProfileCurve& W = *wheel_curve;
+  const ProfileCurve& R = *rail_curve;
+  const std::size_t ns = strip_y.size(), ne = ellipses.size();
+  const double s = y_offset + t, sn = std::sin(roll), tn = std::tan(roll);
+  // The rolled separation at strip j to first order in δ, for the scan only (one wheel evaluation):
+  // z_w(y − s) + δ (y − s) + δ z_w z_w' − z_r.
+  auto sep1 = [&](std::size_t j) {
+    const double yw = strip_y[j] - s;
+    double d;
+    const double zw = W.z(yw, &d);
+    return zw + sn * (yw + zw * d) - strip_zr[j];
+  };
+  // The smallest rolled separation over the strips: every 5th strip, then those around the best.
+  constexpr std::size_t kStride = 5;
+  std::size_t jb = ns;
+  double gb = std::numeric_limits<double>::infinity();
+  auto consider = [&](std::size_t j) {
+    if (!W.contains(strip_y[j] - s)) return;
+    const double g = sep1(j);
+    if (g < gb) gb = g, jb = j;
+  };
+  for (std::size_t j = 0; j < ns; j += kStride) consider(j);
+  consider(ns - 1);
+  if (jb == ns) return false;
+  {
+    const std::size_t j0 = jb;
+    for (std::size_t j = j0 > kStride ? j0 - kStride : 0; j <= std::min(j0 + kStride, ns - 1); ++j) consider(j);
+  }
+  // Refined between the neighbouring strips to the root of the rolled gap's slope,
+  // tan(θ_w + δ) − z_r'(y) with tan θ_w = z_w'(y_w) (as refine_minimum: sign changes over
+  // sub-intervals, each bisected).
+  auto slope = [&](double y) {
+    double dw, dr;
+    W.z(y - s + W.z(y - s) * sn, &dw);  // the wheel's slope at the point facing y (first order)
+    R.z(y, &dr);
+    return (dw + tn) / (1 - dw * tn) - dr;
+  };
+  auto sep = [&](double y) {
+    double yw, zw;
+    rolled_wheel_at(t, roll, y, &yw, &zw);
+    return zw - R.z(y);
+  };
+  const std::size_t j = jb;
+  const double a = std::max(strip_y[j > 2 ? j - 3 : 0], W.y_min() + s),
+               b = std::min(strip_y[std::min(j + 3, ns - 1)], W.y_max() + s);
+  double ym_best = strip_y[j], gm_best = sep(ym_best);
+  constexpr int kSub = 6;
+  double y0 = a, d0 = a < b ? slope(a) : 0.0;
+  for (int i = 1; a < b && i <= kSub; ++i) {
+    const double y1 = a + (b - a) * i / kSub, d1 = slope(y1);
+    if (d0 < 0 && d1 >= 0) {
+      RootTolerance tol;
+      tol.abs = 1e-9;
+      tol.rel = 0;
+      tol.max_iterations = 60;
+      const double ym = bisected_root(slope, y0, y1, tol).x, gm = sep(ym);
+      if (gm < gm_best) ym_best = ym, gm_best = gm;
+    }
+    y0 = y1;
+    d0 = d1;
+  }
+  // The rolled minimum is the candidate of the ellipse whose part of the rail holds it; every
+  // other ellipse keeps its upright candidate's point (method.md §3.6), its separation that of the
+  // rolled wheel there: so δ → 0 gives the upright candidates back (continuous in δ).
+  const std::size_t em = static_cast<std::size_t>(strip_ellipse[j]);
+  thread_local std::vector<double> y_c, g_c;
+  y_c.resize(ne);
+  g_c.resize(ne);
+  for (std::size_t e = 0; e < ne; ++e) {
+    y_c[e] = e == em ? ym_best : out[e].y_r;
+    g_c[e] = e == em ? gm_best : sep(y_c[e]);
+  }
+  std::size_t m = em;
+  for (std::size_t e = 0; e < ne; ++e)
+    if (g_c[e] < g_c[m]) m = e;
+  for (std::size_t e = 0; e < ne; ++e) {
+    CandidateGeom& c = out[e];
+    fill_candidate(t, y_c[e], e == m, g_c[m], c);
+    double yw, zw;
+    rolled_wheel_at(t, roll, y_c[e], &yw, &zw);
+    const double z_w = W.z(yw);
+    c.y_w = yw;
+    c.k_wxx = W.kappa(yw);
+    c.sep = g_c[e];
+    c.gap = e == m ? 0.0 : std::max(0.0, g_c[e] - g_c[m]);
+    c.r_roll = nominal_radius - (z_w - wheel_z0);
+    c.flange_climb = has_flange && yw < flange_y_steepest;
+  }
+  if (main) *main = static_cast<int>(m);
+  return true;
+}
+
 bool smoothed_for_contact(const ContactGeometry& G) {
   return (G.wheel_gap_curve && G.wheel_gap_curve != G.wheel_curve) || (G.rail_gap_curve && G.rail_gap_curve != G.rail_curve);
 }
@@ -395,6 +505,17 @@ ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const 
       P.y_w_min = std::min(P.y_w_min, yw); P.y_w_max = std::max(P.y_w_max, yw);
     }
     G.ellipses.push_back(P);
+  }
+
+  // Each strip's ellipse for the rolled candidates: the one whose rail range is nearest.
+  G.strip_ellipse.assign(ns, 0);
+  for (std::size_t j = 0; j < ns; ++j) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t e = 0; e < G.ellipses.size(); ++e) {
+      const PotentialEllipse& P = G.ellipses[e];
+      const double d = std::max({0.0, P.y_r_min - G.strip_y[j], G.strip_y[j] - P.y_r_max});
+      if (d < best) best = d, G.strip_ellipse[j] = static_cast<int>(e);
+    }
   }
 
   // Candidate table: for every grid point and ellipse, the ellipse's own main strip when it is

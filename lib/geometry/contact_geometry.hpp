@@ -202,6 +202,25 @@ class ContactGeometry {
   /// overlap at t.
   bool exact_candidates_at(double t, CandidateGeom* out, int* main) const;
 
+  /// The candidates at t with the wheel rolled by δ against the rail (`roll`, [rad], about x in
+  /// the pair's frame, positive raising the wheel's field side, y > 0; method.md §3.8, eq. 3.8.1):
+  /// the wheel profile rotated by δ about its origin (its taping line point), then placed by t as
+  /// upright. The smallest rolled separation over the rail (a strip scan refined between strips)
+  /// is the candidate of the ellipse whose part of the rail holds it (strip_ellipse); every other
+  /// ellipse keeps its upright candidate's rail point (candidates_at(t)) with the rolled wheel's
+  /// separation there, so that δ → 0 gives the upright candidates back. Contact angle γ the
+  /// rail's slope at the point (the wheel's own slope there is γ − δ), curvatures and rolling
+  /// radius those of the profiles at the points facing each other. δ = 0 is candidates_at(t)
+  /// exactly (same bits). False if the profiles do not overlap at t (out then as candidates_at(t)).
+  /// Precondition: covers(t).
+  bool candidates_at(double t, double roll, CandidateGeom* out, int* main) const;
+  /// Per rail strip: the potential ellipse whose rail range [y_r_min, y_r_max] is nearest (its part
+  /// of the rail for the rolled candidates); filled by build_geometry.
+  std::vector<int> strip_ellipse;
+  /// The wheel point facing rail point y_r at t with the wheel rolled by δ: its y_w (wheel frame)
+  /// and the rotated wheel surface's height there, z̃_w (rail frame, datum height).
+  void rolled_wheel_at(double t, double roll, double y_r, double* y_w, double* z_w) const;
+
   /// The main strip at t: the strip of smallest z_w − z_r, refined between strips to the local
   /// minimum of the smooth gap; `found` false when the profiles do not overlap laterally.
   struct MainPoint { double y_r = 0, gmin = 0; std::size_t strip = 0; bool found = false; };

@@ -8,6 +8,7 @@
 
 #include "contact/judge/judge.hpp"
 #include "contact/tangential/tangential_solve.hpp"
+#include "core/roots.hpp"
 #include "core/numfmt.hpp"
 
 namespace mh {
@@ -146,6 +147,33 @@ double WheelsetContact::first_contact_height(int side, double tY) const {
   return G.wheel_z0 + G.nominal_radius - gmin;
 }
 
+void WheelsetContact::pair_pose(int side, double y, double roll, double* tY, double* delta) const {
+  const Side& S = side > 0 ? left_ : right_;
+  const double d = roll_in_geometry() ? S.sigma * roll : 0.0;
+  *delta = d;
+  // The axle centre, at (−a, z0 + R0) from the wheel profile's origin, stays where the unrolled
+  // wheelset has it: the origin moves by (a (cos δ − 1) + (z0 + R0) sin δ) along the pair's y.
+  *tY = S.sigma * y + (d == 0 ? 0.0 : S.a * (std::cos(d) - 1) + (S.geo.wheel_z0 + S.geo.nominal_radius) * std::sin(d));
+}
+
+double WheelsetContact::first_contact_height(int side, double y, double roll, WheelsetWorkspace& ws) const {
+  const Side& S = side > 0 ? left_ : right_;
+  double tY = 0, d = 0;
+  pair_pose(side, y, roll, &tY, &d);
+  if (d == 0) {
+    const double h = first_contact_height(side, S.sigma * y);
+    return roll == 0 ? h : h - S.sigma * roll * roll_lever(side, S.sigma * y);
+  }
+  const ContactGeometry& G = S.geo;
+  if (!G.covers(tY)) return kNaN;
+  ws.cand.resize(G.n_ellipses());
+  int m = 0;
+  if (!G.candidates_at(tY, d, ws.cand.data(), &m)) return kNaN;
+  // The rolled wheel's origin lowered by its smallest separation touches; the axle centre stands
+  // (z0 + R0) cos δ − a sin δ above that origin (eq. 3.8.2).
+  return -ws.cand[static_cast<std::size_t>(m)].sep + (G.wheel_z0 + G.nominal_radius) * std::cos(d) - S.a * std::sin(d);
+}
+
 double WheelsetContact::roll_lever(int side, double tY) const {
   const Side& S = side > 0 ? left_ : right_;
   const ContactGeometry& G = S.geo;
@@ -164,9 +192,11 @@ void WheelsetContact::solve_wheel(const Side& S, const WheelsetPose& pose, doubl
                                   WheelsetWorkspace& ws) const {
   const int s = S.sigma;
   w.side = s;
-  w.tY = s * pose.y;
-  w.h = first_contact_height(s, w.tY);
+  pair_pose(s, pose.y, roll, &w.tY, &w.delta);
+  // h: the axle height of first contact at this roll (the rolled wheel's, or the first-order rule).
+  w.h = first_contact_height(s, pose.y, roll, ws);
   MethodOptions opt = setup_.method;
+  opt.multi_hertzian.roll = w.delta;
   TangentialOptions& tg = opt.tangential;
   if (tg.enabled()) {
     // The pair's frame: lateral and yaw quantities with the track's signs times σ.
@@ -176,6 +206,7 @@ void WheelsetContact::solve_wheel(const Side& S, const WheelsetPose& pose, doubl
     tg.kin.lateral_velocity = s * pose.lateral_velocity;
     tg.kin.yaw_rate = s * pose.yaw_rate;
     tg.kin.pitch_rate = pose.pitch_rate;
+    tg.kin.roll = w.delta;
     tg.yaw_per_tY = 0;
     tg.l_origin = S.a;
     tg.r0 = S.R0;
@@ -185,8 +216,9 @@ void WheelsetContact::solve_wheel(const Side& S, const WheelsetPose& pose, doubl
     const double Q = s > 0 ? pose.Q_left : pose.Q_right;
     solve_contact(S.geo, mat, w.tY, Q, opt, w.r, &ws.grid);
   } else {
-    // δz_s = h_s − Z − σ φ L_s (roll_lever); outside the table h is NaN and the solve says out_of_range.
-    const double dz = std::isfinite(w.h) ? w.h - pose.Z - s * roll * roll_lever(s, w.tY) : 0.0;
+    // δz_s = h_s(φ) − Z (h_s at the roll: first_contact_height); outside the table h is NaN and
+    // the solve says out_of_range.
+    const double dz = std::isfinite(w.h) ? w.h - pose.Z : 0.0;
     solve_multi_hertz_approach(S.geo, mat, w.tY, dz, opt.multi_hertzian, ws.approach, w.r);
     solve_tangential(w.r, mat, w.tY, opt.tangential);
     judge_case(w.r, S.geo, mat, w.tY, opt);
@@ -221,42 +253,112 @@ void WheelsetContact::solve_wheel(const Side& S, const WheelsetPose& pose, doubl
   }
 }
 
+namespace {
+
+/// The roll φ where f(φ) = 0 (a height difference of the two wheels, decreasing in φ), from φ0
+/// with f0 = f(φ0): secant steps, the first with the slope −L (the two levers; steps at most
+/// 2 mrad), then TOMS 748 once a step crosses the root. To 1e-9 rad or 0.1 nm; the point of
+/// smallest |f| if neither. f is evaluated last at the returned φ when `last` is asked.
+template <class F>
+double roll_root(F&& f, double phi0, double f0, double L, bool last) {
+  constexpr double kMaxStep = 2e-3, kTol = 1e-9, kFTol = 1e-10;
+  double best = phi0, fbest = f0, slope = L > 1e-3 ? -L : -1.0;
+  double at = phi0;  // where f was evaluated last
+  for (int it = 0; it < 12 && std::isfinite(f0) && std::fabs(f0) > kFTol; ++it) {
+    const double step = std::clamp(-f0 / slope, -kMaxStep, kMaxStep);
+    const double phi1 = phi0 + step, f1 = f(phi1);
+    at = phi1;
+    if (!std::isfinite(f1)) break;
+    if (std::fabs(f1) < std::fabs(fbest)) best = phi1, fbest = f1;
+    if (std::fabs(step) < kTol || std::fabs(f1) <= kFTol) break;
+    if ((f1 < 0) != (f0 < 0)) {
+      RootTolerance tol;
+      tol.abs = kTol;
+      tol.rel = 0;
+      tol.f_abs = kFTol;
+      tol.max_iterations = 40;
+      const bool up = phi0 < phi1;
+      const RootResult rr = bracketed_root([&](double x) { at = x; return f(x); }, up ? phi0 : phi1, up ? phi1 : phi0,
+                                           up ? f0 : f1, up ? f1 : f0, tol);
+      if (std::isfinite(rr.f) && std::fabs(rr.f) < std::fabs(fbest)) best = rr.x, fbest = rr.f;
+      break;
+    }
+    const double s = (f1 - f0) / (phi1 - phi0);
+    slope = s < 0 ? s : (L > 1e-3 ? -L : -1.0);
+    phi0 = phi1;
+    f0 = f1;
+  }
+  if (last && at != best) f(best);
+  return best;
+}
+
+}  // namespace
+
 void WheelsetContact::solve_both(const WheelsetPose& pose, const WheelsetStepOptions& opt, WheelsetResult& out,
                                  WheelsetWorkspace& ws) const {
-  double roll = pose.roll;
-  if (pose.vertical == WheelsetVertical::Position && pose.solve_roll) {
-    // Both wheels touch at one height: h_L − φ L_L = h_R + φ L_R.
-    const double hl = first_contact_height(+1, pose.y), hr = first_contact_height(-1, -pose.y);
-    const double L = roll_lever(+1, pose.y) + roll_lever(-1, -pose.y);
-    roll = std::isfinite(hl) && std::isfinite(hr) && L > 0 ? (hl - hr) / L : 0.0;
-  }
-  solve_wheel(left_, pose, roll, out.left, ws);
-  solve_wheel(right_, pose, roll, out.right, ws);
-  out.status = worse(out.left.r.status, out.right.r.status);
-  out.total = Wrench{};
-  add_wrench(out.total, out.left.on_wheelset);
-  add_wrench(out.total, out.right.on_wheelset);
+  const bool geo = roll_in_geometry();
+  const double Ll = roll_lever(+1, pose.y), Lr = roll_lever(-1, -pose.y);
+  double roll = pose.solve_roll ? 0.0 : pose.roll;
+  auto solve_at = [&](double phi) {
+    solve_wheel(left_, pose, phi, out.left, ws);
+    solve_wheel(right_, pose, phi, out.right, ws);
+  };
   if (pose.vertical == WheelsetVertical::Position) {
+    if (pose.solve_roll) {
+      // Both wheels touch at one height, h_L(φ) = h_R(φ): the first-order rule
+      // h_L − φ L_L = h_R + φ L_R, then (roll in the geometry) Newton steps on the rolled heights
+      // with the levers as the slope.
+      const double hl = first_contact_height(+1, pose.y), hr = first_contact_height(-1, -pose.y);
+      const double L = Ll + Lr;
+      roll = std::isfinite(hl) && std::isfinite(hr) && L > 0 ? (hl - hr) / L : 0.0;
+      if (geo) {
+        auto f = [&](double phi) { return first_contact_height(+1, pose.y, phi, ws) - first_contact_height(-1, pose.y, phi, ws); };
+        roll = roll_root(f, roll, f(roll), L, false);
+      }
+    }
+    solve_at(roll);
     out.roll = roll;
     out.Z = pose.Z;
   } else {
     // Each wheel's axle end stands its descent below first contact: the virtual penetration δz
-    // of eq. 11 (multi-Hertzian, as Position prescribes it), the rigid approach otherwise.
+    // of eq. 11 (multi-Hertzian, as Position prescribes it), the rigid approach otherwise; w.h is
+    // the first-contact height at the roll solved at.
     auto end_height = [](const WheelResult& w) {
       if (is_failure(w.r.status)) return kNaN;
       const double d = std::isfinite(w.r.dz) ? w.r.dz : w.r.approach;
       return w.h - d;
     };
-    // Z + σ φ L_s = h_s − δ_s on both wheels.
-    const double zl = end_height(out.left), zr = end_height(out.right);
-    const double Ll = roll_lever(+1, pose.y), Lr = roll_lever(-1, -pose.y);
-    out.roll = (zl - zr) / (Ll + Lr);
-    out.Z = zl - out.roll * Ll;
+    solve_at(roll);
+    double zl = end_height(out.left), zr = end_height(out.right);
+    if (pose.solve_roll) {
+      // One rigid axle: Z + σ φ L_s = h_s − δ_s on both wheels, the roll from the difference. With
+      // the roll in the geometry both wheels are solved again at each roll of a root search on
+      // Z_L(φ) − Z_R(φ) (roll_root: the levers give its first slope).
+      if (!geo) {
+        const double d = (zl - zr) / (Ll + Lr);
+        roll += d;
+        zl -= d * Ll;  // Z = z_L − φ L_L
+        zr = zl;
+      } else {
+        auto f = [&](double phi) {
+          solve_at(phi);
+          zl = end_height(out.left), zr = end_height(out.right);
+          return zl - zr;
+        };
+        roll = roll_root(f, roll, zl - zr, Ll + Lr, true);
+      }
+    }
+    out.roll = roll;
+    out.Z = 0.5 * (zl + zr);
   }
+  out.status = worse(out.left.r.status, out.right.r.status);
+  out.total = Wrench{};
+  add_wrench(out.total, out.left.on_wheelset);
+  add_wrench(out.total, out.right.on_wheelset);
   out.warnings.clear();
-  if (std::fabs(out.roll) > opt.roll_limit)
+  if (!geo && std::fabs(out.roll) > opt.roll_limit)
     out.warnings.push_back({WheelsetWarning::Kind::RollInGeometryNeglected, 0, std::fabs(out.roll), opt.roll_limit});
-  if (std::fabs(out.roll) > 1e-4) {
+  if (!geo && std::fabs(out.roll) > 1e-4) {
     for (const WheelResult* w : {&out.left, &out.right}) {
       double g = 0;
       for (const ContactPoint& c : w->contacts) g = std::max(g, c.gamma);

@@ -18,13 +18,13 @@
 // pair (t_Y > 0: towards that wheel's flange contact).
 //
 // What is modelled, and the limits (each reported as a WheelsetWarning when it applies):
-//  - roll φ (about x, positive raising the left wheel) enters the height of each wheel's contact
-//    to first order (δz_s = h_s − Z − σ φ L_s, roll_lever()), not the contact geometry: each
-//    pair's tables are those of the wheel upright on its rail, so the relative roll ±φ of wheel
-//    against rail is neglected in the contact point, angle and curvatures (a contact-angle error
-//    of |φ|): warning roll_in_geometry_neglected above WheelsetStepOptions::roll_limit; near the
-//    flange the roll moves the contact point itself, which the first-order rule misses: warning
-//    roll_near_flange (WheelsetStepOptions::roll_flange_gamma, with the measured error);
+//  - roll φ (about x, positive raising the left wheel): with the multi-Hertzian method each wheel
+//    is rolled against its rail by δ = σ φ about the axle centre (pair_pose(), method.md §3.8):
+//    its candidates are those of the rolled profile (contact point, angle, curvatures, gaps), its
+//    height that of the rolled wheel's first contact, the spin that of the rolled axle. The grid
+//    methods' gap is the upright wheel's: there the roll enters each wheel's height only, to first
+//    order (δz_s = h_s − Z − σ φ L_s, roll_lever()), with the warnings roll_in_geometry_neglected
+//    above WheelsetStepOptions::roll_limit and roll_near_flange (roll_flange_gamma);
 //  - yaw ψ enters the creepages (η = (ẏ − Ω r ψ)/(V cos γ), docs/method.md §10), not the
 //    contact point: the lead of the contact point ahead of the axle, x ≈ −r tan γ tan ψ for a
 //    cone, is not modelled; warning yaw_lead_not_modelled when |x| exceeds a tenth of the
@@ -77,7 +77,14 @@ struct WheelsetSetup {
   /// multi-Hertzian ellipse), tangential.kin is replaced by each step's velocities. Default: the
   /// wheelset call's (wheelset_method_options).
   MethodOptions method = wheelset_method_options();
-  GeometryOptions geometry;  ///< the t_Y range of the tables covers |y| up to its bounds
+  /// The pairs' tables. Their t_Y range must cover |y| plus the roll's shift R0 |φ| (pair_pose:
+  /// 4.6 mm at 10 mrad): default −16 … +18 mm (the single pair's −10 … +12 mm widened).
+  GeometryOptions geometry = [] {
+    GeometryOptions g;
+    g.tY_min = -16e-3;
+    g.tY_max = 18e-3;
+    return g;
+  }();
 };
 
 /// How the vertical state of a step is given.
@@ -97,8 +104,11 @@ struct WheelsetPose {
   /// upright (rail frames' z = 0 at track z = 0), L_s its roll lever (roll_lever()). As
   /// mhc_solve_approach, multi-Hertzian only.
   double Z = 0;
-  bool solve_roll = true;  ///< Position: φ such that both wheels touch at one height (else `roll` given)
-  double roll = 0;      ///< [rad] Position with solve_roll false: the roll φ
+  /// Position: φ such that both wheels touch at one height; Loads: φ such that the two wheels'
+  /// approaches agree on one rigid axle. False: `roll` given (Loads: each wheel then carries its load
+  /// at that roll, and Z is the mean of the two wheels' axle heights).
+  bool solve_roll = true;
+  double roll = 0;      ///< [rad] with solve_roll false: the roll φ
   // Velocities for the creepages (used when the setup has friction):
   double V = 0;               ///< [m/s] forward speed (> 0 with friction)
   double lateral_velocity = 0;  ///< [m/s] ẏ
@@ -140,7 +150,8 @@ struct ContactPoint {
 /// One wheel's answer.
 struct WheelResult {
   int side = 0;        ///< +1 left, −1 right
-  double tY = 0;       ///< [m] the pair's t_Y = σ y
+  double tY = 0;       ///< [m] the pair's t_Y: σ y, plus the roll's shift when it enters the geometry (pair_pose)
+  double delta = 0;    ///< [rad] the wheel's roll against its rail in its pair's frame, σ φ (0 when not modelled)
   double h = 0;        ///< [m] axle height at which this wheel first touches its rail, at t_Y
   CaseResult r;        ///< the single-pair result (pair frame): status, warnings, ellipses, tangential
   std::vector<ContactPoint> contacts;  ///< the loaded contacts in track coordinates
@@ -174,10 +185,11 @@ struct WheelsetStepOptions {
   double fd_Q = 1e-4;        ///< [-] Loads: in each Q, relative (default 1e-4)
   /// |lead| above this fraction of the contact's semi-axis a: yaw_lead_not_modelled (default 0.1).
   double lead_fraction = 0.1;
-  /// [rad] |φ| above this: roll_in_geometry_neglected (default 1 mrad: the neglected relative roll
-  /// turns the normal force by φ, a lateral-force error of φ N cos γ, 0.1 % of N).
+  /// [rad] Grid methods only (the multi-Hertzian method rolls each wheel against its rail): |φ|
+  /// above this, roll_in_geometry_neglected (default 1 mrad; against CONTACT a roll 0.1 mrad off
+  /// the kinematic one already moves a centred tread contact's Fx by 7.8 % of μN, docs/c-api.md).
   double roll_limit = 1e-3;
-  /// [rad] a loaded contact steeper than this under a roll |φ| > 0.1 mrad: roll_near_flange
+  /// [rad] Grid methods only: a loaded contact steeper than this under a roll |φ| > 0.1 mrad: roll_near_flange
   /// (default 25°). The first-order roll (roll_lever) assumes the contact point stays where the
   /// upright wheel has it; near the flange the roll moves it (S1002 on 60E1 1:40, the roll solved
   /// against geometry/wheelset's exact rotation: within 3 % up to y = 6 mm, γ 21°; at 6.5 mm
@@ -191,6 +203,7 @@ struct WheelsetWorkspace {
   GridWorkspace grid;
   ApproachWorkspace approach;
   WheelResult plus, minus;  ///< the derivatives' perturbed solves
+  std::vector<CandidateGeom> cand;  ///< the rolled candidates of first_contact_height
 };
 
 /// A wheelset on its track: the two pairs' tables built once (tens of milliseconds), then
@@ -214,6 +227,20 @@ class WheelsetContact {
   /// [m] The axle height at which wheel `side` first touches its rail at its t_Y (linear in the
   /// table); NaN outside the table.
   double first_contact_height(int side, double tY) const;
+  /// Whether the roll enters each pair's contact geometry (the multi-Hertzian method: the rolled
+  /// candidates of ContactGeometry::candidates_at(t, δ)); otherwise only the heights, to first
+  /// order (roll_lever), and the warnings say so.
+  bool roll_in_geometry() const { return setup_.method.method == Method::MultiHertzian; }
+  /// The pair's pose of wheel `side` for the wheelset at lateral y rolled by φ (method.md §3.8,
+  /// eq. 3.8.2): the wheel's roll against its rail δ = σ φ and the t_Y that puts its rolled
+  /// profile where the wheelset's rotation about the axle centre puts it,
+  /// t_Y = σ y + a (cos δ − 1) + (z0 + R0) sin δ (a: taping line from the centre, z0 + R0: the
+  /// axle above the wheel profile's origin). φ = 0: (σ y, 0).
+  void pair_pose(int side, double y, double roll, double* tY, double* delta) const;
+  /// [m] The axle-centre height at which wheel `side` first touches its rail with the wheelset at
+  /// y rolled by φ, from the rolled candidates (roll_in_geometry()); φ = 0 or not modelled:
+  /// first_contact_height(side, σ y) − σ φ roll_lever(side, σ y), the first-order rule.
+  double first_contact_height(int side, double y, double roll, WheelsetWorkspace& ws) const;
   /// [m] The lever L_s of the roll on wheel `side`'s first-contact height at its t_Y: rolling the
   /// wheelset by φ lowers that height by σ φ L_s to first order, L_s = a + y_w − r tan γ of the
   /// main contact (y_w, r, γ from the table; the rotated profile's contact point moves, hence the

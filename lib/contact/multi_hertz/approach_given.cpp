@@ -42,7 +42,7 @@ void solve_multi_hertz_approach(const ContactGeometry& G, const Material& mat, d
   const std::size_t ne = G.n_ellipses();
   ws.geo.resize(ne);
   int main = 0;
-  G.candidates_at(tY, ws.geo.data(), &main);
+  G.candidates_at(tY, opt.roll, ws.geo.data(), &main);
   for (std::size_t e = 0; e < ne; ++e) {
     const CandidateGeom& g = ws.geo[e];
     const double h = (dz - g.gap) * std::cos(g.gamma);  // (eq. 11)

@@ -117,7 +117,7 @@ void candidate_ellipses(const ContactGeometry& G, const Material& mat, double tY
   const std::size_t ne = G.n_ellipses();
   std::vector<CandidateGeom> geo(ne);
   int main = 0;
-  G.candidates_at(tY, geo.data(), &main);
+  G.candidates_at(tY, opt.roll, geo.data(), &main);
   out.assign(ne, CandidateEllipse{});
   for (std::size_t e = 0; e < ne; ++e) {
     CandidateEllipse& c = out[e];
@@ -159,7 +159,7 @@ void solve_multi_hertz(const ContactGeometry& G, const Material& mat, double tY,
   geo.resize(ne);
   cs.clear();
   int main = 0;
-  G.candidates_at(tY, geo.data(), &main);
+  G.candidates_at(tY, opt.roll, geo.data(), &main);
   // Flange climb (method.md §3.7): the main contact at this t_Y has passed the wheel's steepest
   // flange point. Geometric, the same for every method: the grid methods copy it from this
   // solution, their start (contact/grid/patch_driver.hpp).

@@ -18,8 +18,10 @@ Creepages creepages_from_kinematics(const Kinematics& k, const ContactKinematicP
   // Lateral slip v_y = ẏ − Ω r ψ ≈ ẏ − V ψ; the wheel stays on the rail (v · n = 0), so the
   // in-plane component along ŝ is v_y / cos γ.
   c.eta = (k.lateral_velocity / k.V - k.yaw * Omega * p.r_roll / k.V) / cg;
-  // Spin: ω · n / V with n = (0, −sin γ, cos γ).
-  c.phi = (k.yaw_rate * cg - Omega * sg) / k.V;
+  // Spin: ω · n / V with n = (0, −sin γ, cos γ) and the axle rolled by δ, ω = (·, Ω cos δ,
+  // Ω sin δ + ψ̇): Ω's share −Ω sin(γ − δ) (method.md §10).
+  const double sgw = k.roll == 0 ? sg : std::sin(p.gamma - k.roll);
+  c.phi = (k.yaw_rate * cg - Omega * sgw) / k.V;
   return c;
 }
 

@@ -21,6 +21,9 @@ struct Kinematics {
   /// [rad/s] the wheel's rotation rate Ω about its axle (positive: rolling forward); NaN: rolling
   /// at the nominal radius, Ω = V / r0.
   double pitch_rate = NAN;
+  /// [rad] the wheel's roll δ against the rail (pair frame, MultiHertzOptions::roll): the axle
+  /// turned by δ about x turns the spin's share of Ω to sin(γ − δ). Default 0.
+  double roll = 0;
 };
 
 /// Where the contact sits on the wheelset (from the contact geometry).

@@ -81,7 +81,7 @@ TEST_CASE("C wheelset: the interface version is negotiable at run time", "[capi]
   CHECK(mhc_interface_version(nullptr) == MHC_INTERFACE_VERSION);
 }
 
-TEST_CASE("C wheelset: each wheel is the single-pair call at t_Y = +-y", "[capi][wheelset_contact]") {
+TEST_CASE("C wheelset: each wheel is the single-pair call at its t_Y and relative roll", "[capi][wheelset_contact]") {
   // Normal contact only: the single-pair call has no friction (with it, the creep forces' vertical
   // share enters each wheel's load balance, docs/method.md §10 eq. 10.1; checked below).
   mhc_wheelset_workspace* w0 = nullptr;
@@ -96,10 +96,14 @@ TEST_CASE("C wheelset: each wheel is the single-pair call at t_Y = +-y", "[capi]
   for (int side = 0; side < 2; ++side) {
     mhc_result s;
     s.struct_size = sizeof s;
-    const double tY = side == 0 ? p.y_m : -p.y_m;
-    REQUIRE(mhc_solve_load(fx().pair, pw, tY, 0, side == 0 ? p.Q_left_N : p.Q_right_N, &s) == MHC_OK);
+    // The wheelset's roll (the loads differ) rolls each wheel against its rail by sigma roll, its
+    // t_Y shifted by the rotation about the axle centre (docs/method.md section 3 item 8): the
+    // single-pair call at the wheel's own t_Y with that relative roll.
     const mhc_wheelset_wheel& wh = r.wheel[side];
-    CHECK(wh.tY_m == tY);
+    const double tY = wh.tY_m, delta = side == 0 ? r.roll_rad : -r.roll_rad;
+    CHECK(std::fabs(r.roll_rad) > 1e-5);
+    CHECK(std::fabs(tY - (side == 0 ? p.y_m : -p.y_m)) < 0.47 * std::fabs(r.roll_rad));
+    REQUIRE(mhc_solve_load(fx().pair, pw, tY, delta, side == 0 ? p.Q_left_N : p.Q_right_N, &s) == MHC_OK);
     CHECK(wh.status == s.status);
     CHECK(wh.warnings == s.warnings);
     CHECK(wh.n_warnings == s.n_warnings);

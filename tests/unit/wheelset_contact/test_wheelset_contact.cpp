@@ -11,7 +11,9 @@
 //    "yaw: the lateral creep forces";
 //  - first_contact_height without the −gmin: "first-contact heights", "derivatives";
 //  - a central difference divided by h instead of 2h: "derivatives";
-//  - the roll lever without its r tan γ (a + y_w only): "first-contact heights and the solved roll".
+//  - the roll lever without its r tan γ (a + y_w only): "first-contact heights and the solved roll"
+//    (then with the first-order rule; now the rolled geometry's roll is held against the exact
+//    rotation, and a pair_pose without its (z0 + R0) sin δ shift fails it: 6.5 mm, 4.17 mrad).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -119,8 +121,16 @@ TEST_CASE("wheelset: each contact is the single-pair call at t_Y = sigma y", "[w
     o.tangential.kin.yaw_rate = sigma * p.yaw_rate;
     o.tangential.l_origin = 0.75;
     const double Q = sigma > 0 ? p.Q_left : p.Q_right;
-    const mh::CaseResult c = mh::solve_contact(G, s.material, sigma * p.y, Q, o);
+    // The wheelset's roll (the loads differ) rolls each wheel against its rail: the pair's pose.
     const mh::WheelResult& w = sigma > 0 ? r.left : r.right;
+    double tY = 0, delta = 0;
+    W.pair_pose(sigma, p.y, r.roll, &tY, &delta);
+    CHECK(w.tY == tY);
+    CHECK(delta == sigma * r.roll);
+    CHECK(std::fabs(r.roll) > 1e-5);
+    o.multi_hertzian.roll = delta;
+    o.tangential.kin.roll = delta;
+    const mh::CaseResult c = mh::solve_contact(G, s.material, tY, Q, o);
     REQUIRE(c.loaded.size() == w.r.loaded.size());
     CHECK(c.status == w.r.status);
     CHECK(c.dz == w.r.dz);
@@ -152,36 +162,30 @@ TEST_CASE("wheelset: first-contact heights and the solved roll against the rigid
     REQUIRE(st.found);
     CHECK(W.first_contact_height(+1, y) == Approx(st.left.h).margin(1e-6));
     CHECK(W.first_contact_height(-1, -y) == Approx(st.right.h).margin(1e-6));
-    // Roll solved, the wheelset 20 µm below the height where both wheels touch: both carry the
-    // same virtual penetration, so both are loaded.
+    // Roll solved, the wheelset 20 µm below the height where both wheels touch at that roll: both
+    // carry the same virtual penetration, so both are loaded. The roll does not depend on Z.
     mh::WheelsetPose p;
     p.y = y;
     p.vertical = mh::WheelsetVertical::Position;
     p.solve_roll = true;
-    const double hl = W.first_contact_height(+1, y), hr = W.first_contact_height(-1, -y);
-    const double Ll = W.roll_lever(+1, y), Lr = W.roll_lever(-1, -y);
-    p.Z = hl - (hl - hr) / (Ll + Lr) * Ll - 20e-6;
+    p.Z = W.first_contact_height(+1, y);
     mh::WheelsetResult r;
     W.step(p, {}, r, ws);
-    CHECK(r.left.r.dz == Approx(20e-6).margin(1e-12));
-    CHECK(r.right.r.dz == Approx(20e-6).margin(1e-12));
+    p.Z = W.first_contact_height(+1, y, r.roll, ws) - 20e-6;
+    CHECK(W.first_contact_height(-1, y, r.roll, ws) == Approx(p.Z + 20e-6).margin(1e-9));
+    W.step(p, {}, r, ws);
+    CHECK(r.left.r.dz == Approx(20e-6).margin(1e-9));
+    CHECK(r.right.r.dz == Approx(20e-6).margin(1e-9));
     CHECK(r.left.r.Fz > 0);
     CHECK(r.right.r.Fz > 0);
-    // The roll of the first-order rule (roll_lever: each wheel upright on its rail, the contact
-    // point where the upright wheel has it) against the exact rotation of geometry/wheelset (roll
-    // positive raising the RIGHT end there): within 3 %, or 5 µrad, while the contacts stay below
-    // 25°; beyond, the roll moves the contact onto the flange and the rule fails, which the
-    // warning roll_near_flange says (6.5 mm: 0.84 against 4.17 mrad, measured).
+    // The roll where both wheels touch, each rolled against its rail (method.md §3.8), against the
+    // exact rotation of geometry/wheelset (roll positive raising the RIGHT end there), an
+    // independent contact search: within 1 %, or 2 µrad, also near the flange (6.5 mm: γ 29° on
+    // the upright wheel, 4.17 mrad; the first-order rule gave 0.84 mrad there).
     const mh::WheelsetState sr = geo_roll.at(-y);
     REQUIRE(sr.converged);
-    bool near_flange = false;
-    for (const auto& w : r.warnings) near_flange = near_flange || w.kind == mh::WheelsetWarning::Kind::RollNearFlange;
-    if (std::fabs(y) <= 6 * mm) {
-      CHECK(r.roll == Approx(-sr.roll).margin(std::max(5e-6, 0.03 * std::fabs(sr.roll))));
-      CHECK(!near_flange);
-    } else {
-      CHECK(near_flange);
-    }
+    CHECK(r.roll == Approx(-sr.roll).margin(std::max(2e-6, 0.01 * std::fabs(sr.roll))));
+    CHECK(r.warnings.empty());
   }
 }
 
@@ -230,8 +234,9 @@ TEST_CASE("wheelset: derivatives against finite differences of other steps and t
   const auto dZ = fd([](mh::WheelsetPose& q, double h) { q.Z += h; }, 3e-6);
   for (int k = 0; k < 3; ++k) {
     INFO("component " << k);
-    // Tolerance: 2 % of the largest component of each derivative (the differences' truncation
-    // and the tables' linear interpolation in t_Y).
+    // Tolerance: 2 % of the largest component of each derivative (the differences' truncation,
+    // the tables' linear interpolation in t_Y and, the wheels rolled, the rolled minimum's
+    // roughness: 0.65 % here, up to 11 % elsewhere on this tread, docs/c-api.md).
     auto scale = [](const std::array<double, 3>& d) { return std::max({std::fabs(d[0]), std::fabs(d[1]), std::fabs(d[2])}); };
     CHECK(r.dF_dy[k] == Approx(dy[k]).margin(0.02 * scale(dy)));
     CHECK(r.dF_droll[k] == Approx(dr[k]).margin(0.02 * scale(dr)));
@@ -254,8 +259,10 @@ TEST_CASE("wheelset: yaw: the lateral creep forces of both wheels act the same w
   REQUIRE(r.left.r.tangential.solved);
   const double dl = r.left.on_wheelset.F[1] - r0.left.on_wheelset.F[1];
   const double dr = r.right.on_wheelset.F[1] - r0.right.on_wheelset.F[1];
-  // The two contacts differ at y = 1 mm (t_Y = ±1 mm: other radii, angles, ellipses): 20 %.
-  CHECK(dl == Approx(dr).epsilon(0.2));
+  // The two contacts differ at y = 1 mm (t_Y = ±1 mm and each wheel rolled against its rail:
+  // other radii, angles, ellipses): 30 % (measured 26 %, 20 % before the roll entered the
+  // geometry; the break it guards gives −100 %).
+  CHECK(dl == Approx(dr).epsilon(0.3));
   // Held at ẏ = 0, a wheel rolling along its yawed x slips towards −y at the contact (−Ω r ψ):
   // the rail pushes it towards +y, the way the wheelset would run.
   CHECK(dl > 100);
@@ -270,7 +277,7 @@ TEST_CASE("wheelset: the yaw lead warning at flange contact, not at the tread", 
   p.yaw = 5e-3;
   W.step(p, {}, r, ws);
   CHECK(r.warnings.empty());
-  p.y = 8 * mm;  // left flange (and a roll above 1 mrad: roll_in_geometry_neglected too)
+  p.y = 8 * mm;  // left flange (its roll of several mrad in the geometry: no roll warning)
   W.step(p, {}, r, ws);
   int leads = 0;
   for (const auto& w : r.warnings) {

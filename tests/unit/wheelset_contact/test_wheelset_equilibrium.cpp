@@ -63,7 +63,9 @@ TEST_CASE("wheelset: the vertical equilibrium to 1e-5 Q against the same steps t
       const mh::WheelResult& b = side == 0 ? rt.left : rt.right;
       REQUIRE(a.contacts.size() == b.contacts.size());
       for (std::size_t i = 0; i < a.contacts.size(); ++i) {
-        CHECK(a.contacts[i].gamma == b.contacts[i].gamma);
+        // The same contact: with the roll in the geometry the roll solved to the load's tolerance
+        // moves the rolled contact angle by far less than a microradian.
+        CHECK(std::fabs(a.contacts[i].gamma - b.contacts[i].gamma) < 1e-6);
         worst_N = std::max(worst_N, std::fabs(a.contacts[i].N - b.contacts[i].N));
       }
       for (int k = 0; k < 3; ++k) worst_F = std::max(worst_F, std::fabs(a.on_wheelset.F[k] - b.on_wheelset.F[k]));
