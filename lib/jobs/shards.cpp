@@ -14,14 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
-#if defined(__unix__) || defined(__APPLE__)
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
-#endif
-
 #include "core/errors.hpp"
+#include "jobs/shard_text.hpp"
 #include "output/json_stream.hpp"
 #include "output/output_file.hpp"
 #include "output/run_dir.hpp"
@@ -46,84 +40,6 @@ void parse_shard(const std::string& text, unsigned* index, unsigned* count) {
 }
 
 namespace {
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot read (is this the output directory of a `run --shard`?)");
-  in.seekg(0, std::ios::end);
-  std::string text(static_cast<std::size_t>(std::max<std::streamoff>(in.tellg(), 0)), '\0');
-  in.seekg(0);
-  if (!in.read(text.data(), static_cast<std::streamsize>(text.size()))) throw InputError(path, "", "cannot read it to its end");
-  return text;
-}
-
-// A shard's file, read-only: mapped where the system has mmap (no copy of hundreds of MB into
-// the process, no zeroed buffer), else read whole. `populate`: every page mapped at once
-// (MAP_POPULATE) for a pass over the whole text, instead of a page fault per 4 kB page.
-// The file stays open, so that pieces of it can be copied by the kernel (put_verbatim).
-class ShardText {
- public:
-  ShardText(const std::string& path, bool populate, const char* missing_rule) {
-#if defined(__unix__) || defined(__APPLE__)
-    fd_ = ::open(path.c_str(), O_RDONLY);
-    if (fd_ < 0) throw InputError(path, "", missing_rule);
-    struct stat st {};
-    if (::fstat(fd_, &st) == 0 && st.st_size > 0) {
-      size_ = static_cast<std::size_t>(st.st_size);
-      int flags = MAP_PRIVATE;
-#ifdef MAP_POPULATE
-      if (populate) flags |= MAP_POPULATE;
-#endif
-      void* p = ::mmap(nullptr, size_, PROT_READ, flags, fd_, 0);
-      if (p != MAP_FAILED) map_ = p;
-    }
-    if (map_) {
-      text_ = std::string_view(static_cast<const char*>(map_), size_);
-      return;
-    }
-    ::close(fd_);
-    fd_ = -1;
-#endif
-    (void)populate;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, "", missing_rule);
-    copy_ = read_all(path);
-    text_ = copy_;
-  }
-  ~ShardText() {
-#if defined(__unix__) || defined(__APPLE__)
-    if (map_) ::munmap(map_, size_);
-    if (fd_ >= 0) ::close(fd_);
-#endif
-  }
-  ShardText(const ShardText&) = delete;
-  ShardText& operator=(const ShardText&) = delete;
-  std::string_view text() const { return text_; }
-  /// The open file (-1: read whole, not mapped).
-  int fd() const { return fd_; }
-  /// The byte offset in the file of `part`, a view into text() (-1: the text is a copy).
-  long long offset(std::string_view part) const {
-    if (fd_ < 0 || part.data() < text_.data() || part.data() + part.size() > text_.data() + text_.size()) return -1;
-    return static_cast<long long>(part.data() - text_.data());
-  }
-
- private:
-  int fd_ = -1;
-  void* map_ = nullptr;
-  std::size_t size_ = 0;
-  std::string copy_;
-  std::string_view text_;
-};
-
-// `text`, a view into `src`, appended to `f`: a piece of 64 kB or more by a copy inside the kernel
-// (OutputFile::append_copy; through the process the bytes cost twice the CPU time: the pages
-// mapped in, then copied into the page cache), a smaller one or where the system cannot, written.
-void put_verbatim(OutputFile& f, const ShardText& src, std::string_view text) {
-  constexpr std::size_t kMinCopy = std::size_t{1} << 16;
-  const long long at = src.offset(text);
-  if (text.size() >= kMinCopy && at >= 0 && f.append_copy(src.fd(), at, text.size())) return;
-  f.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
-}
 
 // Open a shard's CSV file and check its header against `header` (set from the first shard);
 // the header is copied to `out` when `with_header`.
@@ -200,94 +116,6 @@ void rebase_profile_files(Json& inputs, const fs::path& shard_dir, const fs::pat
   }
 }
 
-
-// results.json as JsonObjectStream (output/json_stream.hpp) writes it, split as text without
-// parsing it: an object's members stand one per line at its indentation `pad` (2 in the
-// document, 6 in a batch's pair record), `"key": value`, the value's continuation lines indented
-// deeper, its closing bracket at `pad`; a streamed array's records one per line at 2 × pad.
-// JSON strings hold no raw newline, so a line of exactly `pad` spaces and a quote after a comma
-// starts the next member, and a line of `pad` - 2 spaces and `}` closes the object.
-struct JsonMember {
-  std::string key;
-  std::string_view value;  // as it stands after `"key": `
-  std::size_t lines = 0;   // newlines in value (a streamed array: its records + 1)
-};
-
-bool text_at(std::string_view t, std::size_t p, std::string_view s) { return p <= t.size() && t.substr(p, s.size()) == s; }
-
-[[noreturn]] void bad_results(const std::string& path, std::size_t at, const std::string& what) {
-  throw InputError(path, "at byte " + std::to_string(at), "not a results.json as mhcontact run writes it: " + what,
-                   "give the shard directories as `run --shard` wrote them (re-run that shard)");
-}
-
-// The members of the object whose `{` is t[open]; returns the index just past its `}`. With
-// `stop_at` given, stops at the start of the member of that key (which is not split, nor the
-// members after it) and returns its index. One pass over the text: a memchr per line.
-// split_members: the same from t[p], the newline before a member (or before the object's `}`).
-std::size_t split_members(std::string_view t, std::size_t p, std::size_t pad, std::vector<JsonMember>* out, const std::string& path,
-                          std::string_view stop_at = {}) {
-  const std::string lead = "\n" + std::string(pad, ' '), close = "\n" + std::string(pad - 2, ' ') + "}";
-  if (text_at(t, p, close)) return p + close.size();
-  for (;;) {
-    if (!text_at(t, p, lead + "\"")) bad_results(path, p, "a member expected at indentation " + std::to_string(pad));
-    const std::size_t k = p + lead.size() + 1, ke = t.find('"', k);
-    if (ke == std::string_view::npos || !text_at(t, ke + 1, ": ")) bad_results(path, k, "a member's key expected");
-    std::string key(t.substr(k, ke - k));
-    if (!stop_at.empty() && key == stop_at) return p;
-    const std::size_t v = ke + 3;
-    for (std::size_t q = v, lines = 0;; ++q, ++lines) {
-      q = t.find('\n', q);
-      if (q == std::string_view::npos) bad_results(path, v, "the document ends inside the member \"" + key + "\"");
-      if (t[q - 1] == ',' && text_at(t, q, lead + "\"")) {
-        out->push_back({std::move(key), t.substr(v, q - 1 - v), lines});
-        p = q;
-        break;
-      }
-      if (text_at(t, q, close)) {
-        out->push_back({std::move(key), t.substr(v, q - v), lines});
-        return q + close.size();
-      }
-    }
-  }
-}
-
-std::size_t split_object(std::string_view t, std::size_t open, std::size_t pad, std::vector<JsonMember>* out, const std::string& path,
-                         std::string_view stop_at = {}) {
-  if (open >= t.size() || t[open] != '{') bad_results(path, open, "an object expected");
-  return split_members(t, open + 1, pad, out, path, stop_at);
-}
-
-// A member `key` whose value is `value`, a view into `src`, copied as it stands (a large value by
-// put_verbatim; the stream writes the separator, the key and the value's first byte).
-void member_copied(JsonObjectStream& w, OutputFile& f, const ShardText& src, const std::string& key, std::string_view value) {
-  if (value.size() < 2) return w.member_verbatim(key, value);
-  w.member_verbatim(key, value.substr(0, 1));
-  put_verbatim(f, src, value.substr(1));
-}
-
-// Records of the open array of `w` as JsonObjectStream::elements_verbatim takes them, `records`
-// a view into `src` (the stream writes the separator and the first byte, the rest put_verbatim).
-void elements_copied(JsonObjectStream& w, OutputFile& f, const ShardText& src, std::string_view records) {
-  if (records.empty()) return;
-  w.elements_verbatim(records.substr(0, 1));
-  put_verbatim(f, src, records.substr(1));
-}
-
-// The records of a streamed array member (`value` of a member at indentation `pad`) as
-// JsonObjectStream::elements_verbatim takes them; empty for `[]`.
-std::string_view array_records(std::string_view value, std::size_t pad, const std::string& path, const std::string& key) {
-  if (value == "[]") return {};
-  const std::string tail = "\n" + std::string(pad, ' ') + "]";
-  if (value.size() < 2 + tail.size() || value.substr(0, 2) != "[\n" || value.substr(value.size() - tail.size()) != tail)
-    bad_results(path, 0, "\"" + key + "\" is not an array of records");
-  return value.substr(2, value.size() - 2 - tail.size());
-}
-
-const JsonMember* find_member(const std::vector<JsonMember>& ms, const std::string& key) {
-  for (const auto& m : ms)
-    if (m.key == key) return &m;
-  return nullptr;
-}
 
 // A member `inputs` written as the member "inputs" of a stream at `pad`: its profile files
 // rebased from the shard's directory to the merged one (parsed: a few hundred bytes).
