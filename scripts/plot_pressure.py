@@ -107,6 +107,26 @@ def of_case(rows, a):
     return [r for r in rows if int(r["case"]) == a.case and (a.pair is None or int(r.get("pair", -1)) == a.pair)]
 
 
+def regular_grid(rows, xkey, ykey, columns, fill, step=0.2):
+    """The rows of one contact of pressure.csv on their regular grid: the x and y node values
+    (numpy arrays), the spacings dx, dy (`step` where a direction has one node) and a dict of
+    (ny, nx) arrays, one per name in `columns`, `fill` where no row stands."""
+    import numpy as np  # noqa: E402
+
+    xs = sorted({fnum(r[xkey]) for r in rows})
+    ys = sorted({fnum(r[ykey]) for r in rows})
+    dx = min(np.diff(xs)) if len(xs) > 1 else step
+    dy = min(np.diff(ys)) if len(ys) > 1 else step
+    nx, ny = int(round((xs[-1] - xs[0]) / dx)) + 1, int(round((ys[-1] - ys[0]) / dy)) + 1
+    out = {c: np.full((ny, nx), fill, dtype=float) for c in columns}
+    for r in rows:
+        i = int(round((fnum(r[xkey]) - xs[0]) / dx))
+        j = int(round((fnum(r[ykey]) - ys[0]) / dy))
+        for c in columns:
+            out[c][j, i] = fnum(r[c])
+    return xs[0] + dx * np.arange(nx), ys[0] + dy * np.arange(ny), dx, dy, out
+
+
 def grid_map(a, batch):
     """The 2-D pressure map of a half-space or strip run (module docstring)."""
     import matplotlib.patches as mpatches  # noqa: E402
@@ -172,16 +192,10 @@ def grid_map(a, batch):
         y_ref = fnum(P["y_rail_mm"])
         if kind == "grid":
             pr = [r for r in rows if r["patch"] == pid]
-            xs = sorted({fnum(r["x_mm"]) for r in pr})
-            ss = sorted({fnum(r["s_mm"]) for r in pr})
-            dx = min(np.diff(xs)) if len(xs) > 1 else 0.2
-            ds = min(np.diff(ss)) if len(ss) > 1 else 0.2
-            x0, s0 = xs[0], ss[0]
-            nx, ns = int(round((xs[-1] - x0) / dx)) + 1, int(round((ss[-1] - s0) / ds)) + 1
-            grid = np.full((ns, nx), np.nan)
-            for r in pr:
-                grid[int(round((fnum(r["s_mm"]) - s0) / ds)), int(round((fnum(r["x_mm"]) - x0) / dx))] = fnum(r["p_MPa"])
-            ext = (x0 - dx / 2, xs[-1] + dx / 2, s0 - ds / 2, ss[-1] + ds / 2)
+            xv, sv, dx, ds, g = regular_grid(pr, "x_mm", "s_mm", ["p_MPa"], np.nan)
+            grid = g["p_MPa"]
+            x0, s0, ns = xv[0], sv[0], len(sv)
+            ext = (x0 - dx / 2, xv[-1] + dx / 2, s0 - ds / 2, sv[-1] + ds / 2)
         else:
             pr = [r for r in rows if r["patch"] == pid]
             ss = sorted(fnum(r["s_mm"]) for r in pr)

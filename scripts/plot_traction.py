@@ -28,7 +28,7 @@ from matplotlib.colors import ListedColormap  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_pressure import fnum, of_case, read_csv, run_info  # noqa: E402
+from plot_pressure import fnum, of_case, read_csv, regular_grid, run_info  # noqa: E402
 
 NAME = "plot_traction.py"
 
@@ -36,23 +36,10 @@ NAME = "plot_traction.py"
 def contact_grid(rows, xkey, ykey):
     """The regular grid of one contact's rows: x and y values, and (ny, nx) arrays of p, px, py
     and the state (0 outside the contact, 1 adhesion, 2 slip)."""
-    xs = sorted({fnum(r[xkey]) for r in rows})
-    ys = sorted({fnum(r[ykey]) for r in rows})
-    dx = min(np.diff(xs)) if len(xs) > 1 else 1.0
-    dy = min(np.diff(ys)) if len(ys) > 1 else 1.0
-    nx, ny = int(round((xs[-1] - xs[0]) / dx)) + 1, int(round((ys[-1] - ys[0]) / dy)) + 1
-    p, px, py = (np.zeros((ny, nx)) for _ in range(3))
-    state = np.zeros((ny, nx), dtype=int)
-    for r in rows:
-        i = int(round((fnum(r[xkey]) - xs[0]) / dx))
-        j = int(round((fnum(r[ykey]) - ys[0]) / dy))
-        p[j, i] = fnum(r["p_MPa"])
-        px[j, i], py[j, i] = fnum(r["px_MPa"]), fnum(r["py_MPa"])
-        if p[j, i] > 0:
-            state[j, i] = 2 if r["slip"] == "1" else 1
-    x = xs[0] + dx * np.arange(nx)
-    y = ys[0] + dy * np.arange(ny)
-    return x, y, p, px, py, state
+    x, y, _, _, g = regular_grid(rows, xkey, ykey, ["p_MPa", "px_MPa", "py_MPa", "slip"], 0.0, step=1.0)
+    p = g["p_MPa"]
+    state = np.where(p > 0, np.where(g["slip"] == 1, 2, 1), 0)
+    return x, y, p, g["px_MPa"], g["py_MPa"], state
 
 
 def main(argv=None):
