@@ -161,6 +161,7 @@ HalfSpaceTangentialResult HalfSpaceTangentialSolver::solve(const double* pn_in, 
     }
   const double* pn = pn_.data();
   x0 -= dx_;  // the centre of the internal column 0
+  const double xs = kSpinSlipOffset * dx_;  // where the spin's lateral rigid slip is taken (header)
   auto contact = [&](std::size_t e) { return pn[e] > 0; };
   contact_rows_.clear();
   for (int iy = 0; iy < ny_; ++iy)
@@ -236,7 +237,7 @@ HalfSpaceTangentialResult HalfSpaceTangentialSolver::solve(const double* pn_in, 
         const std::size_t e = r + static_cast<std::size_t>(ix);
         if (!contact(e)) continue;
         const double x = x0 + ix * dx_;
-        const double wx = c.xi - c.phi * y, wy = c.eta + c.phi * x;  // rigid slip [K]
+        const double wx = c.xi - c.phi * y, wy = c.eta + c.phi * (x + xs);  // rigid slip (header)
         const double sx = wx + (vrx_[static_cast<std::size_t>(ix)] + cx_[static_cast<std::size_t>(ix)]) / dx_;
         const double sy = wy + (vry_[static_cast<std::size_t>(ix)] + cy_[static_cast<std::size_t>(ix)]) / dx_;
         double tx = 0, ty = 0;
@@ -301,7 +302,7 @@ HalfSpaceTangentialResult HalfSpaceTangentialSolver::solve(const double* pn_in, 
       const double x = x0 + ix * dx_;
       if (state_[e] == ElementState::Slip) {
         sx_[e] = c.xi - c.phi * y + vrx_[static_cast<std::size_t>(ix)] / dx_;
-        sy_[e] = c.eta + c.phi * x + vry_[static_cast<std::size_t>(ix)] / dx_;
+        sy_[e] = c.eta + c.phi * (x + xs) + vry_[static_cast<std::size_t>(ix)] / dx_;
       } else {
         ++res.n_adhesion;
       }
