@@ -123,7 +123,8 @@ class HalfSpaceTangentialSolver {
   int H_;  ///< spectrum length
   std::vector<double> px_, py_, qx_, qy_, sx_, sy_;  ///< nx·ny
   std::vector<double> rx_, ry_;                      ///< row kernels A(k, 0), k = 0 … nx−1
-  std::vector<std::complex<double>> kxx_, kyy_, kxy_;  ///< kernel spectra of row offsets 0 … ny−1
+  std::vector<std::complex<double>> kxx_, kyy_, kxy_;  ///< kernel spectra of row offsets 0 … ny−1 (construction only)
+  std::vector<double> kxx_r_, kyy_r_, kxy_i_;          ///< their real, real, imaginary parts (kept)
   std::vector<std::complex<double>> vx_hat_, vy_hat_;  ///< per row: spectrum of v = A q
   std::vector<std::complex<double>> qx_hat_, qy_hat_;  ///< one row's change of q, transformed
   std::vector<double> vrx_, vry_, cx_, cy_, dqx_, dqy_;  ///< one row
