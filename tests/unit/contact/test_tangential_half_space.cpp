@@ -313,8 +313,9 @@ TEST_CASE("Steady rolling against CONTACT's exact solution on the same Hertzian 
 TEST_CASE("Steady rolling, small creepage: convergence to Kalker's linear theory (80 x 80)",
           "[.][tangential_rolling_convergence]") {
   // Prints the convergence table of docs/half_space.md (20, 40, 80 elements across each axis) and
-  // holds the 80 × 80 grid: C11, C22 within 1.5 %, C23 within 1.2 % (measured: 0.1–1.3 % and
-  // 0.4–1.1 %, the largest at a/b = 5 with elements 5:1; the issue's 0.5 % is not reached).
+  // holds the 80 × 80 grid: C11, C22 within 1.5 %, C23 within 1.1 % (measured 29 Nov 2026:
+  // 0.1–1.3 % and 0.05–0.72 %, the largest at a/b = 5 with elements 5:1; the issue's 0.5 % is not
+  // reached).
   const double G = 82e9, nu = 0.28, c = 5e-3, k = 1e-6, mu = 1e4;
   for (double aob : {0.2, 0.5, 1.0, 2.0, 5.0}) {
     const double a = c * std::sqrt(aob), b = c / std::sqrt(aob);
@@ -336,7 +337,7 @@ TEST_CASE("Steady rolling, small creepage: convergence to Kalker's linear theory
         INFO("a/b = " << aob);
         CHECK(C11 == Approx(ref.C11).epsilon(0.015));
         CHECK(C22 == Approx(ref.C22).epsilon(0.015));
-        CHECK(C23 == Approx(ref.C23).epsilon(0.012));
+        CHECK(C23 == Approx(ref.C23).epsilon(0.011));
       }
     }
   }
