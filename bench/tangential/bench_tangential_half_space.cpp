@@ -1,10 +1,14 @@
 // The exact half-space steady-rolling tangential solve (lib/contact/half_space/tangential_rolling.hpp)
 // on CONTACT's Hertzian patch and grid (a = 8, b = 4 mm, 44 × 44 elements, CONTACT's pressure;
 // tests/data/contact_tangential/hstang/README.md): time per case (best of R solves, one thread,
-// the solver object built once), sweeps, and the forces beside CONTACT's. Prints figures, never
-// asserts. Usage: mhcontact_bench_tangential_half_space SOURCE_DIR [R]
+// the solver object built once), sweeps, and the forces beside CONTACT's; then the normal solve
+// on the same grid (the gap that the Hertzian pressure of a = 8, b = 4 mm, N = 82 kN leaves, load
+// control from zero, default options; best of R and CPU per solve over 10·R), to put beside
+// CONTACT's "Norm: ConjGrd solver" timer on hertz44 (issue 35). Prints figures, never asserts. Usage: mhcontact_bench_tangential_half_space SOURCE_DIR [R]
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -12,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/half_space/normal_cg.hpp"
 #include "contact/half_space/tangential_rolling.hpp"
 
 int main(int argc, char** argv) {
@@ -68,5 +73,33 @@ int main(int argc, char** argv) {
                 v[6] / (mu * N), r.forces.Mz, v[7] * 1e-3, r.forces.adhesion_fraction, v[9] / v[8]);
   }
   std::printf("total %.1f ms for the six cases\n", total);
+
+  // The normal problem on the same grid: the gap g = max u − u of the Hertzian pressure's own
+  // displacement u (zero over the ellipse, positive outside), solved for N = 82 kN.
+  {
+    const double a = 8e-3, b = 4e-3, FN = 82000, p0 = 3 * FN / (2 * 3.14159265358979323846 * a * b);
+    mh::InfluenceGrid C(mx, my, dx, dy, (1 - nu) / (3.14159265358979323846 * G));
+    std::vector<double> ph(pn.size(), 0.0), u(pn.size()), g(pn.size()), p(pn.size());
+    for (int j = 0; j < my; ++j)
+      for (int i = 0; i < mx; ++i) {
+        const double x = x0 + i * dx, y = y0 + j * dy, q = 1 - x * x / (a * a) - y * y / (b * b);
+        ph[static_cast<std::size_t>(i + mx * j)] = q > 0 ? p0 * std::sqrt(q) : 0.0;
+      }
+    C.apply(ph.data(), u.data());
+    const double umax = *std::max_element(u.begin(), u.end());
+    for (std::size_t e = 0; e < u.size(); ++e) g[e] = umax - u[e];
+    double best = 1e300;
+    mh::NormalCGResult nr;
+    const std::clock_t c0 = std::clock();
+    for (int k = 0; k < 10 * reps; ++k) {
+      std::fill(p.begin(), p.end(), 0.0);
+      const auto a0 = std::chrono::steady_clock::now();
+      nr = mh::solve_normal_load(C, g.data(), FN, INFINITY, p.data());
+      best = std::min(best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a0).count());
+    }
+    const double cpu = 1e3 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC / (10 * reps);
+    std::printf("normal solve on the same grid: best %.2f ms, CPU %.2f ms per solve, %d iterations, %d elements in contact\n",
+                best, cpu, nr.iterations, nr.n_contact);
+  }
   return 0;
 }

@@ -24,7 +24,7 @@ bool local_problem(double rx, double ry, double Dx, double Dy, double g, double*
     return true;
   }
   const double gx = g * Dx, gy = g * Dy;
-  double sigma = std::max(0.0, std::hypot(rx, ry) - std::max(gx, gy));
+  double sigma = std::max(0.0, std::sqrt(rx * rx + ry * ry) - std::max(gx, gy));
   for (int it = 0; it < 60; ++it) {
     const double qx = rx / (sigma + gx), qy = ry / (sigma + gy);
     const double f = qx * qx + qy * qy - 1;
@@ -34,7 +34,7 @@ bool local_problem(double rx, double ry, double Dx, double Dy, double g, double*
     if (!(std::fabs(step) > 1e-15 * (sigma + std::min(gx, gy)))) break;
   }
   double tx = -g * rx / (sigma + gx), ty = -g * ry / (sigma + gy);
-  const double t = std::hypot(tx, ty);
+  const double t = std::sqrt(tx * tx + ty * ty);  // tractions [Pa]: no overflow, sqrt is cheaper
   if (t > 0) {  // on the bound to rounding
     tx *= g / t;
     ty *= g / t;
@@ -86,6 +86,15 @@ HalfSpaceTangentialSolver::HalfSpaceTangentialSolver(int nx, int ny, double dx, 
     }
     fft_.forward(ka.data(), kb.data(), m, &kxy_[sh * d], zero.data());
   }
+  // Keep the real parts of the even kernels' spectra and the imaginary part of the odd one's (the
+  // other parts are rounding: offsets −(n−1)…(n−1) wrap symmetrically, RowFft::offset).
+  for (auto* v : {&kxx_r_, &kyy_r_, &kxy_i_}) v->resize(sh * static_cast<std::size_t>(ny));
+  for (std::size_t k = 0; k < sh * static_cast<std::size_t>(ny); ++k) {
+    kxx_r_[k] = kxx_[k].real();
+    kyy_r_[k] = kyy_[k].real();
+    kxy_i_[k] = kxy_[k].imag();
+  }
+  for (auto* v : {&kxx_, &kyy_, &kxy_}) std::vector<std::complex<double>>().swap(*v);
   vx_hat_.assign(sh * static_cast<std::size_t>(ny), {0.0, 0.0});
   vy_hat_.assign(sh * static_cast<std::size_t>(ny), {0.0, 0.0});
   qx_hat_.assign(sh, {0.0, 0.0});
@@ -100,25 +109,22 @@ void HalfSpaceTangentialSolver::add_row_change(int iy) {
   for (int jy : contact_rows_) {
     const int d = std::abs(jy - iy);
     const double sgn = jy >= iy ? 1.0 : -1.0;  // Aₓᵧ odd in the row offset
-    const std::complex<double>* kxx = &kxx_[sh * d];
-    const std::complex<double>* kyy = &kyy_[sh * d];
-    const std::complex<double>* kxy = &kxy_[sh * d];
-    std::complex<double>* vx = &vx_hat_[sh * jy];
-    std::complex<double>* vy = &vy_hat_[sh * jy];
-    // Complex products written out (std::complex's operator* checks for NaN/inf at -O2).
-    const double* a = reinterpret_cast<const double*>(kxx);
-    const double* b = reinterpret_cast<const double*>(kyy);
-    const double* g = reinterpret_cast<const double*>(kxy);
+    // The wrapped kernels are even (Aₓₓ, A_yy) or odd (Aₓᵧ) in the x offset, so their spectra are
+    // real and imaginary: two real products per complex one.
+    const double* a = &kxx_r_[sh * d];
+    const double* b = &kyy_r_[sh * d];
+    const double* g = &kxy_i_[sh * d];
     const double* qx = reinterpret_cast<const double*>(qx_hat_.data());
     const double* qy = reinterpret_cast<const double*>(qy_hat_.data());
-    double* ox = reinterpret_cast<double*>(vx);
-    double* oy = reinterpret_cast<double*>(vy);
-    for (std::size_t k = 0; k < 2 * sh; k += 2) {
-      const double gr = sgn * g[k], gi = sgn * g[k + 1];
-      ox[k] += a[k] * qx[k] - a[k + 1] * qx[k + 1] + gr * qy[k] - gi * qy[k + 1];
-      ox[k + 1] += a[k] * qx[k + 1] + a[k + 1] * qx[k] + gr * qy[k + 1] + gi * qy[k];
-      oy[k] += gr * qx[k] - gi * qx[k + 1] + b[k] * qy[k] - b[k + 1] * qy[k + 1];
-      oy[k + 1] += gr * qx[k + 1] + gi * qx[k] + b[k] * qy[k + 1] + b[k + 1] * qy[k];
+    double* ox = reinterpret_cast<double*>(&vx_hat_[sh * jy]);
+    double* oy = reinterpret_cast<double*>(&vy_hat_[sh * jy]);
+    for (std::size_t k = 0; k < sh; ++k) {
+      const double ak = a[k], bk = b[k], gk = sgn * g[k];
+      const double xr = qx[2 * k], xi = qx[2 * k + 1], yr = qy[2 * k], yi = qy[2 * k + 1];
+      ox[2 * k] += ak * xr - gk * yi;
+      ox[2 * k + 1] += ak * xi + gk * yr;
+      oy[2 * k] += bk * yr - gk * xi;
+      oy[2 * k + 1] += bk * yi + gk * xr;
     }
   }
 }
@@ -161,6 +167,7 @@ HalfSpaceTangentialResult HalfSpaceTangentialSolver::solve(const double* pn_in, 
     }
   const double* pn = pn_.data();
   x0 -= dx_;  // the centre of the internal column 0
+  const double xs = kSpinSlipOffset * dx_;  // where the spin's lateral rigid slip is taken (header)
   auto contact = [&](std::size_t e) { return pn[e] > 0; };
   contact_rows_.clear();
   for (int iy = 0; iy < ny_; ++iy)
@@ -236,7 +243,7 @@ HalfSpaceTangentialResult HalfSpaceTangentialSolver::solve(const double* pn_in, 
         const std::size_t e = r + static_cast<std::size_t>(ix);
         if (!contact(e)) continue;
         const double x = x0 + ix * dx_;
-        const double wx = c.xi - c.phi * y, wy = c.eta + c.phi * x;  // rigid slip [K]
+        const double wx = c.xi - c.phi * y, wy = c.eta + c.phi * (x + xs);  // rigid slip (header)
         const double sx = wx + (vrx_[static_cast<std::size_t>(ix)] + cx_[static_cast<std::size_t>(ix)]) / dx_;
         const double sy = wy + (vry_[static_cast<std::size_t>(ix)] + cy_[static_cast<std::size_t>(ix)]) / dx_;
         double tx = 0, ty = 0;
@@ -258,7 +265,7 @@ HalfSpaceTangentialResult HalfSpaceTangentialSolver::solve(const double* pn_in, 
             break;
           }
           double nxv = px_[f] + ax, nyv = py_[f] + ay;
-          const double g = mu * pn[f], t = std::hypot(nxv, nyv);
+          const double g = mu * pn[f], t = std::sqrt(nxv * nxv + nyv * nyv);
           if (t > g) {
             nxv *= g / t;
             nyv *= g / t;
@@ -301,7 +308,7 @@ HalfSpaceTangentialResult HalfSpaceTangentialSolver::solve(const double* pn_in, 
       const double x = x0 + ix * dx_;
       if (state_[e] == ElementState::Slip) {
         sx_[e] = c.xi - c.phi * y + vrx_[static_cast<std::size_t>(ix)] / dx_;
-        sy_[e] = c.eta + c.phi * x + vry_[static_cast<std::size_t>(ix)] / dx_;
+        sy_[e] = c.eta + c.phi * (x + xs) + vry_[static_cast<std::size_t>(ix)] / dx_;
       } else {
         ++res.n_adhesion;
       }

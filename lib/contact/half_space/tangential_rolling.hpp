@@ -11,6 +11,22 @@
 //       discretised with a one-sided difference against the rolling direction:
 //           s_I = w_I + (u_I − u_{I+})/dx,  I+ the element one dx upstream (towards the leading edge);
 //       in adhesion s_I = 0 and |p_I| ≤ μ p_n,I; in slip p_I = −μ p_n,I s_I/|s_I|.
+//  [C]  E. A. H. Vollebregt, CONTACT (github.com/eve70a/CONTACT, version 25.2), src/m_sdis.f90,
+//       set_tang_rhs: in rolling the spin term of the rigid slip is taken dq/6 upstream of the
+//       element centre (its input FACPHI, default 1/6; dq = dx for rolling along x):
+//           w_I = (ξ − φ y_I,  η + φ (x_I + dx/6))                                      (R1)
+// Where the spin's lateral slip is taken decides the spin's lateral force at first order in dx:
+// the shift δ in w_y = η + φ (x_I + δ) acts as an extra lateral creepage φ δ over the whole
+// adhesion area. Taken at the centre (δ = 0) the a/b = 1 pure-spin case of CONTACT's test_table
+// gives Fy = −0.3597, −0.3685, −0.3718, −0.3734, −0.3740 μN at 17, 27, 37, 57, 117 elements
+// across (first order, extrapolated −0.3765); at the midpoint of the difference (δ = dx/2, where
+// (u_I − u_{I+})/dx approximates −∂u/∂x to second order) −0.4094 … −0.3811, as far off on the
+// other side: the one-sided difference's leading error is not only the collocation of w but also
+// that of the element-wise constant traction, and (R1) is the offset at which the two first-order
+// terms cancel on that case (measured: 0.169 dx from the two series; 1/6 in [C]). With (R1)
+// −0.3763, −0.3788, −0.3793, −0.3782, −0.3764, and this solver's forces, moment and adhesion
+// fraction equal CONTACT's exact solution on the same grid and pressure to its printed digits
+// (tests/data/contact_tangential/hstang; docs/half_space.md "Accuracy").
 //  [V]  E. A. H. Vollebregt, "A Gauss–Seidel type solver for special convex programs, with
 //       application to frictional contact mechanics", J. Optim. Theory Appl. 87 (1995) 47–67:
 //       element-wise non-linear Gauss–Seidel, each element's 2 × 2 problem solved exactly under
@@ -66,6 +82,10 @@ struct HalfSpaceTangentialResult {
   std::string message;      ///< why, when NotConverged
 };
 
+/// Where the spin's lateral rigid slip φ x is taken, in elements upstream of the element centre:
+/// w_y = η + φ (x_I + kSpinSlipOffset·dx), eq. (R1) above ([C]'s FACPHI default).
+inline constexpr double kSpinSlipOffset = 1.0 / 6.0;
+
 /// Element states of the last solve.
 enum class ElementState : unsigned char { Exterior = 0, Adhesion = 1, Slip = 2 };
 
@@ -103,7 +123,8 @@ class HalfSpaceTangentialSolver {
   int H_;  ///< spectrum length
   std::vector<double> px_, py_, qx_, qy_, sx_, sy_;  ///< nx·ny
   std::vector<double> rx_, ry_;                      ///< row kernels A(k, 0), k = 0 … nx−1
-  std::vector<std::complex<double>> kxx_, kyy_, kxy_;  ///< kernel spectra of row offsets 0 … ny−1
+  std::vector<std::complex<double>> kxx_, kyy_, kxy_;  ///< kernel spectra of row offsets 0 … ny−1 (construction only)
+  std::vector<double> kxx_r_, kyy_r_, kxy_i_;          ///< their real, real, imaginary parts (kept)
   std::vector<std::complex<double>> vx_hat_, vy_hat_;  ///< per row: spectrum of v = A q
   std::vector<std::complex<double>> qx_hat_, qy_hat_;  ///< one row's change of q, transformed
   std::vector<double> vrx_, vry_, cx_, cy_, dqx_, dqy_;  ///< one row

@@ -151,11 +151,10 @@ TEST_CASE("The exact half-space solver against CONTACT's table, every 20th case"
   CHECK(quantile(e.fy_no_spin, 1) <= 0.02);
   CHECK(quantile(e.mz, 1) <= 0.05);
   CHECK(quantile(e.adh, 1) <= 0.05);
-  // Missed on CONTACT's grid: the lateral force from spin, up to 2.8 % of μN (every 20th case,
-  // 29 Nov 2026), first order in the element size (4.8 % at 17 elements across, 1.45 % with this
-  // solver on a grid twice as fine: "[contact_table_exact_fine]"; docs/trust.md). Held at what
-  // was measured, so that it cannot grow unseen.
-  CHECK(quantile(e.fy_spin, 1) <= 0.03);
+  // The lateral force from spin: 0.55 % of μN at most (every 20th case, 29 Nov 2026), with the
+  // spin's rigid slip taken where CONTACT takes it (tangential_rolling.hpp, eq. R1; taken at the
+  // element centre it was 2.8 %). Held at about 1.5 × what was measured.
+  CHECK(quantile(e.fy_spin, 1) <= 0.008);
 }
 
 TEST_CASE("The exact half-space solver against CONTACT's whole table (long: minutes)", "[.][contact_table_exact_all]") {
@@ -175,7 +174,37 @@ TEST_CASE("The exact half-space solver on a grid twice as fine against CONTACT's
   const Errors e = exact_errors(rows, 10, 2 * (kMx - 4) + 4);
   e.print("exact half-space (58 x 58: 54 elements across) vs CONTACT test_table (27 across), every 10th case");
   CHECK(quantile(e.fx, 1) <= 0.02);
-  CHECK(quantile(e.fy, 1) <= 0.02);
+  // Across two grids the difference holds the reference's own grid error: with the spin slip taken
+  // as CONTACT takes it (eq. R1) this solver follows CONTACT on its grid, and on the 5:1 elements
+  // of a/b = 5 the lateral force under spin still moves by up to 3 % of μN between 27 and 54
+  // elements across (case 2741: −0.4254 → −0.4534 μN; CONTACT −0.4239 at 27; CONTACT's own
+  // 17 → 27 change is up to 3.5 %). Measured 0.0295 (29 Nov 2026); held at 0.035.
+  CHECK(quantile(e.fy, 1) <= 0.035);
   CHECK(quantile(e.mz, 1) <= 0.05);
   CHECK(quantile(e.adh, 1) <= 0.05);
+}
+
+TEST_CASE("Exact solver, pure spin on a/b = 1: convergence in the elements across (prints)",
+          "[.][tangential_spin_convergence]") {
+  const std::vector<Case> rows = read_table();
+  REQUIRE(rows.size() == 3220);
+  const Case* pick = nullptr;
+  for (const Case& r : rows)
+    if (r["case"] == 1611) pick = &r;
+  REQUIRE(pick);
+  const Case& r = *pick;
+  std::printf("case 1611 (a/b = 1, pure spin s = 1): CONTACT Fy/muN %.6f (27 across), %.6f (17 across)\n",
+              r["Fy_muN"], r["Fy_muN_coarse"]);
+  for (int across : {17, 27, 37, 57, 117}) {
+    const int mx = across + 4;
+    const double a = r["a_mm"] * 1e-3, b = r["b_mm"] * 1e-3;
+    HertzGrid h(a, b, 3 * kFN / (2 * kPi * a * b), mx, mx, double(mx) / (mx - 4));
+    for (double& p : h.p) p *= kFN / h.N;
+    mh::HalfSpaceTangentialSolver s(h.nx, h.ny, h.dx, h.dy, kG, kNu);
+    const auto t = s.solve(h.p.data(), h.x0, h.y0, creepages(r), kMu);
+    REQUIRE(t.status == mh::TangentialStatus::Ok);
+    const double c = std::sqrt(a * b);
+    std::printf("  %3d across: Fy/muN %.6f  Mz/muNc %.6f  adhesion %.3f  sweeps %d\n", across,
+                t.forces.Fy / (kMu * kFN), t.forces.Mz / (kMu * kFN * c), t.forces.adhesion_fraction, t.sweeps);
+  }
 }

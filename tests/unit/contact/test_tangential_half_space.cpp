@@ -259,7 +259,9 @@ TEST_CASE("Steady rolling, small creepage: Kalker's linear theory (Table E.3, nu
 TEST_CASE("Steady rolling against CONTACT's exact solution on the same Hertzian patch and grid",
           "[tangential_rolling]") {
   // tests/data/contact_tangential/hstang/README.md. Targets (issue 33 §4): Fx, Fy within 2 % of
-  // μN, Mz within 5 %, adhesion fraction within 0.05.
+  // μN, Mz within 5 %, adhesion fraction within 0.05. Both discretise the same way (the spin's
+  // rigid slip dx/6 upstream, tangential_rolling.hpp eq. R1): measured within 0.0002 μN in force,
+  // 0.01 % in Mz, 0.001 in adhesion (29 Nov 2026); held at 0.001 μN, 0.2 %, 0.003.
   const std::string dir = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/contact_tangential/hstang/";
   const int mx = 44, my = 44;
   const double dx = 0.4e-3, dy = 0.2e-3, x0 = -8.6e-3, y0 = -4.3e-3, G = 82e9, nu = 0.28, mu = 0.3;
@@ -299,10 +301,10 @@ TEST_CASE("Steady rolling against CONTACT's exact solution on the same Hertzian 
     const auto r = s.solve(pn.data(), x0, y0, c, mu);
     REQUIRE(r.status == mh::TangentialStatus::Ok);
     CHECK(r.n_contact == static_cast<int>(v[8]));
-    CHECK(r.forces.Fx == Approx(Fx).margin(0.02 * mu * N));
-    CHECK(r.forces.Fy == Approx(Fy).margin(0.02 * mu * N));
-    CHECK(r.forces.Mz == Approx(Mz).epsilon(0.05).margin(1e-3));
-    CHECK(r.forces.adhesion_fraction == Approx(adh).margin(0.05));
+    CHECK(r.forces.Fx == Approx(Fx).margin(0.001 * mu * N));
+    CHECK(r.forces.Fy == Approx(Fy).margin(0.001 * mu * N));
+    CHECK(r.forces.Mz == Approx(Mz).epsilon(0.002).margin(1e-3));
+    CHECK(r.forces.adhesion_fraction == Approx(adh).margin(0.003));
     ++cases;
   }
   CHECK(cases == 6);
@@ -311,8 +313,9 @@ TEST_CASE("Steady rolling against CONTACT's exact solution on the same Hertzian 
 TEST_CASE("Steady rolling, small creepage: convergence to Kalker's linear theory (80 x 80)",
           "[.][tangential_rolling_convergence]") {
   // Prints the convergence table of docs/half_space.md (20, 40, 80 elements across each axis) and
-  // holds the 80 × 80 grid: C11, C22 within 1.5 %, C23 within 1.2 % (measured: 0.1–1.3 % and
-  // 0.4–1.1 %, the largest at a/b = 5 with elements 5:1; the issue's 0.5 % is not reached).
+  // holds the 80 × 80 grid: C11, C22 within 1.5 %, C23 within 1.1 % (measured 29 Nov 2026:
+  // 0.1–1.3 % and 0.05–0.72 %, the largest at a/b = 5 with elements 5:1; the issue's 0.5 % is not
+  // reached).
   const double G = 82e9, nu = 0.28, c = 5e-3, k = 1e-6, mu = 1e4;
   for (double aob : {0.2, 0.5, 1.0, 2.0, 5.0}) {
     const double a = c * std::sqrt(aob), b = c / std::sqrt(aob);
@@ -334,7 +337,7 @@ TEST_CASE("Steady rolling, small creepage: convergence to Kalker's linear theory
         INFO("a/b = " << aob);
         CHECK(C11 == Approx(ref.C11).epsilon(0.015));
         CHECK(C22 == Approx(ref.C22).epsilon(0.015));
-        CHECK(C23 == Approx(ref.C23).epsilon(0.012));
+        CHECK(C23 == Approx(ref.C23).epsilon(0.011));
       }
     }
   }
