@@ -447,8 +447,9 @@ MHC_API void mhc_table_free(mhc_table* t);
 
 /** The interface version of this header: 1 = up to the warnings accessors; 2 = the wheelset
  *  call, mhc_interface_version, mhc_solve_many_warnings, the creep forces (mhc_pair_set_tangential,
- *  mhc_result_tangential), the contact tables (mhc_table_*) and the RCF accessors (mhc_result_rcf,
- *  mhc_hertz_subsurface). Negotiate at run time with mhc_interface_version(). */
+ *  mhc_result_tangential), the contact tables (mhc_table_*), the RCF accessors (mhc_result_rcf,
+ *  mhc_hertz_subsurface) and the grids (mhc_workspace_keep_grids, mhc_result_grid). Negotiate at
+ *  run time with mhc_interface_version(). */
 #define MHC_INTERFACE_VERSION 2
 
 /** The newest interface version the library implements (its return) and, in *oldest when not
@@ -712,6 +713,51 @@ typedef struct mhc_subsurface {
 } mhc_subsurface;
 MHC_API mhc_error mhc_hertz_subsurface(double a_m, double b_m, double p0_Pa, double fx, double fy, double nu,
                                        mhc_subsurface* out);
+
+/* ---- pressure and traction grids of the last case (lib/capi/grids.cpp) -----------------------
+ * The points of pressure.csv (`mhcontact run --pressure-grid N`, docs/outputs.md) for the last
+ * case a workspace solved, SI, with the traction columns when the pair has friction: the same
+ * numbers as the command's file for the same case. Nothing is kept for them unless asked: call
+ * mhc_workspace_keep_grids(ws, 1) before the solve (docs/c-api.md "Pressure and traction grids"). */
+
+/** keep = 1: the following solves with ws keep what a grid needs (the grid methods' element
+ *  pressures, FASTSIM's cells and the patches' tractions per element); 0 (the default): nothing
+ *  kept, no allocation for it. MHC_ERR_ARGUMENT for another value. */
+MHC_API mhc_error mhc_workspace_keep_grids(mhc_workspace* ws, int32_t keep);
+
+/** The grid of a case as arrays of n_points entries each, one entry per point, in pressure.csv's
+ *  row order. Caller-owned: set struct_size = sizeof(mhc_grid), capacity and the arrays wanted
+ *  (any may be NULL: not filled). */
+typedef struct mhc_grid {
+  size_t struct_size;     /**< set by the caller: sizeof(mhc_grid) */
+  size_t capacity;        /**< in: the entries each non-NULL array holds */
+  size_t n_points;        /**< out: the points of the case (also set when capacity is too small) */
+  int32_t method;         /**< out: mhc_method that solved the case: multi-Hertzian, n x n points per
+                               loaded ellipse; half-space and strips, the elements in contact */
+  int32_t traction;       /**< out: 1 when px_Pa, py_Pa and slip are filled (friction: the pair's
+                               tangential problem); 0: they are NaN and -1 */
+  int32_t* contact;       /**< 1-based ellipse or patch index (mhc_contact.index) */
+  double* x_m;            /**< along the rolling direction, from the ellipse centre / the patch's
+                               reference point (pressure.csv x_mm) */
+  double* s_m;            /**< across, in the contact plane, towards the field side (pressure.csv
+                               y_mm of an ellipse, s_mm of a patch) */
+  double* y_rail_m;       /**< rail y of a patch point (pressure.csv y_rail_mm); NaN for an ellipse */
+  double* p_Pa;           /**< normal pressure (the ellipse law's: capped or flattened when plastic) */
+  double* p_elastic_Pa;   /**< plastic multi-Hertzian pairs: the elastic Hertz pressure at the same
+                               load (pressure.csv p_elastic_MPa); NaN otherwise */
+  double* px_Pa;          /**< traction ON THE RAIL along x (NaN where not solved) */
+  double* py_Pa;          /**< traction on the rail along s (NaN where not solved) */
+  int32_t* slip;          /**< 1 in slip (|(px, py)| = mu p), 0 in adhesion, -1 not solved */
+} mhc_grid;
+
+/** The grid of the last case solved with ws (mhc_solve_load / mhc_solve_approach after
+ *  mhc_workspace_keep_grids(ws, 1)) into *out: n points per axis of each ellipse (2 to 1000, as
+ *  --pressure-grid; the grid methods' points are their elements and n is not used). Every array
+ *  NULL: only n_points (the size query). An array given with capacity < n_points:
+ *  MHC_ERR_ARGUMENT naming out->capacity and the size needed, n_points set. MHC_ERR_ARGUMENT when
+ *  the last solve did not keep the grid; MHC_ERR_UNSUPPORTED for a strip-method case without
+ *  friction (no element grid: the command writes none either). A case without contact: 0 points. */
+MHC_API mhc_error mhc_result_grid(const mhc_workspace* ws, int32_t n, mhc_grid* out);
 
 #ifdef __cplusplus
 }

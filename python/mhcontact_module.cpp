@@ -25,6 +25,7 @@ using mh::units::deg;
 /// The Wheelset class (python/wheelset_module.cpp).
 void bind_wheelset(py::module_& m, void (*check)(mhc_error));
 void bind_rcf(py::module_& m, void (*check)(mhc_error));  // python/rcf_module.cpp
+void bind_grids(py::module_& m, void (*check)(mhc_error));  // python/grids_module.cpp
 
 namespace {
 
@@ -522,4 +523,5 @@ PYBIND11_MODULE(_core, m) {
           });
   bind_wheelset(m, &check);
   bind_rcf(m, &check);
+  bind_grids(m, &check);
 }

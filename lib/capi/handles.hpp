@@ -46,6 +46,10 @@ struct mhc_workspace {
   mh::ApproachWorkspace approach;
   mh::GridWorkspace grid;
   mh::CaseResult r;
+  /// mhc_workspace_keep_grids: solve keeping what mhc_result_grid needs (lib/capi/grids.cpp).
+  bool keep_grids = false;
+  /// Whether the solve that filled r kept it.
+  bool grids_kept = false;
 };
 
 namespace mh::capi {

@@ -82,14 +82,20 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
                                          " (its contact gap is the upright wheel's); pass 0 or use multi_hertzian");
   if (!std::isfinite(tY)) return fail(MHC_ERR_ARGUMENT, "t_Y = " + format_number(tY) + " m: must be finite");
   // The wheel rolled by δ against the rail (docs/method.md §3 item 8): its candidates and its spin.
+  // With mhc_workspace_keep_grids: the grid methods' element pressures and the tractions per
+  // element kept (nothing otherwise: the options are copied only then).
   MethodOptions rolled;
   const MethodOptions* opt = &pair.options;
-  if (roll != 0.0) {
+  if (roll != 0.0 || ws.keep_grids) {
     rolled = pair.options;
-    rolled.multi_hertzian.roll = roll;
-    rolled.tangential.kin.roll = roll;
+    if (roll != 0.0) {
+      rolled.multi_hertzian.roll = roll;
+      rolled.tangential.kin.roll = roll;
+    }
+    if (ws.keep_grids) rolled.half_space.keep_pressure = rolled.tangential.keep_traction = true;
     opt = &rolled;
   }
+  ws.grids_kept = false;
   if (approach) {
     if (pair.options.method != Method::MultiHertzian)
       return fail(MHC_ERR_UNSUPPORTED, std::string("the approach-prescribed solve needs the multi-hertzian method, "
@@ -104,6 +110,7 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
     solve_contact(pair.pg.geo, pair.material, tY, value, *opt, ws.r, &ws.grid);
     fill_result(ws.r, tY, value, pair.plastic, out);
   }
+  ws.grids_kept = ws.keep_grids;
   if (ws.r.status != CaseStatus::Ok) last_message() = ws.r.message;
   return MHC_OK;
 }

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "contact/judge/judge.hpp"
+#include "contact/pressure_grid.hpp"
 #include "core/units.hpp"
 #include "output/case_sinks.hpp"
 #include "output/cells.hpp"
@@ -127,50 +128,27 @@ void patch_fields(Sink& k, const PatchResult& P, bool plastic, const RcfOptions&
 }  // namespace
 
 
-// Pressure of each loaded ellipse on an N × N grid over its patch (method.md §5, §5.1): the
-// ellipse law's pressure of the Hertz pressure p0 √(1 − x²/a² − y²/b²) (capped at p_lim, or
-// flattened above first yield by the yield law) and, in plastic mode, the elastic Hertz
-// pressure at the same load on the elastic patch (a_el, b_el).
+// Pressure of each loaded ellipse on an N × N grid over its patch, with the traction where it was
+// kept: the points of contact/pressure_grid.hpp (the C interface's mhc_result_grid gives the same).
 void format_pressure(std::uint64_t idx, const CaseResult& r, bool plastic, int N,
                      std::string& s, bool tangential) {
   s.clear();
-  for (std::size_t e = 0; e < r.loaded.size(); ++e) {
-    const LoadedEllipse& L = r.loaded[e];
-    const double a = L.s.a, b = L.s.b;
-    // The traction columns: FASTSIM's cells of this ellipse, resampled at the grid points
-    // (traction_grid.hpp); empty cells where they were not kept or not solved.
-    const EllipseTraction* T = tangential && e < r.ellipse_traction.size() && L.t.solved &&
-                                       !r.ellipse_traction[e].empty() ? &r.ellipse_traction[e] : nullptr;
-    const double p0_el = 1.5 * L.s.N / (units::pi * L.s.a_el * L.s.b_el);
-    for (int i = 0; i < N; ++i) {
-      const double x = -a + 2 * a * i / (N - 1);
-      for (int j = 0; j < N; ++j) {
-        const double y = -b + 2 * b * j / (N - 1);
-        const double q = 1 - (x * x) / (a * a) - (y * y) / (b * b);
-        double p = q > 0 ? L.s.p0 * std::sqrt(q) : 0.0;
-        if (plastic) p = L.s.pressure_at(p);  // the ellipse law's pressure (method.md §5, §5.1)
-        append_number(s, static_cast<long long>(idx));
-        s += ','; append_number(s, static_cast<long long>(L.ellipse));
-        s += ','; num(s, x * units::per_mm);
-        s += ','; num(s, y * units::per_mm);
-        s += ','; num(s, p / units::MPa);
-        if (plastic) {
-          const double qe = 1 - (x * x) / (L.s.a_el * L.s.a_el) - (y * y) / (L.s.b_el * L.s.b_el);
-          s += ','; num(s, (qe > 0 ? p0_el * std::sqrt(qe) : 0.0) / units::MPa);
-        }
-        if (T) {
-          // On the rail (the files' convention, docs/tangential.md): minus the traction on the wheel.
-          const TractionSample t = fastsim_traction_at(*T, a, b, L.t.mu, x, y);
-          s += ','; num(s, (0.0 - t.px) / units::MPa);  // 0 − p: no "-0"
-          s += ','; num(s, (0.0 - t.py) / units::MPa);
-          s += ','; s += t.slip ? '1' : '0';
-        } else if (tangential) {
-          s += ",,,";
-        }
-        s += '\n';
-      }
+  for_each_ellipse_grid_point(r, plastic, N, tangential, [&](const GridPoint& g) {
+    append_number(s, static_cast<long long>(idx));
+    s += ','; append_number(s, static_cast<long long>(g.contact));
+    s += ','; num(s, g.x * units::per_mm);
+    s += ','; num(s, g.s * units::per_mm);
+    s += ','; num(s, g.p / units::MPa);
+    if (plastic) { s += ','; num(s, g.p_elastic / units::MPa); }
+    if (g.traction) {
+      s += ','; num(s, g.px / units::MPa);
+      s += ','; num(s, g.py / units::MPa);
+      s += ','; s += g.slip ? '1' : '0';
+    } else if (tangential) {
+      s += ",,,";
     }
-  }
+    s += '\n';
+  });
 }
 
 bool is_failed_row(const CaseResult& r, const char* status_text) {
@@ -377,36 +355,22 @@ void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
 
 void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& s, bool tangential) {
   s.clear();
-  for (const PatchResult& P : r.patches) {
-    const double c = std::cos(P.gamma);
-    // With the tractions kept: the elements of the grid they were solved on (the half-space:
-    // the normal solve's own; strips: the grid of the strips' pressure, traction_grid.hpp).
-    const PatchTraction* T = tangential && !P.traction.empty() && P.t.solved ? &P.traction : nullptr;
-    const int nx = T ? T->nx : P.nx, ns = T ? T->ns : P.ns;
-    const double dx = T ? T->dx : P.dx, ds = T ? T->ds : P.ds, x0 = T ? T->x0 : P.x0, s0 = T ? T->s0 : P.s0;
-    const std::vector<double>& pn = T ? T->pn : P.p;
-    for (int j = 0; j < ns; ++j)
-      for (int i = 0; i < nx; ++i) {
-        const std::size_t k = static_cast<std::size_t>(i) + static_cast<std::size_t>(nx) * static_cast<std::size_t>(j);
-        const double p = pn[k];
-        if (!(p > 0)) continue;
-        const double x = x0 + i * dx, sp = s0 + j * ds;
-        append_number(s, static_cast<long long>(idx));
-        s += ','; append_number(s, static_cast<long long>(P.patch));
-        s += ','; num(s, x * units::per_mm);
-        s += ','; num(s, sp * units::per_mm);
-        s += ','; num(s, (P.y_r + sp * c) * units::per_mm);
-        s += ','; num(s, p / units::MPa);
-        if (T) {  // on the rail: minus the traction on the wheel
-          s += ','; num(s, (0.0 - T->px[k]) / units::MPa);
-          s += ','; num(s, (0.0 - T->py[k]) / units::MPa);
-          s += ','; s += T->slip[k] ? '1' : '0';
-        } else if (tangential) {
-          s += ",,,";
-        }
-        s += '\n';
-      }
-  }
+  for_each_patch_grid_point(r, tangential, [&](const GridPoint& g) {
+    append_number(s, static_cast<long long>(idx));
+    s += ','; append_number(s, static_cast<long long>(g.contact));
+    s += ','; num(s, g.x * units::per_mm);
+    s += ','; num(s, g.s * units::per_mm);
+    s += ','; num(s, g.y_rail * units::per_mm);
+    s += ','; num(s, g.p / units::MPa);
+    if (g.traction) {  // on the rail
+      s += ','; num(s, g.px / units::MPa);
+      s += ','; num(s, g.py / units::MPa);
+      s += ','; s += g.slip ? '1' : '0';
+    } else if (tangential) {
+      s += ",,,";
+    }
+    s += '\n';
+  });
 }
 
 void format_strips(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, std::string& s) {

@@ -17,6 +17,7 @@ import numpy as _np
 from ._core import (INTERFACE_VERSION, InputError, MAX_CONTACTS, METHOD_NAMES, STATUS_NAMES, UnsupportedError, Pair,
                     Profile, Table, TableResult, Wheelset, __version__, abi_version, fft_backend, hertz_subsurface)
 from ._core import _pair_rcf as _core_pair_rcf
+from ._core import _pair_pressure_grid as _core_pair_pressure_grid
 
 from .fleet import fleet, read_tables
 
@@ -124,6 +125,24 @@ def _pair_rcf(self, tY_m, Q_N, k_Pa=float("nan")):
 
 
 Pair.rcf = _pair_rcf
+
+
+def _pair_pressure_grid(self, tY_m, Q_N=None, dz_m=None, n=20, roll_rad=0.0):
+    """The pressure grid of one case (load Q_N [N] or approach dz_m [m] at tY_m [m]), as the rows
+    of pressure.csv of `mhcontact run --pressure-grid n` (docs/python.md "Pressure and traction
+    grids"): a dict of 1-D numpy arrays named as its columns, one entry per point, and 'method',
+    'status'. Multi-Hertzian: ellipse, x_mm, y_mm, p_MPa (p_elastic_MPa when plastic), n x n
+    points per loaded ellipse; half-space and strips: patch, x_mm, s_mm, y_rail_mm, p_MPa, the
+    elements in contact (n not used). With friction px_MPa, py_MPa (traction on the rail) and
+    slip (1 slip, 0 adhesion, -1 not solved). Through mhc_result_grid."""
+    value, name, approach = _prescribed(Q_N, dz_m)
+    if isinstance(n, bool) or not isinstance(n, (int, _np.integer)):
+        raise TypeError("n = %r: expected an integer (points per axis, 2 to 1000)" % (n,))
+    return _core_pair_pressure_grid(self, _number("tY_m", tY_m, "m"), _number(name, value, "m" if approach else "N"),
+                                    approach, _number("roll_rad", roll_rad, "rad"), int(n))
+
+
+Pair.pressure_grid = _pair_pressure_grid
 
 
 # Wheelset (the extension's class): Wheelset(left_pair, right_pair, mu=nan, fastsim_nx=16,

@@ -6,7 +6,8 @@
 #     options, light: options.hpp includes them)
 #   < options (options.hpp: material, method, every options struct)
 #   < judge_status (judge/status.*: a case's status and warnings as data, light)
-#   < ellipse (one Hertzian ellipse) < case_result (the result every method returns)
+#   < ellipse (one Hertzian ellipse) < case_result (the result every method returns, and
+#     pressure_grid.hpp, the points of its pressure grid)
 #   < judge (judge/judge.*: the one rule that decides a solved case's status)
 #   < tangential_solve (tangential/tangential_solve.*: the tangential problem of a solved case)
 #   < multi_hertz < grid (what the grid methods share) < half_space | strips (siblings: neither
@@ -26,7 +27,7 @@ rooms=(tangential options judge_status ellipse case_result judge tangential_solv
 room_rank=(0 1 2 3 4 5 6 7 8 9 9 10 10)
 rank() { local i; for i in "${!layers[@]}"; do [ "${layers[$i]}" = "$1" ] && { echo "$i"; return; }; done; echo -1; }
 room() {  # the room of lib/contact/<rest> given <rest>: its folder, or the file's stem at the top
-  case "$1" in judge/status.*) echo judge_status ;; tangential/tangential_solve.*) echo tangential_solve ;; */*) echo "${1%%/*}" ;; *) local b=${1%.*}; echo "$b" ;; esac
+  case "$1" in judge/status.*) echo judge_status ;; tangential/tangential_solve.*) echo tangential_solve ;; pressure_grid.*) echo case_result ;; */*) echo "${1%%/*}" ;; *) local b=${1%.*}; echo "$b" ;; esac
 }
 room_rank_of() { local i; for i in "${!rooms[@]}"; do [ "${rooms[$i]}" = "$1" ] && { echo "${room_rank[$i]}"; return; }; done; echo -1; }
 check_tree() {  # prints the violations of the tree $1, returns 1 if any

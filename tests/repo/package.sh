@@ -55,6 +55,24 @@ awk '/^    \/tmp\/cw\/c_wheelset$/ { on = 1; next } on && /^    / { sub(/^    /,
 while IFS= read -r line; do
   grep -qxF -- "$line" "$tmp/w.out" || { echo "package: docs/c-api.md shows a line c_wheelset does not print: $line"; cat "$tmp/w.out"; exit 1; }
 done < "$tmp/shown_w.txt"
+# The pressure and traction grid of one case: examples/c_grids, a third consumer; in slip the
+# traction is mu p within 0.3 % (FASTSIM's bound against the grid's pressure, docs/tangential.md)
+# and the print's rounding, and docs/c-api.md "Pressure and traction
+# grids" prints this run's output (each shown line but "..." is a line of it).
+cp -r "$tmp/p/share/doc/mhcontact/examples/c_grids" "$tmp/c_grids"
+cmake -S "$tmp/c_grids" -B "$tmp/g_build" -DCMAKE_PREFIX_PATH="$tmp/p" >/dev/null
+cmake --build "$tmp/g_build" >/dev/null
+"$tmp/g_build/c_grids" > "$tmp/g.out"
+grep -q '^ellipse,x_mm,y_mm,p_MPa,px_MPa,py_MPa,slip$' "$tmp/g.out" || { echo "package: c_grids printed no grid"; cat "$tmp/g.out"; exit 1; }
+awk -F, '$7 == "1" { n++; d = sqrt($5 * $5 + $6 * $6) - 0.3 * $4; t = 0.003 * 0.3 * $4 + 0.1; if (d < -t || d > t) bad++ } END { exit !(n >= 3 && !bad) }' "$tmp/g.out" \
+  || { echo "package: c_grids: a slipping point's traction is not mu p"; cat "$tmp/g.out"; exit 1; }
+grep -q '^too small: out->capacity = ' "$tmp/g.out" || { echo "package: c_grids: a too small array not refused"; cat "$tmp/g.out"; exit 1; }
+awk '/^    \/tmp\/cg\/c_grids$/ { on = 1; next } on && /^    / { sub(/^    /, ""); print; next } on && NF { exit }' \
+  "$src/docs/c-api.md" | grep -vx '\.\.\.' | grep -v '^$' > "$tmp/shown_g.txt"
+[ "$(wc -l < "$tmp/shown_g.txt")" -ge 6 ] || { echo "package: docs/c-api.md's grid output not found"; exit 1; }
+while IFS= read -r line; do
+  grep -qxF -- "$line" "$tmp/g.out" || { echo "package: docs/c-api.md shows a line c_grids does not print: $line"; cat "$tmp/g.out"; exit 1; }
+done < "$tmp/shown_g.txt"
 # The Python module, installed under the prefix, and the Python example.
 py=$(find "$tmp/p" -path '*/mhcontact/__init__.py' 2>/dev/null | head -1)
 if [ -n "$py" ]; then
