@@ -14,7 +14,12 @@
 namespace mh {
 
 void add_table_command(CLI::App& app, CliContext& ctx) {
-  struct Opts { std::string case_file, out, shard; std::vector<std::string> merge; TableMakeOptions make; bool no_check = false; };
+  struct Opts {
+    std::string case_file, out, shard, points, next;
+    std::vector<std::string> merge;
+    TableMakeOptions make;
+    bool no_check = false;
+  };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "table", "Contact table for time-stepping callers: the case's grid method (strips, half-space, auto) at every "
@@ -40,15 +45,22 @@ void add_table_command(CLI::App& app, CliContext& ctx) {
   cmd->add_flag("-q,--quiet", o->make.quiet, "No summary on standard error");
   auto* shard = cmd->add_option("--shard", o->shard, "Solve only the K-th of N slices of the first round's points "
                                                      "(nodes and cell centres) and write them to the output (JSON)");
-  cmd->add_option("--merge", o->merge, "Shard files of this case (all N of one split): take their solves, refine here, "
-                                       "write the table (byte for byte the one-process table)")
+  cmd->add_option("--points", o->points, "With --shard: solve the slice of this refinement pass's points (the file "
+                                         "written by --merge ... --next) instead of the first round's")
+      ->needs(shard);
+  auto* merge = cmd->add_option("--merge", o->merge, "Shard files of this case (all N of one split, of every pass): take "
+                                                     "their solves, refine here, write the table (byte for byte the "
+                                                     "one-process table)")
       ->excludes(shard);
+  cmd->add_option("--next", o->next, "With --merge: do not solve what the shards lack; write those points (the next "
+                                     "refinement pass) to this file for --shard K/N --points, and exit 5 without a table")
+      ->needs(merge);
   cmd->callback([o, &ctx] {
     o->make.check = !o->no_check;
     if (o->no_check) o->make.refine = 0;
     const CaseFile cf = load_case_file(o->case_file, true);
-    ctx.exit_code = o->shard.empty() ? table_job(cf, o->make, o->out, ctx.out, ctx.err, o->merge)
-                                     : table_shard_job(cf, o->make, o->shard, o->out, ctx.out, ctx.err);
+    ctx.exit_code = o->shard.empty() ? table_job(cf, o->make, o->out, ctx.out, ctx.err, o->merge, o->next)
+                                     : table_shard_job(cf, o->make, o->shard, o->out, ctx.out, ctx.err, o->points);
   });
 }
 

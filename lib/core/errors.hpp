@@ -16,6 +16,7 @@ enum ExitCode : int {
   kExitInputError = 2,   ///< invalid input: file, JSON, option values; nothing written
   kExitInternal = 3,     ///< an unexpected internal error (a bug): please report
   kExitOutput = 4,       ///< output could not be written (disk full, closed pipe, /dev/full, rename failed)
+  kExitMorePoints = 5,   ///< `table --merge ... --next FILE`: the refinement needs more points, written to FILE
   // CLI11's own codes (e.g. 105 for a parse error, 106 for a validation error) are passed through.
 };
 

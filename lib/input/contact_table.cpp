@@ -254,20 +254,25 @@ void ContactTableLookup::lookup(double tY, double Q, TableAnswer& out) const {
     if (!(v[kTabN] > 0)) continue;
     for (int q = 0; q < kTableQuantities; ++q)
       if (kTableColumns[q].non_negative && v[q] < 0) v[q] = vx[q] = vy[q] = 0;
-    const double cg = std::cos(v[kTabGamma]), sg = std::sin(v[kTabGamma]);
-    out.Fz += v[kTabN] * cg;
-    out.Fy += v[kTabN] * sg;
-    out.dFy_dtY += vx[kTabN] * sg + v[kTabN] * cg * vx[kTabGamma];
-    out.dFy_dQ += vy[kTabN] * sg + v[kTabN] * cg * vy[kTabGamma];
-    if (out.n_contacts < kTableMaxContacts) {
-      TableContact& c = out.c[static_cast<std::size_t>(out.n_contacts)];
-      c.track = k + 1;
-      c.v = v;
-      c.d_dtY = vx;
-      c.d_dQ = vy;
-    }
-    ++out.n_contacts;
+    add_table_contact(out, k, v, vx, vy);
   }
+}
+
+void add_table_contact(TableAnswer& out, int k, const std::array<double, kTableQuantities>& v,
+                       const std::array<double, kTableQuantities>& vx, const std::array<double, kTableQuantities>& vy) {
+  const double cg = std::cos(v[kTabGamma]), sg = std::sin(v[kTabGamma]);
+  out.Fz += v[kTabN] * cg;
+  out.Fy += v[kTabN] * sg;
+  out.dFy_dtY += vx[kTabN] * sg + v[kTabN] * cg * vx[kTabGamma];
+  out.dFy_dQ += vy[kTabN] * sg + v[kTabN] * cg * vy[kTabGamma];
+  if (out.n_contacts < kTableMaxContacts) {
+    TableContact& c = out.c[static_cast<std::size_t>(out.n_contacts)];
+    c.track = k + 1;
+    c.v = v;
+    c.d_dtY = vx;
+    c.d_dQ = vy;
+  }
+  ++out.n_contacts;
 }
 
 void ContactTableLookup::basis(double tY, double Q, Basis& B) const {

@@ -104,6 +104,13 @@ struct TableAnswer {
   std::array<TableContact, kTableMaxContacts> c;
 };
 
+/// Add one contact of track k (0-based) with its values v and their derivatives along t_Y (vx)
+/// and Q (vy) to `out`: Fz += N cos γ, Fy += N sin γ, ∂Fy/∂t_Y and ∂Fy/∂Q by the product rule,
+/// and the contact's slot while there is room (n_contacts counts it either way). The one
+/// per-contact summation of the lookup and of the export's bilinear reading.
+void add_table_contact(TableAnswer& out, int k, const std::array<double, kTableQuantities>& v,
+                       const std::array<double, kTableQuantities>& vx, const std::array<double, kTableQuantities>& vy);
+
 /// The interpolant of a table: node slopes made once; lookups allocate nothing and may run on
 /// any number of threads at once.
 class ContactTableLookup {

@@ -248,19 +248,7 @@ void export_bilinear(const ContactTableData& ex, double tY, double Q, TableAnswe
         }
       }
     if (!(v[kTabN] > 0)) continue;
-    const double cg = std::cos(v[kTabGamma]), sg = std::sin(v[kTabGamma]);
-    out.Fz += v[kTabN] * cg;
-    out.Fy += v[kTabN] * sg;
-    out.dFy_dtY += vx[kTabN] * sg + v[kTabN] * cg * vx[kTabGamma];
-    out.dFy_dQ += vy[kTabN] * sg + v[kTabN] * cg * vy[kTabGamma];
-    if (out.n_contacts < kTableMaxContacts) {
-      TableContact& tc = out.c[static_cast<std::size_t>(out.n_contacts)];
-      tc.track = static_cast<int>(k) + 1;
-      tc.v = v;
-      tc.d_dtY = vx;
-      tc.d_dQ = vy;
-    }
-    ++out.n_contacts;
+    add_table_contact(out, static_cast<int>(k), v, vx, vy);
   }
 }
 

@@ -288,7 +288,7 @@ std::vector<std::pair<double, double>> table_first_points(const CaseFile& cf, co
 }
 
 TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const TableMakeOptions& opt, std::ostream& err,
-                             const TableSolves* presolved) {
+                             const TableSolves* presolved, bool defer) {
   std::vector<double> tY_mm, Q_kN;
   table_initial_nodes(cf, tY_mm, Q_kN);
 
@@ -297,16 +297,22 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   TableMade made;
   TableSolves solved;  // (tY mm, Q kN) → solve
   if (presolved) solved = *presolved;
+  // Solve the points not solved yet; false when deferred (they are then made.pending).
   auto solve_missing = [&](const std::vector<std::pair<double, double>>& pts_mm) {
     std::vector<std::pair<double, double>> todo, si;
     for (const auto& p : pts_mm)
       if (!solved.count(p)) todo.push_back(p);
     std::sort(todo.begin(), todo.end());
     todo.erase(std::unique(todo.begin(), todo.end()), todo.end());
+    if (defer && !todo.empty()) {
+      made.pending = std::move(todo);
+      return false;
+    }
     for (const auto& p : todo) si.emplace_back(p.first * units::mm, p.second * 1e3);
     const auto res = solve_points(cf, pg, si, pool);
     for (std::size_t k = 0; k < todo.size(); ++k) solved[todo[k]] = res[k];
     made.solves += todo.size();
+    return true;
   };
 
   ContactTableData data;
@@ -316,7 +322,15 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
     std::vector<std::pair<double, double>> pts;
     for (double t : tY_mm)
       for (double q : Q_kN) pts.emplace_back(t, q);
-    solve_missing(pts);
+    std::vector<std::pair<double, double>> centres;
+    if (opt.check)
+      for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i)
+        for (std::size_t j = 0; j + 1 < Q_kN.size(); ++j)
+          centres.emplace_back(rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])), 0.5 * (Q_kN[j] + Q_kN[j + 1]));
+    // The nodes and the centres of their cells in one batch (one pass of shards).
+    std::vector<std::pair<double, double>> batch = pts;
+    batch.insert(batch.end(), centres.begin(), centres.end());
+    if (!solve_missing(batch)) return made;
     std::vector<const NodeSolve*> nodes;
     for (const auto& p : pts) nodes.push_back(&solved.at(p));
     std::vector<double> tY, Q;
@@ -326,11 +340,6 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
     checks.clear();
     cell_fail.assign((tY_mm.size() - 1) * (Q_kN.size() - 1), 0);
     if (!opt.check) break;
-    std::vector<std::pair<double, double>> centres;
-    for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i)
-      for (std::size_t j = 0; j + 1 < Q_kN.size(); ++j)
-        centres.emplace_back(rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])), 0.5 * (Q_kN[j] + Q_kN[j + 1]));
-    solve_missing(centres);
     const ContactTableLookup look(data);
     TableAnswer ans;
     for (std::size_t c = 0; c < centres.size(); ++c) {
@@ -355,7 +364,7 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
         const double tm = rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])), qm = 0.5 * (Q_kN[j] + Q_kN[j + 1]);
         edges.insert(edges.end(), {{tm, Q_kN[j]}, {tm, Q_kN[j + 1]}, {tY_mm[i], qm}, {tY_mm[i + 1], qm}});
       }
-    solve_missing(edges);
+    if (!solve_missing(edges)) return made;
     // An edge midpoint's error in units of its tolerances (> 1: missed; 0 where not compared).
     auto score = [&](const std::pair<double, double>& p) {
       look.lookup(p.first * units::mm, p.second * 1e3, ans);
@@ -502,12 +511,23 @@ void write_contact_table(const ContactTableData& t, std::ostream& out) {
 }
 
 int table_job(const CaseFile& cf, const TableMakeOptions& opt, const std::string& out_path, std::ostream& out,
-              std::ostream& err, const std::vector<std::string>& shard_files) {
+              std::ostream& err, const std::vector<std::string>& shard_files, const std::string& next_path) {
+  if (!next_path.empty() && shard_files.empty())
+    throw InputError("--next", next_path, "the points of a next pass come from a merge", "give --merge PART... too");
   const PairGeometry pg = build_pair_geometry(cf);
   if (!opt.quiet) warn_profiles(pg, err);
   TableSolves pre;
-  if (!shard_files.empty()) pre = read_table_shards(cf, pg, opt, shard_files);
-  const TableMade m = make_contact_table(cf, pg, opt, err, shard_files.empty() ? nullptr : &pre);
+  unsigned passes = 0;
+  if (!shard_files.empty()) pre = read_table_shards(cf, pg, opt, shard_files, &passes);
+  const TableMade m = make_contact_table(cf, pg, opt, err, shard_files.empty() ? nullptr : &pre, !next_path.empty());
+  if (!m.pending.empty()) {
+    write_table_points(cf, pg, opt, passes, m.pending, next_path);
+    if (!opt.quiet)
+      err << "mhcontact table: the refinement needs " << m.pending.size() << " more points (pass " << passes << "), written to "
+          << next_path << ": solve them with `mhcontact table CASE.json --shard K/N --points " << next_path
+          << " -o PART`, then merge again with every part; no table written\n";
+    return kExitMorePoints;
+  }
   if (out_path == "-") {
     write_contact_table(m.data, out);
   } else {

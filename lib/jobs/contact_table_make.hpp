@@ -47,6 +47,10 @@ struct TableMade {
   ContactTableData data;                 ///< with its header (the error summary included)
   std::vector<TableCheckError> checks;   ///< one per cell of the final grid (check on)
   std::size_t solves = 0;                ///< direct solves made (nodes and check points)
+  /// With `defer`: the points (t_Y [mm], Q [kN]) the making needs next that the presolved solves
+  /// do not hold, sorted. While it is not empty the table is not made (`data` is empty): solve
+  /// them (the shards of `mhcontact table --shard K/N --points FILE`) and make again with them.
+  std::vector<std::pair<double, double>> pending;
 };
 
 struct NodeSolve;
@@ -63,18 +67,26 @@ std::vector<std::pair<double, double>> table_first_points(const CaseFile& cf, co
 
 /// Make the table of `cf` (its pair `pg`, method, material; its sweep gives the initial nodes).
 /// `presolved` (the shards' solves, contact_table_shards.hpp) are taken instead of solving those
-/// points again: the table is the same. Throws InputError as table_initial_nodes.
+/// points again: the table is the same. With `defer`, points it needs that `presolved` does not
+/// hold are not solved here: the making stops at the first batch of them and returns it as
+/// `pending` (the refinement's solves split into shards too, docs/tables.md "Shards"). Each batch
+/// is what one step of making asks for at once: a round's new nodes with the centres of their
+/// cells, or the edge midpoints of its failing cells. Throws InputError as table_initial_nodes.
 TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const TableMakeOptions& opt, std::ostream& err,
-                             const TableSolves* presolved = nullptr);
+                             const TableSolves* presolved = nullptr, bool defer = false);
 
 /// The table as its file's text (CSV with the JSON header line).
 void write_contact_table(const ContactTableData& t, std::ostream& out);
 
 /// `mhcontact table CASE.json -o FILE`: make, write atomically, print the error summary. Returns
 /// 0, or 1 when some cells stay beyond tolerance (coarse) or some nodes have no answer. With
-/// `shard_files` (`--merge`), the first round's solves are the shards' (contact_table_shards.hpp)
-/// and the refinement is solved here: the table is byte for byte the one-process table.
+/// `shard_files` (`--merge`), the solves are the shards' (contact_table_shards.hpp: the first
+/// round's and those of refinement passes) and the rest is solved here: the table is byte for byte
+/// the one-process table. With `next_path` too (`--merge ... --next FILE`), the rest is not solved
+/// here: when the making needs points the shards do not hold, they are written to `next_path`
+/// (the points of the next pass, for `--shard K/N --points FILE`), no table is written and the
+/// return is kExitMorePoints.
 int table_job(const CaseFile& cf, const TableMakeOptions& opt, const std::string& out_path, std::ostream& out,
-              std::ostream& err, const std::vector<std::string>& shard_files = {});
+              std::ostream& err, const std::vector<std::string>& shard_files = {}, const std::string& next_path = {});
 
 }  // namespace mh

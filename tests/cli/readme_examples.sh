@@ -190,6 +190,16 @@ shown_output docs/tables.md "./build/mhcontact table-export out/table.csv -o out
 ./build/mhcontact table cases/s1002-60e1-table.json --shard 2/2 -o out/table-part2.json
 ./build/mhcontact table cases/s1002-60e1-table.json --merge out/table-part1.json out/table-part2.json -o out/table-merged.csv || test $? -eq 1
 cmp out/table.csv out/table-merged.csv
+# The refinement's passes in shards too: the merge with --next exits 5 until the parts hold every
+# point; then the table (exit 1: its coarse cells), byte for byte the table above.
+for k in 1 2; do ./build/mhcontact table cases/s1002-60e1-table.json --shard $k/2 -o out/pass0-$k.json; done
+pass=0
+until ./build/mhcontact table cases/s1002-60e1-table.json --merge out/pass*-*.json --next out/next.json -o out/table-passes.csv; [ $? -ne 5 ]; do
+pass=$((pass + 1))
+test $pass -le 20  # a merge that never completes fails here, not in an endless loop
+for k in 1 2; do ./build/mhcontact table cases/s1002-60e1-table.json --shard $k/2 --points out/next.json -o out/pass$pass-$k.json; done
+done
+cmp out/table.csv out/table-passes.csv
 
 # --- docs/cli.md, "Exit codes": a failing case gives 1, bad input 2, CLI syntax >= 100 --------
 set +e

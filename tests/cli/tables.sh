@@ -81,6 +81,12 @@ sed -i "s|\.\./profiles|$SRC/tests/data/profiles|g" q.json
 for k in 1 2; do "$BIN" table q.json --shard $k/2 -o out/q$k.json -q --threads 2; done
 "$BIN" table q.json --merge out/q2.json out/q1.json -o out/q-merged.csv -q --threads 2
 check "sharded table = one-process table" cmp out/q.csv out/q-merged.csv
+"$BIN" table q.json --merge out/q1.json out/q2.json --next out/q-next.json -o out/q-x.csv -q; rc=$?
+check "merge --next: the refinement's points needed (exit 5)" test $rc -eq 5
+check "merge --next: no table written" test ! -e out/q-x.csv
+check "merge --next: the points of pass 1" grep -q '"pass":1,.*"schema":"mhcontact.table-points/1"' out/q-next.json
+"$BIN" table q.json --points out/q-next.json -o out/q-x.csv 2>err.txt; rc=$?
+check "--points without --shard refused" test $rc -ge 100
 "$BIN" table q.json --merge out/q1.json -o out/x.csv 2>err.txt; rc=$?
 check "missing shard refused (exit 2)" test $rc -eq 2
 check "missing shard message" grep -q 'shard 2/2 is missing' err.txt
