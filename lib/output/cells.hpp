@@ -44,26 +44,33 @@ inline void write8(char* p, std::uint32_t v) {
   std::memcpy(p + 6, kDigitPairs + 2 * (b % 100), 2);
 }
 // %g layout of the significant digits dig[0..nd) (no trailing zeros) with decimal exponent X.
+// dig[0..16) must be readable (digits copied 16 bytes at a time, a constant size the compiler
+// turns into two moves, the pointer then advanced by the digits written); `o` has room for 40.
 inline char* layout_general(char* o, bool neg, const char* dig, int nd, int X, int d) {
   if (neg) *o++ = '-';
   if (X < d && X >= -4) {  // fixed notation
-    if (X < 0) {
-      *o++ = '0'; *o++ = '.';
-      for (int k = 0; k < -X - 1; ++k) *o++ = '0';
-      for (int k = 0; k < nd; ++k) *o++ = dig[k];
-    } else {
-      for (int k = 0; k <= X; ++k) *o++ = k < nd ? dig[k] : '0';
-      if (nd > X + 1) {
-        *o++ = '.';
-        for (int k = X + 1; k < nd; ++k) *o++ = dig[k];
-      }
+    if (X < 0) {  // "0." and −X − 1 zeros (at most 3), then the digits
+      std::memcpy(o, "0.000", 5);
+      o += 1 - X;
+      std::memcpy(o, dig, 16);
+      return o + nd;
+    }
+    // X < d: the integer part's X + 1 characters are digits of dig (the trailing zeros dropped
+    // from nd are '0' there).
+    std::memcpy(o, dig, 16);
+    o += X + 1;
+    if (nd > X + 1) {
+      *o++ = '.';
+      std::memcpy(o, dig + X + 1, 16);
+      o += nd - X - 1;
     }
     return o;
   }
   *o++ = dig[0];  // scientific, exponent with at least two digits
   if (nd > 1) {
     *o++ = '.';
-    for (int k = 1; k < nd; ++k) *o++ = dig[k];
+    std::memcpy(o, dig + 1, 16);
+    o += nd - 1;
   }
   *o++ = 'e';
   *o++ = X < 0 ? '-' : '+';
@@ -134,7 +141,9 @@ inline char* general_digits(char* out, double v, int d) {
     // X was one too low (its estimate is floor(log10 2^(e+52)) ≤ log10|v|): one digit more than
     // wanted; drop it, rounding half-even on the dropped digit and the remainder below it.
     ++X;
-    const std::uint64_t q1 = static_cast<std::uint64_t>(qf / 10), last = static_cast<std::uint64_t>(qf % 10);
+    // qf < 10^(d+1) ≤ 10^16: 64-bit division by a constant (a multiplication), not 128-bit.
+    const std::uint64_t qf64 = static_cast<std::uint64_t>(qf);
+    const std::uint64_t q1 = qf64 / 10, last = qf64 % 10;
     q = q1 + ((last > 5 || (last == 5 && (sticky || (q1 & 1)))) ? 1 : 0);
   } else {
     if (qf < p10[d - 1]) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;  // never: X is never too high
@@ -144,10 +153,13 @@ inline char* general_digits(char* out, double v, int d) {
     q = p10[d - 1];
     ++X;
   }
-  // The d digits of q (< 10^15) from 16 written two at a time: q = hi·10^8 + lo.
-  char buf16[16];
-  detail::write8(buf16, static_cast<std::uint32_t>(q / 100000000u));
-  detail::write8(buf16 + 8, static_cast<std::uint32_t>(q % 100000000u));
+  // The d digits of q (< 10^15) right-aligned in 16, written two at a time: q = hi·10^8 + lo
+  // (hi < 100 for d ≤ 10, the tables' default); 16 more readable bytes for layout_general.
+  char buf16[32] = {};
+  const std::uint32_t hi = static_cast<std::uint32_t>(q / 100000000u), lo = static_cast<std::uint32_t>(q % 100000000u);
+  if (d <= 10) std::memcpy(buf16 + 6, detail::kDigitPairs + 2 * hi, 2);
+  else detail::write8(buf16, hi);
+  detail::write8(buf16 + 8, lo);
   const char* dig = buf16 + 16 - d;
   int nd = d;
   while (nd > 1 && dig[nd - 1] == '0') --nd;  // %g drops trailing zeros
