@@ -252,7 +252,10 @@ NoiseDecision ProfileCurve::classify_noise(const std::vector<LocalFit>& centred,
   d.median_residual = median_residual;
   d.print_step = print_step;
   d.rounding_rms = print_step / std::sqrt(12.0);
-  d.threshold = std::max(opt.noise_threshold, opt.quantisation_factor * d.rounding_rms);
+  // The rounding allowance is a bound on σ (quantisation_factor × q/√12), carried to the median
+  // residual it corresponds to: σ = r √(k/ν / m_ν) for fits of k points (below), so the bound on r
+  // is the bound on σ times √(ν m_ν / k) at the median k (k = 7: 0.69).
+  double r_per_sigma = 1;
   {
     std::vector<double> v;
     std::vector<int> k;
@@ -270,13 +273,16 @@ NoiseDecision ProfileCurve::classify_noise(const std::vector<LocalFit>& centred,
       const double nu = k[v.size() / 2] - 3;
       const double median_chi2 = std::pow(1 - 2 / (9 * nu), 3);  // Wilson & Hilferty 1931
       d.sigma = std::sqrt(v[v.size() / 2] / median_chi2);
+      r_per_sigma = std::sqrt(nu * median_chi2 / (nu + 3));
     }
   }
+  d.threshold = std::max(opt.noise_threshold, opt.quantisation_factor * d.rounding_rms * r_per_sigma);
   const std::string step = print_step > 0 ? "the printed " + print_step_text(print_step) : "";
   const std::string rule =
       "median residual " + um(d.median_residual) + (d.median_residual > d.threshold ? " > " : " <= ") + um(d.threshold) +
-      (opt.quantisation_factor * d.rounding_rms > opt.noise_threshold
-           ? " (" + format_number(opt.quantisation_factor) + " x " + um(d.rounding_rms) + ", rounding to " + step + ")"
+      (d.threshold > opt.noise_threshold
+           ? " (the residual of a noise sigma of " + format_number(std::round(opt.quantisation_factor * 100) / 100) + " x " + um(d.rounding_rms) +
+                 ", rounding to " + step + ": scatter beyond the rounding as large as the rounding's own; sigma " + um(d.sigma) + ")"
            : " (noise threshold" + (step.empty() ? std::string() : "; rounding to " + step + " explains " + um(d.rounding_rms)) + ")");
   const bool coarse = d.rounding_rms > opt.max_exact_rounding && d.median_residual > opt.noise_threshold;
   const std::string coarse_rule = "printed to " + print_step_text(print_step) + ", whose rounding (" +

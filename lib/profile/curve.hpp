@@ -47,15 +47,17 @@ struct CurveOptions {
   double residual_floor = 1e-9;       ///< [m] residuals below this count as exact: no switch (default 1 nm)
   int min_points = 5;                 ///< a window is widened until it holds at least this many points (default 5)
   /// Measured profiles: a profile is "measured" (not an exact construction but carrying
-  /// measurement noise) when the median RMS residual r of the centred fits exceeds both
-  /// `noise_threshold` and `quantisation_factor` × q/√12, the RMS error that rounding the printed
-  /// coordinates to their step q (Profile::print_step) alone gives (uniform rounding error; the
-  /// fit's residual normal to the profile is q/√12 whatever the slope, as both y and z are
-  /// rounded to q). A measured profile is refitted with the wider window
+  /// measurement noise) when the median RMS residual r of the centred fits exceeds
+  /// `noise_threshold` and its noise σ (NoiseDecision::sigma) exceeds `quantisation_factor` ×
+  /// q/√12, the RMS error that rounding the printed coordinates to their step q
+  /// (Profile::print_step) alone gives (uniform rounding error; the fit's residual normal to the
+  /// profile is q/√12 whatever the slope, as both y and z are rounded to q). The default √2 says:
+  /// measured when the scatter beyond the rounding is at least as large as the rounding itself
+  /// (σ² ≥ 2 q²/12); an exact profile printed to q has σ ≈ q/√12. A measured profile is refitted with the wider window
   /// `measured_window_half_width`, which keeps the curvature sign stable on a rail crown (R 300
   /// mm) under ±2 µm noise. Set it ≤ window_half_width to disable. `noise` forces the choice.
   double noise_threshold = 0.2e-6;            ///< [m] (default 0.2 µm)
-  double quantisation_factor = 3.0;           ///< [-] (default 3)
+  double quantisation_factor = 1.41421356237309505;  ///< [-] (default √2)
   /// ... but rounding is noise to the narrow window too: when the rounding RMS q/√12 exceeds
   /// this (2 decimals: 2.9 µm), the quantisation allowance is not granted and a residual above
   /// `noise_threshold` makes the profile measured (default 0.5 µm: 3 decimals, 0.29 µm, can still
@@ -89,7 +91,7 @@ struct NoiseDecision {
   double median_residual = 0;   ///< [m] r: median RMS residual of the narrow-window centred fits
   double print_step = 0;        ///< [m] q: step of the printed coordinates (0: not printed/unknown)
   double rounding_rms = 0;      ///< [m] q/√12
-  double threshold = 0;         ///< [m] max(noise_threshold, quantisation_factor × q/√12)
+  double threshold = 0;         ///< [m] the median residual above which measured: max(noise_threshold, the r of σ = quantisation_factor × q/√12)
   /// [m] σ: the standard deviation of the measurement noise normal to the profile (scatter and
   /// rounding together), from the same narrow centred fits. A window of k points fitted by the
   /// three parameters of a circle-or-line leaves k − 3 degrees of freedom, so each node's
@@ -98,7 +100,7 @@ struct NoiseDecision {
   /// windows that straddle a breakpoint out. What the smoothing for contact removes is matched
   /// to it (profile/smoothing_spline.hpp, smooth_profile_to_noise).
   double sigma = 0;
-  /// "exact: median residual 0.28 µm <= 0.87 µm (3 × 0.29 µm, rounding to the printed 0.001 mm)".
+  /// "exact: median residual 0.2 µm <= 0.28 µm (the residual of a noise sigma of 1.41 x 0.29 µm, rounding to the printed 0.001 mm: …)".
   std::string reason;
   /// A file printed to different precision along the profile whose regions class differently
   /// (profiles.md §7 "Region by region"): each region, in y order. Then `measured` is true, the

@@ -334,3 +334,60 @@ TEST_CASE("case file geometry.smoothing_mm: \"auto\" (the default), a forced len
     CHECK(e.find("\"auto\"") != std::string::npos);
   }
 }
+
+TEST_CASE("measurement (not a check): seeds and lengths on the constructed profiles, profiles.md §7", "[.smoothing_seeds]") {
+  // build/tests/mhcontact_tests "[.smoothing_seeds]": the strips' peak-pressure error against
+  // the noise-free profile for four noise realisations (seeds) of each constructed profile at two
+  // measurement qualities, with the automatic length and with one length forced; per row the
+  // median and the largest |error| over seeds, t_Y and Q (40 and 100 kN), and the median signed
+  // error (a bias, where the seeds agree).
+  const mh::CaseFile cf = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/s1002-60e1.json", true);
+  const mh::PairGeometry base = mh::build_pair_geometry(cf);
+  const double cant = std::atan(1.0 / 40);
+  struct Quality {
+    const char* name;
+    double noise, print;
+  };
+  const Quality qualities[] = {{"±3 µm, printed to 0.01 mm", 3e-6, 1e-5}, {"±1 µm, printed to 0.001 mm", 1e-6, 1e-6}, {"±1 µm, printed to 0.0001 mm", 1e-6, 1e-7}, {"none, printed to 0.001 mm", 0, 1e-6}};
+  const char* kinds[] = {"hollow wheel, shoulders over 3 mm, shoulder contacts", "R3 gauge corner rail, tread contacts",
+                         "R3 gauge corner rail, flange contacts"};
+  mh::GeometryOptions exact_opt = cf.geometry;
+  exact_opt.curve.window_half_width = 0.25e-3;
+  exact_opt.wheel_noise = exact_opt.rail_noise = mh::ProfileNoise::Exact;
+  for (int kind = 0; kind < 3; ++kind) {
+    const mh::Profile we = kind == 0 ? mh::testing::hollow_wheel(0.05e-3, 0, 0, 0.5e-3, -15e-3, 12e-3, 3e-3) : base.wheel;
+    const mh::Profile re = kind == 0 ? base.rail : mh::testing::worn_corner_rail(3e-3, 0.05e-3, 0, 0, cant);
+    const std::vector<double> tYs = kind == 0 ? std::vector<double>{-4, -2, 0, 2, 4}
+                                    : kind == 1 ? std::vector<double>{-4, -2, 0, 2}
+                                                : std::vector<double>{6, 7, 8, 10};
+    const mh::ContactGeometry ref = mh::build_geometry(we, re, cf.track, exact_opt);
+    std::vector<double> pref;
+    for (double tY : tYs)
+      for (double Q : {40e3, 100e3}) pref.push_back(mh::solve_strip_method(ref, cf.material, tY * 1e-3, Q, cf.strips).pmax);
+    for (const Quality& q : qualities)
+      for (double L : {-1.0, 0.7e-3, 1e-3, 2e-3, 5e-3, 8e-3}) {
+        std::vector<double> err;
+        for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+          const std::uint64_t s = 7 * seed + 3;
+          const mh::Profile wn = kind == 0 ? mh::testing::hollow_wheel(0.4e-3, q.noise, q.print, 0.5e-3, -15e-3, 12e-3, 3e-3, s) : base.wheel;
+          const mh::Profile rn = kind == 0 ? base.rail : mh::testing::worn_corner_rail(3e-3, 0.4e-3, q.noise, q.print, cant, s);
+          mh::GeometryOptions o = cf.geometry;
+          if (L > 0) o.contact_smoothing = L;
+          const mh::ContactGeometry g = mh::build_geometry(wn, rn, cf.track, o);
+          std::size_t k = 0;
+          for (double tY : tYs)
+            for (double Q : {40e3, 100e3}) {
+              const mh::CaseResult a = mh::solve_strip_method(g, cf.material, tY * 1e-3, Q, cf.strips);
+              err.push_back(100 * (a.pmax / pref[k++] - 1));
+            }
+        }
+        std::vector<double> mag(err.size());
+        std::transform(err.begin(), err.end(), mag.begin(), [](double e) { return std::fabs(e); });
+        std::sort(mag.begin(), mag.end());
+        std::sort(err.begin(), err.end());
+        std::printf("%s; %s; L %s: |error| median %.1f %%, largest %.1f %%; signed median %+.1f %%\n", kinds[kind], q.name,
+                    L > 0 ? (std::to_string(L * 1e3).substr(0, 3) + " mm").c_str() : "auto", mag[mag.size() / 2], mag.back(),
+                    err[err.size() / 2]);
+      }
+  }
+}

@@ -73,6 +73,23 @@ TEST_CASE("noise added to an exact profile printed with 6 decimals makes it meas
   REQUIRE(n.median_residual > 1e-6);
 }
 
+TEST_CASE("scatter as large as the rounding makes a profile printed with 3 decimals measured", "[noise]") {
+  // Rounding to 0.001 mm alone: σ ≈ q/√12 = 0.29 µm. Normal noise of 0.6 µm on z (σ about
+  // 0.67 µm with the rounding) is scatter beyond the rounding larger than the rounding: measured
+  // (the allowance σ > √2 q/√12 = 0.41 µm; the former r > 3 q/√12 = 0.87 µm classed it exact, and
+  // its pressures then went unsmoothed: up to 40 % off, profiles.md §7). 0.15 µm of noise
+  // (σ about 0.33 µm) is within the allowance: exact.
+  const Profile p = make_standard_profile("S1002");
+  const NoiseDecision a = classify(write_fixed(p, 3, "S1002_3_noise06.dat", 0.6e-3), ProfileKind::Wheel);
+  CAPTURE(a.reason, a.sigma, a.median_residual, a.threshold);
+  CHECK(a.measured);
+  CHECK(a.sigma > 0.55e-6);
+  CHECK(a.sigma < 0.80e-6);
+  const NoiseDecision b = classify(write_fixed(p, 3, "S1002_3_noise015.dat", 0.15e-3), ProfileKind::Wheel);
+  CAPTURE(b.reason, b.sigma);
+  CHECK_FALSE(b.measured);
+}
+
 TEST_CASE("a profile printed to 0.01 mm is measured: its rounding is noise to the narrow window", "[noise]") {
   // Rounding RMS 2.9 µm exceeds max_exact_rounding (0.5 µm): no quantisation allowance.
   const NoiseDecision n = classify(write_fixed(make_standard_profile("S1002"), 2, "S1002_2.dat"), ProfileKind::Wheel);
