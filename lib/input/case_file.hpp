@@ -3,6 +3,7 @@
 // Every error names the file, the JSON path, the value and the rule; unknown keys are errors.
 // Field reference: docs/case-file.md.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -99,7 +100,10 @@ struct CaseFile {
 /// Parse and validate. `need_cases`: `run` needs a sweep; `geometry` does not.
 CaseFile load_case_file(const std::string& path, bool need_cases);
 /// The same from parsed JSON; `path` names the file in messages and anchors relative paths.
-CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool need_cases);
+/// `origins`: for an object assembled from several places (a manifest pair's case), the JSON path
+/// prefix of a top-level key that came from elsewhere ("friction" -> "/pairs/3"), for the errors.
+CaseFile parse_case_json(const nlohmann::json& j, const std::string& path, bool need_cases,
+                         const std::map<std::string, std::string>& origins = {});
 /// Read a JSON file; a syntax error names file:line:column. Throws InputError.
 nlohmann::json read_json_file(const std::string& path);
 

@@ -8,6 +8,7 @@
 // Internal to the case-file reader: namespace detail.
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <set>
 #include <string>
 
@@ -19,12 +20,20 @@
 namespace mh {
 namespace detail {
 
-// Validation context: file name + JSON path.
+// Validation context: file name + JSON path. `origins`: where top-level keys of the object read
+// came from, when it was assembled from several places (a manifest pair's keys: "friction" ->
+// "/pairs/3"); a path under such a key is named with that prefix.
 struct Ctx {
   std::string file;
+  std::map<std::string, std::string> origins;
   [[noreturn]] void fail(const std::string& path, const nlohmann::json* v, const std::string& rule,
                          const std::string& hint = {}) const {
-    throw InputError(file + ": " + (path.empty() ? "/" : path), v ? v->dump() : std::string(), rule, hint);
+    std::string at = path.empty() ? "/" : path;
+    if (!origins.empty() && at.size() > 1) {
+      const auto o = origins.find(at.substr(1, at.find('/', 1) - 1));
+      if (o != origins.end()) at = o->second + at;
+    }
+    throw InputError(file + ": " + at, v ? v->dump() : std::string(), rule, hint);
   }
   void only_keys(const nlohmann::json& obj, const std::string& path, const std::set<std::string>& allowed) const {
     if (!obj.is_object()) fail(path, &obj, "must be an object");

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 
 #include "core/errors.hpp"
+#include "input/case_tangential_rcf.hpp"
 
 namespace mh {
 
@@ -18,7 +20,24 @@ bool is_manifest(const json& j) {
 namespace {
 
 const std::vector<std::string> kCommonKeys = {"track", "geometry", "material", "model", "method", "half_space", "strips",
-                                               "sweep", "cases", "solver"};
+                                               "sweep", "cases", "solver", "friction", "kinematics", "creepages", "fastsim", "rcf"};
+
+// The case of pair k: the manifest's shared keys, the pair's own keys over them (each replacing
+// the manifest's key of that name), its profiles. `origins`: the pair's keys' JSON path prefix.
+json assemble(const Manifest& m, std::size_t k, std::map<std::string, std::string>* origins) {
+  const ManifestPair& p = m.pairs.at(k);
+  json c = m.common;
+  c.erase("inclination");
+  c.erase("nominal_radius_mm");
+  for (auto it = p.keys.begin(); it != p.keys.end(); ++it) {
+    c[it.key()] = it.value();
+    if (origins) (*origins)[it.key()] = "/pairs/" + std::to_string(k);
+  }
+  c["wheel"] = {{"profile", p.wheel}};
+  if (m.common.contains("nominal_radius_mm")) c["wheel"]["nominal_radius_mm"] = m.common["nominal_radius_mm"];
+  c["rail"] = {{"profile", p.rail}, {"inclination", m.common["inclination"]}};
+  return c;
+}
 
 std::string label(const json& spec) {
   if (spec.is_string()) return std::filesystem::path(spec.get<std::string>()).filename().string();
@@ -69,12 +88,13 @@ Manifest parse_manifest(const json& j, const std::string& path) {
   if (!j.is_object()) fail("/", &j, "must be an object");
   static const std::vector<std::string> allowed = {"pairs", "wheels", "rails", "inclination", "nominal_radius_mm", "track",
                                                    "geometry", "material", "model", "method", "half_space", "strips",
-                                                   "sweep", "cases", "solver", "comment"};
+                                                   "sweep", "cases", "solver", "comment", "friction", "kinematics",
+                                                   "creepages", "fastsim", "rcf"};
   for (auto it = j.begin(); it != j.end(); ++it)
     if (std::find(allowed.begin(), allowed.end(), it.key()) == allowed.end())
       fail("/" + it.key(), nullptr, "unknown key in a manifest",
            "allowed: pairs, wheels, rails, inclination, nominal_radius_mm, track, geometry, material, model, method, "
-           "half_space, strips, sweep, cases, solver, comment");
+           "half_space, strips, sweep, cases, solver, friction, kinematics, creepages, fastsim, rcf, comment");
   if (!j.contains("inclination"))
     fail("/inclination", nullptr, "required: \"as-is\", \"none\", \"1:40\" or \"1:20\", for every rail of the batch");
   if (j.contains("pairs") && (j.contains("wheels") || j.contains("rails")))
@@ -85,10 +105,15 @@ Manifest parse_manifest(const json& j, const std::string& path) {
     for (std::size_t i = 0; i < a.size(); ++i) {
       const std::string w = "/pairs/" + std::to_string(i);
       if (!a[i].is_object()) fail(w, &a[i], "must be an object {\"name\", \"wheel\", \"rail\"}");
-      for (auto it = a[i].begin(); it != a[i].end(); ++it)
-        if (it.key() != "name" && it.key() != "wheel" && it.key() != "rail") fail(w + "/" + it.key(), nullptr, "unknown key (name, wheel, rail)");
-      if (!a[i].contains("wheel") || !a[i].contains("rail")) fail(w, &a[i], "needs \"wheel\" and \"rail\"");
+      const auto& own = detail::tangential_rcf_keys();
       ManifestPair p;
+      p.keys = json::object();
+      for (auto it = a[i].begin(); it != a[i].end(); ++it) {
+        if (std::find(own.begin(), own.end(), it.key()) != own.end()) p.keys[it.key()] = it.value();
+        else if (it.key() != "name" && it.key() != "wheel" && it.key() != "rail")
+          fail(w + "/" + it.key(), nullptr, "unknown key (name, wheel, rail; friction, kinematics, creepages, fastsim, rcf)");
+      }
+      if (!a[i].contains("wheel") || !a[i].contains("rail")) fail(w, &a[i], "needs \"wheel\" and \"rail\"");
       p.wheel = a[i]["wheel"];
       p.rail = a[i]["rail"];
       if (a[i].contains("name")) {
@@ -117,20 +142,43 @@ Manifest parse_manifest(const json& j, const std::string& path) {
   probe["wheel"] = {{"profile", {{"standard", "S1002"}}}};
   if (m.common.contains("nominal_radius_mm")) probe["wheel"]["nominal_radius_mm"] = m.common["nominal_radius_mm"];
   probe["rail"] = {{"profile", {{"standard", "60E1"}}}, {"inclination", m.common["inclination"]}};
-  parse_case_json(probe, path, true);
+  const CaseFile shared = parse_case_json(probe, path, true);
+  // A pair's own keys through the same rules, its errors at the pair's JSON path. Every pair of a
+  // batch writes the same tables: the keys that decide their columns (friction given, rcf, its
+  // subsurface stresses) are given for every pair or for none.
+  CaseFile first;
+  for (std::size_t k = 0; k < m.pairs.size(); ++k) {
+    if (k > 0 && m.pairs[k].keys.empty() && m.pairs[0].keys.empty()) continue;  // the shared case's columns
+    std::map<std::string, std::string> origins;
+    json c = assemble(m, k, &origins);
+    c["wheel"]["profile"] = probe["wheel"]["profile"];
+    c["rail"]["profile"] = probe["rail"]["profile"];
+    const CaseFile cf = m.pairs[k].keys.empty() ? shared : parse_case_json(c, path, true, origins);
+    if (k == 0) {
+      first = cf;
+      continue;
+    }
+    auto differ = [&](bool a, bool b, const char* key, const char* what) {
+      if (a == b) return;
+      const std::string at = m.pairs[k].keys.contains(key) ? "/pairs/" + std::to_string(k) + "/" + key : "/pairs/" + std::to_string(k);
+      fail(at, nullptr,
+           std::string("every pair of a batch writes the same columns: ") + what + " for every pair or for none (pair 0 " +
+               (a ? "gives it" : "does not") + ")",
+           "give it in the manifest's shared keys and change its values per pair");
+    };
+    differ(first.tangential.enabled(), cf.tangential.enabled(), "friction", "give friction");
+    differ(first.rcf.enabled(), cf.rcf.enabled(), "rcf", "give rcf");
+    differ(first.rcf.subsurface, cf.rcf.subsurface, "rcf", "give rcf.subsurface");
+  }
   return m;
 }
 
 CaseFile pair_case(const Manifest& m, std::size_t k) {
   const ManifestPair& p = m.pairs.at(k);
-  json c = m.common;
-  c.erase("inclination");
-  c.erase("nominal_radius_mm");
-  c["wheel"] = {{"profile", p.wheel}};
-  if (m.common.contains("nominal_radius_mm")) c["wheel"]["nominal_radius_mm"] = m.common["nominal_radius_mm"];
-  c["rail"] = {{"profile", p.rail}, {"inclination", m.common["inclination"]}};
+  std::map<std::string, std::string> origins;
+  const json c = assemble(m, k, &origins);
   try {
-    return parse_case_json(c, m.path, true);
+    return parse_case_json(c, m.path, true, origins);
   } catch (const InputError& e) {
     throw InputError(m.path + ": pair " + std::to_string(k) + " (" + p.name + ")", e.value(), e.rule() + " [" + e.where() + "]", e.hint());
   }

@@ -4,16 +4,21 @@
 // cannot be read or placed is reported in its rows and the batch goes on.
 //
 //   {
-//     "pairs": [{"name": "A", "wheel": PROFILE, "rail": PROFILE}, ...],   // explicit pairs, or
+//     "pairs": [{"name": "A", "wheel": PROFILE, "rail": PROFILE,          // explicit pairs, each
+//                "friction": {...}, "rcf": {...}, ...}, ...],             //   with its own physics keys, or
 //     "wheels": [PROFILE or "glob/*.whl", ...], "rails": [...],          // every wheel × every rail
 //     "inclination": "as-is" | "none" | "1:40" | "1:20",                 // required, for all rails
 //     "nominal_radius_mm": 460, "track": {...}, "geometry": {...}, "material": {...},
 //     "model": "elastic", "method": "multi-hertzian" | "strips" | "half-space" | "auto",
 //     "half_space": {...}, "strips": {...},                              // the method's options
+//     "friction": {...}, "kinematics" | "creepages": {...}, "fastsim": {...}, "rcf": {...},  // for every pair
 //     "sweep": {...} | "cases": [...], "solver": {...}, "comment": "..."
 //   }
 // PROFILE is what a case file accepts under wheel.profile / rail.profile; a string with * ? or [
-// is a glob, relative to the manifest, expanded in sorted order (no match is an error).
+// is a glob, relative to the manifest, expanded in sorted order (no match is an error). A pair's
+// friction, kinematics, creepages, fastsim or rcf replaces the manifest's key of that name for
+// that pair (the case-file rules, errors at /pairs/K/...); the keys that decide the tables'
+// columns (friction, rcf, rcf.subsurface) are given for every pair or for none.
 #include <string>
 #include <vector>
 
@@ -26,6 +31,9 @@ namespace mh {
 struct ManifestPair {
   std::string name;              ///< given, or "WHEEL on RAIL" from the file names
   nlohmann::json wheel, rail;    ///< profile specifications (case-file form)
+  /// The pair's own friction, kinematics, creepages, fastsim, rcf (case-file form; an empty
+  /// object: none): each replaces the manifest's key of the same name for this pair.
+  nlohmann::json keys = nlohmann::json::object();
 };
 
 struct Manifest {

@@ -106,7 +106,7 @@ std::vector<json> expand_globs(const Ctx& c, const json& list, const std::string
 WheelsetCase load_wheelset_case(const std::string& path) { return parse_wheelset_json(read_json_file(path), path); }
 
 WheelsetCase parse_wheelset_json(const json& j, const std::string& path) {
-  const Ctx c{path};
+  const Ctx c{path, {}};
   WheelsetCase w;
   w.path = path;
   c.only_keys(j, "", {"comment", "wheel", "wheels", "rail", "wheelset", "y_mm", "amplitudes_mm"});

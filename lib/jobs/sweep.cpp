@@ -380,9 +380,12 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   rcf.nu = cf.material.nur();  // the subsurface stresses are the rail's
   const bool tang = cf.tangential.enabled();  // the tangential columns (docs/tangential.md)
   // The cases whose pressure grid is written keep their tractions per element too (the traction
-  // columns of pressure.csv); every other case keeps nothing (TangentialOptions::keep_traction).
+  // columns of pressure.csv), and so does every case whose grid patches' stresses take their
+  // solved traction (contact/rcf/contact_stresses.hpp); every other case keeps nothing
+  // (TangentialOptions::keep_traction).
+  mo.tangential.keep_traction = tang && grid_stresses;
   MethodOptions mo_grid = mo;
-  mo_grid.tangential.keep_traction = tang && np > 0;
+  mo_grid.tangential.keep_traction = tang && (np > 0 || grid_stresses);
   const std::uint64_t n = end - first;
   if (n == 0) return;
   const unsigned threads = std::max(1u, opt.threads ? opt.threads : std::thread::hardware_concurrency());

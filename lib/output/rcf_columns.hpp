@@ -2,43 +2,27 @@
 // The RCF, subsurface, tangential, damage and wear columns of the per-contact and per-case
 // tables (docs/outputs.md "RCF columns", "Subsurface columns", "Damage and wear columns";
 // docs/tangential.md), written by field to a sink (case_sinks.hpp). Internal to lib/output: the
-// writers of lib/output/case_tables.cpp append them. They write what the case result carries;
-// the one computation left here is the subsurface search of a contact (rcf_columns.cpp).
+// writers of lib/output/case_tables.cpp append them. They format what the case result carries and
+// what contact/rcf computes from it (the subsurface stresses, contact_stresses.hpp).
 #include <cmath>
 
 #include "contact/case_result.hpp"
 #include "contact/rcf/shakedown.hpp"
+#include "contact/rcf/contact_stresses.hpp"
 #include "contact/rcf/subsurface.hpp"
 #include "core/units.hpp"
 
 namespace mh {
 
-// The RCF columns (docs/outputs.md "RCF columns"), appended last to ellipses.csv and patches.csv
-// and to their JSON records: by their definitions, from the elastic Hertz patch of the load N
-// (semi-axes a_el, b_el; NaN: not known, the cells empty).
-// The stresses below a contact's ELASTIC Hertz ellipse (a_el, b_el, p0_el of its N; never a plastic
-// patch's) with full-slip traction f: along the contact's own force (Fx, Fy) with friction given,
-// else along x (contact/rcf/subsurface.hpp; docs/outputs.md "Subsurface columns"). The search costs
-// about 0.5 s per contact: the last results of this thread are kept, so that the CSV and JSON
-// records of a contact (formatted one after the other) search once.
-SubsurfacePeaks subsurface_of(const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
-                              double f);
-// With "subsurface": {"grid": true}, the stresses below a grid patch from its own element pressure
-// (half-space: PatchResult::p; strips: their semi-ellipses laid on a grid of the strip width) with
-// full-slip traction f p (as for the ellipse) on the rail along the contact's own force (-F/|F|, F
-// on the wheel; along x without one): the per-element traction is not kept in the result.
-// False (P untouched) for a patch with elements at the plastic cap, or without its pressure.
-bool grid_subsurface_of(const RcfOptions& o, const PatchResult& patch, double f, SubsurfacePeaks& P);
-// `patch`: the row's grid patch, or null (an ellipse row). sub_source says which load the stresses
-// are of: "hertz_ellipse" (the elastic Hertz ellipse of N) or "grid_patch" (the patch's own pressure).
+// The subsurface columns of one contact (docs/outputs.md "Subsurface columns"): the stresses of
+// contact_stresses (contact/rcf/contact_stresses.hpp: which load, its peaks, FI_sub), formatted.
+// `patch`: the row's grid patch, or null (an ellipse row).
 template <class Sink>
 void subsurface_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
                        double f, const PatchResult* patch = nullptr) {
-  SubsurfacePeaks P;
-  const char* source = nullptr;
-  if (std::isfinite(f) && patch && o.subsurface_grid && grid_subsurface_of(o, *patch, f, P)) source = "grid_patch";
-  else if (std::isfinite(f) && (P = subsurface_of(o, N, a_el, b_el, t, f), std::isfinite(P.vm_max))) source = "hertz_ellipse";
-  k.text("sub_source", source);
+  const ContactStresses S = contact_stresses(o, N, a_el, b_el, t, f, patch);
+  const SubsurfacePeaks& P = S.peaks;
+  k.text("sub_source", to_string(S.source));
   k.number("sub_vm_max_MPa", P.vm_max / units::MPa);
   k.number("sub_vm_depth_mm", P.vm_z * units::per_mm);
   k.number("sub_tau_max_MPa", P.tau_max / units::MPa);
@@ -47,8 +31,11 @@ void subsurface_fields(Sink& k, const RcfOptions& o, double N, double a_el, doub
   k.number("sub_tau_orth_depth_mm", P.tau_orth_z * units::per_mm);
   k.number("sub_tau_eq_amp_MPa", P.tau_eq_amp / units::MPa);
   k.number("sub_sigma_h_MPa", P.sigma_h / units::MPa);
-  k.number("FI_sub_MPa", fi_sub(P, o.dang_van_c) / units::MPa);
+  k.number("FI_sub_MPa", S.fi_sub / units::MPa);
 }
+// The RCF columns (docs/outputs.md "RCF columns"), appended last to ellipses.csv and patches.csv
+// and to their JSON records: by their definitions, from the elastic Hertz patch of the load N
+// (semi-axes a_el, b_el; NaN: not known, the cells empty).
 // The traction coefficient is the user's f, or with friction given the contact's own |F|/N
 // (RcfOptions::traction; empty where its tangential problem is unsolved).
 template <class Sink>

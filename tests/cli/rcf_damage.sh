@@ -140,6 +140,16 @@ assert 0.5 * pmax < vm < 0.8 * pmax, (vm, pmax)
 assert float(p["sub_vm_depth_mm"]) >= float(p["element_mm"]), p  # searched from one element deep
 print("rcf_damage: a grid patch's subsurface columns from its own pressure")
 PY
+# With friction given, the grid patch's own solved traction (the run keeps it for these rows).
+base '{"shear_yield_MPa": 300, "subsurface": {"grid": true}}' "\"method\": \"half-space\", $fric" |
+  sed 's/"tY_mm": \[0, 2, 4, 6, 7, 8\], "Q_kN": 100/"tY_mm": [4], "Q_kN": 20/' > "$tmp/gf.json"
+"$bin" run "$tmp/gf.json" -o "$tmp/gf" -q --format csv
+"$py" - "$tmp/gf" <<'PY'
+import csv, sys
+P = list(csv.DictReader(open(sys.argv[1] + "/patches.csv")))
+assert len(P) == 1 and P[0]["sub_source"] == "grid_patch_solved_traction", [p["sub_source"] for p in P]
+print("rcf_damage: a grid patch's subsurface columns from its own solved traction")
+PY
 # Contradicting inputs: exit code 2, the JSON path named.
 expect_error() {  # $1: file, $2: the path the message must name
   set +e; "$bin" run "$1" -o "$tmp/x" -q 2>"$tmp/err"; rc=$?; set -e

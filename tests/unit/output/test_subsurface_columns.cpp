@@ -1,12 +1,12 @@
-// The subsurface columns of a grid patch (output/rcf_columns.hpp; docs/outputs.md "Subsurface
-// columns"): with "subsurface": {"grid": true} from the patch's own element pressure
+// The subsurface columns of a grid patch (output/rcf_columns.hpp, their stresses from
+// contact/rcf/contact_stresses.hpp; docs/outputs.md "Subsurface columns"): with "subsurface": {"grid": true} from the patch's own element pressure
 // (grid_subsurface), otherwise, and always for a patch with elements at the plastic cap, from its
 // elastic Hertz ellipse. A patch whose pressure is a Hertzian ellipse's sampled on 0.4 mm elements
 // must give the ellipse's columns within the tolerances of the grid-against-Hertz test
 // (tests/unit/contact/test_grid_subsurface.cpp, docs/methods.md "Below a grid patch": the same
 // ellipse, elements and ν), frictionless and with full-slip traction f = 0.3.
 // Broken once to see it fail: the patch's element grid read transposed (nx and ns swapped in
-// patch_pressure, rcf_columns.cpp): every peak compared failed.
+// patch_pressure, contact_stresses.cpp): every peak compared failed.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -1,0 +1,65 @@
+#pragma once
+// The subsurface stresses of one solved contact (docs/outputs.md "Subsurface columns"; docs/methods.md
+// "Subsurface stresses"): which load they are of, its peaks and FI_sub. The output tables only
+// format this result (lib/output/rcf_columns.hpp).
+//
+// The load, in order of preference:
+// - a grid patch with "subsurface": {"grid": true}, friction given and the per-element traction of
+//   its tangential solve kept (PatchResult::traction, TangentialOptions::keep_traction): its element
+//   pressure and that solved traction, on the rail (ContactStressSource::GridPatchSolvedTraction);
+// - a grid patch with "grid": true otherwise: its element pressure (half-space: PatchResult::p;
+//   strips: their semi-ellipses laid on a grid of the strip width across and at least 32 along, as
+//   the strips' tangential step lays them, contact/solve.cpp) with full-slip traction f p on the
+//   rail along the contact's own force (−F/|F|, F on the wheel; along x without one)
+//   (ContactStressSource::GridPatch);
+// - else the ELASTIC Hertz ellipse of the contact's N (a_el, b_el, p0_el; never a plastic patch's)
+//   with full-slip traction f along the contact's own force with friction given, else along x
+//   (ContactStressSource::HertzEllipse; subsurface.hpp).
+// Never the grid for a patch with elements at the plastic cap: the elastic stresses of a capped
+// pressure are not the stresses of the yielded material (its Hertz ellipse's instead).
+#include <cmath>
+
+#include "contact/case_result.hpp"
+#include "contact/rcf/grid_subsurface.hpp"
+#include "contact/rcf/shakedown.hpp"
+#include "contact/rcf/subsurface.hpp"
+
+namespace mh {
+
+/// Which load a contact's subsurface stresses are of (docs/outputs.md, column sub_source).
+enum class ContactStressSource { None, HertzEllipse, GridPatch, GridPatchSolvedTraction };
+/// The sub_source text; nullptr for None (the cell empty).
+inline const char* to_string(ContactStressSource s) {
+  switch (s) {
+    case ContactStressSource::None: return nullptr;
+    case ContactStressSource::HertzEllipse: return "hertz_ellipse";
+    case ContactStressSource::GridPatch: return "grid_patch";
+    case ContactStressSource::GridPatchSolvedTraction: return "grid_patch_solved_traction";
+  }
+  return nullptr;
+}
+
+/// The stresses below one contact: the source of its load, the peaks (NaN: not computed) and
+/// FI_sub [Pa] (NaN without RcfOptions::dang_van_c).
+struct ContactStresses {
+  ContactStressSource source = ContactStressSource::None;
+  SubsurfacePeaks peaks;
+  double fi_sub = NAN;
+};
+
+/// The stresses below the contact carrying N [N] with elastic Hertz semi-axes a_el, b_el [m],
+/// tangential result t and traction coefficient f [-] (RcfOptions::traction); `patch`: the grid
+/// patch, or null for an ellipse. None (NaN peaks) when f is not finite or the load is not known.
+/// The search costs about 0.5 s per ellipse and seconds per grid patch: the last results of this
+/// thread are kept, so that the CSV and JSON records of a contact (formatted one after the other)
+/// search once.
+ContactStresses contact_stresses(const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
+                                 double f, const PatchResult* patch = nullptr);
+
+/// The load of a grid patch for the stresses (the first two sources above; the rules there): its
+/// element pressure, and the solved traction on the rail when `solved` is asked and kept, else
+/// full-slip f p along the contact's own force. Empty (no elements) for a patch without its
+/// pressure; solved_used says whether the solved traction was taken.
+GridLoad patch_stress_load(const RcfOptions& o, const PatchResult& patch, double f, bool solved, bool* solved_used = nullptr);
+
+}  // namespace mh
