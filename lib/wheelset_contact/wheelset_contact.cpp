@@ -396,6 +396,13 @@ void WheelsetContact::solve_both(const WheelsetPose& pose, const WheelsetStepOpt
     }
     solve_at(roll);
     double zl = end_height(out.left), zr = end_height(out.right);
+    if (pose.solve_roll && geo && roll != 0 && !(std::isfinite(zl) && std::isfinite(zr))) {
+      // The first-order roll can be far off in flange contact (the upright lever short) and put a
+      // wheel outside its table: start from the upright wheelset then.
+      roll = 0;
+      solve_at(roll);
+      zl = end_height(out.left), zr = end_height(out.right);
+    }
     if (pose.solve_roll) {
       // One rigid axle: Z + σ φ L_s = h_s − δ_s on both wheels, the roll from the difference. With
       // the roll in the geometry both wheels are solved again at each roll of a root search on
