@@ -284,7 +284,7 @@ TEST_CASE("C wheelset: each wheel's warnings as data agree with their text, and 
   CHECK(seen > 0);
 }
 
-TEST_CASE("C wheelset: roll_in_geometry 0 keeps the wheels upright, 1 (the default) rolls them; other values refused",
+TEST_CASE("C wheelset: roll_in_geometry 0 keeps the wheels upright, 1 (the default) rolls them, other values refused",
           "[capi][wheelset_contact][roll]") {
   // y 3 mm, 50 kN a wheel: the roll solved (0.18 mrad); rolled, each pair's t_Y moves by the
   // rotation about the axle centre (eq. 3.8.2, about 0.46 mm per mrad); upright it is ±y exactly.
