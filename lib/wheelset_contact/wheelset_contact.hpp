@@ -18,7 +18,8 @@
 // pair (t_Y > 0: towards that wheel's flange contact).
 //
 // What is modelled, and the limits (each reported as a WheelsetWarning when it applies):
-//  - roll φ (about x, positive raising the left wheel): with the multi-Hertzian method each wheel
+//  - roll φ (about x, positive raising the left wheel): with the multi-Hertzian method (and
+//    WheelsetSetup::roll_in_geometry, the default) each wheel
 //    is rolled against its rail by δ = σ φ about the axle centre (pair_pose(), method.md §3.8):
 //    its candidates are those of the rolled profile (contact point, angle, curvatures, gaps), its
 //    height that of the rolled wheel's first contact, the spin that of the rolled axle. The grid
@@ -191,11 +192,11 @@ struct WheelsetStepOptions {
   double fd_Q = 1e-4;        ///< [-] Loads: in each Q, relative (default 1e-4)
   /// |lead| above this fraction of the contact's semi-axis a: yaw_lead_not_modelled (default 0.1).
   double lead_fraction = 0.1;
-  /// [rad] Grid methods only (the multi-Hertzian method rolls each wheel against its rail): |φ|
+  /// [rad] The roll not in the geometry only (grid methods, roll_in_geometry false): |φ|
   /// above this, roll_in_geometry_neglected (default 1 mrad; against CONTACT a roll 0.1 mrad off
   /// the kinematic one already moves a centred tread contact's Fx by 7.8 % of μN, docs/c-api.md).
   double roll_limit = 1e-3;
-  /// [rad] Grid methods only: a loaded contact steeper than this under a roll |φ| > 0.1 mrad: roll_near_flange
+  /// [rad] The roll not in the geometry only: a loaded contact steeper than this under a roll |φ| > 0.1 mrad: roll_near_flange
   /// (default 25°). The first-order roll (roll_lever) assumes the contact point stays where the
   /// upright wheel has it; near the flange the roll moves it (S1002 on 60E1 1:40, the roll solved
   /// against geometry/wheelset's exact rotation: within 3 % up to y = 6 mm, γ 21°; at 6.5 mm
