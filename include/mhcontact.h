@@ -469,6 +469,10 @@ typedef struct mhc_wheelset_options {
                                   NaN (default): normal contact only */
   int32_t fastsim_nx;        /**< FASTSIM cells along x per strip (default 16: the wheelset call's, docs/performance.md) */
   int32_t fastsim_ny;        /**< FASTSIM strips across (default 16) */
+  int32_t roll_in_geometry;  /**< 1 (default): each wheel rolled against its rail in the
+                                  multi-Hertzian geometry; 0: the upright wheels, the roll to first
+                                  order in the heights (faster; its error against CONTACT:
+                                  docs/wheelset.md) */
 } mhc_wheelset_options;
 
 typedef enum mhc_vertical {

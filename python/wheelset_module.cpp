@@ -102,18 +102,19 @@ void bind_wheelset(py::module_& m, void (*check)(mhc_error)) {
   m.attr("INTERFACE_VERSION") = mhc_interface_version(nullptr);
   py::class_<Wheelset>(m, "Wheelset", "Both wheels of a wheelset on their rails (docs/python.md).")
       .def(py::init([check](const py::object& left, const py::object& right, double mu, int fastsim_nx,
-                            int fastsim_ny) {
+                            int fastsim_ny, bool roll_in_geometry) {
              mhc_wheelset_options o;
              mhc_wheelset_options_init(&o);
              o.mu = mu;
              o.fastsim_nx = fastsim_nx;
              o.fastsim_ny = fastsim_ny;
+             o.roll_in_geometry = roll_in_geometry ? 1 : 0;
              auto w = std::make_unique<Wheelset>();
              check(mhc_wheelset_create(pair_of(left), pair_of(right), &o, &w->w));
              return w;
            }),
            py::arg("left"), py::arg("right"), py::arg("mu") = NAN, py::arg("fastsim_nx") = 16,
-           py::arg("fastsim_ny") = 16)
+           py::arg("fastsim_ny") = 16, py::arg("roll_in_geometry") = true)
       .def("_step_many",
            [check](const Wheelset& w, const std::map<std::string, Arr>& in, int vertical, bool solve_roll,
                    bool derivatives, int threads) {

@@ -3,14 +3,15 @@
  * figure of docs/performance.md "The wheelset call" (printed, never asserted: the machines are
  * shared). Plain C: what a host program sees.
  * Usage: mhcontact_bench_wheelset_step [STEPS [ONLY]] (default 10000 steps, every figure)
- * ONLY = wet | many | fine | dry runs that one figure (for callgrind's instruction counts:
+ * ONLY = wet | many | fine | dry | upright runs that one figure (for callgrind's instruction counts:
  * valgrind --tool=callgrind build/mhcontact_bench_wheelset_step 200 wet).
  * S1002 on 60E1 at 1:40, mu = 0.3, V = 30 m/s, Q = 50 kN per wheel; the wheelset runs a
  * sinusoid y = 6 sin(2 pi i / STEPS) mm with yaw 2 mrad sin(...), one reused workspace. The time
  * is the thread's CPU time (a shared machine's waiting not counted), the median of 5 repeats,
  * per step, with the wheelset call's defaults (FASTSIM 16 x 16, the vertical equilibrium to
  * 1e-5 Q). Then the same steps by mhc_wheelset_step_many on one thread (the Python binding's
- * path), with FASTSIM on a 32 x 32 grid (the single pair's default), and without friction. */
+ * path), with FASTSIM on a 32 x 32 grid (the single pair's default), without friction, and with
+ * the wheels upright (roll_in_geometry 0: the roll to first order in the heights). */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdio.h>
@@ -36,14 +37,15 @@ static void die(mhc_error e) {
   exit(2);
 }
 
-/* nx = 0: the default grid of mhc_wheelset_options_init. */
-static mhc_wheelset* make(const mhc_pair* pair, double mu, int nx) {
+/* nx = 0: the default grid of mhc_wheelset_options_init; rolled: roll_in_geometry. */
+static mhc_wheelset* make(const mhc_pair* pair, double mu, int nx, int rolled) {
   mhc_wheelset_options o;
   mhc_wheelset* w = NULL;
   mhc_error e;
   mhc_wheelset_options_init(&o);
   o.mu = mu;
   if (nx > 0) o.fastsim_nx = o.fastsim_ny = nx;
+  o.roll_in_geometry = rolled;
   if ((e = mhc_wheelset_create(pair, pair, &o, &w)) != MHC_OK) die(e);
   return w;
 }
@@ -82,7 +84,7 @@ int main(int argc, char** argv) {
   mhc_pair_options po;
   mhc_wheelset_pose* poses = calloc(n, sizeof *poses);
   mhc_wheelset_result* res = calloc(n, sizeof *res);
-  mhc_wheelset *wet, *dry, *fine;
+  mhc_wheelset *wet, *dry, *fine, *upright;
   size_t i, ok = 0;
   mhc_error e;
   if (!poses || !res || n == 0) return 2;
@@ -91,9 +93,10 @@ int main(int argc, char** argv) {
   mhc_pair_options_init(&po);
   po.rail_inclination = 40;
   if ((e = mhc_pair_create(wheel, rail, &po, &pair)) != MHC_OK) die(e);
-  wet = make(pair, 0.3, 0);
-  fine = make(pair, 0.3, 32);
-  dry = make(pair, NAN, 0);
+  wet = make(pair, 0.3, 0, 1);
+  fine = make(pair, 0.3, 32, 1);
+  dry = make(pair, NAN, 0, 1);
+  upright = make(pair, 0.3, 0, 0);
   for (i = 0; i < n; ++i) {
     const double s = sin(2 * 3.141592653589793 * (double)i / (double)n);
     mhc_wheelset_pose* p = &poses[i];
@@ -117,11 +120,14 @@ int main(int argc, char** argv) {
     printf("  mhc_wheelset_step, FASTSIM 32 x 32:                              %.2f us\n", run(fine, poses, res, n, 0));
   if (!*only || !strcmp(only, "dry"))
     printf("  mhc_wheelset_step, normal only:                                  %.2f us\n", run(dry, poses, res, n, 0));
+  if (!*only || !strcmp(only, "upright"))
+    printf("  mhc_wheelset_step, the wheels upright (roll_in_geometry 0):     %.2f us\n", run(upright, poses, res, n, 0));
   if (!*only || !strcmp(only, "many"))
     printf("  steps ok: %zu of %zu (the others outside_validity: flange contact near a jump)\n", ok, n);
   mhc_wheelset_free(wet);
   mhc_wheelset_free(dry);
   mhc_wheelset_free(fine);
+  mhc_wheelset_free(upright);
   mhc_pair_free(pair);
   mhc_profile_free(wheel);
   mhc_profile_free(rail);

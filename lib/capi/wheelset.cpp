@@ -197,6 +197,7 @@ void mhc_wheelset_options_init(mhc_wheelset_options* o) {
   o->struct_size = sizeof *o;
   o->mu = std::numeric_limits<double>::quiet_NaN();
   o->fastsim_nx = o->fastsim_ny = mh::kWheelsetFastsimCells;  // the wheelset call's default (wheelset_contact.hpp)
+  o->roll_in_geometry = 1;
 }
 
 mhc_error mhc_wheelset_create(const mhc_pair* left, const mhc_pair* right, const mhc_wheelset_options* opt,
@@ -250,10 +251,14 @@ mhc_error mhc_wheelset_create(const mhc_pair* left, const mhc_pair* right, const
                                         std::to_string(mh::kFastsimMaxN));
     method.tangential.fastsim.nx = o.fastsim_nx;
     method.tangential.fastsim.ny = o.fastsim_ny;
+    if (o.roll_in_geometry != 0 && o.roll_in_geometry != 1)
+      return fail(MHC_ERR_ARGUMENT, "options.roll_in_geometry = " + std::to_string(o.roll_in_geometry) +
+                                        ": must be 1 (the wheels rolled in the geometry) or 0 (upright)");
     std::vector<std::string> warnings = left->warnings;
     warnings.insert(warnings.end(), right->warnings.begin(), right->warnings.end());
     auto w = std::make_unique<mhc_wheelset>();
-    w->model = std::make_unique<mh::WheelsetContact>(left->pg.geo, right->pg.geo, tl, ml, method, std::move(warnings));
+    w->model = std::make_unique<mh::WheelsetContact>(left->pg.geo, right->pg.geo, tl, ml, method, std::move(warnings),
+                                                    o.roll_in_geometry == 1);
     w->plastic = left->plastic;
     *out = w.release();
     return MHC_OK;

@@ -200,8 +200,20 @@ void ContactGeometry::rolled_wheel_at(double t, double roll, double y_r, double*
   *z_w = *y_w * sn + (z0 + d0 * dy) * c;
 }
 
-bool ContactGeometry::candidates_at(double t, double roll, CandidateGeom* out, int* main) const {
-  candidates_at(t, out, main);  // the upright candidates: their points, and the answer at δ = 0
+namespace {
+
+// candidates_at(t, δ) of G evaluated every time (no cache).
+bool rolled_candidates(const ContactGeometry& G, double t, double roll, CandidateGeom* out, int* main) {
+  const auto& wheel_curve = G.wheel_curve;
+  const auto& rail_curve = G.rail_curve;
+  const auto& strip_y = G.strip_y;
+  const auto& strip_zr = G.strip_zr;
+  const auto& strip_ellipse = G.strip_ellipse;
+  const auto& ellipses = G.ellipses;
+  const double y_offset = G.y_offset, nominal_radius = G.nominal_radius, wheel_z0 = G.wheel_z0,
+               flange_y_steepest = G.flange_y_steepest;
+  const bool has_flange = G.has_flange;
+  G.candidates_at(t, out, main);  // the upright candidates: their points, and the answer if no overlap
   if (roll == 0.0 || !wheel_curve || !rail_curve || strip_y.empty() || strip_ellipse.size() != strip_y.size())
     return true;
   const ProfileCurve& W = *wheel_curve;
@@ -225,16 +237,29 @@ bool ContactGeometry::candidates_at(double t, double roll, CandidateGeom* out, i
     const double g = sep1(j);
     if (g < gb) gb = g, jb = j;
   };
-  for (std::size_t j = 0; j < ns; j += kStride) consider(j);
-  consider(ns - 1);
-  if (jb == ns) return false;
-  {
+  const RolledMinima* E = G.rolled_minima.get();
+  const std::size_t n = G.tY.size();
+  if (E && n > 1 && E->first.size() == n + 1 && std::fabs(sn) <= E->sigma_max) {
+    // The envelopes' minima at the grid points around t, and the strips beside them: at a grid
+    // point the strip of the full scan; between two the wheel moves 0.1 strip against the rail.
+    const double step = (G.tY.back() - G.tY.front()) / static_cast<double>(n - 1);
+    const std::size_t k = std::min(static_cast<std::size_t>(std::clamp((t - G.tY.front()) / step, 0.0, static_cast<double>(n - 1))), n - 2);
+    for (std::size_t kk : {k, k + 1}) {
+      const std::size_t j0 = E->at(kk, sn);
+      if (j0 >= ns) continue;
+      for (std::size_t j = j0 > 2 ? j0 - 2 : 0; j <= std::min(j0 + 2, ns - 1); ++j) consider(j);
+    }
+  } else {
+    for (std::size_t j = 0; j < ns; j += kStride) consider(j);
+    consider(ns - 1);
+    if (jb == ns) return false;
     const std::size_t j0 = jb;
     for (std::size_t j = j0 > kStride ? j0 - kStride : 0; j <= std::min(j0 + kStride, ns - 1); ++j) consider(j);
   }
+  if (jb == ns) return false;
   // Refined between the neighbouring strips to the root of the rolled gap's slope,
   // tan(θ_w + δ) − z_r'(y) with tan θ_w = z_w'(y_w) (as refine_minimum: sign changes over
-  // sub-intervals, each bisected).
+  // sub-intervals, each to 1 nm by TOMS 748).
   auto slope = [&](double y) {
     double dw, dr;
     W.z(y - s + W.z(y - s) * sn, &dw);  // the wheel's slope at the point facing y (first order)
@@ -243,7 +268,7 @@ bool ContactGeometry::candidates_at(double t, double roll, CandidateGeom* out, i
   };
   auto sep = [&](double y) {
     double yw, zw;
-    rolled_wheel_at(t, roll, y, &yw, &zw);
+    G.rolled_wheel_at(t, roll, y, &yw, &zw);
     return zw - R.z(y);
   };
   const std::size_t j = jb;
@@ -259,7 +284,7 @@ bool ContactGeometry::candidates_at(double t, double roll, CandidateGeom* out, i
       tol.abs = 1e-9;
       tol.rel = 0;
       tol.max_iterations = 60;
-      const double ym = bisected_root(slope, y0, y1, tol).x, gm = sep(ym);
+      const double ym = bracketed_root(slope, y0, y1, d0, d1, tol).x, gm = sep(ym);
       if (gm < gm_best) ym_best = ym, gm_best = gm;
     }
     y0 = y1;
@@ -281,9 +306,9 @@ bool ContactGeometry::candidates_at(double t, double roll, CandidateGeom* out, i
     if (g_c[e] < g_c[m]) m = e;
   for (std::size_t e = 0; e < ne; ++e) {
     CandidateGeom& c = out[e];
-    fill_candidate(t, y_c[e], e == m, g_c[m], c);
+    G.fill_candidate(t, y_c[e], e == m, g_c[m], c);
     double yw, zw;
-    rolled_wheel_at(t, roll, y_c[e], &yw, &zw);
+    G.rolled_wheel_at(t, roll, y_c[e], &yw, &zw);
     const double z_w = W.z(yw);
     c.y_w = yw;
     c.k_wxx = W.kappa(yw);
@@ -294,6 +319,128 @@ bool ContactGeometry::candidates_at(double t, double roll, CandidateGeom* out, i
   }
   if (main) *main = static_cast<int>(m);
   return true;
+}
+
+}  // namespace
+
+bool ContactGeometry::candidates_at(double t, double roll, CandidateGeom* out, int* main) const {
+  if (roll == 0.0 || !wheel_curve || !rail_curve || strip_y.empty() || strip_ellipse.size() != strip_y.size()) {
+    candidates_at(t, out, main);  // the upright candidates, the answer at δ = 0
+    return true;
+  }
+  // A solve asks for the same (t, δ) several times (the wheelset's first-contact height, then the
+  // normal solves of the creep forces' vertical equilibrium): the last few answers are kept per
+  // thread, keyed by the geometry's build_id, t and δ (the same bits as evaluating again).
+  struct Entry { std::uint64_t id = 0; double t = 0, roll = 0; bool ok = false; int main = 0; std::vector<CandidateGeom> c; };
+  constexpr std::size_t kEntries = 4;  // both wheels of a wheelset, at two rolls of a root search
+  thread_local Entry cache[kEntries];
+  thread_local std::size_t next = 0;
+  const std::size_t ne = ellipses.size();
+  if (build_id != 0)
+    for (const Entry& e : cache)
+      if (e.id == build_id && e.t == t && e.roll == roll && e.c.size() == ne) {
+        std::copy(e.c.begin(), e.c.end(), out);
+        if (main) *main = e.main;
+        return e.ok;
+      }
+  int m = 0;
+  const bool ok = rolled_candidates(*this, t, roll, out, &m);
+  if (main) *main = m;
+  if (build_id != 0) {
+    Entry& e = cache[next];
+    next = (next + 1) % kEntries;
+    e.id = build_id;
+    e.t = t;
+    e.roll = roll;
+    e.ok = ok;
+    e.main = m;
+    e.c.assign(out, out + ne);
+  }
+  return ok;
+}
+
+std::uint32_t RolledMinima::at(std::size_t k, double sigma) const {
+  const auto b = sigma_from.begin() + first[k], e = sigma_from.begin() + first[k + 1];
+  if (b == e) return std::numeric_limits<std::uint32_t>::max();
+  const auto it = std::upper_bound(b + 1, e, sigma);  // the last piece starting at or below σ
+  return strip[static_cast<std::size_t>(it - sigma_from.begin()) - 1];
+}
+
+void build_rolled_minima(ContactGeometry& G, double roll_max) {
+  if (!G.wheel_curve || G.strip_y.empty() || G.tY.size() < 2 || !(roll_max > 0)) {
+    G.rolled_minima.reset();
+    return;
+  }
+  const ProfileCurve& W = *G.wheel_curve;
+  const std::size_t ns = G.strip_y.size(), n = G.tY.size();
+  auto E = std::make_shared<RolledMinima>();
+  const double sm = std::sin(roll_max);
+  E->sigma_max = sm;
+  E->first.reserve(n + 1);
+  struct Line { double h, g; std::uint32_t j; };
+  std::vector<Line> lines, hull;
+  std::vector<double> x;  // hull[i] is the minimum from x[i] on
+  for (std::size_t k = 0; k < n; ++k) {
+    E->first.push_back(static_cast<std::uint32_t>(E->strip.size()));
+    // Strip j's rolled separation to first order, g + σ h (the scan's sep1 in rolled_candidates).
+    const double s = G.y_offset + G.tY[k];
+    lines.clear();
+    double U = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < ns; ++j) {
+      const double yw = G.strip_y[j] - s;
+      if (!W.contains(yw)) continue;
+      double d;
+      const double zw = W.z(yw, &d);
+      const Line L{yw + zw * d, zw - G.strip_zr[j], static_cast<std::uint32_t>(j)};
+      lines.push_back(L);
+      // The envelope stays below every line's larger end value on |σ| ≤ sm.
+      U = std::min(U, L.g + sm * std::fabs(L.h));
+    }
+    // Only a line whose smaller end value is not above U can be the minimum somewhere there.
+    lines.erase(std::remove_if(lines.begin(), lines.end(), [&](const Line& L) { return L.g - sm * std::fabs(L.h) > U; }),
+                lines.end());
+    // The lower envelope in increasing σ passes the lines in decreasing slope h; of equal slopes the
+    // lower (then the first strip, as the scan keeps the first of equal values).
+    // h = y_w + z_w z_w' grows with the strip but on the flange: reversed, the lines are nearly in
+    // order, and an insertion sort costs about one pass.
+    auto before = [](const Line& a, const Line& b) { return a.h != b.h ? a.h > b.h : a.g != b.g ? a.g < b.g : a.j < b.j; };
+    std::reverse(lines.begin(), lines.end());
+    for (std::size_t i = 1; i < lines.size(); ++i) {
+      const Line L = lines[i];
+      std::size_t p = i;
+      for (; p > 0 && before(L, lines[p - 1]); --p) lines[p] = lines[p - 1];
+      lines[p] = L;
+    }
+    hull.clear();
+    x.clear();
+    for (const Line& L : lines) {
+      if (!hull.empty() && hull.back().h == L.h) continue;
+      double xs = -std::numeric_limits<double>::infinity();
+      while (!hull.empty()) {
+        const Line& B = hull.back();
+        xs = (L.g - B.g) / (B.h - L.h);  // where L falls below B
+        if (xs <= x.back()) {
+          hull.pop_back();
+          x.pop_back();
+          xs = -std::numeric_limits<double>::infinity();
+        } else {
+          break;
+        }
+      }
+      hull.push_back(L);
+      x.push_back(xs);
+    }
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      const double to = i + 1 < hull.size() ? x[i + 1] : std::numeric_limits<double>::infinity();
+      if (to < -sm || x[i] > sm) continue;  // a piece outside |σ| ≤ sm
+      E->sigma_from.push_back(x[i]);
+      E->strip.push_back(hull[i].j);
+    }
+  }
+  E->first.push_back(static_cast<std::uint32_t>(E->strip.size()));
+  E->sigma_from.shrink_to_fit();
+  E->strip.shrink_to_fit();
+  G.rolled_minima = std::move(E);
 }
 
 bool smoothed_for_contact(const ContactGeometry& G) {

@@ -127,6 +127,21 @@ struct PotentialEllipse {
   double y_r_below = 0, y_r_above = 0;
 };
 
+/// Where the wheel rolled by δ is closest to the rail, tabulated for any |δ| up to a limit
+/// (method.md §3.8, build_rolled_minima): at each t_Y of the grid the rolled separation of strip j
+/// to first order in δ is the line g_j + σ h_j in σ = sin δ (g_j the upright separation, h_j the
+/// rotation's lever at the strip), so the strip of the smallest rolled separation is a piece of
+/// the lower envelope of these lines; each grid point keeps its pieces over |σ| ≤ sigma_max.
+struct RolledMinima {
+  double sigma_max = 0;                ///< [-] sin of the largest |δ| covered
+  std::vector<std::uint32_t> first;    ///< grid point k's pieces: [first[k], first[k + 1])
+  std::vector<double> sigma_from;      ///< [-] per piece: the σ from which its strip is the minimum
+  std::vector<std::uint32_t> strip;    ///< per piece: that strip
+  /// The strip of the smallest rolled separation at grid point k and σ (|σ| ≤ sigma_max); the
+  /// number of strips if the wheel faces none there.
+  std::uint32_t at(std::size_t k, double sigma) const;
+};
+
 class ContactGeometry {
  public:
   std::vector<double> tY;                ///< [m] grid
@@ -217,6 +232,9 @@ class ContactGeometry {
   /// Per rail strip: the potential ellipse whose rail range [y_r_min, y_r_max] is nearest (its part
   /// of the rail for the rolled candidates); filled by build_geometry.
   std::vector<int> strip_ellipse;
+  /// The rolled minima's envelopes (build_rolled_minima; null: candidates_at(t, δ) scans the
+  /// strips). Rolls beyond their limit are scanned too.
+  std::shared_ptr<const RolledMinima> rolled_minima;
   /// The wheel point facing rail point y_r at t with the wheel rolled by δ: its y_w (wheel frame)
   /// and the rotated wheel surface's height there, z̃_w (rail frame, datum height).
   void rolled_wheel_at(double t, double roll, double y_r, double* y_w, double* z_w) const;
@@ -250,6 +268,16 @@ class ContactGeometry {
 /// (no gauge point on the rail, profiles that never overlap) or the options are invalid.
 ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const TrackSetup& track,
                                const GeometryOptions& opt);
+
+/// Tabulate G's rolled minima for |δ| ≤ roll_max [rad] (RolledMinima): one upright evaluation of
+/// every strip at every t_Y of the grid, about the cost of build_geometry again. candidates_at(t, δ)
+/// then evaluates the rolled separation at the strips around the envelopes' minima of the two grid
+/// points around t instead of scanning the rail (the same strip at the grid points; between them
+/// the wheel moves by a tenth of a strip).
+void build_rolled_minima(ContactGeometry& G, double roll_max);
+/// The default limit of the wheelset call's tables (rad): 25 mrad, twice the kinematic roll of
+/// S1002 on 60E1 in flange contact (11.3 mrad at t_Y 10 mm in CONTACT's cases).
+constexpr double kRolledMinimaRollMax = 25e-3;
 
 /// A profile pair as used (rail with its inclination) and its contact geometry.
 struct PairGeometry {

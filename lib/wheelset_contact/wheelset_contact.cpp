@@ -105,12 +105,25 @@ WheelsetContact::WheelsetContact(const WheelsetSetup& setup) : setup_(setup) {
   };
   build(left_, +1, setup.wheel_left, setup.rail_left, setup.nominal_radius_left);
   build(right_, -1, setup.wheel_right, setup.rail_right, setup.nominal_radius_right);
+  tabulate_rolled_minima();
+}
+
+void WheelsetContact::tabulate_rolled_minima() {
+  if (!roll_in_geometry()) return;
+  // The rolled candidates of every step from the envelopes (geometry/contact_geometry.hpp), built
+  // once per geometry: the two sides' are shared when they are copies of one pair's.
+  if (!left_.geo.rolled_minima) build_rolled_minima(left_.geo, kRolledMinimaRollMax);
+  if (right_.geo.build_id == left_.geo.build_id && right_.geo.build_id != 0)
+    right_.geo.rolled_minima = left_.geo.rolled_minima;
+  else if (!right_.geo.rolled_minima)
+    build_rolled_minima(right_.geo, kRolledMinimaRollMax);
 }
 
 WheelsetContact::WheelsetContact(const ContactGeometry& left, const ContactGeometry& right, const TrackSetup& track,
                                  const Material& material, const MethodOptions& method,
-                                 std::vector<std::string> warnings)
+                                 std::vector<std::string> warnings, bool roll_in_geometry)
     : warnings_(std::move(warnings)) {
+  setup_.roll_in_geometry = roll_in_geometry;
   setup_.track = track;
   setup_.material = material;
   setup_.method = method;
@@ -120,6 +133,7 @@ WheelsetContact::WheelsetContact(const ContactGeometry& left, const ContactGeome
   right_.geo = right;
   place(left_, +1);
   place(right_, -1);
+  tabulate_rolled_minima();
 }
 
 namespace {
@@ -186,6 +200,26 @@ double WheelsetContact::roll_lever(int side, double tY) const {
   auto lever = [&](const CandidateGeom& c) { return S.a + c.y_w - c.r_roll * std::tan(c.gamma); };
   if (G.main_ellipse[k] != G.main_ellipse[k + 1]) return lever(f < 0.5 ? c0 : c1);
   return lever(c0) + f * (lever(c1) - lever(c0));
+}
+
+double WheelsetContact::roll_lever(int side, double y, double roll, WheelsetWorkspace& ws) const {
+  const Side& S = side > 0 ? left_ : right_;
+  double tY = 0, d = 0;
+  pair_pose(side, y, roll, &tY, &d);
+  const ContactGeometry& G = S.geo;
+  if (d == 0 || !G.covers(tY)) return roll_lever(side, S.sigma * y);
+  ws.cand.resize(G.n_ellipses());
+  int m = 0;
+  if (!G.candidates_at(tY, d, ws.cand.data(), &m)) return roll_lever(side, S.sigma * y);
+  // dh/dδ of eq. 3.8.2 at the rolled minimum (the minimum's own motion drops out): the rotation
+  // moves the wheel surface at rail point y_r by (y_r − s) + tan γ z̃_w (z̃_w its height there, the
+  // rail's slope tan γ that of the wheel at the minimum), the shift of t_Y by dt/dδ lowers the
+  // separation by tan γ dt/dδ, and the axle above the origin turns: −((z0 + R0) sin δ + a cos δ).
+  // δ = 0: L = a + y_w − r tan γ, the upright lever.
+  const CandidateGeom& c = ws.cand[static_cast<std::size_t>(m)];
+  const double H = G.wheel_z0 + G.nominal_radius, sn = std::sin(d), cs = std::cos(d), tg = std::tan(c.gamma);
+  const double s = G.y_offset + tY, zw = c.sep + G.rail_curve->z(c.y_r);
+  return S.a * cs + (c.y_r - s) + H * sn + tg * (zw - H * cs + S.a * sn);
 }
 
 void WheelsetContact::solve_wheel(const Side& S, const WheelsetPose& pose, double roll, WheelResult& w,
@@ -257,11 +291,11 @@ namespace {
 
 /// The roll φ where f(φ) = 0 (a height difference of the two wheels, decreasing in φ), from φ0
 /// with f0 = f(φ0): secant steps, the first with the slope −L (the two levers; steps at most
-/// 2 mrad), then TOMS 748 once a step crosses the root. To 1e-9 rad or 0.1 nm; the point of
-/// smallest |f| if neither. f is evaluated last at the returned φ when `last` is asked.
+/// 2 mrad), then TOMS 748 once a step crosses the root. To 1e-9 rad or |f| ≤ f_tol [m]; the point
+/// of smallest |f| if neither. f is evaluated last at the returned φ when `last` is asked.
 template <class F>
-double roll_root(F&& f, double phi0, double f0, double L, bool last) {
-  constexpr double kMaxStep = 2e-3, kTol = 1e-9, kFTol = 1e-10;
+double roll_root(F&& f, double phi0, double f0, double L, bool last, double kFTol = 1e-10) {
+  constexpr double kMaxStep = 2e-3, kTol = 1e-9;
   double best = phi0, fbest = f0, slope = L > 1e-3 ? -L : -1.0;
   double at = phi0;  // where f was evaluated last
   for (int it = 0; it < 12 && std::isfinite(f0) && std::fabs(f0) > kFTol; ++it) {
@@ -294,6 +328,30 @@ double roll_root(F&& f, double phi0, double f0, double L, bool last) {
 
 }  // namespace
 
+namespace {
+
+/// [m] The loads mode's tolerance on the two wheels' axle-height difference: what their load
+/// balances' own tolerance leaves of each height (at least 0.1 nm).
+double height_tolerance(const MethodOptions& m, const WheelsetResult& r) {
+  // Each wheel's load is balanced to rtol Q (the creep equilibrium's tolerance with friction, the
+  // normal solve's without): its axle height is known to rtol Q / k, k = Σ dN/dh0 cos² γ its
+  // vertical stiffness (approach_given.hpp); a difference of the two below the sum is noise.
+  const double rtol = m.tangential.enabled() ? m.tangential.equilibrium_tolerance : m.multi_hertzian.rtol;
+  double tol = 0;
+  for (const WheelResult* w : {&r.left, &r.right}) {
+    double k = 0, Q = 0;
+    for (const LoadedEllipse& L : w->r.loaded) {
+      const double c = std::cos(L.g.gamma);
+      k += normal_stiffness(L) * c * c;
+      Q += L.s.N * c;
+    }
+    if (k > 0) tol += rtol * Q / k;
+  }
+  return std::max(tol, 1e-10);
+}
+
+}  // namespace
+
 void WheelsetContact::solve_both(const WheelsetPose& pose, const WheelsetStepOptions& opt, WheelsetResult& out,
                                  WheelsetWorkspace& ws) const {
   const bool geo = roll_in_geometry();
@@ -313,7 +371,8 @@ void WheelsetContact::solve_both(const WheelsetPose& pose, const WheelsetStepOpt
       roll = std::isfinite(hl) && std::isfinite(hr) && L > 0 ? (hl - hr) / L : 0.0;
       if (geo) {
         auto f = [&](double phi) { return first_contact_height(+1, pose.y, phi, ws) - first_contact_height(-1, pose.y, phi, ws); };
-        roll = roll_root(f, roll, f(roll), L, false);
+        const double f0 = f(roll);
+        roll = roll_root(f, roll, f0, roll_lever(+1, pose.y, roll, ws) + roll_lever(-1, pose.y, roll, ws), false);
       }
     }
     solve_at(roll);
@@ -328,8 +387,22 @@ void WheelsetContact::solve_both(const WheelsetPose& pose, const WheelsetStepOpt
       const double d = std::isfinite(w.r.dz) ? w.r.dz : w.r.approach;
       return w.h - d;
     };
+    if (pose.solve_roll && geo) {
+      // Start from the first-order roll of the upright tables' heights and levers: the two
+      // wheels' first-contact heights h_L − φ L_L = h_R + φ L_R (equal loads on equal contacts
+      // descend alike).
+      const double hl = first_contact_height(+1, pose.y), hr = first_contact_height(-1, -pose.y);
+      if (std::isfinite(hl) && std::isfinite(hr) && Ll + Lr > 0) roll = (hl - hr) / (Ll + Lr);
+    }
     solve_at(roll);
     double zl = end_height(out.left), zr = end_height(out.right);
+    if (pose.solve_roll && geo && roll != 0 && !(std::isfinite(zl) && std::isfinite(zr))) {
+      // The first-order roll can be far off in flange contact (the upright lever short) and put a
+      // wheel outside its table: start from the upright wheelset then.
+      roll = 0;
+      solve_at(roll);
+      zl = end_height(out.left), zr = end_height(out.right);
+    }
     if (pose.solve_roll) {
       // One rigid axle: Z + σ φ L_s = h_s − δ_s on both wheels, the roll from the difference. With
       // the roll in the geometry both wheels are solved again at each roll of a root search on
@@ -345,7 +418,10 @@ void WheelsetContact::solve_both(const WheelsetPose& pose, const WheelsetStepOpt
           zl = end_height(out.left), zr = end_height(out.right);
           return zl - zr;
         };
-        roll = roll_root(f, roll, zl - zr, Ll + Lr, true);
+        // The first slope: the rolled levers at this roll (each wheel's dh/dφ; its descent's
+        // change with the roll is of higher order).
+        roll = roll_root(f, roll, zl - zr, roll_lever(+1, pose.y, roll, ws) + roll_lever(-1, pose.y, roll, ws), true,
+                         height_tolerance(setup_.method, out));
       }
     }
     out.roll = roll;

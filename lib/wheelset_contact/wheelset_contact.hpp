@@ -18,7 +18,8 @@
 // pair (t_Y > 0: towards that wheel's flange contact).
 //
 // What is modelled, and the limits (each reported as a WheelsetWarning when it applies):
-//  - roll φ (about x, positive raising the left wheel): with the multi-Hertzian method each wheel
+//  - roll φ (about x, positive raising the left wheel): with the multi-Hertzian method (and
+//    WheelsetSetup::roll_in_geometry, the default) each wheel
 //    is rolled against its rail by δ = σ φ about the axle centre (pair_pose(), method.md §3.8):
 //    its candidates are those of the rolled profile (contact point, angle, curvatures, gaps), its
 //    height that of the rolled wheel's first contact, the spin that of the rolled axle. The grid
@@ -85,6 +86,12 @@ struct WheelsetSetup {
     g.tY_max = 18e-3;
     return g;
   }();
+  /// Each wheel rolled against its rail in the multi-Hertzian geometry (default true: method.md
+  /// §3.8, the answer CONTACT gives with the wheelset rolled). False: the upright wheels' tables
+  /// and the roll to first order in the heights (as the grid methods), about a tenth of the cost of
+  /// a step in loads mode, with the errors against CONTACT of docs/wheelset.md "Roll in the
+  /// geometry, or not" and the warnings roll_in_geometry_neglected and roll_near_flange.
+  bool roll_in_geometry = true;
 };
 
 /// How the vertical state of a step is given.
@@ -185,11 +192,11 @@ struct WheelsetStepOptions {
   double fd_Q = 1e-4;        ///< [-] Loads: in each Q, relative (default 1e-4)
   /// |lead| above this fraction of the contact's semi-axis a: yaw_lead_not_modelled (default 0.1).
   double lead_fraction = 0.1;
-  /// [rad] Grid methods only (the multi-Hertzian method rolls each wheel against its rail): |φ|
+  /// [rad] The roll not in the geometry only (grid methods, roll_in_geometry false): |φ|
   /// above this, roll_in_geometry_neglected (default 1 mrad; against CONTACT a roll 0.1 mrad off
   /// the kinematic one already moves a centred tread contact's Fx by 7.8 % of μN, docs/c-api.md).
   double roll_limit = 1e-3;
-  /// [rad] Grid methods only: a loaded contact steeper than this under a roll |φ| > 0.1 mrad: roll_near_flange
+  /// [rad] The roll not in the geometry only: a loaded contact steeper than this under a roll |φ| > 0.1 mrad: roll_near_flange
   /// (default 25°). The first-order roll (roll_lever) assumes the contact point stays where the
   /// upright wheel has it; near the flange the roll moves it (S1002 on 60E1 1:40, the roll solved
   /// against geometry/wheelset's exact rotation: within 3 % up to y = 6 mm, γ 21°; at 6.5 mm
@@ -216,8 +223,10 @@ class WheelsetContact {
   /// From the two pairs' geometry already built (the C interface's pairs; the profiles of
   /// setup() are then empty): each geometry's nominal radius and placement, `track`'s flange-back
   /// data, the material and method of both. `warnings`: the pairs' (kept as given).
+  /// `roll_in_geometry`: WheelsetSetup::roll_in_geometry.
   WheelsetContact(const ContactGeometry& left, const ContactGeometry& right, const TrackSetup& track,
-                  const Material& material, const MethodOptions& method, std::vector<std::string> warnings);
+                  const Material& material, const MethodOptions& method, std::vector<std::string> warnings,
+                  bool roll_in_geometry = true);
 
   const ContactGeometry& geometry(int side) const { return side > 0 ? left_.geo : right_.geo; }
   const WheelsetSetup& setup() const { return setup_; }
@@ -227,10 +236,10 @@ class WheelsetContact {
   /// [m] The axle height at which wheel `side` first touches its rail at its t_Y (linear in the
   /// table); NaN outside the table.
   double first_contact_height(int side, double tY) const;
-  /// Whether the roll enters each pair's contact geometry (the multi-Hertzian method: the rolled
-  /// candidates of ContactGeometry::candidates_at(t, δ)); otherwise only the heights, to first
-  /// order (roll_lever), and the warnings say so.
-  bool roll_in_geometry() const { return setup_.method.method == Method::MultiHertzian; }
+  /// Whether the roll enters each pair's contact geometry (WheelsetSetup::roll_in_geometry with the
+  /// multi-Hertzian method: the rolled candidates of ContactGeometry::candidates_at(t, δ));
+  /// otherwise only the heights, to first order (roll_lever), and the warnings say so.
+  bool roll_in_geometry() const { return setup_.roll_in_geometry && setup_.method.method == Method::MultiHertzian; }
   /// The pair's pose of wheel `side` for the wheelset at lateral y rolled by φ (method.md §3.8,
   /// eq. 3.8.2): the wheel's roll against its rail δ = σ φ and the t_Y that puts its rolled
   /// profile where the wheelset's rotation about the axle centre puts it,
@@ -246,6 +255,10 @@ class WheelsetContact {
   /// main contact (y_w, r, γ from the table; the rotated profile's contact point moves, hence the
   /// r tan γ: at a 60° flange it exceeds a). a outside the table.
   double roll_lever(int side, double tY) const;
+  /// [m] The same lever of the rolled wheel (roll_in_geometry()): −σ dh_s/dφ of eq. 3.8.2 at the
+  /// wheelset's y and roll φ, from the rolled main candidate (method.md §3.8); the slope of the
+  /// roll's root search. roll_lever(side, σ y) where the roll does not enter the geometry.
+  double roll_lever(int side, double y, double roll, WheelsetWorkspace& ws) const;
   /// The pairs' warnings (placement), "<profile>: <warning>".
   const std::vector<std::string>& warnings() const { return warnings_; }
 
@@ -266,6 +279,8 @@ class WheelsetContact {
   std::vector<std::string> warnings_;
 
   void place(Side& S, int sigma);
+  /// Both geometries' rolled minima (build_rolled_minima) when the roll enters the geometry.
+  void tabulate_rolled_minima();
 
   /// One wheel at t_Y = σ y with its load (Loads) or its δz (Position), into w (no derivatives).
   void solve_wheel(const Side& S, const WheelsetPose& pose, double roll, WheelResult& w, WheelsetWorkspace& ws) const;

@@ -146,7 +146,7 @@ Pair.pressure_grid = _pair_pressure_grid
 
 
 # Wheelset (the extension's class): Wheelset(left_pair, right_pair, mu=nan, fastsim_nx=16,
-# fastsim_ny=16), both pairs built from profiles in their canonical frames (the right pair is
+# fastsim_ny=16, roll_in_geometry=True), both pairs built from profiles in their canonical frames (the right pair is
 # mirrored, as the field gives its profiles); mu finite: the creep forces (FASTSIM). Track frame:
 # x forward, y towards the LEFT rail, z up (docs/python.md "The wheelset call").
 

@@ -108,3 +108,15 @@ def test_gil_released(wheelset):
         t.join()
     assert elapsed > 0.05
     assert n1 - n0 >= 10, "the counting thread stalled during the steps: the GIL was held"
+
+
+def test_roll_in_geometry_keyword(pair):
+    # roll_in_geometry=False keeps the wheels upright: each pair's t_Y is +-y exactly; the default
+    # rolls them about the axle centre, which moves t_Y (docs/wheelset.md). Break seen to fail:
+    # the binding not passing the keyword on (the upright t_Y assertion).
+    y = np.array([3e-3, -2e-3])
+    up = mhcontact.Wheelset(pair, pair, mu=0.3, roll_in_geometry=False).step(y, Q_left_N=50e3, Q_right_N=50e3)
+    rolled = mhcontact.Wheelset(pair, pair, mu=0.3).step(y, Q_left_N=50e3, Q_right_N=50e3)
+    assert np.array_equal(up["left_tY_m"], y) and np.array_equal(up["right_tY_m"], -y)
+    assert np.all(np.abs(rolled["roll_rad"]) > 1e-5)
+    assert np.all(np.abs(rolled["left_tY_m"] - y) > 1e-6)

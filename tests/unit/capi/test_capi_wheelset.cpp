@@ -283,3 +283,36 @@ TEST_CASE("C wheelset: each wheel's warnings as data agree with their text, and 
   }
   CHECK(seen > 0);
 }
+
+TEST_CASE("C wheelset: roll_in_geometry 0 keeps the wheels upright, 1 (the default) rolls them, other values refused",
+          "[capi][wheelset_contact][roll]") {
+  // y 3 mm, 50 kN a wheel: the roll solved (0.18 mrad); rolled, each pair's t_Y moves by the
+  // rotation about the axle centre (eq. 3.8.2, about 0.46 mm per mrad); upright it is ±y exactly.
+  // Break seen to fail: the field not passed on (mhc_wheelset_create ignoring it): the upright
+  // t_Y checks.
+  mhc_wheelset_options o;
+  mhc_wheelset_options_init(&o);
+  CHECK(o.roll_in_geometry == 1);
+  o.mu = 0.3;
+  o.roll_in_geometry = 0;
+  mhc_wheelset* up = nullptr;
+  REQUIRE(mhc_wheelset_create(fx().pair, fx().pair, &o, &up) == MHC_OK);
+  mhc_wheelset_workspace* wu = nullptr;
+  REQUIRE(mhc_wheelset_workspace_create(up, &wu) == MHC_OK);
+  Ws w;
+  mhc_wheelset_pose p = pose(3e-3, 50e3, 50e3);
+  mhc_wheelset_result ru, rr;
+  ru.struct_size = rr.struct_size = sizeof ru;
+  REQUIRE(mhc_wheelset_step(up, wu, &p, &ru) == MHC_OK);
+  REQUIRE(mhc_wheelset_step(fx().ws, w.w, &p, &rr) == MHC_OK);
+  CHECK(ru.wheel[0].tY_m == 3e-3);
+  CHECK(ru.wheel[1].tY_m == -3e-3);
+  CHECK(std::fabs(rr.roll_rad) > 1e-5);
+  CHECK(std::fabs(rr.wheel[0].tY_m - 3e-3) > 1e-6);
+  mhc_wheelset_workspace_free(wu);
+  mhc_wheelset_free(up);
+  o.roll_in_geometry = 2;
+  mhc_wheelset* bad = nullptr;
+  CHECK(mhc_wheelset_create(fx().pair, fx().pair, &o, &bad) == MHC_ERR_ARGUMENT);
+  CHECK(std::string(mhc_last_message()).rfind("options.roll_in_geometry = 2: must be 1", 0) == 0);
+}

@@ -259,9 +259,12 @@ TEST_CASE("wheelset: yaw: the lateral creep forces of both wheels act the same w
   REQUIRE(r.left.r.tangential.solved);
   const double dl = r.left.on_wheelset.F[1] - r0.left.on_wheelset.F[1];
   const double dr = r.right.on_wheelset.F[1] - r0.right.on_wheelset.F[1];
-  // The two contacts differ at y = 1 mm (t_Y = ±1 mm and each wheel rolled against its rail:
-  // other radii, angles, ellipses): 30 % (measured 26 %, 20 % before the roll entered the
-  // geometry; the break it guards gives −100 %).
+  // The two contacts differ at y = 1 mm: t_Y = ±1 mm are other points of S1002 and 60E1, the
+  // left ellipse 6.4 × 2.8 mm, the right 4.9 × 6.7 mm (a b 18.0 against 33.0 mm², Kalker's C22 of
+  // each shape), so the linear creep forces' change differs by the ellipses, not by the roll:
+  // measured 29 Nov 2026 20.7 % with each wheel rolled against its rail, 18.0 % with the wheels
+  // upright (roll_in_geometry false; 26 % with the roll search before, stopped at another roll).
+  // Held at 30 % (1.45 × the measured); the break it guards (the mirror's signs) gives −100 %.
   CHECK(dl == Approx(dr).epsilon(0.3));
   // Held at ẏ = 0, a wheel rolling along its yawed x slips towards −y at the contact (−Ω r ψ):
   // the rail pushes it towards +y, the way the wheelset would run.
