@@ -71,11 +71,12 @@ sed 's/"1:40"/"as-is"/' "$tmp/twice.json" > "$tmp/once.json"
 "$bin" run "$tmp/once.json" -o "$tmp/o1" 2> "$tmp/err"
 grep -q "cant:" "$tmp/err" && fail "as-is run warned: $(cat "$tmp/err")"
 
-# S1002 printed with 3 decimals: exact (residual 0.27 um against 3 x 0.29 um of rounding).
+# S1002 printed with 3 decimals: exact (residual 0.27 um, noise sigma 0.30 um: the rounding's
+# 0.29 um, below the sqrt(2) x 0.29 um that makes a profile measured).
 "$bin" profile generate S1002 -o "$tmp/s.csv" > /dev/null
 awk -F, 'NR > 1 { printf "%.3f %.3f\n", $1, $2 }' "$tmp/s.csv" > "$tmp/s3.dat"
 "$bin" profile info "$tmp/s3.dat" --kind wheel > "$tmp/info"
-grep -q "^noise: exact: median residual 0.2[0-9]* µm <= 0.866 µm (3 x 0.289 µm, rounding to the printed 0.001 mm)" "$tmp/info" \
+grep -q "^noise: exact: median residual 0.2[0-9]* µm <= 0.3[0-9]* µm (the residual of a noise sigma of 1.41 x 0.289 µm, rounding to the printed 0.001 mm" "$tmp/info" \
   || fail "3 decimals: $(grep noise "$tmp/info")"
 "$bin" profile info "$tmp/s3.dat" --kind wheel --noise measured | grep -q "^noise: measured: forced" || fail "--noise measured"
 # The run reports the classes; geometry.noise forces the rail.
