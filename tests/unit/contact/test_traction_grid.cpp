@@ -46,7 +46,7 @@ TEST_CASE("FASTSIM cells in full sliding: |p| = mu p_Hertz at every cell, agains
     worst_cell = std::max(worst_cell, std::abs(std::hypot(t.cells.px[i], t.cells.py[i]) - mu * ph) / (mu * p0));
   }
   // The bound's pressure is normalised to carry N on the cells (fastsim.hpp): a uniform factor,
-  // 0.22 % above Hertz at 32 × 32.
+  // 0.22 % below Hertz at 32 × 32 (docs/python.md's grid example: |p_t|/(μ p) = 0.9978).
   CHECK(worst_cell < 3e-3);
   // Anywhere inside the ellipse, between and beyond the cell centres (a 41 × 41 grid).
   for (int i = 0; i <= 40; ++i)
