@@ -202,13 +202,12 @@ namespace {
 // weight (1 − |s_k − s_i|/h)₊ is linear in the kink's place u = (s_k − g_j)/(h/2) ∈ [0, 1), so
 // the bin's Σ J and Σ J u give each centre's sum exactly. A_abs: Σ |J| (for the rounding).
 struct KinkBins {
-  std::vector<double> A, U, V;  // V: each centre's |S − 2 B h|
+  std::vector<double> A, U;
   double g0 = 0, inv_half_h = 0, A_abs = 0, coord = 0;
   int kinks = 0;
   void reset(double g0_, double h, int nb) {
     A.assign(static_cast<std::size_t>(nb), 0.0);
     U.assign(static_cast<std::size_t>(nb), 0.0);
-    V.resize(static_cast<std::size_t>(nb));
     g0 = g0_;
     inv_half_h = 2 / h;
     A_abs = coord = 0;
@@ -308,176 +307,50 @@ const NodeTable& node_table(const ProfileCurve& C, std::uint64_t build_id, int w
   return T;
 }
 
-// One curve level's nodes placed in the rail frame at y + dy, z + dzv and seen from plane P:
-// node k's plane coordinate s_k, the kink J_k = sign (m_k − m_k−1) / (D_k D_k−1) at node k,
-// D_k = cos γ + m_k sin γ of interval k, and how many of the intervals before k fail
-// D − |sin γ| dev ≥ kMinSlopeFactor (bad). None of it depends on the patch's extent or on the
-// wheel's vertical approach (a vertical move dz moves every node's s by −dz sin γ): in a sweep,
-// made once per t_Y and candidate for every load, over the node range [lo, hi] asked so far.
-struct PlaneKinks {
-  const NodeTable* table = nullptr;
-  std::uint64_t id = 0;
-  const ProfileCurve* curve = nullptr;
-  int level = -1;
-  double y_ref = 0, z_ref = 0, gamma = 0, dy = 0, dzv = 0, sign = 0;
-  int lo = 0, hi = -1;  // nodes lo … hi
-  std::vector<double> s, J, D;
-  std::vector<int> bad;        // bad[k − lo]: failing intervals among lo … k − 1
-  std::vector<double> abs_J;   // abs_J[k − lo]: Σ |J| over the nodes lo … k − 1
-  // Sparse tables of the intervals lo … hi − 1: D_min[p][i], E_max[p][i] the least D and the
-  // largest Hermite deviation e over intervals lo + i … lo + i + 2^p − 1 (level p at p·m, m =
-  // hi − lo): the least and largest over any range from two entries.
-  std::vector<double> D_min, E_max;
-  std::uint64_t used = 0;
-  void reserve(std::size_t nodes, std::size_t table) {
-    for (std::vector<double>* v : {&s, &J, &D, &abs_J}) v->reserve(nodes);
-    bad.reserve(nodes);
-    D_min.reserve(table);
-    E_max.reserve(table);
-  }
-  /// The least D and the largest e over intervals a … b − 1 (lo ≤ a < b ≤ hi).
-  void range(int a, int b, double& Dm, double& Em) const {
-    const std::size_t m = static_cast<std::size_t>(hi - lo);
-    int p = 0;
-    while ((2 << p) <= b - a) ++p;
-    const std::size_t i = static_cast<std::size_t>(a - lo), j = static_cast<std::size_t>(b - lo - (1 << p)), o = m * static_cast<std::size_t>(p);
-    Dm = std::min(D_min[o + i], D_min[o + j]);
-    Em = std::max(E_max[o + i], E_max[o + j]);
-  }
-  bool matches(const NodeTable& T, int l, const PatchPlane& P, double dy_, double dzv_, double sign_) const {
-    return table == &T && id == T.id && curve == T.curve && level == l && y_ref == P.y_ref && z_ref == P.z_ref &&
-           gamma == P.gamma && dy == dy_ && dzv == dzv_ && sign == sign_;
-  }
-  void make(const NodeTable& T, int l, const PatchPlane& P, double c, double sn, double dy_, double dzv_,
-            double sign_, int lo_, int hi_) {
-    table = &T; id = T.id; curve = T.curve; level = l;
-    y_ref = P.y_ref; z_ref = P.z_ref; gamma = P.gamma; dy = dy_; dzv = dzv_; sign = sign_;
-    lo = lo_; hi = hi_;
-    const NodeLevel& L = T.level[l];
-    const std::size_t m = static_cast<std::size_t>(hi - lo + 1);
-    s.resize(m); J.resize(m); D.resize(m); bad.resize(m); abs_J.resize(m);
-    const double asn = std::fabs(sn), ys = dy - P.y_ref, zs = dzv - P.z_ref;
-    int nbad = 0;
-    double sum = 0;
-    for (int k = lo; k <= hi; ++k) {
-      const std::size_t i = static_cast<std::size_t>(k - lo);
-      s[i] = (L.y[static_cast<std::size_t>(k)] + ys) * c + (L.z[static_cast<std::size_t>(k)] + zs) * sn;
-      bad[i] = nbad;
-      abs_J[i] = sum;
-      if (k == hi) break;  // D and the check of interval k need node k + 1
-      const double mk = L.m[static_cast<std::size_t>(k)];
-      D[i] = c + mk * sn;
-      if (!(D[i] - asn * L.dev[static_cast<std::size_t>(k)] >= KinkBound::kMinSlopeFactor)) ++nbad;
-      J[i] = k > lo ? sign * (mk - L.m[static_cast<std::size_t>(k - 1)]) / (D[i] * D[i - 1]) : 0;
-      sum += std::fabs(J[i]);
-    }
-    const std::size_t ni = m - 1;  // intervals
-    int levels = 1;
-    while ((std::size_t{2} << (levels - 1)) <= ni) ++levels;
-    D_min.resize(ni * static_cast<std::size_t>(levels));
-    E_max.resize(D_min.size());
-    for (std::size_t i = 0; i < ni; ++i) {
-      D_min[i] = D[i];
-      E_max[i] = L.e[static_cast<std::size_t>(lo) + i];
-    }
-    for (int p = 1; p < levels; ++p) {
-      const std::size_t w = std::size_t{1} << (p - 1), o = ni * static_cast<std::size_t>(p), q = o - ni;
-      for (std::size_t i = 0; i + 2 * w <= ni; ++i) {
-        D_min[o + i] = std::min(D_min[q + i], D_min[q + i + w]);
-        E_max[o + i] = std::max(E_max[q + i], E_max[q + i + w]);
-      }
-    }
-  }
-};
-
-// The PlaneKinks of (T, level, P, dy, dzv, sign) covering nodes k0 … k1, from a few per thread
-// (the least recently used remade): a sweep's loads at one t_Y ask for the same planes with
-// patches of growing extent. A range not covered is made anew, wider by half its length each
-// side when the entry was used before (the next loads' patches grow).
-const PlaneKinks& plane_kinks(const NodeTable& T, int l, const PatchPlane& P, double c, double sn, double dy,
-                              double dzv, double sign, int k0, int k1) {
-  constexpr int kSlots = 32;
-  thread_local PlaneKinks slot[kSlots];
-  thread_local std::uint64_t clock = 0;
-  // Every slot's vectors reserved for the longest range made so far, doubled: a caller whose
-  // planes change at every call (a wheelset step's t_Y) allocates only while the ranges it
-  // asks for still grow, never once it has seen them (tests/alloc: the wheelset call).
-  thread_local std::size_t capacity = 0;
-  ++clock;
-  int lru = 0, at = -1;
-  for (int i = 0; i < kSlots; ++i) {
-    if (slot[i].matches(T, l, P, dy, dzv, sign)) { at = i; break; }
-    if (slot[i].used < slot[lru].used) lru = i;
-  }
-  int lo = k0, hi = k1;
-  if (at >= 0) {
-    PlaneKinks& K = slot[at];
-    K.used = clock;
-    if (K.lo <= k0 && k1 <= K.hi) return K;
-    const int n = static_cast<int>(T.level[l].y.size()), pad = (k1 - k0) / 2;
-    lo = std::max(0, std::min(k0, K.lo) - pad);
-    hi = std::min(n - 1, std::max(k1, K.hi) + pad);
-  } else {
-    at = lru;
-  }
-  const std::size_t m = static_cast<std::size_t>(hi - lo + 1);
-  if (m > capacity) {
-    capacity = 2 * m;
-    std::size_t levels = 1;
-    while ((std::size_t{2} << (levels - 1)) <= capacity) ++levels;
-    for (PlaneKinks& K : slot) K.reserve(capacity, capacity * levels);
-  }
-  PlaneKinks& K = slot[at];
-  K.make(T, l, P, c, sn, dy, dzv, sign, lo, hi);
-  K.used = clock;
-  return K;
-}
-
 // The nodes whose intervals cover [ya, yb] (the curve's own y) with one more on each side,
-// placed in the rail frame at y + dy, z + dzv, the curve moved down by dz more, seen from plane
-// P (c, sn); `sign` +1 the wheel, −1 the rail (G = h_w − h_r): their kinks into `bins`. False
-// when the range reaches beyond the nodes or D < kMinSlopeFactor.
-bool plane_polyline(const NodeTable& Tab, int l, double ya, double yb, double dy, double dzv, double dz,
-                    const PatchPlane& P, double c, double sn, double sign, PlanePolyline& out, KinkBins& bins) {
-  const NodeLevel& T = Tab.level[l];
+// placed in the rail frame at y + dy, z + dzv, seen from plane P (c, sn); `sign` +1 the wheel,
+// −1 the rail (G = h_w − h_r): their kinks into `bins`. False when the range reaches beyond the
+// nodes or D < kMinSlopeFactor.
+bool plane_polyline(const NodeLevel& T, double ya, double yb, double dy, double dzv, const PatchPlane& P, double c,
+                    double sn, double sign, PlanePolyline& out, KinkBins& bins) {
   const std::size_t n = T.y.size();
   if (n < 3) return false;
   const double hg = T.y[1] - T.y[0];
   const double ka = std::floor((std::min(ya, yb) - T.y[0]) / hg) - 1, kb = std::ceil((std::max(ya, yb) - T.y[0]) / hg) + 1;
   if (!(ka >= 0) || !(kb <= static_cast<double>(n - 1))) return false;
-  const int i0 = static_cast<int>(ka), i1 = static_cast<int>(kb);
-  const PlaneKinks& K = plane_kinks(Tab, l, P, c, sn, dy, dzv, sign, i0, i1);
-  const int o = K.lo;
-  // Intervals i0 … i1 − 1: none failing the slope check.
-  if (K.bad[static_cast<std::size_t>(i1 - o)] != K.bad[static_cast<std::size_t>(i0 - o)]) return false;
-  double D_min = 0, E = 0;
-  K.range(i0, i1, D_min, E);
-  // The kinks at nodes i0 + 1 … i1 − 1, at t = (s_k − dz sin γ − g_0) / (h/2).
-  const double* Ks = K.s.data() + (i0 - o);
-  const double* KJ = K.J.data() + (i0 - o);
-  const double base = -dz * sn - bins.g0, ih = bins.inv_half_h;
+  const std::size_t k0 = static_cast<std::size_t>(ka), k1 = static_cast<std::size_t>(kb);
+  const double asn = std::fabs(sn);
+  const double ys = dy - P.y_ref, zs = dzv - P.z_ref;
+  const double g0 = bins.g0, ih = bins.inv_half_h;
   const double nb = static_cast<double>(bins.A.size());
   double* A = bins.A.data();
   double* U = bins.U.data();
-  for (int k = 1; k < i1 - i0; ++k) {
-    const double t = (Ks[k] + base) * ih;
+  // Plain pointers and signed indices: the loop's loads stay in registers, and int ↔ double
+  // conversions are single instructions (size_t's are not).
+  const double *Ty = T.y.data(), *Tz = T.z.data(), *Tm = T.m.data(), *Tdev = T.dev.data(), *Te = T.e.data();
+  const int i0 = static_cast<int>(k0), i1 = static_cast<int>(k1);
+  double prev_D = c + Tm[i0] * sn, D_min = prev_D, E = Te[i0], A_abs = 0;
+  if (!(prev_D - asn * Tdev[i0] >= KinkBound::kMinSlopeFactor)) return false;
+  for (int k = i0 + 1; k < i1; ++k) {  // interval k: nodes k, k + 1; the kink at node k
+    const double D = c + Tm[k] * sn;
+    if (!(D - asn * Tdev[k] >= KinkBound::kMinSlopeFactor)) return false;
+    D_min = std::min(D_min, D);
+    E = std::max(E, Te[k]);
+    const double J = sign * (Tm[k] - Tm[k - 1]) / (D * prev_D);
+    A_abs += std::fabs(J);
+    const double t = ((Ty[k] + ys) * c + (Tz[k] + zs) * sn - g0) * ih;
     if (t >= 0 && t < nb) {  // a kink outside the bins weighs nothing at every centre
       const int j = static_cast<int>(t);
-      const double J = KJ[k];
       A[j] += J;
       U[j] += J * (t - static_cast<double>(j));
     }
+    prev_D = D;
   }
-  // Σ |J| over those kinks from the running sums: their rounding (within ε of the total per
-  // addition) added, so that it bounds the sum.
-  const double s1 = K.abs_J[static_cast<std::size_t>(i1 - o)], s0 = K.abs_J[static_cast<std::size_t>(i0 + 1 - o)];
-  const double A_abs = (s1 - s0) + 2 * DBL_EPSILON * static_cast<double>(i1 - K.lo + 1) * s1;
   out.D_min = D_min;
   out.E = E;
   bins.A_abs += A_abs;
-  bins.kinks += i1 - i0 - 1;
-  bins.coord = std::max(bins.coord, T.abs_max + std::fabs(dy) + std::fabs(dzv) + std::fabs(dz) + std::fabs(P.y_ref) +
-                                        std::fabs(P.z_ref));
+  bins.kinks += static_cast<int>(k1 - k0 - 1);
+  bins.coord = std::max(bins.coord, T.abs_max + std::fabs(dy) + std::fabs(dzv) + std::fabs(P.y_ref) + std::fabs(P.z_ref));
   return true;
 }
 
@@ -502,17 +375,18 @@ KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, double s_
   const NodeTable& Tw0 = node_table(gap.wheel_curve(), gap.build_id(), 1);
   // The polylines through every 2^l-th node, spaced at most `spacing`: the coarser, the fewer
   // kinks to sum and the larger their distance from the curve (about κ Δ²/8 at spacing Δ).
-  auto level = [&](const NodeTable& T) {
+  auto level = [&](const NodeTable& T) -> const NodeLevel& {
     const NodeLevel& f = T.level[0];
-    if (f.y.size() < 2) return 0;
+    if (f.y.size() < 2) return f;
     int l = 0;
     while (l + 1 < NodeTable::kLevels && (f.y[1] - f.y[0]) * static_cast<double>(std::size_t{1} << (l + 1)) <= spacing) ++l;
-    return l;
+    return T.level[l];
   };
-  if (!plane_polyline(Tr0, level(Tr0), a.qy - a.h_r * sn, b.qy - b.h_r * sn, 0, 0, 0, P, c, sn, -1, rail, bins)) return out;
-  // The wheel's y is the rail's less the shift: −y_wheel(0) is the shift exactly.
-  if (!plane_polyline(Tw0, level(Tw0), gap.y_wheel(a.qy - a.h_w * sn), gap.y_wheel(b.qy - b.h_w * sn), -gap.y_wheel(0.0),
-                      -gap.wheel_lift(), dz, P, c, sn, 1, wheel, bins))
+  const NodeLevel& Tr = level(Tr0);
+  const NodeLevel& Tw = level(Tw0);
+  if (!plane_polyline(Tr, a.qy - a.h_r * sn, b.qy - b.h_r * sn, 0, 0, P, c, sn, -1, rail, bins)) return out;
+  if (!plane_polyline(Tw, gap.y_wheel(a.qy - a.h_w * sn), gap.y_wheel(b.qy - b.h_w * sn), a.qy - gap.y_wheel(a.qy),
+                      -gap.wheel_lift() - dz, P, c, sn, 1, wheel, bins))
     return out;
   const double eta = wheel.E / wheel.D_min + rail.E / rail.D_min;
   // Σ_k J_k (1 − |s_k − s_i|/h)₊ for centre i from bins i … i + 3 (offsets −2 … 1 from the
@@ -520,17 +394,13 @@ KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, double s_
   const double* A = bins.A.data();
   const double* U = bins.U.data();
   const double twoBh = 2 * B * h;
-  // Each centre's |S − 2 B h| first (a loop without a carried dependence, vectorised), then
-  // their largest.
-  double* V = bins.V.data();
+  double worst = 0;
   for (int i = 0; i < n; ++i) {
     const double S = 0.5 * U[i] + 0.5 * (A[i + 1] + U[i + 1]) + (A[i + 2] - 0.5 * U[i + 2]) + 0.5 * (A[i + 3] - U[i + 3]);
-    V[i] = std::fabs(S - twoBh);
+    worst = std::max(worst, std::fabs(S - twoBh));
   }
-  double worst = 0;
-  for (int i = 0; i < n; ++i) worst = std::max(worst, V[i]);
-  // The rounding: a kink's plane coordinate (about twelve roundings, each within ε/2 of
-  // magnitudes below its coordinates' sum) is within δ = 8 ε (that sum) of the exact one, and so is a centre's, which moves its weights by at most 2 δ / (h/2) plus
+  // The rounding: a kink's plane coordinate is within δ = 8 ε (its coordinates' magnitudes) of
+  // the exact one, and so is a centre's, which moves its weights by at most 2 δ / (h/2) plus
   // ε t (t < n + 3, its place in bins); each bin sum and a centre's eight terms add at most
   // (kinks + 8) ε Σ |J| (|J u| ≤ |J|). Doubled.
   const double delta = 8 * DBL_EPSILON * (bins.coord + std::fabs(s_first) + 2 * h);

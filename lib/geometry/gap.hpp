@@ -133,9 +133,6 @@ void normal_gaps(const WheelRailGap& gap, const PatchPlane& P, double x, double 
 /// η = E_w / D_min,w + E_r / D_min,r. `found` false (the samples must decide) when a normal of
 /// the span meets the rail's gauge face, when the span reaches beyond a curve's nodes, or when
 /// D < kMinSlopeFactor on it (the plane turned too far from a curve for it to be a graph).
-/// The kinks J_k, the nodes' plane coordinates and the slope checks of a curve seen from P do not
-/// depend on the patch or on dz (which moves every wheel node's s by −dz sin γ): they are kept per
-/// thread, a few planes at a time, so that the loads of a sweep at one t_Y make them once.
 struct KinkBound {
   bool found = false;
   double dtheta = 0;  ///< [rad] the bound of max_i Δθ_i
