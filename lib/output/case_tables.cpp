@@ -125,6 +125,18 @@ void patch_fields(Sink& k, const PatchResult& P, bool plastic, const RcfOptions&
   }
 }
 
+// A grid point's traction cells (on the rail) [MPa] and its slip flag; empty cells where the case
+// has creep forces but this point's contact kept no traction; nothing without creep forces.
+void append_traction_cells(std::string& s, const GridPoint& g, bool tangential) {
+  if (g.traction) {
+    s += ','; num(s, g.px / units::MPa);
+    s += ','; num(s, g.py / units::MPa);
+    s += ','; s += g.slip ? '1' : '0';
+  } else if (tangential) {
+    s += ",,,";
+  }
+}
+
 }  // namespace
 
 
@@ -140,13 +152,7 @@ void format_pressure(std::uint64_t idx, const CaseResult& r, bool plastic, int N
     s += ','; num(s, g.s * units::per_mm);
     s += ','; num(s, g.p / units::MPa);
     if (plastic) { s += ','; num(s, g.p_elastic / units::MPa); }
-    if (g.traction) {
-      s += ','; num(s, g.px / units::MPa);
-      s += ','; num(s, g.py / units::MPa);
-      s += ','; s += g.slip ? '1' : '0';
-    } else if (tangential) {
-      s += ",,,";
-    }
+    append_traction_cells(s, g, tangential);
     s += '\n';
   });
 }
@@ -362,13 +368,7 @@ void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& 
     s += ','; num(s, g.s * units::per_mm);
     s += ','; num(s, g.y_rail * units::per_mm);
     s += ','; num(s, g.p / units::MPa);
-    if (g.traction) {  // on the rail
-      s += ','; num(s, g.px / units::MPa);
-      s += ','; num(s, g.py / units::MPa);
-      s += ','; s += g.slip ? '1' : '0';
-    } else if (tangential) {
-      s += ",,,";
-    }
+    append_traction_cells(s, g, tangential);
     s += '\n';
   });
 }
