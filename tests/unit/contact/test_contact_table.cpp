@@ -14,14 +14,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "contact/half_space/tangential_rolling.hpp"
 #include "contact/tangential/fastsim.hpp"
+#include "support/data_csv.hpp"
 #include "support/hertz_grid.hpp"
 
 namespace {
@@ -31,27 +29,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kFN = 82000.0, kMu = 0.3, kG = 82e9, kNu = 0.28;
 constexpr int kMx = 31;  // CONTACT's grid: kMx × kMx elements over kMx/(kMx − 4) × the ellipse
 
-struct Case {
-  std::map<std::string, double> v;
-  double operator[](const std::string& k) const { return v.at(k); }
-};
+using Case = mh::test::DataRow;
 
-std::vector<Case> read_table() {
-  std::ifstream f(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/contact_tangential/test_table_mx31.csv");
-  REQUIRE(f);
-  std::string line, cell;
-  do std::getline(f, line); while (!line.empty() && line[0] == '#');
-  std::vector<std::string> head;
-  for (std::istringstream h(line); std::getline(h, cell, ',');) head.push_back(cell);
-  std::vector<Case> rows;
-  while (std::getline(f, line)) {
-    Case r;
-    std::istringstream in(line);
-    for (std::size_t k = 0; std::getline(in, cell, ','); ++k) r.v[head.at(k)] = std::stod(cell);
-    rows.push_back(r);
-  }
-  return rows;
-}
+std::vector<Case> read_table() { return mh::test::read_data_rows("contact_tangential/test_table_mx31.csv"); }
 
 /// The q-quantile of v (nearest rank).
 double quantile(std::vector<double> v, double q) {

@@ -16,41 +16,21 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "contact/half_space/tangential_rolling.hpp"
 #include "contact/tangential/fastsim.hpp"
+#include "support/data_csv.hpp"
 #include "support/hertz_grid.hpp"
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct Row {
-  std::map<std::string, double> v;
-  double operator[](const std::string& k) const { return v.at(k); }
-};
+using Row = mh::test::DataRow;
 
-std::vector<Row> read_module3() {
-  std::ifstream f(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/contact_tangential/module3_hertz.csv");
-  REQUIRE(f);
-  std::string line, cell;
-  std::getline(f, line);
-  std::vector<std::string> head;
-  for (std::istringstream h(line); std::getline(h, cell, ',');) head.push_back(cell);
-  std::vector<Row> rows;
-  while (std::getline(f, line)) {
-    Row r;
-    std::istringstream in(line);
-    for (std::size_t k = 0; std::getline(in, cell, ','); ++k) r.v[head.at(k)] = std::stod(cell);
-    rows.push_back(r);
-  }
-  return rows;
-}
+std::vector<Row> read_module3() { return mh::test::read_data_rows("contact_tangential/module3_hertz.csv"); }
 
 /// The q-quantile of v (nearest rank).
 double quantile(std::vector<double> v, double q) {
