@@ -370,27 +370,32 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
 
 void solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt,
                    CaseResult& out, GridWorkspace* ws) {
+  if (!solve_contact_unjudged(G, mat, tY, Q, opt, out, ws)) judge_case(out, G, mat, tY, opt);  // as above
+}
+
+bool solve_contact_unjudged(const ContactGeometry& G, const Material& mat, double tY, double Q,
+                            const MethodOptions& opt, CaseResult& out, GridWorkspace* ws) {
   check_roll(opt);
   switch (opt.method) {
     case Method::MultiHertzian: solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian, out); break;
     case Method::HalfSpace:
       if (!ws) {
         out = solve_contact(G, mat, tY, Q, opt);
-        return;
+        return true;
       }
       solve_half_space(G, mat, tY, Q, half_space_options(opt), ws->half_space, out);
       break;
     case Method::Strips:
       if (!ws) {
         out = solve_contact(G, mat, tY, Q, opt);
-        return;
+        return true;
       }
       solve_strip_method(G, mat, tY, Q, strip_options(opt), ws->strips, out);
       break;
-    default: out = solve_contact(G, mat, tY, Q, opt); return;
+    default: out = solve_contact(G, mat, tY, Q, opt); return true;
   }
   tangential_with_equilibrium(out, G, mat, tY, Q, opt, ws);
-  judge_case(out, G, mat, tY, opt);  // as above
+  return false;
 }
 
 }  // namespace mh

@@ -34,4 +34,11 @@ struct GridWorkspace {
 void solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt,
                    CaseResult& out, GridWorkspace* ws);
 
+/// The same, the judge left to the caller where it can be: a caller that solves whole cases inside
+/// a search (the wheelset's roll) and keeps only the last judges that one (judge_case), once.
+/// Returns whether `out` was judged already (`auto`, whose choice is the judge's, and a grid method
+/// without `ws`); false: judge_case(out, G, mat, tY, opt) gives it its status and warnings.
+bool solve_contact_unjudged(const ContactGeometry& G, const Material& mat, double tY, double Q,
+                            const MethodOptions& opt, CaseResult& out, GridWorkspace* ws);
+
 }  // namespace mh

@@ -222,13 +222,8 @@ double WheelsetContact::roll_lever(int side, double y, double roll, WheelsetWork
   return S.a * cs + (c.y_r - s) + H * sn + tg * (zw - H * cs + S.a * sn);
 }
 
-void WheelsetContact::solve_wheel(const Side& S, const WheelsetPose& pose, double roll, WheelResult& w,
-                                  WheelsetWorkspace& ws) const {
+MethodOptions WheelsetContact::wheel_options(const Side& S, const WheelsetPose& pose, const WheelResult& w) const {
   const int s = S.sigma;
-  w.side = s;
-  pair_pose(s, pose.y, roll, &w.tY, &w.delta);
-  // h: the axle height of first contact at this roll (the rolled wheel's, or the first-order rule).
-  w.h = first_contact_height(s, pose.y, roll, ws);
   MethodOptions opt = setup_.method;
   opt.multi_hertzian.roll = w.delta;
   TangentialOptions& tg = opt.tangential;
@@ -245,17 +240,34 @@ void WheelsetContact::solve_wheel(const Side& S, const WheelsetPose& pose, doubl
     tg.l_origin = S.a;
     tg.r0 = S.R0;
   }
+  return opt;
+}
+
+void WheelsetContact::judge_wheel(const Side& S, const WheelsetPose& pose, WheelResult& w) const {
+  if (w.judged) return;
+  judge_case(w.r, S.geo, setup_.material, w.tY, wheel_options(S, pose, w));
+  w.judged = true;
+}
+
+void WheelsetContact::solve_wheel(const Side& S, const WheelsetPose& pose, double roll, WheelResult& w,
+                                  WheelsetWorkspace& ws) const {
+  const int s = S.sigma;
+  w.side = s;
+  pair_pose(s, pose.y, roll, &w.tY, &w.delta);
+  // h: the axle height of first contact at this roll (the rolled wheel's, or the first-order rule).
+  w.h = first_contact_height(s, pose.y, roll, ws);
+  const MethodOptions opt = wheel_options(S, pose, w);
   const Material& mat = setup_.material;
   if (pose.vertical == WheelsetVertical::Loads) {
     const double Q = s > 0 ? pose.Q_left : pose.Q_right;
-    solve_contact(S.geo, mat, w.tY, Q, opt, w.r, &ws.grid);
+    w.judged = solve_contact_unjudged(S.geo, mat, w.tY, Q, opt, w.r, &ws.grid);
   } else {
     // δz_s = h_s(φ) − Z (h_s at the roll: first_contact_height); outside the table h is NaN and
     // the solve says out_of_range.
     const double dz = std::isfinite(w.h) ? w.h - pose.Z : 0.0;
     solve_multi_hertz_approach(S.geo, mat, w.tY, dz, opt.multi_hertzian, ws.approach, w.r);
     solve_tangential(w.r, mat, w.tY, opt.tangential);
-    judge_case(w.r, S.geo, mat, w.tY, opt);
+    w.judged = false;
   }
   w.contacts.clear();
   w.on_wheelset = Wrench{};
@@ -427,6 +439,10 @@ void WheelsetContact::solve_both(const WheelsetPose& pose, const WheelsetStepOpt
     out.roll = roll;
     out.Z = 0.5 * (zl + zr);
   }
+  // The judge on the answers kept (the search's other solves are not judged: their warnings
+  // were never read).
+  judge_wheel(left_, pose, out.left);
+  judge_wheel(right_, pose, out.right);
   out.status = worse(out.left.r.status, out.right.r.status);
   out.total = Wrench{};
   add_wrench(out.total, out.left.on_wheelset);

@@ -161,6 +161,7 @@ struct WheelResult {
   double delta = 0;    ///< [rad] the wheel's roll against its rail in its pair's frame, σ φ (0 when not modelled)
   double h = 0;        ///< [m] axle height at which this wheel first touches its rail, at t_Y
   CaseResult r;        ///< the single-pair result (pair frame): status, warnings, ellipses, tangential
+  bool judged = false; ///< r has its judge's status and warnings (always, once step() returns)
   std::vector<ContactPoint> contacts;  ///< the loaded contacts in track coordinates
   Wrench on_wheelset;  ///< the wheel's contacts summed
   /// Partial derivatives of on_wheelset.F [N/m, N/rad, N/m or N/N] in y, φ and the vertical input,
@@ -282,8 +283,14 @@ class WheelsetContact {
   /// Both geometries' rolled minima (build_rolled_minima) when the roll enters the geometry.
   void tabulate_rolled_minima();
 
-  /// One wheel at t_Y = σ y with its load (Loads) or its δz (Position), into w (no derivatives).
+  /// One wheel at t_Y = σ y with its load (Loads) or its δz (Position), into w (no derivatives),
+  /// not judged where the method leaves the judge to its caller (w.judged false): the roll's search
+  /// and the derivatives solve whole wheels many times and keep one, judged by judge_wheel.
   void solve_wheel(const Side& S, const WheelsetPose& pose, double roll, WheelResult& w, WheelsetWorkspace& ws) const;
+  /// The options of w's solve (the setup's, with w's roll and the pose's kinematics in S's frame).
+  MethodOptions wheel_options(const Side& S, const WheelsetPose& pose, const WheelResult& w) const;
+  /// The judge (judge_case) on w's answer, once, if solve_wheel left it.
+  void judge_wheel(const Side& S, const WheelsetPose& pose, WheelResult& w) const;
   /// Both wheels and the totals (no derivatives); the roll of Position as given or solved.
   void solve_both(const WheelsetPose& pose, const WheelsetStepOptions& opt, WheelsetResult& out,
                   WheelsetWorkspace& ws) const;
