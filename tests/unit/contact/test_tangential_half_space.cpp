@@ -364,7 +364,7 @@ TEST_CASE("Steady rolling, small creepage: convergence to Kalker's linear theory
   // Prints the convergence table of docs/half_space.md: the placement-averaged coefficients
   // (shift_averaged) at 20 (8 × 8 placements), 40 and 80 (4 × 4) elements across, the observed
   // order p = log2((C20 − C40)/(C40 − C80)), and the first-order extrapolation C0 = 2 C80 − C40
-  // (the one-sided difference of the slip is first order; the observed p is 0.9–1.1 wherever the
+  // (the one-sided difference of the slip is first order; the observed p is 1.02–1.15 wherever the
   // changes are well above the placement average's noise, ~0.03 %). Holds C0 within the issue's
   // 0.5 % of Table E.3 except C22 at a/b = 5 (measured +0.69 %, held at 0.8 %), and the grid error
   // positive (each coefficient falls as n grows). Several minutes on a loaded 2-core machine.
