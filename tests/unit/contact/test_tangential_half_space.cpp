@@ -84,6 +84,58 @@ double quadrature(int which, double x, double y, double a, double b) {
 using Linear = mh::KalkerCoefficients;
 Linear kalker(double aob, double nu) { return mh::kalker_coefficients(aob, nu); }
 
+/// Kalker's coefficients from the exact solver at small creepage (ξ, η = 10⁻⁶, φ c = 10⁻⁶,
+/// μ = 10⁴: no slip, so only the set of contact elements matters), c = √(ab) = 5 mm, G = 82 GPa,
+/// ν = 0.28, on n × n elements of (2a/n) × (2b/n), averaged over K × K placements of the ellipse
+/// at the sub-element offsets ((i + ½)/K, (j + ½)/K) of an element. Why the average: which
+/// element centres fall inside the ellipse changes erratically with n (the count of lattice
+/// points in an ellipse), and with it the coefficients, by ±1 % near n = 40 (docs/half_space.md,
+/// "Kalker's linear theory"); over the placements the
+/// expected contact area is the ellipse's, and what is left converges at first order in the
+/// element size, which Richardson's extrapolation needs. The grid has n + 1 elements per axis so
+/// that the ellipse's box lies inside it at every offset.
+struct Coefficients {
+  double C11 = 0, C22 = 0, C23 = 0;
+  double seconds = 0;  ///< per solve
+};
+Coefficients shift_averaged(double aob, int n, int K) {
+  const double G = 82e9, nu = 0.28, c = 5e-3, k = 1e-6, mu = 1e4;
+  const double a = c * std::sqrt(aob), b = c / std::sqrt(aob), dx = 2 * a / n, dy = 2 * b / n;
+  const int m = n + 1;
+  mh::HalfSpaceTangentialSolver s(m, m, dx, dy, G, nu);
+  std::vector<double> p(static_cast<std::size_t>(m * m));
+  Coefficients sum;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int kx = 0; kx < K; ++kx)
+    for (int ky = 0; ky < K; ++ky) {
+      // Centre of element (0, 0): the ellipse's trailing (lower) edge lies at the offset within
+      // element 0, or within element 1 for offsets ≥ ½ (element 0 then empty).
+      const double sx = (kx + 0.5) / K, sy = (ky + 0.5) / K;
+      const double x0 = -a + (sx - (sx >= 0.5 ? 1 : 0)) * dx, y0 = -b + (sy - (sy >= 0.5 ? 1 : 0)) * dy;
+      for (int j = 0; j < m; ++j)
+        for (int i = 0; i < m; ++i) {
+          const double x = x0 + i * dx, y = y0 + j * dy, q = 1 - x * x / (a * a) - y * y / (b * b);
+          p[static_cast<std::size_t>(i + m * j)] = q > 0 ? 1e9 * std::sqrt(q) : 0.0;
+        }
+      const auto rx = s.solve(p.data(), x0, y0, {k, 0, 0}, mu);
+      const auto ry = s.solve(p.data(), x0, y0, {0, k, 0}, mu);
+      const auto rp = s.solve(p.data(), x0, y0, {0, 0, k / c}, mu);
+      REQUIRE(rx.status == mh::TangentialStatus::Ok);
+      REQUIRE(ry.status == mh::TangentialStatus::Ok);
+      REQUIRE(rp.status == mh::TangentialStatus::Ok);
+      // Fx = −G c² C11 ξ; Fy = −G c² C22 η − G c³ C23 φ (tangential_types.hpp).
+      sum.C11 += -rx.forces.Fx / (G * c * c * k);
+      sum.C22 += -ry.forces.Fy / (G * c * c * k);
+      sum.C23 += -rp.forces.Fy / (G * c * c * k);
+    }
+  const double placements = static_cast<double>(K) * K;
+  sum.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / (3 * placements);
+  sum.C11 /= placements;
+  sum.C22 /= placements;
+  sum.C23 /= placements;
+  return sum;
+}
+
 }  // namespace
 
 TEST_CASE("Cerruti rectangle integrals agree with a direct quadrature of the point-load kernel",
@@ -230,29 +282,26 @@ TEST_CASE("Steady rolling, 2-D: Carter's closed form F/(mu N) = 1 - (1 - R xi/(m
 
 TEST_CASE("Steady rolling, small creepage: Kalker's linear theory (Table E.3, nu = 0.28)",
           "[tangential_rolling]") {
-  // 40 × 40 elements over the ellipse: within 2 % (C11, C22; the coarse grid is 1.9 % above in
-  // C22 at a/b = 2) and 2 % (C23, from Fy under
-  // spin and from Mz under lateral creepage, equal by reciprocity); the 80 × 80 grid and the
-  // convergence table are in docs/half_space.md (the [.] test below makes them).
-  const double G = 82e9, nu = 0.28, c = 5e-3, k = 1e-6, mu = 1e4;  // μ large: no slip
-  for (double aob : {0.5, 1.0, 2.0}) {
-    const double a = c * std::sqrt(aob), b = c / std::sqrt(aob);
-    const HertzGrid h(a, b, 1e9, 40, 40);
-    mh::HalfSpaceTangentialSolver s(h.nx, h.ny, h.dx, h.dy, G, nu);
-    const Linear ref = kalker(aob, nu);
-    INFO("a/b = " << aob);
-    const auto rx = s.solve(h.p.data(), h.x0, h.y0, {k, 0, 0}, mu);
-    const auto ry = s.solve(h.p.data(), h.x0, h.y0, {0, k, 0}, mu);
-    const auto rp = s.solve(h.p.data(), h.x0, h.y0, {0, 0, k / c}, mu);
-    REQUIRE(rx.status == mh::TangentialStatus::Ok);
-    REQUIRE(ry.status == mh::TangentialStatus::Ok);
-    REQUIRE(rp.status == mh::TangentialStatus::Ok);
-    // Fx = −G c² C11 ξ; Fy = −G c² C22 η − G c³ C23 φ; Mz = G c³ C23 η (tangential_types.hpp).
-    CHECK(-rx.forces.Fx / (G * c * c * k) == Approx(ref.C11).epsilon(0.02));
-    CHECK(-ry.forces.Fy / (G * c * c * k) == Approx(ref.C22).epsilon(0.02));
-    CHECK(-rp.forces.Fy / (G * c * c * k) == Approx(ref.C23).epsilon(0.02));
-    CHECK(ry.forces.Mz / (G * c * c * c * k) == Approx(ref.C23).epsilon(0.02));
-    CHECK(std::fabs(rx.forces.Fy) <= 1e-6 * std::fabs(rx.forces.Fx));
+  // The coarse family of the convergence table (docs/half_space.md): the placement-averaged
+  // coefficients at 20 (4 × 4 placements) and 40 (2 × 2) elements across, extrapolated to zero
+  // element size at first order, C0 = 2 C(40) − C(20). Measured (29 Nov 2026), C0 against the
+  // table: −0.23 … +0.38 % in C11, −0.09 … +0.66 % in C22, −0.36 … +0.17 % in C23, the 0.66 % at
+  // a/b = 5 (the fine family gives +0.69 % there: the issue's 0.5 % is missed in C22 at a/b = 5);
+  // held at 0.6 % and 0.9 % for C22 at a/b = 5. The grid error is positive (each coefficient
+  // falls from 20 to 40, as CONTACT's on the same discretisation): with the spin's rigid slip at
+  // the element centre instead of eq. R1, C23 rises with n, and the extrapolation alone would not
+  // see it (the offset is a first-order term).
+  for (double aob : {0.2, 0.5, 1.0, 2.0, 5.0}) {
+    const Linear ref = kalker(aob, 0.28);
+    const Coefficients h = shift_averaged(aob, 20, 4), f = shift_averaged(aob, 40, 2);
+    INFO("a/b = " << aob << ": C11 " << h.C11 << " → " << f.C11 << ", C22 " << h.C22 << " → " << f.C22
+                  << ", C23 " << h.C23 << " → " << f.C23);
+    CHECK(f.C11 < h.C11);
+    CHECK(f.C22 < h.C22);
+    CHECK(f.C23 < h.C23);
+    CHECK(2 * f.C11 - h.C11 == Approx(ref.C11).epsilon(0.006));
+    CHECK(2 * f.C22 - h.C22 == Approx(ref.C22).epsilon(aob == 5.0 ? 0.009 : 0.006));
+    CHECK(2 * f.C23 - h.C23 == Approx(ref.C23).epsilon(0.006));
   }
 }
 
@@ -310,36 +359,41 @@ TEST_CASE("Steady rolling against CONTACT's exact solution on the same Hertzian 
   CHECK(cases == 6);
 }
 
-TEST_CASE("Steady rolling, small creepage: convergence to Kalker's linear theory (80 x 80)",
+TEST_CASE("Steady rolling, small creepage: convergence to Kalker's linear theory (20, 40, 80)",
           "[.][tangential_rolling_convergence]") {
-  // Prints the convergence table of docs/half_space.md (20, 40, 80 elements across each axis) and
-  // holds the 80 × 80 grid: C11, C22 within 1.5 %, C23 within 1.1 % (measured 29 Nov 2026:
-  // 0.1–1.3 % and 0.05–0.72 %, the largest at a/b = 5 with elements 5:1; the issue's 0.5 % is not
-  // reached).
-  const double G = 82e9, nu = 0.28, c = 5e-3, k = 1e-6, mu = 1e4;
+  // Prints the convergence table of docs/half_space.md: the placement-averaged coefficients
+  // (shift_averaged) at 20 (8 × 8 placements), 40 and 80 (4 × 4) elements across, the observed
+  // order p = log2((C20 − C40)/(C40 − C80)), and the first-order extrapolation C0 = 2 C80 − C40
+  // (the one-sided difference of the slip is first order; the observed p is 1.02–1.15 wherever the
+  // changes are well above the placement average's noise, ~0.03 %). Holds C0 within the issue's
+  // 0.5 % of Table E.3 except C22 at a/b = 5 (measured +0.69 %, held at 0.8 %), and the grid error
+  // positive (each coefficient falls as n grows). Several minutes on a loaded 2-core machine.
   for (double aob : {0.2, 0.5, 1.0, 2.0, 5.0}) {
-    const double a = c * std::sqrt(aob), b = c / std::sqrt(aob);
-    const Linear ref = kalker(aob, nu);
-    for (int n : {20, 40, 80}) {
-      const HertzGrid h(a, b, 1e9, n, n);
-      mh::HalfSpaceTangentialSolver s(h.nx, h.ny, h.dx, h.dy, G, nu);
-      const auto t0 = std::chrono::steady_clock::now();
-      const auto rx = s.solve(h.p.data(), h.x0, h.y0, {k, 0, 0}, mu);
-      const auto ry = s.solve(h.p.data(), h.x0, h.y0, {0, k, 0}, mu);
-      const auto rp = s.solve(h.p.data(), h.x0, h.y0, {0, 0, k / c}, mu);
-      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / 3;
-      const double C11 = -rx.forces.Fx / (G * c * c * k), C22 = -ry.forces.Fy / (G * c * c * k),
-                   C23 = -rp.forces.Fy / (G * c * c * k);
-      std::printf("| %g | %d | %d | %.4f (%+.2f %%) | %.4f (%+.2f %%) | %.4f (%+.2f %%) | %d | %.3f |\n", aob, n,
-                  rx.n_contact, C11, 100 * (C11 / ref.C11 - 1), C22, 100 * (C22 / ref.C22 - 1), C23,
-                  100 * (C23 / ref.C23 - 1), (rx.sweeps + ry.sweeps + rp.sweeps) / 3, t);
-      if (n == 80) {
-        INFO("a/b = " << aob);
-        CHECK(C11 == Approx(ref.C11).epsilon(0.015));
-        CHECK(C22 == Approx(ref.C22).epsilon(0.015));
-        CHECK(C23 == Approx(ref.C23).epsilon(0.011));
-      }
+    const Linear ref = kalker(aob, 0.28);
+    Coefficients c[3];
+    const int ns[3] = {20, 40, 80}, Ks[3] = {8, 4, 4};
+    for (int g = 0; g < 3; ++g) {
+      c[g] = shift_averaged(aob, ns[g], Ks[g]);
+      std::printf("| %g | %d | %d × %d | %.4f (%+.2f %%) | %.4f (%+.2f %%) | %.4f (%+.2f %%) | %.3f |\n", aob, ns[g],
+                  Ks[g], Ks[g], c[g].C11, 100 * (c[g].C11 / ref.C11 - 1), c[g].C22, 100 * (c[g].C22 / ref.C22 - 1),
+                  c[g].C23, 100 * (c[g].C23 / ref.C23 - 1), c[g].seconds);
     }
+    auto order = [](double a, double b, double d) { return std::log2((a - b) / (b - d)); };
+    std::printf("| %g | order p | | %.2f | %.2f | %.2f | |\n", aob, order(c[0].C11, c[1].C11, c[2].C11),
+                order(c[0].C22, c[1].C22, c[2].C22), order(c[0].C23, c[1].C23, c[2].C23));
+    const double C11 = 2 * c[2].C11 - c[1].C11, C22 = 2 * c[2].C22 - c[1].C22, C23 = 2 * c[2].C23 - c[1].C23;
+    std::printf("| %g | extrapolated (p = 1) | | %.4f (%+.2f %%) | %.4f (%+.2f %%) | %.4f (%+.2f %%) | |\n", aob, C11,
+                100 * (C11 / ref.C11 - 1), C22, 100 * (C22 / ref.C22 - 1), C23, 100 * (C23 / ref.C23 - 1));
+    std::fflush(stdout);
+    INFO("a/b = " << aob);
+    for (int g = 0; g < 2; ++g) {
+      CHECK(c[g + 1].C11 < c[g].C11);
+      CHECK(c[g + 1].C22 < c[g].C22);
+      CHECK(c[g + 1].C23 < c[g].C23);
+    }
+    CHECK(C11 == Approx(ref.C11).epsilon(0.005));
+    CHECK(C22 == Approx(ref.C22).epsilon(aob == 5.0 ? 0.008 : 0.005));
+    CHECK(C23 == Approx(ref.C23).epsilon(0.005));
   }
 }
 
