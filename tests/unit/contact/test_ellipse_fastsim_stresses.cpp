@@ -90,6 +90,11 @@ TEST_CASE("Ellipse stresses with FASTSIM's traction: full slip gives the closed-
   CHECK(std::fabs(P.tau_z - R.tau_z) <= 5e-3 * b);
   CHECK(std::fabs(P.tau_orth_amp - R.tau_orth_amp) <= 3e-3 * p0);
   CHECK(std::fabs(P.tau_eq_amp - R.tau_eq_amp) <= 2e-3 * p0);
+  // Cells of another ellipse (a plastic patch's: larger than the elastic one) are not taken: the
+  // row keeps the closed-form full slip of its elastic ellipse.
+  const double f = std::hypot(s.t.Fx, s.t.Fy) / N;
+  const ContactStresses Q = contact_stresses(options(), N, a, b, s.t, f, nullptr, EllipseCells{&s.cells, 1.1 * a, 1.1 * b});
+  CHECK(Q.source == ContactStressSource::HertzEllipse);
 }
 
 TEST_CASE("Ellipse stresses with FASTSIM's traction: partial slip against the exact solver's traction",
@@ -135,4 +140,42 @@ TEST_CASE("Ellipse stresses with FASTSIM's traction: partial slip against the ex
   // The test can fail: the full-slip source misses the amplitudes by many tolerances.
   CHECK(std::fabs(F.peaks.tau_orth_amp - R.tau_orth_amp) > 20 * 4e-5 * p0);
   CHECK(std::fabs(F.peaks.tau_eq_amp - R.tau_eq_amp) > 20 * 1.3e-4 * p0);
+}
+
+TEST_CASE("Ellipse stresses with FASTSIM's traction: a spinning flange contact against the exact solver's traction",
+          "[.][subsurface_spin]") {
+  // Hidden (about 12 s of CPU): the flange contact of cases/manchester-rcf.json at t_Y = 7 mm
+  // (docs/methods.md "With friction: FASTSIM's traction"): full slip with the traction turned by
+  // the spin over an ellipse of a/b ≈ 19. Measured 29 Nov 2026: orthogonal shear amplitude
+  // 356.6 MPa (FASTSIM) against 361.1 MPa (exact solver's traction, 240 × 24 elements over
+  // 1.05 × the ellipse) and 293.8 MPa (the closed-form full slip f p along the force); von Mises
+  // 2793 / 2803 / 2780 MPa; τ_eq,a 845 / 832 / 807 MPa.
+  const double Nf = 170.4489472e3, af = 18.73811488e-3, bf = 0.9935827355e-3;
+  const double p0f = 1.5 * Nf / (M_PI * af * bf);
+  const Creepages c{-0.0283919229, -0.05051454614, -2.042810171};
+  EllipseTraction T;
+  FastsimOptions fo;
+  T.bound = fo.bound;
+  const TangentialResult t = fastsim(c, af, bf, Nf, mu, G, nu, fo, &T.cells);
+  REQUIRE(t.solved);
+  const double f = std::hypot(t.Fx, t.Fy) / Nf;
+  const ContactStresses S = contact_stresses(options(), Nf, af, bf, t, f, nullptr, EllipseCells{&T, af, bf});
+  REQUIRE(S.source == ContactStressSource::HertzEllipseFastsim);
+  const ContactStresses F = contact_stresses(options(), Nf, af, bf, t, f);
+  const HertzGrid H(af, bf, p0f, 240, 24, 1.05);
+  HalfSpaceTangentialSolver solver(H.nx, H.ny, H.dx, H.dy, G, nu);
+  const HalfSpaceTangentialResult e = solver.solve(H.p.data(), H.x0, H.y0, c, mu);
+  REQUIRE(e.status == TangentialStatus::Ok);
+  GridLoad X;
+  X.nx = H.nx, X.ny = H.ny, X.dx = H.dx, X.dy = H.dy, X.x0 = H.x0, X.y0 = H.y0, X.nu = nu, X.p = H.p;
+  X.qx = solver.px(), X.qy = solver.py();
+  for (double& q : X.qx) q = -q;
+  for (double& q : X.qy) q = -q;
+  const SubsurfacePeaks R = grid_subsurface_peaks(X);
+  CAPTURE(S.peaks.tau_orth_amp / 1e6, R.tau_orth_amp / 1e6, F.peaks.tau_orth_amp / 1e6);
+  CAPTURE(S.peaks.vm_max / 1e6, R.vm_max / 1e6, F.peaks.vm_max / 1e6, S.peaks.tau_eq_amp / 1e6, R.tau_eq_amp / 1e6);
+  CHECK(std::fabs(S.peaks.tau_orth_amp - R.tau_orth_amp) <= 0.02 * R.tau_orth_amp);
+  CHECK(std::fabs(S.peaks.vm_max - R.vm_max) <= 0.01 * R.vm_max);
+  CHECK(std::fabs(S.peaks.tau_eq_amp - R.tau_eq_amp) <= 0.025 * R.tau_eq_amp);
+  CHECK(std::fabs(F.peaks.tau_orth_amp - R.tau_orth_amp) > 0.15 * R.tau_orth_amp);
 }
