@@ -381,11 +381,13 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   const bool tang = cf.tangential.enabled();  // the tangential columns (docs/tangential.md)
   // The cases whose pressure grid is written keep their tractions per element too (the traction
   // columns of pressure.csv), and so does every case whose grid patches' stresses take their
-  // solved traction (contact/rcf/contact_stresses.hpp); every other case keeps nothing
+  // solved traction, and every case whose ellipses' stresses take FASTSIM's traction
+  // (contact/rcf/contact_stresses.hpp); every other case keeps nothing
   // (TangentialOptions::keep_traction).
-  mo.tangential.keep_traction = tang && grid_stresses;
+  const bool any_stresses = cf.rcf.enabled() && cf.rcf.subsurface;
+  mo.tangential.keep_traction = tang && (grid_stresses || any_stresses);
   MethodOptions mo_grid = mo;
-  mo_grid.tangential.keep_traction = tang && (np > 0 || grid_stresses);
+  mo_grid.tangential.keep_traction = tang && (np > 0 || grid_stresses || any_stresses);
   const std::uint64_t n = end - first;
   if (n == 0) return;
   const unsigned threads = std::max(1u, opt.threads ? opt.threads : std::thread::hardware_concurrency());

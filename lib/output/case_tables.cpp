@@ -258,7 +258,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (!plastic) { e += ','; num(e, kAreaCol.get(L)); }
       if (rcf.enabled()) {
         CsvSink k{e};
-        rcf_fields(k, rcf, L.s.N, L.s.a_el, L.s.b_el, L.t);  // the elastic Hertz ellipse of N
+        rcf_fields(k, rcf, L.s.N, L.s.a_el, L.s.b_el, L.t, nullptr, ellipse_cells(r, L));  // the elastic Hertz ellipse of N
       }
       if (tangential) {
         CsvSink k{e};
@@ -323,7 +323,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       if (!plastic) e[kAreaCol.name] = jv(kAreaCol.get(L));
       if (rcf.enabled()) {
         JsonSink k{e};
-        rcf_fields(k, rcf, L.s.N, L.s.a_el, L.s.b_el, L.t);  // the elastic Hertz ellipse of N
+        rcf_fields(k, rcf, L.s.N, L.s.a_el, L.s.b_el, L.t, nullptr, ellipse_cells(r, L));  // the elastic Hertz ellipse of N
       }
       if (tangential) {
         JsonSink k{e};

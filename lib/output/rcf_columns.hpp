@@ -16,11 +16,11 @@ namespace mh {
 
 // The subsurface columns of one contact (docs/outputs.md "Subsurface columns"): the stresses of
 // contact_stresses (contact/rcf/contact_stresses.hpp: which load, its peaks, FI_sub), formatted.
-// `patch`: the row's grid patch, or null (an ellipse row).
+// `patch`: the row's grid patch, or null (an ellipse row); `cells`: an ellipse row's FASTSIM cells.
 template <class Sink>
 void subsurface_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
-                       double f, const PatchResult* patch = nullptr) {
-  const ContactStresses S = contact_stresses(o, N, a_el, b_el, t, f, patch);
+                       double f, const PatchResult* patch = nullptr, const EllipseCells& cells = {}) {
+  const ContactStresses S = contact_stresses(o, N, a_el, b_el, t, f, patch, cells);
   const SubsurfacePeaks& P = S.peaks;
   k.text("sub_source", to_string(S.source));
   k.number("sub_vm_max_MPa", P.vm_max / units::MPa);
@@ -33,6 +33,13 @@ void subsurface_fields(Sink& k, const RcfOptions& o, double N, double a_el, doub
   k.number("sub_sigma_h_MPa", P.sigma_h / units::MPa);
   k.number("FI_sub_MPa", S.fi_sub / units::MPa);
 }
+// FASTSIM's kept cells of the ellipse row L of r (CaseResult::ellipse_traction, in the order of
+// r.loaded; none when not kept) and the ellipse they were solved on.
+inline EllipseCells ellipse_cells(const CaseResult& r, const LoadedEllipse& L) {
+  const std::size_t i = static_cast<std::size_t>(&L - r.loaded.data());
+  if (i >= r.ellipse_traction.size() || r.ellipse_traction[i].empty()) return {};
+  return {&r.ellipse_traction[i], L.s.a, L.s.b};
+}
 // The RCF columns (docs/outputs.md "RCF columns"), appended last to ellipses.csv and patches.csv
 // and to their JSON records: by their definitions, from the elastic Hertz patch of the load N
 // (semi-axes a_el, b_el; NaN: not known, the cells empty).
@@ -40,7 +47,7 @@ void subsurface_fields(Sink& k, const RcfOptions& o, double N, double a_el, doub
 // (RcfOptions::traction; empty where its tangential problem is unsolved).
 template <class Sink>
 void rcf_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
-                const PatchResult* patch = nullptr) {
+                const PatchResult* patch = nullptr, const EllipseCells& cells = {}) {
   const double f = o.traction(N, t.Fx, t.Fy, t.solved);
   const RcfPoint p = rcf_point(f, o.k, N, a_el, b_el, o.nu);
   k.number("traction_coefficient", f);
@@ -50,7 +57,7 @@ void rcf_fields(Sink& k, const RcfOptions& o, double N, double a_el, double b_el
   k.number("shakedown_limit_p0_over_k", p.shakedown_limit);
   k.text("shakedown_regime", std::isfinite(p.p0_el_over_k) ? to_string(p.regime) : nullptr);
   k.number("FI_surf_el", p.fi_surf_el);
-  if (o.subsurface) subsurface_fields(k, o, N, a_el, b_el, t, f, patch);
+  if (o.subsurface) subsurface_fields(k, o, N, a_el, b_el, t, f, patch, cells);
 }
 // The worst contact's RCF indicators in cases.csv and the case record (docs/outputs.md "RCF
 // columns"), after the band columns: the contact (ellipse or patch number, by the row's method)

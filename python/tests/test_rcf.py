@@ -68,9 +68,13 @@ def test_rcf_without_friction_and_k():
 
 
 def test_hertz_subsurface_as_the_command():
+    # Without friction the command's ellipse rows take the closed-form full slip f p along x
+    # (sub_source hertz_ellipse); with friction given, FASTSIM's traction (not this closed form).
     with open(RCF) as f:
         case = json.load(f)
-    case["rcf"]["subsurface"] = {"dang_van_c": 0.3}
+    for k in ("friction", "kinematics"):
+        del case[k]
+    case["rcf"] = {"shear_yield_MPa": 300, "traction_coefficient": 0.3, "subsurface": {"dang_van_c": 0.3}}
     case["sweep"] = {"tY_mm": [1], "Q_kN": 100}
     for side in ("wheel", "rail"):
         case[side]["profile"] = os.path.join(SRC, "profiles", os.path.basename(case[side]["profile"]))
@@ -80,10 +84,9 @@ def test_hertz_subsurface_as_the_command():
             json.dump(case, f)
         ells = run(path, os.path.join(d, "out"))
     r = ells[1]
+    assert r["sub_source"] == "hertz_ellipse"
     a, b, N = float(r["a_mm"]) * 1e-3, float(r["b_mm"]) * 1e-3, float(r["N_kN"]) * 1e3
-    f, Fx, Fy = float(r["traction_coefficient"]), -float(r["Fx_kN"]), -float(r["Fy_kN"])  # on the wheel
-    F = math.hypot(Fx, Fy)
-    s = mhcontact.hertz_subsurface(a, b, 1.5 * N / (math.pi * a * b), f * Fx / F, f * Fy / F, nu=0.28)
+    s = mhcontact.hertz_subsurface(a, b, 1.5 * N / (math.pi * a * b), float(r["traction_coefficient"]), 0.0, nu=0.28)
     for key, col, scale in (("vm_max_Pa", "sub_vm_max_MPa", 1e6), ("vm_depth_m", "sub_vm_depth_mm", 1e-3),
                             ("tau_max_Pa", "sub_tau_max_MPa", 1e6), ("tau_orth_amp_Pa", "sub_tau_orth_amp_MPa", 1e6),
                             ("tau_eq_amp_Pa", "sub_tau_eq_amp_MPa", 1e6), ("sigma_h_Pa", "sub_sigma_h_MPa", 1e6)):

@@ -113,7 +113,7 @@ h = list(E[0])
 i = h.index("FI_surf_el")
 assert h[i + 1:i + 1 + len(cols)] == cols, h[i + 1:i + 10]
 for e in E:
-    assert e["sub_source"] == "hertz_ellipse", e["sub_source"]
+    assert e["sub_source"] == "hertz_ellipse_fastsim_traction", e["sub_source"]  # friction given: FASTSIM's traction
     p0 = 300 * float(e["p0_el_over_k"])
     vm, tau = float(e["sub_vm_max_MPa"]), float(e["sub_tau_max_MPa"])
     # Any stress state: τ_max ≤ σ_vM/√3 ≤ (2/√3) τ_max; a Hertz contact's peaks 0.55–0.75 p0 (von Mises)

@@ -10,14 +10,17 @@ namespace mh {
 
 namespace {
 
-// The stresses below the contact's elastic Hertz ellipse with full-slip traction f (subsurface.hpp).
+// The stresses below the contact's elastic Hertz ellipse with full-slip traction f (subsurface.hpp)
+// on the rail, against the creep force on the wheel (along x without one).
 SubsurfacePeaks ellipse_peaks(const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
                               double f) {
   if (!(N > 0 && a_el > 0 && b_el > 0 && f >= 0)) return {};
   HertzLoad L;
   L.a = a_el, L.b = b_el, L.p0 = 1.5 * N / (units::pi * a_el * b_el), L.nu = o.nu;
   const double F = std::hypot(t.Fx, t.Fy);
-  if (o.actual && F > 0) L.fx = f * t.Fx / F, L.fy = f * t.Fy / F;
+  // On the rail, against the force on the wheel (as a grid patch's, patch_stress_load). The peaks
+  // are those of the mirrored load along +F too (the ellipse is symmetric about its centre).
+  if (o.actual && F > 0) L.fx = -f * t.Fx / F, L.fy = -f * t.Fy / F;
   else L.fx = f;
   struct Memo { HertzLoad L; SubsurfacePeaks P; bool used = false; };
   static thread_local Memo memo[8];
@@ -122,8 +125,36 @@ GridLoad patch_stress_load(const RcfOptions& o, const PatchResult& patch, double
   return G;
 }
 
+GridLoad ellipse_fastsim_load(const RcfOptions& o, double N, double a_el, double b_el, double mu,
+                              const EllipseCells& cells) {
+  GridLoad G;
+  if (!cells.traction || cells.traction->empty() || !(N > 0 && a_el > 0 && b_el > 0 && mu > 0)) return G;
+  // Only FASTSIM's traction of the elastic ellipse itself: a plastic patch's cells are of another
+  // pressure (contact_stresses.hpp).
+  if (!(std::fabs(cells.a - a_el) <= 1e-9 * a_el && std::fabs(cells.b - b_el) <= 1e-9 * b_el)) return G;
+  const double h = std::min(a_el, b_el) / kEllipseElements;
+  G.nx = 2 * static_cast<int>(std::ceil(a_el / h)), G.ny = 2 * static_cast<int>(std::ceil(b_el / h));
+  G.dx = 2 * a_el / G.nx, G.dy = 2 * b_el / G.ny;
+  G.x0 = -a_el + 0.5 * G.dx, G.y0 = -b_el + 0.5 * G.dy;
+  G.nu = o.nu;
+  const std::size_t n = static_cast<std::size_t>(G.nx) * static_cast<std::size_t>(G.ny);
+  G.p.assign(n, 0.0), G.qx.assign(n, 0.0), G.qy.assign(n, 0.0);
+  const double p0 = 1.5 * N / (units::pi * a_el * b_el);
+  for (int j = 0; j < G.ny; ++j)
+    for (int i = 0; i < G.nx; ++i) {
+      const double x = G.x0 + i * G.dx, y = G.y0 + j * G.dy, q = 1 - x * x / (a_el * a_el) - y * y / (b_el * b_el);
+      if (!(q > 0)) continue;
+      const std::size_t e = static_cast<std::size_t>(i) + static_cast<std::size_t>(G.nx) * static_cast<std::size_t>(j);
+      G.p[e] = p0 * std::sqrt(q);
+      // FASTSIM's traction on the wheel at the element centre; the rail's is its reverse.
+      const TractionSample s = fastsim_traction_at(*cells.traction, a_el, b_el, mu, x, y);
+      G.qx[e] = -s.px, G.qy[e] = -s.py;
+    }
+  return G;
+}
+
 ContactStresses contact_stresses(const RcfOptions& o, double N, double a_el, double b_el, const TangentialResult& t,
-                                 double f, const PatchResult* patch) {
+                                 double f, const PatchResult* patch, const EllipseCells& cells) {
   ContactStresses S;
   if (!std::isfinite(f)) return S;
   // The grid: asked, a patch, elastic (no element at the plastic cap), its pressure kept.
@@ -133,6 +164,14 @@ ContactStresses contact_stresses(const RcfOptions& o, double N, double a_el, dou
     if (!G.p.empty()) {
       S.peaks = grid_peaks(std::move(G));
       S.source = solved ? ContactStressSource::GridPatchSolvedTraction : ContactStressSource::GridPatch;
+    }
+  }
+  // An ellipse row: FASTSIM's traction of its elastic ellipse, with friction given and its cells kept.
+  if (!patch && o.actual && t.solved && f >= 0) {
+    GridLoad G = ellipse_fastsim_load(o, N, a_el, b_el, t.mu, cells);
+    if (!G.p.empty()) {
+      S.peaks = grid_peaks(std::move(G));
+      S.source = ContactStressSource::HertzEllipseFastsim;
     }
   }
   if (S.source == ContactStressSource::None) {
