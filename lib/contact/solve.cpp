@@ -223,9 +223,27 @@ bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const 
 
   const std::vector<Warning> handed = auto_warnings(r);
   const Method m = r.method;
+  // The multi-Hertzian row's creep forces at the loads the root asks for after two full solves
+  // (at Q and the first step): extrapolated from those two (tangential_solve.hpp,
+  // extrapolate_tangential) where that is accurate to the equilibrium's tolerance, FASTSIM again
+  // otherwise: most steps past the first are short (docs/tangential.md "Cost"), and cost a
+  // normal solve only.
+  const bool extrapolate = m == Method::MultiHertzian && opt.tangential.enabled() &&
+                           opt.tangential.vertical_equilibrium && !opt.tangential.keep_traction;
+  CreepAnchors anchor[2];  // [1] the last full solve, [0] the one before
+  if (extrapolate) anchor[1].take(r);
   const bool again = creep_equilibrium(r, Q, opt.tangential, [&](double Qn, CaseResult& out) {
     if (m == Method::MultiHertzian) {
       solve_multi_hertz(G, mat, tY, Qn, opt.multi_hertzian, out);
+      if (extrapolate &&
+          extrapolate_tangential(out, anchor[0], anchor[1], opt.tangential.mu, opt.tangential.equilibrium_tolerance))
+        return;
+      tangential_step(out, mat, tY, opt);
+      if (extrapolate) {
+        anchor[0] = anchor[1];
+        anchor[1].take(out);
+      }
+      return;
     } else if (m == Method::Strips) {
       if (ws) solve_strip_method(G, mat, tY, Qn, strip_options(opt), ws->strips, out);
       else out = solve_strip_method(G, mat, tY, Qn, strip_options(opt));

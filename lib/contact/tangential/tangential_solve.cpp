@@ -72,6 +72,55 @@ void solve_tangential(CaseResult& r, const Material& mat, double tY, const Tange
   sum_tangential(r, opt.mu);
 }
 
+void CreepAnchors::take(const CaseResult& r) {
+  n = -1;
+  if (!r.patches.empty() || r.loaded.empty() || r.loaded.size() > static_cast<std::size_t>(kMax) || !r.tangential.solved)
+    return;
+  for (std::size_t i = 0; i < r.loaded.size(); ++i) {
+    const LoadedEllipse& L = r.loaded[i];
+    if (!(L.s.N > 0) || !L.t.solved) return;
+    ellipse[i] = L.ellipse;
+    N[i] = L.s.N;
+    t[i] = L.t;
+  }
+  n = static_cast<int>(r.loaded.size());
+}
+
+bool extrapolate_tangential(CaseResult& r, const CreepAnchors& a0, const CreepAnchors& a1, double mu, double tol) {
+  const int n = static_cast<int>(r.loaded.size());
+  if (a0.n < 1 || a1.n != a0.n || n != a1.n || !r.patches.empty()) return false;
+  for (int i = 0; i < n; ++i) {
+    const LoadedEllipse& L = r.loaded[static_cast<std::size_t>(i)];
+    if (L.ellipse != a1.ellipse[i] || L.ellipse != a0.ellipse[i]) return false;
+    if (!(L.s.N > 0 && L.s.a > 0 && L.s.b > 0)) return false;
+    const double N0 = a0.N[i], N1 = a1.N[i], dN = std::fabs(N1 - N0), step = std::fabs(L.s.N - N1);
+    if (step == 0) continue;  // the same load: a1's forces
+    // The secant's error ½ |F''| |N − N1| |N − N0| with |F''| ≤ kCreepCurvature μ/N (header).
+    if (!(dN > 0) || !(0.5 * kCreepCurvature * step * dN <= tol * N1 * N1)) return false;
+  }
+  for (int i = 0; i < n; ++i) {
+    LoadedEllipse& L = r.loaded[static_cast<std::size_t>(i)];
+    const TangentialResult& t0 = a0.t[i];
+    const TangentialResult& t1 = a1.t[i];
+    L.t = t1;
+    const double N1 = a1.N[i];
+    if (L.s.N != N1) {
+      const double s = (L.s.N - N1) / (N1 - a0.N[i]);
+      L.t.Fx = t1.Fx + s * (t1.Fx - t0.Fx);
+      L.t.Fy = t1.Fy + s * (t1.Fy - t0.Fy);
+      L.t.Mz = t1.Mz + s * (t1.Mz - t0.Mz);
+      L.t.Tgamma = -(L.t.Fx * L.t.c.xi + L.t.Fy * L.t.c.eta);
+      L.t.Tgamma_spin = -L.t.Mz * L.t.c.phi;
+      L.t.dFx_dN = L.t.dFy_dN = NAN;
+    }
+  }
+  r.tangential = TangentialSums{};
+  r.tangential.asked = true;
+  r.ellipse_traction.clear();
+  sum_tangential(r, mu);
+  return true;
+}
+
 void sum_tangential(CaseResult& r, double mu) {
   double Fx = 0, Fy = 0, Mz = 0, F = 0, N = 0, Fz = 0;
   bool all = !r.loaded.empty() || !r.patches.empty();
