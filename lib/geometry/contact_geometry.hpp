@@ -142,6 +142,8 @@ struct RolledMinima {
   std::uint32_t at(std::size_t k, double sigma) const;
 };
 
+class RolledMinimaOnDemand;  // rolled_candidates.hpp
+
 class ContactGeometry {
  public:
   std::vector<double> tY;                ///< [m] grid
@@ -235,6 +237,9 @@ class ContactGeometry {
   /// The rolled minima's envelopes (build_rolled_minima; null: candidates_at(t, δ) scans the
   /// strips). Rolls beyond their limit are scanned too.
   std::shared_ptr<const RolledMinima> rolled_minima;
+  /// Or the same tables built by the first rolled call that can use them (rolled_candidates.hpp;
+  /// used when rolled_minima is null).
+  std::shared_ptr<const RolledMinimaOnDemand> rolled_minima_on_demand;
   /// The wheel point facing rail point y_r at t with the wheel rolled by δ: its y_w (wheel frame)
   /// and the rotated wheel surface's height there, z̃_w (rail frame, datum height).
   void rolled_wheel_at(double t, double roll, double y_r, double* y_w, double* z_w) const;

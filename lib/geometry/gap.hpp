@@ -3,9 +3,11 @@
 // the grid methods (half-space, strips; docs/method.md §8). Built from the smooth profiles kept by
 // ContactGeometry. Rail frame: y lateral towards the field side, z up, x the rolling direction.
 // The wheel is a body of revolution about the axle (radius r(y) from the nominal radius and the
-// profile), placed at its first-contact height, with no roll and no yaw; the rail is straight in x.
+// profile), placed at its first-contact height, upright or rolled by δ (method.md §3.8), with no
+// yaw; the rail is straight in x.
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -25,6 +27,12 @@ class WheelRailGap {
   /// the two minima (a constant: second differences of the gap, what gap_kink measures, move by
   /// that times the gap's curvature h², far below its limit).
   WheelRailGap(const ContactGeometry& G, double tY, double y_near);
+  /// The same with the wheel rolled by δ = `roll` [rad] against the rail (method.md §3.8, eq.
+  /// 3.8.1; positive raising the field side): the wheel profile rotated about its origin
+  /// (rolled_gap.hpp, the rotation of ContactGeometry::candidates_at(t, δ)), placed by tY as
+  /// upright, its surface a body of revolution about the rolled axle (z_wheel, rolling_radius), the
+  /// first contact the minimum of the rolled gap. δ = 0 is the upright gap (the same path, bits).
+  WheelRailGap(const ContactGeometry& G, double tY, double y_near, double roll);
 
   /// [m] the rail-y range where both profiles exist.
   double y_min() const { return y0_; }
@@ -45,8 +53,10 @@ class WheelRailGap {
   double rail_face_foot() const { return face_foot_; }
   /// [m] wheel rolling radius at rail y.
   double rolling_radius(double y) const;
-  /// [m] wheel-profile lateral coordinate facing rail y.
-  double y_wheel(double y) const { return y - shift_; }
+  /// [m] wheel-profile lateral coordinate facing rail y (rolled: of the wheel point rotated there).
+  double y_wheel(double y) const { return roll_ == 0.0 ? y - shift_ : rolled_source(y, nullptr); }
+  /// [rad] the wheel's roll δ against the rail (0: upright).
+  double roll() const { return roll_; }
   /// Intervals [a, b] of rail y where g(y) < dz (the interpenetration of a rigid vertical approach
   /// dz), found on a sampling of step `step` [m], in increasing y.
   std::vector<std::pair<double, double>> interpenetration(double dz, double step) const;
@@ -57,14 +67,20 @@ class WheelRailGap {
   const ProfileCurve& wheel_curve() const { return *W_; }
   const ProfileCurve& rail_curve() const { return *R_; }
   double wheel_lift() const { return gmin_; }
-  /// ContactGeometry::build_id of the geometry it was made from (0: not from build_geometry).
+  /// ContactGeometry::build_id of the geometry it was made from (0: not from build_geometry, or
+  /// rolled: its wheel curve is its own, not the geometry's).
   std::uint64_t build_id() const { return build_id_; }
 
  private:
   /// Samples each side of y_near in the second constructor: ±0.2 mm at kSampleStep.
   static constexpr int kLocalSamples = 20;
   void find_minimum(int i0, int i1, int n);
+  /// Rolled: the upright wheel point (y_w, returned; *z_w its height) that the roll carries to
+  /// rail y's wheel point.
+  double rolled_source(double y, double* z_w) const;
   const ProfileCurve* W_;
+  std::shared_ptr<const ProfileCurve> rolled_W_;  // the rolled wheel's curve (roll_ != 0)
+  double roll_ = 0;
   const ProfileCurve* R_;
   double shift_ = 0;   // rail y − wheel y
   std::uint64_t build_id_ = 0;

@@ -505,6 +505,19 @@ ProfileCurve::ProfileCurve(const SmoothedProfile& sp, double grid_step, const No
   median_rms_ = noise.median_residual;
 }
 
+ProfileCurve ProfileCurve::from_nodes(double y_first, double h, std::vector<double> z, std::vector<double> dz,
+                                      std::vector<double> kappa, const ProfileCurve& like) {
+  ProfileCurve c = like;
+  c.h_ = h;
+  c.y0_ = c.y_first_ = y_first;
+  c.j0_ = 0;
+  c.side_.assign(z.size(), 0);
+  c.z_ = std::move(z);
+  c.dz_ = std::move(dz);
+  c.k_ = std::move(kappa);
+  return c;
+}
+
 double ProfileCurve::z(double y, double* dz) const {
   const std::size_t m = z_.size();
   double s = grid_pos(y);

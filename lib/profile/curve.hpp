@@ -140,6 +140,11 @@ class ProfileCurve {
   /// grid methods: z, dz/dy and kappa at every node of a `grid_step` grid from the splines
   /// y(s), z(s) themselves (no window fit). `noise` is carried over from the fitted curve.
   ProfileCurve(const SmoothedProfile& sp, double grid_step, const NoiseDecision& noise);
+  /// A curve from its nodes: y_first + h i [m], z, dz/dy and kappa at each (the same size, ≥ 2);
+  /// `noise` and the smoothing figures carried over from `like` (a curve derived from another,
+  /// such as the rolled wheel's, geometry/rolled_gap.hpp).
+  static ProfileCurve from_nodes(double y_first, double h, std::vector<double> z, std::vector<double> dz,
+                                 std::vector<double> kappa, const ProfileCurve& like);
 
   double y_min() const { return y0_; }
   double y_max() const { return y_first_ + h_ * static_cast<double>(j0_ + z_.size() - 1); }

@@ -10,6 +10,7 @@
 #include "contact/tangential/tangential_solve.hpp"
 #include "core/roots.hpp"
 #include "core/numfmt.hpp"
+#include "geometry/rolled_candidates.hpp"
 
 namespace mh {
 
@@ -110,13 +111,18 @@ WheelsetContact::WheelsetContact(const WheelsetSetup& setup) : setup_(setup) {
 
 void WheelsetContact::tabulate_rolled_minima() {
   if (!roll_in_geometry()) return;
-  // The rolled candidates of every step from the envelopes (geometry/contact_geometry.hpp), built
-  // once per geometry: the two sides' are shared when they are copies of one pair's.
-  if (!left_.geo.rolled_minima) build_rolled_minima(left_.geo, kRolledMinimaRollMax);
-  if (right_.geo.build_id == left_.geo.build_id && right_.geo.build_id != 0)
-    right_.geo.rolled_minima = left_.geo.rolled_minima;
-  else if (!right_.geo.rolled_minima)
-    build_rolled_minima(right_.geo, kRolledMinimaRollMax);
+  // The rolled candidates of every step from the envelopes (geometry/rolled_candidates.hpp), built
+  // by the first rolled step (a wheelset made and stepped upright never builds them); the two
+  // sides' are shared when they are copies of one pair's.
+  tabulate_rolled_minima_on_demand(left_.geo, kRolledMinimaRollMax);
+  if (right_.geo.build_id == left_.geo.build_id && right_.geo.build_id != 0) {
+    if (!right_.geo.rolled_minima) {
+      right_.geo.rolled_minima = left_.geo.rolled_minima;
+      right_.geo.rolled_minima_on_demand = left_.geo.rolled_minima_on_demand;
+    }
+  } else {
+    tabulate_rolled_minima_on_demand(right_.geo, kRolledMinimaRollMax);
+  }
 }
 
 WheelsetContact::WheelsetContact(const ContactGeometry& left, const ContactGeometry& right, const TrackSetup& track,

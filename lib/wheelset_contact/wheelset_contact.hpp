@@ -280,7 +280,8 @@ class WheelsetContact {
   std::vector<std::string> warnings_;
 
   void place(Side& S, int sigma);
-  /// Both geometries' rolled minima (build_rolled_minima) when the roll enters the geometry.
+  /// Both geometries' rolled minima, built by the first rolled step (RolledMinimaOnDemand), when
+  /// the roll enters the geometry.
   void tabulate_rolled_minima();
 
   /// One wheel at t_Y = σ y with its load (Loads) or its δz (Position), into w (no derivatives),

@@ -28,6 +28,7 @@
 
 #include "contact/multi_hertz/multi_hertz.hpp"
 #include "geometry/contact_geometry.hpp"
+#include "geometry/rolled_candidates.hpp"
 #include "unit/contact/manchester_fixture.hpp"
 
 namespace {
@@ -138,4 +139,34 @@ TEST_CASE("rolled candidates: the envelopes' table holds, at each grid point, th
   }
   WARN("Manchester pair, t_Y " << G.tY.front() / mm << " … " << G.tY.back() / mm << " mm: " << pieces
                                << " envelope pieces over |roll| <= 25 mrad, " << pieces * 12 / 1024 << " KiB");
+}
+
+// The table built on demand (RolledMinimaOnDemand, what the wheelset call installs): nothing is
+// built by upright calls, the first rolled call builds it, and the candidates are the eager
+// table's, bit for bit. Break seen to fail: rolled_candidates not looking at the on-demand table
+// (the "built" check fails).
+TEST_CASE("rolled candidates: the envelopes built on demand by the first rolled call, the same bits",
+          "[geometry][roll]") {
+  mh::ContactGeometry lazy = mh::testing::manchester_geometry(), eager = lazy;
+  lazy.build_id = eager.build_id = 0;  // no per-thread caches between the two
+  lazy.rolled_minima.reset();
+  mh::tabulate_rolled_minima_on_demand(lazy, mh::kRolledMinimaRollMax);
+  mh::build_rolled_minima(eager, mh::kRolledMinimaRollMax);
+  REQUIRE(lazy.rolled_minima_on_demand);
+  const std::size_t ne = lazy.n_ellipses();
+  std::vector<mh::CandidateGeom> a(ne), b(ne);
+  int ma = 0, mb = 0;
+  for (double t : {-3 * mm, 2.05 * mm, 7.3 * mm}) lazy.candidates_at(t, 0.0, a.data(), &ma);
+  CHECK_FALSE(lazy.rolled_minima_on_demand->built());
+  for (double t : {-3 * mm, 2.05 * mm, 7.3 * mm, 10.2 * mm})
+    for (double roll : {-12e-3, 3e-3, 20e-3}) {
+      lazy.candidates_at(t, roll, a.data(), &ma);
+      eager.candidates_at(t, roll, b.data(), &mb);
+      CHECK(lazy.rolled_minima_on_demand->built());
+      CHECK(ma == mb);
+      for (std::size_t e = 0; e < ne; ++e) {
+        CHECK(a[e].y_r == b[e].y_r);
+        CHECK(a[e].sep == b[e].sep);
+      }
+    }
 }

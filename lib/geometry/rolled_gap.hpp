@@ -1,0 +1,19 @@
+#pragma once
+// The rolled wheel of the grid methods' gap (method.md §3.8, eq. 3.8.1; WheelRailGap with a roll):
+// the wheel profile rotated by δ about its origin (the taping line point), the same rotation as
+// ContactGeometry::candidates_at(t, δ), resampled as a curve z(y) of the pair's frame.
+
+#include "profile/curve.hpp"
+
+namespace mh {
+
+/// The wheel curve W rotated by δ [rad] about its origin: each node (y, z) of W goes to
+/// (y cos δ − z sin δ, y sin δ + z cos δ) (positive δ raises the field side, y > 0, as
+/// candidates_at(t, δ)); the rotated curve is resampled on W's grid step from its first rotated
+/// node, each node's source point found on W by TOMS 748 to 1e-15 m, with slope tan(θ + δ)
+/// (tan θ = W's slope there) and W's curvature (a rotation keeps it). Only the part of W where the
+/// rotated curve is a graph over y (1 − z' tan δ > 0.05) around the origin is kept.
+/// Precondition: |δ| < 0.5 rad.
+ProfileCurve rolled_wheel_curve(const ProfileCurve& W, double roll);
+
+}  // namespace mh
