@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/roots.hpp"
@@ -80,6 +81,28 @@ inline void sample(const std::vector<Piece>& chain, double step, Profile& p) {
   }
 }
 
+/// A rail head of definition d (construct_rail_head: gauge flank end → crown → field flank end),
+/// sampled every `step` along the profile, measured (measure()) and canted by `cant` [rad].
+inline Profile rail_from_definition(const RailHeadDefinition& d, double step, double noise, double print, double cant,
+                                    std::uint64_t seed, const std::string& source) {
+  const RailHeadConstruction c = construct_rail_head(d);
+  std::vector<Piece> field;
+  for (const RailArc& a : c.arcs) field.push_back({true, a.y0, a.z0, a.y1, a.z1, a.yc, a.zc, a.R});
+  field.push_back({false, c.yt, c.zt, c.y_end, c.z_end});
+  std::vector<Piece> chain;  // gauge flank end → crown → field flank end
+  for (auto it = field.rbegin(); it != field.rend(); ++it)
+    chain.push_back({it->arc, -it->y1, it->z1, -it->y0, it->z0, -it->yc, it->zc, it->R});
+  for (const Piece& f : field) chain.push_back(f);
+  Profile p;
+  p.kind = ProfileKind::Rail;
+  p.format = "constructed";
+  p.source = source;
+  sample(chain, step, p);
+  measure(p, noise, print, seed);
+  if (cant != 0) rotate_towards_track_centre(p, cant);
+  return p;
+}
+
 /// A 60E1 head whose gauge corner (the R13 arc) is an arc of radius `Rc` (3–5 mm: a sharp
 /// corner), R300/R80 as 60E1 (rail_head_definition, construct_rail_head), the 1:20 flanks to
 /// 20 mm below the top, sampled every `step` along the profile, measured as above, then canted
@@ -99,22 +122,18 @@ inline Profile worn_corner_rail(double Rc, double step, double noise, double pri
   RootTolerance tol;
   tol.abs = 1e-12;
   d.y_junction.back() = bracketed_root(flank_miss, lo, hi, flank_miss(lo), flank_miss(hi), tol).x;
-  const RailHeadConstruction c = construct_rail_head(d);
-  std::vector<Piece> field;
-  for (const RailArc& a : c.arcs) field.push_back({true, a.y0, a.z0, a.y1, a.z1, a.yc, a.zc, a.R});
-  field.push_back({false, c.yt, c.zt, c.y_end, c.z_end});
-  std::vector<Piece> chain;  // gauge flank end → crown → field flank end
-  for (auto it = field.rbegin(); it != field.rend(); ++it)
-    chain.push_back({it->arc, -it->y1, it->z1, -it->y0, it->z0, -it->yc, it->zc, it->R});
-  for (const Piece& f : field) chain.push_back(f);
-  Profile p;
-  p.kind = ProfileKind::Rail;
-  p.format = "constructed";
-  p.source = "60E1 with an R" + std::to_string(Rc * 1e3).substr(0, 3) + " gauge corner";
-  sample(chain, step, p);
-  measure(p, noise, print, seed);
-  if (cant != 0) rotate_towards_track_centre(p, cant);
-  return p;
+  return rail_from_definition(d, step, noise, print, cant, seed,
+                              "60E1 with an R" + std::to_string(Rc * 1e3).substr(0, 3) + " gauge corner");
+}
+
+/// A 60E1 head whose crown arc (R300) has radius `R_crown` (80 … 600 mm), the other arcs and the
+/// junction |y| = 10.228 mm as 60E1; measured and canted as worn_corner_rail. The calibration
+/// rails of the length's curvature bound (profiles.md §7 "Crown"), not those of the seeds table.
+inline Profile crown_rail(double R_crown, double step, double noise, double print, double cant, std::uint64_t seed = 7) {
+  RailHeadDefinition d = rail_head_definition("60E1");
+  d.R.front() = R_crown;
+  return rail_from_definition(d, step, noise, print, cant, seed,
+                              "60E1 with an R" + std::to_string(static_cast<int>(R_crown * 1e3 + 0.5)) + " crown");
 }
 
 /// The hollow-worn S1002: the tread worn `depth` deep (radius reduced) between y = y1 and y2 [m]
