@@ -152,7 +152,7 @@ SmoothedProfile smooth_weighted(const Profile& p, double L, const std::vector<do
   const double lambda = std::pow(L / (2 * units::pi), 4);
   SmoothedProfile sp;
   sp.L = L;
-  sp.L_local_min = sp.L_local_max = L;
+  sp.L_local_min = L;
   sp.y = smoothing_spline(s, p.y, w, lambda, &sp.dof);
   sp.z = smoothing_spline(s, p.z, w, lambda);
   double ss = 0, sn = 0;
@@ -215,33 +215,6 @@ SmoothedProfile smooth_profile_to_noise(const Profile& p, double sigma, const No
   for (std::size_t i = 0; i < n; ++i)
     if (kept(i)) c[i] = keep_factor(L);
   SmoothedProfile sp = smooth_weighted(p, L, c, &e, &s);
-  // 1b. Not shorter than the contact's scale needs (header): the local length L c^(−1/4) raised
-  // to L (R / R0)^exponent where the mean |curvature| of the spline at L gives R > R0.
-  double c_min = 1;
-  if (opt.curvature_exponent > 0) {
-    std::vector<double> k(n, 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-      double y1 = 0, y2 = 0, z1 = 0, z2 = 0;
-      sp.y.eval(s[i], &y1, &y2);
-      sp.z.eval(s[i], &z1, &z2);
-      const double t = std::hypot(y1, z1);
-      k[i] = t > 0 ? std::fabs(y1 * z2 - z1 * y2) / (t * t * t) : 0.0;
-    }
-    std::size_t a = 0, b = 0;
-    double sum = 0;
-    bool any = false;
-    for (std::size_t i = 0; i < n; ++i) {
-      while (b < n && s[b] <= s[i] + opt.curvature_window / 2) sum += k[b++];
-      while (s[a] < s[i] - opt.curvature_window / 2) sum -= k[a++];
-      const double R = static_cast<double>(b - a) / std::max(sum, 1e-300);
-      if (kept(i) || !(R > opt.curvature_R0)) continue;
-      const double Lb = std::min(L * std::pow(R / opt.curvature_R0, opt.curvature_exponent), std::max(L, opt.curvature_L_max));
-      c[i] = std::pow(L / Lb, 4);
-      c_min = std::min(c_min, c[i]);
-      any = true;
-    }
-    if (any) sp = smooth_weighted(p, L, c, &e, &s);
-  }
   const double c_max = std::pow(L / opt.L_min, 4);  // the local length L c^(−1/4) stays ≥ L_min
   double from = 0, to = 0;
   bool shortened = false;
@@ -276,7 +249,6 @@ SmoothedProfile smooth_profile_to_noise(const Profile& p, double sigma, const No
   for (std::size_t i = 0; i < n; ++i)
     if (!kept(i)) c_max_local = std::max(c_max_local, c[i]);
   sp.L_local_min = Ls * std::pow(c_max_local, -0.25);
-  sp.L_local_max = Ls * std::pow(c_min, -0.25);
   sp.local_from = shortened ? from : 0;
   sp.local_to = shortened ? to : 0;
   return sp;

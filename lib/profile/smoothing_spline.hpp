@@ -62,7 +62,6 @@ struct SmoothedProfile {
   double sigma = 0;
   bool at_bound = false;
   double L_local_min = 0;
-  double L_local_max = 0;  ///< [m] the longest local length (the curvature floor; L where none)
   double local_from = 0, local_to = 0;  ///< [m] y range of the shortened regions (both 0: none)
 };
 SmoothedProfile smooth_profile(const Profile& p, double L);
@@ -89,15 +88,6 @@ struct NoiseSmoothingOptions {
   /// length is halved there, up to `local_steps` times (defaults 2 and 5).
   double local_factor = 2.0;
   int local_steps = 5;
-  /// The contact's scale (profiles.md §7 "Crown"): the noise law above holds for the tread
-  /// contact it was measured on; a wide patch on a flatter profile needs a longer length for the
-  /// same pressure error. Where the profile's mean |curvature| over ±curvature_window/2 (of the
-  /// spline at the noise length) gives a radius R above curvature_R0, the local length is at least
-  /// L (R / curvature_R0)^curvature_exponent, at most curvature_L_max. Exponent 0: off.
-  double curvature_R0 = 0.1;          ///< [m] (default 100 mm)
-  double curvature_exponent = 0.0;    ///< [1] (default 0)
-  double curvature_window = 10e-3;    ///< [m] (default 10 mm)
-  double curvature_L_max = 10e-3;     ///< [m] (default 10 mm)
   /// Every length of the result multiplied by this once chosen: the global L and, with the same
   /// local weights, the shortened regions' lengths (default 1). The uncertainty band of a case
   /// (profiles.md §7 "Uncertainty band") solves again at 0.5 and 2. smooth_for_contact applies

@@ -489,23 +489,3 @@ TEST_CASE("measurement (not a check): the length a crown's tread contact needs, 
       }
   }
 }
-
-TEST_CASE("curvature floor of the noise length: raised on a flat crown, off by default", "[smoothing]") {
-  // NoiseSmoothingOptions::curvature_exponent (smoothing_spline.hpp): where the spline's mean
-  // |curvature| over ±5 mm gives a radius above curvature_R0, the local length is raised to
-  // L (R / R0)^exponent (at most curvature_L_max). Reference: the construction itself. On the R600
-  // crown rail (±1 µm, 0.001 mm) with R0 100 mm and exponent 1 the crown's local length reaches
-  // the 10 mm cap (R/R0 ≈ 6 × L ≈ 1.4 mm); off (the default), no local length exceeds L.
-  const mh::Profile p = mh::testing::crown_rail(600e-3, 0.4e-3, 1e-6, 1e-6, 0.0, 19);
-  const mh::ProfileCurve c(p, {});
-  REQUIRE(c.noise().measured);
-  const mh::SmoothedProfile off = mh::smooth_profile_to_noise(p, c.noise().sigma);
-  CHECK(off.L_local_max == off.L);
-  mh::NoiseSmoothingOptions o;
-  o.curvature_exponent = 1;
-  const mh::SmoothedProfile on = mh::smooth_profile_to_noise(p, c.noise().sigma, o);
-  INFO("L " << on.L * 1e3 << " mm, longest local " << on.L_local_max * 1e3 << " mm");
-  CHECK(on.L == off.L);
-  CHECK(on.L_local_max > 3 * on.L);
-  CHECK(on.L_local_max <= o.curvature_L_max * (1 + 1e-12));
-}
