@@ -52,6 +52,11 @@ struct RunOptions {
   /// DIR/shard.json describing the slice. `mhcontact merge` joins the shard directories into
   /// exactly the tables one run would have written. Default 1/1 (no sharding, no shard.json).
   unsigned shard_index = 1, shard_count = 1;
+  /// A batch manifest's shards slice the list of every pair's cases (pair after pair) instead of
+  /// the pairs, so that one pair's cases can be spread over shards (--shard-by cases; a fleet of
+  /// few pairs on more workers, or pairs of unequal cost). A case file's shards always slice its
+  /// cases. Default no (slices of pairs).
+  bool shard_by_cases = false;
   /// Strip method: also write DIR/strips.csv (one row per loaded strip). Default no.
   bool strips = false;
   /// Write pressure.csv even when its estimated size is above kPressureLimitBytes (--force).
