@@ -39,7 +39,11 @@ struct RunOptions {
   unsigned threads = 0;         ///< worker threads; 0 = all cores (default)
   bool quiet = false;           ///< no summary or progress on `err`
   bool progress = false;        ///< progress display on `err` (the CLI sets it when err is a terminal)
-  std::size_t chunk = 8192;     ///< cases solved per parallel batch (default 8192)
+  /// Cases solved per parallel batch; 0 (default): 1024 a thread, at least 2048. A batch's
+  /// formatted rows are held until written (about 2 kB a case with results.json), twice with
+  /// more than one thread (one batch solved while the other is written): a process's working set,
+  /// which every shard's process maps afresh.
+  std::size_t chunk = 0;
   /// N > 0: also write DIR/pressure.csv, the pressure of every loaded ellipse on an N × N grid
   /// over its patch (x along the rolling direction, y lateral in the contact plane), with friction
   /// also the tangential traction there (docs/outputs.md "pressure.csv"). Default 0.
