@@ -420,7 +420,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
             const std::size_t past = split_object(d.text, p + 4, 6, &pm, d.path);
             if (pm.empty() || pm.front().key != "pair" || pm.back().key != "cases")
               bad_results(d.path, p, "a pair record must start with \"pair\" and end with \"cases\"");
-            const bool continued = pair_cases && open_pair && pm.size() == 2 && pm.front().value == open_pair_number;
+            const bool continued = pair_cases && open_pair && have == 0 && pm.size() == 2 && pm.front().value == open_pair_number;
             if (!continued) {
               if (pm.size() == 2)
                 bad_results(d.path, p, "it continues pair " + std::string(pm.front().value) + ", which the shard before does not end with");
