@@ -67,8 +67,24 @@ void bind_fleet(py::module_& m, py::object input_error) {
         return py::make_tuple(units.first, units.second);
       }, py::arg("path"),
       "(unit, count): a manifest's pairs (\"pair\") or a case file's cases (\"case\"), the units a shard slices.");
+  m.def("_fleet_plan", [input_error](const std::string& path) {
+        struct Plan { std::string unit; std::uint64_t units = 0, cases = 0; std::string method; };
+        const Plan p = guarded(input_error, [&] {
+          const nlohmann::json j = mh::read_json_file(path);
+          if (mh::is_manifest(j)) {
+            const mh::Manifest m = mh::parse_manifest(j, path);
+            const mh::CaseFile shared = mh::pair_case(m, 0);
+            return Plan{"pair", m.pairs.size(), m.pairs.size() * shared.case_count(), mh::to_string(shared.method)};
+          }
+          const mh::CaseFile cf = mh::parse_case_json(j, path, true);
+          return Plan{"case", cf.case_count(), cf.case_count(), mh::to_string(cf.method)};
+        });
+        return py::make_tuple(p.unit, p.units, p.cases, p.method);
+      }, py::arg("path"),
+      "(unit, count, cases, method): a manifest's pairs (\"pair\") or a case file's cases (\"case\"), the "
+      "run's cases in all, and its method (as the case file names it): what fleet() cuts into shards.");
   m.def("_run_shard", [input_error](const std::string& path, const std::string& out_dir, unsigned k, unsigned n,
-                                    unsigned threads, int digits) {
+                                    unsigned threads, int digits, bool by_cases) {
         return call_job(input_error, [&](std::ostream& err) {
           mh::RunOptions ro;
           ro.out_dir = out_dir;
@@ -77,13 +93,16 @@ void bind_fleet(py::module_& m, py::object input_error) {
           ro.threads = threads;
           ro.digits = digits;
           ro.quiet = true;
+          ro.shard_by_cases = by_cases;
           std::ostringstream out;
           const nlohmann::json j = mh::read_json_file(path);
           if (mh::is_manifest(j)) return mh::batch_job(mh::parse_manifest(j, path), ro, out, err);
           return mh::run_job(mh::parse_case_json(j, path, true), ro, out, err);
         });
       }, py::arg("path"), py::arg("out_dir"), py::arg("k"), py::arg("n"), py::arg("threads"), py::arg("digits"),
-      "`mhcontact run PATH -o OUT_DIR --shard K/N --threads T --digits D -q`: (exit code, standard error).");
+      py::arg("by_cases") = false,
+      "`mhcontact run PATH -o OUT_DIR --shard K/N --threads T --digits D -q` (by_cases: --shard-by cases): "
+      "(exit code, standard error).");
   m.def("_merge", [input_error](const std::vector<std::string>& dirs, const std::string& out_dir) {
         return call_job(input_error, [&](std::ostream& err) { return mh::merge_job(dirs, out_dir, err, true); });
       }, py::arg("dirs"), py::arg("out_dir"), "`mhcontact merge DIRS -o OUT_DIR -q`: (exit code, standard error).");

@@ -7,7 +7,9 @@ again; the merged files compared with the local run's byte for byte. Wall times.
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/bench_dask.py [tY step mm, default 0.01] [method]
 
-THREADS=T sets fleet()'s threads (each shard's threads; default 1). Besides the wall times it
+THREADS=T sets fleet()'s threads (each shard's threads; default 1); SPLIT=pairs cuts the fleet
+into one shard per pair (as before --shard-by cases), SPLIT=cases SHARDS=S into S slices of the
+cases; default fleet()'s own plan (plan_shards). Besides the wall times it
 prints the CPU time (user + sys) of the local runs and of the route (the workers' processes and
 this one, the client's merge included), which other jobs on a shared machine stretch less.
 """
@@ -68,7 +70,9 @@ def main():
                 return sum(client.run(lambda: sum(resource.getrusage(resource.RUSAGE_SELF)[:2])).values())
 
             w0, c0, t0 = workers_cpu(), own_cpu(), time.time()
-            res = mhcontact.fleet(case, client, os.path.join(tmp, "dask"), threads=int(os.environ.get("THREADS", "1")))
+            shards = int(os.environ["SHARDS"]) if os.environ.get("SHARDS") else None
+            res = mhcontact.fleet(case, client, os.path.join(tmp, "dask"), threads=int(os.environ.get("THREADS", "1")),
+                                  shards=shards, split=os.environ.get("SPLIT") or None)
             t_dask = time.time() - t0
             cpu_client = own_cpu() - c0
             cpu_workers = workers_cpu() - w0
@@ -83,7 +87,7 @@ def main():
         mean_local = (t_local1 + t_local2) / 2
         print(f"{method}, {cases} cases, {ncores} cores: local {t_local1:.2f} s and {t_local2:.2f} s "
               f"({1e6 * mean_local / cases:.1f} us a case); Dask {t_dask:.2f} s ({1e6 * t_dask / cases:.1f} us a case, "
-              f"{res['shards']} shards): {100 * (t_dask / mean_local - 1):+.1f} % over the mean local; the same bytes; "
+              f"{res['shards']} shards, split {os.environ.get('SPLIT') or 'planned'}): {100 * (t_dask / mean_local - 1):+.1f} % over the mean local; the same bytes; "
               f"CPU s: local {cpu_local[0]:.2f} and {cpu_local[1]:.2f}, Dask workers {cpu_workers:.2f} + client {cpu_client:.2f} "
               f"({100 * ((cpu_workers + cpu_client) / (sum(cpu_local) / 2) - 1):+.1f} %)")
     finally:

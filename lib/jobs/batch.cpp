@@ -1,11 +1,13 @@
 #include "jobs/batch.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
 #include <ostream>
 #include <set>
 #include <string>
+#include <utility>
 
 #include "core/errors.hpp"
 #include "core/units.hpp"
@@ -44,9 +46,22 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   if (opt.out_dir == "-") throw InputError("-o", "-", "a batch writes several tables: give an output directory");
   if (opt.strips) throw InputError("--strips", "", "is not available for batch manifests", "run the pair's case file alone");
   const std::uint64_t n_pairs = m.pairs.size();
-  const std::uint64_t first = n_pairs * (opt.shard_index - 1) / opt.shard_count;
-  const std::uint64_t end = n_pairs * opt.shard_index / opt.shard_count;
   const CaseFile shared = pair_case(m, 0);  // validated already: the sweep and the model
+  const std::uint64_t n = shared.case_count();  // cases of every pair (the shared sweep)
+  // The shard's slice: of the pairs (unit "pair"), or with shard_by_cases of the list of every
+  // pair's cases, pair after pair (unit "pair_case": global case g = pair · n + case), so that a
+  // pair's cases can be spread over shards. [pair_first, pair_end): the pairs the slice touches.
+  const bool by_cases = opt.shard_by_cases && opt.shard_count > 1;
+  const std::uint64_t units = by_cases ? n_pairs * n : n_pairs;
+  const std::uint64_t first = units * (opt.shard_index - 1) / opt.shard_count;
+  const std::uint64_t end = units * opt.shard_index / opt.shard_count;
+  const std::uint64_t pair_first = by_cases ? (n ? first / n : 0) : first;
+  const std::uint64_t pair_end = by_cases ? (first == end || !n ? pair_first : (end + n - 1) / n) : end;
+  // The pair's cases [lo, hi) in this shard.
+  auto case_range = [&](std::uint64_t k) {
+    if (!by_cases) return std::pair<std::uint64_t, std::uint64_t>(0, n);
+    return std::pair<std::uint64_t, std::uint64_t>(std::max(first, k * n) - k * n, std::min(end, (k + 1) * n) - k * n);
+  };
   const bool plastic = shared.model == Model::Plastic;
   const Method M = shared.method;
   if (opt.pressure_grid && (M == Method::Strips || M == Method::Auto))
@@ -54,8 +69,10 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
                      "use a single grid method or the multi-Hertzian method");
   const int np = opt.pressure_grid;
   check_pressure_cases(opt, shared.case_count());
-  check_pressure_grid(np, (end - first) * opt.pressure_cases.count_in(0, shared.case_count()), plastic, opt.force,
-                      shared.tangential.enabled());
+  std::uint64_t pressure_count = 0;
+  for (std::uint64_t k = pair_first; k < pair_end; ++k)
+    pressure_count += opt.pressure_cases.count_in(case_range(k).first, case_range(k).second);
+  check_pressure_grid(np, pressure_count, plastic, opt.force, shared.tangential.enabled());
   RunDirectory rd(opt.out_dir);
   std::unique_ptr<OutputFile> fc, fe, fg, fpa, fp, fpp, fj;
   std::unique_ptr<JsonObjectStream> jw;
@@ -92,8 +109,14 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   std::set<std::string> printed;  // (profile source, warning) already printed
   RunOptions quiet_opt = opt;
   quiet_opt.progress = false;
-  for (std::uint64_t k = first; k < end; ++k) {
+  std::uint64_t pairs_here = 0, cases_done = 0;
+  for (std::uint64_t k = pair_first; k < pair_end; ++k) {
     const ManifestPair& P = m.pairs[k];
+    const auto [lo, hi] = case_range(k);
+    // The shard that holds the pair's first case writes the pair's own facts (its pairs.csv row,
+    // geometry, pairs/<k>/, its record's head, the pair counts); a shard that continues the pair
+    // writes its cases only (its record: "pair" and "cases", joined to the head by the merge).
+    const bool head = lo == 0;
     const std::string prefix = std::to_string(k) + ",";
     std::string status = "ok", message;
     std::unique_ptr<PairGeometry> pg;
@@ -105,9 +128,9 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
       status = kInvalidPair;
       message = e.what();
     }
-    const std::uint64_t n = shared.case_count();
-    cases_total += n;
-    if (fpp) {
+    cases_total += hi - lo;
+    if (head) ++pairs_here;
+    if (fpp && head) {
       std::string row = prefix;
       csv_text(row, P.name);
       row += ',';
@@ -125,6 +148,8 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
       jw->element_open();
       pw = std::make_unique<JsonObjectStream>(fj->stream(), 6);
       pw->member("pair", k);
+    }
+    if (pw && head) {
       pw->member("name", P.name);
       pw->member("status", status);
       pw->member("message", message);
@@ -136,7 +161,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     }
     // The load-independent part of the pair's ellipses, once per (t_Y, ellipse), before its cases
     // (geometry.csv; the pair record's "geometry").
-    if (pg && writes_ellipses(M)) {
+    if (pg && head && writes_ellipses(M)) {
       if (pw) pw->begin_array("geometry");
       write_geometry(cf, pg->geo, 0, n, fg ? &fg->stream() : nullptr, prefix, pw.get());
       if (pw) pw->end_array();
@@ -146,24 +171,24 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
       // A profile's warnings once per batch, not once per pair it is in (the same five
       // lines appeared eight times): the reader's warnings of a file, and any pair-level warning
       // with the same text, are printed the first time they occur.
-      if (!opt.quiet)
+      if (!opt.quiet && head)
         for (const Profile* p : {&pg->wheel, &pg->rail})
           for (const auto& w : p->warnings)
             if (printed.insert(p->source + '\n' + w).second) err << "mhcontact: warning: " << p->source << ": " << w << "\n";
-      if (!pg->cant.warnings.empty()) ++cant_warned;
+      if (head && !pg->cant.warnings.empty()) ++cant_warned;
       // Each pair can be inspected on its own: its profiles, CAF and potential
       // ellipses, as `mhcontact geometry` writes them for one pair.
-      write_pair_geometry(cf, *pg, rd, "pairs/" + std::to_string(k) + "/", opt.out_dir);
+      if (head) write_pair_geometry(cf, *pg, rd, "pairs/" + std::to_string(k) + "/", opt.out_dir);
       Sinks sinks{fc ? &fc->stream() : nullptr, fe ? &fe->stream() : nullptr, fpa ? &fpa->stream() : nullptr,
                   fp ? &fp->stream() : nullptr, nullptr, pw.get(), prefix, "results.json", {}};
       for (OutputFile* f : {fc.get(), fe.get(), fpa.get(), fp.get(), fj.get()})
         if (f) sinks.files.push_back(f);
-      solve_cases(cf, pg->geo, 0, n, quiet_opt, sinks, &counts, err, {pg->band_half.get(), pg->band_double.get()});
+      solve_cases(cf, pg->geo, lo, hi, quiet_opt, sinks, &counts, err, {pg->band_half.get(), pg->band_double.get()});
     } else {
-      ++invalid;
-      by_status[kInvalidPair] += n;
-      counts.failed += n;  // counted as a single run counts its cases that are not ok
-      for (std::uint64_t i = 0; i < n; ++i) {
+      if (head) ++invalid;
+      by_status[kInvalidPair] += hi - lo;
+      counts.failed += hi - lo;  // counted as a single run counts its cases that are not ok
+      for (std::uint64_t i = lo; i < hi; ++i) {
         CaseResult r;
         r.message = message;
         r.dz = r.approach = r.residual = r.Fz = r.Fy = r.pmax = r.area = NAN;
@@ -179,14 +204,14 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
       pw->end();
     }
     if (opt.progress && !opt.quiet) {
-      const std::uint64_t n_per = shared.case_count();
-      err << "\r" << progress_line((k + 1 - first) * n_per, (end - first) * n_per,
+      cases_done += hi - lo;
+      err << "\r" << progress_line(cases_done, by_cases ? end - first : (end - first) * n,
                                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count())
           << std::flush;
     }
   }
   const std::uint64_t failed = counts.failed;  // cases not ok, invalid pairs' cases included
-  const nlohmann::json summary = {{"pairs", end - first}, {"invalid_pairs", invalid}, {"cases", cases_total},
+  const nlohmann::json summary = {{"pairs", pairs_here}, {"invalid_pairs", invalid}, {"cases", cases_total},
                                   {"failed", failed}, {"by_status", by_status},
                                   {"cases_with_warnings", counts.with_warnings}, {"warnings", counts.warnings},
                                   {"pairs_with_cant_warnings", cant_warned}};
@@ -206,7 +231,8 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   if (fj) fj->commit();
   if (opt.shard_count > 1) {
     nlohmann::json sh = {{"schema", "mhcontact.shard/1"}, {"index", opt.shard_index}, {"count", opt.shard_count},
-                         {"unit", "pair"}, {"first", first}, {"end", end}, {"total", n_pairs}, {"summary", summary},
+                         {"unit", by_cases ? "pair_case" : "pair"}, {"first", first}, {"end", end}, {"total", units},
+                         {"cases_per_pair", n}, {"summary", summary},
                          {"csv", opt.csv}, {"json", opt.json}, {"pressure", np > 0}, {"digits", opt.digits},
                          {"inputs", {{"manifest", m.path}, {"common", m.common}, {"pairs", n_pairs}}}};
     OutputFile f(rd.path("shard.json"));
@@ -217,7 +243,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!opt.quiet) {
     if (opt.progress) err << "\n";
-    err << "mhcontact run: " << (end - first) << " pairs (" << invalid << " invalid), " << cases_total << " cases";
+    err << "mhcontact run: " << pairs_here << " pairs (" << invalid << " invalid), " << cases_total << " cases";
     for (const auto& [s, v] : by_status) err << ", " << s << " " << v;
     for (const auto& [k, v] : counts.warnings) err << ", " << v << " with " << k;
     if (cant_warned) err << ", " << cant_warned << " pairs with cant warnings";

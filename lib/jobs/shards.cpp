@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -202,7 +203,17 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     expect = m["end"].get<std::uint64_t>();
   }
   if (expect != shards[0].meta["total"].get<std::uint64_t>()) throw InputError("merge", "", "the shards do not cover every case (or pair)");
-  const bool batch = shards[0].meta["unit"] == "pair";
+  // A manifest's shards: slices of its pairs ("pair"), or of every pair's cases ("pair_case":
+  // a pair's cases may be spread over consecutive shards, and its record joined back).
+  const bool batch = shards[0].meta["unit"] == "pair" || shards[0].meta["unit"] == "pair_case";
+  const bool pair_cases = shards[0].meta["unit"] == "pair_case";
+  std::uint64_t per_pair = 0;
+  if (pair_cases) {
+    per_pair = uint_field(shards[0].meta, "cases_per_pair", shards[0].dir + "/shard.json", 1, UINT64_MAX);
+    for (const auto& sh : shards)
+      if (sh.meta.value("cases_per_pair", nlohmann::json()) != shards[0].meta["cases_per_pair"])
+        throw InputError(sh.dir + "/shard.json", "", "shards of different runs (cases per pair differ)");
+  }
   RunDirectory rd(out_dir);
   // Summary of all shards: counts added up, by_status merged; `cases` and `pairs` are totals
   // of the whole run for unsharded-equal output (run: cases = total).
@@ -346,6 +357,17 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     OutputFile f(rd.path("results.json"));
     JsonObjectStream w(f.stream());
     std::string schema;
+    // A batch's pair record is left open after its "cases" until the next record shows whether
+    // it continues the pair (pair_case shards: a record of "pair" and "cases" only, whose cases
+    // are appended) or starts another.
+    std::unique_ptr<JsonObjectStream> open_pair;
+    std::string open_pair_number;
+    auto close_pair = [&]() {
+      if (!open_pair) return;
+      open_pair->end_array();
+      open_pair->end();
+      open_pair.reset();
+    };
     for (unsigned k = 0; k < N; ++k) {
       // One pass over each shard's text (mapped whole): the members before the records, the
       // records (counted as they are split), the members after them.
@@ -371,7 +393,11 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
       const std::string head = "\n  \"" + key + "\": ";
       if (!text_at(d.text, p, head)) bad_results(d.path, p, "no \"" + key + "\" array");
       const std::size_t at = p;
-      const std::uint64_t want = shards[k].meta["end"].get<std::uint64_t>() - shards[k].meta["first"].get<std::uint64_t>();
+      const std::uint64_t s_first = shards[k].meta["first"].get<std::uint64_t>(), s_end = shards[k].meta["end"].get<std::uint64_t>();
+      // The records the shard holds: its cases, its pairs, or the pairs its cases touch.
+      const std::uint64_t want = !pair_cases ? s_end - s_first
+                                 : s_first == s_end ? 0
+                                                    : (s_end + per_pair - 1) / per_pair - s_first / per_pair;
       std::uint64_t have = 0;
       if (!batch) {
         // A case record is one line: the records are counted by their lines and copied in one piece.
@@ -392,13 +418,24 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
             if (!text_at(d.text, p, "    {")) bad_results(d.path, p, "a pair record expected at indentation 4");
             std::vector<JsonMember> pm;
             const std::size_t past = split_object(d.text, p + 4, 6, &pm, d.path);
-            w.element_open();
-            JsonObjectStream pw(f.stream(), 6);
-            for (const auto& m : pm) {
-              if (m.key == "inputs") write_inputs_rebased(pw, m.value, shards[k].dir, out_dir, d.path);
-              else member_copied(pw, f, d.file, m.key, m.value);
+            if (pm.empty() || pm.front().key != "pair" || pm.back().key != "cases")
+              bad_results(d.path, p, "a pair record must start with \"pair\" and end with \"cases\"");
+            const bool continued = pair_cases && open_pair && have == 0 && pm.size() == 2 && pm.front().value == open_pair_number;
+            if (!continued) {
+              if (pm.size() == 2)
+                bad_results(d.path, p, "it continues pair " + std::string(pm.front().value) + ", which the shard before does not end with");
+              close_pair();
+              w.element_open();
+              open_pair = std::make_unique<JsonObjectStream>(f.stream(), 6);
+              open_pair_number = std::string(pm.front().value);
+              for (std::size_t i = 0; i + 1 < pm.size(); ++i) {
+                const JsonMember& m = pm[i];
+                if (m.key == "inputs") write_inputs_rebased(*open_pair, m.value, shards[k].dir, out_dir, d.path);
+                else member_copied(*open_pair, f, d.file, m.key, m.value);
+              }
+              open_pair->begin_array("cases");
             }
-            pw.end();
+            elements_copied(*open_pair, f, d.file, array_records(pm.back().value, 6, d.path, "cases"));
             ++have;
             if (text_at(d.text, past, ",\n")) {
               p = past + 2;
@@ -423,6 +460,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
         bad_results(d.path, at, "it holds " + std::to_string(have) + " " + key + ", its shard.json " + std::to_string(want));
       f.start_writeback();
     }
+    close_pair();
     w.end_array();
     w.member("summary", summary);
     w.end();

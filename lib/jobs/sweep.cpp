@@ -391,7 +391,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   const std::uint64_t n = end - first;
   if (n == 0) return;
   const unsigned threads = std::max(1u, opt.threads ? opt.threads : std::thread::hardware_concurrency());
-  const std::size_t chunk = std::max<std::size_t>(opt.chunk, 1);
+  const std::size_t chunk = opt.chunk ? opt.chunk : std::max<std::size_t>(2048, std::size_t{1024} * threads);
   const unsigned nt = static_cast<unsigned>(std::min<std::uint64_t>(threads, std::min<std::uint64_t>(chunk, n)));
   // Workers take the slices of a chunk from a shared counter, so a worker slowed down (by the
   // writer thread sharing its core, or by an expensive case) does not leave the others waiting
@@ -399,8 +399,11 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   // depend on who solved what. Grid-method cases cost 0.2 ms to 1 s each: one case per slice.
   const std::size_t slice = grid_method ? 1 : 256;
   const std::size_t n_slices = (static_cast<std::size_t>(std::min<std::uint64_t>(chunk, n)) + slice - 1) / slice;
+  // Two slots with a writer thread (one filled while the other is written), one without.
+  const int n_slots = nt > 1 ? 2 : 1;
   Slot slots[2];
-  for (Slot& s : slots) {
+  for (int k = 0; k < n_slots; ++k) {
+    Slot& s = slots[k];
     s.blocks.resize(n_slices);
     s.status.resize(static_cast<std::size_t>(std::min<std::uint64_t>(chunk, n)));
     s.warning_kinds.resize(s.status.size());
@@ -418,7 +421,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   const auto t_start = std::chrono::steady_clock::now();
   auto last_shown = t_start - std::chrono::seconds(1);
   int cur = 0;
-  for (std::uint64_t c0 = first; c0 < end; c0 += chunk, cur ^= 1) {
+  for (std::uint64_t c0 = first; c0 < end; c0 += chunk, cur = (cur + 1) % n_slots) {
     Slot& S = slots[cur];
     if (writer) {
       writer->wait_free(&S);

@@ -39,7 +39,11 @@ struct RunOptions {
   unsigned threads = 0;         ///< worker threads; 0 = all cores (default)
   bool quiet = false;           ///< no summary or progress on `err`
   bool progress = false;        ///< progress display on `err` (the CLI sets it when err is a terminal)
-  std::size_t chunk = 8192;     ///< cases solved per parallel batch (default 8192)
+  /// Cases solved per parallel batch; 0 (default): 1024 a thread, at least 2048. A batch's
+  /// formatted rows are held until written (about 2 kB a case with results.json), twice with
+  /// more than one thread (one batch solved while the other is written): a process's working set,
+  /// which every shard's process maps afresh.
+  std::size_t chunk = 0;
   /// N > 0: also write DIR/pressure.csv, the pressure of every loaded ellipse on an N × N grid
   /// over its patch (x along the rolling direction, y lateral in the contact plane), with friction
   /// also the tangential traction there (docs/outputs.md "pressure.csv"). Default 0.
@@ -52,6 +56,11 @@ struct RunOptions {
   /// DIR/shard.json describing the slice. `mhcontact merge` joins the shard directories into
   /// exactly the tables one run would have written. Default 1/1 (no sharding, no shard.json).
   unsigned shard_index = 1, shard_count = 1;
+  /// A batch manifest's shards slice the list of every pair's cases (pair after pair) instead of
+  /// the pairs, so that one pair's cases can be spread over shards (--shard-by cases; a fleet of
+  /// few pairs on more workers, or pairs of unequal cost). A case file's shards always slice its
+  /// cases. Default no (slices of pairs).
+  bool shard_by_cases = false;
   /// Strip method: also write DIR/strips.csv (one row per loaded strip). Default no.
   bool strips = false;
   /// Write pressure.csv even when its estimated size is above kPressureLimitBytes (--force).

@@ -6,8 +6,8 @@
     res = mhcontact.fleet("cases/fleet.json", client, "out/fleet")
     res["tables"]["cases"]["Fz_kN"]                     # the columns of out/fleet/cases.csv
 
-The run is cut into shards as `mhcontact run --shard K/N` cuts it (a manifest: one shard per
-pair; a case file: slices of its cases); each shard is one Dask task that runs the command's
+The run is cut into shards as `mhcontact run --shard K/N` cuts it (slices of the cases; a
+manifest's by default as `--shard-by cases`: slices of every pair's cases, plan_shards()); each shard is one Dask task that runs the command's
 own job in the worker process (lib/jobs, through mhcontact._core) into OUT.shards/shardK and,
 unless it shares the client's file system (it finds the client's token file there), sends its
 files back for the client to write there; the client joins them with the command's merge. OUT then holds byte for byte what `mhcontact run` writes.
@@ -23,12 +23,13 @@ import numpy as _np
 from . import _core
 
 
-def _shard_task(path, shard_dir, k, n, threads, digits, token=None):
+def _shard_task(path, shard_dir, k, n, threads, digits, token=None, by_cases=False):
     """One shard on a worker: run it, return (k, exit code, standard error, {file: bytes}), or
     with files None when the worker shares the client's file system (it finds the client's
     `token` file beside shard_dir, so what it wrote is already where the client looks: nothing
-    is sent back)."""
-    rc, err = _core._run_shard(path, shard_dir, k, n, threads, digits)
+    is sent back). by_cases: a manifest's shard is a slice of every pair's cases (--shard-by
+    cases), not of its pairs."""
+    rc, err = _core._run_shard(path, shard_dir, k, n, threads, digits, by_cases)
     if token is not None:
         try:
             with open(token[0], "rb") as f:
@@ -115,26 +116,58 @@ class _Tables(_abc.Mapping):
         return len(self._names)
 
 
-def fleet(path, client=None, out_dir=None, shards=None, threads=1, digits=10):
+def _worker_slots(client):
+    """The tasks a Dask cluster runs at once: its workers' threads (1 without a client)."""
+    if client is None:
+        return 1
+    return max(1, sum(w.get("nthreads", 1) for w in client.scheduler_info()["workers"].values()))
+
+
+def plan_shards(unit, units, cases, method, slots):
+    """(shards, by_cases): how fleet() cuts a run for `slots` tasks at once. Every shard is a
+    slice of the cases (a manifest's: of every pair's cases, pair after pair), so shards of one
+    run hold equal case counts whatever the pairs. The multi-Hertzian method costs about the
+    same per case on every pair (tens of µs): one shard per slot, and the slots finish together
+    with the least fixed cost (each shard reads its profiles and builds its pairs' geometry). The
+    grid methods (milliseconds a case, and pairs that differ several-fold in cost): four shards a
+    slot, handed out as slots free up, so that a slot ends at most about a quarter of its share
+    after the others. At most one shard a case."""
+    if unit == "case":
+        # A case file: slices of its cases, as before (four a slot).
+        return max(1, min(units, 4 * slots)), False
+    per_slot = 1 if method == "multi-hertzian" else 4
+    return max(1, min(cases, per_slot * slots)), True
+
+
+def fleet(path, client=None, out_dir=None, shards=None, threads=1, digits=10, split=None):
     """Run a case file or batch manifest `path` as shards on the Dask `client` (None: one after
     the other in this process) and merge them into `out_dir` (required). `shards`: how many
     (default: one per pair of a manifest; a case file: four per worker, at most its case count);
     `threads`: worker threads of each shard (default 1: Dask runs one task per worker thread);
     `digits`: significant digits of the tables (0: shortest round-trip, as --digits max).
+    `split` (a manifest): "cases" slices every pair's cases (a pair may be spread over shards,
+    joined back by the merge), "pairs" gives each shard whole pairs; default: "cases" with the
+    shard count of plan_shards() (docs/cluster.md), "pairs" with one shard per pair when
+    `shards` is given without `split`.
     Returns {"out_dir", "exit_code" (merge's: 0 every case ok, 1 some not), "shards",
     "tables" (read_tables(out_dir), each table read when first used)}. Bad input raises mhcontact.InputError with the command's
     message; a failed task raises its exception."""
     if out_dir is None:
         raise ValueError("out_dir: give the output directory of the merged run")
     path, out_dir = _os.path.abspath(path), _os.path.abspath(str(out_dir).rstrip("/"))
-    unit, count = _core._fleet_units(path)
-    if shards is None:
-        if unit == "pair":
+    unit, count, cases, method = _core._fleet_plan(path)
+    if split not in (None, "cases", "pairs"):
+        raise ValueError("split: \"cases\" or \"pairs\", not %r" % (split,))
+    by_cases = False
+    if unit == "pair":
+        if split == "cases" or (split is None and shards is None):
+            planned, by_cases = plan_shards(unit, count, cases, method, _worker_slots(client))
+            shards = planned if shards is None else shards
+        elif shards is None:
             shards = count
-        else:
-            workers = len(client.scheduler_info()["workers"]) if client is not None else 1
-            shards = min(count, 4 * max(1, workers))
-    shards = max(1, min(int(shards), max(1, count), 100000))
+    elif shards is None:
+        shards = plan_shards(unit, count, cases, method, _worker_slots(client))[0]
+    shards = max(1, min(int(shards), max(1, cases if by_cases else count), 100000))
     if shards == 1:  # no slices: one run straight into out_dir
         if client is None:
             k, rc, err, files = _shard_task(path, out_dir, 1, 1, threads, digits)
@@ -146,10 +179,10 @@ def fleet(path, client=None, out_dir=None, shards=None, threads=1, digits=10):
         return {"out_dir": out_dir, "exit_code": rc, "shards": 1, "tables": _Tables(out_dir)}
     dirs = [_os.path.join(out_dir + ".shards", "shard%d" % k) for k in range(1, shards + 1)]
     if client is None:
-        results = [_shard_task(path, dirs[k - 1], k, shards, threads, digits) for k in range(1, shards + 1)]
+        results = [_shard_task(path, dirs[k - 1], k, shards, threads, digits, None, by_cases) for k in range(1, shards + 1)]
     else:
         with _Token(out_dir + ".shards") as token:
-            futures = [client.submit(_shard_task, path, dirs[k - 1], k, shards, threads, digits, token.value, pure=False,
+            futures = [client.submit(_shard_task, path, dirs[k - 1], k, shards, threads, digits, token.value, by_cases, pure=False,
                                      key="mhcontact-shard-%d-of-%d-%s" % (k, shards, _os.urandom(4).hex()))
                        for k in range(1, shards + 1)]
             results = client.gather(futures)

@@ -52,12 +52,37 @@ def same_tables(t, u):
 def test_fleet_on_dask_equals_the_command(client, tmp_path):
     rc = command_run(FLEET, str(tmp_path / "single"))
     res = mhcontact.fleet(FLEET, client, tmp_path / "dask")
-    assert res["shards"] == 4 and res["exit_code"] == rc  # one shard per pair
+    # multi-Hertzian on 2 worker slots: one slice of the cases per slot (plan_shards)
+    assert res["shards"] == 2 and res["exit_code"] == rc
     names = same_files(str(tmp_path / "single"), res["out_dir"])
     assert "cases.csv" in names and "pairs/3/geometry.json" in names
     same_tables(res["tables"], mhcontact.read_tables(str(tmp_path / "single")))
     cases = res["tables"]["cases"]
     assert len(cases["Fz_kN"]) == 4 * 33 * 3 and set(cases["pair"]) == {0, 1, 2, 3}
+
+
+def test_fleet_pairs_cut_across_shards(client, tmp_path):
+    # 3 slices of the 396 cases of 4 pairs (132 each: pairs 1 and 2 each cut between two shards),
+    # and one shard per whole pair as before (split="pairs"): both the command's bytes.
+    command_run(FLEET, str(tmp_path / "single"))
+    res = mhcontact.fleet(FLEET, client, tmp_path / "cut", shards=3, split="cases")
+    assert res["shards"] == 3
+    assert '"unit": "pair_case"' in open(os.path.join(res["out_dir"] + ".shards", "shard2", "shard.json")).read()
+    same_files(str(tmp_path / "single"), res["out_dir"])
+    res = mhcontact.fleet(FLEET, client, tmp_path / "pairs", split="pairs")
+    assert res["shards"] == 4
+    same_files(str(tmp_path / "single"), res["out_dir"])
+
+
+def test_plan_shards():
+    # A manifest: by cases; multi-Hertzian one shard a slot, grid methods four; never more
+    # shards than cases. A case file: four a slot, as before.
+    from mhcontact.fleet import plan_shards
+    assert plan_shards("pair", 4, 96012, "multi-hertzian", 2) == (2, True)
+    assert plan_shards("pair", 4, 396, "strips", 2) == (8, True)
+    assert plan_shards("pair", 4, 396, "half-space", 8) == (32, True)
+    assert plan_shards("pair", 1, 3, "strips", 2) == (3, True)
+    assert plan_shards("case", 99, 99, "multi-hertzian", 2) == (8, False)
 
 
 def test_sweep_on_dask_in_slices_of_cases(client, tmp_path):

@@ -155,6 +155,9 @@ if command -v parallel >/dev/null && parallel --version 2>/dev/null | grep -q "G
   ./build/mhcontact merge out/par.shards/shard* -o out/par
   cmp out/par/cases.csv out/manchester/cases.csv
 fi
+for k in 1 2 3; do ./build/mhcontact run cases/fleet.json -o out/fc.shards/shard$k --shard $k/3 --shard-by cases -q; done
+./build/mhcontact merge out/fc.shards/shard* -o out/fc
+cmp out/fc/results.json out/fleet/results.json
 
 # --- docs/cluster.md, "A resumable fleet" (the Slurm lines are run by tests/cluster/slurm.sh on a
 # private Slurm, the Dask example by python/tests/test_fleet_dask.py) --------------------------------

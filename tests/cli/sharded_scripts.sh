@@ -11,6 +11,12 @@ for f in cases.csv ellipses.csv geometry.csv results.json; do cmp "$tmp/full/$f"
 for k in 1 2 3; do SLURM_ARRAY_TASK_ID=$k bash "$src/scripts/slurm_array.sh" "$src/cases/s1002-60e1.json" "$tmp/slurm" 3; done
 "$bin" merge "$tmp"/slurm.shards/shard* -o "$tmp/slurm" -q
 for f in cases.csv ellipses.csv geometry.csv results.json; do cmp "$tmp/full/$f" "$tmp/slurm/$f"; done
+# A manifest's pairs cut across tasks (--shard-by cases after N): 3 tasks of 132 of its 396 cases.
+"$bin" run "$src/cases/fleet.json" -o "$tmp/fleetfull" -q
+for k in 1 2 3; do SLURM_ARRAY_TASK_ID=$k bash "$src/scripts/slurm_array.sh" "$src/cases/fleet.json" "$tmp/fleet" 3 --shard-by cases; done
+grep -q '"unit": "pair_case"' "$tmp/fleet.shards/shard2/shard.json"
+"$bin" merge "$tmp"/fleet.shards/shard* -o "$tmp/fleet" -q
+for f in cases.csv ellipses.csv geometry.csv pairs.csv results.json; do cmp "$tmp/fleetfull/$f" "$tmp/fleet/$f"; done
 echo "sharded_scripts: OK"
 # The README's GNU parallel form, when GNU parallel is installed (it is not a dependency).
 if command -v parallel >/dev/null && parallel --version 2>/dev/null | grep -q "GNU parallel"; then
