@@ -49,6 +49,26 @@ Solved solve_fastsim(const Creepages& c) {
   return s;
 }
 
+// The exact steady-rolling solver at creepages c on the Hertzian pressure of grid H, and the
+// peaks below that pressure carrying its traction on the rail (the reverse of the wheel's).
+struct Exact {
+  HalfSpaceTangentialResult e;
+  SubsurfacePeaks R;
+};
+Exact exact_traction_peaks(const HertzGrid& H, const Creepages& c) {
+  HalfSpaceTangentialSolver solver(H.nx, H.ny, H.dx, H.dy, G, nu);
+  Exact out;
+  out.e = solver.solve(H.p.data(), H.x0, H.y0, c, mu);
+  REQUIRE(out.e.status == TangentialStatus::Ok);
+  GridLoad X;
+  X.nx = H.nx, X.ny = H.ny, X.dx = H.dx, X.dy = H.dy, X.x0 = H.x0, X.y0 = H.y0, X.nu = nu, X.p = H.p;
+  X.qx = solver.px(), X.qy = solver.py();
+  for (double& q : X.qx) q = -q;
+  for (double& q : X.qy) q = -q;
+  out.R = grid_subsurface_peaks(X);
+  return out;
+}
+
 RcfOptions options() {
   RcfOptions o;
   o.actual = true, o.subsurface = true, o.nu = nu;
@@ -107,15 +127,9 @@ TEST_CASE("Ellipse stresses with FASTSIM's traction: partial slip against the ex
   REQUIRE(S.source == ContactStressSource::HertzEllipseFastsim);
   // The exact solver on the Hertzian pressure of a 40 × 40 grid over 1.1 × the ellipse.
   const HertzGrid H(a, b, p0, 40, 40, 1.1);
-  HalfSpaceTangentialSolver solver(H.nx, H.ny, H.dx, H.dy, G, nu);
-  const HalfSpaceTangentialResult e = solver.solve(H.p.data(), H.x0, H.y0, c, mu);
-  REQUIRE(e.status == TangentialStatus::Ok);
-  GridLoad X;
-  X.nx = H.nx, X.ny = H.ny, X.dx = H.dx, X.dy = H.dy, X.x0 = H.x0, X.y0 = H.y0, X.nu = nu, X.p = H.p;
-  X.qx = solver.px(), X.qy = solver.py();
-  for (double& q : X.qx) q = -q;  // on the rail
-  for (double& q : X.qy) q = -q;
-  const SubsurfacePeaks R = grid_subsurface_peaks(X);
+  const Exact ex = exact_traction_peaks(H, c);
+  const HalfSpaceTangentialResult& e = ex.e;
+  const SubsurfacePeaks& R = ex.R;
   const SubsurfacePeaks& P = S.peaks;
   // Without the cells the row keeps full slip f = |F|/N along the force (hertz_ellipse).
   const ContactStresses F = row_stresses(s, false);
@@ -163,15 +177,9 @@ TEST_CASE("Ellipse stresses with FASTSIM's traction: a spinning flange contact a
   REQUIRE(S.source == ContactStressSource::HertzEllipseFastsim);
   const ContactStresses F = contact_stresses(options(), Nf, af, bf, t, f);
   const HertzGrid H(af, bf, p0f, 240, 24, 1.05);
-  HalfSpaceTangentialSolver solver(H.nx, H.ny, H.dx, H.dy, G, nu);
-  const HalfSpaceTangentialResult e = solver.solve(H.p.data(), H.x0, H.y0, c, mu);
-  REQUIRE(e.status == TangentialStatus::Ok);
-  GridLoad X;
-  X.nx = H.nx, X.ny = H.ny, X.dx = H.dx, X.dy = H.dy, X.x0 = H.x0, X.y0 = H.y0, X.nu = nu, X.p = H.p;
-  X.qx = solver.px(), X.qy = solver.py();
-  for (double& q : X.qx) q = -q;
-  for (double& q : X.qy) q = -q;
-  const SubsurfacePeaks R = grid_subsurface_peaks(X);
+  const Exact ex = exact_traction_peaks(H, c);
+  const HalfSpaceTangentialResult& e = ex.e;
+  const SubsurfacePeaks& R = ex.R;
   CAPTURE(S.peaks.tau_orth_amp / 1e6, R.tau_orth_amp / 1e6, F.peaks.tau_orth_amp / 1e6);
   CAPTURE(S.peaks.vm_max / 1e6, R.vm_max / 1e6, F.peaks.vm_max / 1e6, S.peaks.tau_eq_amp / 1e6, R.tau_eq_amp / 1e6);
   CHECK(std::fabs(S.peaks.tau_orth_amp - R.tau_orth_amp) <= 0.02 * R.tau_orth_amp);
