@@ -17,7 +17,10 @@ def run(args, interrupt_after=None):
         os.execv(bin, [bin] + args)
     out, t0, sent = b"", time.time(), False
     while True:
-        if interrupt_after is not None and not sent and time.time() - t0 > interrupt_after:
+        # The interrupt once the run has started its sweep (its progress shown), not before: a
+        # slow start (a sanitizer build on a busy machine) must not be interrupted while it is
+        # still reading its inputs, before its output directory has a message to give.
+        if interrupt_after is not None and not sent and time.time() - t0 > interrupt_after and b"cases/s" in out:
             os.kill(pid, signal.SIGINT); sent = True
         r, _, _ = select.select([fd], [], [], 0.1)
         if r:
