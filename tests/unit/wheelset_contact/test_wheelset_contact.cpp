@@ -142,6 +142,44 @@ TEST_CASE("wheelset: each contact is the single-pair call at t_Y = sigma y", "[w
   }
 }
 
+TEST_CASE("wheelset: each wheel judged as the single-pair call, across the flange", "[wheelset_contact]") {
+  // The wheelset judges each wheel once, on the answer its roll search keeps (judge_wheel): the
+  // status and the warnings must be the single-pair call's at the same t_Y, roll and load,
+  // outside_validity included (flange contact near a jump of the contact angle). Broken once:
+  // without judge_wheel every wheel was `ok` with no validity warning, and this test failed.
+  const auto& W = ws_fixture(true);
+  const mh::WheelsetSetup s = s1002_60e1(true);
+  mh::TrackSetup t = s.track;
+  const mh::ContactGeometry G = mh::build_geometry(s.wheel_left, s.rail_left, t, s.geometry);
+  mh::WheelsetWorkspace ws;
+  int outside = 0, compared = 0;
+  for (double y_mm = 3; y_mm <= 9.01; y_mm += 0.25) {
+    mh::WheelsetPose p = loads(y_mm * mm, 60e3);
+    mh::WheelsetResult r;
+    W.step(p, {}, r, ws);
+    for (int sigma : {+1, -1}) {
+      const mh::WheelResult& w = sigma > 0 ? r.left : r.right;
+      if (mh::is_failure(w.r.status)) continue;
+      double tY = 0, delta = 0;
+      W.pair_pose(sigma, p.y, r.roll, &tY, &delta);
+      mh::MethodOptions o = s.method;
+      o.tangential.kin.V = 30;
+      o.tangential.l_origin = 0.75;
+      o.multi_hertzian.roll = delta;
+      o.tangential.kin.roll = delta;
+      const mh::CaseResult c = mh::solve_contact(G, s.material, tY, sigma > 0 ? p.Q_left : p.Q_right, o);
+      INFO("y " << y_mm << " mm, wheel " << sigma);
+      CHECK(c.status == w.r.status);
+      REQUIRE(c.warnings.size() == w.r.warnings.size());
+      for (std::size_t k = 0; k < c.warnings.size(); ++k) CHECK(c.warnings[k].cls == w.r.warnings[k].cls);
+      outside += w.r.status == mh::CaseStatus::OutsideValidity;
+      ++compared;
+    }
+  }
+  CHECK(compared > 30);
+  CHECK(outside > 0);  // the flange's validity verdicts are part of what is compared
+}
+
 TEST_CASE("wheelset: first-contact heights and the solved roll against the rigid wheelset geometry",
           "[wheelset_contact]") {
   // geometry/wheelset.hpp finds each wheel's contact by its own scan of the gap (y towards the
