@@ -13,6 +13,7 @@
 #include "core/units.hpp"
 #include "core/numfmt.hpp"
 #include "jobs/run.hpp"
+#include "jobs/shard_text.hpp"
 #include "output/case_tables.hpp"
 #include "output/cells.hpp"
 #include "output/json_stream.hpp"
@@ -76,6 +77,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   RunDirectory rd(opt.out_dir);
   std::unique_ptr<OutputFile> fc, fe, fg, fpa, fp, fpp, fj;
   std::unique_ptr<JsonObjectStream> jw;
+  std::vector<RecordSpan> json_spans;  // a shard's record arrays in results.json, for the merge
   if (opt.csv) {
     fc = std::make_unique<OutputFile>(rd.path("cases.csv"));
     if (writes_ellipses(M)) {
@@ -97,6 +99,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   if (opt.json) {
     fj = std::make_unique<OutputFile>(rd.path("results.json"));
     jw = std::make_unique<JsonObjectStream>(fj->stream());
+    if (opt.shard_count > 1) jw->record_spans(&json_spans);
     jw->member("schema", kBatchSchema);
     jw->member("program", program_json());
     jw->member("manifest", m.path);
@@ -147,6 +150,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     if (jw) {
       jw->element_open();
       pw = std::make_unique<JsonObjectStream>(fj->stream(), 6);
+      if (opt.shard_count > 1) pw->record_spans(&json_spans);
       pw->member("pair", k);
     }
     if (pw && head) {
@@ -220,6 +224,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
     jw->member("summary", summary);
     jw->end();
   }
+  const nlohmann::json json_layout = fj ? results_layout(fj->stream(), json_spans) : nlohmann::json();
   if (fc) {
     fc->commit();
     if (fe) fe->commit();
@@ -235,6 +240,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
                          {"cases_per_pair", n}, {"summary", summary},
                          {"csv", opt.csv}, {"json", opt.json}, {"pressure", np > 0}, {"digits", opt.digits},
                          {"inputs", {{"manifest", m.path}, {"common", m.common}, {"pairs", n_pairs}}}};
+    if (fj) sh["results_json"] = json_layout;
     OutputFile f(rd.path("shard.json"));
     f.stream() << sh.dump(2) << "\n";
     f.commit();

@@ -9,6 +9,7 @@
 #include "core/units.hpp"
 #include "input/manifest.hpp"
 #include "core/numfmt.hpp"
+#include "jobs/shard_text.hpp"
 #include "output/case_tables.hpp"
 #include "output/cells.hpp"
 #include "output/json_stream.hpp"
@@ -236,8 +237,10 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   }
   std::ostream* js = to_stdout ? &out : (fj ? &fj->stream() : nullptr);
   std::unique_ptr<JsonObjectStream> jw;
+  std::vector<RecordSpan> json_spans;  // a shard's record arrays in results.json, for the merge
   if (js) {
     jw = std::make_unique<JsonObjectStream>(*js);
+    if (fj && opt.shard_count > 1) jw->record_spans(&json_spans);
     jw->member("schema", kResultsSchema);
     jw->member("program", program_json());
     jw->member("inputs", inputs_json(cf, to_stdout ? std::string() : opt.out_dir));
@@ -282,6 +285,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
     jw->member("summary", summary);
     jw->end();
   }
+  const nlohmann::json json_layout = fj ? results_layout(fj->stream(), json_spans) : nlohmann::json();
   if (fc) {
     fc->commit();
     if (fe) fe->commit();
@@ -295,6 +299,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
                          {"summary", [&] { nlohmann::json su = counts.summary_json(n_all); su.update(pair_summary_json(pg)); return su; }()},
                          {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0}, {"digits", opt.digits},
                          {"inputs", inputs_json(cf)}, {"profiles", profiles_json(pg)}};
+    if (fj) sh["results_json"] = json_layout;
     OutputFile f(rd->path("shard.json"));
     f.stream() << sh.dump(2) << "\n";
     f.commit();

@@ -13,6 +13,8 @@
 #include <unistd.h>
 #endif
 
+#include <nlohmann/json.hpp>
+
 #include "core/errors.hpp"
 #include "output/json_stream.hpp"
 #include "output/output_file.hpp"
@@ -76,8 +78,40 @@ void put_verbatim(OutputFile& f, const ShardText& src, std::string_view text) {
                    "give the shard directories as `run --shard` wrote them (re-run that shard)");
 }
 
+nlohmann::json results_layout(std::ostream& o, const std::vector<RecordSpan>& spans) {
+  const auto size = o.tellp();
+  if (size < 0) return nullptr;
+  nlohmann::json s = nlohmann::json::array();
+  for (const auto& r : spans) s.push_back({r.begin, r.end, r.count});
+  return {{"bytes", static_cast<std::uint64_t>(static_cast<std::streamoff>(size))}, {"spans", s}};
+}
+
+SpanSkip span_skip(const nlohmann::json& layout, std::string_view t, const std::string& path) {
+  SpanSkip skip;
+  if (!layout.is_object()) return skip;  // none recorded: the records are read line by line
+  const auto bytes = layout.find("bytes");
+  if (bytes == layout.end() || !bytes->is_number_unsigned()) bad_results(path, 0, "its shard.json's \"results_json\" has no size");
+  if (bytes->get<std::uint64_t>() != t.size())
+    bad_results(path, std::min<std::size_t>(t.size(), bytes->get<std::uint64_t>()),
+                std::to_string(t.size()) + " bytes, its shard.json says " + bytes->dump() + " (cut short or edited)");
+  const auto spans = layout.find("spans");
+  if (spans == layout.end() || !spans->is_array()) bad_results(path, 0, "its shard.json's \"results_json\" has no \"spans\"");
+  std::uint64_t past = 0;
+  for (const auto& s : *spans) {
+    if (!s.is_array() || s.size() != 3 || !s[0].is_number_unsigned() || !s[1].is_number_unsigned() || !s[2].is_number_unsigned())
+      bad_results(path, 0, "its shard.json's record span " + s.dump() + " is not [begin, end, count]");
+    const RecordSpan r{s[0].get<std::uint64_t>(), s[1].get<std::uint64_t>(), s[2].get<std::uint64_t>()};
+    if (r.begin <= past || r.end < r.begin || r.end >= t.size() || r.count == 0 || t[r.begin - 1] != '\n' || t[r.end] != '\n' ||
+        t[r.begin] != ' ')
+      bad_results(path, r.begin, "its shard.json's record span " + s.dump() + " is not an array's records in the document");
+    skip.spans.push_back(r);
+    past = r.end;
+  }
+  return skip;
+}
+
 std::size_t split_members(std::string_view t, std::size_t p, std::size_t pad, std::vector<JsonMember>* out, const std::string& path,
-                          std::string_view stop_at) {
+                          std::string_view stop_at, SpanSkip* skip) {
   const std::string lead = "\n" + std::string(pad, ' '), close = "\n" + std::string(pad - 2, ' ') + "}";
   if (text_at(t, p, close)) return p + close.size();
   for (;;) {
@@ -88,6 +122,13 @@ std::size_t split_members(std::string_view t, std::size_t p, std::size_t pad, st
     if (!stop_at.empty() && key == stop_at) return p;
     const std::size_t v = ke + 3;
     for (std::size_t q = v, lines = 0;; ++q, ++lines) {
+      if (skip && skip->next < skip->spans.size() && skip->spans[skip->next].begin <= q) {
+        // A record array the shard's shard.json spans: jumped over, its records counted.
+        const RecordSpan& r = skip->spans[skip->next++];
+        if (r.begin != q) bad_results(path, r.begin, "its shard.json's record span does not start at a line of the member \"" + key + "\"");
+        q = r.end;
+        lines += r.count - 1;
+      }
       q = t.find('\n', q);
       if (q == std::string_view::npos) bad_results(path, v, "the document ends inside the member \"" + key + "\"");
       if (t[q - 1] == ',' && text_at(t, q, lead + "\"")) {
@@ -104,9 +145,9 @@ std::size_t split_members(std::string_view t, std::size_t p, std::size_t pad, st
 }
 
 std::size_t split_object(std::string_view t, std::size_t open, std::size_t pad, std::vector<JsonMember>* out, const std::string& path,
-                         std::string_view stop_at) {
+                         std::string_view stop_at, SpanSkip* skip) {
   if (open >= t.size() || t[open] != '{') bad_results(path, open, "an object expected");
-  return split_members(t, open + 1, pad, out, path, stop_at);
+  return split_members(t, open + 1, pad, out, path, stop_at, skip);
 }
 
 void member_copied(JsonObjectStream& w, OutputFile& f, const ShardText& src, const std::string& key, std::string_view value) {

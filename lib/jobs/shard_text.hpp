@@ -8,9 +8,12 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
+#include "output/json_stream.hpp"
+
 namespace mh {
 
-class JsonObjectStream;
 class OutputFile;
 
 /// The whole file `path` (InputError naming it when it cannot be read).
@@ -60,6 +63,23 @@ struct JsonMember {
   std::size_t lines = 0;   ///< newlines in value (a streamed array: its records + 1)
 };
 
+/// What a shard's shard.json says of its results.json, written on `o` (its position: the
+/// document's size), for the merge: {"bytes": size, "spans": [[begin, end, count], …]}, the spans
+/// of its arrays of records (JsonObjectStream::record_spans). Null where `o` cannot tell its position.
+nlohmann::json results_layout(std::ostream& o, const std::vector<RecordSpan>& spans);
+
+/// The record arrays a merge copies by their byte range without reading them: split_members
+/// jumps from a span's begin to its end (and counts its records as lines), in order.
+struct SpanSkip {
+  std::vector<RecordSpan> spans;
+  std::size_t next = 0;
+};
+
+/// The SpanSkip of the shard.json member `layout` (results_layout) for the document `t`: checked
+/// against its size (a document cut short or edited refused, naming `path`) and each span against
+/// the text at its ends (a record starts a line, the array's newline follows the last).
+SpanSkip span_skip(const nlohmann::json& layout, std::string_view t, const std::string& path);
+
 /// Does `t` hold `s` at `p`?
 inline bool text_at(std::string_view t, std::size_t p, std::string_view s) { return p <= t.size() && t.substr(p, s.size()) == s; }
 
@@ -69,11 +89,12 @@ inline bool text_at(std::string_view t, std::size_t p, std::string_view s) { ret
 /// The members of the object whose `{` is t[open]; returns the index just past its `}`. With
 /// `stop_at` given, stops at the start of the member of that key (which is not split, nor the
 /// members after it) and returns its index. One pass over the text: a memchr per line.
+/// `skip`: record arrays jumped over (not read), their records counted from it.
 std::size_t split_object(std::string_view t, std::size_t open, std::size_t pad, std::vector<JsonMember>* out, const std::string& path,
-                         std::string_view stop_at = {});
+                         std::string_view stop_at = {}, SpanSkip* skip = nullptr);
 /// The same from t[p], the newline before a member (or before the object's `}`).
 std::size_t split_members(std::string_view t, std::size_t p, std::size_t pad, std::vector<JsonMember>* out, const std::string& path,
-                          std::string_view stop_at = {});
+                          std::string_view stop_at = {}, SpanSkip* skip = nullptr);
 
 /// The records of a streamed array member (`value` of a member at indentation `pad`) as
 /// JsonObjectStream::elements_verbatim takes them; empty for `[]`.

@@ -371,8 +371,12 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     for (unsigned k = 0; k < N; ++k) {
       // One pass over each shard's text (mapped whole): the members before the records, the
       // records (counted as they are split), the members after them.
-      Doc d(shards[k].dir + "/results.json", true);
-      std::size_t p = split_object(d.text, 0, 2, &d.members, d.path, key);
+      // With the record arrays' spans in its shard.json (written by this version), the records are
+      // not read: only the text between them, the spans' ends and the document's size are checked.
+      const nlohmann::json& layout = shards[k].meta.contains("results_json") ? shards[k].meta["results_json"] : nlohmann::json();
+      Doc d(shards[k].dir + "/results.json", !layout.is_object());
+      SpanSkip skip = span_skip(layout, d.text, d.path);
+      std::size_t p = split_object(d.text, 0, 2, &d.members, d.path, key, &skip);
       if (d.members.empty() || d.members.front().key != "schema") bad_results(d.path, 0, "its first member must be \"schema\"");
       if (k == 0) {
         schema = std::string(d.members.front().value);
@@ -402,7 +406,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
       if (!batch) {
         // A case record is one line: the records are counted by their lines and copied in one piece.
         const std::size_t n_before = d.members.size();
-        p = split_members(d.text, p, 2, &d.members, d.path);
+        p = split_members(d.text, p, 2, &d.members, d.path, {}, &skip);
         const JsonMember& cases = d.members[n_before];
         elements_copied(w, f, d.file, array_records(cases.value, 2, d.path, key));
         have = cases.lines > 0 ? cases.lines - 1 : 0;
@@ -417,7 +421,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
           for (p += 2;;) {
             if (!text_at(d.text, p, "    {")) bad_results(d.path, p, "a pair record expected at indentation 4");
             std::vector<JsonMember> pm;
-            const std::size_t past = split_object(d.text, p + 4, 6, &pm, d.path);
+            const std::size_t past = split_object(d.text, p + 4, 6, &pm, d.path, {}, &skip);
             if (pm.empty() || pm.front().key != "pair" || pm.back().key != "cases")
               bad_results(d.path, p, "a pair record must start with \"pair\" and end with \"cases\"");
             const bool continued = pair_cases && open_pair && have == 0 && pm.size() == 2 && pm.front().value == open_pair_number;
@@ -450,8 +454,10 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
         // The members after the records: `,` then the next member's line.
         if (!text_at(d.text, p, ",\n")) bad_results(d.path, p, "its last member must be \"summary\"");
         d.members.push_back({key, {}, 0});  // the records, copied above
-        p = split_members(d.text, p + 1, 2, &d.members, d.path);
+        p = split_members(d.text, p + 1, 2, &d.members, d.path, {}, &skip);
       }
+      if (skip.next != skip.spans.size())
+        bad_results(d.path, skip.spans[skip.next].begin, "its shard.json's record span lies outside the document's record arrays");
       if (d.text.substr(p) != "\n") bad_results(d.path, p, "text after the document's end");
       // The run writes "summary" alone after the records (only the members before them are copied).
       if (d.members.back().key != "summary" || d.members[d.members.size() - 2].key != key)

@@ -35,17 +35,30 @@ void JsonObjectStream::begin_array(const std::string& key) {
   o_ << nlohmann::json(key).dump() << ": [";
   in_array_ = true;
   first_element_ = true;
+  span_open_ = false;
 }
 
 void JsonObjectStream::element(const std::string& formatted_value) {
-  o_ << (first_element_ ? "\n" : ",\n") << pad_ << pad_ << formatted_value;
+  if (first_element_) {
+    o_ << "\n";
+    if (spans_) {
+      const auto at = o_.tellp();
+      span_open_ = at >= 0;
+      span_ = {static_cast<std::uint64_t>(at >= 0 ? static_cast<std::streamoff>(at) : 0), 0, 0};
+    }
+  } else {
+    o_ << ",\n";
+  }
+  o_ << pad_ << pad_ << formatted_value;
   first_element_ = false;
+  ++span_.count;
 }
 
 void JsonObjectStream::element_json(const nlohmann::json& value) { element(value.dump()); }
 void JsonObjectStream::element_json(const nlohmann::ordered_json& value) { element(value.dump()); }
 
 void JsonObjectStream::element_open() {
+  span_open_ = false;
   o_ << (first_element_ ? "\n" : ",\n") << pad_ << pad_;
   first_element_ = false;
 }
@@ -57,11 +70,20 @@ void JsonObjectStream::member_verbatim(const std::string& key, std::string_view 
 
 void JsonObjectStream::elements_verbatim(std::string_view records) {
   if (records.empty()) return;
+  span_open_ = false;
   o_ << (first_element_ ? "\n" : ",\n") << records;
   first_element_ = false;
 }
 
 void JsonObjectStream::end_array() {
+  if (span_open_ && spans_) {
+    const auto at = o_.tellp();
+    if (at >= 0) {
+      span_.end = static_cast<std::uint64_t>(static_cast<std::streamoff>(at));
+      spans_->push_back(span_);
+    }
+  }
+  span_open_ = false;
   if (!first_element_) o_ << "\n" << pad_;
   o_ << "]";
   in_array_ = false;

@@ -2,14 +2,22 @@
 // A JSON document written as it is produced: an object whose members are nlohmann values, and
 // whose last member is an array of records streamed one by one (the cases of a sweep of millions
 // need not be held in memory). Every value is written by nlohmann::json, never spliced as text.
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 namespace mh {
+
+/// Where an array of records written with element() stands in the stream: [begin, end) from its
+/// first record's indentation to the last byte of its last record, and how many records it holds.
+struct RecordSpan {
+  std::uint64_t begin = 0, end = 0, count = 0;
+};
 
 class JsonObjectStream {
  public:
@@ -40,6 +48,11 @@ class JsonObjectStream {
   void end_array();
   /// Closes the object (a document: and a final newline).
   void end();
+  /// Append to `out` the RecordSpan of every array of this stream whose records are all written
+  /// with element() (mhcontact merge then copies them by their byte range without reading them;
+  /// a shard's shard.json lists them). The stream must tell its position (a file, not a pipe);
+  /// where it cannot, no span is recorded.
+  void record_spans(std::vector<RecordSpan>* out) { spans_ = out; }
   /// The underlying stream has not failed.
   bool good() const { return static_cast<bool>(o_); }
 
@@ -47,6 +60,9 @@ class JsonObjectStream {
   std::ostream& o_;
   std::string pad_, close_pad_;
   bool first_member_ = true, first_element_ = true, in_array_ = false;
+  std::vector<RecordSpan>* spans_ = nullptr;
+  RecordSpan span_;
+  bool span_open_ = false;  ///< the open array's records so far all written by element()
   void separator();
   void member_dumped(const std::string& key, const std::string& pretty);
 };

@@ -53,6 +53,13 @@ i = t.rindex("\n    {"); j = t.index("\n  ],\n  \"summary\"", i)
 open(sys.argv[1], "w").write(t[:i - 1] + t[j:])' "$tmp/bt2/results.json"
 set +e; "$bin" merge "$tmp/bt1" "$tmp/bt2" -o "$tmp/btm" -q 2>"$tmp/err"; rc=$?; set -e
 test $rc -eq 2 || { echo "expected exit 2 for a cut pair record" >&2; exit 1; }
+grep -q "$tmp/bt2/results.json: .*[0-9]* bytes, its shard.json says [0-9]* (cut short or edited)" "$tmp/err" || { cat "$tmp/err" >&2; exit 1; }
+# ... also where its shard.json gives no byte ranges (an earlier version's shard): its pair records counted.
+/usr/bin/python3 -c '
+import json, sys
+j = json.load(open(sys.argv[1])); del j["results_json"]; json.dump(j, open(sys.argv[1], "w"), indent=2)' "$tmp/bt2/shard.json"
+set +e; "$bin" merge "$tmp/bt1" "$tmp/bt2" -o "$tmp/btm" -q 2>"$tmp/err"; rc=$?; set -e
+test $rc -eq 2 || { echo "expected exit 2 for a cut pair record" >&2; exit 1; }
 grep -q "$tmp/bt2/results.json: .*holds 1 pairs, its shard.json 2" "$tmp/err" || { cat "$tmp/err" >&2; exit 1; }
 
 # Malformed manifests: exit 2 with the JSON path.

@@ -49,24 +49,53 @@ grep -q "different runs" "$tmp/err"
 expect2 "$bin" run "$src/cases/manchester.json" -o "$tmp/x" --shard 4/3
 grep -q "K/N" "$tmp/err"
 test ! -e "$tmp/m2/cases.csv"
-# results.json is merged as text, checked against shard.json: a shard's document that lost a
-# case record (cut by hand, a disk full) or is not in the layout run writes is refused, naming it.
+# results.json is merged as text, checked against shard.json: its "results_json" gives the
+# document's size and the byte range and count of each array of records (the merge copies those
+# ranges without reading them). Each span's records are where it says:
+/usr/bin/python3 -c '
+import json, sys
+d = sys.argv[1]; t = open(d + "/results.json", "rb").read(); L = json.load(open(d + "/shard.json"))["results_json"]
+assert L["bytes"] == len(t), (L["bytes"], len(t))
+assert len(L["spans"]) == 2, L["spans"]  # "geometry" and "cases"
+for b, e, n in L["spans"]:
+    assert t[b - 2:b] == b"[\n" and t[e:e + 4] == b"\n  ]" and t[b:e].count(b"\n") == n - 1, (b, e, n)
+assert L["spans"][1][2] == 33' "$tmp/s2"
+# A shard's document that lost a case record (cut by hand, a disk full) is refused by its size,
+# naming it; where shard.json gives no ranges (a shard of an earlier version), by its records
+# counted line by line; one not in the layout run writes, by its layout.
 cp -r "$tmp/s2" "$tmp/s2cut"
 awk '/^  "cases": \[/ {c = 1; print; next} c == 1 {c = 2; next} {print}' "$tmp/s2/results.json" > "$tmp/s2cut/results.json"
 expect2 "$bin" merge "$tmp/s1" "$tmp/s2cut" "$tmp/s3" -o "$tmp/m5"
+grep -q "$tmp/s2cut/results.json: .*not a results.json as mhcontact run writes it: [0-9]* bytes, its shard.json says [0-9]* (cut short or edited)" "$tmp/err" || { cat "$tmp/err"; exit 1; }
+/usr/bin/python3 -c '
+import json, sys
+j = json.load(open(sys.argv[1])); del j["results_json"]; json.dump(j, open(sys.argv[1], "w"), indent=2)' "$tmp/s2cut/shard.json"
+expect2 "$bin" merge "$tmp/s1" "$tmp/s2cut" "$tmp/s3" -o "$tmp/m5"
 grep -q "$tmp/s2cut/results.json: .*holds 32 cases, its shard.json 33" "$tmp/err" || { cat "$tmp/err"; exit 1; }
+cp "$tmp/s2/shard.json" "$tmp/s2cut/shard.json"
 /usr/bin/python3 -c 'import json, sys; json.dump(json.load(open(sys.argv[1])), open(sys.argv[2], "w"))' "$tmp/s2/results.json" "$tmp/s2cut/results.json"
 expect2 "$bin" merge "$tmp/s1" "$tmp/s2cut" "$tmp/s3" -o "$tmp/m5"
 grep -q "$tmp/s2cut/results.json: .*not a results.json as mhcontact run writes it" "$tmp/err" || { cat "$tmp/err"; exit 1; }
 test ! -e "$tmp/m5/cases.csv"
 # ... and so is one with a member after its records (the run writes "summary" alone there; the
-# merge copies only the members before the records, so it would be lost).
+# merge copies only the members before the records, so it would be lost), its size in shard.json
+# made to match.
 /usr/bin/python3 -c '
-import sys
+import json, sys
 t = open(sys.argv[1]).read(); i = t.index("\n  \"summary\"")
-open(sys.argv[2], "w").write(t[:i] + "\n  \"extra\": 1," + t[i:])' "$tmp/s2/results.json" "$tmp/s2cut/results.json"
+t = t[:i] + "\n  \"extra\": 1," + t[i:]
+open(sys.argv[2], "w").write(t)
+j = json.load(open(sys.argv[3])); j["results_json"]["bytes"] = len(t.encode()); json.dump(j, open(sys.argv[3], "w"), indent=2)' \
+  "$tmp/s2/results.json" "$tmp/s2cut/results.json" "$tmp/s2cut/shard.json"
 expect2 "$bin" merge "$tmp/s1" "$tmp/s2cut" "$tmp/s3" -o "$tmp/m5"
 grep -q "$tmp/s2cut/results.json: .*\"summary\" alone must follow the \"cases\"" "$tmp/err" || { cat "$tmp/err"; exit 1; }
+# ... and a span of shard.json that does not fall on the records (moved by one byte).
+cp "$tmp/s2/results.json" "$tmp/s2/shard.json" "$tmp/s2cut/"
+/usr/bin/python3 -c '
+import json, sys
+j = json.load(open(sys.argv[1])); j["results_json"]["spans"][1][0] += 1; json.dump(j, open(sys.argv[1], "w"), indent=2)' "$tmp/s2cut/shard.json"
+expect2 "$bin" merge "$tmp/s1" "$tmp/s2cut" "$tmp/s3" -o "$tmp/m5"
+grep -q "$tmp/s2cut/results.json: .*record span .* is not an array's records in the document" "$tmp/err" || { cat "$tmp/err"; exit 1; }
 
 # Shards whose tables and records are large (64 kB and more a piece): merge copies those pieces
 # inside the kernel (copy_file_range) instead of writing them; the bytes are the same. A case
