@@ -1,7 +1,8 @@
 // Kalker's creepage coefficients (contact/tangential/kalker.hpp) against Kalker 1990, Table E.3
 // (values read from the table at its columns ν = 0.25, 0.5), against CONTACT's linrol at ν = 0.28
 // (values quoted by its routine for the three aspects below), the trap of the circulating copy,
-// and all four (C33 among them) against CONTACT's exact solver at small creepage (its own table).
+// all four (C33 among them) against CONTACT's exact solver at small creepage (its own table), and
+// all four against Kalker's series method solved to convergence (tests/data/kalker_series/).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "contact/tangential/kalker.hpp"
+#include "support/kalker_series.hpp"
 
 using namespace mh;
 
@@ -147,4 +149,35 @@ TEST_CASE("Kalker C11 to C33 against CONTACT's exact solver extrapolated to zero
     }
   }
   CHECK(checked == 46);
+}
+
+TEST_CASE("Table E.3 against Kalker's series method solved to convergence", "[tangential][kalker]") {
+  // tests/data/kalker_series/ (scripts/kalker_series.py): the linear theory with the traction a
+  // polynomial of degree 14 and 16 over √(1 − x²/a² − y²/b²), no grid, no library code; the two
+  // degrees agree within 0.016 %. At ν = 0.25 (a column of the table: no interpolation in ν) the
+  // table's entries differ from it by at most (29 Nov 2026): C11 0.41 %, C22 0.61 %, C23 0.26 %,
+  // C33 0.74 % (the copy's two decimals: ±0.8 % at 0.60), the largest all at a/b = 5 (b/a = 0.2,
+  // table below the converged value): the table's accuracy, of which the issue's 0.5 % target
+  // for C22 at a/b = 5 asks more than the table has (docs/tangential.md, "Linear theory").
+  // Held at 1.5 × those; an entry mistyped in its second digit (C22 8.14 → 8.04: −1.8 %) fails.
+  struct Tol { double C11, C22, C23, C33; };
+  const Tol tol{0.006, 0.009, 0.004, 0.011};
+  for (double aob : {0.2, 0.5, 1.0, 2.0, 5.0}) {
+    const KalkerCoefficients k = kalker_coefficients(aob, 0.25);
+    const mh::test::SeriesCoefficients s = mh::test::kalker_series(aob, 0.25);
+    INFO("a/b " << aob << ": table/series C11 " << k.C11 / s.C11 << ", C22 " << k.C22 / s.C22 << ", C23 "
+                << k.C23 / s.C23 << ", C33 " << k.C33 / s.C33);
+    CHECK(k.C11 == Approx(s.C11).epsilon(tol.C11));
+    CHECK(k.C22 == Approx(s.C22).epsilon(tol.C22));
+    CHECK(k.C23 == Approx(s.C23).epsilon(tol.C23));
+    CHECK(k.C33 == Approx(s.C33).epsilon(tol.C33));
+  }
+  // At ν = 0.28 (the issue's; the table interpolated in ν) the deviations are those at ν = 0.25
+  // within 0.05 % (C22 at a/b = 5: −0.63 %).
+  for (double aob : {0.2, 1.0, 5.0}) {
+    const KalkerCoefficients k = kalker_coefficients(aob, 0.28);
+    const mh::test::SeriesCoefficients s = mh::test::kalker_series(aob, 0.28);
+    INFO("a/b " << aob);
+    CHECK(k.C22 == Approx(s.C22).epsilon(tol.C22));
+  }
 }
