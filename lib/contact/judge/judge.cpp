@@ -60,28 +60,25 @@ void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Materi
   const LoadedEllipse* first = &r.loaded.front();
   for (const LoadedEllipse& L : r.loaded)
     if (L.g.gap < first->g.gap) first = &L;
-  // The gap is that of t_Y, the roll (the rolled wheel's, as the candidates: method.md §3.8) and
-  // the first contact's candidate only, not of the load: kept per thread for the next case with
-  // the same four (a sweep's cases at one t_Y, every Q).
+  // The gap is that of t_Y and the first contact's candidate only, not of the load: kept per
+  // thread for the next case with the same three (a sweep's cases at one t_Y, every Q).
   struct GapCache {
     std::uint64_t id = 0;
     const ProfileCurve *w = nullptr, *r = nullptr;
-    double tY = 0, y = 0, roll = 0;
+    double tY = 0, y = 0;
     std::optional<WheelRailGap> gap;
   };
   thread_local GapCache cache;
   const ProfileCurve* wc = G.wheel_gap_curve ? G.wheel_gap_curve.get() : G.wheel_curve.get();
   const ProfileCurve* rc = G.rail_gap_curve ? G.rail_gap_curve.get() : G.rail_curve.get();
-  const double roll = opt.multi_hertzian.roll;
   if (!cache.gap || G.build_id == 0 || cache.id != G.build_id || cache.w != wc || cache.r != rc || cache.tY != tY ||
-      cache.y != first->g.y_r || cache.roll != roll) {
-    cache.gap.emplace(G, tY, first->g.y_r, roll);
+      cache.y != first->g.y_r) {
+    cache.gap.emplace(G, tY, first->g.y_r);
     cache.id = G.build_id;
     cache.w = wc;
     cache.r = rc;
     cache.tY = tY;
     cache.y = first->g.y_r;
-    cache.roll = roll;
   }
   const WheelRailGap& gap = *cache.gap;
   for (const LoadedEllipse& L : r.loaded) {
