@@ -63,8 +63,8 @@ typedef enum mhc_error {
                                 value, the rule and the unit: docs/c-api.md "Errors") */
   MHC_ERR_INPUT = 2,       /**< unreadable or invalid input data (profile file, points, case file,
                                 a pair that cannot be placed): the command's exit code 2 */
-  MHC_ERR_UNSUPPORTED = 3, /**< a valid request this pair cannot honour: a relative roll or an
-                                approach-prescribed solve with a grid method */
+  MHC_ERR_UNSUPPORTED = 3, /**< a valid request this pair cannot honour: an approach-prescribed
+                                solve with a grid method */
   MHC_ERR_MEMORY = 4,      /**< out of memory */
   MHC_ERR_INTERNAL = 5     /**< a bug: please report with the message */
 } mhc_error;
@@ -294,8 +294,8 @@ MHC_API void mhc_workspace_free(mhc_workspace* ws);
 
 /** One case with the vertical load prescribed (eq. 10): the wheel at lateral displacement tY_m
  *  and relative roll roll_rad (the wheel rolled against the rail about x, pair frame, positive
- *  raising its field side; docs/method.md section 3 item 8: multi-hertzian pairs only,
- *  MHC_ERR_UNSUPPORTED for the others; |roll_rad| <= 0.05, else MHC_ERR_ARGUMENT), carrying
+ *  raising its field side; docs/method.md section 3 item 8: every method, the grid methods' gap
+ *  that of the rolled wheel; |roll_rad| <= 0.05, else MHC_ERR_ARGUMENT), carrying
  *  Q_N. Fills *out (out->struct_size must be set). Any method. Q_N = 0: no_contact (a wheel
  *  lifted); Q_N negative, not finite, or above the plausible range (2000 kN: docs/case-file.md
  *  "Plausible ranges"): MHC_ERR_ARGUMENT, the message naming the value and the rule. */
@@ -441,7 +441,8 @@ MHC_API void mhc_table_free(mhc_table* t);
  * centre (contact point, angle, curvatures, heights and spin of the rolled wheel; docs/method.md
  * section 3.8); the pairs' tables must cover |y| + 0.46 m |roll| in t_Y (a pair's default -10 ... 12
  * mm: a flange contact beyond about 7 mm with its roll leaves it: out_of_range). The grid methods
- * keep each wheel upright, the roll entering its height only (MHC_WHEELSET_WARN_ROLL_* bits).
+ * take the roll too (their gap that of the rolled wheel). With roll_in_geometry 0 each wheel
+ * stays upright, the roll entering its height only (MHC_WHEELSET_WARN_ROLL_* bits).
  * Limits (reported as MHC_WHEELSET_WARN_* bits): the yaw enters the creepages, not the contact
  * point (its lead ahead of the axle is not modelled). */
 
@@ -470,7 +471,7 @@ typedef struct mhc_wheelset_options {
   int32_t fastsim_nx;        /**< FASTSIM cells along x per strip (default 16: the wheelset call's, docs/performance.md) */
   int32_t fastsim_ny;        /**< FASTSIM strips across (default 16) */
   int32_t roll_in_geometry;  /**< 1 (default): each wheel rolled against its rail in the
-                                  multi-Hertzian geometry; 0: the upright wheels, the roll to first
+                                  contact geometry (every method); 0: the upright wheels, the roll to first
                                   order in the heights (faster; its error against CONTACT:
                                   docs/wheelset.md) */
 } mhc_wheelset_options;
@@ -493,7 +494,7 @@ typedef struct mhc_wheelset_pose {
   double Q_left_N, Q_right_N;    /**< LOADS: vertical wheel loads (>= 0) */
   double Z_m;                    /**< POSITION: axle-centre height; each wheel's penetration is
                                       h_s(roll) - Z, h_s(roll) the axle height at which that wheel,
-                                      rolled, first touches (grid methods: h_s - s roll L_s, h_s
+                                      rolled, first touches (roll_in_geometry 0: h_s - s roll L_s, h_s
                                       upright, L_s = a + y_w - r tan(gamma), s: +1 left) */
   double roll_rad;               /**< POSITION with solve_roll 0: the roll */
   double V_m_per_s;              /**< forward speed (> 0 with friction) */

@@ -76,10 +76,6 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
   if (!(std::fabs(roll) <= 0.05))
     return fail(MHC_ERR_ARGUMENT, "roll = " + format_number(roll) +
                                       " rad: the relative roll must be finite and within [-0.05, 0.05] rad");
-  if (roll != 0.0 && pair.options.method != Method::MultiHertzian)
-    return fail(MHC_ERR_UNSUPPORTED, "roll = " + format_number(roll) + " rad: a relative roll is modelled by the "
-                                         "multi-hertzian method only, not by " + to_string(pair.options.method) +
-                                         " (its contact gap is the upright wheel's); pass 0 or use multi_hertzian");
   if (!std::isfinite(tY)) return fail(MHC_ERR_ARGUMENT, "t_Y = " + format_number(tY) + " m: must be finite");
   // The wheel rolled by δ against the rail (docs/method.md §3 item 8): its candidates and its spin.
   // With mhc_workspace_keep_grids: the grid methods' element pressures and the tractions per

@@ -110,6 +110,7 @@ bool HalfSpaceOptions::valid(std::string* why) const {
   if (max_outer < 1 || max_outer > 1000) return fail("max_outer = " + std::to_string(max_outer) + ": must be in [1, 1000]");
   if (max_rebuilds < 0 || max_rebuilds > 20) return fail("max_rebuilds = " + std::to_string(max_rebuilds) + ": must be in [0, 20]");
   if (max_refinements < 0 || max_refinements > 6) return fail("max_refinements = " + std::to_string(max_refinements) + ": must be in [0, 6]");
+  if (!(std::fabs(roll) <= 0.05)) return fail("roll = " + format_number(roll) + " rad: must be within [-0.05, 0.05] rad");
   return cg.valid(why);
 }
 
@@ -144,6 +145,7 @@ bool StripMethodOptions::valid(std::string* why) const {
   if (max_refinements < 0 || max_refinements > 6) return fail("max_refinements = " + std::to_string(max_refinements) + ": must be in [0, 6]");
   if (max_passes < 1 || max_passes > 21) return fail("max_passes must be in [1, 21]");
   if (!(x_curvature_step > 0)) return fail("x_curvature_step must be > 0");
+  if (!(std::fabs(roll) <= 0.05)) return fail("roll = " + format_number(roll) + " rad: must be within [-0.05, 0.05] rad");
   return strips.valid(why);
 }
 

@@ -114,8 +114,8 @@ struct MultiHertzOptions {
   /// [rad] The case's relative roll δ of the wheel against the rail (about x, pair frame, positive
   /// raising the wheel's field side; method.md §3.8): the candidates are those of the rolled
   /// wheel (ContactGeometry::candidates_at(t, δ)). Per case, set by the caller (the wheelset
-  /// call, the C interface's roll_rad); default 0, the wheel upright. Only this method models it:
-  /// solve_contact refuses it for the others. |δ| ≤ 50 mrad.
+  /// call, the C interface's roll_rad); default 0, the wheel upright. solve_contact hands it to
+  /// the grid methods too (HalfSpaceOptions::roll, StripMethodOptions::roll). |δ| ≤ 50 mrad.
   double roll = 0;
   bool valid(std::string* why) const;
 };
@@ -165,6 +165,10 @@ struct HalfSpaceOptions {
   int max_refinements = 3;
   NormalCGOptions cg{1e-8, 2000};  ///< per-patch solver: ε ≤ 1e-8 of the interference (default)
   bool keep_pressure = false;  ///< keep each patch's element pressures in PatchResult::p (for --pressure-grid)
+  /// [rad] The wheel's roll δ against the rail (method.md §3.8): the gap is the rolled wheel's
+  /// (WheelRailGap with a roll), the start the rolled multi-Hertzian solution. Set per case by
+  /// solve_contact from MultiHertzOptions::roll; default 0, upright (the same bits). |δ| ≤ 50 mrad.
+  double roll = 0;
   bool valid(std::string* why) const;
 };
 
@@ -219,6 +223,7 @@ struct StripMethodOptions {
   int max_refinements = 3;
   StripOptions strips;         ///< the per-patch solver (quadrature, tolerances, outlier factor)
   bool keep_strips = false;    ///< keep every strip in PatchResult::strips (for --strips)
+  double roll = 0;             ///< [rad] the wheel's roll against the rail, as HalfSpaceOptions::roll
   bool valid(std::string* why) const;
 };
 

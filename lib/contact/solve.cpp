@@ -18,18 +18,20 @@ namespace mh {
 namespace {
 
 // The half-space options of a solve: with friction the patch grids' pressures are kept, the
-// tangential step solves on them (solve_tangential_patches).
+// tangential step solves on them (solve_tangential_patches); the case's roll (method.md §3.8).
 HalfSpaceOptions half_space_options(const MethodOptions& opt) {
   HalfSpaceOptions o = opt.half_space;
   o.keep_pressure = o.keep_pressure || opt.tangential.enabled();
+  o.roll = opt.multi_hertzian.roll;
   return o;
 }
 
 // The strip-method options of a solve: with friction every patch's strips are kept, the
-// tangential step lays them on a grid (solve_tangential_strips).
+// tangential step lays them on a grid (solve_tangential_strips); the case's roll.
 StripMethodOptions strip_options(const MethodOptions& opt) {
   StripMethodOptions o = opt.strips;
   o.keep_strips = o.keep_strips || opt.tangential.enabled();
+  o.roll = opt.multi_hertzian.roll;
   return o;
 }
 
@@ -316,7 +318,9 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
   if (std::isfinite(mat.p_lim)) {
     Material elastic = mat;
     elastic.p_lim = INFINITY;
-    elastic_mh = solve_multi_hertz(G, elastic, tY, Q);
+    MultiHertzOptions rolled;  // the default options, with the case's roll
+    rolled.roll = opt.multi_hertzian.roll;
+    elastic_mh = solve_multi_hertz(G, elastic, tY, Q, rolled);
     start = &elastic_mh;
   }
   CaseResult sr = solve_strip_method(G, mat, tY, Q, strip_options(opt), start);
@@ -352,17 +356,7 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
 
 }  // namespace
 
-// A relative roll (MultiHertzOptions::roll) is modelled by the multi-Hertzian method only: the grid
-// methods' gap (geometry/gap.hpp) is the upright wheel's.
-static void check_roll(const MethodOptions& opt) {
-  if (opt.multi_hertzian.roll != 0 && opt.method != Method::MultiHertzian)
-    throw std::invalid_argument("a relative roll of " + std::to_string(opt.multi_hertzian.roll) + " rad is modelled by "
-                                "the multi-hertzian method only, not by " + to_string(opt.method) +
-                                " (its contact gap is the upright wheel's): use multi_hertzian or a roll of 0");
-}
-
 CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt) {
-  check_roll(opt);
   CaseResult r;
   switch (opt.method) {
     case Method::Auto: r = solve_auto(G, mat, tY, Q, opt); break;
@@ -393,7 +387,6 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
 
 bool solve_contact_unjudged(const ContactGeometry& G, const Material& mat, double tY, double Q,
                             const MethodOptions& opt, CaseResult& out, GridWorkspace* ws) {
-  check_roll(opt);
   switch (opt.method) {
     case Method::MultiHertzian: solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian, out); break;
     case Method::HalfSpace:

@@ -10,8 +10,9 @@
 
 namespace mh {
 
-/// Solve one case by opt.method. Never throws for a numerical reason (the status says it);
-/// std::invalid_argument for a relative roll (opt.multi_hertzian.roll ≠ 0) with another method.
+/// Solve one case by opt.method. Never throws for a numerical reason (the status says it). The
+/// case's relative roll (opt.multi_hertzian.roll, method.md §3.8) reaches every method: the grid
+/// methods' options take it (HalfSpaceOptions::roll, StripMethodOptions::roll).
 CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt);
 
 /// The same into `out`. The multi-Hertzian method reuses out's vectors (solve_multi_hertz's

@@ -98,11 +98,18 @@ bool ContactGeometry::off_profile(double t, double y_r) const {
          y_r < strip_y.front() + 0.5 * strip_width || y_r > strip_y.back() - 0.5 * strip_width;
 }
 
-bool ContactGeometry::off_profile_at(double t, double y_r, double z) const {
-  if (!has_rail_face() || !(y_r < strip_y.front() + 0.5 * strip_width)) return off_profile(t, y_r);
+bool ContactGeometry::off_profile_at(double t, double y_r, double z, double roll) const {
   const ProfileCurve& W = *wheel_curve;
-  const double y_w = y_r - (y_offset + t);
-  return y_w < W.y_min() + strip_width || y_w > W.y_max() - strip_width || z < rail_face_foot + strip_width;
+  double y_w = y_r - (y_offset + t);
+  if (roll != 0.0) {
+    // The rolled wheel's point facing y_r, in the wheel profile's own coordinate (method.md §3.8).
+    double z_w;
+    rolled_wheel_at(t, roll, y_r, &y_w, &z_w);
+  }
+  const bool wheel_end = y_w < W.y_min() + strip_width || y_w > W.y_max() - strip_width;
+  if (!has_rail_face() || !(y_r < strip_y.front() + 0.5 * strip_width))
+    return wheel_end || y_r < strip_y.front() + 0.5 * strip_width || y_r > strip_y.back() - 0.5 * strip_width;
+  return wheel_end || z < rail_face_foot + strip_width;
 }
 
 bool ContactGeometry::exact_candidates_at(double t, CandidateGeom* out, int* main) const {

@@ -256,8 +256,9 @@ class ContactGeometry {
   bool off_profile(double t, double y_r) const;
   /// The same for a point (y_r, z) near the rail surface (a grid patch's end in its plane): a
   /// point beside the rail's vertical gauge face, above its foot by more than a strip width, lies
-  /// on the rail although y_r is at the end of z(y).
-  bool off_profile_at(double t, double y_r, double z) const;
+  /// on the rail although y_r is at the end of z(y). With the wheel rolled by `roll` [rad] against
+  /// the rail, the wheel point is the rolled wheel's facing y_r (rolled_wheel_at).
+  bool off_profile_at(double t, double y_r, double z, double roll = 0) const;
 
   /// Unique per build_geometry call (copies share it: same content); keys the per-thread cache of
   /// exact_candidates_at, so that a geometry built at the address of a destroyed one (the next

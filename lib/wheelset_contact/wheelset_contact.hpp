@@ -18,14 +18,15 @@
 // pair (t_Y > 0: towards that wheel's flange contact).
 //
 // What is modelled, and the limits (each reported as a WheelsetWarning when it applies):
-//  - roll φ (about x, positive raising the left wheel): with the multi-Hertzian method (and
-//    WheelsetSetup::roll_in_geometry, the default) each wheel
+//  - roll φ (about x, positive raising the left wheel): with WheelsetSetup::roll_in_geometry (the
+//    default), whatever the method, each wheel
 //    is rolled against its rail by δ = σ φ about the axle centre (pair_pose(), method.md §3.8):
-//    its candidates are those of the rolled profile (contact point, angle, curvatures, gaps), its
-//    height that of the rolled wheel's first contact, the spin that of the rolled axle. The grid
-//    methods' gap is the upright wheel's: there the roll enters each wheel's height only, to first
-//    order (δz_s = h_s − Z − σ φ L_s, roll_lever()), with the warnings roll_in_geometry_neglected
-//    above WheelsetStepOptions::roll_limit and roll_near_flange (roll_flange_gamma);
+//    its candidates are those of the rolled profile (contact point, angle, curvatures, gaps), the
+//    grid methods' gap that of the rolled wheel (WheelRailGap with a roll), its height that of the
+//    rolled wheel's first contact, the spin that of the rolled axle. Without it the roll enters
+//    each wheel's height only, to first order (δz_s = h_s − Z − σ φ L_s, roll_lever()), with the
+//    warnings roll_in_geometry_neglected above WheelsetStepOptions::roll_limit and
+//    roll_near_flange (roll_flange_gamma);
 //  - yaw ψ enters the creepages (η = (ẏ − Ω r ψ)/(V cos γ), docs/method.md §10), not the
 //    contact point: the lead of the contact point ahead of the axle, x ≈ −r tan γ tan ψ for a
 //    cone, is not modelled; warning yaw_lead_not_modelled when |x| exceeds a tenth of the
@@ -86,10 +87,10 @@ struct WheelsetSetup {
     g.tY_max = 18e-3;
     return g;
   }();
-  /// Each wheel rolled against its rail in the multi-Hertzian geometry (default true: method.md
-  /// §3.8, the answer CONTACT gives with the wheelset rolled). False: the upright wheels' tables
-  /// and the roll to first order in the heights (as the grid methods), about a tenth of the cost of
-  /// a step in loads mode, with the errors against CONTACT of docs/wheelset.md "Roll in the
+  /// Each wheel rolled against its rail in the contact geometry, every method (default true:
+  /// method.md §3.8, the answer CONTACT gives with the wheelset rolled). False: the upright wheels'
+  /// tables and the roll to first order in the heights, about a tenth of the cost of a
+  /// multi-Hertzian step in loads mode, with the errors against CONTACT of docs/wheelset.md "Roll in the
   /// geometry, or not" and the warnings roll_in_geometry_neglected and roll_near_flange.
   bool roll_in_geometry = true;
 };
@@ -193,7 +194,7 @@ struct WheelsetStepOptions {
   double fd_Q = 1e-4;        ///< [-] Loads: in each Q, relative (default 1e-4)
   /// |lead| above this fraction of the contact's semi-axis a: yaw_lead_not_modelled (default 0.1).
   double lead_fraction = 0.1;
-  /// [rad] The roll not in the geometry only (grid methods, roll_in_geometry false): |φ|
+  /// [rad] The roll not in the geometry only (roll_in_geometry false): |φ|
   /// above this, roll_in_geometry_neglected (default 1 mrad; against CONTACT a roll 0.1 mrad off
   /// the kinematic one already moves a centred tread contact's Fx by 7.8 % of μN, docs/c-api.md).
   double roll_limit = 1e-3;
@@ -237,10 +238,10 @@ class WheelsetContact {
   /// [m] The axle height at which wheel `side` first touches its rail at its t_Y (linear in the
   /// table); NaN outside the table.
   double first_contact_height(int side, double tY) const;
-  /// Whether the roll enters each pair's contact geometry (WheelsetSetup::roll_in_geometry with the
-  /// multi-Hertzian method: the rolled candidates of ContactGeometry::candidates_at(t, δ));
-  /// otherwise only the heights, to first order (roll_lever), and the warnings say so.
-  bool roll_in_geometry() const { return setup_.roll_in_geometry && setup_.method.method == Method::MultiHertzian; }
+  /// Whether the roll enters each pair's contact geometry (WheelsetSetup::roll_in_geometry, every
+  /// method: the rolled candidates of ContactGeometry::candidates_at(t, δ), the grid methods'
+  /// rolled gap); otherwise only the heights, to first order (roll_lever), and the warnings say so.
+  bool roll_in_geometry() const { return setup_.roll_in_geometry; }
   /// The pair's pose of wheel `side` for the wheelset at lateral y rolled by φ (method.md §3.8,
   /// eq. 3.8.2): the wheel's roll against its rail δ = σ φ and the t_Y that puts its rolled
   /// profile where the wheelset's rotation about the axle centre puts it,

@@ -10,8 +10,8 @@
 
 namespace mh {
 
-bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, double Q, const CaseResult* elastic_mh,
-                     CaseResult& r, GridStart* gs) {
+bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, double Q, double roll,
+                     const CaseResult* elastic_mh, CaseResult& r, GridStart* gs) {
   r.dz = NAN;
   if (!(Q > 0) || !std::isfinite(Q)) {
     r.status = CaseStatus::NoContact;
@@ -27,7 +27,9 @@ bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, d
   if (!elastic_mh) {
     Material elastic = mat;
     elastic.p_lim = INFINITY;
-    solve_multi_hertz(G, elastic, tY, Q, MultiHertzOptions(), gs->own);
+    MultiHertzOptions o;  // the default options, with the roll of the grid's gap
+    o.roll = roll;
+    solve_multi_hertz(G, elastic, tY, Q, o, gs->own);
     elastic_mh = &gs->own;
   }
   gs->mh = elastic_mh;
@@ -36,15 +38,15 @@ bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, d
   return true;
 }
 
-void finish_grid_case(const ContactGeometry& G, double tY, const GridStart& gs, CaseResult& r) {
+void finish_grid_case(const ContactGeometry& G, double tY, double roll, const GridStart& gs, CaseResult& r) {
   if (gs.mh)
     for (const Warning& w : gs.mh->warnings)
       if (w.cls == WarningClass::FlangeClimb) r.warnings.push_back(w);
   if (G.wheel_curve && G.rail_curve && !G.strip_y.empty())
     for (const PatchResult& P : r.patches) {
       const double c = std::cos(P.gamma), sn = std::sin(P.gamma);
-      if (G.off_profile_at(tY, P.y_r + P.s_lo * c, P.z_r + P.s_lo * sn) ||
-          G.off_profile_at(tY, P.y_r + P.s_hi * c, P.z_r + P.s_hi * sn))
+      if (G.off_profile_at(tY, P.y_r + P.s_lo * c, P.z_r + P.s_lo * sn, roll) ||
+          G.off_profile_at(tY, P.y_r + P.s_hi * c, P.z_r + P.s_hi * sn, roll))
         r.warnings.emplace_back(WarningClass::OffProfile, ContactKind::Patch, P.patch);
     }
   withhold_unconverged_pressures(r);

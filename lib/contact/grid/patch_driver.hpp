@@ -144,28 +144,29 @@ struct GridCaseWorkspace {
 /// What every grid method does before solving a case: refuse Q ≤ 0 (`no_contact`) and a t_Y outside
 /// the geometry (`out_of_range`), with r's status and message set (returns false); else fill *gs
 /// from `elastic_mh` (the elastic multi-Hertzian solution of this case, e.g. the one `auto` already
-/// has; null: solved here) and return true.
-bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, double Q, const CaseResult* elastic_mh,
-                     CaseResult& r, GridStart* gs);
+/// has; null: solved here, with the wheel rolled by `roll` [rad] as the grid's gap) and return true.
+bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, double Q, double roll,
+                     const CaseResult* elastic_mh, CaseResult& r, GridStart* gs);
 
 /// What every grid method does after solving a case: the start's flange_climb warning, then
 /// `off_profile:patch=K` for each patch whose contact reaches the end of either profile (of a rail
 /// with a vertical gauge face: its foot; ContactGeometry::off_profile_at) (method.md
-/// §3.7: it stands on extrapolated geometry); a not_converged result then loses its pressures
-/// (withhold_unconverged_pressures, grid_checks.hpp).
-void finish_grid_case(const ContactGeometry& G, double tY, const GridStart& gs, CaseResult& r);
+/// §3.7: it stands on extrapolated geometry; the wheel point that of the wheel rolled by `roll`
+/// [rad]); a not_converged result then loses its pressures (withhold_unconverged_pressures,
+/// grid_checks.hpp).
+void finish_grid_case(const ContactGeometry& G, double tY, double roll, const GridStart& gs, CaseResult& r);
 
 /// A grid method's entry: begin_grid_case, then body(gs, r) → the solved case, then
-/// finish_grid_case. `method` is the row's method.
+/// finish_grid_case. `method` is the row's method, `roll` [rad] the wheel's roll against the rail.
 template <class Body>
 CaseResult solve_grid_case(Method method, const ContactGeometry& G, const Material& mat, double tY, double Q,
-                           const CaseResult* elastic_mh, Body&& body) {
+                           double roll, const CaseResult* elastic_mh, Body&& body) {
   CaseResult r;
   r.method = method;
   GridStart gs;
-  if (!begin_grid_case(G, mat, tY, Q, elastic_mh, r, &gs)) return r;
+  if (!begin_grid_case(G, mat, tY, Q, roll, elastic_mh, r, &gs)) return r;
   r = body(gs, std::move(r));
-  finish_grid_case(G, tY, gs, r);
+  finish_grid_case(G, tY, roll, gs, r);
   set_patch_elastic_hertz(mat, gs.mh, r);
   return r;
 }
@@ -174,16 +175,16 @@ CaseResult solve_grid_case(Method method, const ContactGeometry& G, const Materi
 /// keeping their capacity, and with the start in ws.start: with a reused `out` and `ws` nothing
 /// is allocated here once they have grown. body(gs, r) → r, as above. The same bytes.
 template <class Body>
-void solve_grid_case(Method method, const ContactGeometry& G, const Material& mat, double tY, double Q,
+void solve_grid_case(Method method, const ContactGeometry& G, const Material& mat, double tY, double Q, double roll,
                      const CaseResult* elastic_mh, GridCaseWorkspace& ws, CaseResult& out, Body&& body) {
   reset_case_result(out);
   out.method = method;
   GridStart& gs = ws.start;
   gs.mh = nullptr;
   gs.dz = GridStart().dz;
-  if (!begin_grid_case(G, mat, tY, Q, elastic_mh, out, &gs)) return;
+  if (!begin_grid_case(G, mat, tY, Q, roll, elastic_mh, out, &gs)) return;
   out = body(gs, std::move(out));
-  finish_grid_case(G, tY, gs, out);
+  finish_grid_case(G, tY, roll, gs, out);
   set_patch_elastic_hertz(mat, gs.mh, out);
 }
 

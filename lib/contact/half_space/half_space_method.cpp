@@ -259,14 +259,14 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
     // times the projected area of the capped elements). The multi-Hertzian estimate is not used:
     // its plastic "approach" (Thornton's δ of the grown ellipse) overestimates this approach 3–5
     // times in flange contact, where the interpenetration at that depth reaches the tread.
-    const WheelRailGap gap0(G, tY);
+    const WheelRailGap gap0(G, tY, NAN, opt.roll);
     dz_est = std::max(el.approach, rigid_plastic_approach(gap0, Q, mat.p_lim, ws.grid.projected));
     ws.elastic = std::move(el);
   }
   ws.patches.begin_case();
   ws.influence.begin_case();
   ws.grid.n_checks = 0;
-  const WheelRailGap gap(G, tY);
+  const WheelRailGap gap(G, tY, NAN, opt.roll);  // upright at roll 0 (the same bits)
   const double H = mat.compliance();
   const double p_lim = mat.p_lim;
 
@@ -394,7 +394,7 @@ CaseResult solve_half_space(const ContactGeometry& G, const Material& mat, doubl
 void solve_half_space(const ContactGeometry& G, const Material& mat, double tY, double Q, const HalfSpaceOptions& opt,
                       HalfSpaceWorkspace& ws, CaseResult& out, const CaseResult* elastic_mh) {
   HalfSpaceWorkspace::Impl& w = ws.impl();
-  solve_grid_case(Method::HalfSpace, G, mat, tY, Q, elastic_mh, w.grid, out, [&](const GridStart& gs, CaseResult r) {
+  solve_grid_case(Method::HalfSpace, G, mat, tY, Q, opt.roll, elastic_mh, w.grid, out, [&](const GridStart& gs, CaseResult r) {
     return half_space_case(G, mat, tY, Q, opt, gs, std::move(r), w);
   });
 }

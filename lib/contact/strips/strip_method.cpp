@@ -196,7 +196,7 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
   ws.patches.begin_case();
   ws.grid.n_checks = 0;
   double dz_est = gs.dz;
-  const WheelRailGap gap(G, tY);
+  const WheelRailGap gap(G, tY, NAN, opt.roll);  // upright at roll 0 (the same bits)
   // Plastic model: the capped approach is at least the elastic one and at least the rigid–
   // perfectly-plastic one (as for the half-space method).
   if (std::isfinite(mat.p_lim))
@@ -331,7 +331,7 @@ void solve_strip_method(const ContactGeometry& G, const Material& mat, double tY
                         const StripMethodOptions& opt, StripWorkspace& ws, CaseResult& out,
                         const CaseResult* elastic_mh) {
   StripWorkspace::Impl& w = ws.impl();
-  solve_grid_case(Method::Strips, G, mat, tY, Q, elastic_mh, w.grid, out, [&](const GridStart& gs, CaseResult r) {
+  solve_grid_case(Method::Strips, G, mat, tY, Q, opt.roll, elastic_mh, w.grid, out, [&](const GridStart& gs, CaseResult r) {
     return strip_case(G, mat, tY, Q, opt, gs, std::move(r), w);
   });
 }
