@@ -113,7 +113,11 @@ mhc_error mhc_result_subsurface(const mhc_workspace* ws, int32_t i, const mhc_su
   const mh::SubsurfacePeaks& P = S.peaks;
   out->source = static_cast<int32_t>(S.source);  // the enums in the same order (contact_stresses.hpp)
   if (plastic) out->warnings |= MHC_SUBSURFACE_WARN_PLASTIC;
-  if (could_use_grid && S.source == mh::ContactStressSource::HertzEllipse) out->warnings |= MHC_SUBSURFACE_WARN_GRID_NOT_KEPT;
+  // Not the load the command would take: the grid (or, with friction, the solved traction) not kept.
+  const bool best = S.source == (r.loaded.empty() ? (friction ? mh::ContactStressSource::GridPatchSolvedTraction
+                                                              : mh::ContactStressSource::GridPatch)
+                                                  : mh::ContactStressSource::HertzEllipseFastsim);
+  if (could_use_grid && !best) out->warnings |= MHC_SUBSURFACE_WARN_GRID_NOT_KEPT;
   if (S.source != mh::ContactStressSource::None && P.surface) out->warnings |= MHC_SUBSURFACE_WARN_AT_SURFACE;
   out->vm_max_Pa = P.vm_max, out->vm_depth_m = P.vm_z;
   out->tau_max_Pa = P.tau_max, out->tau_depth_m = P.tau_z;

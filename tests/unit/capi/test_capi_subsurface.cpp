@@ -210,9 +210,10 @@ TEST_CASE("C subsurface: grids not kept, options and arguments", "[capi][rcf][su
   REQUIRE(r.n_contacts == 1);
   mhc_contact_subsurface s;
   s.struct_size = sizeof s;
-  // Solved without keeping the grid: the elastic Hertz ellipse, and the warning saying so.
+  // Solved without keeping the grid: the patch's pressure (kept for its tangential solve) with full
+  // slip, not its solved traction, and the warning saying so.
   REQUIRE(mhc_result_subsurface(h.ws, 0, nullptr, &s) == MHC_OK);
-  CHECK(s.source == MHC_SUBSURFACE_HERTZ_ELLIPSE);
+  CHECK(s.source == MHC_SUBSURFACE_GRID_PATCH);
   CHECK((s.warnings & MHC_SUBSURFACE_WARN_GRID_NOT_KEPT) != 0u);
   CHECK(s.vm_max_Pa > 0);
   CHECK(std::isnan(s.FI_sub_Pa));
