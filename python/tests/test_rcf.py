@@ -116,8 +116,9 @@ def test_subsurface_of_a_solved_patch_as_the_command():
         path = os.path.join(d, "case.json")
         with open(path, "w") as f:
             json.dump(case, f)
-        subprocess.run([BINARY, "run", path, "-o", d, "--digits", "max", "-q", "--format", "csv"], check=True)
-        want = rows(os.path.join(d, "patches.csv"))
+        out = os.path.join(d, "out")  # a run's directory holds only what the run writes
+        subprocess.run([BINARY, "run", path, "-o", out, "--digits", "max", "-q", "--format", "csv"], check=True)
+        want = rows(os.path.join(out, "patches.csv"))
         got = mhcontact.Pair.from_case_file(path).subsurface(0.5e-3, 10e3, dang_van_c=0.3)
     assert len(got) == len(want) == 1
     assert got[0]["sub_source"] == want[0]["sub_source"] == "grid_patch_solved_traction"

@@ -11,15 +11,16 @@
 // Compared per depth (CONTACT's 10 depths 0.25 … 3 mm), each program on its own points (every
 // element along x, every second row, the points' positions from its own pressure centroid): the
 // largest von Mises stress and where it is; the orthogonal shear amplitude (half the range of σ_xz
-// along a row, 0 included; the largest row). Then the subsurface columns' own peaks (the search of
-// grid_subsurface_peaks) against CONTACT's peak over its points. Tolerances in MPa and mm at
-// about 1.5 × the differences measured on 29 Nov 2026 (the comments).
+// along a row, 0 included; the largest row). The hidden test also prints the subsurface columns' own
+// peaks (the search of grid_subsurface_peaks), not checked: a known limit (docs/outputs.md).
+// Tolerances in MPa and mm at about 1.5 × the differences measured on 29 Nov 2026 (below).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "contact/rcf/contact_stresses.hpp"
 #include "contact/rcf/grid_subsurface.hpp"
@@ -103,36 +104,83 @@ std::map<double, Depth> depths(const Solved& s, const std::map<double, Depth>& r
   return out;
 }
 
-}  // namespace
+// Tolerances [MPa] per case at about 1.5 × the largest difference over CONTACT's 10 depths
+// measured on 29 Nov 2026 (mhcontact − CONTACT, on each program's points as above):
+//  - tread_yaw: von Mises −0.6 … −6.6 MPa (1.9 %, largest at 1.5–1.75 mm), lateral place within
+//    0.33 mm (CONTACT's rows are 0.4 mm apart), along x within 0.10 mm; orthogonal shear amplitude
+//    −2.0 … +0.2 MPa. Tolerances 10 MPa, 3 MPa, 0.5 mm and 0.15 mm.
+//  - gauge_spin: orthogonal shear amplitude −3.8 … +1.2 MPa: tolerance 6 MPa. Von Mises is not
+//    checked: it is 58–61 MPa (6–7 %) high at 0.25–0.5 mm, falling to +0.6 MPa at 3 mm, because the
+//    patch differs: mhcontact's 2-D profile geometry gives 236 elements at a contact angle of
+//    0.321 rad and pmax 1569 MPa where CONTACT's yawed wheel (13.2 mrad) gives 258 elements,
+//    0.336 rad and pmax 1486 MPa (+5.5 %); the shallow von Mises follows pmax, the shear
+//    amplitude follows the traction f p and the forces, which agree within 0.3 %.
+struct Tolerance {
+  double vm, orth, vm_x, vm_s;  // [MPa], [MPa], [mm], [mm]; NaN: not checked
+};
 
-TEST_CASE("Grid subsurface of a wheel-rail patch with its solved traction against CONTACT module 1",
-          "[rcf][subsurface][grid][contact][wheelrail]") {
+Tolerance tolerance(const std::string& name) {
+  if (name == "tread_yaw") return {10, 3, 0.15, 0.5};
+  return {NAN, 6, NAN, NAN};
+}
+
+// Case `row` of cases.csv at the depths `zs` (all of CONTACT's when empty).
+void compare(std::size_t row, const std::vector<double>& zs, bool report) {
   const CsvTable c = read_data_csv(kDir + "cases.csv");
   REQUIRE(c.rows.size() == 2);
-  for (std::size_t row = 0; row < c.rows.size(); ++row) {
-    const std::string name = c.rows[row][0];
-    CAPTURE(name);
-    std::map<double, Depth> ref;
-    const CsvTable t = read_data_csv(kDir + name + "_depths.csv");
-    for (std::size_t k = 0; k < t.rows.size(); ++k)
-      ref[csv_num(t, k, "z_mm")] = {csv_num(t, k, "vm_max_MPa"), csv_num(t, k, "vm_x_mm"), csv_num(t, k, "vm_s_mm"),
-                                    csv_num(t, k, "orth_amp_MPa"), csv_num(t, k, "orth_s_mm")};
-    const Solved s = solve(c, row);
-    const PatchResult& P = s.r.patches[0];
+  const std::string name = c.rows[row][0];
+  CAPTURE(name);
+  std::map<double, Depth> ref;
+  const CsvTable t = read_data_csv(kDir + name + "_depths.csv");
+  for (std::size_t k = 0; k < t.rows.size(); ++k) {
+    const double z = csv_num(t, k, "z_mm");
+    if (zs.empty() || std::find(zs.begin(), zs.end(), z) != zs.end())
+      ref[z] = {csv_num(t, k, "vm_max_MPa"), csv_num(t, k, "vm_x_mm"), csv_num(t, k, "vm_s_mm"),
+                csv_num(t, k, "orth_amp_MPa"), csv_num(t, k, "orth_s_mm")};
+  }
+  REQUIRE(ref.size() == (zs.empty() ? t.rows.size() : zs.size()));
+  const Solved s = solve(c, row);
+  const PatchResult& P = s.r.patches[0];
+  if (report)
     WARN(name << ": N " << P.N << " vs " << csv_num(c, row, "FN_N") << ", Fx " << -P.t.Fx << " vs " << csv_num(c, row, "FX_N")
               << ", Fy " << -P.t.Fy << " vs " << csv_num(c, row, "FS_N") << ", gamma " << P.gamma << " vs "
               << -csv_num(c, row, "deltcp_rad") << ", pmax " << P.pmax / kMPa << " vs " << csv_num(c, row, "pmax_MPa")
               << ", elements " << P.area / (P.dx * P.ds) << " vs " << csv_num(c, row, "n_contact") << ", grid " << P.dx / kMm
               << " x " << P.ds / kMm << " mm");
-    const std::map<double, Depth> mine = depths(s, ref);
-    for (const auto& [z, d] : ref) {
-      const Depth& m = mine.at(z);
-      WARN(name << " z " << z << ": vm " << m.vm << " vs " << d.vm << " at (" << m.vm_x << ", " << m.vm_s << ") vs ("
-                << d.vm_x << ", " << d.vm_s << "); orth " << m.orth << " vs " << d.orth << " at s " << m.orth_s << " vs "
-                << d.orth_s);
+  const Tolerance tol = tolerance(name);
+  const std::map<double, Depth> mine = depths(s, ref);
+  for (const auto& [z, d] : ref) {
+    const Depth& m = mine.at(z);
+    INFO(name << " z " << z << ": vm " << m.vm << " vs " << d.vm << " at (" << m.vm_x << ", " << m.vm_s << ") vs ("
+              << d.vm_x << ", " << d.vm_s << "); orth " << m.orth << " vs " << d.orth << " at s " << m.orth_s << " vs "
+              << d.orth_s);
+    if (report) WARN("measured");
+    if (!std::isnan(tol.vm)) {
+      CHECK(std::abs(m.vm - d.vm) <= tol.vm);
+      CHECK(std::abs(m.vm_x - d.vm_x) <= tol.vm_x);
+      CHECK(std::abs(m.vm_s - d.vm_s) <= tol.vm_s);
     }
+    CHECK(std::abs(m.orth - d.orth) <= tol.orth);
+  }
+  if (report) {
+    // The subsurface columns' own search (grid_subsurface_peaks): on the tread patch its 9 rows
+    // over 0.8 of the loaded width miss the lateral von Mises maximum (docs/outputs.md).
     const SubsurfacePeaks pk = grid_subsurface_peaks(s.load);
     WARN(name << " peaks: vm " << pk.vm_max / kMPa << " at " << pk.vm_z / kMm << " mm, orth " << pk.tau_orth_amp / kMPa
               << " at " << pk.tau_orth_z / kMm);
   }
+}
+
+}  // namespace
+
+// The tread patch at three depths (about 3 s); the whole comparison is the hidden [.wheelrail].
+TEST_CASE("Grid subsurface of a wheel-rail tread patch with its solved traction against CONTACT module 1",
+          "[rcf][subsurface][grid][contact]") {
+  compare(0, {0.5, 0.75, 1.5}, false);
+}
+
+TEST_CASE("Grid subsurface of wheel-rail patches with their solved traction against CONTACT module 1, all depths",
+          "[.wheelrail]") {
+  compare(0, {}, true);
+  compare(1, {}, true);
 }
