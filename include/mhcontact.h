@@ -719,6 +719,70 @@ typedef struct mhc_subsurface {
 MHC_API mhc_error mhc_hertz_subsurface(double a_m, double b_m, double p0_Pa, double fx, double fy, double nu,
                                        mhc_subsurface* out);
 
+/* ---- subsurface stresses of the last case's contacts (lib/capi/subsurface.cpp) ----------------
+ * The subsurface columns of ellipses.csv / patches.csv (docs/outputs.md "Subsurface columns") for
+ * one contact of the last case a workspace solved, in SI: the same computation as the command's
+ * for the same case (docs/c-api.md "Subsurface stresses"). The load is chosen as the command
+ * chooses it (`source`): a grid patch's own element pressure with its solved traction (friction)
+ * or full slip f p; an ellipse row's Hertz pressure with FASTSIM's traction (friction); else the
+ * elastic Hertz ellipse with full slip. The grid and FASTSIM loads need what the solve kept: call
+ * mhc_workspace_keep_grids(ws, 1) before solving (without it: the Hertz ellipse, and the warning
+ * MHC_SUBSURFACE_WARN_GRID_NOT_KEPT). Seconds per grid patch; about 0.5 s per ellipse. */
+
+/** Options of mhc_result_subsurface: mhc_subsurface_options_init fills the defaults and
+ *  struct_size. Fields are only ever appended (earlier sizes accepted). */
+typedef struct mhc_subsurface_options {
+  size_t struct_size;  /**< sizeof(mhc_subsurface_options), set by mhc_subsurface_options_init */
+  int32_t grid;        /**< 1 (default): a grid patch from its own element pressure (the case
+                            file's "subsurface": {"grid": true}); 0: its elastic Hertz ellipse */
+  int32_t reserved;
+  double traction;     /**< full-slip traction coefficient f (the case file's rcf.traction_coefficient)
+                            for a pair without friction, 0 to 1; NaN (default) with friction: each
+                            contact's own traction (a value is refused then, as by the case file) */
+  double dang_van_c;   /**< Dang Van parameter c of FI_sub, 0 to 1; NaN (default): FI_sub NaN */
+} mhc_subsurface_options;
+
+/** Which load the stresses are of (the sub_source column). */
+typedef enum mhc_subsurface_source {
+  MHC_SUBSURFACE_NONE = 0,                       /**< not computed (the values NaN) */
+  MHC_SUBSURFACE_HERTZ_ELLIPSE = 1,              /**< hertz_ellipse */
+  MHC_SUBSURFACE_GRID_PATCH = 2,                 /**< grid_patch */
+  MHC_SUBSURFACE_GRID_PATCH_SOLVED_TRACTION = 3, /**< grid_patch_solved_traction */
+  MHC_SUBSURFACE_HERTZ_ELLIPSE_FASTSIM = 4       /**< hertz_ellipse_fastsim_traction */
+} mhc_subsurface_source;
+
+/** Warnings of one contact's stresses (mhc_contact_subsurface.warnings). */
+#define MHC_SUBSURFACE_WARN_PLASTIC 0x1u       /**< a plastic contact: the ELASTIC stresses of its
+                                                    elastic Hertz ellipse at its load, not an
+                                                    elastic-plastic field (docs/methods.md) */
+#define MHC_SUBSURFACE_WARN_GRID_NOT_KEPT 0x2u /**< a grid or FASTSIM load was possible but the
+                                                    last solve kept no grid: the Hertz ellipse used */
+#define MHC_SUBSURFACE_WARN_AT_SURFACE 0x4u    /**< the von Mises peak lies on the shallowest depth
+                                                    searched (one element deep for a grid) */
+
+/** The subsurface stresses of one contact (SI; the columns sub_* and FI_sub_MPa in MPa and mm).
+ *  Caller-owned: set struct_size = sizeof(mhc_contact_subsurface). */
+typedef struct mhc_contact_subsurface {
+  size_t struct_size;        /**< set by the caller: sizeof(mhc_contact_subsurface) */
+  int32_t source;            /**< mhc_subsurface_source; MHC_SUBSURFACE_NONE: not computed (no
+                                  traction known: the contact's tangential problem unsolved) */
+  uint32_t warnings;         /**< MHC_SUBSURFACE_WARN_* bits */
+  double vm_max_Pa, vm_depth_m;             /**< largest von Mises stress, its depth */
+  double tau_max_Pa, tau_depth_m;           /**< largest principal shear stress, its depth */
+  double tau_orth_amp_Pa, tau_orth_depth_m; /**< orthogonal shear amplitude over a pass, its depth */
+  double tau_eq_amp_Pa;                     /**< equivalent shear stress amplitude */
+  double sigma_h_Pa;                        /**< hydrostatic stress at the von Mises peak of that pass */
+  double FI_sub_Pa;                         /**< tau_eq_amp + c sigma_h (NaN without dang_van_c) */
+} mhc_contact_subsurface;
+
+/** Fill *opt with the defaults (grid 1, traction NaN, dang_van_c NaN) and its struct_size. */
+MHC_API void mhc_subsurface_options_init(mhc_subsurface_options* opt);
+/** The stresses below contact i (0-based, as mhc_result_rcf) of the last case solved with `ws`
+ *  into *out (out->struct_size must be set); opt NULL: the defaults. MHC_ERR_ARGUMENT when i is
+ *  out of range, an option is out of its range, or a pair without friction is given no traction. */
+MHC_API mhc_error mhc_result_subsurface(const mhc_workspace* ws, int32_t i, const mhc_subsurface_options* opt,
+                                        mhc_contact_subsurface* out);
+
 /* ---- pressure and traction grids of the last case (lib/capi/grids.cpp) -----------------------
  * The points of pressure.csv (`mhcontact run --pressure-grid N`, docs/outputs.md) for the last
  * case a workspace solved, SI, with the traction columns when the pair has friction: the same

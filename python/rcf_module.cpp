@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 
 #include <cmath>
+#include <vector>
 
 #include <mhcontact.h>
 
@@ -65,6 +66,52 @@ void bind_rcf(py::module_& m, void (*check)(mhc_error)) {
         }
         return out;
       }, py::arg("pair"), py::arg("tY_m"), py::arg("Q_N"), py::arg("k_Pa"));
+  m.def("_pair_subsurface", [check](const py::object& pair, double tY_m, double Q_N, int grid, double traction,
+                                    double dang_van_c) {
+        const py::capsule c = pair.attr("_capsule")();
+        const mhc_pair* p = static_cast<const mhc_pair*>(c.get_pointer());
+        Workspace w;
+        check(mhc_workspace_create(p, &w.ws));
+        check(mhc_workspace_keep_grids(w.ws, 1));  // the grid and FASTSIM loads, as the command's
+        mhc_subsurface_options opt;
+        mhc_subsurface_options_init(&opt);
+        opt.grid = grid, opt.traction = traction, opt.dang_van_c = dang_van_c;
+        mhc_result r;
+        r.struct_size = sizeof r;
+        std::vector<mhc_contact_subsurface> got;
+        mhc_error e = MHC_OK;
+        {
+          py::gil_scoped_release release;  // seconds per grid patch
+          e = mhc_solve_load(p, w.ws, tY_m, 0.0, Q_N, &r);
+          for (int32_t i = 0; e == MHC_OK && i < r.n_contacts; ++i) {
+            mhc_contact_subsurface s;
+            s.struct_size = sizeof s;
+            e = mhc_result_subsurface(w.ws, i, &opt, &s);
+            got.push_back(s);
+          }
+        }
+        check(e);
+        static const char* const kSource[] = {nullptr, "hertz_ellipse", "grid_patch", "grid_patch_solved_traction",
+                                              "hertz_ellipse_fastsim_traction"};
+        py::list out;
+        for (const mhc_contact_subsurface& s : got) {
+          py::dict d;  // the subsurface columns' names and units (docs/outputs.md)
+          const char* src = s.source >= 1 && s.source <= 4 ? kSource[s.source] : nullptr;
+          d["sub_source"] = src ? py::object(py::str(src)) : py::object(py::none());
+          d["sub_vm_max_MPa"] = s.vm_max_Pa / 1e6, d["sub_vm_depth_mm"] = s.vm_depth_m * 1e3;
+          d["sub_tau_max_MPa"] = s.tau_max_Pa / 1e6, d["sub_tau_depth_mm"] = s.tau_depth_m * 1e3;
+          d["sub_tau_orth_amp_MPa"] = s.tau_orth_amp_Pa / 1e6, d["sub_tau_orth_depth_mm"] = s.tau_orth_depth_m * 1e3;
+          d["sub_tau_eq_amp_MPa"] = s.tau_eq_amp_Pa / 1e6, d["sub_sigma_h_MPa"] = s.sigma_h_Pa / 1e6;
+          d["FI_sub_MPa"] = s.FI_sub_Pa / 1e6;
+          py::list warn;
+          if (s.warnings & MHC_SUBSURFACE_WARN_PLASTIC) warn.append("plastic");
+          if (s.warnings & MHC_SUBSURFACE_WARN_GRID_NOT_KEPT) warn.append("grid_not_kept");
+          if (s.warnings & MHC_SUBSURFACE_WARN_AT_SURFACE) warn.append("at_surface");
+          d["warnings"] = warn;
+          out.append(d);
+        }
+        return out;
+      }, py::arg("pair"), py::arg("tY_m"), py::arg("Q_N"), py::arg("grid"), py::arg("traction"), py::arg("dang_van_c"));
   m.def("hertz_subsurface", [check](double a_m, double b_m, double p0_Pa, double fx, double fy, double nu) {
         mhc_subsurface s;
         s.struct_size = sizeof s;

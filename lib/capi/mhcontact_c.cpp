@@ -88,7 +88,8 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
       rolled.multi_hertzian.roll = roll;
       rolled.tangential.kin.roll = roll;
     }
-    if (ws.keep_grids) rolled.half_space.keep_pressure = rolled.tangential.keep_traction = true;
+    if (ws.keep_grids)  // and the strips for a strip patch's stresses without friction (capi/subsurface.cpp)
+      rolled.half_space.keep_pressure = rolled.tangential.keep_traction = rolled.strips.keep_strips = true;
     opt = &rolled;
   }
   ws.grids_kept = false;

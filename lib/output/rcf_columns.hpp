@@ -33,13 +33,6 @@ void subsurface_fields(Sink& k, const RcfOptions& o, double N, double a_el, doub
   k.number("sub_sigma_h_MPa", P.sigma_h / units::MPa);
   k.number("FI_sub_MPa", S.fi_sub / units::MPa);
 }
-// FASTSIM's kept cells of the ellipse row L of r (CaseResult::ellipse_traction, in the order of
-// r.loaded; none when not kept) and the ellipse they were solved on.
-inline EllipseCells ellipse_cells(const CaseResult& r, const LoadedEllipse& L) {
-  const std::size_t i = static_cast<std::size_t>(&L - r.loaded.data());
-  if (i >= r.ellipse_traction.size() || r.ellipse_traction[i].empty()) return {};
-  return {&r.ellipse_traction[i], L.s.a, L.s.b};
-}
 // The RCF columns (docs/outputs.md "RCF columns"), appended last to ellipses.csv and patches.csv
 // and to their JSON records: by their definitions, from the elastic Hertz patch of the load N
 // (semi-axes a_el, b_el; NaN: not known, the cells empty).

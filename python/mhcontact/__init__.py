@@ -17,6 +17,7 @@ import numpy as _np
 from ._core import (INTERFACE_VERSION, InputError, MAX_CONTACTS, METHOD_NAMES, STATUS_NAMES, UnsupportedError, Pair,
                     Profile, Table, TableResult, Wheelset, __version__, abi_version, fft_backend, hertz_subsurface)
 from ._core import _pair_rcf as _core_pair_rcf
+from ._core import _pair_subsurface as _core_pair_subsurface
 from ._core import _pair_pressure_grid as _core_pair_pressure_grid
 
 from .fleet import fleet, read_tables
@@ -125,6 +126,23 @@ def _pair_rcf(self, tY_m, Q_N, k_Pa=float("nan")):
 
 
 Pair.rcf = _pair_rcf
+
+
+def _pair_subsurface(self, tY_m, Q_N, grid=True, traction=float("nan"), dang_van_c=float("nan")):
+    """The stresses below each contact of one case (load Q_N [N] at tY_m [m]), as the subsurface
+    columns of ellipses.csv / patches.csv (docs/python.md "Subsurface stresses of a solved case"):
+    a list of dicts, one per contact in the order of solve()'s 'contacts', with sub_source,
+    sub_vm_max_MPa, sub_vm_depth_mm, sub_tau_max_MPa, sub_tau_depth_mm, sub_tau_orth_amp_MPa,
+    sub_tau_orth_depth_mm, sub_tau_eq_amp_MPa, sub_sigma_h_MPa, FI_sub_MPa and 'warnings' (names:
+    "plastic", "grid_not_kept", "at_surface"). grid: a grid patch from its own pressure (the case
+    file's "subsurface": {"grid": true}); traction: the full-slip f of a pair without friction
+    (with friction each contact's own, leave it NaN); dang_van_c: c of FI_sub (NaN: none).
+    Through mhc_result_subsurface; seconds per grid patch."""
+    return _core_pair_subsurface(self, _number("tY_m", tY_m, "m"), _number("Q_N", Q_N, "N"), 1 if grid else 0,
+                                 _number("traction", traction, "-"), _number("dang_van_c", dang_van_c, "-"))
+
+
+Pair.subsurface = _pair_subsurface
 
 
 def _pair_pressure_grid(self, tY_m, Q_N=None, dz_m=None, n=20, roll_rad=0.0):

@@ -94,3 +94,34 @@ def test_hertz_subsurface_as_the_command():
     assert s["tau_eq_amp_Pa"] + 0.3 * s["sigma_h_Pa"] == pytest.approx(float(r["FI_sub_MPa"]) * 1e6, rel=1e-6)
     with pytest.raises(ValueError, match="a_m, b_m, p0_Pa"):
         mhcontact.hertz_subsurface(-1e-3, 1e-3, 1e9)
+
+
+SUB_KEYS = ("sub_vm_max_MPa", "sub_vm_depth_mm", "sub_tau_max_MPa", "sub_tau_depth_mm", "sub_tau_orth_amp_MPa",
+            "sub_tau_orth_depth_mm", "sub_tau_eq_amp_MPa", "sub_sigma_h_MPa", "FI_sub_MPa")
+
+
+def test_subsurface_of_a_solved_patch_as_the_command():
+    """Pair.subsurface (mhc_result_subsurface) against the subsurface columns of the command's
+    patches.csv: the Manchester half-space pair with friction, CONTACT's creepages of A-2.2 case 2
+    (t_Y 0.5 mm, docs/python.md "Subsurface stresses of a solved case"), the patch's own grid."""
+    with open(os.path.join(SRC, "cases", "manchester-halfspace.json")) as f:
+        case = json.load(f)
+    for side in ("wheel", "rail"):
+        case[side]["profile"] = os.path.join(SRC, "profiles", os.path.basename(case[side]["profile"]))
+    case["friction"] = {"coefficient": 0.3}
+    case["creepages"] = {"xi": -4.948e-4, "eta": -1.202e-3, "phi_per_mm": -1.233e-4}
+    case["rcf"] = {"shear_yield_MPa": 300, "subsurface": {"grid": True, "dang_van_c": 0.3}}
+    case["sweep"] = {"tY_mm": [0.5], "Q_kN": [10]}
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "case.json")
+        with open(path, "w") as f:
+            json.dump(case, f)
+        out = os.path.join(d, "out")  # a run's directory holds only what the run writes
+        subprocess.run([BINARY, "run", path, "-o", out, "--digits", "max", "-q", "--format", "csv"], check=True)
+        want = rows(os.path.join(out, "patches.csv"))
+        got = mhcontact.Pair.from_case_file(path).subsurface(0.5e-3, 10e3, dang_van_c=0.3)
+    assert len(got) == len(want) == 1
+    assert got[0]["sub_source"] == want[0]["sub_source"] == "grid_patch_solved_traction"
+    assert got[0]["warnings"] == []
+    for k in SUB_KEYS:
+        assert got[0][k] == pytest.approx(float(want[0][k]), rel=1e-12), k

@@ -61,6 +61,14 @@ struct EllipseCells {
   double a = 0, b = 0;
 };
 
+/// FASTSIM's kept cells of the ellipse row L of r (CaseResult::ellipse_traction, in the order of
+/// r.loaded; none when not kept) and the ellipse they were solved on.
+inline EllipseCells ellipse_cells(const CaseResult& r, const LoadedEllipse& L) {
+  const std::size_t i = static_cast<std::size_t>(&L - r.loaded.data());
+  if (i >= r.ellipse_traction.size() || r.ellipse_traction[i].empty()) return {};
+  return {&r.ellipse_traction[i], L.s.a, L.s.b};
+}
+
 /// Elements per smaller semi-axis of the grid that carries an ellipse's FASTSIM traction to the
 /// stresses (the grid patches' check of test_grid_subsurface.cpp: b/10 gives the Hertz peaks
 /// within 3e-4 p0).
