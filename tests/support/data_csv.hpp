@@ -1,7 +1,8 @@
 #pragma once
 // A reference table of tests/data read whole (parse_csv, the project's one CSV reader), and one
 // numeric cell of it by column name, or every row as numbers by column name (leading '#' lines,
-// a table's provenance, skipped); a missing file or column fails the test.
+// a table's provenance, skipped), or a run's output CSV as text by column name; a missing file or
+// column fails the test.
 #include <catch2/catch.hpp>
 
 #include <cstddef>
@@ -47,6 +48,17 @@ inline std::vector<DataRow> read_data_rows(const std::string& relative) {
   std::vector<DataRow> rows(t.rows.size());
   for (std::size_t r = 0; r < t.rows.size(); ++r)
     for (std::size_t c = 0; c < t.header.size(); ++c) rows[r].v[t.header[c]] = std::stod(t.rows[r][c]);
+  return rows;
+}
+
+/// Every record of a CSV file a run wrote (cases.csv, pressure.csv: any path), each cell as text
+/// by column name (read_csv_file: quoted cells unquoted); an unreadable file fails the test.
+using TextRow = std::map<std::string, std::string>;
+inline std::vector<TextRow> read_text_rows(const std::string& path) {
+  const CsvTable t = read_csv_file(path);
+  std::vector<TextRow> rows(t.rows.size());
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    for (std::size_t c = 0; c < t.header.size(); ++c) rows[r][t.header[c]] = t.rows[r][c];
   return rows;
 }
 

@@ -22,32 +22,15 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "support/data_csv.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 const std::string kSrc = MHCONTACT_SOURCE_DIR;
 
-using Row = std::map<std::string, std::string>;
-
-std::vector<Row> read_rows(const std::string& path) {
-  std::ifstream in(path);
-  REQUIRE(in);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> head;
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) head.push_back(c);
-  std::vector<Row> rows;
-  while (std::getline(in, line)) {
-    Row row;
-    std::stringstream ls(line);
-    std::string c;
-    for (std::size_t k = 0; k < head.size() && std::getline(ls, c, ','); ++k) row[head[k]] = c;
-    rows.push_back(row);
-  }
-  return rows;
-}
+using Row = mh::test::TextRow;
+using mh::test::read_text_rows;
 
 /// A case's grid through the C interface: the size query, then the arrays.
 struct Grid {
@@ -93,8 +76,8 @@ std::size_t compare_with_command(const std::string& case_file, int n, bool patch
   std::ostringstream o, e;
   REQUIRE(mh::run_cli({"run", case_file, "-o", dir, "--digits", "max", "-q", "--format", "csv", "--pressure-grid",
                        std::to_string(n), "--force"}, o, e) == 0);
-  const auto cases = read_rows(dir + "/cases.csv");
-  const auto pressure = read_rows(dir + "/pressure.csv");
+  const auto cases = read_text_rows(dir + "/cases.csv");
+  const auto pressure = read_text_rows(dir + "/pressure.csv");
   fs::remove_all(dir);
   REQUIRE(!cases.empty());
   Handles h(case_file);

@@ -22,32 +22,15 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "support/data_csv.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 const std::string kSrc = MHCONTACT_SOURCE_DIR;
 
-using Row = std::map<std::string, std::string>;
-
-std::vector<Row> read_rows(const std::string& path) {
-  std::ifstream in(path);
-  REQUIRE(in);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> head;
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) head.push_back(c);
-  std::vector<Row> rows;
-  while (std::getline(in, line)) {
-    Row row;
-    std::stringstream ls(line);
-    std::string c;
-    for (std::size_t k = 0; k < head.size() && std::getline(ls, c, ','); ++k) row[head[k]] = c;
-    rows.push_back(row);
-  }
-  return rows;
-}
+using Row = mh::test::TextRow;
+using mh::test::read_text_rows;
 
 // The Manchester pair (S1002 on UIC60 1:40) by the half-space method on 0.2 mm elements, with
 // friction 0.3 and CONTACT's creepages of case 2 (t_Y 0.5 mm, yaw 1.2 mrad; module 1's signs
@@ -103,8 +86,8 @@ std::size_t compare_with_command(const std::string& case_file, const char* file,
   const std::string dir = fs::temp_directory_path() / ("mhcontact_capi_subs_" + std::to_string(::getpid()));
   std::ostringstream o, e;
   REQUIRE(mh::run_cli({"run", case_file, "-o", dir, "--digits", "max", "-q", "--format", "csv", "--force"}, o, e) == 0);
-  const auto cases = read_rows(dir + "/cases.csv");
-  const auto rows = read_rows(dir + "/" + file);
+  const auto cases = read_text_rows(dir + "/cases.csv");
+  const auto rows = read_text_rows(dir + "/" + file);
   fs::remove_all(dir);
   Handles h(case_file);
   REQUIRE(mhc_workspace_keep_grids(h.ws, 1) == MHC_OK);
