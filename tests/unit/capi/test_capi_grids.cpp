@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "support/case_text.hpp"
 #include "support/data_csv.hpp"
 
 namespace fs = std::filesystem;
@@ -123,16 +124,7 @@ TEST_CASE("C grids: mhc_result_grid gives pressure.csv's numbers, FASTSIM ellips
 
 TEST_CASE("C grids: mhc_result_grid gives pressure.csv's numbers, a half-space patch", "[capi][grids]") {
   // cases/manchester-halfspace.json's pair with friction and kinematics, one case.
-  std::ifstream in(kSrc + "/cases/manchester-halfspace.json");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string j = text.str();
-  for (const char* prof : {"MBench_S1002_v3.prw", "MBench_UIC60_v3.prr"}) {
-    const std::string rel = std::string("../profiles/") + prof;
-    j.replace(j.find(rel), rel.size(), kSrc + "/profiles/" + prof);
-  }
-  const std::string sweep = "\"sweep\"";
-  j.replace(j.find(sweep), j.size() - j.find(sweep),
+  std::string j = mh::test::manchester_halfspace_case(
             "\"friction\": {\"coefficient\": 0.3}, \"kinematics\": {\"speed_m_s\": 30, \"yaw_mrad_per_mm\": 2.4},\n"
             "  \"sweep\": {\"tY_mm\": [2], \"Q_kN\": [10]}\n}\n");
   const std::string path = fs::temp_directory_path() / ("mhcontact_capi_grids_hs_" + std::to_string(::getpid()) + ".json");

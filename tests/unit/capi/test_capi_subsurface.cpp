@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "support/case_text.hpp"
 #include "support/data_csv.hpp"
 
 namespace fs = std::filesystem;
@@ -37,16 +38,7 @@ using mh::test::read_text_rows;
 // turned into ours: all three negated, tests/data/contact_tangential/README.md), 10 kN, the
 // subsurface columns from the patch's own grid with FI_sub at c = 0.3.
 std::string write_case(const std::string& tag) {
-  std::ifstream in(kSrc + "/cases/manchester-halfspace.json");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string j = text.str();
-  for (const char* prof : {"MBench_S1002_v3.prw", "MBench_UIC60_v3.prr"}) {
-    const std::string rel = std::string("../profiles/") + prof;
-    j.replace(j.find(rel), rel.size(), kSrc + "/profiles/" + prof);
-  }
-  const std::string sweep = "\"sweep\"";
-  j.replace(j.find(sweep), j.size() - j.find(sweep),
+  std::string j = mh::test::manchester_halfspace_case(
             "\"friction\": {\"coefficient\": 0.3},\n"
             "  \"creepages\": {\"xi\": -4.948e-4, \"eta\": -1.202e-3, \"phi_per_mm\": -1.233e-4},\n"
             "  \"rcf\": {\"shear_yield_MPa\": 300, \"subsurface\": {\"grid\": true, \"dang_van_c\": 0.3}},\n"
