@@ -49,9 +49,12 @@ double KlingelResult::max_error() const {
   return e;
 }
 
-KlingelResult klingel(ContactAdapter& contact, double y0, double V, double distance, const WheelsetBody& body) {
+KlingelResult klingel(ContactAdapter& contact, double y0, double V, double distance, const WheelsetBody& body,
+                      double rtol) {
   KlingelResult K;
   RunOptions o;
+  o.atol_y *= rtol / o.rtol;
+  o.rtol = rtol;
   o.V = V;
   o.y0 = y0;
   o.distance = distance;

@@ -36,8 +36,9 @@ struct KlingelResult {
   double max_error() const;   ///< the largest |L_sim / L_klingel − 1| of the half cycles
 };
 /// `body`: the free wheelset by default (its I_y = ∞ holds the pitch rate: the trap of wheelset_model.hpp).
+/// `rtol`: CVODE's relative tolerance (RunOptions::rtol; the absolute tolerances scale with it).
 KlingelResult klingel(ContactAdapter& contact, double y0, double V, double distance = 60,
-                      const WheelsetBody& body = WheelsetBody{});
+                      const WheelsetBody& body = WheelsetBody{}, double rtol = RunOptions{}.rtol);
 
 /// 2. Critical speed: the suspended wheelset's linear critical speed against the speed where the
 /// nonlinear simulation of a small perturbation starts to grow.
