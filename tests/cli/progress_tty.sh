@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Progress under a pseudo-terminal: the rate (cases/s) and the time left, refreshed several times
 # a second; none when standard error is not a terminal or with -q; an interrupt prints one line
-# saying what was kept.
+# saying what was kept. The sweep (225,741 cases, about 2 s on one thread in the Release build)
+# outlasts the interrupt at 0.5 s and shows several refreshes.
 set -uo pipefail
 bin=$1; src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-sed -e 's|"sweep": .*|"sweep": {"tY_mm": {"from": -6, "to": 10, "step": 0.002}, "Q_kN": {"from": 10, "to": 150, "step": 1}}|' \
+sed -e 's|"sweep": .*|"sweep": {"tY_mm": {"from": -6, "to": 10, "step": 0.01}, "Q_kN": {"from": 10, "to": 150, "step": 1}}|' \
     -e "s|\"\\.\\./profiles/|\"$src/profiles/|g" "$src/cases/manchester.json" > "$tmp/big.json"
 python3 - "$bin" "$tmp" "$src" <<'PY'
 import os, pty, re, select, signal, subprocess, sys, time
