@@ -142,7 +142,7 @@ SubsurfacePeaks grid_subsurface_peaks(const GridLoad& G, const SubsurfaceOptions
     }
   if (j_hi < 0) return {};
   const double y_lo = G.y0 + (j_lo - 0.5) * G.dy, y_hi = G.y0 + (j_hi + 0.5) * G.dy;
-  const double y_mid = 0.5 * (y_lo + y_hi), y_half = 0.5 * (y_hi - y_lo);
+  const double y_half = 0.5 * (y_hi - y_lo);
   StressField F;
   F.stress = [&](double x, double y, double z) { return grid_stress(G, x, y, z, q); };
   F.chord = [&](double y) {
@@ -151,9 +151,12 @@ SubsurfacePeaks grid_subsurface_peaks(const GridLoad& G, const SubsurfaceOptions
     return std::isnan(c.first) ? std::make_pair(0.5 * (x_lo + x_hi), 0.5 * (x_lo + x_hi)) : c;
   };
   F.depth_scale = std::min(0.5 * (x_hi - x_lo), y_half);
+  // The coarse rows over the whole loaded width, from the first loaded row's centre to the last's
+  // (the largest stress may lie below an edge row: a patch's pressure lobe at its side); the
+  // refinement up to the loaded edges.
   F.ny = std::max(1, 2 * o.ny - 1);
-  F.y_lo = y_mid - 0.8 * y_half;
-  F.y_hi = y_mid + 0.8 * y_half;
+  F.y_lo = G.y0 + j_lo * G.dy, F.y_hi = G.y0 + j_hi * G.dy;
+  F.y_min = y_lo, F.y_max = y_hi;
   // Shallower than one element the field is that of the elements' steps of pressure, not of the
   // pressure they sample (5 % of p0 in σ_zz at a quarter element below a Hertzian grid): the
   // search starts one element deep.

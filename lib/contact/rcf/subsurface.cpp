@@ -208,40 +208,110 @@ double golden_max(double z_lo, double z_hi, double tol, G g, double* arg) {
 SubsurfacePeaks field_peaks(const StressField& F, const SubsurfaceOptions& o) {
   SubsurfacePeaks R;
   const double c = F.depth_scale;
-  const int ny = std::max(1, F.ny);
+  const int ny = std::max(1, F.ny), nz = std::max(1, o.nz);
   // Depths denser near the surface: z = c (z_min + (z_max − z_min) t²), t uniform.
   auto depth = [&](int k) {
-    const double t = o.nz > 1 ? double(k) / (o.nz - 1) : 0.0;
+    const double t = nz > 1 ? double(k) / (nz - 1) : 0.0;
     return c * (o.z_min + (o.z_max - o.z_min) * t * t);
   };
-  struct Best { double v = -1, y = 0; int k = 0; };
-  Best vm, tau, orth, eq;
-  for (int j = 0; j < ny; ++j) {
-    const double y = ny > 1 ? F.y_lo + (F.y_hi - F.y_lo) * j / (ny - 1) : 0.5 * (F.y_lo + F.y_hi);
-    for (int k = 0; k < o.nz; ++k) {
-      const Pass P = pass_at(F, y, depth(k), o.nx);
-      if (P.vm > vm.v) vm = {P.vm, y, k};
-      if (P.tau_max > tau.v) tau = {P.tau_max, y, k};
-      if (P.tau_orth_amp > orth.v) orth = {P.tau_orth_amp, y, k};
-      if (P.tau_eq_amp > eq.v) eq = {P.tau_eq_amp, y, k};
+  auto row = [&](int j) {
+    return ny > 1 ? F.y_lo + (F.y_hi - F.y_lo) * j / (ny - 1) : 0.5 * (F.y_lo + F.y_hi);
+  };
+  // The coarse scan: every row × every depth, each quantity's value kept.
+  enum { kVm, kTau, kOrth, kEq, kQ };
+  std::vector<double> table(static_cast<std::size_t>(kQ * ny * nz));
+  auto at = [&](int q, int j, int k) -> double& {
+    return table[static_cast<std::size_t>((q * ny + j) * nz + k)];
+  };
+  auto value = [](int q, const Pass& P) {
+    return q == kVm ? P.vm : q == kTau ? P.tau_max : q == kOrth ? P.tau_orth_amp : P.tau_eq_amp;
+  };
+  for (int j = 0; j < ny; ++j)
+    for (int k = 0; k < nz; ++k) {
+      const Pass P = pass_at(F, row(j), depth(k), o.nx);
+      for (int q = 0; q < kQ; ++q) at(q, j, k) = value(q, P);
+    }
+  // Each quantity refined from its best coarse point of each of its (at most) two best lateral
+  // maxima (a patch of two lobes): in depth between the grid's neighbours of that depth, then
+  // across between the neighbouring rows (to y_min, y_max beyond the outer rows), then in depth
+  // again about the depth found. A peak on the shallowest depth stays there (the surface itself is
+  // not searched).
+  const double tol = 1e-3 * c;
+  const double dy = ny > 1 ? (F.y_hi - F.y_lo) / (ny - 1) : 0.0;
+  const double y_min = std::isnan(F.y_min) ? F.y_lo : F.y_min, y_max = std::isnan(F.y_max) ? F.y_hi : F.y_max;
+  struct Found { double v = -1, y = 0, z = 0; int k = 0; };
+  constexpr double kSecond = 0.9;
+  auto search = [&](int q) {
+    std::vector<double> best(static_cast<std::size_t>(ny));
+    std::vector<int> kb(static_cast<std::size_t>(ny));
+    for (int j = 0; j < ny; ++j) {
+      const auto u = static_cast<std::size_t>(j);
+      best[u] = -1;
+      for (int k = 0; k < nz; ++k)
+        if (at(q, j, k) > best[u]) best[u] = at(q, j, k), kb[u] = k;
+    }
+    std::vector<int> cand;  // the rows of the lateral maxima, best first
+    for (int j = 0; j < ny; ++j) {
+      const auto u = static_cast<std::size_t>(j);
+      if ((j == 0 || best[u] >= best[u - 1]) && (j == ny - 1 || best[u] > best[u + 1])) cand.push_back(j);
+    }
+    std::sort(cand.begin(), cand.end(), [&](int a, int b) { return best[static_cast<std::size_t>(a)] > best[static_cast<std::size_t>(b)]; });
+    // A second lateral maximum only when its coarse value is within kSecond of the best's.
+    if (cand.size() > 1 && best[static_cast<std::size_t>(cand[1])] < kSecond * best[static_cast<std::size_t>(cand[0])]) cand.resize(1);
+    if (cand.size() > 2) cand.resize(2);
+    Found out;
+    for (int j : cand) {
+      const int k = kb[static_cast<std::size_t>(j)];
+      Found f{best[static_cast<std::size_t>(j)], row(j), depth(k), k};
+      auto g_z = [&](double zz) { return value(q, pass_at(F, f.y, zz, o.nx)); };
+      auto g_y = [&](double yy) { return value(q, pass_at(F, yy, f.z, o.nx)); };
+      double arg = 0;
+      if (ny > 1) {
+        const double lo = std::max(y_min, f.y - dy), hi = std::min(y_max, f.y + dy);
+        const double v = golden_max(lo, hi, o.y_tol * c, g_y, &arg);
+        if (v > f.v) f.v = v, f.y = arg;
+      }
+      if (k > 0) {
+        const double v = golden_max(depth(k - 1), depth(std::min(k + 1, nz - 1)), tol, g_z, &arg);
+        if (v > f.v) f.v = v, f.z = arg;
+      }
+      if (f.v > out.v) out = f;
+    }
+    return out;
+  };
+  const Found vm = search(kVm), tau = search(kTau), orth = search(kOrth), eq = search(kEq);
+  // The von Mises and principal shear peaks refined along x too, between the pass's neighbours of
+  // its best point.
+  const Pass Pv = pass_at(F, vm.y, vm.z, o.nx);
+  const std::pair<double, double> cv = F.chord(vm.y);
+  const double hx = o.nx > 1 ? 0.98 * (cv.second - cv.first) / (o.nx - 1) : 0.0;
+  R.vm_max = vm.v, R.vm_y = vm.y, R.vm_z = vm.z, R.vm_x = Pv.vm_x;
+  if (hx > 0) {
+    double arg = 0;
+    const double v = golden_max(Pv.vm_x - hx, Pv.vm_x + hx, tol, [&](double x) { return von_mises(F.stress(x, vm.y, vm.z)); }, &arg);
+    if (v > R.vm_max) R.vm_max = v, R.vm_x = arg;
+  }
+  R.surface = vm.k == 0;
+  R.tau_max = tau.v, R.tau_z = tau.z;
+  {
+    // Its x: the pass's best point (pass_at keeps the largest value, not where).
+    double xb = 0, vb = -1;
+    const std::pair<double, double> ct = F.chord(tau.y);
+    const double mid = 0.5 * (ct.first + ct.second), half = 0.49 * (ct.second - ct.first);
+    for (int i = 0; i < o.nx; ++i) {
+      const double x = o.nx > 1 ? mid - half + 2 * half * i / (o.nx - 1) : mid;
+      const double v = max_shear(F.stress(x, tau.y, tau.z));
+      if (v > vb) vb = v, xb = x;
+    }
+    const double h = o.nx > 1 ? 2 * half / (o.nx - 1) : 0.0;
+    if (h > 0) {
+      double arg = 0;
+      R.tau_max = std::max(R.tau_max, golden_max(xb - h, xb + h, tol, [&](double x) { return max_shear(F.stress(x, tau.y, tau.z)); }, &arg));
     }
   }
-  // Each peak refined in depth between the grid's neighbours of its best depth (at its y); a peak
-  // on the shallowest depth stays there (the surface itself is not searched).
-  const double tol = 1e-3 * c;
-  auto refine = [&](const Best& B, auto measure, double* z) {
-    if (B.k == 0) { *z = depth(0); return B.v; }
-    const double lo = depth(B.k - 1), hi = depth(std::min(B.k + 1, o.nz - 1));
-    return std::max(B.v, golden_max(lo, hi, tol, [&](double zz) { return measure(pass_at(F, B.y, zz, o.nx)); }, z));
-  };
-  R.vm_max = refine(vm, [](const Pass& P) { return P.vm; }, &R.vm_z);
-  R.vm_y = vm.y;
-  R.vm_x = pass_at(F, vm.y, R.vm_z, o.nx).vm_x;
-  R.surface = vm.k == 0;
-  R.tau_max = refine(tau, [](const Pass& P) { return P.tau_max; }, &R.tau_z);
-  R.tau_orth_amp = refine(orth, [](const Pass& P) { return P.tau_orth_amp; }, &R.tau_orth_z);
-  R.tau_eq_amp = refine(eq, [](const Pass& P) { return P.tau_eq_amp; }, &R.tau_eq_z);
-  R.sigma_h = pass_at(F, eq.y, R.tau_eq_z, o.nx).sigma_h_at_vm;
+  R.tau_orth_amp = orth.v, R.tau_orth_z = orth.z;
+  R.tau_eq_amp = eq.v, R.tau_eq_z = eq.z;
+  R.sigma_h = pass_at(F, eq.y, eq.z, o.nx).sigma_h_at_vm;
   return R;
 }
 
@@ -257,6 +327,8 @@ SubsurfacePeaks subsurface_peaks(const HertzLoad& L, const SubsurfaceOptions& o)
   F.ny = L.fy == 0 ? 1 : std::max(1, o.ny);  // y = 0 is a symmetry plane when f_y = 0
   F.y_lo = F.ny > 1 ? -0.8 * L.b : 0.0;
   F.y_hi = F.ny > 1 ? 0.8 * L.b : 0.0;
+  F.y_min = F.ny > 1 ? -L.b : 0.0;  // the lateral refinement may reach the edges
+  F.y_max = F.ny > 1 ? L.b : 0.0;
   return field_peaks(F, o);
 }
 

@@ -56,6 +56,7 @@ struct SubsurfaceOptions {
   int nz = 24;           ///< search grid in depth, z from z_min to z_max (× min(a, b))
   double z_min = 0.02;   ///< [-] shallowest depth searched, × min(a, b) (the surface itself is not)
   double z_max = 1.5;    ///< [-] deepest, × min(a, b)
+  double y_tol = 0.01;   ///< [-] the lateral refinement's tolerance, × min(a, b)
 };
 
 /// [Pa] The stress at (x, y, z), z > 0, inside the ellipse's projection or outside it.
@@ -83,17 +84,22 @@ struct SubsurfacePeaks {
 SubsurfacePeaks subsurface_peaks(const HertzLoad& L, const SubsurfaceOptions& o = {});
 
 /// A stress field below a surface load, for the peak search: the stress at (x, y, z); the loaded
-/// chord [x_lo, x_hi] at y (the pass of the load along x runs over 0.98 of it); the rows searched,
-/// ny values of y evenly over [y_lo, y_hi] (one row at their mean when ny = 1); the length that
-/// scales the depths searched (SubsurfaceOptions::z_min, z_max).
+/// chord [x_lo, x_hi] at y (the pass of the load along x runs over 0.98 of it); the rows of the
+/// coarse scan, ny values of y evenly over [y_lo, y_hi] (one row at their mean when ny = 1); the
+/// bounds of the lateral refinement [y_min, y_max] (NaN: y_lo, y_hi); the length that scales the
+/// depths searched (SubsurfaceOptions::z_min, z_max).
 struct StressField {
   std::function<Stress(double x, double y, double z)> stress;
   std::function<std::pair<double, double>(double y)> chord;
   double depth_scale = 0;
   int ny = 1;
   double y_lo = 0, y_hi = 0;
+  double y_min = NAN, y_max = NAN;
 };
-/// The peaks of a field (as subsurface_peaks, which is this search on the Hertz field).
+/// The peaks of a field (as subsurface_peaks, which is this search on the Hertz field): a coarse
+/// scan of passes over the rows × the depths of SubsurfaceOptions, then each quantity refined from
+/// its best point of each of its two best lateral maxima, in depth, across (between the
+/// neighbouring rows) and in depth again; the von Mises and principal shear peaks along x too.
 SubsurfacePeaks field_peaks(const StressField& F, const SubsurfaceOptions& o = {});
 
 /// [Pa] Subsurface fatigue index in the Dang Van form of Ekberg, Kabo & Andersson (2002):

@@ -13,9 +13,9 @@
 //   exact steady-rolling solver (half_space/tangential_rolling.hpp, itself within 0.001 μN of
 //   CONTACT), an independent solver: FASTSIM is Kalker's simplified theory, so the difference is
 //   FASTSIM's error plus the two grids'; tolerances 1.5 × the measured (comments). FASTSIM's
-//   traction gives the amplitudes that FI_sub takes (orthogonal shear, τ_eq,a) within 1e-4 p0 of
+//   traction gives the amplitudes that FI_sub takes (orthogonal shear, τ_eq,a) within 4e-4 p0 of
 //   the exact solver's, where full slip at the same |F|/N misses them by 5e-3 to 8e-3 p0; the
-//   von Mises peak it gives 2.9e-3 p0 high (full slip: 5e-4 p0).
+//   von Mises peak it gives 3.6e-3 p0 high (full slip: 1.5e-3 p0).
 // Broken once to see it fail: FASTSIM's traction taken on the wheel (not reversed to the rail's):
 // at full slip the von Mises peak moved to the other side (x 0.49 a off), at partial slip the
 // shear peaks and amplitudes failed by 10 to 400 tolerances.
@@ -140,20 +140,22 @@ TEST_CASE("Ellipse stresses with FASTSIM's traction: partial slip against the ex
   CAPTURE(P.tau_max / p0, R.tau_max / p0, F.peaks.tau_max / p0);
   CAPTURE(P.tau_orth_amp / p0, R.tau_orth_amp / p0, F.peaks.tau_orth_amp / p0);
   CAPTURE(P.tau_eq_amp / p0, R.tau_eq_amp / p0, F.peaks.tau_eq_amp / p0);
-  // Measured 29 Nov 2026 (in p0, b, a): von Mises 0.6341 against 0.6312 (2.9e-3) at 0.572 b against
-  // 0.575 b, x one search step apart (0.082 a); (σ1 − σ3)/2 0.3327 against 0.3313 (1.4e-3);
-  // orthogonal shear amplitude 0.18266 against 0.18268 (2.4e-5); τ_eq,a 0.25742 against 0.25733
-  // (8.8e-5). Full slip at the same |F|/N (the source without the cells) misses the two amplitudes
-  // by 8.3e-3 and 4.5e-3 (and the von Mises peak by 5e-4).
+  // Measured 29 Nov 2026 with the search refined across (in p0, b, a): von Mises 0.6356 against
+  // 0.6320 (3.6e-3) at 0.570 b against 0.575 b, x 0.027 a apart; (σ1 − σ3)/2 0.3335 against 0.3317
+  // (1.8e-3); orthogonal shear amplitude 0.18284 against 0.18275 (9.7e-5); τ_eq,a 0.25803 against
+  // 0.25767 (3.6e-4). (With the former search on fixed rows, the same rows for both loads: 2.4e-5
+  // and 8.8e-5; each load's own lateral maximum now.) Full slip at the same |F|/N (the source
+  // without the cells) misses the two amplitudes by 8.4e-3 and 4.8e-3 (and the von Mises peak by
+  // 1.5e-3).
   CHECK(std::fabs(P.vm_max - R.vm_max) <= 4.3e-3 * p0);
   CHECK(std::fabs(P.vm_z - R.vm_z) <= 6e-3 * b);
   CHECK(std::fabs(P.vm_x - R.vm_x) <= 0.12 * a);
   CHECK(std::fabs(P.tau_max - R.tau_max) <= 2e-3 * p0);
-  CHECK(std::fabs(P.tau_orth_amp - R.tau_orth_amp) <= 4e-5 * p0);
-  CHECK(std::fabs(P.tau_eq_amp - R.tau_eq_amp) <= 1.3e-4 * p0);
+  CHECK(std::fabs(P.tau_orth_amp - R.tau_orth_amp) <= 1.5e-4 * p0);
+  CHECK(std::fabs(P.tau_eq_amp - R.tau_eq_amp) <= 5.4e-4 * p0);
   // The test can fail: the full-slip source misses the amplitudes by many tolerances.
-  CHECK(std::fabs(F.peaks.tau_orth_amp - R.tau_orth_amp) > 20 * 4e-5 * p0);
-  CHECK(std::fabs(F.peaks.tau_eq_amp - R.tau_eq_amp) > 20 * 1.3e-4 * p0);
+  CHECK(std::fabs(F.peaks.tau_orth_amp - R.tau_orth_amp) > 20 * 1.5e-4 * p0);
+  CHECK(std::fabs(F.peaks.tau_eq_amp - R.tau_eq_amp) > 8 * 5.4e-4 * p0);
 }
 
 TEST_CASE("Ellipse stresses with FASTSIM's traction: a spinning flange contact against the exact solver's traction",

@@ -12,7 +12,7 @@
 // element along x, every second row, the points' positions from its own pressure centroid): the
 // largest von Mises stress and where it is; the orthogonal shear amplitude (half the range of σ_xz
 // along a row, 0 included; the largest row). The hidden test also prints the subsurface columns' own
-// peaks (the search of grid_subsurface_peaks), not checked: a known limit (docs/outputs.md).
+// peaks (the search of grid_subsurface_peaks), checked on CONTACT's own load in test_grid_subsurface_peaks.cpp.
 // Tolerances in MPa and mm at about 1.5 × the differences measured on 29 Nov 2026 (below).
 #include <catch2/catch.hpp>
 
@@ -163,8 +163,7 @@ void compare(std::size_t row, const std::vector<double>& zs, bool report) {
     CHECK(std::abs(m.orth - d.orth) <= tol.orth);
   }
   if (report) {
-    // The subsurface columns' own search (grid_subsurface_peaks): on the tread patch its 9 rows
-    // over 0.8 of the loaded width miss the lateral von Mises maximum (docs/outputs.md).
+    // The subsurface columns' own search (grid_subsurface_peaks; held in test_grid_subsurface_peaks.cpp).
     const SubsurfacePeaks pk = grid_subsurface_peaks(s.load);
     WARN(name << " peaks: vm " << pk.vm_max / kMPa << " at " << pk.vm_z / kMm << " mm, orth " << pk.tau_orth_amp / kMPa
               << " at " << pk.tau_orth_z / kMm);
