@@ -71,6 +71,7 @@ void close_grid_case(const PatchCheckInput* in, std::size_t n, double Q, double 
   if (r.status == CaseStatus::Ok && std::fabs(r.residual) > residual_tol) {
     r.status = CaseStatus::NotConverged;
     r.message = "force balance residual " + format_number(r.residual);
+    r.warnings.push_back(Warning(WarningClass::NotConvergedLoad).add(Quantity::Residual, r.residual, '>', residual_tol));
   }
   check_grid_result(in, n, Q, r);
 }

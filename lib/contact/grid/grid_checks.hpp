@@ -115,7 +115,7 @@ void check_grid_result(const PatchCheckInput* in, std::size_t n, double Q, CaseR
 /// The end of a grid method's case body, once for both methods: the reported patches numbered
 /// 1 … n in their order, n_contacts, the residual (Fz − Q)/Q, and the method's convergence rule on
 /// it: an ok row whose |residual| exceeds `residual_tol` did not settle the load (not_converged,
-/// "force balance residual R"); then check_grid_result, whose force_balance check holds the rows
+/// "force balance residual R", the warning not_converged_load:residual=R>tol); then check_grid_result, whose force_balance check holds the rows
 /// left ok to kForceBalanceRtol. `residual_tol`: the half-space method 10 force_rtol across
 /// several patches (one patch carries the load by its own solve) and no bound on one patch, so
 /// that force_balance judges it; the strip method kForceBalanceRtol.

@@ -117,6 +117,9 @@ ApproachBalance balance_approach(const std::vector<PatchSolver*>& solvers, const
   if (std::fabs(root.f) > opt.force_rtol * Q) {
     b.ok = false;
     b.message = "force balance not reached in " + std::to_string(outer) + " iterations on the approach";
+    b.failure = Warning(WarningClass::NotConvergedLoad)
+                    .add(Quantity::Residual, root.f / Q, '>', opt.force_rtol)
+                    .add(Quantity::Iterations, outer);
   }
   return b;
 }
@@ -141,11 +144,15 @@ void drive_patches(const WheelRailGap& gap, double Q, double dz_est, const Patch
   const double margin = opt.margin;  // the grid covers the interpenetration at margin × dz_ref,
   double grow = 1;                    // its extents (x, s) times this
   double prev_ref = NAN, prev_dz = NAN;  // the last placement that was not outgrown: dz_ref ↦ dz
+  // The last placement's exit test, for the warning of one that did not settle.
+  int n_outgrown = 0, first_outgrown = 0;
+  double last_change = 0, last_tol = 0;
   bool settled = false;
   for (int pass = 0; pass < opt.max_passes && !settled; ++pass) {
     ++R.passes;
     R.status = CaseStatus::Ok;
     R.message.clear();
+    R.failure = Warning();
     std::vector<PatchRegion>& old_regions = S.regions;
     std::vector<PatchSolver*>& old_solvers = S.solvers;
     old_regions.swap(R.regions);
@@ -160,10 +167,14 @@ void drive_patches(const WheelRailGap& gap, double Q, double dz_est, const Patch
     R.solvers.clear();
     for (const auto& reg : R.regions) {
       std::string why;
-      PatchSolver* s = make(reg, dz_ref, &why);
+      Warning failure(WarningClass::NotConvergedSetup);
+      PatchSolver* s = make(reg, dz_ref, &why, &failure);
       if (!s) {
         R.status = CaseStatus::NotConverged;
         R.message = why;
+        R.failure = failure;
+        R.failure.kind = ContactKind::Patch;
+        R.failure.contact = static_cast<int>(R.solvers.size()) + 1;
         return;
       }
       // Warm start from the previous placement's solver nearest in rail y, if any.
@@ -179,6 +190,7 @@ void drive_patches(const WheelRailGap& gap, double Q, double dz_est, const Patch
     if (R.solvers.empty()) {
       R.status = CaseStatus::NotConverged;
       R.message = "no interpenetration region found";
+      R.failure = Warning(WarningClass::NotConvergedSetup).add(Quantity::Patches, 0);
       return;
     }
     if (R.solvers.size() == 1) {
@@ -200,13 +212,27 @@ void drive_patches(const WheelRailGap& gap, double Q, double dz_est, const Patch
       if (!b.ok) {
         R.status = CaseStatus::NotConverged;
         R.message = b.message;
+        R.failure = b.failure;
       }
     }
     bool outgrown = false;
-    for (PatchSolver* s : R.solvers) {
-      if (s->failed()) { R.status = CaseStatus::NotConverged; R.message = s->why(); }
-      outgrown = outgrown || s->outgrown();
+    n_outgrown = first_outgrown = 0;
+    for (std::size_t k = 0; k < R.solvers.size(); ++k) {
+      PatchSolver* s = R.solvers[k];
+      if (s->failed()) {
+        R.status = CaseStatus::NotConverged;
+        R.message = s->why();
+        R.failure = s->failure();
+        R.failure.kind = ContactKind::Patch;
+        R.failure.contact = static_cast<int>(k) + 1;
+      }
+      if (s->outgrown()) {
+        outgrown = true;
+        if (n_outgrown++ == 0) first_outgrown = static_cast<int>(k) + 1;
+      }
     }
+    last_change = std::fabs(dz - dz_ref);
+    last_tol = opt.ref_rtol * std::fabs(dz);
     if (outgrown || dz > margin * dz_ref || std::fabs(dz - dz_ref) > opt.ref_rtol * dz) {
       // The planes go where the solution is (dz). An outgrown grid that already covered the
       // interpenetration at the solution's approach gets more room (margin × 1.3); one that did
@@ -241,6 +267,14 @@ void drive_patches(const WheelRailGap& gap, double Q, double dz_est, const Patch
     R.status = CaseStatus::NotConverged;
     R.message = "the contact patches did not settle (edge reached or planes moving) after " +
                 std::to_string(opt.max_passes) + " placements";
+    // Which exit held at the last placement: patches at their grid's edge (the first named),
+    // the approach still moving (dz > margin·dz_ref implies a move above ref_rtol·dz), or both.
+    Warning& w = R.failure;
+    w = Warning(WarningClass::NotConvergedPlacement, n_outgrown ? ContactKind::Patch : ContactKind::None,
+                first_outgrown);
+    w.add(Quantity::Placements, opt.max_passes);
+    if (n_outgrown) w.add(Quantity::EdgeReached, n_outgrown);
+    if (last_change > last_tol) w.add(Quantity::ApproachChange, last_change, '>', last_tol);
   }
 }
 
@@ -256,9 +290,20 @@ ApproachBalance rebalance_refined(PatchDriverResult& D, const std::vector<PatchS
   }
   const ApproachBalance b = balance_approach(solvers, cos_gamma, Q, dz_start, opt);
   r.approach = b.dz;
-  for (PatchSolver* ps : solvers)
-    if (ps->failed()) { r.status = CaseStatus::NotConverged; r.message = ps->why(); }
-  if (!b.ok) { r.status = CaseStatus::NotConverged; r.message = b.message; }
+  for (std::size_t n = 0; n < solvers.size(); ++n)
+    if (solvers[n]->failed()) {
+      r.status = CaseStatus::NotConverged;
+      r.message = solvers[n]->why();
+      Warning w = solvers[n]->failure();
+      w.kind = ContactKind::Patch;
+      w.contact = static_cast<int>(n) + 1;
+      r.warnings.push_back(w);
+    }
+  if (!b.ok) {
+    r.status = CaseStatus::NotConverged;
+    r.message = b.message;
+    r.warnings.push_back(b.failure);
+  }
   return b;
 }
 

@@ -28,9 +28,11 @@ class PatchSolver {
   virtual double at_approach(double delta) = 0;
   /// Load control: solve for normal force N [N]; returns the normal approach δ [m].
   virtual double at_load(double N) = 0;
-  /// The last solve did not converge (message in why()).
+  /// The last solve did not converge (message in why(), what did not converge as data in
+  /// failure(): its class and measures; the caller names the patch).
   virtual bool failed() const = 0;
   virtual std::string why() const = 0;
+  virtual Warning failure() const = 0;
   /// The last solution reaches the edge of what was set up (grid or strips): set up larger.
   virtual bool outgrown() const = 0;
   /// Take the solution of `previous` (the same patch at the previous placement, possibly another
@@ -39,10 +41,12 @@ class PatchSolver {
 };
 
 /// Builds the solver of one patch (region, plane) for the wheel at vertical approach dz_ref.
-/// Returns nullptr and sets *why when the patch cannot be set up (e.g. too many elements). The
+/// Returns nullptr and sets *why and *failure (class not_converged_setup, with what was measured)
+/// when the patch cannot be set up (e.g. too many elements). The
 /// solver belongs to the method (a pool of its workspace, reused from case to case: SolverPool)
 /// and stays valid until the method's case ends.
-using PatchSolverFactory = std::function<PatchSolver*(const PatchRegion& region, double dz_ref, std::string* why)>;
+using PatchSolverFactory =
+    std::function<PatchSolver*(const PatchRegion& region, double dz_ref, std::string* why, Warning* failure)>;
 
 /// The patch solvers of a grid method's case, kept from case to case so that their grids and
 /// vectors keep their capacity: take() hands out the next one (made on first need), begin_case()
@@ -74,6 +78,9 @@ struct PatchDriverOptions {
 struct PatchDriverResult {
   CaseStatus status = CaseStatus::Ok;
   std::string message;
+  /// What did not converge when status is NotConverged (a not_converged_* class with its
+  /// measures; docs/status.md): the case's warning.
+  Warning failure;
   double dz = 0;            ///< [m] the rigid vertical approach of the solution
   int evaluations = 0;      ///< patch solves (all passes)
   int passes = 0;           ///< placements of the patches
@@ -202,8 +209,9 @@ double rigid_plastic_approach(const WheelRailGap& gap, double Q, double p_lim, P
 /// evaluations of the sum; every solver is left holding its solution at the δz returned.
 struct ApproachBalance {
   double dz = 0;         ///< [m]
-  bool ok = true;        ///< false: not within force_rtol (message says so)
+  bool ok = true;        ///< false: not within force_rtol (message and failure say so)
   std::string message;
+  Warning failure;       ///< when !ok: not_converged_load with the residual and the iterations
   int evaluations = 0;   ///< patch solves
 };
 ApproachBalance balance_approach(const std::vector<PatchSolver*>& solvers, const std::vector<double>& cos_gamma,
@@ -212,7 +220,8 @@ ApproachBalance balance_approach(const std::vector<PatchSolver*>& solvers, const
 /// After some patches of D were refined locally (grid_checks.hpp, under_resolved), the shared
 /// approach found again with them (eqs. 10–11, every patch in approach control): refined[n], when
 /// not null, replaces D.solvers[n]. A failed patch solve or an unbalanced load makes r
-/// not_converged with the reason; r.approach becomes the new approach. Returns the balance.
+/// not_converged with the reason (message and warning); r.approach becomes the new approach.
+/// Returns the balance.
 ApproachBalance rebalance_refined(PatchDriverResult& D, const std::vector<PatchSolver*>& refined, double Q,
                                   double dz_start, const PatchDriverOptions& opt, CaseResult& r);
 

@@ -145,6 +145,10 @@ struct HalfSpacePatch : public PatchSolver {
   }
   bool failed() const override { return last.status == GridStatus::NotConverged; }
   std::string why() const override { return "the half-space solver did not converge on a patch grid"; }
+  Warning failure() const override {
+    Warning w(WarningClass::NotConvergedCg);
+    return w.add(Quantity::CgError, last.error, '>', cg_.tol).add(Quantity::Iterations, last.iterations);
+  }
   bool outgrown() const override {  // pressure on the grid's edge
     for (int i = 0; i < nx; ++i)
       if (p[static_cast<std::size_t>(i)] > 0 || p[static_cast<std::size_t>(i + nx * (ns - 1))] > 0) return true;
@@ -281,18 +285,20 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
     HalfSpaceWorkspace::Impl& ws;
   } make{gap, opt, H, p_lim, ws};
   PatchDriverResult& D = ws.grid.driver;
-  drive_patches(gap, Q, dz_est, dopt, [&make](const PatchRegion& reg, double dz_ref, std::string* why) -> PatchSolver* {
+  drive_patches(gap, Q, dz_est, dopt, [&make](const PatchRegion& reg, double dz_ref, std::string* why, Warning* failure) -> PatchSolver* {
     HalfSpacePatch& k = make.ws.patches.take();
     k.setup(make.gap, reg, dz_ref, make.opt, make.H, make.p_lim, make.ws);
     if (!k.ok()) {
       *why = "a contact patch would need " + std::to_string(static_cast<long>(k.nx) * k.ns) +
              " elements (more than " + std::to_string(kMaxElements) + "): use larger dx_mm/ds_mm";
+      failure->add(Quantity::Elements, static_cast<double>(k.nx) * k.ns, '>', kMaxElements);
       return nullptr;
     }
     return &k;
   }, D);
   r.status = D.status;
   r.message = D.message;
+  if (D.status == CaseStatus::NotConverged) r.warnings.push_back(D.failure);
   double dz = D.dz;
   const int outer = D.evaluations;  // patch solves, all placements
   // Results per patch and for the case.

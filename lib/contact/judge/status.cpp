@@ -54,6 +54,15 @@ const std::vector<WarningClassInfo>& warning_classes() {
       // Friction given, but the row's method does not solve the tangential problem yet
       // (contact/tangential/tangential_solve.hpp): its creep forces are empty, not 0.
       {C::TangentialUnsupported, "tangential_unsupported", true, "friction given, but the row's tangential problem is not solved (half-space or strips: a patch's exact solve failed or the bodies' elastic constants differ): its creep-force columns are empty (docs/tangential.md)"},
+      // What did not converge on a grid row whose status is not_converged (docs/status.md). A
+      // validity class, so that a row carrying one is never `ok` (the status says not_converged).
+      {C::NotConvergedPlacement, "not_converged_placement", true, "the grid's patches did not settle in their placements: a patch reached its grid's edge (edge_reached) or the approach moved by more than ref_rtol (approach_change_um) at the last placement (patch_driver.hpp)"},
+      {C::NotConvergedSetup, "not_converged_setup", true, "a grid patch could not be set up (more elements than the grid allows, or no interpenetration region)"},
+      {C::NotConvergedLoad, "not_converged_load", true, "the load was not reached: the patches' forces off Q, or a strip patch's load control that did not close (residual)"},
+      {C::NotConvergedActiveSet, "not_converged_active_set", true, "a strip patch's active set (q >= 0) did not settle within max_active_set passes"},
+      {C::NotConvergedPlasticSet, "not_converged_plastic_set", true, "a strip patch's plastic set did not settle within max_active_set passes (strips_capped: newly capped in the last pass)"},
+      {C::NotConvergedEndGap, "not_converged_end_gap", true, "a strip patch's end-gap extents did not settle (extents_moved: the last pass's relative move)"},
+      {C::NotConvergedCg, "not_converged_cg", true, "a half-space patch's CG solve did not reach its tolerance (cg_error)"},
   };
   return k;
 }
@@ -118,6 +127,15 @@ const QuantityInfo& info(Quantity q) {
       {"r_roll_mm", "m", 1e3, Fmt::Round3, Fmt::Round3},
       {"pmax_band", "1", 1, Fmt::Round3, Fmt::Raw},
       {"area_band", "1", 1, Fmt::Round3, Fmt::Raw},
+      {"placements", "count", 1, Fmt::Count, Fmt::Count},
+      {"approach_change_um", "m", 1e6, Fmt::Round3, Fmt::Round3},
+      {"edge_reached", "count", 1, Fmt::Count, Fmt::Count},
+      {"patches", "count", 1, Fmt::Count, Fmt::Count},
+      {"passes", "count", 1, Fmt::Count, Fmt::Count},
+      {"strips_capped", "count", 1, Fmt::Count, Fmt::Count},
+      {"extents_moved", "1", 1, Fmt::Raw, Fmt::Raw},
+      {"cg_error", "1", 1, Fmt::Raw, Fmt::Raw},
+      {"iterations", "count", 1, Fmt::Count, Fmt::Count},
   };
   return k[static_cast<std::size_t>(q)];
 }

@@ -45,6 +45,15 @@ enum class WarningClass : std::uint8_t {
   Derailed,
   SmoothingSensitive,
   TangentialUnsupported,
+  // Why a grid row is not_converged (patch_driver.hpp, the strip and half-space solvers): one
+  // class per exit, each with what was measured at it.
+  NotConvergedPlacement,
+  NotConvergedSetup,
+  NotConvergedLoad,
+  NotConvergedActiveSet,
+  NotConvergedPlasticSet,
+  NotConvergedEndGap,
+  NotConvergedCg,
 };
 /// The class's name as written ("non_hertzian").
 const char* to_string(WarningClass c);
@@ -99,6 +108,15 @@ enum class Quantity : std::uint8_t {
   RRoll,                ///< [m] rolling radius at the main contact    "r_roll_mm"
   PmaxBand,             ///< [1] largest |pmax(L/2 or 2L) − pmax(L)| / pmax(L) "pmax_band"
   AreaBand,             ///< [1] the same for the total area           "area_band"
+  Placements,           ///< [count] placements of the patches made (the limit max_passes) "placements"
+  ApproachChange,       ///< [m] |δz − δz_ref| of the last placement, limit ref_rtol·δz "approach_change_um"
+  EdgeReached,          ///< [count] patches whose solution reached their grid's edge "edge_reached"
+  Patches,              ///< [count] interpenetration regions found       "patches"
+  Passes,               ///< [count] passes of an iteration (the limit it ran to) "passes"
+  StripsCapped,         ///< [count] strips newly capped in the plastic set's last pass "strips_capped"
+  ExtentsMoved,         ///< [1] Σ|Δa| / Σa of the end-gap extents' last pass "extents_moved"
+  CgError,              ///< [1] the CG's convergence measure ε (NormalCGOptions::tol) "cg_error"
+  Iterations,           ///< [count] iterations made                      "iterations"
 };
 /// The written name ("edge_gap_mm") and the SI unit of value and limit ("1", "m", "Pa", "count").
 const char* name(Quantity q);

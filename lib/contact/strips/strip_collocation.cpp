@@ -285,6 +285,7 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
         }
       }
       for (int ii : newly) capped_column(c, ii);
+      c.newly_capped = static_cast<int>(newly.size());
     }
     if (!any) c.settled = true;
   }
@@ -394,6 +395,9 @@ StripResult Solver::assemble(double delta, double p_lim, const Collocation& c) c
     res.status = StripStatus::NotConverged;
     res.message = !c.as_ok ? "active set (q >= 0) did not settle within max_active_set passes"
                            : "plastic set did not settle within max_active_set passes";
+    res.failure = Warning(!c.as_ok ? WarningClass::NotConvergedActiveSet : WarningClass::NotConvergedPlasticSet);
+    res.failure.add(Quantity::Passes, opt.max_active_set);
+    if (c.as_ok) res.failure.add(Quantity::StripsCapped, c.newly_capped, '>', 0);
   }
   const int m = static_cast<int>(c.cand.size());
   double qmax = 0.0;

@@ -46,6 +46,7 @@ struct Collocation {
                                 ///< of strips not capped are not set)
   bool as_ok = true;            ///< the active set settled
   bool settled = true;          ///< the plastic set settled
+  int newly_capped = 0;         ///< strips newly capped in the plastic set's last pass
   /// Factorisations of K restricted to sets of candidates (indices ii), reused across approaches:
   /// each collocation restarts its plastic passes from the elastic set, and along a load iteration
   /// at fixed extents the passes meet the same sets again. Cleared when K changes; at most

@@ -268,6 +268,9 @@ StripResult refine_extents(const Solver& S, bool load_given, double target, doub
       os << "end-gap extents did not settle in " << kMaxPasses << " passes (the last moved the extents by "
          << moved / total << " of their sum)";
       res.message = os.str();
+      res.failure = Warning(WarningClass::NotConvergedEndGap)
+                        .add(Quantity::Passes, kMaxPasses)
+                        .add(Quantity::ExtentsMoved, moved / total, '>', rtol);
       res.iterations = pass;
       return res;
     }

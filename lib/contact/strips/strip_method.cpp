@@ -105,6 +105,10 @@ struct StripPatch : public PatchSolver {
   }
   bool failed() const override { return last.status == StripStatus::NotConverged || last.status == StripStatus::InvalidInput; }
   std::string why() const override { return "strip solver: " + last.message; }
+  Warning failure() const override {
+    // An invalid input is a patch that could not be set up (its geometry refused: strip_patch.cpp).
+    return last.status == StripStatus::InvalidInput ? Warning(WarningClass::NotConvergedSetup) : last.failure;
+  }
   bool outgrown() const override {  // the first or last strip carries load
     for (const auto& st : last.strips)
       if (st.index == 0 || st.index + 1 == static_cast<int>(geo.s.size())) return true;
@@ -212,13 +216,14 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
     StripWorkspace::Impl& ws;
   } make{gap, opt, H, p_lim, ws};
   PatchDriverResult& D = ws.grid.driver;
-  drive_patches(gap, Q, dz_est, dopt, [&make](const PatchRegion& reg, double dz_ref, std::string*) -> PatchSolver* {
+  drive_patches(gap, Q, dz_est, dopt, [&make](const PatchRegion& reg, double dz_ref, std::string*, Warning*) -> PatchSolver* {
     StripPatch& k = make.ws.patches.take();
     k.setup(make.gap, reg, dz_ref, make.opt, make.H, make.p_lim);
     return &k;
   }, D);
   r.status = D.status;
   r.message = D.message;
+  if (D.status == CaseStatus::NotConverged) r.warnings.push_back(D.failure);
   r.approach = D.dz;
   int evaluations = 0;
   // The physical checks' inputs of the reported patches: ws.grid.checks[0 … n_checks).

@@ -257,6 +257,9 @@ StripResult StripSolver::estimate_at_load(double Nt, const std::vector<int>* war
       os << "N(delta) jumps across the target at delta = " << hi << " m (closest N = " << best.N
          << " N); returned the closest iterate";
       best.message = os.str();
+      best.failure = Warning(WarningClass::NotConvergedLoad)
+                         .add(Quantity::Residual, (best.N - Nt) / Nt, '>', opt.load_rtol)
+                         .add(Quantity::Iterations, it);
       best.iterations = it;
       return best;
     }
@@ -271,6 +274,9 @@ StripResult StripSolver::estimate_at_load(double Nt, const std::vector<int>* war
   }
   best.status = StripStatus::NotConverged;
   best.message = "load not reached within max_iterations; returned the closest iterate";
+  best.failure = Warning(WarningClass::NotConvergedLoad)
+                     .add(Quantity::Residual, (best.N - Nt) / Nt, '>', opt.load_rtol)
+                     .add(Quantity::Iterations, opt.max_iterations);
   best.iterations = opt.max_iterations;
   return best;
 }

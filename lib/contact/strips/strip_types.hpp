@@ -26,6 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "contact/judge/status.hpp"
+
 namespace mh {
 
 /// Undeformed gap of one contact patch, sampled on lateral strips.
@@ -58,6 +60,9 @@ struct StripState {
 struct StripResult {
   StripStatus status = StripStatus::NoContact;
   std::string message;
+  /// NotConverged or InvalidInput: what did not converge, as data (a not_converged_* class with
+  /// its measures; the patch is named by the caller).
+  Warning failure;
   int iterations = 0;     ///< delta iterations (load control), 0 for approach given
   double delta = 0.0;     ///< [m] approach
   double N = 0.0;         ///< [N] normal load

@@ -23,8 +23,11 @@ TEST_CASE("diagnosis: the R3-corner rail at 0.2 / 0.1 mm spacing, t_Y 6 mm", "[.
         const mh::ContactGeometry g = mh::build_geometry(base.wheel, rn, cf.track, cf.geometry);
         for (double Q : {40e3, 100e3}) {
           const mh::CaseResult a = mh::solve_strip_method(g, cf.material, 6e-3, Q, cf.strips);
-          std::printf("step %.1f noise %.0f seed %d Q %.0f: %s pmax %.1f iters %d msg: %s\n", step * 1e3, noise * 1e6,
-                      static_cast<int>(s), Q / 1e3, mh::to_string(a.status), a.pmax / 1e6, a.iterations, a.message.c_str());
+          std::string warnings;
+          for (const mh::Warning& w : a.warnings) warnings += " " + mh::warning_text(w);
+          std::printf("step %.1f noise %.0f seed %d Q %.0f: %s pmax %.1f iters %d msg: %s; warnings:%s\n", step * 1e3,
+                      noise * 1e6, static_cast<int>(s), Q / 1e3, mh::to_string(a.status), a.pmax / 1e6, a.iterations,
+                      a.message.c_str(), warnings.c_str());
         }
       }
 }
