@@ -16,6 +16,7 @@
 #include <string>
 
 #include "contact/rcf/grid_subsurface.hpp"
+#include "support/contact_elements.hpp"
 #include "support/data_csv.hpp"
 
 using namespace mh;
@@ -32,31 +33,12 @@ GridLoad contact_load(const std::string& name) {
   std::size_t r = 0;
   while (r < cases.rows.size() && cases.rows[r][0] != name) ++r;
   REQUIRE(r < cases.rows.size());
-  GridLoad G;
-  G.dx = csv_num(cases, r, "dx_mm") * kMm, G.dy = csv_num(cases, r, "dy_mm") * kMm;
-  G.nu = csv_num(cases, r, "nu");
   const CsvTable e = read_data_csv("contact_subsurface/" + name + "_elements.csv");
   REQUIRE(!e.rows.empty());
-  double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
-  for (std::size_t k = 0; k < e.rows.size(); ++k) {
-    const double x = csv_num(e, k, "x_mm") * kMm, y = csv_num(e, k, "y_mm") * kMm;
-    xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
-  }
-  G.x0 = xmin, G.y0 = ymin;
-  G.nx = static_cast<int>(std::lround((xmax - xmin) / G.dx)) + 1;
-  G.ny = static_cast<int>(std::lround((ymax - ymin) / G.dy)) + 1;
-  const std::size_t n = static_cast<std::size_t>(G.nx * G.ny);
-  G.p.assign(n, 0.0), G.qx.assign(n, 0.0), G.qy.assign(n, 0.0);
-  bool traction = false;
-  for (std::size_t k = 0; k < e.rows.size(); ++k) {
-    const long i = std::lround((csv_num(e, k, "x_mm") * kMm - G.x0) / G.dx);
-    const long j = std::lround((csv_num(e, k, "y_mm") * kMm - G.y0) / G.dy);
-    const std::size_t m = static_cast<std::size_t>(i + G.nx * j);
-    G.p[m] = csv_num(e, k, "pn_MPa") * kMPa;
-    G.qx[m] = csv_num(e, k, "px_MPa") * kMPa;  // CONTACT's traction on body 1, the body of its stresses
-    G.qy[m] = csv_num(e, k, "py_MPa") * kMPa;
-    traction = traction || G.qx[m] != 0 || G.qy[m] != 0;
-  }
+  GridLoad G = mh::test::grid_load_from_elements(e, csv_num(cases, r, "dx_mm") * kMm, csv_num(cases, r, "dy_mm") * kMm,
+                                                 csv_num(cases, r, "nu"), "y_mm", "py_MPa");
+  const bool traction = std::any_of(G.qx.begin(), G.qx.end(), [](double q) { return q != 0; }) ||
+                        std::any_of(G.qy.begin(), G.qy.end(), [](double q) { return q != 0; });
   if (!traction) G.qx.clear(), G.qy.clear();
   return G;
 }

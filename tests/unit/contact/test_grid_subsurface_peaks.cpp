@@ -22,6 +22,7 @@
 #include <string>
 
 #include "contact/rcf/grid_subsurface.hpp"
+#include "support/contact_elements.hpp"
 #include "support/data_csv.hpp"
 
 using namespace mh;
@@ -38,26 +39,7 @@ const std::string kDir = "contact_subsurface_wheelrail/";
 GridLoad contact_tread_load() {
   const CsvTable e = read_data_csv(kDir + "tread_yaw_pressure.csv");
   REQUIRE(e.rows.size() == 1147);
-  GridLoad G;
-  G.dx = G.dy = 0.2 * kMm, G.nu = 0.28;
-  double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
-  for (std::size_t k = 0; k < e.rows.size(); ++k) {
-    const double x = csv_num(e, k, "x_mm") * kMm, y = csv_num(e, k, "s_mm") * kMm;
-    xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
-  }
-  G.x0 = xmin, G.y0 = ymin;
-  G.nx = static_cast<int>(std::lround((xmax - xmin) / G.dx)) + 1;
-  G.ny = static_cast<int>(std::lround((ymax - ymin) / G.dy)) + 1;
-  const std::size_t n = static_cast<std::size_t>(G.nx * G.ny);
-  G.p.assign(n, 0.0), G.qx.assign(n, 0.0), G.qy.assign(n, 0.0);
-  for (std::size_t k = 0; k < e.rows.size(); ++k) {
-    const long i = std::lround((csv_num(e, k, "x_mm") * kMm - G.x0) / G.dx);
-    const long j = std::lround((csv_num(e, k, "s_mm") * kMm - G.y0) / G.dy);
-    const std::size_t m = static_cast<std::size_t>(i + G.nx * j);
-    G.p[m] = csv_num(e, k, "pn_MPa") * kMPa;
-    G.qx[m] = csv_num(e, k, "px_MPa") * kMPa, G.qy[m] = csv_num(e, k, "ps_MPa") * kMPa;
-  }
-  return G;
+  return mh::test::grid_load_from_elements(e, 0.2 * kMm, 0.2 * kMm, 0.28, "s_mm", "ps_MPa");
 }
 
 // CONTACT's largest von Mises stress and orthogonal shear amplitude over its depths [MPa].
