@@ -10,6 +10,15 @@
 
 namespace mh {
 
+namespace {
+// A patch's failure as the row's warning: the solver's measures, on the patch numbered k + 1.
+Warning patch_failure(Warning w, std::size_t k) {
+  w.kind = ContactKind::Patch;
+  w.contact = static_cast<int>(k) + 1;
+  return w;
+}
+}  // namespace
+
 bool begin_grid_case(const ContactGeometry& G, const Material& mat, double tY, double Q, double roll,
                      const CaseResult* elastic_mh, CaseResult& r, GridStart* gs) {
   r.dz = NAN;
@@ -172,9 +181,7 @@ void drive_patches(const WheelRailGap& gap, double Q, double dz_est, const Patch
       if (!s) {
         R.status = CaseStatus::NotConverged;
         R.message = why;
-        R.failure = failure;
-        R.failure.kind = ContactKind::Patch;
-        R.failure.contact = static_cast<int>(R.solvers.size()) + 1;
+        R.failure = patch_failure(failure, R.solvers.size());
         return;
       }
       // Warm start from the previous placement's solver nearest in rail y, if any.
@@ -222,9 +229,7 @@ void drive_patches(const WheelRailGap& gap, double Q, double dz_est, const Patch
       if (s->failed()) {
         R.status = CaseStatus::NotConverged;
         R.message = s->why();
-        R.failure = s->failure();
-        R.failure.kind = ContactKind::Patch;
-        R.failure.contact = static_cast<int>(k) + 1;
+        R.failure = patch_failure(s->failure(), k);
       }
       if (s->outgrown()) {
         outgrown = true;
@@ -294,10 +299,7 @@ ApproachBalance rebalance_refined(PatchDriverResult& D, const std::vector<PatchS
     if (solvers[n]->failed()) {
       r.status = CaseStatus::NotConverged;
       r.message = solvers[n]->why();
-      Warning w = solvers[n]->failure();
-      w.kind = ContactKind::Patch;
-      w.contact = static_cast<int>(n) + 1;
-      r.warnings.push_back(w);
+      r.warnings.push_back(patch_failure(solvers[n]->failure(), n));
     }
   if (!b.ok) {
     r.status = CaseStatus::NotConverged;
