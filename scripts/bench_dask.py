@@ -11,7 +11,10 @@ THREADS=T sets fleet()'s threads (each shard's threads; default 1); SPLIT=pairs 
 into one shard per pair (as before --shard-by cases), SPLIT=cases SHARDS=S into S slices of the
 cases; default fleet()'s own plan (plan_shards). Besides the wall times it
 prints the CPU time (user + sys) of the local runs and of the route (the workers' processes and
-this one, the client's merge included), which other jobs on a shared machine stretch less.
+this one, the client's merge included), which other jobs on a shared machine stretch less, and
+Dask's own CPU time over the same wall time with nothing to compute (a sleeping task per worker).
+DASK_DISTRIBUTED__WORKER__PROFILE__ENABLED=False turns the workers' statistical profiler off
+(Dask's own setting, read by the workers it starts; docs/cluster.md#dask).
 """
 import filecmp
 import os
@@ -23,6 +26,7 @@ import sys
 import tempfile
 import time
 
+import dask
 import mhcontact
 from dask.distributed import Client, LocalCluster
 
@@ -76,6 +80,13 @@ def main():
             t_dask = time.time() - t0
             cpu_client = own_cpu() - c0
             cpu_workers = workers_cpu() - w0
+            # Dask's own CPU with nothing to compute, over the same wall time: one sleeping task
+            # per worker (the event loops, heartbeats, memory monitor and the statistical profiler
+            # of each worker; the scheduler in this process).
+            w0, c0, t0 = workers_cpu(), own_cpu(), time.time()
+            client.gather([client.submit(time.sleep, t_dask, pure=False) for _ in range(ncores)])
+            t_idle = time.time() - t0
+            cpu_idle = workers_cpu() - w0 + own_cpu() - c0
         t_local2 = local("local2")
         a, b = os.path.join(tmp, "local1"), os.path.join(tmp, "dask")
         for root, _, files in os.walk(a):
@@ -85,11 +96,14 @@ def main():
                 rel = os.path.relpath(os.path.join(root, f), a)
                 assert filecmp.cmp(os.path.join(a, rel), os.path.join(b, rel), shallow=False), rel
         mean_local = (t_local1 + t_local2) / 2
+        profiler = "on" if dask.config.get("distributed.worker.profile.enabled") else "off"
         print(f"{method}, {cases} cases, {ncores} cores: local {t_local1:.2f} s and {t_local2:.2f} s "
               f"({1e6 * mean_local / cases:.1f} us a case); Dask {t_dask:.2f} s ({1e6 * t_dask / cases:.1f} us a case, "
               f"{res['shards']} shards, split {os.environ.get('SPLIT') or 'planned'}): {100 * (t_dask / mean_local - 1):+.1f} % over the mean local; the same bytes; "
               f"CPU s: local {cpu_local[0]:.2f} and {cpu_local[1]:.2f}, Dask workers {cpu_workers:.2f} + client {cpu_client:.2f} "
-              f"({100 * ((cpu_workers + cpu_client) / (sum(cpu_local) / 2) - 1):+.1f} %)")
+              f"({100 * ((cpu_workers + cpu_client) / (sum(cpu_local) / 2) - 1):+.1f} %); "
+              f"Dask idle over {t_idle:.1f} s: {cpu_idle:.2f} s CPU ({100 * cpu_idle / (sum(cpu_local) / 2):.1f} % of the local CPU); "
+              f"workers' profiler {profiler}")
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 
