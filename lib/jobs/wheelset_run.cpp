@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "core/errors.hpp"
+#include "core/parallel.hpp"
 #include "core/numfmt.hpp"
 #include "core/units.hpp"
 #include "geometry/conicity.hpp"
@@ -224,49 +225,42 @@ int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostrea
   const Wheelset track(stand_in, stand_in, rl, wc.one_rail ? rl : rr, wc.placement, sweep_options(wc));
   const std::size_t n = wc.fleet.size();
   std::vector<FleetRow> rows(n);
-  std::atomic<std::size_t> next{0};
-  auto work = [&]() {
-    for (std::size_t i; (i = next++) < n;) {
-      FleetRow& r = rows[i];
-      r.source = wc.fleet[i].label();
-      try {
-        const Profile w = load_profile(wc.fleet[i], ProfileKind::Wheel);
-        const WheelMeasures m = fleet_measures(w, r);
-        // The wheel is both wheels of the fleet's wheelset; EN 15313's band by the larger diameter.
-        const double D = std::max(wheel_diameter(wc.placement, -1), wheel_diameter(wc.placement, +1));
-        const WheelMeasureCheck mc = check_wheel_measures(r.m_en[0], r.m_en[1], r.m_en[2], D);
-        r.measures_check = mc.status;
-        const Wheelset ws(track, w, w);
-        const std::vector<WheelsetState> st = ws.sweep(wc.y, 1);
-        const auto C = conicity_of(wc.y, st);
-        if (!C) throw InputError(r.source, "", "no contact found over the sweep");
-        const FlangewayClearance fc = flangeway_clearance(ws, m, m);
-        std::string why;
-        const ConicityResult h = conicity_checked(*C, wc.y, st, kHeadlineAmplitude, fc, &why);
-        r.head = h.tan_gamma_e;
-        if (h.status != "ok") r.status = h.status, r.message = "tan_gamma_e at 3 mm: " + h.status + (why.empty() ? "" : ": " + why);
-        for (double A : wc.amplitudes) {
-          if (fleet_headline_amplitude(A)) continue;  // the tan_gamma_e_3mm column already
-          const ConicityResult c = conicity_checked(*C, wc.y, st, A, fc, &why);
-          r.tg.push_back(c.tan_gamma_e);
-          if (c.status != "ok" && r.status == "ok")
-            r.status = c.status, r.message = "amplitude " + format_number(A * 1e3) + " mm: " + c.status + (why.empty() ? "" : ": " + why);
-        }
-        if (!mc.violations.empty()) r.message += (r.message.empty() ? "" : "; ") + mc.text(D);
-      } catch (const InputError& e) {
-        r.status = kInvalidWheel;
-        r.message = replace_all(e.what(), wc.fleet[i].file, wc.fleet[i].given);
-        r.tg.clear();
-        for (double A : wc.amplitudes)
-          if (!fleet_headline_amplitude(A)) r.tg.push_back(std::nan(""));
+  // One wheel an item, on the library's pool (core/parallel.hpp).
+  parallel_for(n, opt.threads, 1, [] { return 0; }, [&](std::size_t i, int&) {
+    FleetRow& r = rows[i];
+    r.source = wc.fleet[i].label();
+    try {
+      const Profile w = load_profile(wc.fleet[i], ProfileKind::Wheel);
+      const WheelMeasures m = fleet_measures(w, r);
+      // The wheel is both wheels of the fleet's wheelset; EN 15313's band by the larger diameter.
+      const double D = std::max(wheel_diameter(wc.placement, -1), wheel_diameter(wc.placement, +1));
+      const WheelMeasureCheck mc = check_wheel_measures(r.m_en[0], r.m_en[1], r.m_en[2], D);
+      r.measures_check = mc.status;
+      const Wheelset ws(track, w, w);
+      const std::vector<WheelsetState> st = ws.sweep(wc.y, 1);
+      const auto C = conicity_of(wc.y, st);
+      if (!C) throw InputError(r.source, "", "no contact found over the sweep");
+      const FlangewayClearance fc = flangeway_clearance(ws, m, m);
+      std::string why;
+      const ConicityResult h = conicity_checked(*C, wc.y, st, kHeadlineAmplitude, fc, &why);
+      r.head = h.tan_gamma_e;
+      if (h.status != "ok") r.status = h.status, r.message = "tan_gamma_e at 3 mm: " + h.status + (why.empty() ? "" : ": " + why);
+      for (double A : wc.amplitudes) {
+        if (fleet_headline_amplitude(A)) continue;  // the tan_gamma_e_3mm column already
+        const ConicityResult c = conicity_checked(*C, wc.y, st, A, fc, &why);
+        r.tg.push_back(c.tan_gamma_e);
+        if (c.status != "ok" && r.status == "ok")
+          r.status = c.status, r.message = "amplitude " + format_number(A * 1e3) + " mm: " + c.status + (why.empty() ? "" : ": " + why);
       }
+      if (!mc.violations.empty()) r.message += (r.message.empty() ? "" : "; ") + mc.text(D);
+    } catch (const InputError& e) {
+      r.status = kInvalidWheel;
+      r.message = replace_all(e.what(), wc.fleet[i].file, wc.fleet[i].given);
+      r.tg.clear();
+      for (double A : wc.amplitudes)
+        if (!fleet_headline_amplitude(A)) r.tg.push_back(std::nan(""));
     }
-  };
-  const unsigned nt = static_cast<unsigned>(std::min<std::size_t>(thread_count(opt.threads), std::max<std::size_t>(n, 1)));
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < nt; ++t) pool.emplace_back(work);
-  work();
-  for (auto& th : pool) th.join();
+  });
 
   RunDirectory rd(opt.out_dir);
   std::size_t n_ok = 0;
@@ -300,7 +294,7 @@ int fleet_job(const WheelsetCase& wc, const WheelsetRunOptions& opt, std::ostrea
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!opt.quiet)
     err << "wheelset fleet: " << n << " wheels, " << n_ok << " ok, " << (n - n_ok) << " refused or incomplete ("
-        << format_number(std::round(secs * 100) / 100) << " s, " << nt << " threads)\n";
+        << format_number(std::round(secs * 100) / 100) << " s, " << parallel_threads(n, opt.threads, 1) << " threads)\n";
   out << "wrote " << opt.out_dir << "/fleet.csv (" << n << " wheels, " << n_ok << " ok)\n";
   return n_ok == n ? kExitOk : kExitCasesFailed;
 }
