@@ -138,10 +138,11 @@ TEST_CASE("placement: a solve with no positive approach is placed again shallowe
   CHECK(d.R.dz == Approx(125e-6).epsilon(1e-12));
 }
 
-TEST_CASE("placement: the noisy R3 gauge corner at t_Y 6 mm settles, within 5 % of the noise-free corner", "[not_converged]") {
+TEST_CASE("placement: the noisy R3 gauge corner at t_Y 6 mm settles, within 1.7 % of the noise-free corner", "[not_converged]") {
   // 0.1 mm print step, ±1 µm of noise, seed 10: all 8 of its seeds × loads were not_converged
   // before the shallower placement (docs/strips.md). The noise-free R3 corner is the reference of
-  // profiles.md §7 (the pressure on a noisy profile within 5 % of the noise-free one's).
+  // profiles.md §7 (the pressure on a noisy profile within 5 % of the noise-free one's); measured
+  // 6532.6 against 6606.8 MPa (−1.12 %), the tolerance about 1.5 times that.
   const CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/s1002-60e1.json", true);
   const PairGeometry base = build_pair_geometry(cf);
   const double cant = std::atan(1.0 / 40);
@@ -154,7 +155,7 @@ TEST_CASE("placement: the noisy R3 gauge corner at t_Y 6 mm settles, within 5 % 
   CAPTURE(a.message, b.message);
   REQUIRE(a.status == CaseStatus::Ok);
   REQUIRE(b.status == CaseStatus::Ok);
-  CHECK(std::fabs(a.pmax - b.pmax) <= 0.05 * b.pmax);
+  CHECK(std::fabs(a.pmax - b.pmax) <= 0.017 * b.pmax);
 }
 
 TEST_CASE("not_converged: the warning in cases.csv, results.json and through the C interface", "[not_converged]") {
