@@ -264,10 +264,9 @@ void drive_patches(const WheelRailGap& gap, double Q, double dz_est, const Patch
         dz_ref *= 1.3;
       } else {
         // No positive approach carries the load on these planes: they were placed far too deep
-        // (a start from a multi-Hertzian approach of 4–5 mm on a noisy R3 gauge corner, against
-        // 0.3–0.6 mm where it converges, gave a region 70 mm wide at γ 30–41° instead of the
-        // corner's 62–64°, and a strip solve at δ of −13 … −1300 mm). Placed again the same,
-        // it gives the same answer: place it shallower.
+        // (a multi-Hertzian start of 4–5 mm on a noisy R3 gauge corner, where 0.3–0.6 mm settles,
+        // spans 70 mm at γ 30–41° instead of the corner's 62–64°). The same planes give the same
+        // answer again: place them shallower.
         dz_ref *= 0.5;
       }
       continue;
