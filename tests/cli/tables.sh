@@ -16,7 +16,7 @@ mkdir -p out
 rc=$?
 # Exit 1: coarse cells at flange onset and t_Y nodes without an answer, dropped (docs/tables.md).
 check "example exit 1" test $rc -eq 1
-check "summary line" grep -q '^mhcontact table: 28 x 4 nodes, 5 contact tracks, .* 9 coarse cells, 2 t_Y nodes without an answer (dropped)$' stderr.txt
+check "summary line" grep -q '^mhcontact table: 28 x 4 nodes, 5 contact tracks, .* 10 coarse cells, 2 t_Y nodes without an answer (dropped)$' stderr.txt
 check "header schema" grep -q '^# {.*"schema":"mhcontact.table/1"' out/table.csv
 check "column line" test "$(sed -n 2p out/table.csv)" = "tY_mm,Q_kN,status,contact,present,N_kN,y_rail_mm,z_rail_mm,y_wheel_mm,gamma_deg,r_roll_mm,pmax_MPa,area_mm2,a_mm,b_mm,a_el_mm,b_el_mm,C11,C22,C23"
 check "rows: 28 x 4 nodes x 5 tracks" test "$(tail -n +3 out/table.csv | wc -l)" -eq 560
