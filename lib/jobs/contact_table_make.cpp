@@ -318,6 +318,14 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   ContactTableData data;
   std::vector<TableCheckError> checks;
   std::vector<std::uint8_t> cell_fail;
+  // The centres (t_Y [mm], Q [kN]) of the cells of the grid tY_mm × Q_kN, cell by cell (t_Y outer).
+  auto cell_centres = [&] {
+    std::vector<std::pair<double, double>> centres;
+    for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i)
+      for (std::size_t j = 0; j + 1 < Q_kN.size(); ++j)
+        centres.emplace_back(rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])), 0.5 * (Q_kN[j] + Q_kN[j + 1]));
+    return centres;
+  };
   // The table `data` against the direct solves at its cells' centres (solved already): `checks`,
   // and the cells beyond a tolerance marked in `cell_fail`.
   auto check_cells = [&](const std::vector<std::pair<double, double>>& centres) {
@@ -337,10 +345,7 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
     for (double t : tY_mm)
       for (double q : Q_kN) pts.emplace_back(t, q);
     std::vector<std::pair<double, double>> centres;
-    if (opt.check)
-      for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i)
-        for (std::size_t j = 0; j + 1 < Q_kN.size(); ++j)
-          centres.emplace_back(rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])), 0.5 * (Q_kN[j] + Q_kN[j + 1]));
+    if (opt.check) centres = cell_centres();
     // The nodes and the centres of their cells in one batch (one pass of shards).
     std::vector<std::pair<double, double>> batch = pts;
     batch.insert(batch.end(), centres.begin(), centres.end());
@@ -461,11 +466,7 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   // PCHIP slopes of their neighbours change): its error is checked again at the centres of its
   // own cells, so that the header's error and `checks` are those of the table written.
   if (opt.check && !dropped.empty()) {
-    const std::size_t nQc = Q_kN.size() - 1;
-    std::vector<std::pair<double, double>> centres;
-    for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i)
-      for (std::size_t j = 0; j < nQc; ++j)
-        centres.emplace_back(rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])), 0.5 * (Q_kN[j] + Q_kN[j + 1]));
+    const std::vector<std::pair<double, double>> centres = cell_centres();
     if (!solve_missing(centres)) return made;
     check_cells(centres);
     data.cell_coarse = cell_fail;

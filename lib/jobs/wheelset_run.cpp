@@ -2,7 +2,6 @@
 #include "jobs/wheelset_run.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cctype>
 #include <cmath>
@@ -12,8 +11,8 @@
 #include <thread>
 
 #include "core/errors.hpp"
-#include "core/parallel.hpp"
 #include "core/numfmt.hpp"
+#include "core/parallel.hpp"
 #include "core/units.hpp"
 #include "geometry/conicity.hpp"
 #include "geometry/conicity_domain.hpp"

@@ -65,6 +65,15 @@ double N_of(const TableAnswer& a, int track) {
   return 0;
 }
 
+// The maker's options of these tests: two threads, no progress lines, `refine` rounds.
+TableMakeOptions quiet_options(int refine) {
+  TableMakeOptions opt;
+  opt.threads = 2;
+  opt.quiet = true;
+  opt.refine = refine;
+  return opt;
+}
+
 }  // namespace
 
 TEST_CASE("table lookup reproduces a bilinear field and its derivatives exactly", "[tables]") {
@@ -252,10 +261,7 @@ TEST_CASE("table: a cell whose area misses its tolerance is coarse and not ok", 
   const CaseFile cf = parse_case_json(j, data + "table_area.json", true);
   const PairGeometry pg = build_pair_geometry(cf);
   std::ostringstream err;
-  TableMakeOptions opt;
-  opt.threads = 2;
-  opt.quiet = true;
-  opt.refine = 0;
+  const TableMakeOptions opt = quiet_options(0);
   const TableMade made = make_contact_table(cf, pg, opt, err);
   const std::size_t nQ = made.data.Q.size();
   REQUIRE(made.checks.size() == (made.data.tY.size() - 1) * (nQ - 1));
@@ -376,10 +382,7 @@ TEST_CASE("table with dropped t_Y nodes: its error is that of the table written,
   cf.sweep_tY_mm.n = 3;
   const PairGeometry pg = build_pair_geometry(cf);
   std::ostringstream err;
-  TableMakeOptions opt;
-  opt.threads = 2;
-  opt.quiet = true;
-  opt.refine = 2;
+  const TableMakeOptions opt = quiet_options(2);
   const TableMade made = make_contact_table(cf, pg, opt, err);
   REQUIRE(!made.data.header["dropped_tY_mm"].empty());
   const std::size_t nT = made.data.tY.size(), nQ = made.data.Q.size();
