@@ -14,7 +14,11 @@ prints the CPU time (user + sys) of the local runs and of the route (the workers
 this one, the client's merge included), which other jobs on a shared machine stretch less, and
 Dask's own CPU time over the same wall time with nothing to compute (a sleeping task per worker).
 DASK_DISTRIBUTED__WORKER__PROFILE__ENABLED=False turns the workers' statistical profiler off
-(Dask's own setting, read by the workers it starts; docs/cluster.md#dask).
+(Dask's own setting, read by the workers it starts; docs/cluster.md#dask); Dask's idle cost is
+set by its intervals too (DASK_DISTRIBUTED__ADMIN__TICK__INTERVAL=1s,
+DASK_DISTRIBUTED__ADMIN__SYSTEM_MONITOR__INTERVAL=5s,
+DASK_DISTRIBUTED__WORKER__MEMORY__MONITOR_INTERVAL=1s), printed with the figures. The workers'
+CPU includes their nannies'.
 """
 import filecmp
 import os
@@ -70,8 +74,9 @@ def main():
                           processes=True) as cluster, Client(cluster) as client:
             client.run(lambda: __import__("mhcontact") and 0)  # the module loaded in each worker
 
-            def workers_cpu():
-                return sum(client.run(lambda: sum(resource.getrusage(resource.RUSAGE_SELF)[:2])).values())
+            def workers_cpu():  # the workers' processes and their nannies'
+                own = lambda: sum(resource.getrusage(resource.RUSAGE_SELF)[:2])
+                return sum(client.run(own).values()) + sum(client.run(own, nanny=True).values())
 
             w0, c0, t0 = workers_cpu(), own_cpu(), time.time()
             shards = int(os.environ["SHARDS"]) if os.environ.get("SHARDS") else None
@@ -97,13 +102,15 @@ def main():
                 assert filecmp.cmp(os.path.join(a, rel), os.path.join(b, rel), shallow=False), rel
         mean_local = (t_local1 + t_local2) / 2
         profiler = "on" if dask.config.get("distributed.worker.profile.enabled") else "off"
+        intervals = ", ".join(f"{k} {dask.config.get('distributed.' + k)}" for k in
+                              ("admin.tick.interval", "admin.system-monitor.interval", "worker.memory.monitor-interval"))
         print(f"{method}, {cases} cases, {ncores} cores: local {t_local1:.2f} s and {t_local2:.2f} s "
               f"({1e6 * mean_local / cases:.1f} us a case); Dask {t_dask:.2f} s ({1e6 * t_dask / cases:.1f} us a case, "
               f"{res['shards']} shards, split {os.environ.get('SPLIT') or 'planned'}): {100 * (t_dask / mean_local - 1):+.1f} % over the mean local; the same bytes; "
               f"CPU s: local {cpu_local[0]:.2f} and {cpu_local[1]:.2f}, Dask workers {cpu_workers:.2f} + client {cpu_client:.2f} "
               f"({100 * ((cpu_workers + cpu_client) / (sum(cpu_local) / 2) - 1):+.1f} %); "
               f"Dask idle over {t_idle:.1f} s: {cpu_idle:.2f} s CPU ({100 * cpu_idle / (sum(cpu_local) / 2):.1f} % of the local CPU); "
-              f"workers' profiler {profiler}")
+              f"workers' profiler {profiler}; {intervals}")
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

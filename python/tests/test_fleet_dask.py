@@ -120,3 +120,36 @@ def test_a_worker_that_shares_the_file_system_sends_nothing_back(tmp_path):
     fl._place(files, str(tmp_path / "client" / "shard1"))
     names = same_files(shard, str(tmp_path / "client" / "shard1"))
     assert "cases.csv" in names
+
+
+def test_the_documented_dask_settings_reach_the_workers():
+    """docs/cluster.md's settings for CPU-bound shards (the export block of its Dask section): each
+    a key of Dask's own configuration, and the workers of a LocalCluster started in that
+    environment run with them (a misspelt key would be ignored by Dask without a word)."""
+    import json
+    import re
+    import sys
+
+    import dask
+    text = open(os.path.join(SRC, "docs", "cluster.md")).read()
+    block = re.search(r"```sh\n\s*(export DASK_.*?)```", text, re.S).group(1)
+    env = dict(re.findall(r"(DASK_[A-Z_]+)=(\S+?)\s*\\?\n", block))
+    assert len(env) == 4, env
+    keys = {}
+    for name, value in env.items():
+        key = name[len("DASK_"):].lower().replace("__", ".").replace("_", "-")
+        assert dask.config.get(key, default=None) is not None, (name, key)  # a key of Dask's defaults
+        keys[key] = value
+    probe = ("import json, dask\n"
+             "from dask.distributed import Client, LocalCluster\n"
+             "if __name__ == '__main__':\n"
+             "    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, host='127.0.0.1',\n"
+             "                      dashboard_address=None) as cluster, Client(cluster) as c:\n"
+             "        keys = %r\n"
+             "        got = c.run(lambda: {k: str(dask.config.get(k)) for k in keys})\n"
+             "        print(json.dumps(list(got.values())[0]))\n" % sorted(keys))
+    out = subprocess.run([sys.executable, "-c", probe], env={**os.environ, **env}, capture_output=True,
+                         text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    got = json.loads(out.stdout.strip().splitlines()[-1])
+    assert got == {k: v for k, v in keys.items()}, (got, keys)
