@@ -32,7 +32,7 @@ import time
 
 import dask
 import mhcontact
-from dask.distributed import Client, LocalCluster
+from dask.distributed import Client, LocalCluster, get_task_stream
 
 src = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 binary = os.path.realpath(os.environ.get("MHCONTACT", os.path.join(src, "build", "mhcontact")))
@@ -80,9 +80,21 @@ def main():
 
             w0, c0, t0 = workers_cpu(), own_cpu(), time.time()
             shards = int(os.environ["SHARDS"]) if os.environ.get("SHARDS") else None
-            res = mhcontact.fleet(case, client, os.path.join(tmp, "dask"), threads=int(os.environ.get("THREADS", "1")),
-                                  shards=shards, split=os.environ.get("SPLIT") or None)
+            with get_task_stream(client) as stream:
+                res = mhcontact.fleet(case, client, os.path.join(tmp, "dask"), threads=int(os.environ.get("THREADS", "1")),
+                                      shards=shards, split=os.environ.get("SPLIT") or None)
             t_dask = time.time() - t0
+            # Each worker's shards: how long it computed and when it ended, against the route's start
+            # (the spread of the ends is the time one worker waited for the other's last shard).
+            busy, end = {}, {}
+            for task in stream.data:
+                for part in task["startstops"]:
+                    if part["action"] == "compute":
+                        w = task["worker"]
+                        busy[w] = busy.get(w, 0) + part["stop"] - part["start"]
+                        end[w] = max(end.get(w, 0), part["stop"] - t0)
+            workers = "; ".join(f"worker {i + 1}: {busy[w]:.2f} s computing, ended at {end[w]:.2f} s"
+                                for i, w in enumerate(sorted(busy)))
             cpu_client = own_cpu() - c0
             cpu_workers = workers_cpu() - w0
             # Dask's own CPU with nothing to compute, over the same wall time: one sleeping task
@@ -111,6 +123,7 @@ def main():
               f"({100 * ((cpu_workers + cpu_client) / (sum(cpu_local) / 2) - 1):+.1f} %); "
               f"Dask idle over {t_idle:.1f} s: {cpu_idle:.2f} s CPU ({100 * cpu_idle / (sum(cpu_local) / 2):.1f} % of the local CPU); "
               f"workers' profiler {profiler}; {intervals}")
+        print(f"shards by worker: {workers}")
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 
