@@ -129,13 +129,14 @@ def plan_shards(unit, units, cases, method, slots):
     run hold equal case counts whatever the pairs. The multi-Hertzian method costs about the
     same per case on every pair (tens of µs): one shard per slot, and the slots finish together
     with the least fixed cost (each shard reads its profiles and builds its pairs' geometry). The
-    grid methods (milliseconds a case, and pairs that differ several-fold in cost): four shards a
-    slot, handed out as slots free up, so that a slot ends at most about a quarter of its share
-    after the others. At most one shard a case."""
+    grid methods (milliseconds a case, and pairs that differ several-fold in cost): eight shards a
+    slot, handed out as slots free up, so that a slot ends at most about an eighth of its share
+    after the others (with four, the workers' ends were 7-19 % of the run apart; docs/cluster.md).
+    At most one shard a case."""
     if unit == "case":
         # A case file: slices of its cases, as before (four a slot).
         return max(1, min(units, 4 * slots)), False
-    per_slot = 1 if method == "multi-hertzian" else 4
+    per_slot = 1 if method == "multi-hertzian" else 8
     return max(1, min(cases, per_slot * slots)), True
 
 

@@ -75,12 +75,12 @@ def test_fleet_pairs_cut_across_shards(client, tmp_path):
 
 
 def test_plan_shards():
-    # A manifest: by cases; multi-Hertzian one shard a slot, grid methods four; never more
+    # A manifest: by cases; multi-Hertzian one shard a slot, grid methods eight; never more
     # shards than cases. A case file: four a slot, as before.
     from mhcontact.fleet import plan_shards
     assert plan_shards("pair", 4, 96012, "multi-hertzian", 2) == (2, True)
-    assert plan_shards("pair", 4, 396, "strips", 2) == (8, True)
-    assert plan_shards("pair", 4, 396, "half-space", 8) == (32, True)
+    assert plan_shards("pair", 4, 396, "strips", 2) == (16, True)
+    assert plan_shards("pair", 4, 396, "half-space", 8) == (64, True)
     assert plan_shards("pair", 1, 3, "strips", 2) == (3, True)
     assert plan_shards("case", 99, 99, "multi-hertzian", 2) == (8, False)
 
