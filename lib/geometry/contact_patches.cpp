@@ -11,26 +11,69 @@ constexpr double kRegionStep = 0.02e-3;  // [m] sampling of g(y) for the regions
 
 std::vector<PatchRegion> find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, double d_comb) {
   std::vector<PatchRegion> out;
-  std::vector<std::pair<double, double>> scratch;
+  RegionScratch scratch;
   find_patch_regions(gap, dz_ref, dz_grid, d_comb, out, scratch);
   return out;
 }
 
 void find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, double d_comb,
-                        std::vector<PatchRegion>& out, std::vector<std::pair<double, double>>& merged) {
-  // The intervals merged in place: an interval closer than d_comb to the last kept one extends it.
-  gap.interpenetration(dz_grid, kRegionStep, merged);
+                        std::vector<PatchRegion>& out, RegionScratch& scratch) {
+  auto& grid = scratch.grid;
+  auto& cores = scratch.cores;
+  auto& merged = scratch.merged;
+  gap.interpenetration(dz_grid, kRegionStep, grid);
+  if (dz_ref < dz_grid) gap.interpenetration(dz_ref, kRegionStep, cores);
+  else cores = grid;
+  // Segments of the intervals at dz_grid, each with the span of its cores (the interpenetration at
+  // dz_ref inside it; NaN if none). An interval whose cores lie d_comb or more apart is split at the
+  // gap's largest value between them: regions that are separate at the solution's approach stay
+  // separate patches although the wider interpenetration of the grid (margin × dz_ref) joins them.
+  merged.clear();
+  std::size_t c = 0;
+  for (const auto& G : grid) {
+    double start = G.first, core_lo = NAN, core_hi = NAN;
+    for (; c < cores.size() && cores[c].first <= G.second; ++c) {
+      if (core_lo == core_lo && cores[c].first - core_hi >= d_comb) {
+        double y_cut = core_hi, g_cut = -INFINITY;  // the split: the gap's largest value between them
+        for (double y = core_hi; y <= cores[c].first; y += kRegionStep) {
+          const double g = gap.g(y);
+          if (g > g_cut) { g_cut = g; y_cut = y; }
+        }
+        merged.push_back({start, y_cut, core_lo, core_hi});
+        start = y_cut;
+        core_lo = NAN;
+      }
+      if (!(core_lo == core_lo)) core_lo = cores[c].first;
+      core_hi = cores[c].second;
+    }
+    merged.push_back({start, G.second, core_lo, core_hi});
+  }
+  // Neighbouring segments of different intervals closer than d_comb are one patch: measured
+  // between their cores where both have one (the regions at the solution's approach, as CONTACT
+  // combines the regions at its current position), between the intervals otherwise.
   std::size_t kept = 0;
   for (std::size_t i = 0; i < merged.size(); ++i) {
-    if (kept > 0 && merged[i].first - merged[kept - 1].second < d_comb) merged[kept - 1].second = merged[i].second;
-    else merged[kept++] = merged[i];
+    RegionScratch::Segment& last = merged[kept > 0 ? kept - 1 : 0];
+    const RegionScratch::Segment& m = merged[i];
+    const bool cored = last.core_lo == last.core_lo && m.core_lo == m.core_lo;
+    const bool touching = kept > 0 && m.y_a <= last.y_b;  // split from one interval above
+    const double dist = cored ? m.core_lo - last.core_hi : m.y_a - last.y_b;
+    if (kept > 0 && !touching && dist < d_comb) {
+      last.y_b = m.y_b;
+      if (m.core_lo == m.core_lo) {
+        if (!(last.core_lo == last.core_lo)) last.core_lo = m.core_lo;
+        last.core_hi = m.core_hi;
+      }
+    } else {
+      merged[kept++] = m;
+    }
   }
   merged.resize(kept);
   out.clear();
   for (const auto& m : merged) {
     PatchRegion k;
-    k.y_a = m.first;
-    k.y_b = m.second;
+    k.y_a = m.y_a;
+    k.y_b = m.y_b;
     const int n = std::max(4, static_cast<int>((k.y_b - k.y_a) / kRegionStep));
     bool placed = false;
     for (double dz : {dz_ref, dz_grid}) {

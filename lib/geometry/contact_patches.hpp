@@ -24,12 +24,26 @@ struct PatchRegion {
 /// weighted by the squared interpenetration e(x, y)² = (dz − g(y) − x²/2r)², so that a row
 /// weighs ∫ e² dx = (16/15) e0² √(2 r e0), e0 = dz − g(y) (CONTACT's default weighting). A region
 /// that does not interpenetrate at dz_ref is weighted at dz_grid. Regions whose lateral distance
-/// is below d_comb [m] form one patch. In increasing rail y.
+/// is below d_comb [m] form one patch, the distance measured between their interpenetrations at
+/// dz_ref where both have one (the regions of the solution's approach, as CONTACT combines those
+/// of its current position): two regions that only the grid's wider interpenetration joins, d_comb
+/// or more apart at dz_ref, are two patches, split where the gap between them is largest. In
+/// increasing rail y.
 std::vector<PatchRegion> find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, double d_comb);
 
-/// The same into `out`, with `scratch` for the interpenetration intervals (both cleared first,
-/// their capacity kept: a reused pair allocates nothing once grown; the grid methods' workspaces).
+/// The working storage of find_patch_regions (cleared on use, capacity kept).
+struct RegionScratch {
+  struct Segment {
+    double y_a, y_b;          ///< [m] extent at dz_grid
+    double core_lo, core_hi;  ///< [m] span of its interpenetration at dz_ref (NaN: none)
+  };
+  std::vector<std::pair<double, double>> grid, cores;  ///< the intervals at dz_grid and dz_ref
+  std::vector<Segment> merged;
+};
+
+/// The same into `out`, with `scratch` (both cleared first, their capacity kept: a reused pair
+/// allocates nothing once grown; the grid methods' workspaces).
 void find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, double d_comb,
-                        std::vector<PatchRegion>& out, std::vector<std::pair<double, double>>& scratch);
+                        std::vector<PatchRegion>& out, RegionScratch& scratch);
 
 }  // namespace mh

@@ -148,7 +148,9 @@ void drive_patches(const WheelRailGap& gap, double Q, double dz_est, const Patch
   for (auto* v : {&R.regions, &S.regions}) v->reserve(kPatches);
   for (auto* v : {&R.solvers, &S.solvers, &S.balanced}) v->reserve(kPatches);
   S.cos_gamma.reserve(kPatches);
-  S.intervals.reserve(2 * kPatches);
+  S.intervals.grid.reserve(2 * kPatches);
+  S.intervals.cores.reserve(2 * kPatches);
+  S.intervals.merged.reserve(4 * kPatches);
   double dz_ref = dz_est, dz = dz_est;
   const double margin = opt.margin;  // the grid covers the interpenetration at margin × dz_ref,
   double grow = 1;                    // its extents (x, s) times this

@@ -91,7 +91,7 @@ struct PatchDriverResult {
   struct Scratch {
     std::vector<PatchRegion> regions;                   ///< the previous placement's
     std::vector<PatchSolver*> solvers;                  ///< ... and its solvers (warm starts)
-    std::vector<std::pair<double, double>> intervals;   ///< find_patch_regions
+    RegionScratch intervals;                             ///< find_patch_regions
     std::vector<PatchSolver*> balanced;                 ///< the solvers of one approach balance
     std::vector<double> cos_gamma;                      ///< ... and their cos γ
   } scratch;
