@@ -188,10 +188,11 @@ TEST_CASE("the normal gap meets a vertical gauge face on the face", "[flank]") {
 // combined at the grid's 1.25 times), t_Y = 6.45 mm at 100 and 140 kN never settled (the regions
 // merged into one plane that could not carry the load, split, merged again: docs/strips.md).
 // Against the planar runs (the same model), on CONTACT's grid: the patch count (patches carrying
-// more than 0.5 % of Q), each patch's normal force, the peak and the area (measured on five
-// cases, both methods; four kept, the half-space on the two that never settled: the suite's time). Tolerances about 1.5
-// times the worst measured (30 Nov 2026, printed): peak 0.5 % (strips 0.27 %, half-space 0.35 %),
-// area 2.8 % (1.87 %, 1.52 %), patch force 0.2 % of Q (0.12 %). Against the conformal runs
+// more than 0.5 % of Q), each patch's normal force, the peak and the area (measured on six
+// cases, both methods; five kept, the half-space on the two that never settled: the suite's
+// time). Tolerances about 1.5 times the worst measured (30 Nov 2026, printed): peak 1.1 %
+// (strips 0.75 % at 6.05 mm, 60 kN; half-space 0.35 %), area 2.8 % (1.87 %, 1.52 %), patch force
+// 0.2 % of Q (0.12 %). Against the conformal runs
 // (curved reference surface: the planar approach's own error, up to 6.8 % in peak pressure at
 // 6.45 mm where the flange patch spans 39 deg of rail slope) the trust table's 10 % / 15 % and
 // the patch count (its normal forces are along the curved normals, not comparable).
@@ -200,9 +201,10 @@ TEST_CASE("flange onset: the patches CONTACT makes, at the solution's approach",
   auto txt = [&](std::size_t i, const char* c) { return ref.rows[i][static_cast<std::size_t>(ref.column(c))]; };
   const mh::CaseFile cf = pair_case();
   const mh::PairGeometry pg = mh::build_pair_geometry(cf);
-  // (t_Y mm, Q kN, both methods): three patches; one plane over 56 mm; the two that never settled.
-  const std::array<std::tuple<double, double, bool>, 4> cases = {
-      {{6.1875, 50, false}, {6.4, 140, false}, {6.45, 100, true}, {6.45, 140, true}}};
+  // (t_Y mm, Q kN, both methods): two patches that were one; three patches; one plane over 56 mm;
+  // the two that never settled.
+  const std::array<std::tuple<double, double, bool>, 5> cases = {
+      {{6.05, 60, false}, {6.1875, 50, false}, {6.4, 140, false}, {6.45, 100, true}, {6.45, 140, true}}};
   for (mh::Method m : {mh::Method::Strips, mh::Method::HalfSpace}) {
     for (const auto& [tY_mm, Q_kN, both] : cases) {
       if (m == mh::Method::HalfSpace && !both) continue;  // the suite's time: the half-space on two
@@ -242,7 +244,7 @@ TEST_CASE("flange onset: the patches CONTACT makes, at the solution's approach",
                     mh::to_string(m), tY_mm, Q_kN, variant, N.size(), Nref.size(), 100 * dp, 100 * da, 100 * dN);
         CHECK(N.size() == Nref.size());
         if (planar) CHECK(dN <= 0.002);  // CONTACT's conformal force is along its curved normals
-        CHECK(std::fabs(dp) <= (planar ? 0.005 : 0.10));
+        CHECK(std::fabs(dp) <= (planar ? 0.011 : 0.10));
         CHECK(std::fabs(da) <= (planar ? 0.028 : 0.15));
       }
     }
