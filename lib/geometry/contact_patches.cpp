@@ -23,7 +23,7 @@ void find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, 
   auto& merged = scratch.merged;
   gap.interpenetration(dz_grid, kRegionStep, grid);
   if (dz_ref < dz_grid) gap.interpenetration(dz_ref, kRegionStep, cores);
-  else cores = grid;
+  else cores.assign(grid.begin(), grid.end());
   // Segments of the intervals at dz_grid, each with the span of its cores (the interpenetration at
   // dz_ref inside it; NaN if none). An interval whose cores lie d_comb or more apart is split at the
   // gap's largest value between them: regions that are separate at the solution's approach stay
@@ -33,7 +33,7 @@ void find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, 
   for (const auto& G : grid) {
     double start = G.first, core_lo = NAN, core_hi = NAN;
     for (; c < cores.size() && cores[c].first <= G.second; ++c) {
-      if (core_lo == core_lo && cores[c].first - core_hi >= d_comb) {
+      if (!std::isnan(core_lo) && cores[c].first - core_hi >= d_comb) {
         double y_cut = core_hi, g_cut = -INFINITY;  // the split: the gap's largest value between them
         for (double y = core_hi; y <= cores[c].first; y += kRegionStep) {
           const double g = gap.g(y);
@@ -43,7 +43,7 @@ void find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, 
         start = y_cut;
         core_lo = NAN;
       }
-      if (!(core_lo == core_lo)) core_lo = cores[c].first;
+      if (std::isnan(core_lo)) core_lo = cores[c].first;
       core_hi = cores[c].second;
     }
     merged.push_back({start, G.second, core_lo, core_hi});
@@ -55,13 +55,13 @@ void find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, 
   for (std::size_t i = 0; i < merged.size(); ++i) {
     RegionScratch::Segment& last = merged[kept > 0 ? kept - 1 : 0];
     const RegionScratch::Segment& m = merged[i];
-    const bool cored = last.core_lo == last.core_lo && m.core_lo == m.core_lo;
+    const bool cored = !std::isnan(last.core_lo) && !std::isnan(m.core_lo);
     const bool touching = kept > 0 && m.y_a <= last.y_b;  // split from one interval above
     const double dist = cored ? m.core_lo - last.core_hi : m.y_a - last.y_b;
     if (kept > 0 && !touching && dist < d_comb) {
       last.y_b = m.y_b;
-      if (m.core_lo == m.core_lo) {
-        if (!(last.core_lo == last.core_lo)) last.core_lo = m.core_lo;
+      if (!std::isnan(m.core_lo)) {
+        if (std::isnan(last.core_lo)) last.core_lo = m.core_lo;
         last.core_hi = m.core_hi;
       }
     } else {
