@@ -48,17 +48,21 @@ void find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, 
     }
     merged.push_back({start, G.second, core_lo, core_hi});
   }
-  // Neighbouring segments of different intervals closer than d_comb are one patch: measured
-  // between their cores where both have one (the regions at the solution's approach, as CONTACT
-  // combines the regions at its current position), between the intervals otherwise.
+  // Neighbouring segments closer than d_comb are one patch: measured between their cores where
+  // both have one (the regions at the solution's approach, as CONTACT combines the regions at its
+  // current position), between the intervals otherwise. (Segments split from one interval have
+  // cores d_comb or more apart, so they stay apart.)
   std::size_t kept = 0;
   for (std::size_t i = 0; i < merged.size(); ++i) {
-    RegionScratch::Segment& last = merged[kept > 0 ? kept - 1 : 0];
     const RegionScratch::Segment& m = merged[i];
+    if (kept == 0) {
+      merged[kept++] = m;
+      continue;
+    }
+    RegionScratch::Segment& last = merged[kept - 1];
     const bool cored = !std::isnan(last.core_lo) && !std::isnan(m.core_lo);
-    const bool touching = kept > 0 && m.y_a <= last.y_b;  // split from one interval above
     const double dist = cored ? m.core_lo - last.core_hi : m.y_a - last.y_b;
-    if (kept > 0 && !touching && dist < d_comb) {
+    if (dist < d_comb) {
       last.y_b = m.y_b;
       if (!std::isnan(m.core_lo)) {
         if (std::isnan(last.core_lo)) last.core_lo = m.core_lo;

@@ -180,7 +180,7 @@ TEST_CASE("the normal gap meets a vertical gauge face on the face", "[flank]") {
   CHECK(pg.geo.off_profile_at(7e-3, yf, gap.rail_face_foot() + 0.5 * pg.geo.strip_width));
 }
 
-// Flange onset on the same pair (t_Y 6.19-6.45 mm), where the gauge corner's and the tread's
+// Flange onset on the same pair (t_Y 6.05-6.45 mm), where the gauge corner's and the tread's
 // interpenetrations lie about 8 mm apart: whether they are one patch or several decides the
 // answer. CONTACT's runs with D_COMB 8 mm (one plane per combined patch, no blending), planar and
 // conformal (contact_S1002_60E1_1-20_flange_onset.csv, README there), combine the regions as they
