@@ -323,12 +323,12 @@ MHC_API mhc_error mhc_solve_many(const mhc_pair* pair, int32_t prescribe, size_t
 
 /** One warning of a case as data (docs/status.md, docs/c-api.md): the same as the `warnings`
  *  column of cases.csv, whose text mhc_warning_text gives. Measures are in SI (`unit`: "1", "m",
- *  "Pa" or "count"); `name` is the quantity's name in the text, which carries the text's unit
+ *  "Pa", "rad" or "count"); `name` is the quantity's name in the text, which carries the text's unit
  *  ("edge_gap_mm": the text is in mm, value_si in m). */
 #define MHC_WARNING_MAX_MEASURES 6
 typedef struct mhc_warning_measure {
   const char* name;    /**< "b_over_R", "gap_kink", "edge_gap_mm", ... (static storage) */
-  const char* unit;    /**< SI unit of value_si and limit_si: "1", "m", "Pa", "count" */
+  const char* unit;    /**< SI unit of value_si and limit_si: "1", "m", "Pa", "rad", "count" */
   double value_si;     /**< the measured value */
   double limit_si;     /**< the limit it crossed (meaningless when relation is 0) */
   int32_t relation;    /**< '>' value above the limit, '<' below, 0 no limit */

@@ -88,6 +88,10 @@ struct PatchResult {
   /// Elements (strips) across the patch in its narrow direction (grid_checks.hpp, elements_across);
   /// fewer than the method's minimum: the under_resolved warning.
   int elements_across = 0;
+  /// [m] Rail y of the element (strip) carrying the peak pressure, a capped plateau's middle row
+  /// (grid_checks.cpp; NaN: none): where the judge measures the plane's tilt against the rail
+  /// (evidence.hpp).
+  double y_peak = NAN;
   /// [m] the element size (strip width) across the patch: the method's dx, ds, or smaller where the
   /// patch was refined locally (grid_checks.hpp, kMinAcross*).
   double element = 0;

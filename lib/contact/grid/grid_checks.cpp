@@ -91,6 +91,18 @@ void check_grid_result(const PatchCheckInput* in, std::size_t n_in, double Q, Ca
   for (std::size_t k = 0; k < n_in && k < r.patches.size(); ++k) {
     const PatchCheckInput& c = in[k];
     const int patch = static_cast<int>(k) + 1;
+    if (!c.p.empty()) {  // the peak's row j along s; a capped plateau's middle row
+      const double p_top = *std::max_element(c.p.begin(), c.p.end());
+      int j_lo = -1, j_hi = -1;
+      const int nx = std::max(c.nx, 1);
+      for (std::size_t e = 0; e < c.p.size(); ++e)
+        if (c.p[e] >= p_top * (1 - 1e-9)) {
+          const int j = static_cast<int>(e) / nx;
+          if (j_lo < 0) j_lo = j;
+          j_hi = j;
+        }
+      if (p_top > 0) r.patches[k].y_peak = rail_y(c, (j_lo + j_hi) / 2);
+    }
     auto warn = [&](WarningClass cls) -> Warning& {
       r.warnings.emplace_back(cls, ContactKind::Patch, patch);
       return r.warnings.back();

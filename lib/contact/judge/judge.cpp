@@ -26,6 +26,24 @@ EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb) {
 
 namespace {
 
+// A grid patch whose plane is tilted against the rail where its pressure peaks by more than the
+// planar approach's evidence covers (evidence.hpp): beyond_evidence with the tilt.
+void add_plane_tilt_warnings(CaseResult& r, const ContactGeometry& G) {
+  const ProfileCurve* rail = G.rail_gap_curve ? G.rail_gap_curve.get() : G.rail_curve.get();
+  if (!rail) return;
+  const EvidenceDomain& d = planar_evidence_domain();
+  constexpr double deg = 3.14159265358979323846 / 180;
+  for (const PatchResult& P : r.patches) {
+    if (!std::isfinite(P.y_peak)) continue;
+    double dz = 0;
+    rail->z(P.y_peak, &dz);
+    const double tilt = std::atan(dz) - P.gamma;
+    if (std::fabs(tilt) > d.bound * deg)
+      r.warnings.push_back(Warning(WarningClass::BeyondEvidence, ContactKind::Patch, P.patch)
+                               .add(Quantity::PlaneTilt, tilt, '>', d.bound * deg));
+  }
+}
+
 void add_interaction_warning(CaseResult& r, double d_comb) {
   if (r.method != Method::MultiHertzian) return;
   const EllipseInteraction e = interacting_ellipses(r, d_comb);
@@ -45,7 +63,10 @@ void add_validity_warnings(CaseResult& r, const ContactGeometry& G, const Materi
   // solve failed: docs/status.md).
   if (r.tangential.asked && !r.tangential.solved && r.method != Method::MultiHertzian)
     r.warnings.push_back(Warning(WarningClass::TangentialUnsupported));
-  if (r.method != Method::MultiHertzian) return;
+  if (r.method != Method::MultiHertzian) {
+    add_plane_tilt_warnings(r, G);
+    return;
+  }
   add_interaction_warning(r, opt.strips.d_comb);
   if (r.status != CaseStatus::Ok || r.loaded.empty()) return;
   // The gap-corner test only where every other Hertz test passed: it samples the gap across

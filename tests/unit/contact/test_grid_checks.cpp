@@ -3,6 +3,7 @@
 // grid row keeps no pressures.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -165,4 +166,22 @@ TEST_CASE("grid checks: a not_converged grid row keeps its forces, not its press
   withhold_unconverged_pressures(ok);  // an answer keeps everything
   CHECK(ok.pmax == 1e9);
   CHECK(ok.patches.size() == 1);
+}
+
+TEST_CASE("grid checks: the peak's rail y is the peak row's, a capped plateau's middle row", "[grid][checks]") {
+  const double Q = 50e3;
+  PatchCheckInput c = hertz_patch();  // 41 rows along s, the peak on row 20
+  c.gamma = 0.3;
+  c.y_ref = 0.01;
+  c.s0 = -20 * c.ds;
+  CaseResult r = one_patch(Q / std::cos(0.3), Q);
+  check_grid_result({c}, Q, r);
+  CHECK(r.patches[0].y_peak == Approx(0.01).margin(1e-9));  // s = 0: the plane's reference point
+  // Capped at 0.8 p0: the plateau spans rows 11 … 29 (|s| ≤ 0.6 b = 1.8 mm); its middle is row 20,
+  // not its first row 11 (s = −1.8 mm), where a tilted rail would be measured at the plateau's edge.
+  for (double& p : c.p) p = std::min(p, 0.8e9);
+  c.p_lim = 0.8e9;
+  CaseResult rc = one_patch(Q / std::cos(0.3), Q);
+  check_grid_result({c}, Q, rc);
+  CHECK(rc.patches[0].y_peak == Approx(0.01).margin(1e-9));
 }
