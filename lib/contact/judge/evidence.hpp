@@ -26,7 +26,7 @@ struct EvidenceDomain {
   const char* methods;   ///< "multi-hertzian" or "half-space, strips" (as written in docs)
   PlasticLaw law;
   const char* law_name;  ///< as written in docs/trust.md
-  Quantity q;            ///< Quantity::P0ElOverSigmaY or Quantity::P0ElOverPLim
+  Quantity q;            ///< Quantity::P0ElOverSigmaY, P0ElOverPLim or PlaneTilt
   double bound;          ///< the largest value the tests establish (inclusive), in q's written unit (plane_tilt_deg: degrees)
   const char* test;      ///< the test file that establishes it (path in the repository)
   const char* evidence;  ///< what the test shows, in one sentence

@@ -27,7 +27,8 @@ EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb) {
 namespace {
 
 // A grid patch whose plane is tilted against the rail where its pressure peaks by more than the
-// planar approach's evidence covers (evidence.hpp): beyond_evidence with the tilt.
+// planar approach's evidence covers (evidence.hpp): beyond_evidence with the tilt's magnitude
+// (either side of the plane, as the bound).
 void add_plane_tilt_warnings(CaseResult& r, const ContactGeometry& G) {
   const ProfileCurve* rail = G.rail_gap_curve ? G.rail_gap_curve.get() : G.rail_curve.get();
   if (!rail) return;
@@ -37,8 +38,8 @@ void add_plane_tilt_warnings(CaseResult& r, const ContactGeometry& G) {
     if (!std::isfinite(P.y_peak)) continue;
     double dz = 0;
     rail->z(P.y_peak, &dz);
-    const double tilt = std::atan(dz) - P.gamma;
-    if (std::fabs(tilt) > d.bound * deg)
+    const double tilt = std::fabs(std::atan(dz) - P.gamma);
+    if (tilt > d.bound * deg)
       r.warnings.push_back(Warning(WarningClass::BeyondEvidence, ContactKind::Patch, P.patch)
                                .add(Quantity::PlaneTilt, tilt, '>', d.bound * deg));
   }

@@ -117,9 +117,9 @@ enum class Quantity : std::uint8_t {
   ExtentsMoved,         ///< [1] Σ|Δa| / Σa of the end-gap extents' last pass "extents_moved"
   CgError,              ///< [1] the CG's convergence measure ε (NormalCGOptions::tol) "cg_error"
   Iterations,           ///< [count] iterations made                      "iterations"
-  PlaneTilt,            ///< [rad] rail slope angle at a grid patch's peak minus its plane's γ (evidence.hpp) "plane_tilt_deg"
+  PlaneTilt,            ///< [rad] |rail slope angle at a grid patch's peak − its plane's γ| (evidence.hpp) "plane_tilt_deg"
 };
-/// The written name ("edge_gap_mm") and the SI unit of value and limit ("1", "m", "Pa", "count").
+/// The written name ("edge_gap_mm") and the SI unit of value and limit ("1", "m", "Pa", "rad", "count").
 const char* name(Quantity q);
 const char* si_unit(Quantity q);
 
