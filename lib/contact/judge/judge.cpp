@@ -7,6 +7,7 @@
 
 #include "contact/ellipse/hertz_validity.hpp"
 #include "contact/judge/evidence.hpp"
+#include "core/units.hpp"
 #include "geometry/gap.hpp"
 
 namespace mh {
@@ -33,15 +34,15 @@ void add_plane_tilt_warnings(CaseResult& r, const ContactGeometry& G) {
   const ProfileCurve* rail = G.rail_gap_curve ? G.rail_gap_curve.get() : G.rail_curve.get();
   if (!rail) return;
   const EvidenceDomain& d = planar_evidence_domain();
-  constexpr double deg = 3.14159265358979323846 / 180;
+  const double bound = d.bound * units::deg;
   for (const PatchResult& P : r.patches) {
     if (!std::isfinite(P.y_peak)) continue;
     double dz = 0;
     rail->z(P.y_peak, &dz);
     const double tilt = std::fabs(std::atan(dz) - P.gamma);
-    if (tilt > d.bound * deg)
+    if (tilt > bound)
       r.warnings.push_back(Warning(WarningClass::BeyondEvidence, ContactKind::Patch, P.patch)
-                               .add(Quantity::PlaneTilt, tilt, '>', d.bound * deg));
+                               .add(Quantity::PlaneTilt, tilt, '>', bound));
   }
 }
 
