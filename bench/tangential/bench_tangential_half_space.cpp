@@ -98,8 +98,8 @@ int main(int argc, char** argv) {
       best = std::min(best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a0).count());
     }
     const double cpu = 1e3 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC / (10 * reps);
-    std::printf("normal solve on the same grid: best %.2f ms, CPU %.2f ms per solve, %d iterations, %d elements in contact\n",
-                best, cpu, nr.iterations, nr.n_contact);
+    std::printf("normal solve on the same grid: best %.2f ms, CPU %.2f ms per solve, %d iterations, %d convolutions, %d elements in contact\n",
+                best, cpu, nr.iterations, nr.convolutions, nr.n_contact);
   }
   return 0;
 }

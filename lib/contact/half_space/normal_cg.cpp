@@ -86,8 +86,10 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
 
   // [PK] load restoration: scale the free pressures so that dx·dy·Σp = N; with a cap, elements
   // pushed to p_lim are fixed there and the scaling repeated (each pass caps ≥ 1 more element).
-  // With no element at the cap this is exactly p *= N/P, the elastic path.
-  auto restore_load = [&]() {
+  // With no element at the cap this is exactly p *= N/P, the elastic path. Returns that factor
+  // when every element was scaled by it (then C p scales by it too), else NaN.
+  auto restore_load = [&]() -> double {
+    constexpr double not_uniform = std::numeric_limits<double>::quiet_NaN();
     const double N = target;
     for (std::size_t pass = 0; pass <= n; ++pass) {
       double sum_free = 0;
@@ -104,10 +106,10 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
       if (N <= P_cap) {  // the capped elements alone carry N: scale everything down
         const double s = N / (P_cap + P_free);
         for (std::size_t e = 0; e < n; ++e) p[e] *= s;
-        return;
+        return pass == 0 ? s : not_uniform;
       }
       if (!(P_free > 0)) {  // nothing free to scale: spread the deficit over unloaded elements
-        if (n_zero == 0) return;
+        if (n_zero == 0) return not_uniform;
         const double q = std::min(p_lim, (N - P_cap) / (area * static_cast<double>(n_zero)));
         for (std::size_t e = 0; e < n; ++e)
           if (p[e] == 0) p[e] = q;
@@ -123,8 +125,9 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
           capped = true;
         }
       }
-      if (!capped) return;
+      if (!capped) return pass == 0 && n_cap == 0 ? s : not_uniform;
     }
+    return not_uniform;
   };
 
   if (load) {
@@ -135,6 +138,7 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
     // least-squares α minimising Σ_S (α (C q)_e − q_e)² over its support S.
     for (std::size_t e = 0; e < n; ++e) h[e] = std::max(target - g[e], 0.0);
     C.apply(h.data(), u.data());
+    ++result.convolutions;
     double num = 0, den = 0;
     for (std::size_t e = 0; e < n; ++e)
       if (h[e] > 0) {
@@ -148,8 +152,19 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
   double delta = target;  // load control: re-estimated every iteration
   double G_old = 0;       // Σ_F h² of the previous step
   bool reset = true;      // conjugacy reset ([PK]: after the contact set gained elements)
-  for (int it = 0;; ++it) {
-    C.apply(p, u.data());
+  // u = C p is carried from step to step where the step changed p linearly: a step that moved
+  // every free pressure by −τ t (none projected onto a bound, none re-entering) changes u by
+  // −τ C t, already computed for τ, and the elastic load restoration scales p and u alike. So a
+  // step with a settled contact set costs one convolution instead of two. Otherwise (and before
+  // convergence is accepted, so that ε is always measured on the exact u) u is convolved afresh.
+  bool u_valid = false;   // u holds C p (convolved or carried)
+  bool u_exact = false;   // ... convolved from this p
+  for (int it = 0;;) {
+    if (!u_valid) {
+      C.apply(p, u.data());
+      ++result.convolutions;
+      u_valid = u_exact = true;
+    }
 
     // Free set and, in load control, δ = mean of g + u over it ([PK]).
     std::size_t n_free = 0;
@@ -189,7 +204,11 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
     result.delta = delta;
     if (!std::isfinite(G) || !std::isfinite(violation) || std::isnan(error))
       return finish(GridStatus::NotConverged);  // numerical trouble
-    if (error <= options.tol) return finish(GridStatus::Ok);
+    if (error <= options.tol) {
+      if (u_exact) return finish(GridStatus::Ok);
+      u_valid = false;  // measure ε again on u convolved from p
+      continue;
+    }
     if (it >= max_iterations) return finish(GridStatus::NotConverged);
 
     // Conjugate direction on F ([PK]): t = h + β t_old, β = G/G_old unless reset.
@@ -201,6 +220,7 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
     double tau = 1.0 / C.self_coefficient();  // fallback with F empty: local (Jacobi) scale
     if (n_free > 0) {
       C.apply(t.data(), Ct.data());
+      ++result.convolutions;
       double mean_Ct = 0;
       if (load) {
         for (std::size_t e = 0; e < n; ++e)
@@ -221,9 +241,12 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
     // Step on F, projection onto [0, p_lim]; violators of a bound re-enter F ([PK], mirrored for
     // the cap), which resets the conjugacy.
     reset = false;
+    bool linear = n_free > 0;  // every change of p is −τ t (u can be carried)
     for (std::size_t e = 0; e < n; ++e) {
       if (in_free[e]) {
-        p[e] = std::min(std::max(p[e] - tau * t[e], 0.0), p_lim);
+        const double q = p[e] - tau * t[e];
+        linear = linear && q >= 0 && q <= p_lim;
+        p[e] = std::min(std::max(q, 0.0), p_lim);
       } else if (p[e] == 0) {
         if (h[e] < 0) {
           p[e] = std::min(-tau * h[e], p_lim);
@@ -234,7 +257,22 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
         reset = true;
       }
     }
-    if (load) restore_load();
+    linear = linear && !reset;
+    if (linear) {
+      for (std::size_t e = 0; e < n; ++e) u[e] -= tau * Ct[e];
+      u_exact = false;
+    } else {
+      u_valid = false;
+    }
+    if (load) {
+      const double s = restore_load();
+      if (!std::isfinite(s)) {
+        u_valid = false;
+      } else if (u_valid) {
+        for (std::size_t e = 0; e < n; ++e) u[e] *= s;
+      }
+    }
+    ++it;
   }
 }
 
@@ -262,12 +300,13 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
   NormalCGResult el;
   el.status = GridStatus::NotConverged;
   double delta_guess = -INFINITY;
-  int used = 0;
+  int used = 0, conv = 0;  // CG steps and convolutions of the solves so far
   if (capped_guess) {
     for (std::size_t e = 0; e < n; ++e) p[e] = std::isfinite(p[e]) ? std::min(std::max(p[e], 0.0), p_lim) : 0.0;
     std::vector<double>& u = ws.u0;
     u.assign(n, 0.0);
     C.apply(p, u.data());
+    ++conv;
     double sum = 0, top = -INFINITY;
     std::size_t n_free = 0;
     for (std::size_t e = 0; e < n; ++e) {
@@ -278,6 +317,7 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
   } else {
     el = solve(C, g, N, Control::Load, INFINITY, p, options, options.max_iterations, ws);
     used = el.iterations;
+    conv = el.convolutions;
     if (el.status != GridStatus::Ok) {
       std::copy(guess.begin(), guess.end(), p);  // the caller's guess, for the δ-loop below
     } else if (*std::max_element(p, p + n) <= p_lim) {
@@ -315,6 +355,7 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
     inner.max_iterations = std::max(1, options.max_iterations - used);
     r = solve(C, g, d, Control::Approach, p_lim, p, inner, inner.max_iterations, ws);
     used += r.iterations;
+    conv += r.convolutions;
     ++evals;
     const double f = r.N - N;
     stop = (r.status != GridStatus::Ok && r.status != GridStatus::NoContact) || std::fabs(f) <= options.tol * N ||
@@ -342,6 +383,7 @@ NormalCGResult solve_capped_load(const InfluenceGrid& C, const double* g, double
   NormalCGResult fin = solve(C, g, N, Control::Load, p_lim, p, options,
                              std::max(0, std::min(kPolishSteps, options.max_iterations - used)), ws);
   fin.iterations += used;
+  fin.convolutions += conv;
   return fin;
 }
 

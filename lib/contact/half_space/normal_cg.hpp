@@ -28,6 +28,9 @@
 // direction is centred over F ([PK]) and after each step the load is restored by scaling
 // the free pressures ([PK]); with a cap the scaling is repeated with newly capped elements
 // fixed (a water-filling pass, at most n passes, usually one).
+// Cost: two convolutions a step (C p and C t) while the contact set changes, one once it has
+// settled (C p carried as C p − τ C t, scaled with the load; normal_cg.cpp); ε is measured on a
+// C p convolved from the final p before a solve is accepted.
 #include <string>
 #include <vector>
 
@@ -46,6 +49,7 @@ enum class GridStatus {
 struct NormalCGResult {
   GridStatus status = GridStatus::NotConverged;
   int iterations = 0;  ///< CG steps taken (0 when the initial guess already satisfies tol)
+  int convolutions = 0;  ///< applications of C (the cost: one or two a step, see the CG loop)
   double N = 0;        ///< [N] total force dx·dy·Σp
   double delta = 0;    ///< [m] approach (given in approach control, found in load control)
   double error = 0;    ///< final ε (NormalCGOptions::tol); NaN for invalid input
