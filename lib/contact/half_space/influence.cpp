@@ -419,6 +419,19 @@ void InfluenceGrid::init_fft() {
       k[static_cast<std::size_t>(i) + static_cast<std::size_t>(mx_) * j] = used ? coefficient(di, dj) : 0.0;
     }
   }
+  // The same coefficients by offset, for add_sparse (copied, not evaluated again).
+  const std::size_t W = 2 * static_cast<std::size_t>(nx_) - 1;
+  direct_.assign(W * (2 * static_cast<std::size_t>(ny_) - 1), 0.0);
+  for (int j = 0; j < my_; ++j) {
+    int dj = 0;
+    if (!wrapped_offset(j, ny_, my_, &dj)) continue;
+    for (int i = 0; i < mx_; ++i) {
+      int di = 0;
+      if (wrapped_offset(i, nx_, mx_, &di))
+        direct_[static_cast<std::size_t>(di + nx_ - 1) + W * static_cast<std::size_t>(dj + ny_ - 1)] =
+            k[static_cast<std::size_t>(i) + static_cast<std::size_t>(mx_) * j];
+    }
+  }
   fft_->set_kernel(k);
 }
 
@@ -432,6 +445,20 @@ double InfluenceGrid::coefficient(int dix, int diy) const {
 }
 
 void InfluenceGrid::apply(const double* p, double* u) const { fft_->convolve(p, u); }
+
+void InfluenceGrid::add_sparse(const int* idx, const double* d, int m, double* u) const {
+  const std::size_t W = 2 * static_cast<std::size_t>(nx_) - 1, nxs = static_cast<std::size_t>(nx_);
+  for (int k = 0; k < m; ++k) {
+    const int jx = idx[k] % nx_, jy = idx[k] / nx_;
+    const double v = d[k];
+    // u(ix, iy) += C(ix − jx, iy − jy) v: row iy of u against the kernel's row iy − jy from ix − jx = −jx.
+    for (int iy = 0; iy < ny_; ++iy) {
+      const double* c = &direct_[static_cast<std::size_t>(nx_ - 1 - jx) + W * static_cast<std::size_t>(iy - jy + ny_ - 1)];
+      double* ur = u + nxs * static_cast<std::size_t>(iy);
+      for (std::size_t ix = 0; ix < nxs; ++ix) ur[ix] += c[ix] * v;
+    }
+  }
+}
 
 // ---- RowFft: 1-D real transforms for row-wise convolutions (influence.hpp) ----
 

@@ -28,9 +28,10 @@
 // direction is centred over F ([PK]) and after each step the load is restored by scaling
 // the free pressures ([PK]); with a cap the scaling is repeated with newly capped elements
 // fixed (a water-filling pass, at most n passes, usually one).
-// Cost: two convolutions a step (C p and C t) while the contact set changes, one once it has
-// settled (C p carried as C p − τ C t, scaled with the load; normal_cg.cpp); ε is measured on a
-// C p convolved from the final p before a solve is accepted.
+// Cost: one convolution a step (C t) while C p can be carried as C p − τ C t (scaled with the
+// load), corrected by direct sums where a step moved a few elements off that path (projected onto
+// a bound, re-entering; InfluenceGrid::add_sparse); two when it moved many (C p convolved
+// afresh). ε is measured on a C p convolved from the final p before a solve is accepted.
 #include <string>
 #include <vector>
 
@@ -64,6 +65,8 @@ struct NormalCGResult {
 struct NormalCGWorkspace {
   std::vector<double> u, h, t, Ct;       ///< the CG loop: C p, the residual gap, direction, C t
   std::vector<unsigned char> in_free;    ///< the free set F of the CG loop
+  std::vector<int> moved;                ///< elements a step moved off −τ t ...
+  std::vector<double> moved_dp;          ///< ... and by how much more [Pa]
   std::vector<double> guess, u0, sorted; ///< capped load control: the caller's guess, C p of it, g sorted
 };
 

@@ -8,6 +8,7 @@
 #include <functional>
 #include <string>
 #include <vector>
+#include <utility>
 
 #include "contact/half_space/influence.hpp"
 #include "contact/options.hpp"
@@ -199,6 +200,34 @@ TEST_CASE("InfluenceGrid::apply equals the direct O(n^2) sum", "[influence]") {
     C.apply(q.data(), q.data());
     CHECK(q == u);
   }
+}
+
+// add_sparse (the CG loop's correction for the few elements a step moved off its linear path,
+// normal_cg.cpp) against apply() of the same sparse vector: Love's kernel (even) and a kernel
+// odd in both offsets and not symmetric under their exchange, which catches a transposed or
+// mirrored offset; elements at the grid's corners and edges (the kernel's extreme offsets).
+TEST_CASE("InfluenceGrid::add_sparse equals apply() of the sparse vector", "[influence]") {
+  const double H = 2 * (1 - 0.28 * 0.28) / (pi * 210e9);
+  const mh::InfluenceGrid::Kernel odd = [](int dix, int diy) { return 1e-12 * (dix + 0.37 * diy * diy * diy + 0.05 * dix * diy); };
+  for (int kind = 0; kind < 2; ++kind)
+    for (auto [nx, ny] : {std::pair<int, int>{7, 5}, {1, 9}, {13, 2}, {12, 11}}) {
+      const mh::InfluenceGrid C = kind == 0 ? mh::InfluenceGrid(nx, ny, 0.25e-3, 0.4e-3, H)
+                                            : mh::InfluenceGrid(nx, ny, 0.25e-3, 0.4e-3, odd);
+      const int n = nx * ny;
+      const std::vector<int> idx = {0, n - 1, nx - 1, n - nx, n / 2, n / 3};
+      const std::vector<double> d = {1e8, -3e8, 5e7, 2e8, -1e8, 7e7};
+      std::vector<double> full(static_cast<std::size_t>(n), 0.0), u_fft(full.size()), u_sparse(full.size(), 0.0);
+      for (std::size_t k = 0; k < idx.size(); ++k) full[static_cast<std::size_t>(idx[k])] += d[k];
+      C.apply(full.data(), u_fft.data());
+      C.add_sparse(idx.data(), d.data(), static_cast<int>(idx.size()), u_sparse.data());
+      double max_u = 0, max_dev = 0;
+      for (int i = 0; i < n; ++i) max_u = std::max(max_u, std::fabs(u_fft[static_cast<std::size_t>(i)]));
+      for (int i = 0; i < n; ++i)
+        max_dev = std::max(max_dev, std::fabs(u_sparse[static_cast<std::size_t>(i)] - u_fft[static_cast<std::size_t>(i)]));
+      INFO((kind == 0 ? "Love" : "odd") << " kernel, " << nx << " x " << ny << ": max |dev| / max |u| = " << max_dev / max_u);
+      REQUIRE(max_u > 0);
+      CHECK(max_dev <= 1e-12 * max_u);
+    }
 }
 
 TEST_CASE("InfluenceGrid: moved-to object works, repeated apply is bitwise identical", "[influence]") {

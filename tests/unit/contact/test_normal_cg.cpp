@@ -163,12 +163,12 @@ TEST_CASE("Elliptic Hertz, lambda = A/B in {0.1, 0.5, 1, 2, 10}: p0, semi-axes, 
   }
 }
 
-// The cost of a step (normal_cg.cpp, the CG loop): u = C p is carried through a step that moved
-// every free pressure by −τ t, so a step costs one convolution (C t) once the contact set has
-// settled, two while it changes; and convergence is accepted only on a u convolved from the
-// final p. Without the carrying every step costs two (2 × steps + 1); without the final
+// The cost of a step (normal_cg.cpp, the CG loop): u = C p is carried through a step (−τ C t,
+// plus direct sums for the few elements it moved otherwise), so a step costs one convolution
+// (C t), two only when it moved many elements; and convergence is accepted only on a u convolved
+// from the final p. Without the carrying every step costs two (2 × steps + 1); without the final
 // convolution ε would be that of the carried u, which differs from C p in its last bits.
-TEST_CASE("CG cost: one convolution a step once the contact set settles; epsilon on the convolved u",
+TEST_CASE("CG cost: one convolution a step but where many elements move, epsilon on the convolved u",
           "[normal_cg]") {
   const double A = 1 / (2 * R_sphere);
   const HertzEllipse hz = hertz_ellipse(A, A, N_sphere);
@@ -184,8 +184,9 @@ TEST_CASE("CG cost: one convolution a step once the contact set settles; epsilon
                                         << " steps, " << r.convolutions << " convolutions");
       REQUIRE(r.status == mh::GridStatus::Ok);
       REQUIRE(r.iterations >= 20);
-      // Measured 1.18 … 1.28 convolutions a step on these four solves (2 without the carrying).
-      CHECK(r.convolutions <= 1.6 * r.iterations);
+      // Measured 1.09 … 1.19 convolutions a step on these four solves (1.18 … 1.28 without the
+      // direct sums for the few moved elements, 2 without the carrying).
+      CHECK(r.convolutions <= 1.25 * r.iterations);
       // ε of the returned solution on u = C p, as the loop measures it (normal_cg.hpp): the same bits.
       const std::size_t n = p.size();
       std::vector<double> u(n);
