@@ -63,15 +63,21 @@ double milliseconds_since(std::chrono::steady_clock::time_point t0) {
 // contact diameter, 60 × 50 elements (the performance case of the brief: padded 120 × 100).
 constexpr double R_sphere = 0.3, N_sphere = 1e5;
 
+/// That sphere's gap on 60 × 50 elements with its influence operator.
+struct SphereCase {
+  double A = 1 / (2 * R_sphere);
+  HertzEllipse hz = hertz_ellipse(A, A, N_sphere);
+  double dx = 2 * hz.a / 40;
+  Case c = quadratic_case(60, 50, dx, dx, A, A);
+  mh::InfluenceGrid C{c.nx, c.ny, c.dx, c.dy, H};
+};
+
 }  // namespace
 
 TEST_CASE("Hertz sphere, approach and load control: p0 1 %, radius one element, N(delta) 1 %",
           "[normal_cg]") {
-  const double A = 1 / (2 * R_sphere);
-  const HertzEllipse hz = hertz_ellipse(A, A, N_sphere);
-  const double dx = 2 * hz.a / 40;
-  const Case c = quadratic_case(60, 50, dx, dx, A, A);
-  const mh::InfluenceGrid C(c.nx, c.ny, c.dx, c.dy, H);
+  const SphereCase sphere;
+  const auto& [A, hz, dx, c, C] = sphere;
   CHECK(C.padded_nx() == 120);
   CHECK(C.padded_ny() == 100);
 
@@ -170,11 +176,8 @@ TEST_CASE("Elliptic Hertz, lambda = A/B in {0.1, 0.5, 1, 2, 10}: p0, semi-axes, 
 // convolution ε would be that of the carried u, which differs from C p in its last bits.
 TEST_CASE("CG cost: one convolution a step but where many elements move, epsilon on the convolved u",
           "[normal_cg]") {
-  const double A = 1 / (2 * R_sphere);
-  const HertzEllipse hz = hertz_ellipse(A, A, N_sphere);
-  const double dx = 2 * hz.a / 40;
-  const Case c = quadratic_case(60, 50, dx, dx, A, A);
-  const mh::InfluenceGrid C(c.nx, c.ny, c.dx, c.dy, H);
+  const SphereCase sphere;
+  const auto& [A, hz, dx, c, C] = sphere;
   for (const double p_lim : {double(INFINITY), 0.8 * hz.p0})
     for (const bool load : {true, false}) {
       std::vector<double> p(c.g.size(), 0.0);
@@ -217,11 +220,8 @@ TEST_CASE("CG cost: one convolution a step but where many elements move, epsilon
 }
 
 TEST_CASE("Plastic cap above the elastic peak changes nothing", "[normal_cg]") {
-  const double A = 1 / (2 * R_sphere);
-  const HertzEllipse hz = hertz_ellipse(A, A, N_sphere);
-  const double dx = 2 * hz.a / 40;
-  const Case c = quadratic_case(60, 50, dx, dx, A, A);
-  const mh::InfluenceGrid C(c.nx, c.ny, c.dx, c.dy, H);
+  const SphereCase sphere;
+  const auto& [A, hz, dx, c, C] = sphere;
   for (bool load : {true, false}) {
     std::vector<double> p_el(c.g.size(), 0.0), p_cap(c.g.size(), 0.0);
     auto run = [&](double p_lim, std::vector<double>& p) {
@@ -398,11 +398,8 @@ TEST_CASE("No contact: delta <= min g or N <= 0 gives NoContact and p = 0", "[no
 namespace {
 /// Solve at 1.0 and then at 1.01 × (N or δ) from the previous solution, and cold at 1.01.
 void warm_start_case(bool load) {
-  const double A = 1 / (2 * R_sphere);
-  const HertzEllipse hz = hertz_ellipse(A, A, N_sphere);
-  const double dx = 2 * hz.a / 40;
-  const Case c = quadratic_case(60, 50, dx, dx, A, A);
-  const mh::InfluenceGrid C(c.nx, c.ny, c.dx, c.dy, H);
+  const SphereCase sphere;
+  const auto& [A, hz, dx, c, C] = sphere;
   std::vector<double> p(c.g.size(), 0.0), cold(c.g.size(), 0.0);
   auto run = [&](double scale, std::vector<double>& q) {
     return load ? mh::solve_normal_load(C, c.g.data(), scale * N_sphere, INFINITY, q.data())
