@@ -57,13 +57,23 @@ ls -la "$tmp/out" | awk 'NR>1{print "  " $5 " bytes  " $9}'
 # The half-space method against the FFTW build, alternated (skipped without libfftw3-dev).
 bash scripts/bench_fft.sh 3
 # The exact half-space tangential solve on CONTACT's Hertzian patch, and CONTACT's own time on the
-# same deck when a CONTACT binary is given (CONTACT_BIN=…/contact_linux64; its tangential solver's
-# CPU time from its performance timers, six cases).
+# same deck when a CONTACT binary is given (CONTACT_BIN=…/contact_linux64; its tangential and
+# normal solvers' CPU time from its performance timers, six cases). The normal solve on that grid
+# (the bench's last line) against CONTACT's, alternated three times: the ratio of CPU times per
+# solve, each run's and the median (docs/performance.md, "One convolution a CG step").
 ./build/mhcontact_bench_tangential_half_space . 5
 if [ -x "${CONTACT_BIN:-}" ]; then
   ctmp=$(mktemp -d); cp tests/data/contact_tangential/hstang/hertz44.inp "$ctmp/"
-  (cd "$ctmp" && OMP_NUM_THREADS=1 "$CONTACT_BIN" 2 hertz44 > /dev/null 2>&1 || true)
-  grep -E "^\|(Total|Tang: StedyGS)" "$ctmp/hertz44.out" | sed 's/^/  CONTACT /'
+  ratios=()
+  for _ in 1 2 3; do
+    ours=$(./build/mhcontact_bench_tangential_half_space . 5 | sed -n 's/^normal solve.*CPU \([0-9.]*\) ms per solve.*/\1/p')
+    (cd "$ctmp" && OMP_NUM_THREADS=1 "$CONTACT_BIN" 2 hertz44 > /dev/null 2>&1 || true)
+    theirs=$(awk -F'|' '/^\|Norm: ConjGrd/ {print $4}' "$ctmp/hertz44.out")
+    ratios+=("$(echo "$theirs * 1000 / 6 / $ours" | bc -l)")
+  done
+  grep -E "^\|(Total|Tang: StedyGS|Norm: ConjGrd)" "$ctmp/hertz44.out" | sed 's/^/  CONTACT /'
+  printf '  normal solve, CONTACT CPU / mhcontact CPU per solve: %.1f %.1f %.1f, median %.1f\n' "${ratios[@]}" \
+    "$(printf '%s\n' "${ratios[@]}" | sort -g | sed -n 2p)"
   rm -rf "$ctmp"
 fi
 # The wheelset: one pair, and a fleet of 1000 wheels with its CPU time per wheel by stage.
