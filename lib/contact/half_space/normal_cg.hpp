@@ -85,15 +85,18 @@ NormalCGResult solve_normal_approach(const InfluenceGrid& C, const double* g, do
                                      const NormalCGOptions& options, NormalCGWorkspace& ws);
 
 /// Load control ([PK]'s original form): total force N [N] given, find p [Pa] and δ [m].
-/// p as in solve_normal_approach; an all-zero guess becomes the uniform pressure N/(nx·ny·dx·dy)
-/// ([PK] §3). With a finite p_lim: first the elastic solution (returned as it is when its peak
-/// stays ≤ p_lim: the same bytes as p_lim = INFINITY), else a safeguarded secant (Illinois) on δ
-/// over capped solve_normal_approach solves, warm-started, from max(δ_el, δ_rp) (δ_rp: the
-/// rigid–perfectly-plastic bound, p_lim·dx·dy·#{g < δ} = N), stopped at |N(δ) − N| ≤ tol·N, then
-/// [PK]'s load scaling from there (exact N, the same ε). [PK]'s scaling alone does not converge
-/// when most of the contact is capped (elements jump between 0 and p_lim every step).
-/// iterations counts every CG step of all these solves; max_iterations bounds their total. N ≤ 0: NoContact, p = 0, δ = min g. N > p_lim·nx·ny·dx·dy (the grid cannot carry
-/// it): NotConverged. On success dx·dy·Σp = N to rounding.
+/// p as in solve_normal_approach; an all-zero guess becomes the Hertzian pressure of the load on
+/// this gap, p ∝ √(δ/2 − (g − min g)) with δ from one probe of the grid's compliance (normal_cg.cpp,
+/// hertz_shaped_guess; [PK] §3's uniform pressure where the probe carries nothing).
+/// With a finite p_lim: first the elastic solution (returned as it is when its peak stays ≤ p_lim:
+/// the same bytes as p_lim = INFINITY), else a safeguarded secant (Illinois) on δ over capped
+/// solve_normal_approach solves, warm-started, from max(δ_el, δ_rp) (δ_rp: the rigid–perfectly-
+/// plastic bound, p_lim·dx·dy·#{g < δ} = N), stopped at |N(δ) − N| ≤ tol·N, then [PK]'s load
+/// scaling from there (exact N, the same ε). [PK]'s scaling alone does not converge when most of
+/// the contact is capped (elements jump between 0 and p_lim every step). iterations counts every
+/// CG step of all these solves; max_iterations bounds their total. N ≤ 0: NoContact, p = 0,
+/// δ = min g. N > p_lim·nx·ny·dx·dy (the grid cannot carry it): NotConverged. On success
+/// dx·dy·Σp = N to rounding.
 NormalCGResult solve_normal_load(const InfluenceGrid& C, const double* g, double N, double p_lim,
                                  double* p, const NormalCGOptions& options = {});
 /// The same with the work vectors of `ws` (see NormalCGWorkspace; the same bytes).
