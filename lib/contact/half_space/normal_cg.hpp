@@ -67,7 +67,7 @@ struct NormalCGWorkspace {
   std::vector<unsigned char> in_free;    ///< the free set F of the CG loop
   std::vector<int> moved;                ///< elements a step moved off −τ t ...
   std::vector<double> moved_dp;          ///< ... and by how much more [Pa]
-  std::vector<double> guess, u0, sorted; ///< capped load control: the caller's guess, C p of it, g sorted
+  std::vector<double> guess, u0, sorted; ///< capped load control: the caller's guess, C p of it; g sorted (also the cold start)
 };
 
 /// Approach control: δ given [m], find p [Pa]. g: nx·ny undeformed gaps [m] (index ix + nx·iy).
