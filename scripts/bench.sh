@@ -74,6 +74,18 @@ if [ -x "${CONTACT_BIN:-}" ]; then
   grep -E "^\|(Total|Tang: StedyGS|Norm: ConjGrd)" "$ctmp/hertz44.out" | sed 's/^/  CONTACT /'
   printf '  normal solve, CONTACT CPU / mhcontact CPU per solve: %.1f %.1f %.1f, median %.1f\n' "${ratios[@]}" \
     "$(printf '%s\n' "${ratios[@]}" | sort -g | sed -n 2p)"
+  # The same in instructions (callgrind; repeatable where CPU times are not): CONTACT's normcg over
+  # its six solves, ours solve_normal_load inclusive over the bench's ten (about a minute).
+  if command -v valgrind >/dev/null && command -v callgrind_annotate >/dev/null; then
+    (cd "$ctmp" && OMP_NUM_THREADS=1 valgrind --tool=callgrind --callgrind-out-file=cg.contact \
+       --toggle-collect='__m_solvpn_MOD_normcg' "$CONTACT_BIN" 2 hertz44 > /dev/null 2>&1 || true)
+    valgrind --tool=callgrind --callgrind-out-file="$ctmp/cg.ours" ./build/mhcontact_bench_tangential_half_space . 1 \
+      > /dev/null 2>&1
+    theirs=$(callgrind_annotate "$ctmp/cg.contact" 2>/dev/null | awk '/PROGRAM TOTALS/ {gsub(",", "", $1); print $1}')
+    ours=$(callgrind_annotate --inclusive=yes "$ctmp/cg.ours" 2>/dev/null |
+      awk '/solve_normal_load\(mh::InfluenceGrid const&, double const\*, double, double, double\*, mh::NormalCGOptions const&\) / {gsub(",", "", $1); print $1; exit}')
+    awk -v t="$theirs" -v o="$ours" 'BEGIN{printf "  normal solve, instructions per solve: CONTACT %.1f M, mhcontact %.1f M, ratio %.1f\n", t / 6e6, o / 10e6, (t / 6) / (o / 10)}'
+  fi
   rm -rf "$ctmp"
 fi
 # The wheelset: one pair, and a fleet of 1000 wheels with its CPU time per wheel by stage.

@@ -20,11 +20,55 @@ enum class Control { Approach, Load };
 constexpr int kMaxLoadSteps = 60;  // capped load control: approach solves on δ (usually 4–8)
 constexpr int kPolishSteps = 50;   // capped load control: final [PK] load-control steps (usually 0–2)
 
+/// The Hertzian shape p = √(max(δ/2 − (g̃ − g_min), 0)) on the grid (δ/2 = half_delta [m]), g̃ the
+/// gap with its level sets stretched to Hertz's aspect about the centroid of `support` (the
+/// elements where support > 0, a level set of g): for a gap A x² + B y² the level sets have the
+/// semi-axis ratio (B/A)^(1/2) and Hertz's ellipse about (B/A)^(2/3) (Johnson §4.2, the
+/// approximation for moderately elliptical contacts), so g̃(x, y) = g(x_c + (x − x_c)/r,
+/// y_c + (y − y_c) r), r = (B/A)^(1/12) (the area kept), bilinear between the elements, +∞ off
+/// the grid; B/A = Mxx/Myy, the support's second moments about its centroid (those of an
+/// elliptic level set). Returns Σ p.
+double hertz_shape(const InfluenceGrid& C, const double* g, double g_min, double half_delta, const double* support,
+                   double* p) {
+  const double* q = support;
+  const int nx = C.nx(), ny = C.ny();
+  double sw = 0, sx = 0, sy = 0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      if (q[static_cast<std::size_t>(i + nx * j)] > 0) sw += 1, sx += i, sy += j;
+  const double xc = sx / sw, yc = sy / sw;
+  double mxx = 0, myy = 0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      if (q[static_cast<std::size_t>(i + nx * j)] > 0) {
+        mxx += (i - xc) * (i - xc) * C.dx() * C.dx();
+        myy += (j - yc) * (j - yc) * C.dy() * C.dy();
+      }
+  const double r = mxx > 0 && myy > 0 ? std::pow(mxx / myy, 1.0 / 12.0) : 1.0;
+  const int im = std::max(nx - 2, 0), jm = std::max(ny - 2, 0);
+  auto G = [&](int i, int j) { return g[static_cast<std::size_t>(i + nx * j)]; };
+  double sum_p = 0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const double xs = xc + (i - xc) / r, ys = yc + (j - yc) * r;  // in element indices
+      double gt = INFINITY;
+      if (xs >= 0 && ys >= 0 && xs <= nx - 1 && ys <= ny - 1) {
+        const int i0 = std::min(static_cast<int>(xs), im), j0 = std::min(static_cast<int>(ys), jm);
+        const int i1 = std::min(i0 + 1, nx - 1), j1 = std::min(j0 + 1, ny - 1);
+        const double fx = xs - i0, fy = ys - j0;
+        gt = (1 - fy) * ((1 - fx) * G(i0, j0) + fx * G(i1, j0)) + fy * ((1 - fx) * G(i0, j1) + fx * G(i1, j1));
+      }
+      const std::size_t e = static_cast<std::size_t>(i + nx * j);
+      p[e] = std::sqrt(std::max(half_delta - (gt - g_min), 0.0));
+      sum_p += p[e];
+    }
+  return sum_p;
+}
+
 /// The cold start of load control: the pressure of a Hertzian contact of the load N on this gap.
 /// For a round quadratic gap, p ∝ √(δ/2 − (g − g_min)) (the contact edge is where the gap equals
 /// half the approach: a² = R δ against the interference's 2 R δ; Johnson, Contact Mechanics, §4.2;
-/// for an elliptic one on the gap stretched to Hertz's aspect, below)
-/// and N ∝ δ^(3/2) (eq. 4.23). The scale of N(δ) comes from one probe: the rigid interference
+/// for an elliptic one on the gap stretched to Hertz's aspect, hertz_shape) and N ∝ δ^(3/2) (eq. 4.23). The scale of N(δ) comes from one probe: the rigid interference
 /// q = max(δ₀ − g, 0) at δ₀ the median gap, fitted as in the approach control's cold start
 /// (α minimising Σ_S (α (C q)_e − q_e)² over its support S), carries N₀ = α dx dy Σ q; then
 /// δ = (δ₀ − g_min)(N/N₀)^(2/3). The caller restores the load exactly. Against [PK]'s uniform
@@ -64,43 +108,7 @@ void hertz_shaped_guess(const InfluenceGrid& C, const double* g, double g_min, d
     return;
   }
   const double half_delta = 0.5 * (delta0 - g_min) * std::pow(N / N0, 2.0 / 3.0);
-  // The level set's aspect made Hertz's: for a gap A x² + B y² the level sets have the semi-axis
-  // ratio (B/A)^(1/2) and Hertz's ellipse about (B/A)^(2/3) (Johnson §4.2, the approximation for
-  // moderately elliptical contacts), so the shape is taken on g̃(x, y) = g(x_c + (x − x_c)/r,
-  // y_c + (y − y_c) r), r = (B/A)^(1/12) (the area kept), bilinear between the elements, +∞ off
-  // the grid. B/A = Mxx/Myy, the probe support's second moments about its centroid (those of an
-  // elliptic level set).
-  const int nx = C.nx(), ny = C.ny();
-  double sw = 0, sx = 0, sy = 0;
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      if (q[static_cast<std::size_t>(i + nx * j)] > 0) sw += 1, sx += i, sy += j;
-  const double xc = sx / sw, yc = sy / sw;
-  double mxx = 0, myy = 0;
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      if (q[static_cast<std::size_t>(i + nx * j)] > 0) {
-        mxx += (i - xc) * (i - xc) * C.dx() * C.dx();
-        myy += (j - yc) * (j - yc) * C.dy() * C.dy();
-      }
-  const double r = mxx > 0 && myy > 0 ? std::pow(mxx / myy, 1.0 / 12.0) : 1.0;
-  const int im = std::max(nx - 2, 0), jm = std::max(ny - 2, 0);
-  auto G = [&](int i, int j) { return g[static_cast<std::size_t>(i + nx * j)]; };
-  double sum_p = 0;
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const double xs = xc + (i - xc) / r, ys = yc + (j - yc) * r;  // in element indices
-      double gt = INFINITY;
-      if (xs >= 0 && ys >= 0 && xs <= nx - 1 && ys <= ny - 1) {
-        const int i0 = std::min(static_cast<int>(xs), im), j0 = std::min(static_cast<int>(ys), jm);
-        const int i1 = std::min(i0 + 1, nx - 1), j1 = std::min(j0 + 1, ny - 1);
-        const double fx = xs - i0, fy = ys - j0;
-        gt = (1 - fy) * ((1 - fx) * G(i0, j0) + fx * G(i1, j0)) + fy * ((1 - fx) * G(i0, j1) + fx * G(i1, j1));
-      }
-      const std::size_t e = static_cast<std::size_t>(i + nx * j);
-      p[e] = std::sqrt(std::max(half_delta - (gt - g_min), 0.0));
-      sum_p += p[e];
-    }
+  const double sum_p = hertz_shape(C, g, g_min, half_delta, q.data(), p);
   if (!(sum_p > 0)) std::fill(p, p + n, N / (area * static_cast<double>(n)));
 }
 
@@ -218,19 +226,21 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
     if (!(sum_p > 0)) hertz_shaped_guess(C, g, g_min, target, p, ws, result);
     restore_load();
   } else if (!(sum_p > 0)) {
-    // Cold start in approach control: shape q = max(δ − g, 0) (rigid interference), scaled by the
-    // least-squares α minimising Σ_S (α (C q)_e − q_e)² over its support S.
+    // Cold start in approach control: the Hertzian shape of this approach (hertz_shape, on the
+    // rigid interference max(δ − g, 0) as its support), scaled by the least-squares α minimising
+    // Σ_S (α (C q)_e − (δ − g_e))² over the shape's support S.
     for (std::size_t e = 0; e < n; ++e) h[e] = std::max(target - g[e], 0.0);
-    C.apply(h.data(), u.data());
+    hertz_shape(C, g, g_min, 0.5 * (target - g_min), h.data(), p);
+    C.apply(p, u.data());
     ++result.convolutions;
     double num = 0, den = 0;
     for (std::size_t e = 0; e < n; ++e)
-      if (h[e] > 0) {
-        num += h[e] * u[e];
+      if (p[e] > 0) {
+        num += (target - g[e]) * u[e];
         den += u[e] * u[e];
       }
     const double alpha = den > 0 ? num / den : 1.0 / C.self_coefficient();
-    for (std::size_t e = 0; e < n; ++e) p[e] = std::min(alpha * h[e], p_lim);
+    for (std::size_t e = 0; e < n; ++e) p[e] = std::min(alpha * p[e], p_lim);
   }
 
   double delta = target;  // load control: re-estimated every iteration

@@ -72,8 +72,9 @@ struct NormalCGWorkspace {
 
 /// Approach control: δ given [m], find p [Pa]. g: nx·ny undeformed gaps [m] (index ix + nx·iy).
 /// p holds the initial guess on input (clipped to [0, p_lim]; all zeros allowed — then the guess
-/// is α·max(δ − g, 0) with α fitted by least squares on that support; a previous solution is a
-/// warm start) and the solution on output. p_lim > 0 [Pa] or INFINITY (elastic).
+/// is the Hertzian shape of this approach, √(δ/2 − (g − min g)) on the gap stretched to Hertz's
+/// aspect, scaled by least squares to the interference (normal_cg.cpp, hertz_shape); a previous
+/// solution is a warm start) and the solution on output. p_lim > 0 [Pa] or INFINITY (elastic).
 /// Never throws for numerical reasons: returns NotConverged (p unchanged for invalid input:
 /// options invalid, p_lim ≤ 0 or NaN, δ not finite, a g not finite).
 /// δ ≤ min g: NoContact, p = 0. Deterministic (same bytes every run). Allocates its work vectors
