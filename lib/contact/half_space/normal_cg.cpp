@@ -30,17 +30,16 @@ constexpr int kPolishSteps = 50;   // capped load control: final [PK] load-contr
 /// elliptic level set). Returns Σ p.
 double hertz_shape(const InfluenceGrid& C, const double* g, double g_min, double half_delta, const double* support,
                    double* p) {
-  const double* q = support;
   const int nx = C.nx(), ny = C.ny();
   double sw = 0, sx = 0, sy = 0;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
-      if (q[static_cast<std::size_t>(i + nx * j)] > 0) sw += 1, sx += i, sy += j;
+      if (support[static_cast<std::size_t>(i + nx * j)] > 0) sw += 1, sx += i, sy += j;
   const double xc = sx / sw, yc = sy / sw;
   double mxx = 0, myy = 0;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
-      if (q[static_cast<std::size_t>(i + nx * j)] > 0) {
+      if (support[static_cast<std::size_t>(i + nx * j)] > 0) {
         mxx += (i - xc) * (i - xc) * C.dx() * C.dx();
         myy += (j - yc) * (j - yc) * C.dy() * C.dy();
       }
@@ -68,7 +67,8 @@ double hertz_shape(const InfluenceGrid& C, const double* g, double g_min, double
 /// The cold start of load control: the pressure of a Hertzian contact of the load N on this gap.
 /// For a round quadratic gap, p ∝ √(δ/2 − (g − g_min)) (the contact edge is where the gap equals
 /// half the approach: a² = R δ against the interference's 2 R δ; Johnson, Contact Mechanics, §4.2;
-/// for an elliptic one on the gap stretched to Hertz's aspect, hertz_shape) and N ∝ δ^(3/2) (eq. 4.23). The scale of N(δ) comes from one probe: the rigid interference
+/// for an elliptic one on the gap stretched to Hertz's aspect, hertz_shape) and N ∝ δ^(3/2)
+/// (eq. 4.23). The scale of N(δ) comes from one probe: the rigid interference
 /// q = max(δ₀ − g, 0) at δ₀ the median gap, fitted as in the approach control's cold start
 /// (α minimising Σ_S (α (C q)_e − q_e)² over its support S), carries N₀ = α dx dy Σ q; then
 /// δ = (δ₀ − g_min)(N/N₀)^(2/3). The caller restores the load exactly. Against [PK]'s uniform
