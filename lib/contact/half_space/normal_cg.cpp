@@ -20,6 +20,19 @@ enum class Control { Approach, Load };
 constexpr int kMaxLoadSteps = 60;  // capped load control: approach solves on δ (usually 4–8)
 constexpr int kPolishSteps = 50;   // capped load control: final [PK] load-control steps (usually 0–2)
 
+/// The least-squares scale α minimising Σ_S (α u_e − target_e)² over S = {e : shape_e > 0}, u = C
+/// shape (the cold starts' fit of a shape to the grid's compliance); NaN where u vanishes on S.
+template <class Target>
+double fitted_scale(const double* shape, const double* u, std::size_t n, Target target) {
+  double num = 0, den = 0;
+  for (std::size_t e = 0; e < n; ++e)
+    if (shape[e] > 0) {
+      num += target(e) * u[e];
+      den += u[e] * u[e];
+    }
+  return den > 0 ? num / den : std::numeric_limits<double>::quiet_NaN();
+}
+
 /// The Hertzian shape p = √(max(δ/2 − (g̃ − g_min), 0)) on the grid (δ/2 = half_delta [m]), g̃ the
 /// gap with its level sets stretched to Hertz's aspect about the centroid of `support` (the
 /// elements where support > 0, a level set of g): for a gap A x² + B y² the level sets have the
@@ -95,13 +108,8 @@ void hertz_shaped_guess(const InfluenceGrid& C, const double* g, double g_min, d
   if (sum_q > 0) {
     C.apply(q.data(), u.data());
     ++result.convolutions;
-    double num = 0, den = 0;
-    for (std::size_t e = 0; e < n; ++e)
-      if (q[e] > 0) {
-        num += q[e] * u[e];
-        den += u[e] * u[e];
-      }
-    if (den > 0) N0 = num / den * area * sum_q;
+    const double alpha = fitted_scale(q.data(), u.data(), n, [&](std::size_t e) { return q[e]; });
+    if (std::isfinite(alpha)) N0 = alpha * area * sum_q;
   }
   if (!(N0 > 0) || !std::isfinite(N0)) {
     std::fill(p, p + n, N / (area * static_cast<double>(n)));  // [PK] §3
@@ -233,13 +241,8 @@ NormalCGResult solve(const InfluenceGrid& C, const double* g, double target, Con
     hertz_shape(C, g, g_min, 0.5 * (target - g_min), h.data(), p);
     C.apply(p, u.data());
     ++result.convolutions;
-    double num = 0, den = 0;
-    for (std::size_t e = 0; e < n; ++e)
-      if (p[e] > 0) {
-        num += (target - g[e]) * u[e];
-        den += u[e] * u[e];
-      }
-    const double alpha = den > 0 ? num / den : 1.0 / C.self_coefficient();
+    double alpha = fitted_scale(p, u.data(), n, [&](std::size_t e) { return target - g[e]; });
+    if (!std::isfinite(alpha)) alpha = 1.0 / C.self_coefficient();
     for (std::size_t e = 0; e < n; ++e) p[e] = std::min(alpha * p[e], p_lim);
   }
 
