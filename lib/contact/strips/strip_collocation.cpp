@@ -34,75 +34,89 @@ constexpr double kPenetrationRtol = 1e-9;  // an unloaded strip counts as penetr
 /// inactive strips, q = K⁻¹(z + E_R mu), z = rhs with z_R = 0, and mu from q_R = 0,
 /// (K⁻¹)_RR mu = −(K⁻¹ z)_R: a |R|×|R| system and one back-substitution per strip of R (the
 /// capacitance matrix method); (K q)_R = mu is the displacement the add-back test needs.
-/// A large R (over a third of E) is solved directly on the active strips instead. `col` holds the
-/// columns K⁻¹ e_r taken so far with this factorisation (empty ones not yet taken): the
-/// collocations that reuse a factorisation reuse them.
-bool solve_active_set(const Eigen::MatrixXd& Kc, Collocation::Factorisation& f, const Eigen::VectorXd& rhs, double tol,
-                      int max_iter, std::vector<char>& in_act, Eigen::VectorXd& q) {
+/// A large R (over a third of E) is solved directly on the active strips instead. The columns
+/// K⁻¹ e_r taken so far are kept with the factorisation: the collocations that reuse a
+/// factorisation reuse them. `rhs` and `q` have E's size; `s` the buffers.
+bool solve_active_set(const DenseMatrix& Kc, Collocation::Factorisation& f, const double* rhs, double tol,
+                      int max_iter, std::vector<char>& in_act, double* q, StripScratch& s) {
   const std::vector<int>& E = f.of;
   const int e = static_cast<int>(E.size());
   auto K = [&](int r, int c) { return Kc(E[r], E[c]); };  // K = Kc restricted to E, read in place
-  std::vector<Eigen::VectorXd>& col = f.inv_col;
-  col.resize(static_cast<std::size_t>(e));  // K⁻¹ e_r, when r is first inactive (kept with the factorisation)
+  using Vec = Eigen::Map<Eigen::VectorXd>;
   // The factorisation of K, on first use (a solve that goes directly to the active strips needs none).
-  const auto& lu = [&]() -> const Eigen::PartialPivLU<Eigen::MatrixXd>& {
+  auto lu = [&]() -> const DenseLU& {
     if (!f.factorised) {
-      Eigen::MatrixXd KE(e, e);
+      double* KE = f.lu.matrix(e);
       for (int cc = 0; cc < e; ++cc)
-        for (int r = 0; r < e; ++r) KE(r, cc) = K(r, cc);
-      f.lu.compute(KE);
+        for (int r = 0; r < e; ++r) KE[r + cc * e] = K(r, cc);
+      f.lu.factorise();
       f.factorised = true;
     }
     return f.lu;
   };
-  std::vector<int> R, A;
-  Eigen::VectorXd KqR;
+  std::vector<int>& R = s.R;
+  std::vector<int>& A = s.A;
+  std::vector<double>& KqR = s.KqR;
+  Vec qv(q, e);
   for (int it = 0; it < max_iter; ++it) {
     R.clear();
     A.clear();
     for (int r = 0; r < e; ++r) (in_act[r] ? A : R).push_back(r);
     const int nR = static_cast<int>(R.size()), nA = static_cast<int>(A.size());
     if (nR == 0) {
-      q = lu().solve(rhs);
+      std::copy(rhs, rhs + e, q);
+      lu().solve_in_place(q);
     } else if (3 * nR <= e) {
-      Eigen::VectorXd z = rhs;
-      for (int r : R) z(r) = 0.0;
-      const Eigen::VectorXd w = lu().solve(z);
-      Eigen::MatrixXd C(nR, nR);
-      Eigen::VectorXd wR(nR);
+      std::vector<double>& w = s.w;
+      w.assign(rhs, rhs + e);
+      for (int r : R) w[static_cast<std::size_t>(r)] = 0.0;  // z
+      lu().solve_in_place(w.data());
+      double* C = s.small.matrix(nR);
+      s.wR.resize(static_cast<std::size_t>(nR));
       for (int b = 0; b < nR; ++b) {
-        Eigen::VectorXd& x = col[static_cast<std::size_t>(R[b])];
-        if (x.size() == 0) x = lu().solve(Eigen::VectorXd::Unit(e, R[b]));
-        for (int a = 0; a < nR; ++a) C(a, b) = x(R[a]);
-        wR(b) = w(R[b]);
-      }
-      KqR = -C.partialPivLu().solve(wR);
-      q = w;
-      for (int b = 0; b < nR; ++b) q += col[static_cast<std::size_t>(R[b])] * KqR(b);
-      for (int r : R) q(r) = 0.0;
-    } else {
-      q.setZero(e);
-      if (nA > 0) {
-        Eigen::MatrixXd Kaa(nA, nA);
-        Eigen::VectorXd ra(nA);
-        for (int c = 0; c < nA; ++c) {
-          for (int r = 0; r < nA; ++r) Kaa(r, c) = K(A[r], A[c]);
-          ra(c) = rhs(A[c]);
+        const std::size_t rb = static_cast<std::size_t>(R[b]);
+        double* x = f.inv_col.data() + rb * e;
+        if (!f.has_col[rb]) {
+          std::fill(x, x + e, 0.0);
+          x[rb] = 1.0;
+          f.lu.solve_in_place(x);
+          f.has_col[rb] = 1;
         }
-        const Eigen::VectorXd qa = Kaa.partialPivLu().solve(ra);
-        for (int c = 0; c < nA; ++c) q(A[c]) = qa(c);
+        for (int a = 0; a < nR; ++a) C[a + b * nR] = x[R[a]];
+        s.wR[static_cast<std::size_t>(b)] = w[rb];
       }
-      KqR.setZero(nR);
+      s.small.factorise();
+      KqR.assign(s.wR.begin(), s.wR.end());
+      s.small.solve_in_place(KqR.data());
+      for (double& v : KqR) v = -v;
+      qv = Vec(w.data(), e);
+      for (int b = 0; b < nR; ++b)
+        qv += Vec(f.inv_col.data() + static_cast<std::size_t>(R[b]) * e, e) * KqR[static_cast<std::size_t>(b)];
+      for (int r : R) q[r] = 0.0;
+    } else {
+      qv.setZero();
+      if (nA > 0) {
+        double* Kaa = s.small.matrix(nA);
+        s.qa.resize(static_cast<std::size_t>(nA));
+        for (int c = 0; c < nA; ++c) {
+          for (int r = 0; r < nA; ++r) Kaa[r + c * nA] = K(A[r], A[c]);
+          s.qa[static_cast<std::size_t>(c)] = rhs[A[c]];
+        }
+        s.small.factorise();
+        s.small.solve_in_place(s.qa.data());
+        for (int c = 0; c < nA; ++c) q[A[c]] = s.qa[static_cast<std::size_t>(c)];
+      }
+      KqR.assign(static_cast<std::size_t>(nR), 0.0);
       for (int a = 0; a < nR; ++a)
-        for (int c = 0; c < nA; ++c) KqR(a) += K(R[a], A[c]) * q(A[c]);
+        for (int c = 0; c < nA; ++c) KqR[static_cast<std::size_t>(a)] += K(R[a], A[c]) * q[A[c]];
     }
     bool dropped = false;
     for (int r : A)
-      if (q(r) < 0.0) { in_act[r] = 0; q(r) = 0.0; dropped = true; }
+      if (q[r] < 0.0) { in_act[r] = 0; q[r] = 0.0; dropped = true; }
     if (dropped) continue;
     bool added = false;
     for (int a = 0; a < nR; ++a)
-      if (KqR(a) < rhs(R[a]) - tol) { in_act[R[a]] = 1; added = true; }
+      if (KqR[static_cast<std::size_t>(a)] < rhs[R[a]] - tol) { in_act[R[a]] = 1; added = true; }
     if (!added) return true;
   }
   return false;
@@ -110,9 +124,9 @@ bool solve_active_set(const Eigen::MatrixXd& Kc, Collocation::Factorisation& f, 
 
 /// Column jj of the elastic influence matrix among the strips `cand` (unit amplitude), strip
 /// cand[jj] of half-length aj; zero for aj = 0 (a strip without extent carries no load).
-void elastic_column(const Solver& S, const std::vector<int>& cand, int jj, double aj, Eigen::MatrixXd& K) {
+void elastic_column(const Solver& S, const std::vector<int>& cand, int jj, double aj, DenseMatrix& K) {
   const int m = static_cast<int>(cand.size()), j = cand[jj];
-  K.col(jj).setZero();
+  std::fill(K.col(jj), K.col(jj) + m, 0.0);
   if (!(aj > 0.0)) return;
   if (S.same_xc && S.opt.coupling) {
     // K_ij = H a_j [g((j − i + ½) ds / a_j) − g((j − i − ½) ds / a_j)] (strip_kernel.hpp) with
@@ -139,14 +153,64 @@ double strip_load(const Collocation& c, int ii, double ds) {
   return (c.capped[ii] ? c.q[ii] * c.aeff[ii] * Phi(c.rcap[ii]) : 0.5 * kPi * c.q[ii] * c.aeff[ii]) * ds;
 }
 
+Collocation::Factorisation& Collocation::factorisation_of(const std::vector<int>& E) {
+  for (int k = 0; k < n_lus; ++k) {
+    Factorisation& f = lus[static_cast<std::size_t>((oldest + k) % kMaxFactorisations)];
+    if (f.of == E) return f;
+  }
+  int slot;
+  if (n_lus < kMaxFactorisations) {
+    slot = (oldest + n_lus) % kMaxFactorisations;
+    ++n_lus;
+  } else {  // full: the oldest goes
+    slot = oldest;
+    oldest = (oldest + 1) % kMaxFactorisations;
+  }
+  if (lus.size() <= static_cast<std::size_t>(slot)) lus.resize(static_cast<std::size_t>(slot) + 1);
+  Factorisation& f = lus[static_cast<std::size_t>(slot)];
+  f.of = E;
+  f.factorised = false;
+  const std::size_t e = E.size();
+  f.inv_col.resize(e * e);
+  f.has_col.assign(e, 0);
+  return f;
+}
+
+void Collocation::reset() {
+  cand.clear();
+  a.clear();
+  K.resize(0, 0);
+  q.clear();
+  aeff.clear();
+  rcap.clear();
+  capped.clear();
+  Ucap.resize(0, 0);
+  as_ok = settled = true;
+  newly_capped = 0;
+  n_lus = oldest = 0;
+}
+
 double Phi(double r) {
   if (r >= 1.0) return 0.5 * kPi;
   return r * std::sqrt(1.0 - r * r) + std::asin(r);
 }
 
 Solver::Solver(const StripGeometry& g, double Hc, const StripOptions& o) : StripExtents(g), H(Hc), opt(o) {
+  set(Hc, o);
+}
+
+void Solver::reinit(double Hc, const StripOptions& o) {
+  StripExtents::init();
+  set(Hc, o);
+}
+
+void Solver::set(double Hc, const StripOptions& o) {
+  H = Hc;
+  opt = o;
   gauss_legendre(opt.gauss_points / 2, &gx, &gw);
+  same_xc = true;
   for (double x : geo.xc) same_xc = same_xc && x == geo.xc.front();
+  log2_edge.clear();
   for (int k = -n; k <= n + 1; ++k) log2_edge.push_back(std::log2(std::fabs((k - 0.5) * geo.ds)));
 }
 
@@ -170,7 +234,7 @@ double Solver::K_end(int i, double ai, int j, double aj, double rcap) const {
 void Solver::capped_column(Collocation& c, int jj) const {
   const int m = static_cast<int>(c.cand.size()), j = c.cand[jj];
   const double f = H * c.q[jj];
-  c.Ucap.col(jj).setZero();
+  std::fill(c.Ucap.col(jj), c.Ucap.col(jj) + m, 0.0);
   if (same_xc) {  // on the centre lines: a function of the distance |i − j| only
     int dmax = 0;
     for (int r = 0; r < m; ++r)
@@ -195,15 +259,15 @@ void Solver::capped_column(Collocation& c, int jj) const {
 
 void Solver::build_K(Collocation& c, std::vector<double>& built) const {
   const int m = static_cast<int>(c.cand.size());
-  if (c.K.rows() != m || static_cast<int>(built.size()) != m) {
-    c.K = Eigen::MatrixXd::Zero(m, m);
+  if (c.K.rows != m || static_cast<int>(built.size()) != m) {
+    c.K.zero(m, m);
     built.assign(m, -1.0);
   }
   for (int jj = 0; jj < m; ++jj)
     if (built[jj] != c.a[jj]) {
       elastic_column(*this, c.cand, jj, c.a[jj], c.K);
       built[jj] = c.a[jj];
-      c.lus.clear();
+      c.n_lus = c.oldest = 0;
     }
 }
 
@@ -225,10 +289,14 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
   c.rcap.assign(m, 1.0);
   // Column j: displacement from capped strip j, zeroed when j is capped (capped_column); only
   // capped strips' columns are read.
-  if (std::isfinite(p_lim) && (c.Ucap.rows() != m || c.Ucap.cols() != m)) c.Ucap.resize(m, m);
+  if (std::isfinite(p_lim) && (c.Ucap.rows != m || c.Ucap.cols != m)) c.Ucap.resize(m, m);
   c.settled = false;
   c.as_ok = true;
-  std::vector<int> act, E, newly;
+  StripScratch& s = scratch;
+  std::vector<int>& act = s.act;
+  std::vector<int>& E = s.E;
+  std::vector<int>& newly = s.newly;
+  using Vec = Eigen::Map<Eigen::VectorXd>;
   for (int pass = 0; pass < opt.max_active_set && !c.settled; ++pass) {
     // The elastic strips E of this pass (each plastic pass drops the newly capped ones) and
     // their equations K_EE q_E = delta - g - u_cap, solved for q >= 0 from the previous pass's
@@ -237,33 +305,27 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
     for (int ii = 0; ii < m; ++ii)
       if (!c.capped[ii] && c.a[ii] > 0.0) E.push_back(ii);
     const int e = static_cast<int>(E.size());
-    Eigen::VectorXd ucap = Eigen::VectorXd::Zero(m);
+    s.ucap.assign(static_cast<std::size_t>(m), 0.0);
+    Vec ucap(s.ucap.data(), m);
     for (int jj = 0; jj < m; ++jj)
-      if (c.capped[jj]) ucap += c.Ucap.col(jj);
-    Eigen::VectorXd rhs(e), qE = Eigen::VectorXd::Zero(e);
-    std::vector<char> in_act(e);
+      if (c.capped[jj]) ucap += Eigen::Map<const Eigen::VectorXd>(c.Ucap.col(jj), m);
+    s.rhs.resize(static_cast<std::size_t>(e));
+    s.qE.assign(static_cast<std::size_t>(e), 0.0);
+    std::vector<char>& in_act = s.in_act;
+    in_act.resize(static_cast<std::size_t>(e));
     for (int cc = 0; cc < e; ++cc) {
-      rhs(cc) = delta - geo.g[c.cand[E[cc]]] - ucap(E[cc]);
+      s.rhs[static_cast<std::size_t>(cc)] = delta - geo.g[c.cand[E[cc]]] - ucap(E[cc]);
       in_act[cc] = start[E[cc]];
     }
     // The factorisation of K_EE: one of an earlier pass or collocation on the same set and K, else a
     // new one (factorised when the active-set solve first needs it).
-    Collocation::Factorisation* fac = nullptr;
-    if (e > 0) {
-      for (Collocation::Factorisation& f : c.lus)
-        if (f.of == E) { fac = &f; break; }
-      if (!fac) {
-        if (c.lus.size() >= Collocation::kMaxFactorisations) c.lus.erase(c.lus.begin());
-        c.lus.push_back({E, {}, {}, false});
-        fac = &c.lus.back();
-      }
-    }
-    c.as_ok = e == 0 || solve_active_set(c.K, *fac, rhs, kPenetrationRtol * (delta - gmin),
-                                         opt.max_active_set, in_act, qE);
+    c.as_ok = e == 0 || solve_active_set(c.K, c.factorisation_of(E), s.rhs.data(), kPenetrationRtol * (delta - gmin),
+                                         opt.max_active_set, in_act, s.qE.data(), s);
     if (!c.as_ok) break;
+    const std::vector<double>& qE = s.qE;
     act.clear();
     for (int cc = 0; cc < e; ++cc) {
-      c.q[E[cc]] = qE(cc);
+      c.q[E[cc]] = qE[static_cast<std::size_t>(cc)];
       if (in_act[cc]) act.push_back(E[cc]);
     }
     std::fill(start.begin(), start.end(), 0);
@@ -291,34 +353,57 @@ void Solver::collocate(double delta, double p_lim, Collocation& c, std::vector<c
   }
 }
 
+/// A result reset to a new one's fields, its vectors and message keeping their capacity.
+void clear_result(StripResult& r) {
+  r.status = StripStatus::NoContact;
+  r.message.clear();
+  r.failure = Warning();
+  r.iterations = 0;
+  r.delta = r.N = r.pmax = r.area = 0.0;
+  r.n_bands = 0;
+  r.end_gap_error = NAN;
+  r.refined = false;
+  r.n_outliers = 0;
+  r.worst_outlier = -1;
+  r.strips.clear();
+}
+
 /// Solve at fixed approach.
-StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>* warm) const {
-  StripResult res;
+void Solver::evaluate(double delta, double p_lim, const std::vector<int>* warm, StripResult& res) const {
+  clear_result(res);
   res.delta = delta;
   if (!(delta > gmin)) {
     res.status = StripStatus::NoContact;
     res.message = "approach does not exceed the minimum gap";
-    return res;
+    return;
   }
+  StripScratch& s = scratch;
   int nb = 0;
-  const std::vector<int> band = bands(delta, &nb);
-  std::vector<double> a = extents(delta, band, nb);
+  bands(delta, &nb, s.band);
+  std::vector<double>& a = s.a;
+  extents(delta, s.band, nb, a);
 
   // The interpenetrated strips (g < delta): those with a positive extent carry load; the others
   // are checked for the interpenetration the loaded strips leave at their centres (widening).
-  Collocation c;
+  Collocation& c = s.eval;
+  c.reset();
   bool any_extent = false;
   for (int i = 0; i < n; ++i)
-    if (band[i] >= 0) { c.cand.push_back(i); any_extent = any_extent || a[i] > 0.0; }
+    if (s.band[i] >= 0) { c.cand.push_back(i); any_extent = any_extent || a[i] > 0.0; }
   const int m = static_cast<int>(c.cand.size());
   if (!any_extent) {
     res.status = StripStatus::NoContact;
     res.message = "no strip has a positive extent";
-    return res;
+    return;
   }
-  std::vector<char> start(m, 1);
-  std::vector<double> built;  // the extent each column of K was built for
-  std::vector<double> a_prev(n, NAN), phi_prev(n, NAN);  // per strip: the last widening pass's extent and phi there
+  std::vector<char>& start = s.start;
+  start.assign(static_cast<std::size_t>(m), 1);
+  std::vector<double>& built = s.built;  // the extent each column of K was built for
+  built.clear();
+  std::vector<double>& a_prev = s.a_prev;  // per strip: the last widening pass's extent and phi there
+  std::vector<double>& phi_prev = s.phi_prev;
+  a_prev.assign(static_cast<std::size_t>(n), NAN);
+  phi_prev.assign(static_cast<std::size_t>(n), NAN);
   c.a.resize(m);
   for (int widen = 0;; ++widen) {
     for (int ii = 0; ii < m; ++ii) c.a[ii] = a[c.cand[ii]];
@@ -381,14 +466,15 @@ StripResult Solver::evaluate(double delta, double p_lim, const std::vector<int>*
     if (!widened) break;
     for (int ii = 0; ii < m; ++ii) start[ii] = c.q[ii] > 0.0 || c.capped[ii];
   }
-  return assemble(delta, p_lim, c);
+  assemble(delta, p_lim, c, res);
 }
 
-StripResult Solver::assemble(double delta, double p_lim, const Collocation& c) const {
-  StripResult res;
+void Solver::assemble(double delta, double p_lim, const Collocation& c, StripResult& res) const {
+  clear_result(res);
   res.delta = delta;
   int nb = 0;
-  const std::vector<int> band = bands(delta, &nb);
+  std::vector<int>& band = scratch.band;
+  bands(delta, &nb, band);
   res.n_bands = nb;
   res.status = StripStatus::Ok;
   if (!c.as_ok || !c.settled) {
@@ -447,7 +533,6 @@ StripResult Solver::assemble(double delta, double p_lim, const Collocation& c) c
       if (ratio > worst) { worst = ratio; res.worst_outlier = k; }
     }
   }
-  return res;
 }
 
 }  // namespace strips_detail

@@ -49,12 +49,7 @@ double load(const Collocation& c, double ds) {
   return N;
 }
 
-/// A loaded strip as a source of displacement: geometry index, half-length as loaded, amplitude,
-/// flat top (rcap < 1: capped at p_lim = rcap q).
-struct Source {
-  int j;
-  double a, q, rcap;
-};
+using Source = StripEndGapScratch::Source;
 
 /// The drop of the displacement from the centre of each field strip (geometry index `field[k]`)
 /// to its end (half-length `end[k]`), D_k = Σ_j q_j [K(centre) − K(end)] over the sources [m].
@@ -64,12 +59,15 @@ void drops(const Solver& S, const std::vector<int>& field, const std::vector<dou
   const int nf = static_cast<int>(field.size());
   D.assign(nf, 0.0);
   if (nf == 0) return;
-  std::vector<StripDropR> R;
-  std::vector<double> centre;
-  std::vector<char> need;
-  CappedSource cs;
-  std::vector<int> kk(nf);
-  std::vector<double> t(nf);
+  StripEndGapScratch& w = S.end_gap;
+  std::vector<StripDropR>& R = w.R;
+  std::vector<double>& centre = w.centre;
+  std::vector<char>& need = w.need;
+  CappedSource& cs = w.cs;
+  std::vector<int>& kk = w.kk;
+  std::vector<double>& t = w.t;
+  kk.resize(static_cast<std::size_t>(nf));
+  t.resize(static_cast<std::size_t>(nf));
   for (const Source& sj : src) {
     if (!(sj.a > 0) || !(sj.q > 0)) continue;
     if (!S.same_xc) {
@@ -118,20 +116,28 @@ void end_extents(const Solver& S, double delta, const Collocation& c, std::vecto
   const StripGeometry& geo = S.geo;
   const int m = static_cast<int>(c.cand.size());
   std::fill(anew.begin(), anew.end(), 0.0);
+  StripEndGapScratch& w = S.end_gap;
   // Displacement at every centre.
-  Eigen::VectorXd qv = Eigen::Map<const Eigen::VectorXd>(c.q.data(), m);
-  std::vector<Source> src;
+  w.qv.assign(c.q.begin(), c.q.begin() + m);
+  std::vector<double>& qv = w.qv;
+  std::vector<Source>& src = w.src;
+  src.clear();
   for (int jj = 0; jj < m; ++jj) {
-    if (c.capped[jj]) { qv(jj) = 0; src.push_back({c.cand[jj], c.aeff[jj], c.q[jj], c.rcap[jj]}); continue; }
+    if (c.capped[jj]) { qv[jj] = 0; src.push_back({c.cand[jj], c.aeff[jj], c.q[jj], c.rcap[jj]}); continue; }
     if (c.q[jj] > 0) src.push_back({c.cand[jj], c.a[jj], c.q[jj], 1.0});
-    else qv(jj) = 0;
+    else qv[jj] = 0;
   }
-  Eigen::VectorXd u = c.K * qv;
-  if (c.Ucap.rows() == m)
+  w.u.resize(static_cast<std::size_t>(m));
+  Eigen::Map<Eigen::VectorXd> u(w.u.data(), m);
+  u.noalias() = c.K.map() * Eigen::Map<const Eigen::VectorXd>(qv.data(), m);
+  if (c.Ucap.rows == m)
     for (int jj = 0; jj < m; ++jj)
-      if (c.capped[jj]) u += c.Ucap.col(jj);
-  std::vector<int> field;
-  std::vector<double> end, D;
+      if (c.capped[jj]) u += Eigen::Map<const Eigen::VectorXd>(c.Ucap.col(jj), m);
+  std::vector<int>& field = w.field;
+  std::vector<double>& end = w.end;
+  std::vector<double>& D = w.D;
+  field.clear();
+  end.clear();
   for (int ii = 0; ii < m; ++ii)
     if (c.q[ii] > 0 && !c.capped[ii]) { field.push_back(c.cand[ii]); end.push_back(c.a[ii]); }
   drops(S, field, end, src, D);
@@ -151,9 +157,14 @@ void end_extents(const Solver& S, double delta, const Collocation& c, std::vecto
 }  // namespace
 
 double end_gap_error(const Solver& S, const StripResult& r, double p_lim) {
-  std::vector<int> field;
-  std::vector<double> end, D;
-  std::vector<Source> src;
+  StripEndGapScratch& w = S.end_gap;
+  std::vector<int>& field = w.field;
+  std::vector<double>& end = w.end;
+  std::vector<double>& D = w.D;
+  std::vector<Source>& src = w.src;
+  field.clear();
+  end.clear();
+  src.clear();
   for (const StripState& st : r.strips) {
     src.push_back({st.index, st.a, st.q, st.plastic ? p_lim / st.q : 1.0});
     if (st.plastic) continue;  // a capped strip's length follows from its load and overlap, not its end gap
@@ -173,26 +184,41 @@ double end_gap_error(const Solver& S, const StripResult& r, double p_lim) {
   return wsum > 0 ? werr / wsum : 0.0;
 }
 
-StripResult refine_extents(const Solver& S, bool load_given, double target, double p_lim, const StripResult& start) {
+void refine_extents(const Solver& S, bool load_given, double target, double p_lim, const StripResult& start,
+                    StripResult& res) {
   const int n = S.n;
   const StripGeometry& geo = S.geo;
   const double gmin = S.gmin;
-  std::vector<double> a(n, 0.0), anew(n, 0.0);
+  StripEndGapScratch& w = S.end_gap;
+  std::vector<double>& a = w.a;
+  std::vector<double>& anew = w.anew;
+  a.assign(static_cast<std::size_t>(n), 0.0);
+  anew.assign(static_cast<std::size_t>(n), 0.0);
   for (const StripState& st : start.strips)
     a[st.index] = st.plastic ? st.a_elastic : st.a;  // a capped strip: its extent before lengthening
   double delta = load_given ? start.delta : target;
   if (!(delta > gmin)) delta = gmin + 1e-3 * std::fabs(gmin) + 1e-9;  // load control starts inside the contact
-  std::vector<char> was_loaded(n, 0);
+  std::vector<char>& was_loaded = w.was_loaded;
+  was_loaded.assign(static_cast<std::size_t>(n), 0);
   for (const StripState& st : start.strips) was_loaded[st.index] = 1;
   const double rtol = load_given ? kAreaRtolLoad : kAreaRtolApproach;
 
-  // Anderson acceleration on x = a (all strips), f = anew − a.
-  std::vector<Eigen::VectorXd> dX, dF;
-  Eigen::VectorXd x_prev, f_prev;
+  // Anderson acceleration on x = a (all strips), f = anew − a: the last kDepth differences in
+  // w.dX, w.dF (columns in a ring from w.oldest).
+  w.dX.resize(n, kDepth);
+  w.dF.resize(n, kDepth);
+  w.n_diff = w.oldest = 0;
+  bool have_prev = false;
+  w.x_prev.resize(static_cast<std::size_t>(n));
+  w.f_prev.resize(static_cast<std::size_t>(n));
+  using Vec = Eigen::Map<Eigen::VectorXd>;
+  Vec x_prev(w.x_prev.data(), n), f_prev(w.f_prev.data(), n);
   double slope = NAN;  // dN/dδ at fixed extents, from the previous pass's secant
-  Collocation c;
-  std::vector<double> built;  // the extent each column of c.K was built for
-  std::vector<int> cand;
+  Collocation& c = S.scratch.refine;
+  c.reset();
+  std::vector<double>& built = w.built;  // the extent each column of c.K was built for
+  built.clear();
+  std::vector<int>& cand = w.cand;
   for (int pass = 1;; ++pass) {
     // The strips taking part: those with an extent, and those interpenetrated (they may enter).
     // With the same strips as the last pass, K keeps the columns whose extent did not move (the
@@ -201,22 +227,23 @@ StripResult refine_extents(const Solver& S, bool load_given, double target, doub
     for (int i = 0; i < n; ++i)
       if (a[i] > 0 || geo.g[i] < delta) cand.push_back(i);
     if (cand != c.cand) {
-      c = Collocation();
+      c.reset();
       c.cand = cand;
       built.clear();
     }
     c.a.clear();
     for (int i : c.cand) c.a.push_back(a[i]);
     if (c.cand.empty()) {
-      StripResult res;
+      clear_result(res);
       res.status = StripStatus::NoContact;
       res.message = "end-gap extents: no strip keeps a positive extent";
       res.delta = delta;
-      return res;
+      return;
     }
     const int m = static_cast<int>(c.cand.size());
     S.build_K(c, built);
-    std::vector<char> act(m);
+    std::vector<char>& act = w.act;
+    act.resize(static_cast<std::size_t>(m));
     for (int ii = 0; ii < m; ++ii) act[ii] = was_loaded[c.cand[ii]];
     S.collocate(delta, p_lim, c, act);
     if (load_given) {
@@ -242,9 +269,9 @@ StripResult refine_extents(const Solver& S, bool load_given, double target, doub
       if (std::isfinite(d_prev) && N != N_prev && delta != d_prev) slope = (N - N_prev) / (delta - d_prev);
     }
     if (!c.as_ok || !c.settled) {
-      StripResult res = S.assemble(delta, p_lim, c);
+      S.assemble(delta, p_lim, c, res);
       res.iterations = pass;
-      return res;  // NotConverged, with assemble's message
+      return;  // NotConverged, with assemble's message
     }
     for (int ii = 0; ii < m; ++ii) was_loaded[c.cand[ii]] = c.q[ii] > 0 || c.capped[ii];
     end_extents(S, delta, c, anew);
@@ -257,12 +284,12 @@ StripResult refine_extents(const Solver& S, bool load_given, double target, doub
       total += a[i];
     }
     if (moved <= rtol * total) {  // c holds the solution at extents a
-      StripResult res = S.assemble(delta, p_lim, c);
+      S.assemble(delta, p_lim, c, res);
       res.iterations = pass;
-      return res;
+      return;
     }
     if (pass >= kMaxPasses) {
-      StripResult res = S.assemble(delta, p_lim, c);
+      S.assemble(delta, p_lim, c, res);
       res.status = StripStatus::NotConverged;
       std::ostringstream os;
       os << "end-gap extents did not settle in " << kMaxPasses << " passes (the last moved the extents by "
@@ -272,31 +299,70 @@ StripResult refine_extents(const Solver& S, bool load_given, double target, doub
                         .add(Quantity::Passes, kMaxPasses)
                         .add(Quantity::ExtentsMoved, moved / total, '>', rtol);
       res.iterations = pass;
-      return res;
+      return;
     }
     // Anderson step (type II): x+ = x + f − (ΔX + ΔF) γ, γ = argmin |f − ΔF γ|.
-    const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(a.data(), n);
-    const Eigen::VectorXd f = Eigen::Map<const Eigen::VectorXd>(anew.data(), n) - x;
-    if (x_prev.size() == n) {
-      dX.push_back(x - x_prev);
-      dF.push_back(f - f_prev);
-      if (static_cast<int>(dX.size()) > kDepth) {
-        dX.erase(dX.begin());
-        dF.erase(dF.begin());
+    w.x.assign(a.begin(), a.end());
+    w.f.resize(static_cast<std::size_t>(n));
+    const Vec x(w.x.data(), n);
+    Vec f(w.f.data(), n);
+    f = Vec(anew.data(), n) - x;
+    if (have_prev) {
+      int slot;
+      if (w.n_diff < kDepth) {
+        slot = (w.oldest + w.n_diff) % kDepth;
+        ++w.n_diff;
+      } else {  // full: the oldest goes
+        slot = w.oldest;
+        w.oldest = (w.oldest + 1) % kDepth;
       }
+      Vec(w.dX.col(slot), n) = x - x_prev;
+      Vec(w.dF.col(slot), n) = f - f_prev;
     }
     x_prev = x;
     f_prev = f;
-    Eigen::VectorXd xn = x + f;
-    if (!dX.empty()) {
-      const int k = static_cast<int>(dX.size());
-      Eigen::MatrixXd Fm(n, k), Xm(n, k);
-      for (int cc = 0; cc < k; ++cc) {
-        Fm.col(cc) = dF[cc];
-        Xm.col(cc) = dX[cc];
+    have_prev = true;
+    w.xn.resize(static_cast<std::size_t>(n));
+    Vec xn(w.xn.data(), n);
+    xn = x + f;
+    if (w.n_diff > 0) {
+      const int k = w.n_diff;
+      w.Fm.resize(n, k);
+      w.XF.resize(n, k);
+      for (int cc = 0; cc < k; ++cc) {  // in age order, as the columns were appended
+        const int col = (w.oldest + cc) % kDepth;
+        Vec(w.Fm.col(cc), n) = Vec(w.dF.col(col), n);
+        Vec(w.XF.col(cc), n) = Vec(w.dX.col(col), n) + Vec(w.dF.col(col), n);
       }
-      const Eigen::VectorXd gam = Fm.colPivHouseholderQr().solve(f);
-      xn -= (Xm + Fm) * gam;
+      // γ by Eigen's column-pivoting Householder QR, kept per shape, and its solve (the steps of
+      // ColPivHouseholderQR::solve, whose copy of the right-hand side would allocate).
+      StripEndGapScratch::QR* qr = nullptr;
+      for (StripEndGapScratch::QR& e : w.qrs)
+        if (e.n == n && e.k == k) { qr = &e; break; }
+      if (!qr) {
+        w.qrs.push_back({n, k, Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(n, k)});
+        qr = &w.qrs.back();
+      }
+      qr->qr.compute(w.Fm.map());
+      w.gam.assign(static_cast<std::size_t>(k), 0.0);
+      const Eigen::Index nz = qr->qr.nonzeroPivots();
+      if (nz > 0) {
+        w.c.assign(w.f.begin(), w.f.end());
+        Vec cv(w.c.data(), n);
+        // Qᵀ f: the reflectors H_0 … H_{nz−1} in turn (householderQ().adjoint() applied on the left),
+        // each on the vector block it acts on (Eigen's sequence applies them to a block of dynamic
+        // width, whose scaled reflector it evaluates into a new vector each time).
+        double ws = 0;
+        for (Eigen::Index k = 0; k < nz; ++k)
+          cv.tail(n - k).applyHouseholderOnTheLeft(qr->qr.matrixQR().col(k).tail(n - k - 1), qr->qr.hCoeffs()(k), &ws);
+        qr->qr.matrixQR().topLeftCorner(nz, nz).triangularView<Eigen::Upper>().solveInPlace(cv.head(nz));
+        for (Eigen::Index i = 0; i < nz; ++i) w.gam[static_cast<std::size_t>(qr->qr.colsPermutation().indices()(i))] = cv(i);
+      }
+      // xn −= (ΔX + ΔF) γ, the product evaluated first as Eigen does (a temporary, then subtracted).
+      w.sum_col.resize(static_cast<std::size_t>(n));
+      Vec tmp(w.sum_col.data(), n);
+      tmp.noalias() = w.XF.map() * Eigen::Map<const Eigen::VectorXd>(w.gam.data(), k);
+      xn -= tmp;
     }
     for (int i = 0; i < n; ++i) a[i] = anew[i] > 0 ? std::max(0.0, xn(i)) : 0.0;
   }

@@ -16,8 +16,9 @@ namespace strips_detail {
 double end_gap_error(const Solver& S, const StripResult& r, double p_lim);
 
 /// The end-gap extents from the solution `start`: approach given (load_given false, `target` =
-/// delta) or load given (`target` = N, the approach follows).
-StripResult refine_extents(const Solver& S, bool load_given, double target, double p_lim, const StripResult& start);
+/// delta) or load given (`target` = N, the approach follows), into `res` (not `start`).
+void refine_extents(const Solver& S, bool load_given, double target, double p_lim, const StripResult& start,
+                    StripResult& res);
 
 }  // namespace strips_detail
 }  // namespace mh

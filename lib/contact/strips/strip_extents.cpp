@@ -46,7 +46,10 @@ double crossing(const double* sv, const double* gv, double level, double lo, dou
 
 }  // namespace
 
-StripExtents::StripExtents(const StripGeometry& g) : geo(g), n(static_cast<int>(g.s.size())) {
+StripExtents::StripExtents(const StripGeometry& g) : geo(g), n(static_cast<int>(g.s.size())) { init(); }
+
+void StripExtents::init() {
+  n = static_cast<int>(geo.s.size());
   Bloc.assign(n, 0.0);
   ka.assign(n, 0.0);
   kb.assign(n, 0.0);
@@ -64,8 +67,8 @@ StripExtents::StripExtents(const StripGeometry& g) : geo(g), n(static_cast<int>(
 
 /// Bands at approach delta: runs of g < delta split at interior local maxima.
 /// Returns band id per strip (-1 outside), sets nb.
-std::vector<int> StripExtents::bands(double delta, int* nb) const {
-  std::vector<int> band(n, -1);
+void StripExtents::bands(double delta, int* nb, std::vector<int>& band) const {
+  band.assign(static_cast<std::size_t>(n), -1);
   int id = -1;
   bool in = false;
   for (int i = 0; i < n; ++i) {
@@ -82,15 +85,14 @@ std::vector<int> StripExtents::bands(double delta, int* nb) const {
     }
   }
   *nb = id + 1;
-  return band;
 }
 
 /// Strip half-lengths at approach delta: union of KPEC and ANALYN estimates.
 /// Within a band the approach is measured from the band's deepest gap g0:
 /// delta_b = delta - g0 and g - g0 (identical to the spec for g0 = 0 and
 /// exact for an elliptic patch whose minimum gap is g0).
-std::vector<double> StripExtents::extents(double delta, const std::vector<int>& band, int nb) const {
-  std::vector<double> a(n, 0.0);
+void StripExtents::extents(double delta, const std::vector<int>& band, int nb, std::vector<double>& a) const {
+  a.assign(static_cast<std::size_t>(n), 0.0);
   for (int b = 0; b < nb; ++b) {
     int first = -1, last = -1;
     for (int i = 0; i < n; ++i)
@@ -162,7 +164,6 @@ std::vector<double> StripExtents::extents(double delta, const std::vector<int>& 
       if (arg > 0.0) a[i] = std::max(a[i], as * std::sqrt(arg));
     }
   }
-  return a;
 }
 
 bool hertz_axes(double A, double B, double delta, double* a, double* b) {

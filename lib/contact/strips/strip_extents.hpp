@@ -28,16 +28,18 @@ struct StripExtents {
   int imin = 0;
 
   explicit StripExtents(const StripGeometry& g);
+  /// The geometry's contents changed: everything above computed again (the vectors kept).
+  void init();
 
   /// Bands at approach delta: runs of g < delta split at interior local maxima.
-  /// Returns band id per strip (-1 outside), sets nb.
-  std::vector<int> bands(double delta, int* nb) const;
+  /// Band id per strip into `band` (-1 outside), sets nb.
+  void bands(double delta, int* nb, std::vector<int>& band) const;
 
-  /// Strip half-lengths at approach delta: union of KPEC and ANALYN estimates.
+  /// Strip half-lengths at approach delta into `a`: union of KPEC and ANALYN estimates.
   /// Within a band the approach is measured from the band's deepest gap g0:
   /// delta_b = delta - g0 and g - g0 (identical to the spec for g0 = 0 and
   /// exact for an elliptic patch whose minimum gap is g0).
-  std::vector<double> extents(double delta, const std::vector<int>& band, int nb) const;
+  void extents(double delta, const std::vector<int>& band, int nb, std::vector<double>& a) const;
 };
 
 /// Hertz contact ellipse for h = A x^2 + B y^2 at approach delta (Johnson §4.2):

@@ -7,6 +7,7 @@
 #include "contact/multi_hertz/multi_hertz.hpp"
 #include "contact/grid/grid_checks.hpp"
 #include "contact/grid/patch_driver.hpp"
+#include "contact/strips/strip_collocation.hpp"
 #include "geometry/gap.hpp"
 
 namespace mh {
@@ -36,12 +37,12 @@ struct StripPatch : public PatchSolver {
     H_ = H;
     p_lim_ = p_lim;
     opt_ = opt.strips;
-    last = StripResult();
+    strips_detail::clear_result(last);
     evaluations = 0;
     peak_change = NAN;
-    warm_ = StripWarmStart();
+    clear_warm();
     delta_start_ = NAN;
-    solver_.reset();
+    solver_ready_ = false;
     geo.s.clear();
     geo.g.clear();
     geo.A.clear();
@@ -64,12 +65,12 @@ struct StripPatch : public PatchSolver {
     }
   }
   double at_approach(double delta) override {
-    last = solver().at_approach(delta, &warm_);
+    solver().at_approach(delta, &warm_, last);
     evaluations += 1 + last.iterations;
     return last.status == StripStatus::Ok ? last.N : 0.0;
   }
   double at_load(double N) override {
-    last = solver().at_load(N, &warm_, delta_start_);
+    solver().at_load(N, &warm_, delta_start_, last);
     evaluations += 1 + last.iterations;
     return last.delta;
   }
@@ -81,7 +82,7 @@ struct StripPatch : public PatchSolver {
     if (o->last.status == StripStatus::Ok)
       delta_start_ = o->last.delta - *std::min_element(o->geo.g.begin(), o->geo.g.end()) +
                      *std::min_element(geo.g.begin(), geo.g.end());
-    warm_ = StripWarmStart();
+    clear_warm();
     const double c = std::cos(P.gamma), n = static_cast<double>(geo.s.size());
     for (const StripState& st : o->last.strips) {
       const double y = o->P.y_ref + st.s * std::cos(o->P.gamma);
@@ -96,10 +97,10 @@ struct StripPatch : public PatchSolver {
     warm_.end_gap = o->warm_.end_gap;
     warm_.end_gap_error = o->warm_.end_gap_error;
     if (warm_.end_gap == 1 && o->last.refined && !o->last.strips.empty()) {
-      std::vector<double> s_old(geo.s.size());
+      s_old_.resize(geo.s.size());
       for (std::size_t j = 0; j < geo.s.size(); ++j)
-        s_old[j] = (P.y_ref + geo.s[j] * c - o->P.y_ref) / std::cos(o->P.gamma);  // same rail y
-      warm_.previous.strips = map_strips(o->last.strips, o->geo.ds, s_old, geo.s);
+        s_old_[j] = (P.y_ref + geo.s[j] * c - o->P.y_ref) / std::cos(o->P.gamma);  // same rail y
+      map_strips(o->last.strips, o->geo.ds, s_old_, geo.s, warm_.previous.strips);
     }
     warm_.previous.delta = delta_start_;
   }
@@ -150,16 +151,28 @@ struct StripPatch : public PatchSolver {
   StripOptions opt_;
   StripWarmStart warm_;  ///< the loaded strips of this patch's last solve, and its extents' refinement
   double delta_start_ = NAN;  ///< the first approach of load control (from the previous placement)
-  std::unique_ptr<StripSolver> solver_;
+  std::unique_ptr<StripSolver> solver_;  ///< kept from patch to patch with its memory (reset on first use)
+  bool solver_ready_ = false;            ///< solver_ set up for this patch
+  std::vector<double> s_old_;            ///< warm_start_from's strip centres in the previous placement
   const StripSolver& solver() {
     if (!solver_) solver_ = std::make_unique<StripSolver>(geo, H_, p_lim_, opt_);
+    else if (!solver_ready_) solver_->reset(geo, H_, p_lim_, opt_);
+    solver_ready_ = true;
     return *solver_;
+  }
+  /// warm_ as a new StripWarmStart, its vectors kept.
+  void clear_warm() {
+    warm_.loaded.clear();
+    warm_.end_gap = -1;
+    warm_.end_gap_error = NAN;
+    strips_detail::clear_result(warm_.previous);
   }
 };
 
 // The loaded strips of a solution as elements (grid_checks.hpp, elements_across).
 int strips_across(const StripPatch& k) {
-  std::vector<double> q(k.geo.s.size(), 0.0);
+  thread_local std::vector<double> q;  // kept: no allocation per call once grown
+  q.assign(k.geo.s.size(), 0.0);
   for (const StripState& st : k.last.strips) q[static_cast<std::size_t>(st.index)] = st.q;
   return elements_across(q, 1, static_cast<int>(q.size()));
 }

@@ -74,15 +74,26 @@ bool check_input(const StripGeometry& geo, double H, double p_lim, const StripOp
 
 std::vector<int> loaded_strips(const StripResult& r) {
   std::vector<int> v;
-  v.reserve(r.strips.size());
-  for (const StripState& st : r.strips) v.push_back(st.index);
+  loaded_strips(r, v);
   return v;
+}
+
+void loaded_strips(const StripResult& r, std::vector<int>& out) {
+  out.clear();
+  for (const StripState& st : r.strips) out.push_back(st.index);
 }
 
 std::vector<StripState> map_strips(const std::vector<StripState>& old, double ds_old,
                                    const std::vector<double>& s_old, const std::vector<double>& s_new) {
   std::vector<StripState> out;
-  if (old.empty()) return out;
+  map_strips(old, ds_old, s_old, s_new, out);
+  return out;
+}
+
+void map_strips(const std::vector<StripState>& old, double ds_old, const std::vector<double>& s_old,
+                const std::vector<double>& s_new, std::vector<StripState>& out) {
+  out.clear();
+  if (old.empty()) return;
   for (std::size_t j = 0; j < s_old.size() && j < s_new.size(); ++j) {
     const double so = s_old[j];
     auto hi = std::lower_bound(old.begin(), old.end(), so, [](const StripState& a, double v) { return a.s < v; });
@@ -111,25 +122,37 @@ std::vector<StripState> map_strips(const std::vector<StripState>& old, double ds
     st.s = s_new[j];
     out.push_back(st);
   }
-  return out;
 }
 
 
-StripSolver::StripSolver(const StripGeometry& geo, double H, double p_lim, const StripOptions& opt) : p_lim_(p_lim) {
-  if (check_input(geo, H, p_lim, opt, &why_)) s_ = std::make_unique<Solver>(geo, H, opt);
+StripSolver::StripSolver(const StripGeometry& geo, double H, double p_lim, const StripOptions& opt) {
+  reset(geo, H, p_lim, opt);
+}
+
+void StripSolver::reset(const StripGeometry& geo, double H, double p_lim, const StripOptions& opt) {
+  p_lim_ = p_lim;
+  why_.clear();
+  if (!check_input(geo, H, p_lim, opt, &why_)) {
+    valid_ = false;
+    return;
+  }
+  valid_ = true;
+  if (s_ && &s_->geo == &geo) s_->reinit(H, opt);  // the same geometry object, new contents: its memory kept
+  else s_ = std::make_unique<Solver>(geo, H, opt);
 }
 
 StripSolver::~StripSolver() = default;
 
 namespace {
 
-/// The estimate's check against the end-gap condition, and the refinement it calls for
-/// (StripOptions::end_gap_tol), decided once per patch through `warm`.
-StripResult checked(const Solver& S, StripResult r, bool load_given, double target, double p_lim, StripWarmStart* warm) {
-  if (r.status != StripStatus::Ok) return r;
+/// The estimate `r`'s check against the end-gap condition, and the refinement it calls for
+/// (StripOptions::end_gap_tol), decided once per patch through `warm`; `r` becomes the refined
+/// solution.
+void checked(const Solver& S, StripResult& r, bool load_given, double target, double p_lim, StripWarmStart* warm) {
+  if (r.status != StripStatus::Ok) return;
   if (warm && warm->end_gap >= 0) {  // decided at this patch's first solve
     r.end_gap_error = warm->end_gap_error;
-    if (warm->end_gap == 0) return r;
+    if (warm->end_gap == 0) return;
   } else {
     // The error is that of the elastic strips; a capped strip's length follows from its load and
     // its overlap (§9 item 6), and it keeps that length through the refinement.
@@ -139,42 +162,48 @@ StripResult checked(const Solver& S, StripResult r, bool load_given, double targ
       warm->end_gap = refine ? 1 : 0;
       warm->end_gap_error = r.end_gap_error;
     }
-    if (!refine) return r;
+    if (!refine) return;
   }
   const int before = r.iterations;
   const double err = r.end_gap_error;
-  StripResult f = refine_extents(S, load_given, target, p_lim, r);
+  StripResult& f = S.scratch.refined;
+  refine_extents(S, load_given, target, p_lim, r, f);
   f.iterations += before;
   f.end_gap_error = err;
   f.refined = true;
-  return f;
+  r = f;
 }
 
 void remember(const StripResult& r, StripWarmStart* warm) {
   if (!warm) return;
-  warm->loaded = loaded_strips(r);
+  loaded_strips(r, warm->loaded);
   if (r.refined && r.status == StripStatus::Ok) warm->previous = r;
 }
 
 }  // namespace
 
 StripResult StripSolver::at_approach(double delta, StripWarmStart* warm) const {
-  if (!s_ || !std::isfinite(delta)) {
-    StripResult r;
-    r.status = StripStatus::InvalidInput;
-    r.message = !s_ ? why_ : "delta must be finite";
-    return r;
-  }
   StripResult r;
+  at_approach(delta, warm, r);
+  return r;
+}
+
+void StripSolver::at_approach(double delta, StripWarmStart* warm, StripResult& r) const {
+  if (!valid_ || !std::isfinite(delta)) {
+    strips_detail::clear_result(r);
+    r.status = StripStatus::InvalidInput;
+    r.message = !valid_ ? why_ : "delta must be finite";
+    return;
+  }
   if (warm && warm->end_gap == 1 && !warm->previous.strips.empty()) {
-    r = refine_extents(*s_, false, delta, p_lim_, warm->previous);  // from the last refined extents
+    refine_extents(*s_, false, delta, p_lim_, warm->previous, r);  // from the last refined extents
     r.refined = true;
     r.end_gap_error = warm->end_gap_error;
   } else {
-    r = checked(*s_, s_->evaluate(delta, p_lim_, warm ? &warm->loaded : nullptr), false, delta, p_lim_, warm);
+    s_->evaluate(delta, p_lim_, warm ? &warm->loaded : nullptr, r);
+    checked(*s_, r, false, delta, p_lim_, warm);
   }
   remember(r, warm);
-  return r;
 }
 
 StripResult solve_strips_approach(const StripGeometry& geo, double H, double delta, double p_lim,
@@ -192,27 +221,34 @@ StripResult solve_strips_load(const StripGeometry& geo, double H, double Nt, dou
 }
 
 StripResult StripSolver::at_load(double Nt, StripWarmStart* warm, double delta_start) const {
-  if (!s_ || !(Nt > 0.0) || !std::isfinite(Nt)) {
-    StripResult r;
-    r.status = StripStatus::InvalidInput;
-    r.message = !s_ ? why_ : "N must be positive and finite";
-    return r;
-  }
   StripResult r;
-  if (warm && warm->end_gap == 1 && !warm->previous.strips.empty()) {
-    StripResult start = warm->previous;
-    if (delta_start > s_->gmin && std::isfinite(delta_start)) start.delta = delta_start;
-    r = refine_extents(*s_, true, Nt, p_lim_, start);
-    r.refined = true;
-    r.end_gap_error = warm->end_gap_error;
-  } else {
-    r = checked(*s_, estimate_at_load(Nt, warm ? &warm->loaded : nullptr, delta_start), true, Nt, p_lim_, warm);
-  }
-  remember(r, warm);
+  at_load(Nt, warm, delta_start, r);
   return r;
 }
 
-StripResult StripSolver::estimate_at_load(double Nt, const std::vector<int>* warm_start, double delta_start) const {
+void StripSolver::at_load(double Nt, StripWarmStart* warm, double delta_start, StripResult& r) const {
+  if (!valid_ || !(Nt > 0.0) || !std::isfinite(Nt)) {
+    strips_detail::clear_result(r);
+    r.status = StripStatus::InvalidInput;
+    r.message = !valid_ ? why_ : "N must be positive and finite";
+    return;
+  }
+  if (warm && warm->end_gap == 1 && !warm->previous.strips.empty()) {
+    StripResult& start = s_->end_gap.start;
+    start = warm->previous;
+    if (delta_start > s_->gmin && std::isfinite(delta_start)) start.delta = delta_start;
+    refine_extents(*s_, true, Nt, p_lim_, start, r);
+    r.refined = true;
+    r.end_gap_error = warm->end_gap_error;
+  } else {
+    estimate_at_load(Nt, warm ? &warm->loaded : nullptr, delta_start, r);
+    checked(*s_, r, true, Nt, p_lim_, warm);
+  }
+  remember(r, warm);
+}
+
+void StripSolver::estimate_at_load(double Nt, const std::vector<int>* warm_start, double delta_start,
+                                   StripResult& out) const {
   const Solver& S = *s_;
   const StripGeometry& geo = S.geo;
   const double H = S.H, p_lim = p_lim_;
@@ -232,21 +268,24 @@ StripResult StripSolver::estimate_at_load(double Nt, const std::vector<int>* war
   const double psi_t = std::cbrt(Nt * Nt);
   double lo = S.gmin, hi = std::numeric_limits<double>::infinity();
   double d_prev = S.gmin, psi_prev = -psi_t;
-  StripResult best;
+  StripResult& best = S.scratch.best;
+  strips_detail::clear_result(best);
   best.status = StripStatus::NotConverged;
-  std::vector<int> warm;  // each approach starts its active set from the previous one's
+  std::vector<int>& warm = S.scratch.warm;  // each approach starts its active set from the previous one's
   if (warm_start) warm = *warm_start;
+  else warm.clear();
+  StripResult& r = out;
   for (int it = 1; it <= opt.max_iterations; ++it) {
-    StripResult r = S.evaluate(d, p_lim, &warm);
-    warm = loaded_strips(r);
+    S.evaluate(d, p_lim, &warm, r);
+    loaded_strips(r, warm);
     r.iterations = it;
     const double N = (r.status == StripStatus::Ok || r.status == StripStatus::NotConverged) ? r.N : 0.0;
     if (r.status == StripStatus::NotConverged) {
       r.message = "inner solve: " + r.message;
-      return r;
+      return;
     }
     const double psi = std::cbrt(N * N) - psi_t;
-    if (std::fabs(N - Nt) <= opt.load_rtol * Nt) return r;
+    if (std::fabs(N - Nt) <= opt.load_rtol * Nt) return;
     if (it == 1 || std::fabs(N - Nt) < std::fabs(best.N - Nt)) best = r;  // closest so far
     if (N < Nt) lo = std::max(lo, d); else hi = std::min(hi, d);
     // Bracket collapsed to adjacent doubles: N(delta) jumps across the target
@@ -261,7 +300,8 @@ StripResult StripSolver::estimate_at_load(double Nt, const std::vector<int>* war
                          .add(Quantity::Residual, (best.N - Nt) / Nt, '>', opt.load_rtol)
                          .add(Quantity::Iterations, it);
       best.iterations = it;
-      return best;
+      out = best;
+      return;
     }
     double next = std::numeric_limits<double>::quiet_NaN();
     if (psi != psi_prev) next = d - psi * (d - d_prev) / (psi - psi_prev);
@@ -278,7 +318,7 @@ StripResult StripSolver::estimate_at_load(double Nt, const std::vector<int>* war
                      .add(Quantity::Residual, (best.N - Nt) / Nt, '>', opt.load_rtol)
                      .add(Quantity::Iterations, opt.max_iterations);
   best.iterations = opt.max_iterations;
-  return best;
+  out = best;
 }
 
 }  // namespace mh

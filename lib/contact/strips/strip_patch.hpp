@@ -30,27 +30,38 @@ namespace strips_detail { struct Solver; }
 /// depends on the geometry only (the ANALYN shape per strip, the deepest row) computed once, for
 /// the many solves of one patch; solve_strips_approach and solve_strips_load are this for one
 /// call. `geo` must outlive the solver. Invalid input: every solve returns InvalidInput.
+/// A solver keeps the buffers of its solves: once they have grown, and when reset to the same
+/// geometry object, the forms that write into a given result allocate nothing (results whose
+/// vectors have grown too). Not for concurrent use (one thread at a time).
 class StripSolver {
  public:
   StripSolver(const StripGeometry& geo, double H, double p_lim, const StripOptions& opt = {});
   ~StripSolver();
   StripSolver(const StripSolver&) = delete;
   StripSolver& operator=(const StripSolver&) = delete;
+  /// As a new solver; with the geometry object of the last reset (its contents changed, e.g. a
+  /// pooled patch set up again) the memory is kept.
+  void reset(const StripGeometry& geo, double H, double p_lim, const StripOptions& opt = {});
   StripResult at_approach(double delta, StripWarmStart* warm = nullptr) const;
   /// `delta_start`: the first approach tried (e.g. a previous solve's), if above the minimum gap;
   /// else the Hertz approach of the deepest row.
   StripResult at_load(double N, StripWarmStart* warm = nullptr, double delta_start = NAN) const;
+  /// The same into `out` (reset first; not warm->previous).
+  void at_approach(double delta, StripWarmStart* warm, StripResult& out) const;
+  void at_load(double N, StripWarmStart* warm, double delta_start, StripResult& out) const;
 
  private:
   /// Load control with the estimated extents (a safeguarded secant on the approach).
-  StripResult estimate_at_load(double N, const std::vector<int>* warm, double delta_start) const;
-  std::unique_ptr<strips_detail::Solver> s_;  ///< null: invalid input (why_)
+  void estimate_at_load(double N, const std::vector<int>* warm, double delta_start, StripResult& out) const;
+  std::unique_ptr<strips_detail::Solver> s_;  ///< the solver of the last valid input
+  bool valid_ = false;                        ///< false: invalid input (why_)
   std::string why_;
-  double p_lim_;
+  double p_lim_ = INFINITY;
 };
 
 /// The geometry indices of a result's loaded strips (increasing): a warm start's active set.
 std::vector<int> loaded_strips(const StripResult& r);
+void loaded_strips(const StripResult& r, std::vector<int>& out);
 
 /// A solution's strips carried onto another strip geometry of the same patch (the patch on a
 /// new placement of its plane): the start of the next refinement of the extents
@@ -63,5 +74,7 @@ std::vector<int> loaded_strips(const StripResult& r);
 /// result in increasing new index, index and s of the new geometry.
 std::vector<StripState> map_strips(const std::vector<StripState>& old, double ds_old,
                                    const std::vector<double>& s_old, const std::vector<double>& s_new);
+void map_strips(const std::vector<StripState>& old, double ds_old, const std::vector<double>& s_old,
+                const std::vector<double>& s_new, std::vector<StripState>& out);
 
 }  // namespace mh
