@@ -263,8 +263,10 @@ bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const 
 // "auto" (docs/method.md §9): the multi-Hertzian answer is kept when it can be trusted — it
 // converged and every loaded ellipse passes the Hertz validity test, with no non-Hertzian
 // candidate excluded; otherwise the case is solved by the strip method. The `method` column says
-// which one solved it, and a case handed over carries the warning auto:strips:<reason>.
-CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt) {
+// which one solved it, and a case handed over carries the warning auto:strips:<reason>. ws (may be
+// null): the grid methods' memory for the cases handed on (the same bytes).
+CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt,
+                      GridWorkspace* ws = nullptr) {
   CaseResult mhr = solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian);
   if (mhr.status == CaseStatus::OutOfRange) return mhr;
   // With friction the row is first balanced with its creep forces (tangential_with_equilibrium),
@@ -323,7 +325,9 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
     elastic_mh = solve_multi_hertz(G, elastic, tY, Q, rolled);
     start = &elastic_mh;
   }
-  CaseResult sr = solve_strip_method(G, mat, tY, Q, strip_options(opt), start);
+  CaseResult sr;
+  if (ws) solve_strip_method(G, mat, tY, Q, strip_options(opt), ws->strips, sr, start);
+  else sr = solve_strip_method(G, mat, tY, Q, strip_options(opt), start);
   sr.warnings.insert(sr.warnings.begin(), why);
   // A strip answer is kept when it passes its physical checks (contact/grid/grid_checks.hpp: no
   // warning of a validity class). Otherwise (not converged, e.g. a load inside a jump of its
@@ -337,7 +341,9 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
     to_hs.reason = AutoReason::StripsFailed;
     to_hs.failed = strip_failed.front();
   }
-  CaseResult hr = solve_half_space(G, mat, tY, Q, half_space_options(opt), start);
+  CaseResult hr;
+  if (ws) solve_half_space(G, mat, tY, Q, half_space_options(opt), ws->half_space, hr, start);
+  else hr = solve_half_space(G, mat, tY, Q, half_space_options(opt), start);
   const std::vector<WarningClass> hs_failed = validity_failures(hr.warnings);
   if (hr.status != CaseStatus::Ok || !hs_failed.empty()) {
     Warning rejected = Warning::auto_to(Method::HalfSpace, AutoReason::HalfSpaceRejected);
@@ -403,6 +409,18 @@ bool solve_contact_unjudged(const ContactGeometry& G, const Material& mat, doubl
       }
       solve_strip_method(G, mat, tY, Q, strip_options(opt), ws->strips, out);
       break;
+    case Method::Auto:
+      if (!ws) {
+        out = solve_contact(G, mat, tY, Q, opt);
+        return true;
+      }
+      // auto with the workspace: as solve_contact above, its grid solves in ws's memory.
+      out = solve_auto(G, mat, tY, Q, opt, ws);
+      if (out.method != Method::MultiHertzian) {
+        tangential_with_equilibrium(out, G, mat, tY, Q, opt, ws);
+        judge_case(out, G, mat, tY, opt);
+      }
+      return true;
     default: out = solve_contact(G, mat, tY, Q, opt); return true;
   }
   tangential_with_equilibrium(out, G, mat, tY, Q, opt, ws);

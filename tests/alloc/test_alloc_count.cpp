@@ -199,6 +199,47 @@ TEST_CASE("strips through solve_contact with a reused workspace allocate nothing
   }
 }
 
+// `auto` with a workspace hands its strip and half-space solves the workspace's memory
+// (lib/contact/solve.cpp): the rows must be those of `auto` without it. Manchester pair, 50 kN,
+// t_Y 4 … 8 mm (gauge corner and flange: rows handed to the strips among them), elastic and
+// capped at 900 MPa; the second pass over the same steps is counted (printed, not asserted:
+// `auto` itself still makes new results).
+TEST_CASE("auto through solve_contact with a reused workspace: the same rows as without", "[alloc]") {
+  const mh::ContactGeometry& G = mh::testing::manchester_geometry();
+  for (const double p_lim : {static_cast<double>(INFINITY), 900e6}) {
+    mh::Material mat = mh::testing::steel();
+    mat.p_lim = p_lim;
+    mh::MethodOptions opt;
+    opt.method = mh::Method::Auto;
+    mh::GridWorkspace ws;
+    mh::CaseResult r;
+    int handed = 0;
+    long second = 0;
+    for (int pass = 0; pass < 2; ++pass)
+      for (double tY = 4e-3; tY <= 8.0001e-3; tY += 0.5e-3) {
+        const long n = allocations([&] { mh::solve_contact(G, mat, tY, 50e3, opt, r, &ws); }, pass == 1);
+        if (pass == 0) {
+          const mh::CaseResult fresh = mh::solve_contact(G, mat, tY, 50e3, opt);
+          INFO("p_lim " << p_lim << ", t_Y " << tY * 1e3 << " mm: " << mh::to_string(r.method) << " / "
+                        << mh::to_string(fresh.method));
+          CHECK(r.method == fresh.method);
+          CHECK(r.status == fresh.status);
+          CHECK(r.Fz == fresh.Fz);
+          CHECK(r.pmax == fresh.pmax);
+          CHECK(r.area == fresh.area);
+          CHECK(r.approach == fresh.approach);
+          CHECK(r.warnings.size() == fresh.warnings.size());
+          handed += r.method != mh::Method::MultiHertzian;
+        } else {
+          second += n;
+        }
+      }
+    std::printf("auto, p_lim %g MPa: %d of 9 rows handed on; allocations over the second pass %ld\n", p_lim / 1e6,
+                handed, second);
+    CHECK(handed > 0);
+  }
+}
+
 // The figures of docs/c-api.md ("What a call allocates"), printed, not asserted:
 // build/tests/mhcontact_alloc_tests "[.report]".
 TEST_CASE("allocations per call, the table of docs/c-api.md", "[.report]") {
