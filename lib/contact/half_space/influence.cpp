@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <complex>
 #include <cstddef>
 #include <cstring>
@@ -408,6 +409,18 @@ void InfluenceGrid::init_fft() {
   fft_ = std::make_unique<Fft>(nx_, ny_, mx_, my_);
   c00_ = coefficient(0, 0);
 
+  // Love's kernel is bitwise even in both offsets (love_rectangle): its nx·ny values for
+  // |di| < nx, |dj| < ny give all (2nx − 1)(2ny − 1), a quarter of the evaluations (the same bits).
+  std::vector<double> quadrant;
+  const std::size_t qx = static_cast<std::size_t>(nx_);
+  if (!kernel_) {
+    quadrant.resize(qx * static_cast<std::size_t>(ny_));
+    for (int dj = 0; dj < ny_; ++dj)
+      for (int di = 0; di < nx_; ++di) quadrant[static_cast<std::size_t>(di) + qx * dj] = coefficient(di, dj);
+  }
+  auto C = [&](int di, int dj) {
+    return kernel_ ? coefficient(di, dj) : quadrant[static_cast<std::size_t>(std::abs(di)) + qx * std::abs(dj)];
+  };
   // Wrapped kernel (DC-FFT, [LI]); zero at the unused indices.
   std::vector<double> k(static_cast<std::size_t>(mx_) * static_cast<std::size_t>(my_));
   for (int j = 0; j < my_; ++j) {
@@ -416,7 +429,7 @@ void InfluenceGrid::init_fft() {
     for (int i = 0; i < mx_; ++i) {
       int di = 0;
       const bool used = row && wrapped_offset(i, nx_, mx_, &di);
-      k[static_cast<std::size_t>(i) + static_cast<std::size_t>(mx_) * j] = used ? coefficient(di, dj) : 0.0;
+      k[static_cast<std::size_t>(i) + static_cast<std::size_t>(mx_) * j] = used ? C(di, dj) : 0.0;
     }
   }
   // The same coefficients by offset, for add_sparse (copied, not evaluated again).
