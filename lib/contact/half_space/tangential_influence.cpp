@@ -54,6 +54,12 @@ double TangentialKernel::yy(int i, int j) const {
   const double x = i * dx, y = j * dy, a = 0.5 * dx, b = 0.5 * dy;
   return ((1 - nu) * love_rectangle(x, y, a, b) + nu * cerruti_rectangle_yy(x, y, a, b)) / (units::pi * G);
 }
+void TangentialKernel::xx_yy(int i, int j, double* axx, double* ayy) const {
+  const double x = i * dx, y = j * dy, a = 0.5 * dx, b = 0.5 * dy;
+  const double L = love_rectangle(x, y, a, b);
+  *axx = ((1 - nu) * L + nu * cerruti_rectangle_xx(x, y, a, b)) / (units::pi * G);
+  *ayy = ((1 - nu) * L + nu * cerruti_rectangle_yy(x, y, a, b)) / (units::pi * G);
+}
 double TangentialKernel::xy(int i, int j) const {
   return nu * cerruti_rectangle_xy(i * dx, j * dy, 0.5 * dx, 0.5 * dy) / (units::pi * G);
 }

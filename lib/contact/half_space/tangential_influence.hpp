@@ -48,6 +48,10 @@ struct TangentialKernel {
   double xx(int i, int j) const;
   double yy(int i, int j) const;
   double xy(int i, int j) const;
+  /// xx(i, j) and yy(i, j), the same bits, their common Love term evaluated once.
+  void xx_yy(int i, int j, double* axx, double* ayy) const;
+  // xx and yy are bitwise even in i and in j, xy bitwise odd in each (the rectangle sums are
+  // paired: tangential_influence.cpp), so a grid needs only the offsets i ≥ 0.
 };
 
 /// The tangential operator u = A p on an nx × ny grid of dx × dy elements (storage as

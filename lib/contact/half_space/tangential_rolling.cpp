@@ -71,17 +71,26 @@ HalfSpaceTangentialSolver::HalfSpaceTangentialSolver(int nx, int ny, double dx, 
   std::vector<double> ka(static_cast<std::size_t>(m)), kb(static_cast<std::size_t>(m));
   std::vector<std::complex<double>> zero(sh);
   for (auto* v : {&kxx_, &kyy_, &kxy_}) v->assign(sh * static_cast<std::size_t>(ny), {0.0, 0.0});
+  // Per row offset the kernels at the x offsets 0 … nx−1 only: Aₓₓ, A_yy bitwise even and Aₓᵧ
+  // bitwise odd in the x offset (TangentialKernel), so the negative ones follow (the same bits).
+  std::vector<double> axx(snx), ayy(snx), axy(snx);
   for (int d = 0; d < ny; ++d) {
+    for (int k = 0; k < nx; ++k) {
+      K_.xx_yy(k, d, &axx[static_cast<std::size_t>(k)], &ayy[static_cast<std::size_t>(k)]);
+      axy[static_cast<std::size_t>(k)] = K_.xy(k, d);
+    }
     for (int i = 0; i < m; ++i) {
       int di = 0;
       const bool used = fft_.offset(i, &di);
-      ka[static_cast<std::size_t>(i)] = used ? K_.xx(di, d) : 0.0;
-      kb[static_cast<std::size_t>(i)] = used ? K_.yy(di, d) : 0.0;
+      const std::size_t a = static_cast<std::size_t>(std::abs(di));
+      ka[static_cast<std::size_t>(i)] = used ? axx[a] : 0.0;
+      kb[static_cast<std::size_t>(i)] = used ? ayy[a] : 0.0;
     }
     fft_.forward(ka.data(), kb.data(), m, &kxx_[sh * d], &kyy_[sh * d]);
     for (int i = 0; i < m; ++i) {
       int di = 0;
-      ka[static_cast<std::size_t>(i)] = fft_.offset(i, &di) ? K_.xy(di, d) : 0.0;
+      const bool used = fft_.offset(i, &di);
+      ka[static_cast<std::size_t>(i)] = !used ? 0.0 : di >= 0 ? axy[static_cast<std::size_t>(di)] : -axy[static_cast<std::size_t>(-di)];
       kb[static_cast<std::size_t>(i)] = 0.0;
     }
     fft_.forward(ka.data(), kb.data(), m, &kxy_[sh * d], zero.data());
