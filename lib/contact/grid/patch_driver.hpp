@@ -134,6 +134,26 @@ struct GridCaseWorkspace {
   std::vector<PatchCheckInput> checks;       ///< of the reported patches; n_checks in use
   std::size_t n_checks = 0;
   std::vector<PatchSolver*> refined;         ///< the locally refined patches (null: not refined)
+  /// The patch results of earlier cases (solve_grid_case hands them back), for the capacity of
+  /// their vectors: take_patch.
+  std::vector<PatchResult> spare;
+  /// A new PatchResult (every field a fresh one's) whose vectors reuse a spare's capacity.
+  PatchResult take_patch() {
+    PatchResult pr;
+    if (spare.empty()) return pr;
+    PatchResult& s = spare.back();
+    pr.p.swap(s.p);
+    pr.strips.swap(s.strips);
+    pr.traction.pn.swap(s.traction.pn);
+    pr.traction.px.swap(s.traction.px);
+    pr.traction.py.swap(s.traction.py);
+    pr.traction.slip.swap(s.traction.slip);
+    spare.pop_back();
+    pr.p.clear();
+    pr.strips.clear();
+    pr.traction.clear();
+    return pr;
+  }
   /// The next check input (its vectors keep their capacity), after begin: checks[n_checks − 1].
   PatchCheckInput& next_check() {
     if (n_checks == checks.size()) checks.emplace_back();
@@ -184,6 +204,7 @@ CaseResult solve_grid_case(Method method, const ContactGeometry& G, const Materi
 template <class Body>
 void solve_grid_case(Method method, const ContactGeometry& G, const Material& mat, double tY, double Q, double roll,
                      const CaseResult* elastic_mh, GridCaseWorkspace& ws, CaseResult& out, Body&& body) {
+  for (PatchResult& p : out.patches) ws.spare.push_back(std::move(p));  // their vectors for take_patch
   reset_case_result(out);
   out.method = method;
   GridStart& gs = ws.start;
@@ -193,6 +214,8 @@ void solve_grid_case(Method method, const ContactGeometry& G, const Material& ma
   out = body(gs, std::move(out));
   finish_grid_case(G, tY, roll, gs, out);
   set_patch_elastic_hertz(mat, gs.mh, out);
+  // Room for this case's patches in the spares now, not when the next case hands them back.
+  if (ws.spare.capacity() < ws.spare.size() + out.patches.size()) ws.spare.reserve(ws.spare.size() + out.patches.size());
 }
 
 /// [m] the vertical approach at which p_lim [Pa] times the horizontal projection of the rigid

@@ -328,7 +328,7 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
   for (std::size_t n = 0; n < D.solvers.size(); ++n) {
     const HalfSpacePatch* coarse = static_cast<const HalfSpacePatch*>(D.solvers[n]);
     const HalfSpacePatch& k = fine[n] ? *fine[n] : *coarse;
-    PatchResult pr;
+    PatchResult pr = ws.grid.take_patch();  // a new one, its vectors a spare's capacity
     pr.y_r = k.P.y_ref;
     pr.z_r = gap.z_rail(k.P.y_ref);  // the reference point on the rail profile (as CONTACT reports it)
     pr.y_w = gap.y_wheel(k.P.y_ref);

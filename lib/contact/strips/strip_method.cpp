@@ -265,7 +265,7 @@ CaseResult strip_case(const ContactGeometry& G, const Material& mat, double tY, 
     // A patch solve that did not converge keeps its last (closest) iterate, as every
     // not_converged row does (docs/outputs.md); the case's status and message say why.
     if ((S.status != StripStatus::Ok && S.status != StripStatus::NotConverged) || S.N <= 0) continue;
-    PatchResult pr;
+    PatchResult pr = ws.grid.take_patch();  // a new one, its vectors a spare's capacity
     pr.y_r = k.P.y_ref;
     pr.z_r = gap.z_rail(k.P.y_ref);
     pr.y_w = gap.y_wheel(k.P.y_ref);
