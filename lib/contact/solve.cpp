@@ -42,10 +42,13 @@ StripMethodOptions strip_options(const MethodOptions& opt) {
 // (solve_tangential_patch). The grid's pressures are scaled to carry the patch's N exactly (the
 // raster's quadrature error), so that in full sliding |F| = μN. A patch whose solve fails keeps
 // solved = false (the row then carries tangential_unsupported).
-void solve_tangential_strips(CaseResult& r, const Material& mat, double mu, bool keep_traction) {
+void solve_tangential_strips(CaseResult& r, const Material& mat, double mu, bool keep_traction,
+                             TangentialPatchWorkspace* ws) {
   if (r.method != Method::Strips || !r.tangential.asked || !(mu > 0)) return;
-  PatchResult g;
-  for (PatchResult& P : r.patches) {
+  PatchResult local;
+  PatchResult& g = ws ? ws->raster : local;
+  for (std::size_t k = 0; k < r.patches.size(); ++k) {
+    PatchResult& P = r.patches[k];
     if (P.strips.empty() || !(P.N > 0) || !(P.element > 0)) continue;
     const double ds = P.element;
     double s_lo = INFINITY, s_hi = -INFINITY, x_lo = INFINITY, x_hi = -INFINITY;
@@ -82,7 +85,8 @@ void solve_tangential_strips(CaseResult& r, const Material& mat, double mu, bool
     for (double& p : g.p) p *= P.N / total;
     const Creepages c = P.t.c;
     // keep_traction: the tractions on this grid, with its pressure (traction_grid.hpp).
-    const HalfSpaceTangentialResult t = solve_tangential_patch(g, mat, c, mu, {}, keep_traction ? &P.traction : nullptr);
+    const HalfSpaceTangentialResult t = solve_tangential_patch(g, mat, c, mu, {}, keep_traction ? &P.traction : nullptr,
+                                                               ws ? &ws->slot(k) : nullptr);
     if (t.status != TangentialStatus::Ok) continue;
     P.t = t.forces;
     P.t.c = c;
@@ -94,10 +98,11 @@ void solve_tangential_strips(CaseResult& r, const Material& mat, double mu, bool
 // The tangential problem of a solved row (docs/tangential.md): creepages of every contact,
 // FASTSIM per ellipse, the exact solution per half-space patch and per strip patch (above), the
 // case sums.
-void tangential_step(CaseResult& r, const Material& mat, double tY, const MethodOptions& opt) {
+void tangential_step(CaseResult& r, const Material& mat, double tY, const MethodOptions& opt,
+                     TangentialPatchWorkspace* ws = nullptr) {
   solve_tangential(r, mat, tY, opt.tangential);
-  solve_tangential_patches(r, mat, opt.tangential.mu, opt.tangential.keep_traction);
-  solve_tangential_strips(r, mat, opt.tangential.mu, opt.tangential.keep_traction);
+  solve_tangential_patches(r, mat, opt.tangential.mu, opt.tangential.keep_traction, ws);
+  solve_tangential_strips(r, mat, opt.tangential.mu, opt.tangential.keep_traction, ws);
 }
 
 // The slope df/dQ_n of the vertical equilibrium's f(Q_n) = Q_n + Fz_creep(Q_n) − Q (below) at a
@@ -220,8 +225,9 @@ bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const 
   TangentialOptions first = opt.tangential;
   first.fastsim.load_slope = first.vertical_equilibrium && r.method == Method::MultiHertzian;
   solve_tangential(r, mat, tY, first);
-  solve_tangential_patches(r, mat, opt.tangential.mu, opt.tangential.keep_traction);
-  solve_tangential_strips(r, mat, opt.tangential.mu, opt.tangential.keep_traction);
+  TangentialPatchWorkspace* tws = ws ? &ws->tangential : nullptr;
+  solve_tangential_patches(r, mat, opt.tangential.mu, opt.tangential.keep_traction, tws);
+  solve_tangential_strips(r, mat, opt.tangential.mu, opt.tangential.keep_traction, tws);
 
   const std::vector<Warning> handed = auto_warnings(r);
   const Method m = r.method;
@@ -240,7 +246,7 @@ bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const 
       if (extrapolate &&
           extrapolate_tangential(out, anchor[0], anchor[1], opt.tangential.mu, opt.tangential.equilibrium_tolerance))
         return;
-      tangential_step(out, mat, tY, opt);
+      tangential_step(out, mat, tY, opt, tws);
       if (extrapolate) {
         anchor[0] = anchor[1];
         anchor[1].take(out);
@@ -254,7 +260,7 @@ bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const 
     } else {
       out = solve_half_space(G, mat, tY, Qn, half_space_options(opt));
     }
-    tangential_step(out, mat, tY, opt);
+    tangential_step(out, mat, tY, opt, tws);
   });
   if (again && !handed.empty()) r.warnings.insert(r.warnings.begin(), handed.begin(), handed.end());
   return again;

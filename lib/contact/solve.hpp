@@ -5,6 +5,7 @@
 #include "contact/case_result.hpp"
 #include "contact/judge/judge.hpp"
 #include "contact/half_space/half_space_method.hpp"
+#include "contact/half_space/tangential_patch.hpp"
 #include "contact/multi_hertz/multi_hertz.hpp"
 #include "contact/strips/strip_method.hpp"
 
@@ -27,6 +28,7 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
 struct GridWorkspace {
   HalfSpaceWorkspace half_space;
   StripWorkspace strips;
+  TangentialPatchWorkspace tangential;  ///< the grid patches' tangential solvers (friction given)
 };
 
 /// The same with the grid methods' memory in `ws` (null: as the form above): the half-space method

@@ -570,10 +570,22 @@ struct RowFft::Impl {
 };
 #endif
 
-RowFft::RowFft(int n) : n_(n) {
+RowFft::RowFft(int n) { reset(n); }
+
+void RowFft::reset(int n) {
   if (n < 1) throw std::invalid_argument("RowFft: n = " + std::to_string(n) + ": needs ≥ 1 value per row");
+  n_ = n;
   m_ = smooth_size(2 * n - 1);
-  impl_ = std::make_unique<Impl>(m_);
+  for (std::size_t k = 0; k < plans_.size(); ++k)
+    if (plans_[k]->m == m_) {
+      std::rotate(plans_.begin() + static_cast<std::ptrdiff_t>(k), plans_.begin() + static_cast<std::ptrdiff_t>(k) + 1,
+                  plans_.end());  // most recently used last
+      impl_ = plans_.back().get();
+      return;
+    }
+  if (plans_.size() >= kRowPlans) plans_.erase(plans_.begin());  // the least recently used
+  plans_.push_back(std::make_unique<Impl>(m_));
+  impl_ = plans_.back().get();
 }
 RowFft::~RowFft() = default;
 RowFft::RowFft(RowFft&&) noexcept = default;

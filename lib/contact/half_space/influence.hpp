@@ -123,6 +123,10 @@ class RowFft {
   RowFft(const RowFft&) = delete;
   RowFft& operator=(const RowFft&) = delete;
 
+  /// As RowFft(n), keeping the plans made so far (by padded length, the last kRowPlans): a
+  /// length met before makes no plan and allocates nothing.
+  void reset(int n);
+
   int n() const { return n_; }
   int m() const { return m_; }          ///< padded length
   int half() const { return m_ / 2 + 1; }  ///< spectrum length
@@ -138,8 +142,10 @@ class RowFft {
 
  private:
   struct Impl;
+  static constexpr std::size_t kRowPlans = 16;
   int n_ = 0, m_ = 0;
-  std::unique_ptr<Impl> impl_;
+  Impl* impl_ = nullptr;                       ///< the plan of length m_, one of plans_
+  std::vector<std::unique_ptr<Impl>> plans_;   ///< most recently used last
 };
 
 }  // namespace mh

@@ -10,7 +10,8 @@ namespace mh {
 HalfSpaceTangentialResult solve_tangential_patch(const PatchResult& patch, const Material& material,
                                                  const Creepages& c, double mu,
                                                  const HalfSpaceTangentialOptions& options,
-                                                 PatchTraction* keep) {
+                                                 PatchTraction* keep,
+                                                 std::unique_ptr<HalfSpaceTangentialSolver>* kept) {
   if (keep) keep->clear();
   HalfSpaceTangentialResult res;
   res.forces.c = c;
@@ -35,7 +36,11 @@ HalfSpaceTangentialResult solve_tangential_patch(const PatchResult& patch, const
   double G = 0, nu = 0;
   combined_elastic(material, G, nu);  // equal bodies here: G = E / (2 (1 + ν)), ν
   try {
-    HalfSpaceTangentialSolver solver(patch.nx, patch.ns, patch.dx, patch.ds, G, nu);
+    std::unique_ptr<HalfSpaceTangentialSolver> local;
+    std::unique_ptr<HalfSpaceTangentialSolver>& slot = kept ? *kept : local;
+    if (slot) slot->reset(patch.nx, patch.ns, patch.dx, patch.ds, G, nu);
+    else slot = std::make_unique<HalfSpaceTangentialSolver>(patch.nx, patch.ns, patch.dx, patch.ds, G, nu);
+    HalfSpaceTangentialSolver& solver = *slot;
     HalfSpaceTangentialResult out = solver.solve(patch.p.data(), patch.x0, patch.s0, c, mu, options);
     if (keep && out.status == TangentialStatus::Ok) {
       keep->nx = patch.nx;
@@ -57,11 +62,14 @@ HalfSpaceTangentialResult solve_tangential_patch(const PatchResult& patch, const
   }
 }
 
-void solve_tangential_patches(CaseResult& r, const Material& material, double mu, bool keep_traction) {
+void solve_tangential_patches(CaseResult& r, const Material& material, double mu, bool keep_traction,
+                              TangentialPatchWorkspace* ws) {
   if (r.method != Method::HalfSpace || !r.tangential.asked || !(mu > 0)) return;
-  for (PatchResult& P : r.patches) {
+  for (std::size_t k = 0; k < r.patches.size(); ++k) {
+    PatchResult& P = r.patches[k];
     const Creepages c = P.t.c;
-    const HalfSpaceTangentialResult t = solve_tangential_patch(P, material, c, mu, {}, keep_traction ? &P.traction : nullptr);
+    const HalfSpaceTangentialResult t = solve_tangential_patch(P, material, c, mu, {}, keep_traction ? &P.traction : nullptr,
+                                                               ws ? &ws->slot(k) : nullptr);
     if (t.status != TangentialStatus::Ok) continue;
     P.t = t.forces;
     P.t.c = c;

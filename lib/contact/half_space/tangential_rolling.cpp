@@ -48,8 +48,24 @@ bool local_problem(double rx, double ry, double Dx, double Dy, double g, double*
 
 HalfSpaceTangentialSolver::HalfSpaceTangentialSolver(int nx, int ny, double dx, double dy, double G,
                                                      double nu)
-    : K_{dx, dy, G, nu}, nx_(nx + 1), ny_(ny), out_nx_(nx), dx_(dx), dy_(dy),
-      fft_((TangentialInfluence::check(nx, ny, dx, dy, G, nu), nx + 1)), H_(fft_.half()) {
+    : K_{dx, dy, G, nu}, fft_((TangentialInfluence::check(nx, ny, dx, dy, G, nu), nx + 1)) {
+  setup(nx, ny, dx, dy, G, nu);
+}
+
+void HalfSpaceTangentialSolver::reset(int nx, int ny, double dx, double dy, double G, double nu) {
+  TangentialInfluence::check(nx, ny, dx, dy, G, nu);
+  fft_.reset(nx + 1);
+  setup(nx, ny, dx, dy, G, nu);
+}
+
+void HalfSpaceTangentialSolver::setup(int nx, int ny, double dx, double dy, double G, double nu) {
+  K_ = TangentialKernel{dx, dy, G, nu};
+  nx_ = nx + 1;
+  ny_ = ny;
+  out_nx_ = nx;
+  dx_ = dx;
+  dy_ = dy;
+  H_ = fft_.half();
   // Internally one more column, ix = 0, before the grid's first (trailing) column: the traction
   // difference there (0 − p of the first column) belongs to the slip of the grid's elements.
   nx = nx_;
@@ -68,12 +84,20 @@ HalfSpaceTangentialSolver::HalfSpaceTangentialSolver(int nx, int ny, double dx, 
   // Spectra of the wrapped row kernels for the row offsets d = 0 … ny−1 (Aₓₓ, A_yy even in d,
   // Aₓᵧ odd: the negative offsets follow).
   const int m = fft_.m();
-  std::vector<double> ka(static_cast<std::size_t>(m)), kb(static_cast<std::size_t>(m));
-  std::vector<std::complex<double>> zero(sh);
+  std::vector<double>& ka = build_a_;
+  std::vector<double>& kb = build_b_;
+  ka.assign(static_cast<std::size_t>(m), 0.0);
+  kb.assign(static_cast<std::size_t>(m), 0.0);
+  build_zero_.assign(sh, {0.0, 0.0});
   for (auto* v : {&kxx_, &kyy_, &kxy_}) v->assign(sh * static_cast<std::size_t>(ny), {0.0, 0.0});
   // Per row offset the kernels at the x offsets 0 … nx−1 only: Aₓₓ, A_yy bitwise even and Aₓᵧ
   // bitwise odd in the x offset (TangentialKernel), so the negative ones follow (the same bits).
-  std::vector<double> axx(snx), ayy(snx), axy(snx);
+  std::vector<double>& axx = build_xx_;
+  std::vector<double>& ayy = build_yy_;
+  std::vector<double>& axy = build_xy_;
+  axx.assign(snx, 0.0);
+  ayy.assign(snx, 0.0);
+  axy.assign(snx, 0.0);
   for (int d = 0; d < ny; ++d) {
     for (int k = 0; k < nx; ++k) {
       K_.xx_yy(k, d, &axx[static_cast<std::size_t>(k)], &ayy[static_cast<std::size_t>(k)]);
@@ -93,7 +117,7 @@ HalfSpaceTangentialSolver::HalfSpaceTangentialSolver(int nx, int ny, double dx, 
       ka[static_cast<std::size_t>(i)] = !used ? 0.0 : di >= 0 ? axy[static_cast<std::size_t>(di)] : -axy[static_cast<std::size_t>(-di)];
       kb[static_cast<std::size_t>(i)] = 0.0;
     }
-    fft_.forward(ka.data(), kb.data(), m, &kxy_[sh * d], zero.data());
+    fft_.forward(ka.data(), kb.data(), m, &kxy_[sh * d], build_zero_.data());
   }
   // Keep the real parts of the even kernels' spectra and the imaginary part of the odd one's (the
   // other parts are rounding: offsets −(n−1)…(n−1) wrap symmetrically, RowFft::offset).
@@ -103,11 +127,11 @@ HalfSpaceTangentialSolver::HalfSpaceTangentialSolver(int nx, int ny, double dx, 
     kyy_r_[k] = kyy_[k].real();
     kxy_i_[k] = kxy_[k].imag();
   }
-  for (auto* v : {&kxx_, &kyy_, &kxy_}) std::vector<std::complex<double>>().swap(*v);
   vx_hat_.assign(sh * static_cast<std::size_t>(ny), {0.0, 0.0});
   vy_hat_.assign(sh * static_cast<std::size_t>(ny), {0.0, 0.0});
   qx_hat_.assign(sh, {0.0, 0.0});
   qy_hat_.assign(sh, {0.0, 0.0});
+  contact_rows_.clear();
   contact_rows_.reserve(static_cast<std::size_t>(ny));
   state_.assign(n, ElementState::Exterior);
 }

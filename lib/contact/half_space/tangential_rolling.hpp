@@ -96,6 +96,9 @@ class HalfSpaceTangentialSolver {
  public:
   /// Throws std::invalid_argument as TangentialInfluence (G [Pa] combined, ν common).
   HalfSpaceTangentialSolver(int nx, int ny, double dx, double dy, double G, double nu);
+  /// As a new solver of these arguments, in this one's buffers: once they have grown, and for a
+  /// padded row length met before (RowFft::reset), nothing is allocated. Throws as the constructor.
+  void reset(int nx, int ny, double dx, double dy, double G, double nu);
 
   /// Solve steady rolling: pn [Pa] nx·ny pressures (≤ 0 or NaN: exterior); x0, y0 [m] the centre
   /// of element (0, 0) relative to the contact's reference point (Mz is about that point, φ
@@ -114,16 +117,19 @@ class HalfSpaceTangentialSolver {
   const TangentialKernel& kernel() const { return K_; }
 
  private:
+  void setup(int nx, int ny, double dx, double dy, double G, double nu);  ///< the constructor's work, fft_ set
   void add_row_change(int iy);  ///< carry the row's dqx_, dqy_ into every contact row's spectrum
   TangentialKernel K_;
-  int nx_, ny_;  ///< internal grid: the given one and a column of exterior elements before it
-  int out_nx_;   ///< the given nx
-  double dx_, dy_;
+  int nx_ = 0, ny_ = 0;  ///< internal grid: the given one and a column of exterior elements before it
+  int out_nx_ = 0;   ///< the given nx
+  double dx_ = 0, dy_ = 0;
   RowFft fft_;
-  int H_;  ///< spectrum length
+  int H_ = 0;  ///< spectrum length
   std::vector<double> px_, py_, qx_, qy_, sx_, sy_;  ///< nx·ny
   std::vector<double> rx_, ry_;                      ///< row kernels A(k, 0), k = 0 … nx−1
-  std::vector<std::complex<double>> kxx_, kyy_, kxy_;  ///< kernel spectra of row offsets 0 … ny−1 (construction only)
+  std::vector<std::complex<double>> kxx_, kyy_, kxy_;  ///< kernel spectra of row offsets 0 … ny−1 (setup only; kept for the next)
+  std::vector<double> build_a_, build_b_, build_xx_, build_yy_, build_xy_;  ///< setup's rows (kept for the next)
+  std::vector<std::complex<double>> build_zero_;
   std::vector<double> kxx_r_, kyy_r_, kxy_i_;          ///< their real, real, imaginary parts (kept)
   std::vector<std::complex<double>> vx_hat_, vy_hat_;  ///< per row: spectrum of v = A q
   std::vector<std::complex<double>> qx_hat_, qy_hat_;  ///< one row's change of q, transformed
