@@ -11,6 +11,42 @@ namespace mh {
 
 namespace {
 constexpr double kSampleStep = 0.01e-3;  // [m] sampling of g(y) for its minimum (then refined)
+
+/// The rolled wheel curves of this thread's last gaps, by geometry, wheel curve and roll: a gap
+/// at a roll met before takes its curve as it is, and a new roll is built in place of the least
+/// recently used curve no gap holds any more (its vectors' capacity kept), so that the grid
+/// methods' rolled cases allocate nothing for it once the slots have grown (docs/c-api.md). A
+/// geometry without a build id (not made by build_geometry) is not kept.
+std::shared_ptr<const ProfileCurve> rolled_curve(const ProfileCurve& W, std::uint64_t build_id, double roll) {
+  if (build_id == 0) return std::make_shared<const ProfileCurve>(rolled_wheel_curve(W, roll));
+  struct Slot {
+    std::uint64_t id = 0;
+    const ProfileCurve* W = nullptr;
+    double roll = 0;
+    std::shared_ptr<ProfileCurve> curve;
+    std::uint64_t used = 0;
+  };
+  constexpr std::size_t kSlots = 8;
+  thread_local Slot slots[kSlots];
+  thread_local std::uint64_t tick = 0;
+  ++tick;
+  Slot* free_slot = nullptr;
+  for (Slot& s : slots) {
+    if (s.curve && s.id == build_id && s.W == &W && s.roll == roll) {
+      s.used = tick;
+      return s.curve;
+    }
+    if ((!s.curve || s.curve.use_count() == 1) && (!free_slot || s.used < free_slot->used)) free_slot = &s;
+  }
+  if (!free_slot) return std::make_shared<const ProfileCurve>(rolled_wheel_curve(W, roll));  // every slot held
+  if (free_slot->curve) rolled_wheel_curve(W, roll, *free_slot->curve);  // in place
+  else free_slot->curve = std::make_shared<ProfileCurve>(rolled_wheel_curve(W, roll));
+  free_slot->id = build_id;
+  free_slot->W = &W;
+  free_slot->roll = roll;
+  free_slot->used = tick;
+  return free_slot->curve;
+}
 constexpr int kNewtonIterations = 8;     // normal-line intersections converge in 2–4
 constexpr double kNewtonTol = 1e-13;     // [m]
 }  // namespace
@@ -25,7 +61,7 @@ WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY, double y_near, d
       build_id_(G.build_id), R0_(G.nominal_radius), z0_(G.wheel_z0), face_foot_(G.rail_face_foot) {
   if (roll != 0.0) {
     // The rolled wheel's own curve; no node tables of gap_kink_bound keyed by the geometry's id.
-    rolled_W_ = std::make_shared<const ProfileCurve>(rolled_wheel_curve(*W_, roll));
+    rolled_W_ = rolled_curve(*W_, G.build_id, roll);
     W_ = rolled_W_.get();
     roll_ = roll;
     build_id_ = 0;

@@ -9,6 +9,12 @@
 namespace mh {
 
 ProfileCurve rolled_wheel_curve(const ProfileCurve& W, double roll) {
+  ProfileCurve out = W;
+  rolled_wheel_curve(W, roll, out);
+  return out;
+}
+
+void rolled_wheel_curve(const ProfileCurve& W, double roll, ProfileCurve& out) {
   const double c = std::cos(roll), sn = std::sin(roll), tn = std::tan(roll);
   const std::size_t n = W.nodes();
   // The rotated lateral coordinate of W's point at y, increasing in y where 1 − z' tan δ > 0.
@@ -27,7 +33,10 @@ ProfileCurve rolled_wheel_curve(const ProfileCurve& W, double roll) {
   const double h = W.node_y(1) - W.node_y(0);
   const double y_first = Y(W.node_y(lo)), y_last = Y(W.node_y(hi));
   const std::size_t m = static_cast<std::size_t>(std::floor((y_last - y_first) / h + 1e-9)) + 1;
-  std::vector<double> z(m), dz(m), k(m);
+  thread_local std::vector<double> z, dz, k;  // the nodes, kept for the next call
+  z.assign(m, 0.0);
+  dz.assign(m, 0.0);
+  k.assign(m, 0.0);
   std::size_t i = lo;  // source interval [node i, node i + 1] holding the target
   for (std::size_t j = 0; j < m; ++j) {
     const double yt = y_first + h * static_cast<double>(j);
@@ -47,7 +56,7 @@ ProfileCurve rolled_wheel_curve(const ProfileCurve& W, double roll) {
     dz[j] = (d + tn) / (1 - d * tn);  // tan(θ + δ)
     k[j] = W.kappa(y);
   }
-  return ProfileCurve::from_nodes(y_first, h, std::move(z), std::move(dz), std::move(k), W);
+  out.assign_nodes(y_first, h, z, dz, k, W);
 }
 
 }  // namespace mh

@@ -15,5 +15,7 @@ namespace mh {
 /// rotated curve is a graph over y (1 − z' tan δ > 0.05) around the origin is kept.
 /// Precondition: |δ| < 0.5 rad.
 ProfileCurve rolled_wheel_curve(const ProfileCurve& W, double roll);
+/// The same into `out` (not W), its vectors keeping their capacity: no allocation once grown.
+void rolled_wheel_curve(const ProfileCurve& W, double roll, ProfileCurve& out);
 
 }  // namespace mh

@@ -518,6 +518,18 @@ ProfileCurve ProfileCurve::from_nodes(double y_first, double h, std::vector<doub
   return c;
 }
 
+void ProfileCurve::assign_nodes(double y_first, double h, const std::vector<double>& z, const std::vector<double>& dz,
+                                const std::vector<double>& kappa, const ProfileCurve& like) {
+  *this = like;  // copy-assignment: the vectors keep their capacity
+  h_ = h;
+  y0_ = y_first_ = y_first;
+  j0_ = 0;
+  side_.assign(z.size(), 0);
+  z_.assign(z.begin(), z.end());
+  dz_.assign(dz.begin(), dz.end());
+  k_.assign(kappa.begin(), kappa.end());
+}
+
 double ProfileCurve::z(double y, double* dz) const {
   const std::size_t m = z_.size();
   double s = grid_pos(y);

@@ -145,6 +145,9 @@ class ProfileCurve {
   /// such as the rolled wheel's, geometry/rolled_gap.hpp).
   static ProfileCurve from_nodes(double y_first, double h, std::vector<double> z, std::vector<double> dz,
                                  std::vector<double> kappa, const ProfileCurve& like);
+  /// The same into this curve, its vectors keeping their capacity (no allocation once grown).
+  void assign_nodes(double y_first, double h, const std::vector<double>& z, const std::vector<double>& dz,
+                    const std::vector<double>& kappa, const ProfileCurve& like);
 
   double y_min() const { return y0_; }
   double y_max() const { return y_first_ + h_ * static_cast<double>(j0_ + z_.size() - 1); }

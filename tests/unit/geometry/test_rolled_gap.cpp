@@ -24,11 +24,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <thread>
 #include <vector>
 
 #include "geometry/contact_geometry.hpp"
 #include "geometry/gap.hpp"
+#include "geometry/rolled_gap.hpp"
 #include "profile/standard_profiles.hpp"
 #include "unit/contact/manchester_fixture.hpp"
 
@@ -147,5 +150,44 @@ TEST_CASE("rolled gap: δ = 0 is the upright gap, bit for bit", "[geometry][roll
       CHECK(a.z_wheel(y, 3 * mm) == b.z_wheel(y, 3 * mm));
       CHECK(a.rolling_radius(y) == b.rolling_radius(y));
     }
+  }
+}
+
+// The rolled wheel curves are kept per thread (gap.cpp, rolled_curve): a gap at a roll met before
+// takes the kept curve, a new roll is built in place of a curve no gap holds any more. Either must
+// be the curve a new build gives, bit for bit: each gap here (made after gaps at other rolls, some
+// still alive, more rolls than the thread keeps) against the rolled_wheel_curve of that roll made
+// afresh, node by node, and its first contact against a gap made on a new thread (whose kept
+// curves are all new builds). Seen to fail with the kept curves looked up without their roll.
+TEST_CASE("rolled gap: curves kept and rebuilt in place are those built afresh, bit for bit",
+          "[geometry][roll][rolled_gap]") {
+  const mh::ContactGeometry& G = mh::testing::manchester_geometry();
+  const mh::ProfileCurve& W = G.wheel_gap_curve ? *G.wheel_gap_curve : *G.wheel_curve;
+  std::vector<mh::WheelRailGap> held;  // some gaps kept alive: their curves may not be rebuilt
+  held.reserve(4);
+  const double rolls[] = {3e-3, -7e-3, 11e-3, 3e-3, -2e-3, 5e-3, 13e-3, -9e-3, 1e-3, 6e-3, 3e-3, -7e-3, 8e-3, -4e-3};
+  for (std::size_t k = 0; k < std::size(rolls); ++k) {
+    const double roll = rolls[k], t = (k % 2 ? 1.5 : 6.5) * mm;
+    const mh::WheelRailGap gap(G, t, std::nan(""), roll);
+    if (k % 4 == 1 && held.size() < held.capacity()) held.emplace_back(G, t, std::nan(""), roll);
+    const mh::ProfileCurve fresh = mh::rolled_wheel_curve(W, roll);
+    const mh::ProfileCurve& kept = gap.wheel_curve();
+    INFO("roll " << roll * 1e3 << " mrad, gap " << k);
+    REQUIRE(kept.nodes() == fresh.nodes());
+    bool same = kept.y_min() == fresh.y_min() && kept.y_max() == fresh.y_max();
+    for (std::size_t i = 0; i < fresh.nodes() && same; ++i) {
+      double d1 = 0, d2 = 0;
+      const double y = fresh.node_y(i);
+      same = kept.node_y(i) == y && kept.z(y, &d1) == fresh.z(y, &d2) && d1 == d2 && kept.kappa(y) == fresh.kappa(y);
+    }
+    CHECK(same);
+    double lift = 0, y_first = 0;
+    std::thread([&] {
+      const mh::WheelRailGap other(G, t, std::nan(""), roll);
+      lift = other.wheel_lift();
+      y_first = other.y_first_contact();
+    }).join();
+    CHECK(gap.wheel_lift() == lift);
+    CHECK(gap.y_first_contact() == y_first);
   }
 }
