@@ -77,7 +77,7 @@ struct Collocation {
 struct StripScratch {
   Collocation eval, refine;              ///< the collocations of evaluate and of refine_extents
   std::vector<int> band, E, act, newly, R, A;
-  std::vector<double> a, built, a_prev, phi_prev, ucap, rhs, qE, z, w, wR, KqR, ra, qa;
+  std::vector<double> a, built, a_prev, phi_prev, ucap, rhs, qE, w, wR, KqR, qa;
   std::vector<char> start, in_act;
   DenseLU small;                         ///< the active set's small systems (capacitance, active strips)
   std::vector<int> warm;                 ///< load control's active set from one approach to the next
@@ -104,12 +104,13 @@ struct StripEndGapScratch {
   DenseMatrix dX, dF, Fm, XF;
   int n_diff = 0, oldest = 0;
   /// Its least-squares factorisations, one per shape n × k met (Eigen's, which keeps its memory
-  /// only at one shape).
+  /// only at one shape), the last kMaxQR shapes (most recently used last).
   struct QR {
     int n, k;
     Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr;
   };
   std::vector<QR> qrs;
+  static constexpr std::size_t kMaxQR = 16;
   StripResult start;  ///< a refinement's start taken from a warm start (StripSolver::at_load)
 };
 

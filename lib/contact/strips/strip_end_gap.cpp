@@ -336,13 +336,15 @@ void refine_extents(const Solver& S, bool load_given, double target, double p_li
       }
       // γ by Eigen's column-pivoting Householder QR, kept per shape, and its solve (the steps of
       // ColPivHouseholderQR::solve, whose copy of the right-hand side would allocate).
-      StripEndGapScratch::QR* qr = nullptr;
-      for (StripEndGapScratch::QR& e : w.qrs)
-        if (e.n == n && e.k == k) { qr = &e; break; }
-      if (!qr) {
+      auto found = std::find_if(w.qrs.begin(), w.qrs.end(),
+                                [&](const StripEndGapScratch::QR& e) { return e.n == n && e.k == k; });
+      if (found != w.qrs.end()) {
+        std::rotate(found, found + 1, w.qrs.end());  // most recently used last
+      } else {
+        if (w.qrs.size() >= StripEndGapScratch::kMaxQR) w.qrs.erase(w.qrs.begin());  // the least recently used
         w.qrs.push_back({n, k, Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(n, k)});
-        qr = &w.qrs.back();
       }
+      StripEndGapScratch::QR* qr = &w.qrs.back();
       qr->qr.compute(w.Fm.map());
       w.gam.assign(static_cast<std::size_t>(k), 0.0);
       const Eigen::Index nz = qr->qr.nonzeroPivots();
