@@ -333,18 +333,19 @@ TEST_CASE("the wheelset call allocates nothing once its workspace and result hav
 // default), without and with friction (μ = 0.3): the second pass over the same steps allocates
 // nothing: the patch results' vectors come back to the workspace (GridCaseWorkspace::take_patch),
 // the exact tangential solver of each patch is set up again in its own buffers, its row FFT's
-// plans kept by length (TangentialPatchWorkspace, HalfSpaceTangentialSolver::reset,
-// RowFft::reset), and the rolled wheel curves are kept per thread and rebuilt in place
-// (gap.cpp, rolled_curve). Each step's forces are those of a fresh workspace, bit for bit. Seen to
-// fail without take_patch (strips about 14 allocations a step, their strip lists; half-space 2,
-// the pressure grids), with a tangential solver made per patch and solve (about 250 a step with
-// friction), and with a rolled curve made per gap (about 50 a step). Not the half-space method
-// with friction: its equilibrium's solves at other loads need more patch grid sizes than the 24
-// influence operators the workspace keeps (docs/c-api.md: about 40 allocations a wheel and step
-// on these poses, new operators of sizes not kept).
+// plans taken from the thread's plans by length (TangentialPatchWorkspace,
+// HalfSpaceTangentialSolver::reset, RowFft::reset), the rolled wheel curves are kept per thread
+// and rebuilt in place (gap.cpp, rolled_curve), and the half-space influence operators, of more
+// grid sizes than the workspace keeps (the equilibrium with friction solves each wheel at other
+// loads), are rebuilt in their own buffers (InfluenceGrid::reset, half_space_method.cpp). Each
+// step's forces are those of a fresh workspace, bit for bit. Seen to fail without take_patch
+// (strips about 14 allocations a step, their strip lists; half-space 2, the pressure grids), with
+// a tangential solver made per patch and solve (about 250 a step with friction), with a rolled
+// curve made per gap (about 50 a step), and with a new operator in place of an evicted one
+// (half-space with friction: 399 over the second pass).
 TEST_CASE("the wheelset call by a grid method allocates nothing once it has seen the steps", "[alloc]") {
   const std::pair<mh::Method, double> runs[] = {
-      {mh::Method::Strips, 0.0}, {mh::Method::Strips, 0.3}, {mh::Method::HalfSpace, 0.0}};
+      {mh::Method::Strips, 0.0}, {mh::Method::Strips, 0.3}, {mh::Method::HalfSpace, 0.0}, {mh::Method::HalfSpace, 0.3}};
   for (const auto& [m, mu] : runs) {
     {
       mh::WheelsetSetup s;

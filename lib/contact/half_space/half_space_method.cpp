@@ -20,11 +20,15 @@ constexpr long kMaxElements = 4'000'000;  // one patch grid larger than this is 
 
 // The influence operators of a thread's half-space cases, kept by their grid (nx, ny, dx, dy,
 // compliance: equal values give the same operator bit for bit), so that a case like the last one
-// builds no kernel, plan or buffer (HalfSpaceWorkspace).
+// builds no kernel, plan or buffer (HalfSpaceWorkspace). Once kInfluenceGrids are kept, an
+// operator of an earlier case is rebuilt in place for a new grid (InfluenceGrid::reset): the least
+// recently used of those whose buffers hold the grid, else the least recently used, so that a
+// run which keeps meeting more grid sizes than are kept (the wheelset's equilibrium at changing
+// loads) soon allocates nothing either.
 class InfluenceCache {
  public:
   /// A case begins: the operators it takes stay put until the next begin_case() (patches hold
-  /// them), so only those of earlier cases are dropped to make room.
+  /// them), so only those of earlier cases are rebuilt to make room.
   void begin_case() { case_start_ = ++clock_; }
   const InfluenceGrid& get(int nx, int ny, double dx, double dy, double H) {
     ++clock_;
@@ -33,17 +37,23 @@ class InfluenceCache {
         e.used = clock_;
         return *e.C;
       }
-    Entry* lru = nullptr;  // full: the least recently used one of an earlier case makes room
+    Entry* lru = nullptr;        // the least recently used of an earlier case
+    Entry* lru_holds = nullptr;  // the same among those whose buffers hold nx × ny
     if (grids_.size() >= static_cast<std::size_t>(HalfSpaceWorkspace::kInfluenceGrids))
-      for (Entry& e : grids_)
-        if (e.used < case_start_ && (!lru || e.used < lru->used)) lru = &e;
-    if (!lru) {
-      grids_.push_back({nullptr, 0});
-      lru = &grids_.back();
+      for (Entry& e : grids_) {
+        if (e.used >= case_start_) continue;
+        if (!lru || e.used < lru->used) lru = &e;
+        if ((!lru_holds || e.used < lru_holds->used) && e.C->holds(nx, ny)) lru_holds = &e;
+      }
+    Entry* slot = lru_holds ? lru_holds : lru;
+    if (slot) {
+      slot->C->reset(nx, ny, dx, dy, H);
+    } else {  // room left, or every operator held by this case
+      grids_.push_back({std::make_unique<InfluenceGrid>(nx, ny, dx, dy, H), 0});
+      slot = &grids_.back();
     }
-    lru->C = std::make_unique<InfluenceGrid>(nx, ny, dx, dy, H);
-    lru->used = clock_;
-    return *lru->C;
+    slot->used = clock_;
+    return *slot->C;
   }
 
  private:

@@ -28,9 +28,9 @@ CaseResult solve_half_space(const ContactGeometry& G, const Material& material, 
 
 /// One thread's memory for half-space cases: the patch solvers with their grids, the influence
 /// operators with their FFT plans and buffers (InfluenceGrid, kept by nx, ny, dx, dy and
-/// compliance; beyond kInfluenceGrids the least recently used of an earlier case makes room), the
-/// conjugate-gradient
-/// vectors, the driver's vectors and the physical checks' inputs. Made empty (no allocation);
+/// compliance; beyond kInfluenceGrids one of an earlier case is rebuilt in its own buffers for
+/// the new grid), the conjugate-gradient vectors, the driver's vectors and the physical checks'
+/// inputs. Made empty (no allocation);
 /// grows on first use. Used by one thread at a time; it carries no data from case to case that
 /// the result depends on (the same bytes as without it).
 class HalfSpaceWorkspace {

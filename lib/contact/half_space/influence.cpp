@@ -1,4 +1,5 @@
 // Half-space influence coefficients and DC-FFT convolution (sources in influence.hpp).
+#include "contact/half_space/fft_backend.hpp"
 #include "contact/half_space/influence.hpp"
 
 #include <algorithm>
@@ -13,111 +14,6 @@
 #include <utility>
 #include <vector>
 
-#ifdef MHCONTACT_FFTW
-#include <fftw3.h>
-
-#include <mutex>
-#include <type_traits>
-#else
-// PocketFFT's own thread pool stays out: apply() is called from the project's worker threads
-// (lib/jobs), one transform per call.
-#define POCKETFFT_NO_MULTITHREADING
-// The header's arr<T> takes C11 aligned_alloc(64, n) under glibc without rounding n up to a
-// multiple of 64, which C11 requires (AddressSanitizer rejects every plan); this macro, tested by
-// the header alone, selects its portable aligned allocator (malloc + 64, aligned by hand) instead.
-#define _LIBCPP_HAS_NO_ALIGNED_ALLOCATION
-#include <pocketfft_hdronly.h>
-#endif
-
-#include "core/units.hpp"
-
-#ifndef MHCONTACT_FFTW
-namespace mh_pocketfft {
-namespace pf = pocketfft::detail;
-/// PocketFFT's SIMD vector of doubles (2 lanes with SSE2, 4 with AVX, 1 without vectors): its
-/// 1-D plans transform L independent sequences at once when given arrays of these ([P]).
-#ifndef POCKETFFT_NO_VECTORS
-using Vd = pf::vtype_t<double>;
-#else
-using Vd = double;
-#endif
-constexpr int L = static_cast<int>(sizeof(Vd) / sizeof(double));
-
-/// Per-thread scratch for PocketFFT's 1-D calls: each rfftp/cfftp::exec makes an arr<T> of one
-/// sequence (T = Vd or cmplx<Vd> here), which would be an aligned heap allocation per call.
-/// The arr<> specialisations below take the buffers from this stack instead (last in, first
-/// out, so nested calls each get their own) and keep them for the thread's next call: after the
-/// first apply() of the largest grid, a thread allocates nothing in the FFT. This relies on the
-/// header's exec() taking its scratch as an arr<T> (pocketfft_hdronly.h of Debian 12's gemmi-dev,
-/// and PocketFFT's C++ releases since 2019); were that to change, only the allocations return.
-class ScratchStack {
- public:
-  static ScratchStack& local() {
-    static thread_local ScratchStack s;
-    return s;
-  }
-  void* take(std::size_t bytes) {
-    if (top_ == bufs_.size()) bufs_.emplace_back();
-    Buffer& b = bufs_[top_++];
-    if (b.bytes < bytes) {
-      b.mem.reset(static_cast<char*>(::operator new(bytes, std::align_val_t{64})));
-      b.bytes = bytes;
-    }
-    return b.mem.get();
-  }
-  void give_back() { --top_; }
-
- private:
-  struct Free {
-    void operator()(char* p) const { ::operator delete(p, std::align_val_t{64}); }
-  };
-  struct Buffer {
-    std::unique_ptr<char, Free> mem;
-    std::size_t bytes = 0;
-  };
-  std::vector<Buffer> bufs_;
-  std::size_t top_ = 0;
-};
-
-/// The interface of pocketfft::detail::arr<T> as exec() uses it, on ScratchStack.
-template <typename T>
-class ScratchArr {
- public:
-  ScratchArr() = default;
-  explicit ScratchArr(std::size_t n) : sz_(n) {
-    if (n > 0) p_ = static_cast<T*>(ScratchStack::local().take(n * sizeof(T)));
-  }
-  ScratchArr(const ScratchArr&) = delete;
-  ScratchArr& operator=(const ScratchArr&) = delete;
-  ~ScratchArr() {
-    if (p_) ScratchStack::local().give_back();
-  }
-  T& operator[](std::size_t i) { return p_[i]; }
-  const T& operator[](std::size_t i) const { return p_[i]; }
-  T* data() { return p_; }
-  const T* data() const { return p_; }
-  std::size_t size() const { return sz_; }
-
- private:
-  T* p_ = nullptr;
-  std::size_t sz_ = 0;
-};
-}  // namespace mh_pocketfft
-
-#ifndef POCKETFFT_NO_VECTORS  // (without vectors Vd is double, whose arr also holds the twiddles)
-template <>
-class pocketfft::detail::arr<mh_pocketfft::Vd> : public mh_pocketfft::ScratchArr<mh_pocketfft::Vd> {
- public:
-  using ScratchArr::ScratchArr;
-};
-template <>
-class pocketfft::detail::arr<pocketfft::detail::cmplx<mh_pocketfft::Vd>>
-    : public mh_pocketfft::ScratchArr<pocketfft::detail::cmplx<mh_pocketfft::Vd>> {
- public:
-  using ScratchArr::ScratchArr;
-};
-#endif
-#endif
 
 namespace mh {
 
@@ -130,38 +26,6 @@ double love_corner(double u, double v) {
   if (u != 0.0) f += u * std::asinh(v / std::fabs(u));
   if (v != 0.0) f += v * std::asinh(u / std::fabs(v));
   return f;
-}
-
-/// Smallest n ≥ m whose only prime factors have fast butterflies in the backend: 2, 3, 5, 7 for
-/// FFTW (FFTW 3 manual §2.1, "sizes of the form 2^a 3^b 5^c 7^d"); 2, 3, 5 for PocketFFT, whose
-/// real transforms (rfftp) have butterflies for 2, 3, 4 and 5 only, 7 going through the generic
-/// O(p²) one (radfg/radbg), the same sizes as util::good_size_real ([P]).
-int smooth_size(int m) {
-#ifdef MHCONTACT_FFTW
-  static const int factors[] = {2, 3, 5, 7};
-#else
-  static const int factors[] = {2, 3, 5};
-#endif
-  for (int n = m > 1 ? m : 1;; ++n) {
-    int r = n;
-    for (int f : factors)
-      while (r % f == 0) r /= f;
-    if (r == 1) return n;
-  }
-}
-
-/// Offset (in elements) represented by index i of a cyclic axis of m points carrying the offsets
-/// −(n−1)…(n−1); false for the unused indices between them (DC-FFT wrap-around, [LI]).
-bool wrapped_offset(int i, int n, int m, int* offset) {
-  if (i < n) {
-    *offset = i;
-    return true;
-  }
-  if (i >= m - n + 1) {
-    *offset = i - m;
-    return true;
-  }
-  return false;
 }
 
 }  // namespace
@@ -177,33 +41,15 @@ double love_rectangle(double x, double y, double a, double b) {
 
 const char* fft_backend() { return "fftw3"; }
 
-namespace {
-/// FFTW planning (fftw_plan_* and fftw_destroy_plan) is not thread-safe, execution of an existing
-/// plan is (FFTW 3 manual §5.4 "Thread safety"): every plan is made and destroyed under this mutex.
-std::mutex& fftw_planner_mutex() {
-  static std::mutex m;
-  return m;
-}
-struct FftwFree {
-  void operator()(void* ptr) const { fftw_free(ptr); }
-};
-struct PlanDestroy {
-  void operator()(fftw_plan plan) const {
-    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    fftw_destroy_plan(plan);
-  }
-};
-using Plan = std::unique_ptr<std::remove_pointer_t<fftw_plan>, PlanDestroy>;
-}  // namespace
 
 /// FFTW backend: r2c / c2r plans over the whole padded grid.
 struct InfluenceGrid::Fft {
   int nx, ny, mx, my;
   std::size_t n_real, n_cplx;
-  std::unique_ptr<double, FftwFree> real;           ///< mx·my work buffer
-  std::unique_ptr<fftw_complex, FftwFree> spectrum; ///< my·(mx/2+1) work buffer
-  std::unique_ptr<fftw_complex, FftwFree> kernel;   ///< FFT of the wrapped kernel, / (mx·my)
-  Plan forward, backward;
+  std::unique_ptr<double, fft::FftwFree> real;           ///< mx·my work buffer
+  std::unique_ptr<fftw_complex, fft::FftwFree> spectrum; ///< my·(mx/2+1) work buffer
+  std::unique_ptr<fftw_complex, fft::FftwFree> kernel;   ///< FFT of the wrapped kernel, / (mx·my)
+  fft::Plan forward, backward;
 
   Fft(int nx_, int ny_, int mx_, int my_) : nx(nx_), ny(ny_), mx(mx_), my(my_) {
     n_real = static_cast<std::size_t>(mx) * static_cast<std::size_t>(my);
@@ -213,11 +59,23 @@ struct InfluenceGrid::Fft {
     kernel.reset(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * n_cplx)));
     if (!real || !spectrum || !kernel) throw std::bad_alloc();
     // FFTW's 2-D arrays are row-major with the LAST dimension fastest: n0 = my (y), n1 = mx (x).
-    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    std::lock_guard<std::mutex> lock(fft::planner_mutex());
     forward.reset(fftw_plan_dft_r2c_2d(my, mx, real.get(), spectrum.get(), FFTW_ESTIMATE));
     backward.reset(fftw_plan_dft_c2r_2d(my, mx, spectrum.get(), real.get(), FFTW_ESTIMATE));
     if (!forward || !backward) throw std::runtime_error("InfluenceGrid: FFTW planning failed");
   }
+
+  /// As Fft(…) for these sizes; the buffers and plans kept when the padded sizes are the same.
+  void reset(int nx_, int ny_, int mx_, int my_) {
+    if (mx_ == mx && my_ == my) {
+      nx = nx_;
+      ny = ny_;
+      return;
+    }
+    *this = Fft(nx_, ny_, mx_, my_);
+  }
+  /// Whether reset() to padded sizes mx_ × my_ allocates nothing.
+  bool holds(int mx_, int my_) const { return mx_ == mx && my_ == my; }
 
   /// The transform of the wrapped kernel k (mx·my values, x fastest), scaled once by 1/(mx·my),
   /// the normalisation FFTW leaves to the caller (FFTW 3 manual §4.8 "What FFTW Really Computes").
@@ -256,9 +114,9 @@ struct InfluenceGrid::Fft {
 
 const char* fft_backend() { return "pocketfft"; }
 
-/// PocketFFT backend ([P]): the 1-D plans of pocketfft_hdronly.h used directly, made once per
-/// grid (factors and twiddles), so apply() builds no plan and takes no lock. The 2-D real
-/// convolution:
+/// PocketFFT backend ([P]): the 1-D plans of pocketfft_hdronly.h used directly, taken when the
+/// grid is set up from the thread's plans by length (fft_backend.hpp), so apply() builds no plan
+/// and takes no lock. The 2-D real convolution:
 ///  - rows along x, real-to-complex (FFTPACK half-complex order r0, r1, i1, r2, i2, …), L rows
 ///    per call, only the ny rows that carry pressure; the half spectrum kx = 0 … mx/2 kept;
 ///  - columns along y on that half spectrum, L columns per call, stored as blocks of L columns
@@ -267,14 +125,14 @@ const char* fft_backend() { return "pocketfft"; }
 ///  - rows back, complex-to-real (the imaginary parts at kx = 0 and mx/2 are not read, as a c2r
 ///    transform does), only the ny rows that are wanted.
 /// Each 1-D call's scratch of one sequence (rfftp/cfftp::exec) comes from the thread's
-/// ScratchStack above: no allocation once the thread has transformed its largest grid.
+/// ScratchStack (fft_backend.hpp): no allocation once the thread has transformed its largest grid.
 struct InfluenceGrid::Fft {
   using Vd = mh_pocketfft::Vd;
   static constexpr int L = mh_pocketfft::L;
   using Cv = pocketfft::detail::cmplx<Vd>;
-  int nx, ny, mx, my, hx, nb;  ///< hx = mx/2 + 1 spectrum columns in nb blocks of L
-  pocketfft::detail::pocketfft_r<double> plan_x;  ///< real transforms of length mx
-  pocketfft::detail::pocketfft_c<double> plan_y;  ///< complex transforms of length my
+  int nx = 0, ny = 0, mx = 0, my = 0, hx = 0, nb = 0;  ///< hx = mx/2 + 1 spectrum columns in nb blocks of L
+  std::shared_ptr<const fft::RealPlan> plan_x;     ///< real transforms of length mx (the thread's, fft::real_plan)
+  std::shared_ptr<const fft::ComplexPlan> plan_y;  ///< complex transforms of length my
   std::vector<Cv> spec;    ///< half spectrum, nb·my blocks of L columns (lanes past hx stay 0)
   std::vector<Cv> kernel;  ///< the wrapped kernel's spectrum, same layout, / (mx·my)
   /// L rows of mx values, then two spare slots: [mx] stays 0 (read for the imaginary parts that
@@ -284,13 +142,36 @@ struct InfluenceGrid::Fft {
   /// from after the forward transform (get_*) and to write to before the backward one (put_*).
   std::vector<int> get_re, get_im, put_re, put_im;
 
-  Fft(int nx_, int ny_, int mx_, int my_)
-      : nx(nx_), ny(ny_), mx(mx_), my(my_), hx(mx_ / 2 + 1), nb((hx + L - 1) / L),
-        plan_x(static_cast<std::size_t>(mx_)), plan_y(static_cast<std::size_t>(my_)),
-        spec(static_cast<std::size_t>(nb) * static_cast<std::size_t>(my_), Cv(Vd{}, Vd{})),
-        kernel(spec.size(), Cv(Vd{}, Vd{})), rows(static_cast<std::size_t>(mx_) + 2, Vd{}) {
+  Fft(int nx_, int ny_, int mx_, int my_) { reset(nx_, ny_, mx_, my_); }
+
+  static int blocks(int mx_) { return (mx_ / 2 + 1 + L - 1) / L; }
+  /// Whether reset() to padded sizes mx_ × my_ allocates nothing (its plans aside, which the
+  /// thread keeps by length).
+  bool holds(int mx_, int my_) const {
+    const std::size_t lanes = static_cast<std::size_t>(blocks(mx_)) * L;
+    const std::size_t ns = static_cast<std::size_t>(blocks(mx_)) * static_cast<std::size_t>(my_);
+    return spec.capacity() >= ns && kernel.capacity() >= ns && rows.capacity() >= static_cast<std::size_t>(mx_) + 2 &&
+           get_re.capacity() >= lanes && get_im.capacity() >= lanes && put_re.capacity() >= lanes &&
+           put_im.capacity() >= lanes;
+  }
+  /// As a new Fft of these sizes, in these buffers (every value written again).
+  void reset(int nx_, int ny_, int mx_, int my_) {
+    if (!plan_x || mx_ != mx) plan_x = fft::real_plan(mx_);
+    if (!plan_y || my_ != my) plan_y = fft::complex_plan(my_);
+    nx = nx_;
+    ny = ny_;
+    mx = mx_;
+    my = my_;
+    hx = mx / 2 + 1;
+    nb = blocks(mx);
+    spec.assign(static_cast<std::size_t>(nb) * static_cast<std::size_t>(my), Cv(Vd{}, Vd{}));
+    kernel.assign(spec.size(), Cv(Vd{}, Vd{}));
+    rows.assign(static_cast<std::size_t>(mx) + 2, Vd{});
     const int zero = mx, spare = mx + 1;
-    for (auto* v : {&get_re, &get_im, &put_re, &put_im}) v->reserve(static_cast<std::size_t>(nb) * L);
+    for (auto* v : {&get_re, &get_im, &put_re, &put_im}) {
+      v->clear();
+      v->reserve(static_cast<std::size_t>(nb) * L);
+    }
     for (int k = 0; k < nb * L; ++k) {
       // FFTPACK half-complex order: r0, r1, i1, r2, i2, …, and r_{mx/2} last when mx is even.
       const int re = k >= hx ? -1 : k == 0 ? 0 : 2 * k - 1;
@@ -317,7 +198,7 @@ struct InfluenceGrid::Fft {
         for (int i = 0; i < nvals; ++i) R[i * L + l] = l < nl ? a[i] : 0.0;
         for (int i = nvals; i < mx; ++i) R[i * L + l] = 0.0;
       }
-      plan_x.exec(rows.data(), 1.0, true);
+      plan_x->exec(rows.data(), 1.0, true);
       for (int l = 0; l < nl; ++l)
         for (int b = 0; b < nb; ++b) {
           double* z = spec_at(b, r0 + l);  // z[j]: Re of lane j, z[L + j]: Im
@@ -337,7 +218,7 @@ struct InfluenceGrid::Fft {
   void set_kernel(const std::vector<double>& k) {
     rows_forward(k.data(), my, mx, static_cast<std::size_t>(mx));
     const double scale = 1.0 / (static_cast<double>(mx) * static_cast<double>(my));
-    for (int b = 0; b < nb; ++b) plan_y.exec(&spec[static_cast<std::size_t>(b) * my], scale, true);
+    for (int b = 0; b < nb; ++b) plan_y->exec(&spec[static_cast<std::size_t>(b) * my], scale, true);
     kernel = spec;
   }
 
@@ -347,9 +228,9 @@ struct InfluenceGrid::Fft {
     for (int b = 0; b < nb; ++b) {
       Cv* z = &spec[static_cast<std::size_t>(b) * my];
       const Cv* kh = &kernel[static_cast<std::size_t>(b) * my];
-      plan_y.exec(z, 1.0, true);
+      plan_y->exec(z, 1.0, true);
       for (int ky = 0; ky < my; ++ky) z[ky] = z[ky] * kh[ky];
-      plan_y.exec(z, 1.0, false);
+      plan_y->exec(z, 1.0, false);
     }
     double* R = reinterpret_cast<double*>(rows.data());
     for (int r0 = 0; r0 < ny; r0 += L) {
@@ -364,7 +245,7 @@ struct InfluenceGrid::Fft {
             R[pi[j] * L + l] = z[L + j];
           }
         }
-      plan_x.exec(rows.data(), 1.0, false);  // c2r: the Im of kx = 0 and mx/2 are not read
+      plan_x->exec(rows.data(), 1.0, false);  // c2r: the Im of kx = 0 and mx/2 are not read
       for (int l = 0; l < nl; ++l) {
         double* ur = u + nxs * static_cast<std::size_t>(r0 + l);
         for (int i = 0; i < nx; ++i) ur[i] = R[i * L + l];
@@ -387,13 +268,33 @@ void check_grid(int nx, int ny, double dx, double dy) {
 }
 }  // namespace
 
-InfluenceGrid::InfluenceGrid(int nx, int ny, double dx, double dy, double compliance)
-    : nx_(nx), ny_(ny), dx_(dx), dy_(dy), compliance_(compliance) {
+InfluenceGrid::InfluenceGrid(int nx, int ny, double dx, double dy, double compliance) {
+  reset(nx, ny, dx, dy, compliance);
+}
+
+void InfluenceGrid::reset(int nx, int ny, double dx, double dy, double compliance) {
   check_grid(nx, ny, dx, dy);
   if (!(compliance > 0) || !std::isfinite(compliance))
     throw std::invalid_argument("InfluenceGrid: compliance = " + std::to_string(compliance) +
                                 " 1/Pa: must be > 0 and finite");
-  init_fft();
+  nx_ = nx;
+  ny_ = ny;
+  dx_ = dx;
+  dy_ = dy;
+  compliance_ = compliance;
+  kernel_ = nullptr;
+  try {
+    init_fft();
+  } catch (...) {
+    nx_ = ny_ = 0;  // matches no grid: a cache keyed by the sizes never hands it out
+    throw;
+  }
+}
+
+bool InfluenceGrid::holds(int nx, int ny) const {
+  if (!fft_ || nx < 1 || ny < 1) return false;
+  const std::size_t offsets = (2 * static_cast<std::size_t>(nx) - 1) * (2 * static_cast<std::size_t>(ny) - 1);
+  return direct_.capacity() >= offsets && fft_->holds(fft::smooth_size(2 * nx - 1), fft::smooth_size(2 * ny - 1));
 }
 
 InfluenceGrid::InfluenceGrid(int nx, int ny, double dx, double dy, Kernel kernel)
@@ -404,14 +305,19 @@ InfluenceGrid::InfluenceGrid(int nx, int ny, double dx, double dy, Kernel kernel
 }
 
 void InfluenceGrid::init_fft() {
-  mx_ = smooth_size(2 * nx_ - 1);
-  my_ = smooth_size(2 * ny_ - 1);
-  fft_ = std::make_unique<Fft>(nx_, ny_, mx_, my_);
+  mx_ = fft::smooth_size(2 * nx_ - 1);
+  my_ = fft::smooth_size(2 * ny_ - 1);
+  if (fft_)
+    fft_->reset(nx_, ny_, mx_, my_);
+  else
+    fft_ = std::make_unique<Fft>(nx_, ny_, mx_, my_);
   c00_ = coefficient(0, 0);
+  // The thread's scratch for the coefficients (kept: a grid no larger than the thread's largest
+  // allocates nothing here).
+  thread_local std::vector<double> quadrant, k;
 
   // Love's kernel is bitwise even in both offsets (love_rectangle): its nx·ny values for
   // |di| < nx, |dj| < ny give all (2nx − 1)(2ny − 1), a quarter of the evaluations (the same bits).
-  std::vector<double> quadrant;
   const std::size_t qx = static_cast<std::size_t>(nx_);
   if (!kernel_) {
     quadrant.resize(qx * static_cast<std::size_t>(ny_));
@@ -422,13 +328,13 @@ void InfluenceGrid::init_fft() {
     return kernel_ ? coefficient(di, dj) : quadrant[static_cast<std::size_t>(std::abs(di)) + qx * std::abs(dj)];
   };
   // Wrapped kernel (DC-FFT, [LI]); zero at the unused indices.
-  std::vector<double> k(static_cast<std::size_t>(mx_) * static_cast<std::size_t>(my_));
+  k.resize(static_cast<std::size_t>(mx_) * static_cast<std::size_t>(my_));
   for (int j = 0; j < my_; ++j) {
     int dj = 0;
-    const bool row = wrapped_offset(j, ny_, my_, &dj);
+    const bool row = fft::wrapped_offset(j, ny_, my_, &dj);
     for (int i = 0; i < mx_; ++i) {
       int di = 0;
-      const bool used = row && wrapped_offset(i, nx_, mx_, &di);
+      const bool used = row && fft::wrapped_offset(i, nx_, mx_, &di);
       k[static_cast<std::size_t>(i) + static_cast<std::size_t>(mx_) * j] = used ? C(di, dj) : 0.0;
     }
   }
@@ -437,10 +343,10 @@ void InfluenceGrid::init_fft() {
   direct_.assign(W * (2 * static_cast<std::size_t>(ny_) - 1), 0.0);
   for (int j = 0; j < my_; ++j) {
     int dj = 0;
-    if (!wrapped_offset(j, ny_, my_, &dj)) continue;
+    if (!fft::wrapped_offset(j, ny_, my_, &dj)) continue;
     for (int i = 0; i < mx_; ++i) {
       int di = 0;
-      if (wrapped_offset(i, nx_, mx_, &di))
+      if (fft::wrapped_offset(i, nx_, mx_, &di))
         direct_[static_cast<std::size_t>(di + nx_ - 1) + W * static_cast<std::size_t>(dj + ny_ - 1)] =
             k[static_cast<std::size_t>(i) + static_cast<std::size_t>(mx_) * j];
     }
@@ -472,133 +378,5 @@ void InfluenceGrid::add_sparse(const int* idx, const double* d, int m, double* u
     }
   }
 }
-
-// ---- RowFft: 1-D real transforms for row-wise convolutions (influence.hpp) ----
-
-#ifdef MHCONTACT_FFTW
-struct RowFft::Impl {
-  int m;
-  std::unique_ptr<double, FftwFree> real;
-  std::unique_ptr<fftw_complex, FftwFree> spec;
-  Plan forward, backward;
-  explicit Impl(int m_) : m(m_) {
-    real.reset(static_cast<double*>(fftw_malloc(sizeof(double) * static_cast<std::size_t>(m))));
-    spec.reset(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * static_cast<std::size_t>(m / 2 + 1))));
-    if (!real || !spec) throw std::bad_alloc();
-    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    forward.reset(fftw_plan_dft_r2c_1d(m, real.get(), spec.get(), FFTW_ESTIMATE));
-    backward.reset(fftw_plan_dft_c2r_1d(m, spec.get(), real.get(), FFTW_ESTIMATE));
-    if (!forward || !backward) throw std::runtime_error("RowFft: FFTW planning failed");
-  }
-  void fwd(const double* x, int len, std::complex<double>* X) {
-    double* r = real.get();
-    std::memcpy(r, x, sizeof(double) * static_cast<std::size_t>(len));
-    std::fill(r + len, r + m, 0.0);
-    fftw_execute(forward.get());
-    for (int k = 0; k <= m / 2; ++k) X[k] = {spec.get()[k][0], spec.get()[k][1]};
-  }
-  void bwd(const std::complex<double>* X, double* x, int n) {
-    for (int k = 0; k <= m / 2; ++k) {
-      spec.get()[k][0] = X[k].real();
-      spec.get()[k][1] = X[k].imag();
-    }
-    fftw_execute(backward.get());
-    const double s = 1.0 / m;
-    for (int i = 0; i < n; ++i) x[i] = real.get()[i] * s;
-  }
-  void forward2(const double* a, const double* b, int len, std::complex<double>* A, std::complex<double>* B) {
-    fwd(a, len, A);
-    fwd(b, len, B);
-  }
-  void backward2(const std::complex<double>* A, const std::complex<double>* B, double* a, double* b, int n) {
-    bwd(A, a, n);
-    bwd(B, b, n);
-  }
-};
-#else
-/// PocketFFT: the real plan of length m on the SIMD vector type, sequence a in lane 0 and b in
-/// lane 1 (one call each when there are no vectors): its scratch comes from ScratchStack.
-struct RowFft::Impl {
-  using Vd = mh_pocketfft::Vd;
-  static constexpr int L = mh_pocketfft::L;
-  int m;
-  pocketfft::detail::pocketfft_r<double> plan;
-  std::vector<Vd> rows;  ///< m values per lane
-  explicit Impl(int m_) : m(m_), plan(static_cast<std::size_t>(m_)), rows(static_cast<std::size_t>(m_), Vd{}) {}
-  double& at(int i, int lane) { return reinterpret_cast<double*>(rows.data())[i * L + lane]; }
-  /// FFTPACK half-complex order r0, r1, i1, r2, i2, …, r_{m/2} (m even) of one lane into X.
-  void unpack(int lane, std::complex<double>* X) {
-    X[0] = {at(0, lane), 0.0};
-    for (int k = 1; 2 * k < m; ++k) X[k] = {at(2 * k - 1, lane), at(2 * k, lane)};
-    if (m % 2 == 0 && m > 1) X[m / 2] = {at(m - 1, lane), 0.0};
-  }
-  void pack(int lane, const std::complex<double>* X) {
-    at(0, lane) = X[0].real();
-    for (int k = 1; 2 * k < m; ++k) {
-      at(2 * k - 1, lane) = X[k].real();
-      at(2 * k, lane) = X[k].imag();
-    }
-    if (m % 2 == 0 && m > 1) at(m - 1, lane) = X[m / 2].real();
-  }
-  void forward2(const double* a, const double* b, int len, std::complex<double>* A, std::complex<double>* B) {
-    const double* src[2] = {a, b};
-    std::complex<double>* dst[2] = {A, B};
-    for (int s0 = 0; s0 < 2; s0 += L) {
-      for (int l = 0; l < L; ++l) {
-        const double* x = s0 + l < 2 ? src[s0 + l] : nullptr;
-        for (int i = 0; i < m; ++i) at(i, l) = x && i < len ? x[i] : 0.0;
-      }
-      plan.exec(rows.data(), 1.0, true);
-      for (int l = 0; l < L && s0 + l < 2; ++l) unpack(l, dst[s0 + l]);
-    }
-  }
-  void backward2(const std::complex<double>* A, const std::complex<double>* B, double* a, double* b, int n) {
-    const std::complex<double>* src[2] = {A, B};
-    double* dst[2] = {a, b};
-    for (int s0 = 0; s0 < 2; s0 += L) {
-      for (int l = 0; l < L; ++l) {
-        if (s0 + l < 2)
-          pack(l, src[s0 + l]);
-        else
-          for (int i = 0; i < m; ++i) at(i, l) = 0.0;
-      }
-      plan.exec(rows.data(), 1.0 / m, false);
-      for (int l = 0; l < L && s0 + l < 2; ++l)
-        for (int i = 0; i < n; ++i) dst[s0 + l][i] = at(i, l);
-    }
-  }
-};
-#endif
-
-RowFft::RowFft(int n) { reset(n); }
-
-void RowFft::reset(int n) {
-  if (n < 1) throw std::invalid_argument("RowFft: n = " + std::to_string(n) + ": needs ≥ 1 value per row");
-  n_ = n;
-  m_ = smooth_size(2 * n - 1);
-  for (std::size_t k = 0; k < plans_.size(); ++k)
-    if (plans_[k]->m == m_) {
-      std::rotate(plans_.begin() + static_cast<std::ptrdiff_t>(k), plans_.begin() + static_cast<std::ptrdiff_t>(k) + 1,
-                  plans_.end());  // most recently used last
-      impl_ = plans_.back().get();
-      return;
-    }
-  if (plans_.size() >= kRowPlans) plans_.erase(plans_.begin());  // the least recently used
-  plans_.push_back(std::make_unique<Impl>(m_));
-  impl_ = plans_.back().get();
-}
-RowFft::~RowFft() = default;
-RowFft::RowFft(RowFft&&) noexcept = default;
-RowFft& RowFft::operator=(RowFft&&) noexcept = default;
-
-void RowFft::forward(const double* a, const double* b, int len, std::complex<double>* A,
-                     std::complex<double>* B) const {
-  impl_->forward2(a, b, std::min(len, m_), A, B);
-}
-void RowFft::backward(const std::complex<double>* A, const std::complex<double>* B, double* a,
-                      double* b) const {
-  impl_->backward2(A, B, a, b, n_);
-}
-bool RowFft::offset(int i, int* di) const { return wrapped_offset(i, n_, m_, di); }
 
 }  // namespace mh

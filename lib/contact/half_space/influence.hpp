@@ -62,6 +62,15 @@ class InfluenceGrid {
   /// Throws std::invalid_argument unless nx, ny ≥ 1, dx, dy, compliance > 0 and finite, and
   /// std::bad_alloc / std::runtime_error if the FFT cannot allocate or plan.
   InfluenceGrid(int nx, int ny, double dx, double dy, double compliance);
+  /// As InfluenceGrid(nx, ny, dx, dy, compliance), in this object's buffers (the same bits as a
+  /// new one): with PocketFFT nothing is allocated when holds(nx, ny) and the padded lengths are
+  /// among the thread's last plans (fft_backend.hpp), and the grid is no larger than the thread
+  /// has built before (its coefficient scratch). Throws as the constructor, before changing
+  /// anything for invalid arguments; after a failed allocation the object matches no grid
+  /// (nx() = 0) until reset again.
+  void reset(int nx, int ny, double dx, double dy, double compliance);
+  /// Whether this object's buffers hold an nx × ny grid (reset() to it allocates none of them).
+  bool holds(int nx, int ny) const;
   /// The same convolution with another kernel: C_ij = kernel(ix_i − ix_j, iy_i − iy_j) for the
   /// offsets in elements (any parity; e.g. the tangential coefficients of tangential_influence.hpp).
   /// compliance() is then NaN. Throws as above, and std::invalid_argument for an empty kernel.
@@ -75,7 +84,7 @@ class InfluenceGrid {
 
   /// u = C p; p and u hold nx·ny values each (they may alias). No plan is built here. FFTW
   /// allocates nothing; PocketFFT's 1-D calls take their scratch from a per-thread stack
-  /// (influence.cpp, ScratchStack), so after a thread's first apply() of its largest grid nothing
+  /// (fft_backend.hpp, ScratchStack), so after a thread's first apply() of its largest grid nothing
   /// is allocated either (tests/alloc).
   void apply(const double* p, double* u) const;
   /// u += C d for a d that is zero but at the m elements idx[k] (values d[k]), by direct sums over
@@ -106,46 +115,6 @@ class InfluenceGrid {
   std::vector<double> direct_;
   std::unique_ptr<Fft> fft_;
   void init_fft();  ///< padded sizes, plans and the wrapped kernel's spectrum
-};
-
-/// One-dimensional real DC-FFT transforms for row-by-row convolutions along x (the steady-rolling
-/// tangential solver, tangential_rolling.hpp): rows of n values zero-padded to m points (the
-/// smallest smooth size ≥ 2n−1, as InfluenceGrid), half spectra of m/2 + 1 complex values. Two
-/// sequences per call (an x and a y component), transformed together in PocketFFT's SIMD lanes.
-/// After the first call no allocation (PocketFFT with SIMD vectors; FFTW). Not thread-safe per
-/// object. Movable, not copyable.
-class RowFft {
- public:
-  explicit RowFft(int n);  ///< throws std::invalid_argument unless n ≥ 1
-  ~RowFft();
-  RowFft(RowFft&&) noexcept;
-  RowFft& operator=(RowFft&&) noexcept;
-  RowFft(const RowFft&) = delete;
-  RowFft& operator=(const RowFft&) = delete;
-
-  /// As RowFft(n), keeping the plans made so far (by padded length, the last kRowPlans): a
-  /// length met before makes no plan and allocates nothing.
-  void reset(int n);
-
-  int n() const { return n_; }
-  int m() const { return m_; }          ///< padded length
-  int half() const { return m_ / 2 + 1; }  ///< spectrum length
-  /// Spectra A, B (half() values each) of a, b (len ≤ m values each, zero beyond): unscaled.
-  void forward(const double* a, const double* b, int len, std::complex<double>* A,
-               std::complex<double>* B) const;
-  /// The first n values of the inverse transforms of A, B, times 1/m (so that backward(forward(x))
-  /// = x). A and B are not modified.
-  void backward(const std::complex<double>* A, const std::complex<double>* B, double* a,
-                double* b) const;
-  /// The offset of index i of the wrapped (cyclic) row: true for the offsets −(n−1)…(n−1).
-  bool offset(int i, int* di) const;
-
- private:
-  struct Impl;
-  static constexpr std::size_t kRowPlans = 16;
-  int n_ = 0, m_ = 0;
-  Impl* impl_ = nullptr;                       ///< the plan of length m_, one of plans_
-  std::vector<std::unique_ptr<Impl>> plans_;   ///< most recently used last
 };
 
 }  // namespace mh

@@ -59,6 +59,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/half_space/row_fft.hpp"
 #include "contact/half_space/tangential_influence.hpp"
 #include "contact/half_space/tangential_options.hpp"
 #include "contact/tangential/tangential_types.hpp"

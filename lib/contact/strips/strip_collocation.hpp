@@ -17,9 +17,11 @@
 // Internal to the strip solver (contact/strips/strip_patch.hpp): namespace strips_detail.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "core/dense.hpp"
+#include "core/mru.hpp"
 
 #include "contact/strips/strip_extents.hpp"
 #include "contact/strips/strip_influence.hpp"
@@ -103,14 +105,9 @@ struct StripEndGapScratch {
   /// depth the k-th oldest; Fm, Xm + Fm in age order for the least squares.
   DenseMatrix dX, dF, Fm, XF;
   int n_diff = 0, oldest = 0;
-  /// Its least-squares factorisations, one per shape n × k met (Eigen's, which keeps its memory
-  /// only at one shape), the last kMaxQR shapes (most recently used last).
-  struct QR {
-    int n, k;
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr;
-  };
-  std::vector<QR> qrs;
-  static constexpr std::size_t kMaxQR = 16;
+  /// Its least-squares factorisations by shape (n, k) (Eigen's, which keeps its memory only at
+  /// one shape), the last 16 shapes.
+  MruCache<std::pair<int, int>, Eigen::ColPivHouseholderQR<Eigen::MatrixXd>> qrs{16};
   StripResult start;  ///< a refinement's start taken from a warm start (StripSolver::at_load)
 };
 

@@ -336,18 +336,10 @@ void refine_extents(const Solver& S, bool load_given, double target, double p_li
       }
       // γ by Eigen's column-pivoting Householder QR, kept per shape, and its solve (the steps of
       // ColPivHouseholderQR::solve, whose copy of the right-hand side would allocate).
-      auto found = std::find_if(w.qrs.begin(), w.qrs.end(),
-                                [&](const StripEndGapScratch::QR& e) { return e.n == n && e.k == k; });
-      if (found != w.qrs.end()) {
-        std::rotate(found, found + 1, w.qrs.end());  // most recently used last
-      } else {
-        if (w.qrs.size() >= StripEndGapScratch::kMaxQR) w.qrs.erase(w.qrs.begin());  // the least recently used
-        w.qrs.push_back({n, k, Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(n, k)});
-      }
-      StripEndGapScratch::QR* qr = &w.qrs.back();
-      qr->qr.compute(w.Fm.map());
+      auto& qr = w.qrs.get({n, k}, [&] { return Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(n, k); });
+      qr.compute(w.Fm.map());
       w.gam.assign(static_cast<std::size_t>(k), 0.0);
-      const Eigen::Index nz = qr->qr.nonzeroPivots();
+      const Eigen::Index nz = qr.nonzeroPivots();
       if (nz > 0) {
         w.c.assign(w.f.begin(), w.f.end());
         Vec cv(w.c.data(), n);
@@ -356,9 +348,9 @@ void refine_extents(const Solver& S, bool load_given, double target, double p_li
         // width, whose scaled reflector it evaluates into a new vector each time).
         double ws = 0;
         for (Eigen::Index k = 0; k < nz; ++k)
-          cv.tail(n - k).applyHouseholderOnTheLeft(qr->qr.matrixQR().col(k).tail(n - k - 1), qr->qr.hCoeffs()(k), &ws);
-        qr->qr.matrixQR().topLeftCorner(nz, nz).triangularView<Eigen::Upper>().solveInPlace(cv.head(nz));
-        for (Eigen::Index i = 0; i < nz; ++i) w.gam[static_cast<std::size_t>(qr->qr.colsPermutation().indices()(i))] = cv(i);
+          cv.tail(n - k).applyHouseholderOnTheLeft(qr.matrixQR().col(k).tail(n - k - 1), qr.hCoeffs()(k), &ws);
+        qr.matrixQR().topLeftCorner(nz, nz).triangularView<Eigen::Upper>().solveInPlace(cv.head(nz));
+        for (Eigen::Index i = 0; i < nz; ++i) w.gam[static_cast<std::size_t>(qr.colsPermutation().indices()(i))] = cv(i);
       }
       // xn −= (ΔX + ΔF) γ, the product evaluated first as Eigen does (a temporary, then subtracted).
       w.sum_col.resize(static_cast<std::size_t>(n));

@@ -247,6 +247,60 @@ TEST_CASE("InfluenceGrid: moved-to object works, repeated apply is bitwise ident
   CHECK(u1 == u2);
 }
 
+// reset() rebuilds an operator in its own buffers (the half-space workspace's operators once it
+// keeps as many as it may, half_space_method.cpp): the same operator as a new object, bit for bit,
+// whether the grid grows, shrinks, changes parity, element size or compliance, and after an
+// operator of another kernel; holds() tells which grids fit the buffers; an invalid reset throws
+// and leaves the operator as it was.
+TEST_CASE("InfluenceGrid::reset gives a new operator's bits in the same object", "[influence]") {
+  const double H = 2 * (1 - 0.28 * 0.28) / (pi * 210e9);
+  const mh::InfluenceGrid::Kernel odd = [](int dix, int diy) { return 1e-12 * (dix + 0.37 * diy * diy * diy); };
+  mh::InfluenceGrid R(3, 2, 0.3e-3, 0.2e-3, odd);
+  struct Grid {
+    int nx, ny;
+    double dx, dy, H;
+  };
+  const Grid grids[] = {{40, 25, 0.2e-3, 0.2e-3, H}, {7, 5, 0.25e-3, 0.4e-3, H},   {41, 26, 0.2e-3, 0.2e-3, H},
+                        {1, 9, 0.1e-3, 0.5e-3, 2 * H}, {64, 3, 0.2e-3, 0.2e-3, H}, {12, 11, 0.2e-3, 0.3e-3, H}};
+  std::uint64_t seed = 88172645463325252ull;
+  for (const Grid& g : grids) {
+    R.reset(g.nx, g.ny, g.dx, g.dy, g.H);
+    const mh::InfluenceGrid F(g.nx, g.ny, g.dx, g.dy, g.H);
+    INFO(g.nx << " x " << g.ny);
+    CHECK(R.padded_nx() == F.padded_nx());
+    CHECK(R.padded_ny() == F.padded_ny());
+    CHECK(R.compliance() == F.compliance());
+    CHECK(R.self_coefficient() == F.self_coefficient());
+    const std::size_t n = static_cast<std::size_t>(g.nx) * g.ny;
+    std::vector<double> p(n), uR(n), uF(n), sR(n, 0.0), sF(n, 0.0);
+    for (double& v : p) {  // xorshift: pressures of both signs, some rows empty
+      seed ^= seed << 13, seed ^= seed >> 7, seed ^= seed << 17;
+      v = (seed % 3 == 0) ? 0.0 : 1e9 * (static_cast<double>(seed % 2001) / 1000.0 - 1.0);
+    }
+    R.apply(p.data(), uR.data());
+    F.apply(p.data(), uF.data());
+    CHECK(uR == uF);
+    const int idx[] = {0, static_cast<int>(n) - 1, static_cast<int>(n) / 2};
+    const double d[] = {1e8, -2e8, 3e7};
+    R.add_sparse(idx, d, 3, sR.data());
+    F.add_sparse(idx, d, 3, sF.data());
+    CHECK(sR == sF);
+  }
+  // The buffers hold every grid met (41 × 26 and 64 × 3 the largest), and what fits in them; not
+  // a grid both wide and long (64 × 26) nor one a padded size larger (42 × 26: 90 × 54 points).
+  CHECK(R.holds(41, 26));
+  CHECK(R.holds(64, 3));
+  CHECK(R.holds(10, 10));
+  CHECK_FALSE(R.holds(64, 26));
+  CHECK_FALSE(R.holds(42, 26));
+  CHECK_FALSE(mh::InfluenceGrid(5, 5, 1e-3, 1e-3, H).holds(40, 25));
+  // Invalid arguments: thrown before anything changes.
+  CHECK_THROWS_AS(R.reset(0, 3, 1e-3, 1e-3, H), std::invalid_argument);
+  CHECK_THROWS_AS(R.reset(3, 3, 1e-3, 1e-3, -H), std::invalid_argument);
+  CHECK(R.nx() == 12);
+  CHECK(R.ny() == 11);
+}
+
 TEST_CASE("fft_backend() names the FFT library the build was configured with", "[influence]") {
   // MHCONTACT_FFT_BACKEND_CONFIGURED: tests/CMakeLists.txt, from the MHCONTACT_FFTW option.
   CHECK(std::string(mh::fft_backend()) == MHCONTACT_FFT_BACKEND_CONFIGURED);
