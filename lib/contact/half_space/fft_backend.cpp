@@ -20,18 +20,6 @@ int smooth_size(int m) {
   }
 }
 
-bool wrapped_offset(int i, int n, int m, int* offset) {
-  if (i < n) {
-    *offset = i;
-    return true;
-  }
-  if (i >= m - n + 1) {
-    *offset = i - m;
-    return true;
-  }
-  return false;
-}
-
 #ifdef MHCONTACT_FFTW
 std::mutex& planner_mutex() {
   static std::mutex m;

@@ -35,8 +35,19 @@ namespace fft {
 int smooth_size(int m);
 
 /// Offset (in elements) represented by index i of a cyclic axis of m points carrying the offsets
-/// −(n−1)…(n−1); false for the unused indices between them (DC-FFT wrap-around, [LI]).
-bool wrapped_offset(int i, int n, int m, int* offset);
+/// −(n−1)…(n−1); false for the unused indices between them (DC-FFT wrap-around, [LI]). Inline:
+/// the kernel's set-up calls it per padded point.
+inline bool wrapped_offset(int i, int n, int m, int* offset) {
+  if (i < n) {
+    *offset = i;
+    return true;
+  }
+  if (i >= m - n + 1) {
+    *offset = i - m;
+    return true;
+  }
+  return false;
+}
 
 #ifdef MHCONTACT_FFTW
 /// FFTW planning (fftw_plan_* and fftw_destroy_plan) is not thread-safe, execution of an existing

@@ -321,34 +321,38 @@ void InfluenceGrid::init_fft() {
   const std::size_t qx = static_cast<std::size_t>(nx_);
   if (!kernel_) {
     quadrant.resize(qx * static_cast<std::size_t>(ny_));
+    double* q = quadrant.data();
     for (int dj = 0; dj < ny_; ++dj)
-      for (int di = 0; di < nx_; ++di) quadrant[static_cast<std::size_t>(di) + qx * dj] = coefficient(di, dj);
+      for (int di = 0; di < nx_; ++di) q[static_cast<std::size_t>(di) + qx * dj] = coefficient(di, dj);
   }
+  const double* q = quadrant.data();
   auto C = [&](int di, int dj) {
-    return kernel_ ? coefficient(di, dj) : quadrant[static_cast<std::size_t>(std::abs(di)) + qx * std::abs(dj)];
+    return kernel_ ? coefficient(di, dj) : q[static_cast<std::size_t>(std::abs(di)) + qx * std::abs(dj)];
   };
   // Wrapped kernel (DC-FFT, [LI]); zero at the unused indices.
-  k.resize(static_cast<std::size_t>(mx_) * static_cast<std::size_t>(my_));
+  const std::size_t mxs = static_cast<std::size_t>(mx_);
+  k.resize(mxs * static_cast<std::size_t>(my_));
+  double* kd = k.data();
   for (int j = 0; j < my_; ++j) {
     int dj = 0;
     const bool row = fft::wrapped_offset(j, ny_, my_, &dj);
     for (int i = 0; i < mx_; ++i) {
       int di = 0;
       const bool used = row && fft::wrapped_offset(i, nx_, mx_, &di);
-      k[static_cast<std::size_t>(i) + static_cast<std::size_t>(mx_) * j] = used ? C(di, dj) : 0.0;
+      kd[static_cast<std::size_t>(i) + mxs * j] = used ? C(di, dj) : 0.0;
     }
   }
   // The same coefficients by offset, for add_sparse (copied, not evaluated again).
   const std::size_t W = 2 * static_cast<std::size_t>(nx_) - 1;
   direct_.assign(W * (2 * static_cast<std::size_t>(ny_) - 1), 0.0);
+  double* dd = direct_.data();
   for (int j = 0; j < my_; ++j) {
     int dj = 0;
     if (!fft::wrapped_offset(j, ny_, my_, &dj)) continue;
     for (int i = 0; i < mx_; ++i) {
       int di = 0;
       if (fft::wrapped_offset(i, nx_, mx_, &di))
-        direct_[static_cast<std::size_t>(di + nx_ - 1) + W * static_cast<std::size_t>(dj + ny_ - 1)] =
-            k[static_cast<std::size_t>(i) + static_cast<std::size_t>(mx_) * j];
+        dd[static_cast<std::size_t>(di + nx_ - 1) + W * static_cast<std::size_t>(dj + ny_ - 1)] = kd[static_cast<std::size_t>(i) + mxs * j];
     }
   }
   fft_->set_kernel(k);
