@@ -180,4 +180,15 @@ inline void reset_case_result(CaseResult& r) {
   r.ellipse_traction.clear();
 }
 
+/// Room in r for a usual row: 16 warnings, 8 contacts (ellipses or patches), a 256-character
+/// message. Results that trade places by swapping (auto's rows and the caller's, the half-space
+/// method's elastic pass) are given it first, so that trading places grows nothing; a larger row
+/// grows its result once.
+inline void reserve_row(CaseResult& r) {
+  r.warnings.reserve(16);
+  r.loaded.reserve(8);
+  r.patches.reserve(8);
+  r.message.reserve(256);
+}
+
 }  // namespace mh

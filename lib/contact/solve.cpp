@@ -206,14 +206,20 @@ bool creep_equilibrium(CaseResult& r, double Q, const TangentialOptions& t, Reso
   return resolved;
 }
 
-// The leading `auto` warnings of a row (why it was handed on), kept across a solve again.
-std::vector<Warning> auto_warnings(const CaseResult& r) {
-  std::vector<Warning> w;
+// The leading `auto` warnings of a row (why it was handed on: to the strips, then to the
+// half-space or its rejection; at most two), kept across a solve again, without allocating.
+struct AutoWarnings {
+  static constexpr int kMax = 4;
+  Warning w[kMax];
+  int n = 0;
+};
+AutoWarnings auto_warnings(const CaseResult& r) {
+  AutoWarnings a;
   for (const Warning& x : r.warnings) {
-    if (x.cls != WarningClass::Auto) break;
-    w.push_back(x);
+    if (x.cls != WarningClass::Auto || a.n == AutoWarnings::kMax) break;
+    a.w[a.n++] = x;
   }
-  return w;
+  return a;
 }
 
 // The tangential step of a row solved by method m at Q, with the vertical equilibrium (above):
@@ -229,7 +235,7 @@ bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const 
   solve_tangential_patches(r, mat, opt.tangential.mu, opt.tangential.keep_traction, tws);
   solve_tangential_strips(r, mat, opt.tangential.mu, opt.tangential.keep_traction, tws);
 
-  const std::vector<Warning> handed = auto_warnings(r);
+  const AutoWarnings handed = auto_warnings(r);
   const Method m = r.method;
   // The multi-Hertzian row's creep forces at the loads the root asks for after two full solves
   // (at Q and the first step): extrapolated from those two (tangential_solve.hpp,
@@ -262,7 +268,7 @@ bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const 
     }
     tangential_step(out, mat, tY, opt, tws);
   });
-  if (again && !handed.empty()) r.warnings.insert(r.warnings.begin(), handed.begin(), handed.end());
+  if (again && handed.n > 0) r.warnings.insert(r.warnings.begin(), handed.w, handed.w + handed.n);
   return again;
 }
 
@@ -271,14 +277,28 @@ bool tangential_with_equilibrium(CaseResult& r, const ContactGeometry& G, const 
 // candidate excluded; otherwise the case is solved by the strip method. The `method` column says
 // which one solved it, and a case handed over carries the warning auto:strips:<reason>. ws (may be
 // null): the grid methods' memory for the cases handed on (the same bytes).
-CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt,
-                      GridWorkspace* ws = nullptr) {
-  CaseResult mhr = solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian);
-  if (mhr.status == CaseStatus::OutOfRange) return mhr;
+void solve_auto(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt,
+                GridWorkspace* ws, CaseResult& out) {
+  // The rows in the workspace's (or, without one, these) results, the one kept swapped into out;
+  // out's patches from an earlier row go back to their method's spares first.
+  // Each of them is given room for a usual row (reserve_row), so that trading places grows nothing.
+  GridWorkspace::AutoRows local;
+  GridWorkspace::AutoRows& rows = ws ? ws->auto_rows : local;
+  if (ws) {
+    if (out.method == Method::Strips) recycle_patches(ws->strips, out);
+    if (out.method == Method::HalfSpace) recycle_patches(ws->half_space, out);
+    for (CaseResult* r : {&out, &rows.mh, &rows.mh_at_Q, &rows.elastic_mh, &rows.strips, &rows.half_space}) reserve_row(*r);
+  }
+  CaseResult& mhr = rows.mh;
+  solve_multi_hertz(G, mat, tY, Q, opt.multi_hertzian, mhr);
+  if (mhr.status == CaseStatus::OutOfRange) {
+    std::swap(out, mhr);
+    return;
+  }
   // With friction the row is first balanced with its creep forces (tangential_with_equilibrium),
   // so that the tests below judge the row that would be kept; the grid methods still start from
   // the solution at Q (a copy kept for them).
-  CaseResult mh_at_Q;
+  CaseResult& mh_at_Q = rows.mh_at_Q;
   if (opt.tangential.enabled()) mh_at_Q = mhr;
   tangential_with_equilibrium(mhr, G, mat, tY, Q, opt, nullptr);
   // The judge's tests on the multi-Hertzian answer (judge.hpp): the Hertz validity of each
@@ -317,21 +337,22 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
   if (!hand_on) {
     add_vehicle_state_warnings(mhr, G);  // after the tangential step: Y includes the creep forces
     decide_status(mhr);
-    return mhr;
+    std::swap(out, mhr);
+    return;
   }
   // The grid methods start from the elastic multi-Hertzian solution: mhr itself when the model
   // is elastic, else one elastic solve shared by strips and the half-space fallback.
-  CaseResult elastic_mh;
+  CaseResult& elastic_mh = rows.elastic_mh;
   const CaseResult* start = opt.tangential.enabled() ? &mh_at_Q : &mhr;
   if (std::isfinite(mat.p_lim)) {
     Material elastic = mat;
     elastic.p_lim = INFINITY;
     MultiHertzOptions rolled;  // the default options, with the case's roll
     rolled.roll = opt.multi_hertzian.roll;
-    elastic_mh = solve_multi_hertz(G, elastic, tY, Q, rolled);
+    solve_multi_hertz(G, elastic, tY, Q, rolled, elastic_mh);
     start = &elastic_mh;
   }
-  CaseResult sr;
+  CaseResult& sr = rows.strips;
   if (ws) solve_strip_method(G, mat, tY, Q, strip_options(opt), ws->strips, sr, start);
   else sr = solve_strip_method(G, mat, tY, Q, strip_options(opt), start);
   sr.warnings.insert(sr.warnings.begin(), why);
@@ -340,30 +361,36 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
   // N(δ), docs/strips.md, or a strip_outlier, a hole, ...) the exact half-space method, slower
   // but robust, solves the case, and its answer is taken only if it passes the same checks; else
   // the strip row stays, with its status and warnings.
-  const std::vector<WarningClass> strip_failed = validity_failures(sr.warnings);
-  if (sr.status == CaseStatus::Ok && strip_failed.empty()) return sr;  // judged by solve_contact
+  WarningClass strip_failed;
+  const bool strip_fails = first_validity_failure(sr.warnings, &strip_failed);
+  if (sr.status == CaseStatus::Ok && !strip_fails) {  // judged by solve_contact
+    std::swap(out, sr);
+    return;
+  }
   Warning to_hs = Warning::auto_to(Method::HalfSpace, AutoReason::StripsNotConverged);
   if (sr.status == CaseStatus::Ok) {
     to_hs.reason = AutoReason::StripsFailed;
-    to_hs.failed = strip_failed.front();
+    to_hs.failed = strip_failed;
   }
-  CaseResult hr;
+  CaseResult& hr = rows.half_space;
   if (ws) solve_half_space(G, mat, tY, Q, half_space_options(opt), ws->half_space, hr, start);
   else hr = solve_half_space(G, mat, tY, Q, half_space_options(opt), start);
-  const std::vector<WarningClass> hs_failed = validity_failures(hr.warnings);
-  if (hr.status != CaseStatus::Ok || !hs_failed.empty()) {
+  WarningClass hs_failed;
+  const bool hs_fails = first_validity_failure(hr.warnings, &hs_failed);
+  if (hr.status != CaseStatus::Ok || hs_fails) {
     Warning rejected = Warning::auto_to(Method::HalfSpace, AutoReason::HalfSpaceRejected);
     rejected.status = hr.status;
-    if (!hs_failed.empty()) {
+    if (hs_fails) {
       rejected.has_failed = true;
-      rejected.failed = hs_failed.front();
+      rejected.failed = hs_failed;
     }
     sr.warnings.push_back(rejected);
-    return sr;
+    std::swap(out, sr);
+    return;
   }
   hr.warnings.insert(hr.warnings.begin(), to_hs);
   hr.warnings.insert(hr.warnings.begin(), why);
-  return hr;
+  std::swap(out, hr);
 }
 
 }  // namespace
@@ -371,7 +398,7 @@ CaseResult solve_auto(const ContactGeometry& G, const Material& mat, double tY, 
 CaseResult solve_contact(const ContactGeometry& G, const Material& mat, double tY, double Q, const MethodOptions& opt) {
   CaseResult r;
   switch (opt.method) {
-    case Method::Auto: r = solve_auto(G, mat, tY, Q, opt); break;
+    case Method::Auto: solve_auto(G, mat, tY, Q, opt, nullptr, r); break;
     case Method::HalfSpace: r = solve_half_space(G, mat, tY, Q, half_space_options(opt)); break;
     case Method::Strips: r = solve_strip_method(G, mat, tY, Q, strip_options(opt)); break;
     case Method::MultiHertzian:
@@ -421,7 +448,7 @@ bool solve_contact_unjudged(const ContactGeometry& G, const Material& mat, doubl
         return true;
       }
       // auto with the workspace: as solve_contact above, its grid solves in ws's memory.
-      out = solve_auto(G, mat, tY, Q, opt, ws);
+      solve_auto(G, mat, tY, Q, opt, ws, out);
       if (out.method != Method::MultiHertzian) {
         tangential_with_equilibrium(out, G, mat, tY, Q, opt, ws);
         judge_case(out, G, mat, tY, opt);

@@ -29,6 +29,12 @@ struct GridWorkspace {
   HalfSpaceWorkspace half_space;
   StripWorkspace strips;
   TangentialPatchWorkspace tangential;  ///< the grid patches' tangential solvers (friction given)
+  /// `auto`'s rows (solve.cpp): the multi-Hertzian answer it judges, that answer at Q before the
+  /// creep equilibrium, the elastic start of a plastic case, the strip and half-space rows; the
+  /// one kept is swapped into the caller's result, so each keeps its vectors' capacity.
+  struct AutoRows {
+    CaseResult mh, mh_at_Q, elastic_mh, strips, half_space;
+  } auto_rows;
 };
 
 /// The same with the grid methods' memory in `ws` (null: as the form above): the half-space method

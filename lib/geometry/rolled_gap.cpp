@@ -33,7 +33,13 @@ void rolled_wheel_curve(const ProfileCurve& W, double roll, ProfileCurve& out) {
   const double h = W.node_y(1) - W.node_y(0);
   const double y_first = Y(W.node_y(lo)), y_last = Y(W.node_y(hi));
   const std::size_t m = static_cast<std::size_t>(std::floor((y_last - y_first) / h + 1e-9)) + 1;
+  // Room for the nodes of any roll up to kRollRoom (and this one): the rotated span is at most
+  // (n − 1) h + |sin δ| (z span), so a curve kept for one roll takes another's in place.
+  constexpr double kRollRoom = 0.05;  // [rad], MultiHertzOptions::roll's bound
+  const std::size_t room = std::max(
+      m, n + static_cast<std::size_t>(std::ceil(std::max(std::fabs(sn), std::sin(kRollRoom)) * W.node_z_span() / h)) + 2);
   thread_local std::vector<double> z, dz, k;  // the nodes, kept for the next call
+  for (auto* v : {&z, &dz, &k}) v->reserve(room);
   z.assign(m, 0.0);
   dz.assign(m, 0.0);
   k.assign(m, 0.0);
@@ -56,7 +62,7 @@ void rolled_wheel_curve(const ProfileCurve& W, double roll, ProfileCurve& out) {
     dz[j] = (d + tn) / (1 - d * tn);  // tan(θ + δ)
     k[j] = W.kappa(y);
   }
-  out.assign_nodes(y_first, h, z, dz, k, W);
+  out.assign_nodes(y_first, h, z, dz, k, W, room);
 }
 
 }  // namespace mh

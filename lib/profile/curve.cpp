@@ -519,8 +519,11 @@ ProfileCurve ProfileCurve::from_nodes(double y_first, double h, std::vector<doub
 }
 
 void ProfileCurve::assign_nodes(double y_first, double h, const std::vector<double>& z, const std::vector<double>& dz,
-                                const std::vector<double>& kappa, const ProfileCurve& like) {
+                                const std::vector<double>& kappa, const ProfileCurve& like, std::size_t reserve) {
   *this = like;  // copy-assignment: the vectors keep their capacity
+  if (z.size() > z_.capacity())
+    for (auto* v : {&z_, &dz_, &k_}) v->reserve(std::max(reserve, z.size()));
+  if (z.size() > side_.capacity()) side_.reserve(std::max(reserve, z.size()));
   h_ = h;
   y0_ = y_first_ = y_first;
   j0_ = 0;
@@ -528,6 +531,12 @@ void ProfileCurve::assign_nodes(double y_first, double h, const std::vector<doub
   z_.assign(z.begin(), z.end());
   dz_.assign(dz.begin(), dz.end());
   k_.assign(kappa.begin(), kappa.end());
+}
+
+double ProfileCurve::node_z_span() const {
+  if (z_.empty()) return 0;
+  const auto [lo, hi] = std::minmax_element(z_.begin(), z_.end());
+  return *hi - *lo;
 }
 
 double ProfileCurve::z(double y, double* dz) const {

@@ -145,9 +145,10 @@ class ProfileCurve {
   /// such as the rolled wheel's, geometry/rolled_gap.hpp).
   static ProfileCurve from_nodes(double y_first, double h, std::vector<double> z, std::vector<double> dz,
                                  std::vector<double> kappa, const ProfileCurve& like);
-  /// The same into this curve, its vectors keeping their capacity (no allocation once grown).
+  /// The same into this curve, its vectors keeping their capacity (no allocation once grown) and
+  /// growing to at least `reserve` nodes when they grow (room for later, longer node sets).
   void assign_nodes(double y_first, double h, const std::vector<double>& z, const std::vector<double>& dz,
-                    const std::vector<double>& kappa, const ProfileCurve& like);
+                    const std::vector<double>& kappa, const ProfileCurve& like, std::size_t reserve = 0);
 
   double y_min() const { return y0_; }
   double y_max() const { return y_first_ + h_ * static_cast<double>(j0_ + z_.size() - 1); }
@@ -182,6 +183,8 @@ class ProfileCurve {
   const std::vector<double>& node_kappa() const { return k_; }
   double node_y(std::size_t i) const { return y_first_ + h_ * static_cast<double>(j0_ + i); }
   std::size_t nodes() const { return z_.size(); }
+  /// [m] max − min of z over the nodes.
+  double node_z_span() const;
 
  private:
   double y0_ = 0, h_ = 1;

@@ -187,12 +187,13 @@ TEST_CASE("strips through solve_contact with a reused workspace allocate nothing
   for (const Run& run : runs) check_reuse(run, true);
 }
 
-// `auto` with a workspace hands its strip and half-space solves the workspace's memory
-// (lib/contact/solve.cpp): the rows must be those of `auto` without it. Manchester pair, 50 kN,
-// t_Y 4 … 8 mm (gauge corner and flange: rows handed to the strips among them), elastic and
-// capped at 900 MPa; the second pass over the same steps is counted (printed, not asserted:
-// `auto` itself still makes new results).
-TEST_CASE("auto through solve_contact with a reused workspace: the same rows as without", "[alloc]") {
+// `auto` with a workspace hands its strip and half-space solves the workspace's memory and keeps
+// its own rows there (lib/contact/solve.cpp, GridWorkspace::auto_rows): the rows must be those
+// of `auto` without it, and the second pass over the same steps allocates nothing. Manchester
+// pair, 50 kN, t_Y 4 … 8 mm (gauge corner and flange: rows handed to the strips among them),
+// elastic and capped at 900 MPa. Seen to fail with the rows made new per call (26 and 56
+// allocations over the second pass).
+TEST_CASE("auto through solve_contact with a reused workspace: the same rows as without, no allocation", "[alloc]") {
   const mh::ContactGeometry& G = mh::testing::manchester_geometry();
   for (const double p_lim : {static_cast<double>(INFINITY), 900e6}) {
     mh::Material mat = mh::testing::steel();
@@ -225,6 +226,7 @@ TEST_CASE("auto through solve_contact with a reused workspace: the same rows as 
     std::printf("auto, p_lim %g MPa: %d of 9 rows handed on; allocations over the second pass %ld\n", p_lim / 1e6,
                 handed, second);
     CHECK(handed > 0);
+    CHECK(second == 0);
   }
 }
 
@@ -329,9 +331,9 @@ TEST_CASE("the wheelset call allocates nothing once its workspace and result hav
   }
 }
 
-// The wheelset call by a grid method, each wheel rolled against its rail in the geometry (the
-// default), without and with friction (μ = 0.3): the second pass over the same steps allocates
-// nothing: the patch results' vectors come back to the workspace (GridCaseWorkspace::take_patch),
+// The wheelset call by every method it offers, each wheel rolled against its rail in the geometry
+// (the default), without and with friction (μ = 0.3), elastic and capped (900 MPa): the second
+// pass over the same steps allocates nothing: the patch results' vectors come back to the workspace (GridCaseWorkspace::take_patch),
 // the exact tangential solver of each patch is set up again in its own buffers, its row FFT's
 // plans taken from the thread's plans by length (TangentialPatchWorkspace,
 // HalfSpaceTangentialSolver::reset, RowFft::reset), the rolled wheel curves are kept per thread
@@ -341,18 +343,27 @@ TEST_CASE("the wheelset call allocates nothing once its workspace and result hav
 // step's forces are those of a fresh workspace, bit for bit. Seen to fail without take_patch
 // (strips about 14 allocations a step, their strip lists; half-space 2, the pressure grids), with
 // a tangential solver made per patch and solve (about 250 a step with friction), with a rolled
-// curve made per gap (about 50 a step), and with a new operator in place of an evicted one
-// (half-space with friction: 399 over the second pass).
-TEST_CASE("the wheelset call by a grid method allocates nothing once it has seen the steps", "[alloc]") {
-  const std::pair<mh::Method, double> runs[] = {
-      {mh::Method::Strips, 0.0}, {mh::Method::Strips, 0.3}, {mh::Method::HalfSpace, 0.0}, {mh::Method::HalfSpace, 0.3}};
-  for (const auto& [m, mu] : runs) {
+// curve made per gap (about 50 a step), with a new operator in place of an evicted one
+// (half-space with friction: 399 over the second pass), and at 74ec3be capped (half-space 160,
+// strips 91) and by `auto` (138–268).
+TEST_CASE("the wheelset call by any method allocates nothing once it has seen the steps", "[alloc]") {
+  struct Run {
+    mh::Method m;
+    double mu, p_lim;
+  };
+  const Run runs[] = {{mh::Method::Strips, 0.0, INFINITY},    {mh::Method::Strips, 0.3, INFINITY},
+                      {mh::Method::HalfSpace, 0.0, INFINITY}, {mh::Method::HalfSpace, 0.3, INFINITY},
+                      {mh::Method::Strips, 0.3, 900e6},       {mh::Method::HalfSpace, 0.3, 900e6},
+                      {mh::Method::Auto, 0.0, INFINITY},      {mh::Method::Auto, 0.3, INFINITY},
+                      {mh::Method::Auto, 0.3, 900e6},         {mh::Method::MultiHertzian, 0.3, 900e6}};
+  for (const auto& [m, mu, p_lim] : runs) {
     {
       mh::WheelsetSetup s;
       s.wheel_left = s.wheel_right = mh::make_standard_profile("S1002", mh::Inclination::None);
       s.rail_left = s.rail_right = mh::make_standard_profile("60E1", mh::Inclination::In40);
       s.method.tangential.mu = mu;
       s.method.method = m;
+      s.material.p_lim = p_lim;
       const mh::WheelsetContact W(s);
       mh::WheelsetWorkspace ws;
       mh::WheelsetResult r;
@@ -376,9 +387,9 @@ TEST_CASE("the wheelset call by a grid method allocates nothing once it has seen
       reused.reserve(5);
       const long first = allocations(pass, false);
       const long second = allocations(pass);
-      std::printf("wheelset by %s, mu %g, 5 steps: allocations first pass %ld, second pass %ld\n", mh::to_string(m),
-                  mu, first, second);
-      INFO(mh::to_string(m) << ", mu " << mu << ": first pass " << first << ", second " << second);
+      std::printf("wheelset by %s, mu %g, p_lim %g MPa, 5 steps: allocations first pass %ld, second pass %ld\n",
+                  mh::to_string(m), mu, p_lim / 1e6, first, second);
+      INFO(mh::to_string(m) << ", mu " << mu << ", p_lim " << p_lim << ": first pass " << first << ", second " << second);
       CHECK(first > 0);
       CHECK(second == 0);
       for (int i = 0; i <= 4; ++i) {  // the same bits as a fresh workspace

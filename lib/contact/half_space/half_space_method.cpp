@@ -263,7 +263,11 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
     ws.elastic = r;
     CaseResult el = half_space_case(G, elastic, tY, Q, opt, gs, std::move(ws.elastic), ws);
     if (el.status != CaseStatus::Ok || el.pmax <= mat.p_lim) {
-      r = el;
+      // The elastic answer is the answer; r's storage kept for the next pass (both with room for
+      // a usual row, reserve_row: trading places grows neither).
+      reserve_row(r);
+      reserve_row(el);
+      std::swap(r, el);
       ws.elastic = std::move(el);
       return r;
     }
@@ -275,6 +279,10 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
     // times in flange contact, where the interpenetration at that depth reaches the tread.
     const WheelRailGap gap0(G, tY, NAN, opt.roll);
     dz_est = std::max(el.approach, rigid_plastic_approach(gap0, Q, mat.p_lim, ws.grid.projected));
+    // The elastic patches' vectors go back to the spares for the capped pass (the spares then
+    // hold no more than at the case's start: no growth).
+    for (PatchResult& p : el.patches) ws.grid.spare.push_back(std::move(p));
+    el.patches.clear();
     ws.elastic = std::move(el);
   }
   ws.patches.begin_case();
@@ -397,6 +405,12 @@ HalfSpaceWorkspace& HalfSpaceWorkspace::operator=(HalfSpaceWorkspace&&) noexcept
 HalfSpaceWorkspace::Impl& HalfSpaceWorkspace::impl() {
   if (!impl_) impl_ = std::make_unique<Impl>();
   return *impl_;
+}
+
+void recycle_patches(HalfSpaceWorkspace& ws, CaseResult& r) {
+  std::vector<PatchResult>& spare = ws.impl().grid.spare;
+  for (PatchResult& p : r.patches) spare.push_back(std::move(p));
+  r.patches.clear();
 }
 
 CaseResult solve_half_space(const ContactGeometry& G, const Material& mat, double tY, double Q,

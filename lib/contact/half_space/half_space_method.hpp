@@ -50,6 +50,10 @@ class HalfSpaceWorkspace {
   std::unique_ptr<Impl> impl_;
 };
 
+/// r's patches (results of this method) handed to `ws` for the capacity of their vectors, which
+/// the next solve into any result reuses; r.patches is left empty.
+void recycle_patches(HalfSpaceWorkspace& ws, CaseResult& r);
+
 /// The same into `out` (reset first, its vectors keeping their capacity) with the memory of `ws`:
 /// once `ws` and `out` have seen a case of the same pair with patches as large, a call allocates
 /// nothing (a status message aside). The same bytes as the form above.

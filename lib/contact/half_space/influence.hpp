@@ -69,7 +69,9 @@ class InfluenceGrid {
   /// anything for invalid arguments; after a failed allocation the object matches no grid
   /// (nx() = 0) until reset again.
   void reset(int nx, int ny, double dx, double dy, double compliance);
-  /// Whether this object's buffers hold an nx × ny grid (reset() to it allocates none of them).
+  /// Whether this object's buffers hold an nx × ny grid (reset() to it allocates none of them):
+  /// PocketFFT, any grid whose padded sizes fit the buffers; FFTW, whose plans belong to one
+  /// padded size, only grids of the same padded sizes.
   bool holds(int nx, int ny) const;
   /// The same convolution with another kernel: C_ij = kernel(ix_i − ix_j, iy_i − iy_j) for the
   /// offsets in elements (any parity; e.g. the tangential coefficients of tangential_influence.hpp).

@@ -238,6 +238,15 @@ std::vector<WarningClass> validity_failures(const std::vector<Warning>& warnings
   return classes;
 }
 
+bool first_validity_failure(const std::vector<Warning>& warnings, WarningClass* first) {
+  for (const Warning& w : warnings)
+    if (is_validity_class(w.cls)) {
+      *first = w.cls;
+      return true;
+    }
+  return false;
+}
+
 bool has_class(const std::vector<Warning>& warnings, WarningClass c) {
   return std::any_of(warnings.begin(), warnings.end(), [c](const Warning& w) { return w.cls == c; });
 }

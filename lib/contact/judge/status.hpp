@@ -191,6 +191,9 @@ std::vector<std::string> warning_texts(const std::vector<Warning>& ws);
 
 /// The distinct validity classes among `warnings`, in order of first appearance.
 std::vector<WarningClass> validity_failures(const std::vector<Warning>& warnings);
+/// Whether any of `warnings` is of a validity class; the first one's class into *first (no
+/// allocation: `auto`'s choice at every row).
+bool first_validity_failure(const std::vector<Warning>& warnings, WarningClass* first);
 /// Whether any of `warnings` is of class `c`.
 bool has_class(const std::vector<Warning>& warnings, WarningClass c);
 

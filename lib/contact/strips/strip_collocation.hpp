@@ -106,8 +106,10 @@ struct StripEndGapScratch {
   DenseMatrix dX, dF, Fm, XF;
   int n_diff = 0, oldest = 0;
   /// Its least-squares factorisations by shape (n, k) (Eigen's, which keeps its memory only at
-  /// one shape), the last 16 shapes.
-  MruCache<std::pair<int, int>, Eigen::ColPivHouseholderQR<Eigen::MatrixXd>> qrs{16};
+  /// one shape), the last 40: the Anderson depths k = 1 … 5 of the last 8 strip counts n (a
+  /// wheelset's plastic steps meet 5 or 6 strip counts per solver over their loads: with 20 kept
+  /// the second pass of the [alloc] test still allocated, with 30 not).
+  MruCache<std::pair<int, int>, Eigen::ColPivHouseholderQR<Eigen::MatrixXd>> qrs{40};
   StripResult start;  ///< a refinement's start taken from a warm start (StripSolver::at_load)
 };
 

@@ -20,12 +20,12 @@
 #include "contact/strips/strip_end_gap.hpp"
 
 #include "contact/strips/strip_influence.hpp"
+#include "core/numfmt.hpp"
 #include "contact/strips/strip_kernel.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 namespace mh {
 namespace strips_detail {
@@ -291,10 +291,8 @@ void refine_extents(const Solver& S, bool load_given, double target, double p_li
     if (pass >= kMaxPasses) {
       S.assemble(delta, p_lim, c, res);
       res.status = StripStatus::NotConverged;
-      std::ostringstream os;
-      os << "end-gap extents did not settle in " << kMaxPasses << " passes (the last moved the extents by "
-         << moved / total << " of their sum)";
-      res.message = os.str();
+      assign_format(res.message, "end-gap extents did not settle in %d passes (the last moved the extents by %g of their sum)",
+                    kMaxPasses, moved / total);
       res.failure = Warning(WarningClass::NotConvergedEndGap)
                         .add(Quantity::Passes, kMaxPasses)
                         .add(Quantity::ExtentsMoved, moved / total, '>', rtol);

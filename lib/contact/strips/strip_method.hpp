@@ -39,6 +39,10 @@ class StripWorkspace {
   std::unique_ptr<Impl> impl_;
 };
 
+/// r's patches (results of this method) handed to `ws` for the capacity of their vectors, which
+/// the next solve into any result reuses; r.patches is left empty.
+void recycle_patches(StripWorkspace& ws, CaseResult& r);
+
 /// The same into `out` (reset first, its vectors keeping their capacity) with the memory of `ws`.
 /// The same bytes as the form above.
 void solve_strip_method(const ContactGeometry& G, const Material& material, double tY, double Q,

@@ -17,6 +17,7 @@
 #include <limits>
 #include <memory>
 #include <sstream>
+#include "core/numfmt.hpp"
 #include "core/units.hpp"
 
 namespace mh {
@@ -292,10 +293,8 @@ void StripSolver::estimate_at_load(double Nt, const std::vector<int>* warm_start
     // (e.g. the plastic set changes its capping order there).
     if (std::isfinite(hi) && hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) {
       best.status = StripStatus::NotConverged;
-      std::ostringstream os;
-      os << "N(delta) jumps across the target at delta = " << hi << " m (closest N = " << best.N
-         << " N); returned the closest iterate";
-      best.message = os.str();
+      assign_format(best.message, "N(delta) jumps across the target at delta = %g m (closest N = %g N); returned the closest iterate",
+                    hi, best.N);
       best.failure = Warning(WarningClass::NotConvergedLoad)
                          .add(Quantity::Residual, (best.N - Nt) / Nt, '>', opt.load_rtol)
                          .add(Quantity::Iterations, it);

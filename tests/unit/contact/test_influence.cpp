@@ -286,11 +286,17 @@ TEST_CASE("InfluenceGrid::reset gives a new operator's bits in the same object",
     F.add_sparse(idx, d, 3, sF.data());
     CHECK(sR == sF);
   }
-  // The buffers hold every grid met (41 × 26 and 64 × 3 the largest), and what fits in them; not
-  // a grid both wide and long (64 × 26) nor one a padded size larger (42 × 26: 90 × 54 points).
-  CHECK(R.holds(41, 26));
-  CHECK(R.holds(64, 3));
-  CHECK(R.holds(10, 10));
+  // PocketFFT: the buffers hold every grid met (41 × 26 and 64 × 3 the largest), and what fits in
+  // them; not a grid both wide and long (64 × 26) nor one a padded size larger (42 × 26: 90 × 54
+  // points). FFTW's plans belong to one padded size: only that size is held.
+  if (std::string(mh::fft_backend()) == "pocketfft") {
+    CHECK(R.holds(41, 26));
+    CHECK(R.holds(64, 3));
+    CHECK(R.holds(10, 10));
+  } else {
+    CHECK(R.holds(12, 11));
+    CHECK_FALSE(R.holds(41, 26));
+  }
   CHECK_FALSE(R.holds(64, 26));
   CHECK_FALSE(R.holds(42, 26));
   CHECK_FALSE(mh::InfluenceGrid(5, 5, 1e-3, 1e-3, H).holds(40, 25));
