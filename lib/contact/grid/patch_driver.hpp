@@ -154,6 +154,12 @@ struct GridCaseWorkspace {
     pr.traction.clear();
     return pr;
   }
+  /// A result's patches handed back for take_patch (their vectors' capacity); `patches` is left
+  /// empty.
+  void give_back(std::vector<PatchResult>& patches) {
+    for (PatchResult& p : patches) spare.push_back(std::move(p));
+    patches.clear();
+  }
   /// The next check input (its vectors keep their capacity), after begin: checks[n_checks − 1].
   PatchCheckInput& next_check() {
     if (n_checks == checks.size()) checks.emplace_back();
@@ -204,7 +210,7 @@ CaseResult solve_grid_case(Method method, const ContactGeometry& G, const Materi
 template <class Body>
 void solve_grid_case(Method method, const ContactGeometry& G, const Material& mat, double tY, double Q, double roll,
                      const CaseResult* elastic_mh, GridCaseWorkspace& ws, CaseResult& out, Body&& body) {
-  for (PatchResult& p : out.patches) ws.spare.push_back(std::move(p));  // their vectors for take_patch
+  ws.give_back(out.patches);  // their vectors for take_patch
   reset_case_result(out);
   out.method = method;
   GridStart& gs = ws.start;

@@ -281,8 +281,7 @@ CaseResult half_space_case(const ContactGeometry& G, const Material& mat, double
     dz_est = std::max(el.approach, rigid_plastic_approach(gap0, Q, mat.p_lim, ws.grid.projected));
     // The elastic patches' vectors go back to the spares for the capped pass (the spares then
     // hold no more than at the case's start: no growth).
-    for (PatchResult& p : el.patches) ws.grid.spare.push_back(std::move(p));
-    el.patches.clear();
+    ws.grid.give_back(el.patches);
     ws.elastic = std::move(el);
   }
   ws.patches.begin_case();
@@ -407,11 +406,7 @@ HalfSpaceWorkspace::Impl& HalfSpaceWorkspace::impl() {
   return *impl_;
 }
 
-void recycle_patches(HalfSpaceWorkspace& ws, CaseResult& r) {
-  std::vector<PatchResult>& spare = ws.impl().grid.spare;
-  for (PatchResult& p : r.patches) spare.push_back(std::move(p));
-  r.patches.clear();
-}
+void recycle_patches(HalfSpaceWorkspace& ws, CaseResult& r) { ws.impl().grid.give_back(r.patches); }
 
 CaseResult solve_half_space(const ContactGeometry& G, const Material& mat, double tY, double Q,
                             const HalfSpaceOptions& opt, const CaseResult* elastic_mh) {

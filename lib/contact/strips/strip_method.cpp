@@ -337,11 +337,7 @@ StripWorkspace::Impl& StripWorkspace::impl() {
   return *impl_;
 }
 
-void recycle_patches(StripWorkspace& ws, CaseResult& r) {
-  std::vector<PatchResult>& spare = ws.impl().grid.spare;
-  for (PatchResult& p : r.patches) spare.push_back(std::move(p));
-  r.patches.clear();
-}
+void recycle_patches(StripWorkspace& ws, CaseResult& r) { ws.impl().grid.give_back(r.patches); }
 
 CaseResult solve_strip_method(const ContactGeometry& G, const Material& mat, double tY, double Q,
                               const StripMethodOptions& opt, const CaseResult* elastic_mh) {
