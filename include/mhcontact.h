@@ -368,14 +368,15 @@ MHC_API mhc_error mhc_solve_many_warnings(const mhc_pair* pair, int32_t prescrib
 MHC_API const char* mhc_warning_text(const mhc_workspace* ws, int32_t i);
 
 /* ---- contact tables (docs/tables.md) ------------------------------------------------------------
- * A table made by `mhcontact table` (a grid method at every node of a t_Y x Q grid, contacts
- * matched across nodes into tracks) read once and interpolated: bicubic Hermite with continuous
- * values and first derivatives in t_Y and Q; a contact appearing or disappearing between nodes
+ * A table made by `mhcontact table` (a grid method at every node of a t_Y x Q grid, and of the
+ * wheel's roll when its case gives roll nodes; contacts matched across nodes into tracks) read
+ * once and interpolated: bicubic (tricubic with a roll axis) Hermite with continuous values and
+ * first derivatives in t_Y, Q and the roll; a contact appearing or disappearing between nodes
  * fades in from N = 0 (no step). Lookups allocate nothing; a table may be shared by any number
  * of threads. */
 typedef struct mhc_table mhc_table;
 
-/** One contact of a lookup (and, in d_dtY / d_dQ, its derivatives, same fields). */
+/** One contact of a lookup (and, in d_dtY / d_dQ / d_droll, its derivatives, same fields). */
 typedef struct mhc_table_contact {
   int32_t track;          /**< 1-based contact track of the table (the CSV's `contact`) */
   int32_t reserved;
@@ -396,11 +397,13 @@ typedef struct mhc_table_contact {
   double C23;
 } mhc_table_contact;
 
-/** The answer at one (t_Y, Q). Caller-owned: set struct_size = sizeof(mhc_table_result). */
+/** The answer at one (t_Y, Q, roll). Caller-owned: set struct_size = sizeof(mhc_table_result)
+ *  (a caller built with the layout before the roll fields, ending at d_dQ, gets those filled). */
 typedef struct mhc_table_result {
   size_t struct_size;
-  int32_t status;       /**< mhc_status: the worst of the cell's four nodes (out_of_range outside the
-                             table); outside_validity in a cell that missed its tolerance (coarse) */
+  int32_t status;       /**< mhc_status: the worst of the cell's nodes (out_of_range outside the
+                             table); outside_validity in a cell that missed its tolerance (coarse),
+                             and for a table without a roll axis asked at another roll (off_roll) */
   int32_t n_contacts;   /**< contacts with N > 0 (the first MHC_MAX_CONTACTS are filled) */
   int32_t coarse;       /**< 1: the cell missed the table's interpolation tolerance */
   int32_t reserved;
@@ -413,6 +416,12 @@ typedef struct mhc_table_result {
   mhc_table_contact contact[MHC_MAX_CONTACTS];
   mhc_table_contact d_dtY[MHC_MAX_CONTACTS];  /**< d/dt_Y of each field of contact[k], per metre */
   mhc_table_contact d_dQ[MHC_MAX_CONTACTS];   /**< d/dQ of each field of contact[k], per newton */
+  /* The roll (tables of schema mhcontact.table/2): */
+  double roll_rad;             /**< the wheel's roll against the rail asked (method.md section 3.8) */
+  double dFy_droll_N_per_rad;  /**< 0 for a table without a roll axis */
+  int32_t off_roll;            /**< 1: a table without a roll axis asked at another roll than its own */
+  int32_t reserved2;
+  mhc_table_contact d_droll[MHC_MAX_CONTACTS];  /**< d/droll of each field of contact[k], per radian */
 } mhc_table_result;
 
 /** Read a table file (MHC_ERR_INPUT with the file, line and rule when it is not one). */
@@ -420,12 +429,22 @@ MHC_API mhc_error mhc_table_read(const char* path, mhc_table** out);
 /** Node ranges of the table [m], [N]; any pointer may be NULL. */
 MHC_API mhc_error mhc_table_range(const mhc_table* t, double* tY_min_m, double* tY_max_m, double* Q_min_N,
                                   double* Q_max_N);
+/** Roll nodes of the table [rad]: the range and their count (1: no roll axis, the table made at
+ *  roll_min = roll_max); any pointer may be NULL. */
+MHC_API mhc_error mhc_table_roll_range(const mhc_table* t, double* roll_min_rad, double* roll_max_rad,
+                                       int32_t* roll_nodes);
 /** The table's JSON header (profiles with checksums, method, ranges, units, measured error);
  *  valid while the table lives. NULL for a null table. */
 MHC_API const char* mhc_table_header(const mhc_table* t);
-/** The answer at (tY_m, Q_N) into *out (out->struct_size must be set). Outside the ranges: status
- *  out_of_range, no contacts (not an error). */
+/** The answer at (tY_m, Q_N) with the wheel upright (roll 0) into *out (out->struct_size must be
+ *  set). Outside the ranges: status out_of_range, no contacts (not an error). */
 MHC_API mhc_error mhc_table_lookup(const mhc_table* t, double tY_m, double Q_N, mhc_table_result* out);
+/** The same at the wheel's roll roll_rad against the rail (method.md section 3.8; the wheelset
+ *  call's mhc_wheel_result roll of each wheel). A table with a roll axis answers inside its roll
+ *  range (out_of_range outside it); a table without one answers with its one layer, the status
+ *  at best outside_validity away from its roll (off_roll = 1). */
+MHC_API mhc_error mhc_table_lookup_rolled(const mhc_table* t, double tY_m, double Q_N, double roll_rad,
+                                          mhc_table_result* out);
 MHC_API void mhc_table_free(mhc_table* t);
 
 /* ---- the wheelset call (docs/c-api.md "The wheelset call") ------------------------------------

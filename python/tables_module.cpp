@@ -36,8 +36,8 @@ struct ManyPtrs {
   int8_t* st = nullptr;
   int32_t* nc = nullptr;
   int32_t* tr = nullptr;
-  double *fz = nullptr, *fy = nullptr, *dfy = nullptr;
-  std::vector<double*> per;  ///< the contact fields, then dN_dtY, dN_dQ: n x MHC_MAX_CONTACTS each
+  double *fz = nullptr, *fy = nullptr, *dfy = nullptr, *dfyr = nullptr;
+  std::vector<double*> per;  ///< the contact fields, then dN_dtY, dN_dQ, dN_droll: n x MHC_MAX_CONTACTS each
 };
 
 template <class T>
@@ -63,10 +63,12 @@ py::dict many_result(std::size_t n) {
   d["Fz_N"] = py::array_t<double>(N);
   d["Fy_N"] = py::array_t<double>(N);
   d["dFy_dtY_N_per_m"] = py::array_t<double>(N);
+  d["dFy_droll_N_per_rad"] = py::array_t<double>(N);
   d["track"] = py::array_t<int32_t>(std::vector<py::ssize_t>{N, K});
   for (int f = 0; f < kNFields; ++f) d[kFields[f]] = py::array_t<double>(std::vector<py::ssize_t>{N, K});
   d["dN_dtY_N_per_m"] = py::array_t<double>(std::vector<py::ssize_t>{N, K});
   d["dN_dQ"] = py::array_t<double>(std::vector<py::ssize_t>{N, K});
+  d["dN_droll_N_per_rad"] = py::array_t<double>(std::vector<py::ssize_t>{N, K});
   return d;
 }
 
@@ -77,30 +79,35 @@ ManyPtrs many_ptrs(const py::dict& d, std::size_t n) {
   p.fz = many_array<double>(d, "Fz_N", n, false);
   p.fy = many_array<double>(d, "Fy_N", n, false);
   p.dfy = many_array<double>(d, "dFy_dtY_N_per_m", n, false);
+  p.dfyr = many_array<double>(d, "dFy_droll_N_per_rad", n, false);
   p.tr = many_array<int32_t>(d, "track", n, true);
   for (int f = 0; f < kNFields; ++f) p.per.push_back(many_array<double>(d, kFields[f], n, true));
   p.per.push_back(many_array<double>(d, "dN_dtY_N_per_m", n, true));
   p.per.push_back(many_array<double>(d, "dN_dQ", n, true));
+  p.per.push_back(many_array<double>(d, "dN_droll_N_per_rad", n, true));
   return p;
 }
 
-void many_fill(const mhc_table* t, std::size_t n, const double* ty, const double* q, ManyPtrs& p) {
+// roll: one per point, or null for the wheel upright.
+void many_fill(const mhc_table* t, std::size_t n, const double* ty, const double* q, const double* roll, ManyPtrs& p) {
   const std::size_t K = MHC_MAX_CONTACTS;
   mhc_table_result r;
   r.struct_size = sizeof r;
   for (std::size_t i = 0; i < n; ++i) {
-    mhc_table_lookup(t, ty[i], q[i], &r);
+    mhc_table_lookup_rolled(t, ty[i], q[i], roll ? roll[i] : 0.0, &r);
     p.st[i] = static_cast<int8_t>(r.status);
     p.nc[i] = r.n_contacts;
     p.fz[i] = r.Fz_N;
     p.fy[i] = r.Fy_N;
     p.dfy[i] = r.dFy_dtY_N_per_m;
+    p.dfyr[i] = r.dFy_droll_N_per_rad;
     for (std::size_t k = 0; k < K; ++k) {
       const bool on = static_cast<int>(k) < r.n_contacts;
       p.tr[i * K + k] = on ? r.contact[k].track : 0;
       for (int f = 0; f < kNFields; ++f) p.per[static_cast<std::size_t>(f)][i * K + k] = on ? fields(r.contact[k])[f] : 0.0;
       p.per[kNFields][i * K + k] = on ? r.d_dtY[k].N_N : 0.0;
       p.per[kNFields + 1][i * K + k] = on ? r.d_dQ[k].N_N : 0.0;
+      p.per[kNFields + 2][i * K + k] = on ? r.d_droll[k].N_N : 0.0;
     }
   }
 }
@@ -109,12 +116,15 @@ void many_fill(const mhc_table* t, std::size_t n, const double* ty, const double
 // values boxed explicitly: 3 µs a lookup before, 1.4–1.7 µs after, docs/performance.md). Never
 // freed (as statics they would be destroyed after the interpreter).
 struct Keys {
-  py::str field[kNFields], track, d_dtY, d_dQ, status, coarse, n_contacts, Fz, Fy, dFy_dtY, dFy_dQ, contacts;
+  py::str field[kNFields], track, d_dtY, d_dQ, d_droll, status, coarse, off_roll, n_contacts, Fz, Fy, dFy_dtY, dFy_dQ,
+      dFy_droll, contacts;
   Keys() {
     for (int f = 0; f < kNFields; ++f) field[f] = py::str(kFields[f]);
-    track = py::str("track"), d_dtY = py::str("d_dtY"), d_dQ = py::str("d_dQ"), status = py::str("status");
-    coarse = py::str("coarse"), n_contacts = py::str("n_contacts"), Fz = py::str("Fz_N"), Fy = py::str("Fy_N");
-    dFy_dtY = py::str("dFy_dtY_N_per_m"), dFy_dQ = py::str("dFy_dQ"), contacts = py::str("contacts");
+    track = py::str("track"), d_dtY = py::str("d_dtY"), d_dQ = py::str("d_dQ"), d_droll = py::str("d_droll");
+    status = py::str("status"), coarse = py::str("coarse"), off_roll = py::str("off_roll");
+    n_contacts = py::str("n_contacts"), Fz = py::str("Fz_N"), Fy = py::str("Fy_N");
+    dFy_dtY = py::str("dFy_dtY_N_per_m"), dFy_dQ = py::str("dFy_dQ"), dFy_droll = py::str("dFy_droll_N_per_rad");
+    contacts = py::str("contacts");
   }
 };
 const Keys& keys() {
@@ -122,16 +132,19 @@ const Keys& keys() {
   return *k;
 }
 
-py::dict contact_dict(const Keys& K, const mhc_table_contact& c, const mhc_table_contact& dt, const mhc_table_contact& dq) {
-  py::dict d, ddt, ddq;
+py::dict contact_dict(const Keys& K, const mhc_table_contact& c, const mhc_table_contact& dt, const mhc_table_contact& dq,
+                      const mhc_table_contact& dr) {
+  py::dict d, ddt, ddq, ddr;
   d[K.track] = py::int_(c.track);
   for (int f = 0; f < kNFields; ++f) {
     d[K.field[f]] = py::float_(fields(c)[f]);
     ddt[K.field[f]] = py::float_(fields(dt)[f]);
     ddq[K.field[f]] = py::float_(fields(dq)[f]);
+    ddr[K.field[f]] = py::float_(fields(dr)[f]);
   }
   d[K.d_dtY] = ddt;
   d[K.d_dQ] = ddq;
+  d[K.d_droll] = ddr;
   return d;
 }
 
@@ -163,14 +176,18 @@ void add_tables(py::module_& m, void (*raise)(mhc_error)) {
   for (int f = 0; f < kNFields; ++f) field_names[static_cast<std::size_t>(f)] = py::str(kFields[f]);
   py::class_<TableResult>(m, "TableResult",
                           "The answer of Table.lookup_into, reused from call to call (docs/tables.md \"From Python\"). "
-                          "values, d_dtY and d_dQ are numpy views (MAX_CONTACTS x len(FIELDS)) of its contact slots "
+                          "values, d_dtY, d_dQ and d_droll are numpy views (MAX_CONTACTS x len(FIELDS)) of its contact slots "
                           "and track one of their tracks (0 where empty): take them once, they see every later lookup.")
       .def(py::init<>())
       .def_property_readonly_static("FIELDS", [field_names](py::object) { return field_names; },
-                                    "the columns of values, d_dtY and d_dQ (SI)")
+                                    "the columns of values, d_dtY, d_dQ and d_droll (SI)")
       .def_property_readonly("status", [](const TableResult& x) { return mhc_status_name(x.r.status); })
       .def_property_readonly("status_code", [](const TableResult& x) { return x.r.status; }, "index in STATUS_NAMES")
       .def_property_readonly("coarse", [](const TableResult& x) { return x.r.coarse != 0; })
+      .def_property_readonly("off_roll", [](const TableResult& x) { return x.r.off_roll != 0; },
+                             "a table without a roll axis asked at another roll than its own")
+      .def_property_readonly("roll_rad", [](const TableResult& x) { return x.r.roll_rad; })
+      .def_property_readonly("dFy_droll_N_per_rad", [](const TableResult& x) { return x.r.dFy_droll_N_per_rad; })
       .def_property_readonly("n_contacts", [](const TableResult& x) { return x.r.n_contacts; })
       .def_property_readonly("tY_m", [](const TableResult& x) { return x.r.tY_m; })
       .def_property_readonly("Q_N", [](const TableResult& x) { return x.r.Q_N; })
@@ -187,7 +204,9 @@ void add_tables(py::module_& m, void (*raise)(mhc_error)) {
       .def_property_readonly("d_dtY", [](py::object self) { return slot_view(self, self.cast<TableResult&>().r.d_dtY); },
                              "per metre")
       .def_property_readonly("d_dQ", [](py::object self) { return slot_view(self, self.cast<TableResult&>().r.d_dQ); },
-                             "per newton");
+                             "per newton")
+      .def_property_readonly("d_droll", [](py::object self) { return slot_view(self, self.cast<TableResult&>().r.d_droll); },
+                             "per radian");
   m.attr("MAX_CONTACTS") = MHC_MAX_CONTACTS;
 
   py::class_<Table>(m, "Table", "A contact table made by `mhcontact table` (docs/tables.md), read once; lookups are "
@@ -206,32 +225,41 @@ void add_tables(py::module_& m, void (*raise)(mhc_error)) {
             mhc_table_range(t.t, &a, &b, &c, &d);
             return py::make_tuple(a, b, c, d);
           }, "(tY_min_m, tY_max_m, Q_min_N, Q_max_N)")
-      .def("lookup", [](const Table& t, double tY_m, double Q_N) {
+      .def_property_readonly("roll_range", [](const Table& t) {
+            double a, b;
+            int32_t n;
+            mhc_table_roll_range(t.t, &a, &b, &n);
+            return py::make_tuple(a, b, n);
+          }, "(roll_min_rad, roll_max_rad, roll_nodes): one node, no roll axis")
+      .def("lookup", [](const Table& t, double tY_m, double Q_N, double roll_rad) {
             mhc_table_result r;
             r.struct_size = sizeof r;
-            mhc_table_lookup(t.t, tY_m, Q_N, &r);
+            mhc_table_lookup_rolled(t.t, tY_m, Q_N, roll_rad, &r);
             const Keys& K = keys();
             py::dict d;
             d[K.status] = py::str(mhc_status_name(r.status));
             d[K.coarse] = py::bool_(r.coarse != 0);
+            d[K.off_roll] = py::bool_(r.off_roll != 0);
             d[K.n_contacts] = py::int_(r.n_contacts);
             d[K.Fz] = py::float_(r.Fz_N);
             d[K.Fy] = py::float_(r.Fy_N);
             d[K.dFy_dtY] = py::float_(r.dFy_dtY_N_per_m);
             d[K.dFy_dQ] = py::float_(r.dFy_dQ);
+            d[K.dFy_droll] = py::float_(r.dFy_droll_N_per_rad);
             const int n = r.n_contacts < MHC_MAX_CONTACTS ? r.n_contacts : MHC_MAX_CONTACTS;
             py::list cs(static_cast<std::size_t>(n));
             for (int k = 0; k < n; ++k)
-              cs[static_cast<std::size_t>(k)] = contact_dict(K, r.contact[k], r.d_dtY[k], r.d_dQ[k]);
+              cs[static_cast<std::size_t>(k)] = contact_dict(K, r.contact[k], r.d_dtY[k], r.d_dQ[k], r.d_droll[k]);
             d[K.contacts] = cs;
             return d;
-          }, py::arg("tY_m"), py::arg("Q_N"),
-          "The answer at one point: status, coarse, n_contacts, Fz_N, Fy_N, dFy_dtY_N_per_m, dFy_dQ and the contacts "
-          "(each with d_dtY and d_dQ of its fields)")
-      .def("lookup_into", [](const Table& t, double tY_m, double Q_N, TableResult& out) {
-            mhc_table_lookup(t.t, tY_m, Q_N, &out.r);
+          }, py::arg("tY_m"), py::arg("Q_N"), py::arg("roll_rad") = 0.0,
+          "The answer at one point (the wheel's roll roll_rad against the rail, default upright): status, coarse, "
+          "off_roll, n_contacts, Fz_N, Fy_N, dFy_dtY_N_per_m, dFy_dQ, dFy_droll_N_per_rad and the contacts (each with "
+          "d_dtY, d_dQ and d_droll of its fields)")
+      .def("lookup_into", [](const Table& t, double tY_m, double Q_N, TableResult& out, double roll_rad) {
+            mhc_table_lookup_rolled(t.t, tY_m, Q_N, roll_rad, &out.r);
             return out.r.status;
-          }, py::arg("tY_m"), py::arg("Q_N"), py::arg("out"),
+          }, py::arg("tY_m"), py::arg("Q_N"), py::arg("out"), py::arg("roll_rad") = 0.0,
           "The answer at one point into `out` (a TableResult, reused); returns its status code (index in "
           "STATUS_NAMES). The fast single-point lookup: no dict, no allocation")
       .def("_c_lookup_seconds", [](const Table& t, py::array_t<double, py::array::c_style | py::array::forcecast> tY_m,
@@ -259,22 +287,30 @@ void add_tables(py::module_& m, void (*raise)(mhc_error)) {
             return per;
           }, py::arg("tY_m"), py::arg("Q_N"), py::arg("repeats") = 5)
       .def("lookup_many", [](const Table& t, py::array_t<double, py::array::c_style | py::array::forcecast> tY_m,
-                             py::array_t<double, py::array::c_style | py::array::forcecast> Q_N, py::object out) {
+                             py::array_t<double, py::array::c_style | py::array::forcecast> Q_N, py::object out,
+                             py::object roll_rad) {
             const std::size_t n = static_cast<std::size_t>(tY_m.size());
             if (static_cast<std::size_t>(Q_N.size()) != n) throw py::value_error("tY_m and Q_N differ in length");
+            py::array_t<double, py::array::c_style | py::array::forcecast> roll;
+            if (!roll_rad.is_none()) {
+              roll = roll_rad.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
+              if (static_cast<std::size_t>(roll.size()) != n) throw py::value_error("roll_rad and tY_m differ in length");
+            }
             py::dict d = out.is_none() ? many_result(n) : out.cast<py::dict>();
             ManyPtrs p = many_ptrs(d, n);
             const double* ty = tY_m.data();
             const double* q = Q_N.data();
+            const double* r = roll_rad.is_none() ? nullptr : roll.data();
             {
               py::gil_scoped_release nogil;
-              many_fill(t.t, n, ty, q, p);
+              many_fill(t.t, n, ty, q, r, p);
             }
             return d;
-          }, py::arg("tY_m"), py::arg("Q_N"), py::arg("out") = py::none(),
-          "Many points at once (numpy arrays of one length): status (codes of STATUS_NAMES), n_contacts, Fz_N, Fy_N, "
-          "dFy_dtY_N_per_m, and per contact slot (n x 6 arrays, 0 where empty) track, the fields of lookup's "
-          "contacts, dN_dtY_N_per_m and dN_dQ, as a dict of arrays. With out= (a dict that lookup_many returned "
+          }, py::arg("tY_m"), py::arg("Q_N"), py::arg("out") = py::none(), py::arg("roll_rad") = py::none(),
+          "Many points at once (numpy arrays of one length; roll_rad an array of the wheel's roll, default upright): "
+          "status (codes of STATUS_NAMES), n_contacts, Fz_N, Fy_N, dFy_dtY_N_per_m, dFy_droll_N_per_rad, and per "
+          "contact slot (n x 6 arrays, 0 where empty) track, the fields of lookup's contacts, dN_dtY_N_per_m, dN_dQ "
+          "and dN_droll_N_per_rad, as a dict of arrays. With out= (a dict that lookup_many returned "
           "for as many points, or Table.many_result(n)) the answers are written into its arrays and out is "
           "returned: no allocation per call")
       .def_static("many_result", [](std::size_t n) { return many_result(n); }, py::arg("n"),

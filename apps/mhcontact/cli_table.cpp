@@ -23,20 +23,22 @@ void add_table_command(CLI::App& app, CliContext& ctx) {
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "table", "Contact table for time-stepping callers: the case's grid method (strips, half-space, auto) at every "
-               "node of its t_Y x Q sweep, contacts matched across nodes, the interpolation error measured at the "
-               "cell centres and t_Y or Q refined where it misses (writes FILE, CSV with a JSON header). "
+               "node of its t_Y x Q (x roll) sweep, contacts matched across nodes, the interpolation error measured at "
+               "the cell centres and t_Y, Q or the roll refined where it misses (writes FILE, CSV with a JSON header). "
                "Exit 0 if every cell meets its tolerance and every node has an answer, 1 if not.");
   cmd->add_option("case", o->case_file, "Case file (JSON) with a method other than multi-hertzian and a sweep: its nodes")
       ->required();
   cmd->add_option("-o,--output", o->out, "Table file to write (- for standard output)")->required();
   cmd->add_option("--threads", o->make.threads, "Worker threads (0 = all cores; the table is identical whatever the count)")
       ->check(CLI::Range(0u, 1024u))->capture_default_str();
-  cmd->add_option("--refine", o->make.refine, "Rounds of halving the t_Y and Q intervals whose cells miss a tolerance")
+  cmd->add_option("--refine", o->make.refine, "Rounds of halving the t_Y, Q and roll intervals whose cells miss a tolerance")
       ->check(CLI::Range(0, 8))->capture_default_str();
   cmd->add_option("--min-step-mm", o->make.min_step_mm, "Smallest t_Y interval refinement makes [mm]")
       ->check(CLI::Range(0.001, 10.0))->capture_default_str();
   cmd->add_option("--min-Q-step-kN", o->make.min_Q_step_kN, "Smallest Q interval refinement makes [kN]")
       ->check(CLI::Range(0.1, 1000.0))->capture_default_str();
+  cmd->add_option("--min-roll-step-mrad", o->make.min_roll_step_mrad, "Smallest roll interval refinement makes [mrad]")
+      ->check(CLI::Range(0.001, 50.0))->capture_default_str();
   cmd->add_option("--tol-N", o->make.tol_N, "Tolerance of a contact's normal force, fraction of Q")
       ->check(CLI::Range(1e-6, 1.0))->capture_default_str();
   cmd->add_option("--tol-pmax", o->make.tol_pmax, "Tolerance of the peak pressure, fraction")

@@ -1,5 +1,6 @@
 // The C interface of contact tables (include/mhcontact.h, "contact tables"; docs/tables.md):
 // a table read by input/contact_table and its lookup converted into mhc_table_result.
+#include <cstddef>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -68,17 +69,34 @@ mhc_error mhc_table_range(const mhc_table* t, double* tY_min_m, double* tY_max_m
   return MHC_OK;
 }
 
+mhc_error mhc_table_roll_range(const mhc_table* t, double* roll_min_rad, double* roll_max_rad, int32_t* roll_nodes) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(t, "table")) return e;
+  const auto& d = t->look.data();
+  if (roll_min_rad) *roll_min_rad = d.roll.front();
+  if (roll_max_rad) *roll_max_rad = d.roll.back();
+  if (roll_nodes) *roll_nodes = static_cast<int32_t>(d.nR());
+  return MHC_OK;
+}
+
 const char* mhc_table_header(const mhc_table* t) { return t ? t->header.c_str() : nullptr; }
 
 mhc_error mhc_table_lookup(const mhc_table* t, double tY_m, double Q_N, mhc_table_result* out) {
+  return mhc_table_lookup_rolled(t, tY_m, Q_N, 0.0, out);
+}
+
+mhc_error mhc_table_lookup_rolled(const mhc_table* t, double tY_m, double Q_N, double roll_rad, mhc_table_result* out) {
   if (mhc_error e = need(t, "table")) return e;
   if (mhc_error e = need(out, "result")) return e;
-  if (out->struct_size < sizeof(mhc_table_result))
+  // The layout before the roll fields (ending at d_dQ) is still served: those fields only.
+  constexpr std::size_t kBeforeRoll = offsetof(mhc_table_result, roll_rad);
+  const bool with_roll = out->struct_size >= sizeof(mhc_table_result);
+  if (out->struct_size != kBeforeRoll && !with_roll)
     return mh::capi::fail(MHC_ERR_ARGUMENT, "result: struct_size = " + std::to_string(out->struct_size) +
                                                 ": must be sizeof(mhc_table_result) = " +
                                                 std::to_string(sizeof(mhc_table_result)));
   thread_local mh::TableAnswer a;
-  t->look.lookup(tY_m, Q_N, a);
+  t->look.lookup(tY_m, Q_N, roll_rad, a);
   out->status = status_code(a.status);
   out->n_contacts = a.n_contacts;
   out->coarse = a.coarse ? 1 : 0;
@@ -95,12 +113,20 @@ mhc_error mhc_table_lookup(const mhc_table* t, double tY_m, double Q_N, mhc_tabl
     put(out->contact[k], c.track, c.v);
     put(out->d_dtY[k], c.track, c.d_dtY);
     put(out->d_dQ[k], c.track, c.d_dQ);
+    if (with_roll) put(out->d_droll[k], c.track, c.d_droll);
   }
   if (n < MHC_MAX_CONTACTS) {
     const std::size_t rest = sizeof(mhc_table_contact) * static_cast<std::size_t>(MHC_MAX_CONTACTS - n);
     std::memset(static_cast<void*>(&out->contact[n]), 0, rest);
     std::memset(static_cast<void*>(&out->d_dtY[n]), 0, rest);
     std::memset(static_cast<void*>(&out->d_dQ[n]), 0, rest);
+    if (with_roll) std::memset(static_cast<void*>(&out->d_droll[n]), 0, rest);
+  }
+  if (with_roll) {
+    out->roll_rad = roll_rad;
+    out->dFy_droll_N_per_rad = a.dFy_droll;
+    out->off_roll = a.off_roll ? 1 : 0;
+    out->reserved2 = 0;
   }
   return MHC_OK;
 }

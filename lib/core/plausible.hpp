@@ -35,6 +35,9 @@ inline constexpr Range kNu{"nu", "-", 0.1, 0.45, "", "steel is about 0.28-0.3"};
 inline constexpr Range kYield_MPa{"yield", "MPa", 50, 5000, "is it in GPa? the yield stress is in MPa", "is it in kPa or Pa? the yield stress is in MPa"};
 inline constexpr Range kPlim_MPa{"p_lim", "MPa", 100, 20000, "is it in GPa? p_lim is in MPa", "is it in kPa? p_lim is in MPa"};
 inline constexpr Range kTY_mm{"t_Y", "mm", -60, 60, "", "is it in micrometres? t_Y is in mm"};
+/// The wheel's roll against the rail: the rolled gap's domain (method.md §3.8), |δ| ≤ 50 mrad.
+inline constexpr Range kRoll_mrad{"roll", "mrad", -50, 50, "is it in microradians? the roll is in mrad",
+                                  "is it in microradians? the roll is in mrad"};
 inline constexpr Range kRadius_mm{"radius", "mm", 100, 2000, "is it in metres? radii are in mm", "is it a diameter? give the radius"};
 inline constexpr Range kProfileRadius_mm{"|profile radius|", "mm", 1, 1e6, "is it in metres? radii are in mm", "omit it for a straight profile"};
 inline constexpr Range kCurvature_per_mm{"curvature sum", "1/mm", 1e-7, 1, "", "is it in 1/m? A and B are in 1/mm"};

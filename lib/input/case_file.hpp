@@ -87,12 +87,19 @@ struct CaseFile {
   MethodOptions method_options() const { return {method, solver, half_space, strips, tangential}; }
   /// Either a cartesian sweep (t_Y outer, Q inner: case i has tY[i / nQ], Q[i % nQ]) ...
   SweepAxis sweep_tY_mm, sweep_Q_kN;  ///< as given, in mm and kN
+  /// "sweep"/"roll_mrad": the wheel's roll δ against the rail [mrad], an axis of contact tables
+  /// only (docs/tables.md "Roll"); empty (size 0) when not given. `run` and `batch` refuse it
+  /// (refuse_table_axes).
+  SweepAxis sweep_roll_mrad;
   /// ... or an explicit list.
   std::vector<CasePoint> cases;
   bool has_cases = false;  ///< a sweep or a case list was given
 
   std::uint64_t case_count() const;
   CasePoint case_at(std::uint64_t i) const;
+  /// Throws InputError at /sweep/roll_mrad when it is given: the jobs that solve a case list
+  /// (`run`, `batch`) solve the wheel upright.
+  void refuse_table_axes() const;
   /// The inputs as resolved (defaults filled in, units at the edges), for results.json.
   nlohmann::json resolved_json() const;
 };

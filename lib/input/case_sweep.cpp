@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "core/errors.hpp"
 #include "core/numfmt.hpp"
 #include "core/plausible.hpp"
 #include "core/units.hpp"
@@ -134,6 +135,14 @@ std::uint64_t CaseFile::case_count() const {
   return static_cast<std::uint64_t>(sweep_tY_mm.size()) * sweep_Q_kN.size();
 }
 
+void CaseFile::refuse_table_axes() const {
+  if (sweep_roll_mrad.size() > 0)
+    throw InputError(path + ": /sweep/roll_mrad", format_number(sweep_roll_mrad.at(0)),
+                     "the roll is an axis of contact tables (`mhcontact table`); a run solves the wheel upright",
+                     "remove roll_mrad from the sweep, or make a table; the library solves a rolled wheel "
+                     "(the C interface's roll_rad, pair.solve(..., roll_rad=))");
+}
+
 CasePoint CaseFile::case_at(std::uint64_t i) const {
   if (!cases.empty()) return cases[i];
   const std::uint64_t nq = sweep_Q_kN.size();
@@ -147,7 +156,7 @@ void parse_sweep_or_cases(const Ctx& c, const json& j, CaseFile& cf) {
   if (j.contains("sweep") && j.contains("cases")) c.fail("/cases", nullptr, "give either \"sweep\" or \"cases\", not both");
   if (j.contains("sweep")) {
     const json& s = j.at("sweep");
-    c.only_keys(s, "/sweep", {"tY_mm", "Q_kN"});
+    c.only_keys(s, "/sweep", {"tY_mm", "Q_kN", "roll_mrad"});
     if (!s.contains("tY_mm")) c.fail("/sweep/tY_mm", nullptr, "required");
     if (!s.contains("Q_kN")) c.fail("/sweep/Q_kN", nullptr, "required");
     // Count before materialising anything: a sweep of 10^12 cases is refused up front.
@@ -157,6 +166,10 @@ void parse_sweep_or_cases(const Ctx& c, const json& j, CaseFile& cf) {
              "split the study (shards) or coarsen the steps");
     cf.sweep_tY_mm = parse_axis(c, s.at("tY_mm"), "/sweep/tY_mm", plausible::kTY_mm);
     cf.sweep_Q_kN = parse_axis(c, s.at("Q_kN"), "/sweep/Q_kN", plausible::kQ_kN);
+    if (s.contains("roll_mrad")) {
+      if (axis_count(s.at("roll_mrad")) > 1000) c.fail("/sweep/roll_mrad", nullptr, "more than 1000 roll values", "coarsen the step");
+      cf.sweep_roll_mrad = parse_axis(c, s.at("roll_mrad"), "/sweep/roll_mrad", plausible::kRoll_mrad);
+    }
     cf.has_cases = true;
   } else if (j.contains("cases")) {
     const json& a = j.at("cases");

@@ -1,15 +1,16 @@
 #pragma once
 // Contact tables (docs/tables.md): the answers of a grid method (strips, half-space, auto) on a
-// tensor grid of nodes in t_Y and load Q, read back and interpolated for a time-stepping caller.
+// tensor grid of nodes in t_Y, load Q and (optionally) the wheel's roll δ against the rail, read
+// back and interpolated for a time-stepping caller.
 // This is the light half: the file format's names, the reader and the lookup (the C interface
 // uses it). Making a table (the solves, the contact matching, the error check) is
 // jobs/contact_table_make.hpp.
 //
-// Interpolation: per contact track and quantity, a bicubic Hermite surface on the node grid with
-// node slopes from the monotone piecewise-cubic rule (PCHIP: Fritsch & Carlson, SIAM J. Numer.
-// Anal. 17 (1980) 238–246, with the weighted harmonic mean of Fritsch & Butland, SIAM J. Sci.
-// Stat. Comput. 5 (1984) 300–304) along each axis and zero cross slope: continuous values and
-// first derivatives in t_Y and Q across cells. A contact absent at a node carries N = 0 there
+// Interpolation: per contact track and quantity, a bicubic (tricubic with a roll axis) Hermite
+// surface on the node grid with node slopes from the monotone piecewise-cubic rule (PCHIP:
+// Fritsch & Carlson, SIAM J. Numer. Anal. 17 (1980) 238–246, with the weighted harmonic mean of
+// Fritsch & Butland, SIAM J. Sci. Stat. Comput. 5 (1984) 300–304) along each axis and zero cross
+// slopes: continuous values and first derivatives in t_Y, Q and δ across cells. A contact absent at a node carries N = 0 there
 // (and zero size and pressure); a zero node between loaded ones is a local minimum, where PCHIP
 // puts a zero slope, so a contact appearing between nodes grows from zero force without a step.
 #include <array>
@@ -24,9 +25,9 @@
 namespace mh {
 
 /// The schema tag of the table's JSON header; bumped on any incompatible change.
-constexpr const char* kContactTableSchema = "mhcontact.table/1";
+constexpr const char* kContactTableSchema = "mhcontact.table/2";
 /// The schema tag of a table's export on a regular grid (`mhcontact table-export`, docs/tables.md).
-constexpr const char* kContactTableExportSchema = "mhcontact.table-export/1";
+constexpr const char* kContactTableExportSchema = "mhcontact.table-export/2";
 
 /// The per-contact quantities of a table, in the order of their CSV columns.
 enum TableQuantity : int {
@@ -57,25 +58,35 @@ struct TableColumn {
 };
 extern const std::array<TableColumn, kTableQuantities> kTableColumns;
 
-/// The node columns before the per-contact ones: "tY_mm,Q_kN,status,contact,present".
-constexpr int kTableNodeColumns = 5;
+/// The node columns before the per-contact ones: "tY_mm,Q_kN,roll_mrad,status,contact,present".
+constexpr int kTableNodeColumns = 6;
 
-/// A table in memory, SI. Node (i, j) is (tY[i], Q[j]); track k is one contact followed across
-/// nodes (docs/tables.md "Contacts across nodes").
+/// A table in memory, SI. Node (m, i, j) is (roll[m], tY[i], Q[j]), the roll outermost: layer m
+/// is a (t_Y, Q) table of its own layout. Track k is one contact followed across nodes
+/// (docs/tables.md "Contacts across nodes"). One roll node: no roll axis (a layer made at that
+/// roll). Cells: (m, i, j) with m < nRc() (one layer of cells without a roll axis).
 struct ContactTableData {
   nlohmann::json header;                 ///< the JSON header as read or made
   std::vector<double> tY;                ///< [m] increasing
   std::vector<double> Q;                 ///< [N] increasing
+  std::vector<double> roll{0.0};         ///< [rad] increasing; one node: no roll axis
   int n_tracks = 0;
-  std::vector<CaseStatus> node_status;   ///< [i * nQ + j]
-  std::vector<std::uint8_t> cell_coarse; ///< [i * (nQ-1) + j]: the cell missed its error tolerance after refinement
-  std::vector<std::uint8_t> present;     ///< [(i * nQ + j) * n_tracks + k]
-  std::vector<double> v;                 ///< [((i * nQ + j) * n_tracks + k) * kTableQuantities + q], SI
+  std::vector<CaseStatus> node_status;   ///< [node(m, i, j)]
+  std::vector<std::uint8_t> cell_coarse; ///< [cell(m, i, j)]: the cell missed its error tolerance after refinement
+  std::vector<std::uint8_t> present;     ///< [node(m, i, j) * n_tracks + k]
+  std::vector<double> v;                 ///< [at(m, i, j, k) + q], SI
   std::size_t nT() const { return tY.size(); }
   std::size_t nQ() const { return Q.size(); }
-  std::size_t at(std::size_t i, std::size_t j, int k) const {
-    return ((i * nQ() + j) * static_cast<std::size_t>(n_tracks) + static_cast<std::size_t>(k)) * kTableQuantities;
+  std::size_t nR() const { return roll.size(); }
+  /// Cell layers along the roll: nR() - 1, or 1 without a roll axis.
+  std::size_t nRc() const { return nR() > 1 ? nR() - 1 : 1; }
+  std::size_t node(std::size_t m, std::size_t i, std::size_t j) const { return (m * nT() + i) * nQ() + j; }
+  std::size_t cell(std::size_t m, std::size_t i, std::size_t j) const { return (m * (nT() - 1) + i) * (nQ() - 1) + j; }
+  std::size_t at(std::size_t m, std::size_t i, std::size_t j, int k) const {
+    return (node(m, i, j) * static_cast<std::size_t>(n_tracks) + static_cast<std::size_t>(k)) * kTableQuantities;
   }
+  /// Layer 0 (a table without a roll axis).
+  std::size_t at(std::size_t i, std::size_t j, int k) const { return at(0, i, j, k); }
 };
 
 /// Read a table file (CSV with its JSON header line) whose header's schema is `schema` (a table,
@@ -92,24 +103,36 @@ struct TableContact {
   std::array<double, kTableQuantities> v{};        ///< SI
   std::array<double, kTableQuantities> d_dtY{};    ///< per m
   std::array<double, kTableQuantities> d_dQ{};     ///< per N
+  std::array<double, kTableQuantities> d_droll{};  ///< per rad (0 without a roll axis)
 };
 
-/// The answer at one (t_Y, Q).
+/// The answer at one (t_Y, Q, roll).
 struct TableAnswer {
   CaseStatus status = CaseStatus::OutOfRange;
   bool coarse = false;       ///< the cell missed the interpolation tolerance (status outside_validity)
+  /// A table without a roll axis asked at another roll than its layer's (status at best
+  /// outside_validity: its evidence is at its own roll; docs/tables.md "Roll").
+  bool off_roll = false;
   int n_contacts = 0;        ///< contacts with N > 0 (may exceed kTableMaxContacts: the rest omitted)
   double Fz = 0, Fy = 0;     ///< [N] Σ N cos γ, Σ N sin γ
-  double dFy_dtY = 0, dFy_dQ = 0;  ///< [N/m], [-]
+  double dFy_dtY = 0, dFy_dQ = 0, dFy_droll = 0;  ///< [N/m], [-], [N/rad]
   std::array<TableContact, kTableMaxContacts> c;
 };
 
-/// Add one contact of track k (0-based) with its values v and their derivatives along t_Y (vx)
-/// and Q (vy) to `out`: Fz += N cos γ, Fy += N sin γ, ∂Fy/∂t_Y and ∂Fy/∂Q by the product rule,
-/// and the contact's slot while there is room (n_contacts counts it either way). The one
-/// per-contact summation of the lookup and of the export's bilinear reading.
-void add_table_contact(TableAnswer& out, int k, const std::array<double, kTableQuantities>& v,
-                       const std::array<double, kTableQuantities>& vx, const std::array<double, kTableQuantities>& vy);
+/// A table's values of one track at a point and their derivatives along t_Y, Q and the roll.
+struct TableTrackValues {
+  std::array<double, kTableQuantities> v, d_dtY, d_dQ, d_droll;
+};
+
+/// Add one contact of track k (0-based) with its values and their derivatives to `out`:
+/// Fz += N cos γ, Fy += N sin γ, ∂Fy/∂t_Y, ∂Fy/∂Q and ∂Fy/∂δ by the product rule, and the
+/// contact's slot while there is room (n_contacts counts it either way). The one per-contact
+/// summation of the lookup and of the export's linear reading.
+void add_table_contact(TableAnswer& out, int k, const TableTrackValues& t);
+
+/// Roll nodes closer than this [rad] are one (a table without a roll axis answers at its own roll
+/// within it).
+constexpr double kTableRollTolerance = 1e-6;
 
 /// The interpolant of a table: node slopes made once; lookups allocate nothing and may run on
 /// any number of threads at once.
@@ -117,27 +140,29 @@ class ContactTableLookup {
  public:
   explicit ContactTableLookup(ContactTableData data);
   const ContactTableData& data() const { return d_; }
-  /// The answer at (tY [m], Q [N]); outside the node ranges: status out_of_range, no contact.
-  void lookup(double tY, double Q, TableAnswer& out) const;
-  /// The interpolant of one track k (0-based) at (tY, Q) inside the node ranges, whether its N is
-  /// above 0 or not (sizes, forces and pressures clamped at 0): what an export writes for every
-  /// track at every point.
-  void track_values(double tY, double Q, int k, std::array<double, kTableQuantities>& v) const;
+  /// The answer at (tY [m], Q [N], roll [rad]); outside the node ranges: status out_of_range,
+  /// no contact. A table without a roll axis answers at any roll with its one layer, the status
+  /// at best outside_validity away from that layer's roll (TableAnswer::off_roll).
+  void lookup(double tY, double Q, double roll, TableAnswer& out) const;
+  /// The interpolant of one track k (0-based) at (tY, Q, roll) inside the node ranges, whether
+  /// its N is above 0 or not (sizes, forces and pressures clamped at 0): what an export writes
+  /// for every track at every point.
+  void track_values(double tY, double Q, double roll, int k, std::array<double, kTableQuantities>& v) const;
 
  private:
   ContactTableData d_;
-  std::vector<double> dx_, dy_;  ///< node slopes along t_Y and Q, laid out as d_.v
+  std::vector<double> dx_, dy_, dz_;  ///< node slopes along t_Y, Q and roll, laid out as d_.v (dz_ 0 without a roll axis)
   std::vector<int> cell_tracks_; ///< per cell, the tracks present at one of its corners ...
   std::vector<int> cell_first_;  ///< ... cell_tracks_[cell_first_[c] .. cell_first_[c+1])
-  /// The Hermite basis of the cell holding (tY, Q), inside the node ranges: made once a lookup.
+  /// The Hermite basis of the cell holding (tY, Q, roll), inside the node ranges: made once a lookup.
   struct Basis {
-    std::size_t i = 0, j = 0;  ///< the cell (i, j)
-    double H0[2], H1[2], G0[2], G1[2], dH0[2], dH1[2], dG0[2], dG1[2];
+    std::size_t i = 0, j = 0, m = 0;  ///< the cell (m, i, j)
+    int nc = 1;                       ///< roll corners: 2 with a roll axis, else 1 (R0[0] = 1, the rest 0)
+    double H0[2], H1[2], G0[2], G1[2], R0[2], R1[2], dH0[2], dH1[2], dG0[2], dG1[2], dR0[2], dR1[2];
   };
-  void basis(double tY, double Q, Basis& B) const;
+  void basis(double tY, double Q, double roll, Basis& B) const;
   /// Track k's Hermite surface at the basis's point: values and their derivatives.
-  void hermite(const Basis& B, int k, std::array<double, kTableQuantities>& v, std::array<double, kTableQuantities>& vx,
-               std::array<double, kTableQuantities>& vy) const;
+  void hermite(const Basis& B, int k, TableTrackValues& t) const;
 };
 
 /// Severity order of statuses for a cell (the worst of its corners): ok < outside_validity <

@@ -154,6 +154,7 @@ Manifest parse_manifest(const json& j, const std::string& path) {
     c["wheel"]["profile"] = probe["wheel"]["profile"];
     c["rail"]["profile"] = probe["rail"]["profile"];
     const CaseFile cf = m.pairs[k].keys.empty() ? shared : parse_case_json(c, path, true, origins);
+    cf.refuse_table_axes();
     if (k == 0) {
       first = cf;
       continue;

@@ -117,73 +117,84 @@ ContactTableData export_contact_table(const ContactTableData& table, const std::
   ContactTableData ex;
   for (double t : tY_mm) ex.tY.push_back(t * 1e-3);
   for (double q : Q_kN) ex.Q.push_back(q * 1e3);
+  ex.roll = table.roll;  // the table's own roll nodes: read linearly between them
   // The grid's ends are the table's ends exactly (the rounding of the mm values aside).
   ex.tY.front() = table.tY.front(), ex.tY.back() = table.tY.back();
   ex.Q.front() = table.Q.front(), ex.Q.back() = table.Q.back();
   ex.n_tracks = table.n_tracks;
-  const std::size_t nT = ex.nT(), nQ = ex.nQ(), nk = static_cast<std::size_t>(ex.n_tracks);
-  ex.node_status.assign(nT * nQ, CaseStatus::Ok);
-  ex.cell_coarse.assign((nT - 1) * (nQ - 1), 0);
-  ex.present.assign(nT * nQ * nk, 0);
-  ex.v.assign(nT * nQ * nk * kTableQuantities, 0.0);
+  const std::size_t nT = ex.nT(), nQ = ex.nQ(), nR = ex.nR(), nk = static_cast<std::size_t>(ex.n_tracks);
+  ex.node_status.assign(nR * nT * nQ, CaseStatus::Ok);
+  ex.cell_coarse.assign(ex.nRc() * (nT - 1) * (nQ - 1), 0);
+  ex.present.assign(nR * nT * nQ * nk, 0);
+  ex.v.assign(nR * nT * nQ * nk * kTableQuantities, 0.0);
   TableAnswer a;
   std::array<double, kTableQuantities> v;
-  for (std::size_t i = 0; i < nT; ++i)
-    for (std::size_t j = 0; j < nQ; ++j) {
-      look.lookup(ex.tY[i], ex.Q[j], a);
-      ex.node_status[i * nQ + j] = a.status;
-      const bool answered = status_severity(a.status) < 3;
-      for (std::size_t k = 0; k < nk; ++k) {
-        // Every track at every point: where its N is 0 (or the point has no answer), the force,
-        // pressure and sizes are 0 and the positions, angle, radius and Kalker coefficients the
-        // interpolant's, continuous where the contact fades out.
-        look.track_values(ex.tY[i], ex.Q[j], static_cast<int>(k), v);
-        const bool present = answered && v[kTabN] > 0;
-        ex.present[(i * nQ + j) * nk + k] = present;
-        double* out = &ex.v[ex.at(i, j, static_cast<int>(k))];
-        for (int q = 0; q < kTableQuantities; ++q) out[q] = present || !kTableColumns[q].fades ? v[q] : 0.0;
+  for (std::size_t m = 0; m < nR; ++m)
+    for (std::size_t i = 0; i < nT; ++i)
+      for (std::size_t j = 0; j < nQ; ++j) {
+        look.lookup(ex.tY[i], ex.Q[j], ex.roll[m], a);
+        const std::size_t n = ex.node(m, i, j);
+        ex.node_status[n] = a.status;
+        const bool answered = status_severity(a.status) < 3;
+        for (std::size_t k = 0; k < nk; ++k) {
+          // Every track at every point: where its N is 0 (or the point has no answer), the force,
+          // pressure and sizes are 0 and the positions, angle, radius and Kalker coefficients the
+          // interpolant's, continuous where the contact fades out.
+          look.track_values(ex.tY[i], ex.Q[j], ex.roll[m], static_cast<int>(k), v);
+          const bool present = answered && v[kTabN] > 0;
+          ex.present[n * nk + k] = present;
+          double* out = &ex.v[ex.at(m, i, j, static_cast<int>(k))];
+          for (int q = 0; q < kTableQuantities; ++q) out[q] = present || !kTableColumns[q].fades ? v[q] : 0.0;
+        }
       }
-    }
 
-  // The error of reading the export bilinearly, where the table's answer is ok: at the table's
+  // The error of reading the export linearly, where the table's answer is ok: at the table's
   // nodes (the method's own answers) and at the centres of the export's cells (against the
-  // table's interpolant, where a bilinear reading errs most).
+  // table's interpolant, where a linear reading errs most).
   std::vector<PointDiff> at_nodes, at_centres;
   TableAnswer e;
-  for (double t : table.tY)
-    for (double q : table.Q) {
-      look.lookup(t, q, a);
-      if (a.status != CaseStatus::Ok) continue;
-      export_bilinear(ex, t, q, e);
-      at_nodes.push_back(diff(e, a, q));
-    }
-  for (std::size_t i = 0; i + 1 < nT; ++i)
-    for (std::size_t j = 0; j + 1 < nQ; ++j) {
-      const double t = 0.5 * (ex.tY[i] + ex.tY[i + 1]), q = 0.5 * (ex.Q[j] + ex.Q[j + 1]);
-      look.lookup(t, q, a);
-      if (a.status != CaseStatus::Ok) continue;
-      export_bilinear(ex, t, q, e);
-      at_centres.push_back(diff(e, a, q));
-    }
+  for (double r : table.roll)
+    for (double t : table.tY)
+      for (double q : table.Q) {
+        look.lookup(t, q, r, a);
+        if (a.status != CaseStatus::Ok) continue;
+        export_linear(ex, t, q, r, e);
+        at_nodes.push_back(diff(e, a, q));
+      }
+  for (std::size_t m = 0; m < ex.nRc(); ++m)
+    for (std::size_t i = 0; i + 1 < nT; ++i)
+      for (std::size_t j = 0; j + 1 < nQ; ++j) {
+        const double t = 0.5 * (ex.tY[i] + ex.tY[i + 1]), q = 0.5 * (ex.Q[j] + ex.Q[j + 1]);
+        const double r = nR > 1 ? 0.5 * (ex.roll[m] + ex.roll[m + 1]) : ex.roll[0];
+        look.lookup(t, q, r, a);
+        if (a.status != CaseStatus::Ok) continue;
+        export_linear(ex, t, q, r, e);
+        at_centres.push_back(diff(e, a, q));
+      }
 
   nlohmann::json h;
   h["schema"] = kContactTableExportSchema;
   h["program"] = program_json();
-  h["what"] = "a contact table resampled on a regular t_Y x Q grid for table-driven contact elements: per point and "
-              "contact track the table's interpolant; read it bilinearly per track (docs/tables.md)";
+  h["what"] = "a contact table resampled on a regular t_Y x Q grid (at the table's roll nodes) for table-driven "
+              "contact elements: per point and contact track the table's interpolant; read it linearly per track "
+              "(docs/tables.md)";
   const nlohmann::json& th = table.header;
   nlohmann::json src = {{"file", source}, {"sha256", sha256}, {"schema", th.value("schema", std::string())}};
-  for (const char* key : {"method", "model", "profiles", "inputs", "tY_mm_nodes", "Q_kN_nodes", "dropped_tY_mm",
-                          "coarse_cells", "error"})
+  for (const char* key : {"method", "model", "profiles", "inputs", "tY_mm_nodes", "Q_kN_nodes", "roll_mrad_nodes",
+                          "dropped_tY_mm", "coarse_cells", "error"})
     if (th.contains(key)) src[key] = th[key];
   h["source"] = src;
-  h["interpolation"] = "per track, every column bilinear in (tY_mm, Q_kN) on the grid cell; a contact where the "
-                       "interpolated N_kN > 0; the status the worst of the cell's four corners "
-                       "(ok < outside_validity < derailed < the statuses without an answer)";
+  h["interpolation"] = "per track, every column bilinear in (tY_mm, Q_kN) on the grid cell (trilinear in (tY_mm, Q_kN, "
+                       "roll_mrad) with more than one roll node); a contact where the interpolated N_kN > 0; the status "
+                       "the worst of the cell's corners (ok < outside_validity < derailed < the statuses without an "
+                       "answer); with one roll node, at best outside_validity at another roll";
   h["grid"] = {{"tY_mm", {{"from", tY_mm.front()}, {"to", tY_mm.back()}, {"step", tY_step}, {"points", nT}}},
                {"Q_kN", {{"from", Q_kN.front()}, {"to", Q_kN.back()}, {"step", opt.Q_step_kN}, {"points", nQ}}}};
   h["tY_mm_nodes"] = tY_mm;
   h["Q_kN_nodes"] = Q_kN;
+  std::vector<double> roll_mrad;
+  for (double r : ex.roll) roll_mrad.push_back(std::round(r * 1e3 * 1e9) / 1e9);
+  h["roll_mrad_nodes"] = th.contains("roll_mrad_nodes") ? th["roll_mrad_nodes"] : nlohmann::json(roll_mrad);
   h["tracks"] = ex.n_tracks;
   h["units"] = th.contains("units") ? th["units"] : nlohmann::json::object();
   nlohmann::json err;
@@ -210,45 +221,57 @@ ContactTableData export_contact_table(const ContactTableData& table, const std::
   return ex;
 }
 
-void export_bilinear(const ContactTableData& ex, double tY, double Q, TableAnswer& out) {
+void export_linear(const ContactTableData& ex, double tY, double Q, double roll, TableAnswer& out) {
   out.n_contacts = 0;
-  out.Fz = out.Fy = out.dFy_dtY = out.dFy_dQ = 0;
-  out.coarse = false;
-  const std::size_t nT = ex.nT(), nQ = ex.nQ(), nk = static_cast<std::size_t>(ex.n_tracks);
-  if (!(tY >= ex.tY.front() && tY <= ex.tY.back() && Q >= ex.Q.front() && Q <= ex.Q.back())) {
+  out.Fz = out.Fy = out.dFy_dtY = out.dFy_dQ = out.dFy_droll = 0;
+  out.coarse = out.off_roll = false;
+  const std::size_t nR = ex.nR(), nk = static_cast<std::size_t>(ex.n_tracks);
+  const bool axis = nR > 1;
+  if (!(tY >= ex.tY.front() && tY <= ex.tY.back() && Q >= ex.Q.front() && Q <= ex.Q.back()) ||
+      (axis && !(roll >= ex.roll.front() && roll <= ex.roll.back()))) {
     out.status = CaseStatus::OutOfRange;
     return;
   }
-  const std::size_t i = std::min<std::size_t>(
-      nT - 2, static_cast<std::size_t>(std::upper_bound(ex.tY.begin(), ex.tY.end(), tY) - ex.tY.begin()) - 1);
-  const std::size_t j = std::min<std::size_t>(
-      nQ - 2, static_cast<std::size_t>(std::upper_bound(ex.Q.begin(), ex.Q.end(), Q) - ex.Q.begin()) - 1);
+  auto interval = [](const std::vector<double>& x, double v) {
+    return std::min<std::size_t>(x.size() - 2, static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), v) - x.begin()) - 1);
+  };
+  const std::size_t i = interval(ex.tY, tY), j = interval(ex.Q, Q), m = axis ? interval(ex.roll, roll) : 0;
+  const std::size_t nc = axis ? 2 : 1;
   CaseStatus st = CaseStatus::Ok;
-  for (std::size_t a = 0; a < 2; ++a)
-    for (std::size_t b = 0; b < 2; ++b) {
-      const CaseStatus s = ex.node_status[(i + a) * nQ + (j + b)];
-      if (status_severity(s) > status_severity(st)) st = s;
-    }
+  for (std::size_t c = 0; c < nc; ++c)
+    for (std::size_t a = 0; a < 2; ++a)
+      for (std::size_t b = 0; b < 2; ++b) {
+        const CaseStatus s = ex.node_status[ex.node(m + c, i + a, j + b)];
+        if (status_severity(s) > status_severity(st)) st = s;
+      }
+  out.off_roll = !axis && !(std::fabs(roll - ex.roll[0]) <= kTableRollTolerance);
+  if (out.off_roll && st == CaseStatus::Ok) st = CaseStatus::OutsideValidity;
   out.status = st;
   if (status_severity(st) >= 3) return;
   const double hx = ex.tY[i + 1] - ex.tY[i], hy = ex.Q[j + 1] - ex.Q[j];
   const double u = (tY - ex.tY[i]) / hx, w = (Q - ex.Q[j]) / hy;
-  const double c[2][2] = {{(1 - u) * (1 - w), (1 - u) * w}, {u * (1 - w), u * w}};
-  const double cx[2][2] = {{-(1 - w) / hx, -w / hx}, {(1 - w) / hx, w / hx}};
-  const double cy[2][2] = {{-(1 - u) / hy, (1 - u) / hy}, {-u / hy, u / hy}};
+  const double hz = axis ? ex.roll[m + 1] - ex.roll[m] : 1.0, s = axis ? (roll - ex.roll[m]) / hz : 0.0;
+  // Weights of the corners (a, b, c) and their derivatives along each axis.
+  const double U[2] = {1 - u, u}, W[2] = {1 - w, w}, S[2] = {1 - s, s};
+  const double dU[2] = {-1 / hx, 1 / hx}, dW[2] = {-1 / hy, 1 / hy}, dS[2] = {-1 / hz, 1 / hz};
+  TableTrackValues t;
   for (std::size_t k = 0; k < nk; ++k) {
-    std::array<double, kTableQuantities> v{}, vx{}, vy{};
-    for (std::size_t a = 0; a < 2; ++a)
-      for (std::size_t b = 0; b < 2; ++b) {
-        const double* f = &ex.v[ex.at(i + a, j + b, static_cast<int>(k))];
-        for (int q = 0; q < kTableQuantities; ++q) {
-          v[q] += c[a][b] * f[q];
-          vx[q] += cx[a][b] * f[q];
-          vy[q] += cy[a][b] * f[q];
+    t.v.fill(0), t.d_dtY.fill(0), t.d_dQ.fill(0), t.d_droll.fill(0);
+    for (std::size_t c = 0; c < nc; ++c)
+      for (std::size_t a = 0; a < 2; ++a)
+        for (std::size_t b = 0; b < 2; ++b) {
+          const double* f = &ex.v[ex.at(m + c, i + a, j + b, static_cast<int>(k))];
+          const double Sc = axis ? S[c] : 1.0, dSc = axis ? dS[c] : 0.0;
+          const double c0 = U[a] * W[b] * Sc, cx = dU[a] * W[b] * Sc, cy = U[a] * dW[b] * Sc, cz = U[a] * W[b] * dSc;
+          for (int q = 0; q < kTableQuantities; ++q) {
+            t.v[q] += c0 * f[q];
+            t.d_dtY[q] += cx * f[q];
+            t.d_dQ[q] += cy * f[q];
+            t.d_droll[q] += cz * f[q];
+          }
         }
-      }
-    if (!(v[kTabN] > 0)) continue;
-    add_table_contact(out, static_cast<int>(k), v, vx, vy);
+    if (!(t.v[kTabN] > 0)) continue;
+    add_table_contact(out, static_cast<int>(k), t);
   }
 }
 
@@ -270,8 +293,9 @@ int table_export_job(const std::string& table_path, const TableExportOptions& op
       err << s["checked"].get<std::size_t>() << ": N max " << pct(s["N"]["max"].get<double>()) << " % of Q, pmax max "
           << pct(s["pmax"]["max"].get<double>()) << " %, area max " << pct(s["area"]["max"].get<double>()) << " %";
     };
-    err << "mhcontact table-export: " << ex.nT() << " x " << ex.nQ() << " points, " << ex.n_tracks
-        << " contact tracks; bilinear error at the table's ok nodes, ";
+    err << "mhcontact table-export: " << ex.nT() << " x " << ex.nQ();
+    if (ex.nR() > 1) err << " x " << ex.nR();
+    err << " points, " << ex.n_tracks << " contact tracks; linear error at the table's ok nodes, ";
     line(e["at_table_nodes"]);
     err << "; at the export's ok cell centres, ";
     line(e["at_export_cell_centres"]);

@@ -1,9 +1,10 @@
 #pragma once
 // The export of a contact table on a regular grid for table-driven contact elements of MBS codes
 // (docs/tables.md "Export for MBS codes"): the table's own interpolant (contact_table.hpp)
-// evaluated at every point of a regular t_Y × Q grid, every track at every point, in the table's
-// column layout; the error of interpolating the export bilinearly, measured against the table's
-// nodes and against the table's interpolant between the export's points, in its header.
+// evaluated at every point of a regular t_Y × Q grid at each of the table's roll nodes, every
+// track at every point, in the table's column layout; the error of interpolating the export
+// linearly, measured against the table's nodes and against the table's interpolant between the
+// export's points, in its header.
 #include <iosfwd>
 #include <string>
 
@@ -28,9 +29,11 @@ ContactTableData export_contact_table(const ContactTableData& table, const std::
                                       const std::string& sha256, const TableExportOptions& opt);
 
 /// The rule an export's header states for reading it between its points: per track, every
-/// quantity bilinear in (t_Y, Q) on its grid cell; a contact where the interpolated N > 0; the
-/// status the worst of the cell's four corners. Outside the grid: out_of_range.
-void export_bilinear(const ContactTableData& ex, double tY, double Q, TableAnswer& out);
+/// quantity bilinear in (t_Y, Q) on its grid cell (trilinear in (t_Y, Q, roll) with more than
+/// one roll node); a contact where the interpolated N > 0; the status the worst of the cell's
+/// corners, at best outside_validity away from a single roll node's roll. Outside the grid:
+/// out_of_range.
+void export_linear(const ContactTableData& ex, double tY, double Q, double roll, TableAnswer& out);
 
 /// `mhcontact table-export TABLE.csv -o FILE`: read, export, write atomically (`-` for standard
 /// output), print the measured error. Returns 0.

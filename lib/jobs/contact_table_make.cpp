@@ -44,16 +44,17 @@ struct UnionFind {
 };
 
 /// Contacts across nodes (docs/tables.md "Contacts across nodes"): two contacts of neighbouring
-/// nodes (in t_Y or in Q) are one track when their rail extents overlap (within 0.5 mm) and each
-/// is the other's best overlap; a track holding two contacts of one node keeps the larger and
-/// the other starts a track of its own. Absent nodes: N, pressure and sizes 0, the positions,
-/// angle, radius and Kalker coefficients of the nearest node with the contact (same Q first).
-ContactTableData build_table(const std::vector<double>& tY, const std::vector<double>& Q,
+/// nodes (in t_Y, Q or roll) are one track when their rail extents overlap (within 0.5 mm) and
+/// each is the other's best overlap; a track holding two contacts of one node keeps the larger
+/// and the other starts a track of its own. Absent nodes: N, pressure and sizes 0, the positions,
+/// angle, radius and Kalker coefficients of the nearest node with the contact (the same roll
+/// first, then the same Q row, then the nearest rows). `nodes` in ContactTableData::node order.
+ContactTableData build_table(const std::vector<double>& tY, const std::vector<double>& Q, const std::vector<double>& roll,
                              const std::vector<const NodeSolve*>& nodes) {
-  const std::size_t nT = tY.size(), nQ = Q.size();
+  const std::size_t nT = tY.size(), nQ = Q.size(), nR = roll.size(), nn = nR * nT * nQ;
   constexpr double kMargin = 0.5e-3;
-  std::vector<std::size_t> first(nT * nQ + 1, 0);
-  for (std::size_t n = 0; n < nT * nQ; ++n) first[n + 1] = first[n] + nodes[n]->contacts.size();
+  std::vector<std::size_t> first(nn + 1, 0);
+  for (std::size_t n = 0; n < nn; ++n) first[n + 1] = first[n] + nodes[n]->contacts.size();
   const std::size_t total = first.back();
   UnionFind uf(total);
   auto link = [&](std::size_t na, std::size_t nb) {
@@ -73,16 +74,18 @@ ContactTableData build_table(const std::vector<double>& tY, const std::vector<do
       if (b < B.size() && best(A, B[b]) == a) uf.unite(first[na] + a, first[nb] + b);
     }
   };
-  for (std::size_t i = 0; i < nT; ++i)
-    for (std::size_t j = 0; j < nQ; ++j) {
-      if (i + 1 < nT) link(i * nQ + j, (i + 1) * nQ + j);
-      if (j + 1 < nQ) link(i * nQ + j, i * nQ + j + 1);
-    }
+  auto node = [&](std::size_t m, std::size_t i, std::size_t j) { return (m * nT + i) * nQ + j; };
+  for (std::size_t m = 0; m < nR; ++m)
+    for (std::size_t i = 0; i < nT; ++i)
+      for (std::size_t j = 0; j < nQ; ++j) {
+        if (i + 1 < nT) link(node(m, i, j), node(m, i + 1, j));
+        if (j + 1 < nQ) link(node(m, i, j), node(m, i, j + 1));
+        if (m + 1 < nR) link(node(m, i, j), node(m + 1, i, j));
+      }
   // Components → tracks; a second contact of one node in a component starts its own track.
   std::map<std::size_t, std::size_t> root_track;
-  std::vector<std::size_t> track_of(total);
   std::vector<std::map<std::size_t, std::size_t>> track_nodes;  // node → contact (global index)
-  for (std::size_t n = 0; n < nT * nQ; ++n) {
+  for (std::size_t n = 0; n < nn; ++n) {
     // Larger N first, so that the larger keeps the track.
     std::vector<std::size_t> order(nodes[n]->contacts.size());
     std::iota(order.begin(), order.end(), 0);
@@ -101,7 +104,6 @@ ContactTableData build_table(const std::vector<double>& tY, const std::vector<do
         t = it->second;
       }
       track_nodes[t][n] = g;
-      track_of[g] = t;
     }
   }
   // Tracks in increasing mean rail y.
@@ -122,54 +124,49 @@ ContactTableData build_table(const std::vector<double>& tY, const std::vector<do
   ContactTableData d;
   d.tY = tY;
   d.Q = Q;
+  d.roll = roll;
   d.n_tracks = static_cast<int>(std::max<std::size_t>(nk0, 1));
   const std::size_t nk = static_cast<std::size_t>(d.n_tracks);
-  d.node_status.resize(nT * nQ);
-  for (std::size_t n = 0; n < nT * nQ; ++n) d.node_status[n] = nodes[n]->status;
-  d.present.assign(nT * nQ * nk, 0);
-  d.v.assign(nT * nQ * nk * kTableQuantities, 0.0);
-  d.cell_coarse.assign((nT - 1) * (nQ - 1), 0);
+  d.node_status.resize(nn);
+  for (std::size_t n = 0; n < nn; ++n) d.node_status[n] = nodes[n]->status;
+  d.present.assign(nn * nk, 0);
+  d.v.assign(nn * nk * kTableQuantities, 0.0);
+  d.cell_coarse.assign(d.nRc() * (nT - 1) * (nQ - 1), 0);
   for (std::size_t kk = 0; kk < nk0; ++kk) {
     const auto& tn = track_nodes[order[kk]];
-    for (std::size_t i = 0; i < nT; ++i)
-      for (std::size_t j = 0; j < nQ; ++j) {
-        const std::size_t n = i * nQ + j;
-        double* v = &d.v[d.at(i, j, static_cast<int>(kk))];
-        auto it = tn.find(n);
-        if (it != tn.end()) {
-          d.present[n * nk + kk] = 1;
-          const auto& c = contact_at(it->second);
-          std::copy(c.v.begin(), c.v.end(), v);
-          continue;
-        }
-        // Absent: the nearest node with the contact, same Q row first, then the nearest rows.
-        std::size_t src = tn.begin()->first;
-        bool found = false;
-        for (std::size_t dj = 0; dj < nQ && !found; ++dj)
-          for (int sgn : {-1, 1}) {
-            if (found || (dj == 0 && sgn > 0)) continue;
-            const long jj = static_cast<long>(j) + sgn * static_cast<long>(dj);
-            if (jj < 0 || jj >= static_cast<long>(nQ)) continue;
-            std::size_t bestd = nT + 1;
-            for (const auto& [m, g] : tn)
-              if (m % nQ == static_cast<std::size_t>(jj)) {
-                const std::size_t di = m / nQ > i ? m / nQ - i : i - m / nQ;
-                if (di < bestd) bestd = di, src = m;
-              }
-            if (bestd <= nT) found = true;
-          }
-        const auto& c = contact_at(tn.at(src));
-        for (int q = 0; q < kTableQuantities; ++q) v[q] = kTableColumns[q].fades ? 0.0 : c.v[q];
+    for (std::size_t n = 0; n < nn; ++n) {
+      double* v = &d.v[n * nk * kTableQuantities + kk * kTableQuantities];
+      auto it = tn.find(n);
+      if (it != tn.end()) {
+        d.present[n * nk + kk] = 1;
+        const auto& c = contact_at(it->second);
+        std::copy(c.v.begin(), c.v.end(), v);
+        continue;
       }
+      // Absent: the nearest node with the contact by (|Δroll|, |ΔQ| rows, the lower row first,
+      // |Δt_Y|), the first in node order on a tie.
+      const long m = static_cast<long>(n / (nT * nQ)), i = static_cast<long>((n / nQ) % nT), j = static_cast<long>(n % nQ);
+      std::size_t src = tn.begin()->first;
+      std::array<long, 4> bestk{{-1, 0, 0, 0}};
+      for (const auto& [o, g] : tn) {
+        const long mo = static_cast<long>(o / (nT * nQ)), io = static_cast<long>((o / nQ) % nT), jo = static_cast<long>(o % nQ);
+        const std::array<long, 4> key{{std::labs(mo - m), std::labs(jo - j), jo > j ? 1 : 0, std::labs(io - i)}};
+        if (bestk[0] < 0 || key < bestk) bestk = key, src = o;
+      }
+      const auto& c = contact_at(tn.at(src));
+      for (int q = 0; q < kTableQuantities; ++q) v[q] = kTableColumns[q].fades ? 0.0 : c.v[q];
+    }
   }
   return d;
 }
 
 /// The interpolant against a direct solve at one point.
-TableCheckError compare(const TableAnswer& T, const NodeSolve& D, double tY, double Q) {
+TableCheckError compare(const TableAnswer& T, const NodeSolve& D, const TablePoint& p) {
   TableCheckError e;
-  e.tY = tY;
-  e.Q = Q;
+  e.tY = p.tY_mm * units::mm;
+  e.Q = p.Q_kN * 1e3;
+  e.roll = p.roll_mrad * 1e-3;
+  const double Q = e.Q;
   e.direct = D.status;
   e.table = T.status;
   if (is_failure(D.status) || is_failure(T.status)) return e;
@@ -254,7 +251,8 @@ nlohmann::json error_summary(const std::vector<TableCheckError>& checks, const T
 
 }  // namespace
 
-void table_initial_nodes(const CaseFile& cf, std::vector<double>& tY_mm, std::vector<double>& Q_kN) {
+void table_initial_nodes(const CaseFile& cf, std::vector<double>& tY_mm, std::vector<double>& Q_kN,
+                         std::vector<double>& roll_mrad) {
   const std::string where = cf.path + ": /sweep";
   if (!cf.cases.empty() || cf.sweep_tY_mm.size() < 2 || cf.sweep_Q_kN.size() < 2)
     throw InputError(where, "", "a table needs a sweep with at least two t_Y and two Q values (its nodes)",
@@ -264,43 +262,80 @@ void table_initial_nodes(const CaseFile& cf, std::vector<double>& tY_mm, std::ve
                      "the multi-Hertzian method is as fast as a table lookup: call it directly");
   tY_mm.clear();
   Q_kN.clear();
+  roll_mrad.clear();
   for (std::uint64_t i = 0; i < cf.sweep_tY_mm.size(); ++i) tY_mm.push_back(cf.sweep_tY_mm.at(i));
   for (std::uint64_t i = 0; i < cf.sweep_Q_kN.size(); ++i) Q_kN.push_back(cf.sweep_Q_kN.at(i));
-  std::sort(tY_mm.begin(), tY_mm.end());
-  std::sort(Q_kN.begin(), Q_kN.end());
-  tY_mm.erase(std::unique(tY_mm.begin(), tY_mm.end()), tY_mm.end());
-  Q_kN.erase(std::unique(Q_kN.begin(), Q_kN.end()), Q_kN.end());
+  for (std::uint64_t i = 0; i < cf.sweep_roll_mrad.size(); ++i) roll_mrad.push_back(cf.sweep_roll_mrad.at(i));
+  if (roll_mrad.empty()) roll_mrad.push_back(0.0);
+  for (auto* x : {&tY_mm, &Q_kN, &roll_mrad}) {
+    std::sort(x->begin(), x->end());
+    x->erase(std::unique(x->begin(), x->end()), x->end());
+  }
   if (tY_mm.size() < 2 || Q_kN.size() < 2 || !(Q_kN.front() > 0))
     throw InputError(where, "", "a table needs two distinct t_Y values and two distinct loads Q > 0");
+  for (std::size_t m = 1; m < roll_mrad.size(); ++m)
+    if (!(roll_mrad[m] - roll_mrad[m - 1] >= 1e3 * kTableRollTolerance))
+      throw InputError(where + "/roll_mrad", format_number(roll_mrad[m]), "roll nodes at least 0.001 mrad apart");
 }
 
-std::vector<std::pair<double, double>> table_first_points(const CaseFile& cf, const TableMakeOptions& opt) {
-  std::vector<double> tY_mm, Q_kN;
-  table_initial_nodes(cf, tY_mm, Q_kN);
-  std::vector<std::pair<double, double>> pts;
-  for (double t : tY_mm)
-    for (double q : Q_kN) pts.emplace_back(t, q);
-  if (opt.check)
-    for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i)
-      for (std::size_t j = 0; j + 1 < Q_kN.size(); ++j)
-        pts.emplace_back(rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])), 0.5 * (Q_kN[j] + Q_kN[j + 1]));
+namespace {
+
+/// The grid of a table being made, in the units of its file.
+struct TableGrid {
+  std::vector<double> tY, Q, roll;  ///< [mm], [kN], [mrad]
+  std::size_t nRc() const { return roll.size() > 1 ? roll.size() - 1 : 1; }
+  std::size_t cell_count() const { return nRc() * (tY.size() - 1) * (Q.size() - 1); }
+  /// The roll at the lower and upper side of roll cell m (the one roll twice without a roll axis).
+  double r_lo(std::size_t m) const { return roll[m]; }
+  double r_hi(std::size_t m) const { return roll.size() > 1 ? roll[m + 1] : roll[0]; }
+  /// The nodes in ContactTableData::node order (roll outer, t_Y, Q).
+  std::vector<TablePoint> nodes() const {
+    std::vector<TablePoint> p;
+    for (double r : roll)
+      for (double t : tY)
+        for (double q : Q) p.push_back({t, q, r});
+    return p;
+  }
+  /// The centres of the cells in ContactTableData::cell order.
+  std::vector<TablePoint> centres() const {
+    std::vector<TablePoint> c;
+    for (std::size_t m = 0; m < nRc(); ++m)
+      for (std::size_t i = 0; i + 1 < tY.size(); ++i)
+        for (std::size_t j = 0; j + 1 < Q.size(); ++j)
+          c.push_back({rounded_mm(0.5 * (tY[i] + tY[i + 1])), 0.5 * (Q[j] + Q[j + 1]),
+                       roll.size() > 1 ? rounded_mm(0.5 * (r_lo(m) + r_hi(m))) : roll[0]});
+    return c;
+  }
+};
+
+}  // namespace
+
+std::vector<TablePoint> table_first_points(const CaseFile& cf, const TableMakeOptions& opt) {
+  TableGrid g;
+  table_initial_nodes(cf, g.tY, g.Q, g.roll);
+  std::vector<TablePoint> pts = g.nodes();
+  if (opt.check) {
+    const auto c = g.centres();
+    pts.insert(pts.end(), c.begin(), c.end());
+  }
   return pts;
 }
 
 TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const TableMakeOptions& opt, std::ostream& err,
                              const TableSolves* presolved, bool defer) {
-  std::vector<double> tY_mm, Q_kN;
-  table_initial_nodes(cf, tY_mm, Q_kN);
+  TableGrid g;
+  table_initial_nodes(cf, g.tY, g.Q, g.roll);
+  const bool roll_axis = g.roll.size() > 1;
 
   const unsigned nt = std::max(1u, opt.threads ? opt.threads : std::thread::hardware_concurrency());
   Pool pool(nt);
   TableMade made;
-  TableSolves solved;  // (tY mm, Q kN) → solve
+  TableSolves solved;
   if (presolved) solved = *presolved;
   // Solve the points not solved yet; false when deferred (they are then made.pending).
-  auto solve_missing = [&](const std::vector<std::pair<double, double>>& pts_mm) {
-    std::vector<std::pair<double, double>> todo, si;
-    for (const auto& p : pts_mm)
+  auto solve_missing = [&](const std::vector<TablePoint>& pts) {
+    std::vector<TablePoint> todo;
+    for (const auto& p : pts)
       if (!solved.count(p)) todo.push_back(p);
     std::sort(todo.begin(), todo.end());
     todo.erase(std::unique(todo.begin(), todo.end()), todo.end());
@@ -308,56 +343,50 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
       made.pending = std::move(todo);
       return false;
     }
-    for (const auto& p : todo) si.emplace_back(p.first * units::mm, p.second * 1e3);
-    const auto res = solve_points(cf, pg, si, pool);
+    const auto res = solve_points(cf, pg, todo, pool);
     for (std::size_t k = 0; k < todo.size(); ++k) solved[todo[k]] = res[k];
     made.solves += todo.size();
     return true;
+  };
+  auto si = [](const std::vector<double>& x, double f) {
+    std::vector<double> y;
+    for (double v : x) y.push_back(v * f);
+    return y;
+  };
+  auto build = [&] {
+    std::vector<const NodeSolve*> nodes;
+    for (const auto& p : g.nodes()) nodes.push_back(&solved.at(p));
+    return build_table(si(g.tY, units::mm), si(g.Q, 1e3), si(g.roll, 1e-3), nodes);
   };
 
   ContactTableData data;
   std::vector<TableCheckError> checks;
   std::vector<std::uint8_t> cell_fail;
-  // The centres (t_Y [mm], Q [kN]) of the cells of the grid tY_mm × Q_kN, cell by cell (t_Y outer).
-  auto cell_centres = [&] {
-    std::vector<std::pair<double, double>> centres;
-    for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i)
-      for (std::size_t j = 0; j + 1 < Q_kN.size(); ++j)
-        centres.emplace_back(rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])), 0.5 * (Q_kN[j] + Q_kN[j + 1]));
-    return centres;
-  };
   // The table `data` against the direct solves at its cells' centres (solved already): `checks`,
   // and the cells beyond a tolerance marked in `cell_fail`.
-  auto check_cells = [&](const std::vector<std::pair<double, double>>& centres) {
+  auto check_cells = [&](const std::vector<TablePoint>& centres) {
     const ContactTableLookup look(data);
     TableAnswer ans;
     checks.clear();
     for (std::size_t c = 0; c < centres.size(); ++c) {
-      const double ty = centres[c].first * units::mm, q = centres[c].second * 1e3;
-      look.lookup(ty, q, ans);
-      checks.push_back(compare(ans, solved.at(centres[c]), ty, q));
+      const TablePoint& p = centres[c];
+      look.lookup(p.tY_mm * units::mm, p.Q_kN * 1e3, p.roll_mrad * 1e-3, ans);
+      checks.push_back(compare(ans, solved.at(p), p));
       const TableCheckError& e = checks.back();
       cell_fail[c] |= e.compared && (e.e_N > opt.tol_N || e.e_pmax > opt.tol_pmax || e.e_area > opt.tol_area);
     }
   };
   for (int round = 0;; ++round) {
-    std::vector<std::pair<double, double>> pts;
-    for (double t : tY_mm)
-      for (double q : Q_kN) pts.emplace_back(t, q);
-    std::vector<std::pair<double, double>> centres;
-    if (opt.check) centres = cell_centres();
+    const std::vector<TablePoint> pts = g.nodes();
+    std::vector<TablePoint> centres;
+    if (opt.check) centres = g.centres();
     // The nodes and the centres of their cells in one batch (one pass of shards).
-    std::vector<std::pair<double, double>> batch = pts;
+    std::vector<TablePoint> batch = pts;
     batch.insert(batch.end(), centres.begin(), centres.end());
     if (!solve_missing(batch)) return made;
-    std::vector<const NodeSolve*> nodes;
-    for (const auto& p : pts) nodes.push_back(&solved.at(p));
-    std::vector<double> tY, Q;
-    for (double t : tY_mm) tY.push_back(t * units::mm);
-    for (double q : Q_kN) Q.push_back(q * 1e3);
-    data = build_table(tY, Q, nodes);
+    data = build();
     checks.clear();
-    cell_fail.assign((tY_mm.size() - 1) * (Q_kN.size() - 1), 0);
+    cell_fail.assign(g.cell_count(), 0);
     if (!opt.check) break;
     check_cells(centres);
     if (round >= opt.refine) break;
@@ -365,99 +394,116 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
     TableAnswer ans;
     // Which way to halve a failing cell (docs/tables.md "Check and refinement"): its edges'
     // midpoints measure the interpolation along one axis alone, (t_Y midpoint, Q node) along t_Y
-    // and (t_Y node, Q midpoint) along Q. Q is halved when the edges along t_Y hold their
-    // tolerances and those along Q come nearer to missing theirs; else t_Y. Where both miss
-    // (flange onset, a contact appearing) t_Y, along which contacts jump: a halved Q interval
-    // adds a row of nodes across the whole t_Y range.
-    const std::size_t nQc = Q_kN.size() - 1;
-    std::vector<std::pair<double, double>> edges;
+    // and (t_Y node, Q midpoint) along Q (and with a roll axis (t_Y node, Q node, roll midpoint)
+    // along the roll), two edges per axis at opposite corners. The roll is halved when its edges
+    // miss their tolerances most; else Q when the edges along t_Y hold their tolerances and those
+    // along Q come nearer to missing theirs; else t_Y. Where both miss (flange onset, a contact
+    // appearing) t_Y, along which contacts jump: a halved Q interval adds a row of nodes across
+    // the whole t_Y range.
+    const std::size_t nTc = g.tY.size() - 1, nQc = g.Q.size() - 1;
+    const std::size_t per_cell = roll_axis ? 6 : 4;
+    std::vector<TablePoint> edges;
     for (std::size_t c = 0; c < cell_fail.size(); ++c)
       if (cell_fail[c]) {
-        const std::size_t i = c / nQc, j = c % nQc;
-        const double tm = rounded_mm(0.5 * (tY_mm[i] + tY_mm[i + 1])), qm = 0.5 * (Q_kN[j] + Q_kN[j + 1]);
-        edges.insert(edges.end(), {{tm, Q_kN[j]}, {tm, Q_kN[j + 1]}, {tY_mm[i], qm}, {tY_mm[i + 1], qm}});
+        const std::size_t m = c / (nTc * nQc), i = (c / nQc) % nTc, j = c % nQc;
+        const double tm = rounded_mm(0.5 * (g.tY[i] + g.tY[i + 1])), qm = 0.5 * (g.Q[j] + g.Q[j + 1]);
+        const double r0 = g.r_lo(m), r1 = g.r_hi(m);
+        edges.insert(edges.end(), {{tm, g.Q[j], r0}, {tm, g.Q[j + 1], r1}, {g.tY[i], qm, r0}, {g.tY[i + 1], qm, r1}});
+        if (roll_axis) {
+          const double rm = rounded_mm(0.5 * (r0 + r1));
+          edges.insert(edges.end(), {{g.tY[i], g.Q[j], rm}, {g.tY[i + 1], g.Q[j + 1], rm}});
+        }
       }
     if (!solve_missing(edges)) return made;
     // An edge midpoint's error in units of its tolerances (> 1: missed; 0 where not compared).
-    auto score = [&](const std::pair<double, double>& p) {
-      look.lookup(p.first * units::mm, p.second * 1e3, ans);
-      const TableCheckError e = compare(ans, solved.at(p), p.first * units::mm, p.second * 1e3);
+    auto score = [&](const TablePoint& p) {
+      look.lookup(p.tY_mm * units::mm, p.Q_kN * 1e3, p.roll_mrad * 1e-3, ans);
+      const TableCheckError e = compare(ans, solved.at(p), p);
       if (!e.compared) return 0.0;
       return std::max({e.e_N / opt.tol_N, e.e_pmax / opt.tol_pmax, e.e_area / opt.tol_area});
     };
-    std::vector<std::uint8_t> split_t(tY_mm.size() - 1, 0), split_q(nQc, 0);
+    std::vector<std::uint8_t> split_t(nTc, 0), split_q(nQc, 0), split_r(g.roll.size() - 1, 0);
     for (std::size_t c = 0, k = 0; c < cell_fail.size(); ++c)
       if (cell_fail[c]) {
         const double sT = std::max(score(edges[k]), score(edges[k + 1]));
         const double sQ = std::max(score(edges[k + 2]), score(edges[k + 3]));
-        k += 4;
-        const std::size_t j = c % nQc;
-        const bool q_can = Q_kN[j + 1] - Q_kN[j] >= 2 * opt.min_Q_step_kN - 1e-12;  // else t_Y is all that is left
+        const double sR = roll_axis ? std::max(score(edges[k + 4]), score(edges[k + 5])) : 0.0;
+        k += per_cell;
+        const std::size_t m = c / (nTc * nQc), j = c % nQc;
+        const bool r_can = roll_axis && g.roll[m + 1] - g.roll[m] >= 2 * opt.min_roll_step_mrad - 1e-12;
+        if (r_can && sR > 1 && sR >= std::max(sT, sQ)) {
+          split_r[m] = 1;
+          continue;
+        }
+        const bool q_can = g.Q[j + 1] - g.Q[j] >= 2 * opt.min_Q_step_kN - 1e-12;  // else t_Y is all that is left
         const bool q = q_can && sT <= 1 && sQ > sT;
         split_q[j] |= q;
-        split_t[c / nQc] |= !q;
+        split_t[(c / nQc) % nTc] |= !q;
       }
     // A node without an answer leaves its cells without one: halving its t_Y intervals narrows
     // that band.
-    for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i)
-      for (std::size_t j = 0; j < Q_kN.size(); ++j)
-        split_t[i] |= is_failure(nodes[i * Q_kN.size() + j]->status) || is_failure(nodes[(i + 1) * Q_kN.size() + j]->status);
-    // Halve the marked intervals (not below min_step_mm, min_Q_step_kN).
+    const std::vector<TablePoint> nodes = g.nodes();
+    const std::size_t nT = g.tY.size(), nQ = g.Q.size();
+    for (std::size_t m = 0; m < g.roll.size(); ++m)
+      for (std::size_t i = 0; i + 1 < nT; ++i)
+        for (std::size_t j = 0; j < nQ; ++j)
+          split_t[i] |= is_failure(solved.at(nodes[(m * nT + i) * nQ + j]).status) ||
+                        is_failure(solved.at(nodes[(m * nT + i + 1) * nQ + j]).status);
+    // Halve the marked intervals (not below min_step_mm, min_Q_step_kN, min_roll_step_mrad).
     auto halve = [](const std::vector<double>& x, const std::vector<std::uint8_t>& mark, double min_step, bool round_mm) {
       std::vector<double> next;
       for (std::size_t i = 0; i + 1 < x.size(); ++i) {
         next.push_back(x[i]);
         if (mark[i] && x[i + 1] - x[i] >= 2 * min_step - 1e-12) {
-          const double m = 0.5 * (x[i] + x[i + 1]);
-          next.push_back(round_mm ? rounded_mm(m) : m);
+          const double mid = 0.5 * (x[i] + x[i + 1]);
+          next.push_back(round_mm ? rounded_mm(mid) : mid);
         }
       }
       next.push_back(x.back());
       return next;
     };
-    std::vector<double> next_t = halve(tY_mm, split_t, opt.min_step_mm, true);
-    std::vector<double> next_q = halve(Q_kN, split_q, opt.min_Q_step_kN, false);
-    if (next_t.size() == tY_mm.size() && next_q.size() == Q_kN.size()) break;
-    tY_mm = next_t;
-    Q_kN = next_q;
-    if (!opt.quiet)
-      err << "mhcontact table: refinement " << round + 1 << ": " << tY_mm.size() << " t_Y nodes, " << Q_kN.size()
-          << " Q nodes\n";
+    std::vector<double> next_t = halve(g.tY, split_t, opt.min_step_mm, true);
+    std::vector<double> next_q = halve(g.Q, split_q, opt.min_Q_step_kN, false);
+    std::vector<double> next_r = roll_axis ? halve(g.roll, split_r, opt.min_roll_step_mrad, true) : g.roll;
+    if (next_t.size() == g.tY.size() && next_q.size() == g.Q.size() && next_r.size() == g.roll.size()) break;
+    g.tY = next_t;
+    g.Q = next_q;
+    g.roll = next_r;
+    if (!opt.quiet) {
+      err << "mhcontact table: refinement " << round + 1 << ": " << g.tY.size() << " t_Y nodes, " << g.Q.size() << " Q nodes";
+      if (roll_axis) err << ", " << g.roll.size() << " roll nodes";
+      err << "\n";
+    }
   }
   data.cell_coarse = cell_fail;
 
-  // A t_Y node where some load has no answer (the method's equilibrium not found: at flange onset
-  // the answer jumps there) is dropped from the grid, so that the interpolant runs through with
-  // continuous forces instead of answering nothing around it; the cells that span a dropped node
-  // are coarse (docs/tables.md "Nodes without an answer").
+  // A t_Y node where some load (at some roll) has no answer (the method's equilibrium not found:
+  // at flange onset the answer jumps there) is dropped from the grid, so that the interpolant
+  // runs through with continuous forces instead of answering nothing around it; the cells that
+  // span a dropped node are coarse (docs/tables.md "Nodes without an answer").
   std::vector<double> dropped;
   {
-    const std::size_t nQ = Q_kN.size();
     std::vector<double> keep;
-    for (std::size_t i = 0; i < tY_mm.size(); ++i) {
+    for (double t : g.tY) {
       bool bad = false;
-      for (std::size_t j = 0; j < nQ; ++j) bad = bad || is_failure(solved.at({tY_mm[i], Q_kN[j]}).status);
-      (bad ? dropped : keep).push_back(tY_mm[i]);
+      for (double r : g.roll)
+        for (double q : g.Q) bad = bad || is_failure(solved.at({t, q, r}).status);
+      (bad ? dropped : keep).push_back(t);
     }
     if (!dropped.empty() && keep.size() >= 2) {
-      std::vector<const NodeSolve*> nodes;
-      std::vector<double> tY, Q;
-      for (double t : keep) {
-        tY.push_back(t * units::mm);
-        for (double q : Q_kN) nodes.push_back(&solved.at({t, q}));
+      const std::size_t nQc = g.Q.size() - 1, nTc_old = g.tY.size() - 1, nTc = keep.size() - 1;
+      std::vector<std::uint8_t> fail(g.nRc() * nTc * nQc, 0);
+      for (std::size_t i = 0; i < nTc; ++i) {
+        const auto at = static_cast<std::size_t>(std::find(g.tY.begin(), g.tY.end(), keep[i]) - g.tY.begin());
+        const bool same = at + 1 < g.tY.size() && g.tY[at + 1] == keep[i + 1];
+        for (std::size_t m = 0; m < g.nRc(); ++m)
+          for (std::size_t j = 0; j < nQc; ++j)
+            fail[(m * nTc + i) * nQc + j] = same ? cell_fail[(m * nTc_old + at) * nQc + j] : 1;
       }
-      for (double q : Q_kN) Q.push_back(q * 1e3);
-      data = build_table(tY, Q, nodes);
-      std::vector<std::uint8_t> fail((keep.size() - 1) * (nQ - 1), 0);
-      for (std::size_t i = 0; i + 1 < keep.size(); ++i) {
-        const auto at = std::find(tY_mm.begin(), tY_mm.end(), keep[i]) - tY_mm.begin();
-        const bool same = static_cast<std::size_t>(at) + 1 < tY_mm.size() && tY_mm[static_cast<std::size_t>(at) + 1] == keep[i + 1];
-        for (std::size_t j = 0; j + 1 < nQ; ++j)
-          fail[i * (nQ - 1) + j] = same ? cell_fail[static_cast<std::size_t>(at) * (nQ - 1) + j] : 1;
-      }
+      g.tY = keep;
+      data = build();
       cell_fail = fail;
       data.cell_coarse = fail;
-      tY_mm = keep;
     } else {
       dropped.clear();
     }
@@ -466,7 +512,7 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   // PCHIP slopes of their neighbours change): its error is checked again at the centres of its
   // own cells, so that the header's error and `checks` are those of the table written.
   if (opt.check && !dropped.empty()) {
-    const std::vector<std::pair<double, double>> centres = cell_centres();
+    const std::vector<TablePoint> centres = g.centres();
     if (!solve_missing(centres)) return made;
     check_cells(centres);
     data.cell_coarse = cell_fail;
@@ -476,25 +522,29 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   nlohmann::json h;
   h["schema"] = kContactTableSchema;
   h["program"] = program_json();
-  h["what"] = "contact table: per node (t_Y, Q) and contact track, the grid method's answer; "
-              "interpolate with bicubic Hermite, PCHIP node slopes, zero cross slope (docs/tables.md)";
+  h["what"] = "contact table: per node (t_Y, Q, roll) and contact track, the grid method's answer; "
+              "interpolate with bicubic Hermite (tricubic with more than one roll node), PCHIP node slopes, "
+              "zero cross slopes (docs/tables.md)";
   h["method"] = to_string(cf.method);
   h["model"] = to_string(cf.model);
   h["inputs"] = inputs_json(cf);
   h["profiles"] = profiles_json(pg);
-  h["tY_mm_nodes"] = tY_mm;
-  h["Q_kN_nodes"] = Q_kN;
-  h["tY_mm_range"] = {tY_mm.front(), tY_mm.back()};
-  h["Q_kN_range"] = {Q_kN.front(), Q_kN.back()};
+  h["tY_mm_nodes"] = g.tY;
+  h["Q_kN_nodes"] = g.Q;
+  h["roll_mrad_nodes"] = g.roll;
+  h["tY_mm_range"] = {g.tY.front(), g.tY.back()};
+  h["Q_kN_range"] = {g.Q.front(), g.Q.back()};
+  h["roll_mrad_range"] = {g.roll.front(), g.roll.back()};
   h["tracks"] = data.n_tracks;
   h["refine"] = opt.refine;
   h["dropped_tY_mm"] = dropped;
   nlohmann::json coarse = nlohmann::json::array();
-  for (std::size_t i = 0; i + 1 < tY_mm.size(); ++i)
-    for (std::size_t j = 0; j + 1 < Q_kN.size(); ++j)
-      if (cell_fail[i * (Q_kN.size() - 1) + j]) coarse.push_back({i, j});
+  for (std::size_t m = 0; m < g.nRc(); ++m)
+    for (std::size_t i = 0; i + 1 < g.tY.size(); ++i)
+      for (std::size_t j = 0; j + 1 < g.Q.size(); ++j)
+        if (cell_fail[data.cell(m, i, j)]) coarse.push_back({i, j, m});
   h["coarse_cells"] = coarse;
-  nlohmann::json units_j = {{"tY_mm", "mm"}, {"Q_kN", "kN"}};
+  nlohmann::json units_j = {{"tY_mm", "mm"}, {"Q_kN", "kN"}, {"roll_mrad", "mrad"}};
   for (const TableColumn& c : kTableColumns) {
     const std::string n = c.name;
     const auto u = n.rfind('_');
@@ -510,26 +560,29 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
 
 void write_contact_table(const ContactTableData& t, std::ostream& out) {
   out << "# " << t.header.dump() << "\n";
-  out << "tY_mm,Q_kN,status,contact,present";
+  out << "tY_mm,Q_kN,roll_mrad,status,contact,present";
   for (const TableColumn& c : kTableColumns) out << ',' << c.name;
   out << '\n';
   const std::size_t nk = static_cast<std::size_t>(t.n_tracks);
   const auto tYn = t.header.at("tY_mm_nodes").get<std::vector<double>>();
   const auto Qn = t.header.at("Q_kN_nodes").get<std::vector<double>>();
+  const auto Rn = t.header.at("roll_mrad_nodes").get<std::vector<double>>();
   std::string line;
-  for (std::size_t i = 0; i < t.nT(); ++i)
-    for (std::size_t j = 0; j < t.nQ(); ++j)
-      for (std::size_t k = 0; k < nk; ++k) {
-        line = format_number(tYn[i]) + ',' + format_number(Qn[j]) + ',' + to_string(t.node_status[i * t.nQ() + j]) +
-               ',' + std::to_string(k + 1) + ',' + (t.present[(i * t.nQ() + j) * nk + k] ? '1' : '0');
-        const double* v = &t.v[t.at(i, j, static_cast<int>(k))];
-        for (int q = 0; q < kTableQuantities; ++q) {
-          const double x = v[q] / kTableColumns[q].to_si;
-          line += ',';
-          line += format_number(std::isfinite(x) ? x : 0.0);
+  for (std::size_t m = 0; m < t.nR(); ++m)
+    for (std::size_t i = 0; i < t.nT(); ++i)
+      for (std::size_t j = 0; j < t.nQ(); ++j)
+        for (std::size_t k = 0; k < nk; ++k) {
+          const std::size_t n = t.node(m, i, j);
+          line = format_number(tYn[i]) + ',' + format_number(Qn[j]) + ',' + format_number(Rn[m]) + ',' +
+                 to_string(t.node_status[n]) + ',' + std::to_string(k + 1) + ',' + (t.present[n * nk + k] ? '1' : '0');
+          const double* v = &t.v[t.at(m, i, j, static_cast<int>(k))];
+          for (int q = 0; q < kTableQuantities; ++q) {
+            const double x = v[q] / kTableColumns[q].to_si;
+            line += ',';
+            line += format_number(std::isfinite(x) ? x : 0.0);
+          }
+          out << line << '\n';
         }
-        out << line << '\n';
-      }
 }
 
 int table_job(const CaseFile& cf, const TableMakeOptions& opt, const std::string& out_path, std::ostream& out,
@@ -561,7 +614,9 @@ int table_job(const CaseFile& cf, const TableMakeOptions& opt, const std::string
   for (CaseStatus s : m.data.node_status) failed += is_failure(s);
   const std::size_t coarse = m.data.header["coarse_cells"].size();
   if (!opt.quiet) {
-    err << "mhcontact table: " << m.data.nT() << " x " << m.data.nQ() << " nodes, " << m.data.n_tracks
+    err << "mhcontact table: " << m.data.nT() << " x " << m.data.nQ();
+    if (m.data.nR() > 1) err << " x " << m.data.nR();
+    err << " nodes, " << m.data.n_tracks
         << " contact tracks, " << m.solves << " solves";
     if (m.data.header.contains("error")) {
       const auto& e = m.data.header["error"];

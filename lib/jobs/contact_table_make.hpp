@@ -1,9 +1,9 @@
 #pragma once
 // Making a contact table (docs/tables.md): the case file's method (strips, half-space or auto)
-// solved at every node of its t_Y × Q sweep on the jobs' thread pool, each node's contacts
-// matched to those of its neighbours by position into tracks, the interpolant checked against
-// direct solves at every cell's centre, t_Y intervals halved where a cell misses its tolerance,
-// and the table written as CSV with a JSON header (input/contact_table.hpp reads it).
+// solved at every node of its t_Y × Q (× roll) sweep on the jobs' thread pool, each node's
+// contacts matched to those of its neighbours by position into tracks, the interpolant checked
+// against direct solves at every cell's centre, intervals halved where a cell misses its
+// tolerance, and the table written as CSV with a JSON header (input/contact_table.hpp reads it).
 #include <iosfwd>
 #include <map>
 #include <string>
@@ -13,6 +13,7 @@
 #include "geometry/contact_geometry.hpp"
 #include "input/case_file.hpp"
 #include "input/contact_table.hpp"
+#include "jobs/contact_table_solves.hpp"
 
 namespace mh {
 
@@ -23,6 +24,7 @@ struct TableMakeOptions {
   int refine = 3;             ///< rounds of halving the t_Y and Q intervals whose cells miss a tolerance (default 3; 0: none)
   double min_step_mm = 0.05;  ///< no t_Y interval is halved below this (default 0.05 mm)
   double min_Q_step_kN = 5;   ///< no Q interval is halved below this (default 5 kN)
+  double min_roll_step_mrad = 0.125;  ///< no roll interval is halved below this (default 0.125 mrad)
   double tol_N = 0.01;        ///< contact normal force: |ΔN| / Q (default 1 %)
   double tol_pmax = 0.03;     ///< peak pressure, relative (default 3 %)
   double tol_area = 0.05;     ///< total area, relative (default 5 %)
@@ -32,7 +34,7 @@ struct TableMakeOptions {
 
 /// The error of the interpolant at one check point against the direct solve there.
 struct TableCheckError {
-  double tY = 0, Q = 0;   ///< [m], [N]
+  double tY = 0, Q = 0, roll = 0;   ///< [m], [N], [rad]
   bool compared = false;  ///< both answered (else the statuses say why)
   double e_N = 0;         ///< max |ΔN| over the contacts, / Q
   double e_pmax = 0;      ///< |Δ pmax| / pmax
@@ -47,23 +49,22 @@ struct TableMade {
   ContactTableData data;                 ///< with its header (the error summary included)
   std::vector<TableCheckError> checks;   ///< one per cell of the final grid (check on)
   std::size_t solves = 0;                ///< direct solves made (nodes and check points)
-  /// With `defer`: the points (t_Y [mm], Q [kN]) the making needs next that the presolved solves
-  /// do not hold, sorted. While it is not empty the table is not made (`data` is empty): solve
-  /// them (the shards of `mhcontact table --shard K/N --points FILE`) and make again with them.
-  std::vector<std::pair<double, double>> pending;
+  /// With `defer`: the points the making needs next that the presolved solves do not hold,
+  /// sorted. While it is not empty the table is not made (`data` is empty): solve them (the
+  /// shards of `mhcontact table --shard K/N --points FILE`) and make again with them.
+  std::vector<TablePoint> pending;
 };
 
-struct NodeSolve;
-using TableSolves = std::map<std::pair<double, double>, NodeSolve>;
-
 /// The initial nodes of `cf`'s table (its sweep: t_Y from/to/step or a list, Q a list of at
-/// least two values), sorted, in mm and kN. Throws InputError for a case file that cannot make a
-/// table (a case list, one Q, the multi-Hertzian method).
-void table_initial_nodes(const CaseFile& cf, std::vector<double>& tY_mm, std::vector<double>& Q_kN);
+/// least two values, the roll a list or range, {0} when not given), sorted, in mm, kN and mrad.
+/// Throws InputError for a case file that cannot make a table (a case list, one Q, the
+/// multi-Hertzian method).
+void table_initial_nodes(const CaseFile& cf, std::vector<double>& tY_mm, std::vector<double>& Q_kN,
+                         std::vector<double>& roll_mrad);
 
-/// The points the first round of making solves (t_Y [mm], Q [kN]): the initial nodes, then with
-/// `opt.check` the centres of their cells. The shards of `mhcontact table --shard K/N` split them.
-std::vector<std::pair<double, double>> table_first_points(const CaseFile& cf, const TableMakeOptions& opt);
+/// The points the first round of making solves: the initial nodes, then with `opt.check` the
+/// centres of their cells. The shards of `mhcontact table --shard K/N` split them.
+std::vector<TablePoint> table_first_points(const CaseFile& cf, const TableMakeOptions& opt);
 
 /// Make the table of `cf` (its pair `pg`, method, material; its sweep gives the initial nodes).
 /// `presolved` (the shards' solves, contact_table_shards.hpp) are taken instead of solving those

@@ -48,17 +48,23 @@ nlohmann::json read_json_file(const std::string& path, const char* what, const c
   }
 }
 
-/// A pass's points, [[t_Y mm, Q kN], ...], from `j` (a points or shard file), checked.
-std::vector<std::pair<double, double>> points_from(const nlohmann::json& j, const std::string& where) {
-  std::vector<std::pair<double, double>> pts;
-  if (!j.is_array() || j.empty()) throw InputError(where, "", "must be a non-empty array of [tY_mm, Q_kN]");
+/// A pass's points, [[t_Y mm, Q kN, roll mrad], ...], from `j` (a points or shard file), checked.
+std::vector<TablePoint> points_from(const nlohmann::json& j, const std::string& where) {
+  std::vector<TablePoint> pts;
+  if (!j.is_array() || j.empty()) throw InputError(where, "", "must be a non-empty array of [tY_mm, Q_kN, roll_mrad]");
   for (std::size_t p = 0; p < j.size(); ++p) {
     const nlohmann::json& e = j[p];
-    if (!e.is_array() || e.size() != 2 || !e[0].is_number() || !e[1].is_number())
-      throw InputError(where + "/" + std::to_string(p), e.dump(), "a point is [tY_mm, Q_kN]");
-    pts.emplace_back(e[0].get<double>(), e[1].get<double>());
+    if (!e.is_array() || e.size() != 3 || !e[0].is_number() || !e[1].is_number() || !e[2].is_number())
+      throw InputError(where + "/" + std::to_string(p), e.dump(), "a point is [tY_mm, Q_kN, roll_mrad]");
+    pts.push_back({e[0].get<double>(), e[1].get<double>(), e[2].get<double>()});
   }
   return pts;
+}
+
+nlohmann::json points_json(const std::vector<TablePoint>& points) {
+  nlohmann::json pp = nlohmann::json::array();
+  for (const auto& p : points) pp.push_back({p.tY_mm, p.Q_kN, p.roll_mrad});
+  return pp;
 }
 
 }  // namespace
@@ -70,7 +76,7 @@ int table_shard_job(const CaseFile& cf, const TableMakeOptions& opt, const std::
   const PairGeometry pg = build_pair_geometry(cf);
   if (!opt.quiet) warn_profiles(pg, err);
   unsigned pass = 0;
-  std::vector<std::pair<double, double>> all;
+  std::vector<TablePoint> all;
   if (points_path.empty()) {
     all = table_first_points(cf, opt);
   } else {
@@ -83,13 +89,10 @@ int table_shard_job(const CaseFile& cf, const TableMakeOptions& opt, const std::
     pass = pj["pass"].get<unsigned>();
     all = points_from(pj.value("points", nlohmann::json()), points_path + ": /points");
   }
-  std::vector<std::pair<double, double>> mine_mm, mine_si;
-  for (std::size_t p = k - 1; p < all.size(); p += n) {
-    mine_mm.push_back(all[p]);
-    mine_si.emplace_back(all[p].first * units::mm, all[p].second * 1e3);
-  }
+  std::vector<TablePoint> mine;
+  for (std::size_t p = k - 1; p < all.size(); p += n) mine.push_back(all[p]);
   Pool pool(std::max(1u, opt.threads ? opt.threads : std::thread::hardware_concurrency()));
-  const std::vector<NodeSolve> solves = solve_points(cf, pg, mine_si, pool);
+  const std::vector<NodeSolve> solves = solve_points(cf, pg, mine, pool);
   nlohmann::json j;
   j["schema"] = kContactTableShardSchema;
   j["program"] = program_json();
@@ -99,14 +102,11 @@ int table_shard_job(const CaseFile& cf, const TableMakeOptions& opt, const std::
   j["inputs"] = inputs_json(cf);
   j["profiles"] = profiles_json(pg);
   j["points"] = all.size();
-  if (pass > 0) {
-    nlohmann::json pp = nlohmann::json::array();
-    for (const auto& p : all) pp.push_back({p.first, p.second});
-    j["pass_points"] = pp;
-  }
+  if (pass > 0) j["pass_points"] = points_json(all);
   nlohmann::json pts = nlohmann::json::array();
   for (std::size_t s = 0; s < solves.size(); ++s)
-    pts.push_back({{"tY_mm", mine_mm[s].first}, {"Q_kN", mine_mm[s].second}, {"solve", solve_to_json(solves[s])}});
+    pts.push_back({{"tY_mm", mine[s].tY_mm}, {"Q_kN", mine[s].Q_kN}, {"roll_mrad", mine[s].roll_mrad},
+                   {"solve", solve_to_json(solves[s])}});
   j["solves"] = pts;
   if (out_path == "-") {
     out << j.dump() << '\n';
@@ -128,7 +128,7 @@ TableSolves read_table_shards(const CaseFile& cf, const PairGeometry& pg, const 
                               const std::vector<std::string>& files, unsigned* passes) {
   const nlohmann::json inputs = inputs_json(cf), profiles = profiles_json(pg), program = program_json();
   struct Pass {
-    std::vector<std::pair<double, double>> all;  // its points
+    std::vector<TablePoint> all;  // its points
     std::string all_from;                         // the file that listed them (a pass > 0)
     std::vector<std::string> seen;                // by shard index - 1: the file that gave it
     unsigned count = 0;
@@ -178,8 +178,11 @@ TableSolves read_table_shards(const CaseFile& cf, const PairGeometry& pg, const 
       if (!pts.is_array() || s >= pts.size())
         throw InputError(path + ": /solves", "", "fewer solves than shard " + std::to_string(k) + "/" + std::to_string(P.count) + "'s points");
       const nlohmann::json& e = pts[s];
-      if (!e.is_object() || e.value("tY_mm", nlohmann::json()) != P.all[p].first || e.value("Q_kN", nlohmann::json()) != P.all[p].second)
-        throw InputError(at, e.is_object() ? e.value("tY_mm", nlohmann::json()).dump() + ", " + e.value("Q_kN", nlohmann::json()).dump() : "",
+      if (!e.is_object() || e.value("tY_mm", nlohmann::json()) != P.all[p].tY_mm || e.value("Q_kN", nlohmann::json()) != P.all[p].Q_kN ||
+          e.value("roll_mrad", nlohmann::json()) != P.all[p].roll_mrad)
+        throw InputError(at, e.is_object() ? e.value("tY_mm", nlohmann::json()).dump() + ", " + e.value("Q_kN", nlohmann::json()).dump() +
+                                                 ", " + e.value("roll_mrad", nlohmann::json()).dump()
+                                           : "",
                          "the shard's points must be its slice of the pass's points, in order");
       solves[P.all[p]] = solve_from_json(e.contains("solve") ? e["solve"] : nlohmann::json(), at + "/solve");
     }
@@ -201,7 +204,7 @@ TableSolves read_table_shards(const CaseFile& cf, const PairGeometry& pg, const 
 }
 
 void write_table_points(const CaseFile& cf, const PairGeometry& pg, const TableMakeOptions& opt, unsigned pass,
-                        const std::vector<std::pair<double, double>>& points, const std::string& path) {
+                        const std::vector<TablePoint>& points, const std::string& path) {
   nlohmann::json j;
   j["schema"] = kContactTablePointsSchema;
   j["program"] = program_json();
@@ -209,9 +212,7 @@ void write_table_points(const CaseFile& cf, const PairGeometry& pg, const TableM
   j["check"] = opt.check;
   j["inputs"] = inputs_json(cf);
   j["profiles"] = profiles_json(pg);
-  nlohmann::json pp = nlohmann::json::array();
-  for (const auto& p : points) pp.push_back({p.first, p.second});
-  j["points"] = pp;
+  j["points"] = points_json(points);
   OutputFile f(path);
   f.stream() << j.dump() << '\n';
   f.commit();

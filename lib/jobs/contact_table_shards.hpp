@@ -45,10 +45,10 @@ int table_shard_job(const CaseFile& cf, const TableMakeOptions& opt, const std::
 TableSolves read_table_shards(const CaseFile& cf, const PairGeometry& pg, const TableMakeOptions& opt,
                               const std::vector<std::string>& files, unsigned* passes = nullptr);
 
-/// Write the points (t_Y [mm], Q [kN]) of refinement pass `pass` of `cf`'s table atomically to
+/// Write the points of refinement pass `pass` of `cf`'s table atomically to
 /// `path` (kContactTablePointsSchema, with the inputs, profiles, check option and program that
 /// the shards and the merge check).
 void write_table_points(const CaseFile& cf, const PairGeometry& pg, const TableMakeOptions& opt, unsigned pass,
-                        const std::vector<std::pair<double, double>>& points, const std::string& path);
+                        const std::vector<TablePoint>& points, const std::string& path);
 
 }  // namespace mh

@@ -75,23 +75,24 @@ NodeSolve extract(const CaseResult& r, double nu) {
   return n;
 }
 
-/// Solve the points (tY [m], Q [N]) on the pool, one workspace per thread.
-std::vector<NodeSolve> solve_points(const CaseFile& cf, const PairGeometry& pg, const std::vector<std::pair<double, double>>& pts,
+std::vector<NodeSolve> solve_points(const CaseFile& cf, const PairGeometry& pg, const std::vector<TablePoint>& pts,
                                     Pool& pool) {
   std::vector<NodeSolve> out(pts.size());
   double G = 0, nu = 0;
   combined_elastic(cf.material, G, nu);
-  const MethodOptions mo = cf.method_options();
+  const MethodOptions base = cf.method_options();
   std::atomic<std::size_t> next{0};
   std::vector<std::exception_ptr> errors(pool.size());
   pool.run([&](unsigned t) {
     try {
       GridWorkspace ws;
       CaseResult r;
+      MethodOptions mo = base;
       for (;;) {
         const std::size_t k = next.fetch_add(1);
         if (k >= pts.size()) break;
-        solve_contact(pg.geo, cf.material, pts[k].first, pts[k].second, mo, r, &ws);
+        mo.multi_hertzian.roll = pts[k].roll_mrad * 1e-3;
+        solve_contact(pg.geo, cf.material, pts[k].tY_mm * units::mm, pts[k].Q_kN * 1e3, mo, r, &ws);
         out[k] = extract(r, nu);
       }
     } catch (...) {

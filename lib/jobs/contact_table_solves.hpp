@@ -1,11 +1,10 @@
 #pragma once
 // The direct solves a contact table is made of (docs/tables.md "How it is made"): what is kept
-// of one solve at a point (t_Y, Q) in the table's quantities, the solves of many points on the
+// of one solve at a point (t_Y, Q, roll) in the table's quantities, the solves of many points on the
 // jobs' thread pool, and their JSON form for the shards of `mhcontact table --shard K/N`
 // (contact_table_shards.hpp). Internal to the jobs layer.
 #include <array>
 #include <map>
-#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -31,16 +30,27 @@ struct NodeSolve {
   std::vector<NodeContact> contacts;  ///< in increasing rail y
 };
 
-/// The solves of a table by point (t_Y [mm], Q [kN]): the nodes' and the check points'.
-using TableSolves = std::map<std::pair<double, double>, NodeSolve>;
+/// A point of a table's grid, in the units of its file: t_Y [mm], Q [kN], roll δ [mrad].
+struct TablePoint {
+  double tY_mm = 0, Q_kN = 0, roll_mrad = 0;
+  bool operator<(const TablePoint& o) const {
+    if (tY_mm != o.tY_mm) return tY_mm < o.tY_mm;
+    if (Q_kN != o.Q_kN) return Q_kN < o.Q_kN;
+    return roll_mrad < o.roll_mrad;
+  }
+  bool operator==(const TablePoint& o) const { return tY_mm == o.tY_mm && Q_kN == o.Q_kN && roll_mrad == o.roll_mrad; }
+};
+
+/// The solves of a table by point: the nodes' and the check points'.
+using TableSolves = std::map<TablePoint, NodeSolve>;
 
 /// What a table keeps of the case result `r` (nu: the pair's combined Poisson ratio).
 NodeSolve extract(const CaseResult& r, double nu);
 
-/// Solve the points (tY [m], Q [N]) by the case's method on the pool, one workspace per thread.
-/// The answers do not depend on the thread count.
-std::vector<NodeSolve> solve_points(const CaseFile& cf, const PairGeometry& pg,
-                                    const std::vector<std::pair<double, double>>& pts, Pool& pool);
+/// Solve the points by the case's method on the pool (the wheel rolled by each point's δ), one
+/// workspace per thread. The answers do not depend on the thread count.
+std::vector<NodeSolve> solve_points(const CaseFile& cf, const PairGeometry& pg, const std::vector<TablePoint>& pts,
+                                    Pool& pool);
 
 /// A solve as JSON and back, every number exact (non-finite numbers as null and back as NaN).
 /// from_json throws InputError naming `where` for a malformed solve.

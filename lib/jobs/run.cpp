@@ -180,6 +180,7 @@ int geometry_job(const CaseFile& cf, const std::string& out_dir, std::ostream& o
 }
 
 int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::ostream& err) {
+  cf.refuse_table_axes();
   const auto t0 = std::chrono::steady_clock::now();
   const cells::DigitsScope digits_scope(opt.digits);
   const PairGeometry pg = build_pair_geometry(cf);

@@ -88,6 +88,7 @@ nlohmann::json inputs_json(const CaseFile& cf, const std::string& base_dir) {
       j["cases"] = c;
     } else {
       j["sweep"] = {{"tY_mm", axis_json(cf.sweep_tY_mm)}, {"Q_kN", axis_json(cf.sweep_Q_kN)}};
+      if (cf.sweep_roll_mrad.size() > 0) j["sweep"]["roll_mrad"] = axis_json(cf.sweep_roll_mrad);
     }
   }
   return j;

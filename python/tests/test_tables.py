@@ -28,7 +28,7 @@ def table_path():
 def test_table_lookup(table_path):
     t = mhcontact.Table(table_path)
     h = json.loads(t.header)
-    assert h["schema"] == "mhcontact.table/1"
+    assert h["schema"] == "mhcontact.table/2"
     assert t.range == pytest.approx((-4e-3, 10e-3, 20e3, 140e3))
     # At a node the table gives the node's values (the file's rows).
     with open(table_path) as f:
@@ -182,3 +182,50 @@ def test_bench_table_python_runs(table_path):
     rows = {l.split()[0]: l.split()[1:] for l in out.splitlines()[2:]}
     assert list(rows) == ["C", "lookup_into", "lookup", "lookup_many", "many_out", "loop"]
     assert float(rows["C"][2]) == 1.0 and all(float(v[0]) > 0 for v in rows.values())
+
+
+def test_table_roll_axis(tmp_path):
+    """A table with a roll axis (docs/tables.md "Roll"): lookup, lookup_into and lookup_many at a
+    roll agree, d/droll is the interpolant's slope, and the roll-0 table answers at another roll
+    with off_roll and outside_validity."""
+    case = json.load(open(os.path.join(SRC, "tests", "data", "tables", "worn-table-roll.json")))
+    for side in ("wheel", "rail"):
+        case[side]["profile"] = os.path.join(SRC, "tests", "data", "tables", case[side]["profile"])
+    case["sweep"] = {"tY_mm": [-1, 0, 1], "Q_kN": [40, 80], "roll_mrad": [-1, 0, 1, 2]}
+    json.dump(case, open(tmp_path / "roll.json", "w"))
+    path = str(tmp_path / "roll.csv")
+    assert subprocess.run([BINARY, "table", str(tmp_path / "roll.json"), "-o", path, "-q", "--threads", "2",
+                           "--refine", "0"]).returncode == 0
+    t = mhcontact.Table(path)
+    assert t.roll_range == pytest.approx((-1e-3, 2e-3, 4))
+    a = t.lookup(0.4e-3, 60e3, roll_rad=0.7e-3)
+    assert a["status"] == "ok" and not a["off_roll"] and a["n_contacts"] == 1
+    h = 1e-8
+    up, dn = t.lookup(0.4e-3, 60e3, roll_rad=0.7e-3 + h), t.lookup(0.4e-3, 60e3, roll_rad=0.7e-3 - h)
+    slope = (up["contacts"][0]["p_max_Pa"] - dn["contacts"][0]["p_max_Pa"]) / (2 * h)
+    assert a["contacts"][0]["d_droll"]["p_max_Pa"] == pytest.approx(slope, rel=1e-5)
+    assert a["dFy_droll_N_per_rad"] == pytest.approx((up["Fy_N"] - dn["Fy_N"]) / (2 * h), rel=1e-5)
+    r = mhcontact.TableResult()
+    t.lookup_into(0.4e-3, 60e3, r, roll_rad=0.7e-3)
+    assert r.roll_rad == 0.7e-3 and r.values[0, 6] == a["contacts"][0]["p_max_Pa"]
+    assert r.d_droll[0, 0] == a["contacts"][0]["d_droll"]["N_N"]
+    roll = np.linspace(-1e-3, 2e-3, 31)
+    m = t.lookup_many(np.full_like(roll, 0.4e-3), np.full_like(roll, 60e3), roll_rad=roll)
+    for i in range(0, 31, 5):
+        one = t.lookup(0.4e-3, 60e3, roll_rad=roll[i])
+        assert m["p_max_Pa"][i, 0] == one["contacts"][0]["p_max_Pa"]
+        assert m["dN_droll_N_per_rad"][i, 0] == one["contacts"][0]["d_droll"]["N_N"]
+        assert m["dFy_droll_N_per_rad"][i] == one["dFy_droll_N_per_rad"]
+    assert t.lookup(0.4e-3, 60e3, roll_rad=2.1e-3)["status"] == "out_of_range"
+    with pytest.raises(ValueError):
+        t.lookup_many(np.zeros(3), np.full(3, 60e3), roll_rad=np.zeros(2))
+    # The same pair without a roll axis, asked at a roll: its answer, marked.
+    case["sweep"] = {"tY_mm": [-1, 0, 1], "Q_kN": [40, 80]}
+    json.dump(case, open(tmp_path / "flat.json", "w"))
+    flat = str(tmp_path / "flat.csv")
+    assert subprocess.run([BINARY, "table", str(tmp_path / "flat.json"), "-o", flat, "-q", "--refine", "0"]).returncode == 0
+    f = mhcontact.Table(flat)
+    assert f.roll_range == pytest.approx((0.0, 0.0, 1))
+    b = f.lookup(0.4e-3, 60e3, roll_rad=0.7e-3)
+    assert b["off_roll"] and b["status"] == "outside_validity" and b["n_contacts"] == 1
+    assert f.lookup(0.4e-3, 60e3)["status"] == "ok"

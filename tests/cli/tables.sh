@@ -17,8 +17,8 @@ rc=$?
 # Exit 1: coarse cells at flange onset and t_Y nodes without an answer, dropped (docs/tables.md).
 check "example exit 1" test $rc -eq 1
 check "summary line" grep -q '^mhcontact table: 28 x 5 nodes, 11 contact tracks, .* 21 coarse cells, 2 t_Y nodes without an answer (dropped)$' stderr.txt
-check "header schema" grep -q '^# {.*"schema":"mhcontact.table/1"' out/table.csv
-check "column line" test "$(sed -n 2p out/table.csv)" = "tY_mm,Q_kN,status,contact,present,N_kN,y_rail_mm,z_rail_mm,y_wheel_mm,gamma_deg,r_roll_mm,pmax_MPa,area_mm2,a_mm,b_mm,a_el_mm,b_el_mm,C11,C22,C23"
+check "header schema" grep -q '^# {.*"schema":"mhcontact.table/2"' out/table.csv
+check "column line" test "$(sed -n 2p out/table.csv)" = "tY_mm,Q_kN,roll_mrad,status,contact,present,N_kN,y_rail_mm,z_rail_mm,y_wheel_mm,gamma_deg,r_roll_mm,pmax_MPa,area_mm2,a_mm,b_mm,a_el_mm,b_el_mm,C11,C22,C23"
 check "rows: 28 x 5 nodes x 11 tracks" test "$(tail -n +3 out/table.csv | wc -l)" -eq 1540
 check "dropped nodes in the header" grep -q '"dropped_tY_mm":\[6.5,6.625\]' out/table.csv
 check "profiles with checksums" grep -q '"sha256"' out/table.csv
@@ -63,8 +63,8 @@ fi
 # checksum in its header, the measured error; a step that does not divide the range refused.
 "$BIN" table-export out/table.csv -o out/export.csv --tY-step-mm 0.25 --Q-step-kN 10 2>stderr.txt
 check "export exit 0" test $? -eq 0
-check "export summary" grep -q '^mhcontact table-export: 57 x 13 points, 11 contact tracks; bilinear error at the table.s ok nodes, ' stderr.txt
-check "export schema" grep -q '^# {.*"schema":"mhcontact.table-export/1"' out/export.csv
+check "export summary" grep -q '^mhcontact table-export: 57 x 13 points, 11 contact tracks; linear error at the table.s ok nodes, ' stderr.txt
+check "export schema" grep -q '^# {.*"schema":"mhcontact.table-export/2"' out/export.csv
 check "export names the table's checksum" grep -q "\"sha256\":\"$(sha256sum out/table.csv | cut -c1-64)\"" out/export.csv
 check "export columns: the table's" test "$(sed -n 2p out/export.csv)" = "$(sed -n 2p out/table.csv)"
 check "rows: 57 x 13 points x 11 tracks" test "$(tail -n +3 out/export.csv | wc -l)" -eq 8151
@@ -103,6 +103,18 @@ grep -q '"method"' one_q.json || sed -i 's/"model": "elastic",/"model": "elastic
 check "one load refused (exit 2)" test $rc -eq 2
 check "one load message" grep -q 'one_q.json: /sweep: a table needs a sweep with at least two t_Y and two Q values' err.txt
 check "nothing written on bad input" test ! -e out/x.csv
+
+# The roll is an axis of tables only: `run` refuses it, naming the key (exit 2).
+sed 's/"Q_kN": \[[^]]*\]/"Q_kN": [50], "roll_mrad": [0, 1]/' mh.json > roll_run.json
+"$BIN" run roll_run.json -o out/rr 2>err.txt; rc=$?
+check "run with a roll axis refused (exit 2)" test $rc -eq 2
+check "run with a roll axis message" grep -q 'roll_run.json: /sweep/roll_mrad: value 0: the roll is an axis of contact tables' err.txt
+# A roll axis of a table: its nodes in the summary, the column, the header.
+sed 's/"tY_mm": {[^}]*}/"tY_mm": [0, 1]/; s/"Q_kN": \[[^]]*\]/"Q_kN": [40, 80], "roll_mrad": [-1, 0, 1]/' one_q.json > roll.json
+"$BIN" table roll.json -o out/roll.csv --refine 0 2>err.txt
+check "roll table summary" grep -q '^mhcontact table: 2 x 2 x 3 nodes, ' err.txt
+check "roll table nodes in the header" grep -q '"roll_mrad_nodes":\[-1.0,0.0,1.0\]' out/roll.csv
+check "roll table rows: roll outer" test "$(sed -n 3p out/roll.csv | cut -d, -f1-3)" = "0,40,-1"
 
 test $fail -eq 0 && echo "tables: OK"
 exit $fail

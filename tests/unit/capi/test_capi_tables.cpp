@@ -6,10 +6,12 @@
 #include <mhcontact.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 #include <unistd.h>
 
 #include "cli.hpp"
@@ -34,7 +36,7 @@ TEST_CASE("C interface: a contact table read and looked up as the C++ lookup", "
   CHECK(t1 == Approx(10e-3));
   CHECK(q0 == Approx(20e3));
   CHECK(q1 == Approx(140e3));
-  CHECK(std::string(mhc_table_header(t)).find("\"schema\":\"mhcontact.table/1\"") != std::string::npos);
+  CHECK(std::string(mhc_table_header(t)).find("\"schema\":\"mhcontact.table/2\"") != std::string::npos);
   mhc_table_result r;
   r.struct_size = sizeof r;
   mh::TableAnswer a;
@@ -42,7 +44,7 @@ TEST_CASE("C interface: a contact table read and looked up as the C++ lookup", "
   for (double ty = -4e-3; ty <= 10e-3; ty += 0.137e-3)
     for (double Q : {20e3, 47e3, 99e3, 140e3}) {
       REQUIRE(mhc_table_lookup(t, ty, Q, &r) == MHC_OK);
-      look.lookup(ty, Q, a);
+      look.lookup(ty, Q, 0.0, a);
       REQUIRE(r.n_contacts == a.n_contacts);
       CHECK(r.coarse == (a.coarse ? 1 : 0));
       CHECK(std::string(mhc_status_name(r.status)) == mh::to_string(a.status));
@@ -75,5 +77,81 @@ TEST_CASE("C interface: a contact table read and looked up as the C++ lookup", "
   CHECK(bad == nullptr);
   CHECK(std::string(mhc_last_message()).find(path + ":1") != std::string::npos);
   CHECK(mhc_table_read("/nonexistent/table.csv", &bad) == MHC_ERR_INPUT);
+  std::remove(path.c_str());
+}
+
+TEST_CASE("C interface: a table with a roll axis, looked up at a roll as the C++ lookup", "[tables][capi]") {
+  // A small three-axis table of the worn measured pair (tests/data/tables/worn-table-roll.json's
+  // pair, fewer nodes): mhc_table_lookup_rolled equals the C++ lookup with its d/droll; the
+  // upright mhc_table_lookup is the lookup at roll 0; a caller with the layout before the roll
+  // fields is served those.
+  const std::string dir = std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/";
+  std::ifstream in(dir + "worn-table-roll.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string c = text.str();
+  const std::string from = "\"roll_mrad\": {";
+  REQUIRE(c.find(from) != std::string::npos);
+  const std::string case_path = "/tmp/mhcontact_capi_roll_case_" + std::to_string(::getpid()) + ".json";
+  const std::string path = "/tmp/mhcontact_capi_table_roll_" + std::to_string(::getpid()) + ".csv";
+  {
+    // t_Y −2 ... 2 mm, the roll −2 ... 2 mrad.
+    std::string s = c;
+    s.replace(s.find("\"from\": -4"), 10, "\"from\": -2");
+    s.replace(s.find("\"to\": 4"), 7, "\"to\": 2");
+    s.replace(s.find("\"from\": -3"), 10, "\"from\": -2");
+    s.replace(s.find("\"to\": 3"), 7, "\"to\": 2");
+    for (std::size_t at; (at = s.find("\"../profiles/")) != std::string::npos;) s.replace(at + 1, 3, dir + "../");
+    std::ofstream(case_path) << s;
+  }
+  std::ostringstream out, err;
+  const int rc = mh::run_cli({"table", case_path, "-o", path, "--threads", "2", "-q", "--refine", "0"}, out, err);
+  std::remove(case_path.c_str());
+  INFO(err.str());
+  REQUIRE(rc == 0);
+  mhc_table* t = nullptr;
+  REQUIRE(mhc_table_read(path.c_str(), &t) == MHC_OK);
+  const mh::ContactTableLookup look(mh::read_contact_table(path));
+  double r0, r1;
+  int32_t nr = 0;
+  REQUIRE(mhc_table_roll_range(t, &r0, &r1, &nr) == MHC_OK);
+  CHECK(r0 == Approx(-2e-3));
+  CHECK(r1 == Approx(2e-3));
+  CHECK(nr == 5);
+  mhc_table_result r;
+  r.struct_size = sizeof r;
+  mh::TableAnswer a;
+  for (double ty : {-1.7e-3, 0.3e-3, 1.9e-3})
+    for (double roll : {-1.9e-3, -0.2e-3, 0.0, 1.3e-3}) {
+      REQUIRE(mhc_table_lookup_rolled(t, ty, 70e3, roll, &r) == MHC_OK);
+      look.lookup(ty, 70e3, roll, a);
+      REQUIRE(r.n_contacts == 1);
+      REQUIRE(a.n_contacts == 1);
+      CHECK(r.status == MHC_STATUS_OK);
+      CHECK(r.off_roll == 0);
+      CHECK(r.roll_rad == roll);
+      CHECK(r.contact[0].p_max_Pa == a.c[0].v[mh::kTabPmax]);
+      CHECK(r.d_droll[0].N_N == a.c[0].d_droll[mh::kTabN]);
+      CHECK(r.d_droll[0].p_max_Pa == a.c[0].d_droll[mh::kTabPmax]);
+      CHECK(r.d_droll[0].p_max_Pa != 0);  // the roll moves the peak pressure
+      CHECK(r.dFy_droll_N_per_rad == a.dFy_droll);
+    }
+  // The upright lookup is the lookup at roll 0.
+  mhc_table_result u;
+  u.struct_size = sizeof u;
+  REQUIRE(mhc_table_lookup(t, 0.3e-3, 70e3, &u) == MHC_OK);
+  REQUIRE(mhc_table_lookup_rolled(t, 0.3e-3, 70e3, 0.0, &r) == MHC_OK);
+  CHECK(u.contact[0].p_max_Pa == r.contact[0].p_max_Pa);
+  // Outside the roll range: out_of_range.
+  REQUIRE(mhc_table_lookup_rolled(t, 0.3e-3, 70e3, 2.5e-3, &r) == MHC_OK);
+  CHECK(r.status == MHC_STATUS_OUT_OF_RANGE);
+  // The layout before the roll fields: served up to d_dQ, nothing written after it.
+  std::vector<unsigned char> old(sizeof(mhc_table_result), 0xAB);
+  auto* o = reinterpret_cast<mhc_table_result*>(old.data());
+  o->struct_size = offsetof(mhc_table_result, roll_rad);
+  REQUIRE(mhc_table_lookup_rolled(t, 0.3e-3, 70e3, 1e-3, o) == MHC_OK);
+  CHECK(o->n_contacts == 1);
+  for (std::size_t b = offsetof(mhc_table_result, roll_rad); b < old.size(); ++b) REQUIRE(old[b] == 0xAB);
+  mhc_table_free(t);
   std::remove(path.c_str());
 }

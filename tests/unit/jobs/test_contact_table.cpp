@@ -84,7 +84,7 @@ TEST_CASE("table lookup reproduces a bilinear field and its derivatives exactly"
   TableAnswer a;
   for (double t : {0.0, 0.3e-3, 1e-3, 1.7e-3, 2.9e-3, 3e-3})
     for (double Q : {10e3, 14e3, 29.9e3, 41e3, 50e3}) {
-      look.lookup(t, Q, a);
+      look.lookup(t, Q, 0.0, a);
       REQUIRE(a.status == CaseStatus::Ok);
       REQUIRE(a.n_contacts == 1);
       CHECK(a.c[0].v[kTabN] == Approx(f(t, Q)).epsilon(1e-12));
@@ -92,10 +92,10 @@ TEST_CASE("table lookup reproduces a bilinear field and its derivatives exactly"
       CHECK(a.c[0].d_dQ[kTabN] == Approx(0.4).epsilon(1e-9));
       CHECK(a.c[0].v[kTabYRail] == Approx(0.01 + 2 * t).epsilon(1e-12));
     }
-  look.lookup(3.01e-3, 20e3, a);
+  look.lookup(3.01e-3, 20e3, 0.0, a);
   CHECK(a.status == CaseStatus::OutOfRange);
   CHECK(a.n_contacts == 0);
-  look.lookup(1e-3, 60e3, a);
+  look.lookup(1e-3, 60e3, 0.0, a);
   CHECK(a.status == CaseStatus::OutOfRange);
 }
 
@@ -107,29 +107,29 @@ TEST_CASE("table lookup: values and first derivatives continuous across cells", 
   // Across the interior t_Y nodes (1 and 2.5 mm) and Q nodes (20, 30 kN).
   for (double t : {1e-3, 2.5e-3})
     for (double Q : {12e3, 27e3, 44e3}) {
-      look.lookup(t - e, Q, a);
-      look.lookup(t + e, Q, b);
+      look.lookup(t - e, Q, 0.0, a);
+      look.lookup(t + e, Q, 0.0, b);
       CHECK(std::fabs(a.c[0].v[kTabN] - b.c[0].v[kTabN]) < 1e-3);  // [N]
       CHECK(a.c[0].d_dtY[kTabN] == Approx(b.c[0].d_dtY[kTabN]).epsilon(1e-6).margin(1.0));  // [N/m]
     }
   for (double Q : {20e3, 30e3})
     for (double t : {0.4e-3, 1.9e-3}) {
-      look.lookup(t, Q - 1e-6, a);
-      look.lookup(t, Q + 1e-6, b);
+      look.lookup(t, Q - 1e-6, 0.0, a);
+      look.lookup(t, Q + 1e-6, 0.0, b);
       CHECK(std::fabs(a.c[0].v[kTabN] - b.c[0].v[kTabN]) < 1e-3);
       CHECK(a.c[0].d_dQ[kTabN] == Approx(b.c[0].d_dQ[kTabN]).epsilon(1e-6).margin(1e-6));  // [-]
     }
   // The derivatives returned are those of the values (central differences inside a cell).
   for (double t : {0.4e-3, 1.6e-3, 2.7e-3})
     for (double Q : {13e3, 35e3}) {
-      look.lookup(t, Q, a);
+      look.lookup(t, Q, 0.0, a);
       const double h = 1e-8;
-      look.lookup(t + h, Q, b);
+      look.lookup(t + h, Q, 0.0, b);
       TableAnswer c;
-      look.lookup(t - h, Q, c);
+      look.lookup(t - h, Q, 0.0, c);
       CHECK(a.c[0].d_dtY[kTabN] == Approx((b.c[0].v[kTabN] - c.c[0].v[kTabN]) / (2 * h)).epsilon(1e-5));
-      look.lookup(t, Q + 1e-3, b);
-      look.lookup(t, Q - 1e-3, c);
+      look.lookup(t, Q + 1e-3, 0.0, b);
+      look.lookup(t, Q - 1e-3, 0.0, c);
       CHECK(a.c[0].d_dQ[kTabN] == Approx((b.c[0].v[kTabN] - c.c[0].v[kTabN]) / 2e-3).epsilon(1e-5));
     }
 }
@@ -144,7 +144,7 @@ TEST_CASE("table lookup: a contact present at one node fades in and out without 
     const int n = 3000;
     for (int s = 0; s <= n; ++s) {
       const double t = 3e-3 * s / n;
-      look.lookup(t, Q, a);
+      look.lookup(t, Q, 0.0, a);
       const double N2 = N_of(a, 2);
       CHECK(N2 >= 0);
       CHECK(std::fabs(N2 - prev) < 20.0);  // [N] per 1 µm step: continuous
@@ -155,8 +155,8 @@ TEST_CASE("table lookup: a contact present at one node fades in and out without 
     CHECK(prev == Approx(0).margin(1e-9));
     // Its force derivative is continuous where it leaves zero (t_Y = 1 mm: the node before).
     TableAnswer b;
-    look.lookup(1e-3 - 1e-12, Q, a);
-    look.lookup(1e-3 + 1e-12, Q, b);
+    look.lookup(1e-3 - 1e-12, Q, 0.0, a);
+    look.lookup(1e-3 + 1e-12, Q, 0.0, b);
     double d_before = 0, d_after = 0;
     for (int k = 0; k < a.n_contacts; ++k)
       if (a.c[static_cast<std::size_t>(k)].track == 2) d_before = a.c[static_cast<std::size_t>(k)].d_dtY[kTabN];
@@ -171,7 +171,7 @@ TEST_CASE("table lookup: a contact present at one node fades in and out without 
 TEST_CASE("table file: round trip and errors naming the file and line", "[tables]") {
   ContactTableData d = synthetic([](double t, double Q) { return Q * (1 + 100 * t); }, true);
   d.header = {{"schema", kContactTableSchema}, {"tY_mm_nodes", {0, 1, 2.5, 3}}, {"Q_kN_nodes", {10, 20, 30, 50}},
-              {"tracks", 2}, {"coarse_cells", {{1, 2}}}};
+              {"roll_mrad_nodes", {0}}, {"tracks", 2}, {"coarse_cells", {{1, 2, 0}}}};
   d.cell_coarse[1 * 3 + 2] = 1;
   const std::string path = "/tmp/mhcontact_test_table_" + std::to_string(::getpid()) + ".csv";
   {
@@ -184,7 +184,7 @@ TEST_CASE("table file: round trip and errors naming the file and line", "[tables
   CHECK(r.present == d.present);
   CHECK(r.cell_coarse == d.cell_coarse);
   TableAnswer a;
-  ContactTableLookup(r).lookup(1.6e-3, 35e3, a);  // in cell (1, 2)
+  ContactTableLookup(r).lookup(1.6e-3, 35e3, 0.0, a);  // in cell (1, 2)
   CHECK(a.coarse);
   CHECK(a.status == CaseStatus::OutsideValidity);
 
@@ -199,12 +199,13 @@ TEST_CASE("table file: round trip and errors naming the file and line", "[tables
   std::string other = text;
   other.replace(other.find(kContactTableSchema), std::string(kContactTableSchema).size(), "mhcontact.table/0");
   write(other);
-  CHECK_THROWS_WITH(read_contact_table(path), Catch::Contains(path + ":1") && Catch::Contains("mhcontact.table/1"));
+  CHECK_THROWS_WITH(read_contact_table(path), Catch::Contains(path + ":1") && Catch::Contains("mhcontact.table/2"));
   // A bad number on line 5.
   std::string bad = text;
   std::size_t at = 0;
   for (int l = 0; l < 4; ++l) at = bad.find('\n', at) + 1;
-  bad.replace(bad.find(',', bad.find(',', bad.find(',', bad.find(',', bad.find(',', at) + 1) + 1) + 1) + 1) + 1, 1, "x");
+  bad.replace(bad.find(',', bad.find(',', bad.find(',', bad.find(',', bad.find(',', bad.find(',', at) + 1) + 1) + 1) + 1) + 1) + 1, 1,
+              "x");
   write(bad);
   CHECK_THROWS_WITH(read_contact_table(path), Catch::Contains(path + ":5") && Catch::Contains("N_kN"));
   std::remove(path.c_str());
@@ -230,7 +231,7 @@ TEST_CASE("table of a worn measured pair: N within 1 % of Q and pmax within 3 % 
     for (double Q_kN : {32.0, 72.0, 112.0}) {
       const double t = t_mm * 1e-3, Q = Q_kN * 1e3;
       r = solve_contact(pg.geo, cf.material, t, Q, cf.method_options());
-      look.lookup(t, Q, a);
+      look.lookup(t, Q, 0.0, a);
       REQUIRE(r.status == CaseStatus::Ok);
       REQUIRE(a.status == CaseStatus::Ok);
       REQUIRE(r.patches.size() == 1);
@@ -270,7 +271,7 @@ TEST_CASE("table: a cell whose area misses its tolerance is coarse and not ok", 
     const TableCheckError& e = made.checks[c];
     if (!e.compared || !(e.e_area > opt.tol_area)) continue;
     area_only += e.e_N <= opt.tol_N && e.e_pmax <= opt.tol_pmax;
-    const nlohmann::json cell = {c / (nQ - 1), c % (nQ - 1)};
+    const nlohmann::json cell = {c / (nQ - 1), c % (nQ - 1), 0};
     INFO("cell " << cell.dump() << ": area off by " << e.e_area);
     bool coarse = false;
     for (const auto& x : made.data.header["coarse_cells"]) coarse = coarse || x == cell;
@@ -278,7 +279,7 @@ TEST_CASE("table: a cell whose area misses its tolerance is coarse and not ok", 
     // And the lookup at the centre says so.
     const ContactTableLookup look(made.data);
     TableAnswer a;
-    look.lookup(e.tY, e.Q, a);
+    look.lookup(e.tY, e.Q, 0.0, a);
     CHECK(a.status != CaseStatus::Ok);
   }
   CHECK(area_only > 0);  // the pair has such cells (else the test tests nothing)
@@ -313,7 +314,7 @@ TEST_CASE("table refinement in Q: one 120 kN load interval is halved until N, pm
     for (double Q_kN : {56.0, 104.0}) {
       const double t = t_mm * 1e-3, Q = Q_kN * 1e3;
       r = solve_contact(pg.geo, cf.material, t, Q, cf.method_options());
-      look.lookup(t, Q, a);
+      look.lookup(t, Q, 0.0, a);
       REQUIRE(r.status == CaseStatus::Ok);
       REQUIRE(a.status == CaseStatus::Ok);
       REQUIRE(r.patches.size() == 1);
@@ -357,7 +358,7 @@ TEST_CASE("a wheelset from two pair tables: lookups at t_Y = +y (left) and -y (r
       const double Q = w == &r.left ? pose.Q_left : pose.Q_right;
       INFO("y = " << y_mm << " mm, " << (w == &r.left ? "left" : "right") << " wheel, t_Y = " << w->tY * 1e3 << " mm");
       REQUIRE(w->r.status == CaseStatus::Ok);
-      look.lookup(w == &r.left ? pose.y : -pose.y, Q, a);
+      look.lookup(w == &r.left ? pose.y : -pose.y, Q, 0.0, a);
       REQUIRE(a.status == CaseStatus::Ok);
       CHECK(std::fabs(a.Fy - w->r.Fy) / Q < 0.01);
       CHECK(std::fabs(a.Fz - Q) / Q < 0.01);
@@ -402,7 +403,7 @@ TEST_CASE("table with dropped t_Y nodes: its error is that of the table written,
     const CaseResult r = solve_contact(pg.geo, cf.material, t, Q, cf.method_options());
     if (!e.compared) continue;
     REQUIRE(r.status != CaseStatus::NotConverged);
-    look.lookup(t, Q, a);
+    look.lookup(t, Q, 0.0, a);
     double pmax = 0, area = 0;
     for (int k = 0; k < std::min(a.n_contacts, kTableMaxContacts); ++k) {
       pmax = std::max(pmax, a.c[static_cast<std::size_t>(k)].v[kTabPmax]);

@@ -56,7 +56,7 @@ ContactTableData synthetic() {
       }
     }
   d.header = {{"schema", kContactTableSchema}, {"tY_mm_nodes", {0, 1, 2.5, 3}}, {"Q_kN_nodes", {10, 20, 30, 50}},
-              {"tracks", 2}, {"coarse_cells", nlohmann::json::array()}};
+              {"roll_mrad_nodes", {0}}, {"tracks", 2}, {"coarse_cells", nlohmann::json::array()}};
   return d;
 }
 
@@ -89,7 +89,7 @@ TEST_CASE("table export: the file read back is the table's lookup at every grid 
       INFO("t_Y = " << t * 1e3 << " mm, Q = " << Q * 1e-3 << " kN");
       REQUIRE(r.tY[i] == Approx(t).margin(1e-15));
       REQUIRE(r.Q[j] == Approx(Q).epsilon(1e-15));
-      look.lookup(t, Q, a);
+      look.lookup(t, Q, 0.0, a);
       CHECK(r.node_status[i * r.nQ() + j] == a.status);
       // Every track the lookup reports is a present row with its values; every other track's
       // row is absent with zero force, pressure and sizes.
@@ -106,7 +106,7 @@ TEST_CASE("table export: the file read back is the table's lookup at every grid 
         (c ? present : faded) += k == 1;
       }
       // Read bilinearly, the export gives its grid values back at its points.
-      export_bilinear(r, t, Q, b);
+      export_linear(r, t, Q, 0.0, b);
       CHECK(b.n_contacts == a.n_contacts);
       CHECK(b.Fy == Approx(a.Fy).epsilon(1e-13));
     }
@@ -114,8 +114,8 @@ TEST_CASE("table export: the file read back is the table's lookup at every grid 
   CHECK(present > 0);
   CHECK(faded > 0);
   // The node with outside_validity: its four cells' points carry it.
-  look.lookup(2.9e-3, 45e3, a);
-  export_bilinear(r, 2.9e-3, 45e3, b);
+  look.lookup(2.9e-3, 45e3, 0.0, a);
+  export_linear(r, 2.9e-3, 45e3, 0.0, b);
   CHECK(a.status == CaseStatus::OutsideValidity);
   CHECK(b.status == CaseStatus::OutsideValidity);
   // The measured error: 0 for a field bilinear in each cell along the grid lines... the first
@@ -127,7 +127,7 @@ TEST_CASE("table export: the file read back is the table's lookup at every grid 
   CHECK_FALSE(r.header["error"].contains("against_method"));
 
   // Errors: an export is not a table (and back), a step that does not divide the range.
-  CHECK_THROWS_WITH(read_contact_table(path), Catch::Contains(path + ":1") && Catch::Contains("mhcontact.table/1"));
+  CHECK_THROWS_WITH(read_contact_table(path), Catch::Contains(path + ":1") && Catch::Contains("mhcontact.table/2"));
   opt.tY_step_mm = 0.4;
   CHECK_THROWS_WITH(export_contact_table(d, "synthetic.csv", "00", opt),
                     Catch::Contains("--tY-step-mm") && Catch::Contains("0 ... 3 mm") && Catch::Contains("synthetic.csv"));
@@ -161,7 +161,7 @@ TEST_CASE("table export of a worn measured pair: read bilinearly, within its sta
   for (double t_mm : {-6.9, -4.6, -2.35, -0.1, 2.15, 4.4, 6.6})
     for (double Q_kN : {27.0, 83.0, 131.0}) {
       const double t = t_mm * 1e-3, Q = Q_kN * 1e3;
-      export_bilinear(ex, t, Q, a);
+      export_linear(ex, t, Q, 0.0, a);
       if (a.status != CaseStatus::Ok) continue;
       r = solve_contact(pg.geo, cf.material, t, Q, cf.method_options());
       REQUIRE(r.status == CaseStatus::Ok);
