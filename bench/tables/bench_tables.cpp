@@ -1,13 +1,15 @@
 // mhcontact_bench_tables: a contact table stepped through t_Y = A sin(ωt) (docs/tables.md,
 // docs/performance.md "Contact tables"). Figures printed, never asserted (the machines are shared).
 // Usage: mhcontact_bench_tables CASE.json [STEPS] [Q_kN] [AMPLITUDE_mm] [DIRECT_EVERY] [HISTORY.csv] [OFFSET_mm]
+//        [ROLL_AMPLITUDE_mrad]
 //  1. the table of CASE.json (its method and sweep: `mhcontact table`) made, written and read back
 //     through the C interface (mhc_table_read);
 //  2. STEPS lookups (default 10,000) at t_Y = OFFSET + A sin(2π·5·k/STEPS) (five periods), Q fixed
-//     (default 60 kN, A default 6 mm, OFFSET default 0): CPU time of the thread per lookup and per contact,
-//     median of 15 repeats;
+//     (default 60 kN, A default 6 mm, OFFSET default 0), the wheel rolled by δ = B sin(2π·5·k/STEPS)
+//     in phase (B = ROLL_AMPLITUDE, default 0: upright; a table with a roll axis), through
+//     mhc_table_lookup_rolled: CPU time of the thread per lookup and per contact, median of 15 repeats;
 //  3. every DIRECT_EVERY-th step (default 10; 1: every step) solved directly by the case's
-//     method: statuses (direct ok, table ok, direct ok and table not) and the errors of N
+//     method at that step's roll: statuses (direct ok, table ok, direct ok and table not) and the errors of N
 //     (fraction of Q), pmax, area and Fy;
 //  4. HISTORY.csv (optional): per step t_Y, the table's N per track, Fy and dFy/dt_Y, and the
 //     direct Fy where solved (scripts/plot_table_history.py draws it).
@@ -37,7 +39,8 @@ static double cpu_now() {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: mhcontact_bench_tables CASE.json [STEPS] [Q_kN] [AMPLITUDE_mm] [DIRECT_EVERY] [HISTORY.csv] [OFFSET_mm]\n");
+    std::fprintf(stderr, "usage: mhcontact_bench_tables CASE.json [STEPS] [Q_kN] [AMPLITUDE_mm] [DIRECT_EVERY] [HISTORY.csv] [OFFSET_mm] "
+                         "[ROLL_AMPLITUDE_mrad]\n");
     return 2;
   }
   const std::string case_path = argv[1];
@@ -47,6 +50,7 @@ int main(int argc, char** argv) {
   const int every = argc > 5 ? std::max(1, std::atoi(argv[5])) : 10;
   const std::string history = argc > 6 ? argv[6] : "";
   const double offset = (argc > 7 ? std::atof(argv[7]) : 0.0) * 1e-3;
+  const double B = (argc > 8 ? std::atof(argv[8]) : 0.0) * 1e-3;
 
   // 1. Make the table and read it back through the C interface.
   const mh::CaseFile cf = mh::load_case_file(case_path, true);
@@ -66,28 +70,34 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::remove(path.c_str());
-  std::printf("mhcontact %s: table of %s: %zu x %zu nodes, %d tracks, %zu solves, %zu coarse cells\n", mhc_version(),
-              case_path.c_str(), made.data.nT(), made.data.nQ(), made.data.n_tracks, made.solves,
-              made.data.header["coarse_cells"].size());
+  std::printf("mhcontact %s: table of %s: %zu x %zu x %zu nodes (t_Y, Q, roll), %d tracks, %zu solves, %zu coarse cells\n",
+              mhc_version(), case_path.c_str(), made.data.nT(), made.data.nQ(), made.data.nR(), made.data.n_tracks,
+              made.solves, made.data.header["coarse_cells"].size());
 
   // 2. The lookups.
-  std::vector<double> tY(static_cast<std::size_t>(steps));
-  for (int k = 0; k < steps; ++k) tY[static_cast<std::size_t>(k)] = offset + A * std::sin(2 * M_PI * 5.0 * k / steps);
+  std::vector<double> tY(static_cast<std::size_t>(steps)), roll(static_cast<std::size_t>(steps));
+  for (int k = 0; k < steps; ++k) {
+    tY[static_cast<std::size_t>(k)] = offset + A * std::sin(2 * M_PI * 5.0 * k / steps);
+    roll[static_cast<std::size_t>(k)] = B * std::sin(2 * M_PI * 5.0 * k / steps);
+  }
   std::vector<mhc_table_result> res(static_cast<std::size_t>(steps));
   for (auto& r : res) r.struct_size = sizeof(mhc_table_result);
   std::vector<double> per;
   double contacts = 0;
   for (int rep = 0; rep < 15; ++rep) {
     const double t0 = cpu_now();
-    for (int k = 0; k < steps; ++k) mhc_table_lookup(table, tY[static_cast<std::size_t>(k)], Q, &res[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < steps; ++k)
+      mhc_table_lookup_rolled(table, tY[static_cast<std::size_t>(k)], Q, roll[static_cast<std::size_t>(k)],
+                              &res[static_cast<std::size_t>(k)]);
     per.push_back((cpu_now() - t0) / steps);
   }
   for (const auto& r : res) contacts += r.n_contacts;
   std::sort(per.begin(), per.end());
   const double mean_contacts = contacts / steps;
-  std::printf("lookups: %d steps, t_Y = %g + %g mm sin(wt), Q = %g kN: %.3f us a lookup (median of 15), %.2f contacts a step, "
-              "%.3f us a contact\n",
-              steps, offset * 1e3, A * 1e3, Q * 1e-3, per[per.size() / 2] * 1e6, mean_contacts, per[per.size() / 2] * 1e6 / mean_contacts);
+  std::printf("lookups: %d steps, t_Y = %g + %g mm sin(wt), roll %g mrad sin(wt), Q = %g kN: %.3f us a lookup (median of 15), "
+              "%.2f contacts a step, %.3f us a contact\n",
+              steps, offset * 1e3, A * 1e3, B * 1e3, Q * 1e-3, per[per.size() / 2] * 1e6, mean_contacts,
+              per[per.size() / 2] * 1e6 / mean_contacts);
 
   // 3. Direct solves.
   int n_direct = 0, direct_ok = 0, table_ok = 0, direct_ok_table_not = 0, both = 0;
@@ -97,10 +107,12 @@ int main(int argc, char** argv) {
   std::vector<double> fy_direct(static_cast<std::size_t>(steps), NAN);
   mh::GridWorkspace ws;
   mh::CaseResult r;
+  mh::MethodOptions mopt = cf.method_options();
   const double tc = cpu_now();
   for (int k = 0; k < steps; k += every) {
     const auto K = static_cast<std::size_t>(k);
-    mh::solve_contact(pg.geo, cf.material, tY[K], Q, cf.method_options(), r, &ws);
+    mopt.multi_hertzian.roll = roll[K];
+    mh::solve_contact(pg.geo, cf.material, tY[K], Q, mopt, r, &ws);
     ++n_direct;
     const mhc_table_result& t = res[K];
     const bool dok = r.status == mh::CaseStatus::Ok, tok = t.status == MHC_STATUS_OK;

@@ -348,6 +348,25 @@ inline void ContactTableLookup::hermite(const Basis& B, int k, TableTrackValues&
   t.d_dtY.fill(0);
   t.d_dQ.fill(0);
   t.d_droll.fill(0);
+  if (B.nc == 1) {
+    // Without a roll axis: the bicubic surface of layer 0 (its roll terms are all 0).
+    for (std::size_t a = 0; a < 2; ++a)
+      for (std::size_t b = 0; b < 2; ++b) {
+        const std::size_t at = d_.at(0, B.i + a, B.j + b, k);
+        const double* f = &d_.v[at];
+        const double* fx = &dx_[at];
+        const double* fy = &dy_[at];
+        const double c0 = B.H0[a] * B.G0[b], c1 = B.H1[a] * B.G0[b], c2 = B.H0[a] * B.G1[b];
+        const double x0 = B.dH0[a] * B.G0[b], x1 = B.dH1[a] * B.G0[b], x2 = B.dH0[a] * B.G1[b];
+        const double y0 = B.H0[a] * B.dG0[b], y1 = B.H1[a] * B.dG0[b], y2 = B.H0[a] * B.dG1[b];
+        for (int q = 0; q < kTableQuantities; ++q) {
+          t.v[q] += c0 * f[q] + c1 * fx[q] + c2 * fy[q];
+          t.d_dtY[q] += x0 * f[q] + x1 * fx[q] + x2 * fy[q];
+          t.d_dQ[q] += y0 * f[q] + y1 * fx[q] + y2 * fy[q];
+        }
+      }
+    return;
+  }
   for (int c = 0; c < B.nc; ++c)
     for (std::size_t a = 0; a < 2; ++a)
       for (std::size_t b = 0; b < 2; ++b) {

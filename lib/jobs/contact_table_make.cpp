@@ -518,6 +518,11 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
     data.cell_coarse = cell_fail;
   }
 
+  // The checks were made before their cells were marked: a coarse cell's table answer is at best
+  // outside_validity (the lookup of the table written), as the status counts of `error` say.
+  for (std::size_t c = 0; c < checks.size() && c < cell_fail.size(); ++c)
+    if (cell_fail[c] && checks[c].table == CaseStatus::Ok) checks[c].table = CaseStatus::OutsideValidity;
+
   // The header.
   nlohmann::json h;
   h["schema"] = kContactTableSchema;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Every command example of README.md and of the docs pages (the ```sh blocks of docs/*.md), run
 # as written, in a scratch copy of the repository's cases/, profiles/, scripts/, tests/ref/ and
-# tests/data/contact/
+# tests/data/contact/, tables/ and profiles/
 # with build/mhcontact pointing at the binary under test. Each block below names the page it
 # comes from; the last block checks that no ```sh command of those pages is missing here, and
 # that the outputs the README shows are what the commands print.
@@ -12,7 +12,7 @@ self=$(cd "$(dirname "$0")" && pwd)/$(basename "$0")
 mkdir -p "$tmp/build" "$tmp/tests" "$tmp/expect"
 cp -r "$src/cases" "$src/profiles" "$src/scripts" "$tmp/"
 cp -r "$src/tests/ref" "$tmp/tests/"
-mkdir -p "$tmp/tests/data" && cp -r "$src/tests/data/contact" "$tmp/tests/data/"
+mkdir -p "$tmp/tests/data" && cp -r "$src/tests/data/contact" "$src/tests/data/tables" "$src/tests/data/profiles" "$tmp/tests/data/"
 ln -s "$bin" "$tmp/build/mhcontact"
 # The binary is already built: the quick start's build step (scripts/build.sh, which CI runs
 # through scripts/test.sh) is a no-op in the scratch copy.
@@ -203,6 +203,12 @@ test $pass -le 20  # a merge that never completes fails here, not in an endless 
 for k in 1 2; do ./build/mhcontact table cases/s1002-60e1-table.json --shard $k/2 --points out/next.json -o out/pass$pass-$k.json; done
 done
 cmp out/table.csv out/table-passes.csv
+# --- docs/tables.md, "Roll": the roll tables' summaries are the page's (the S1002 one exit 1: its
+# coarse cells) ---------------------------------------------------------------------------------
+./build/mhcontact table cases/s1002-60e1-roll-table.json -o out/table-roll.csv 2> "$tmp/roll.err" || test $? -eq 1
+shown_output docs/tables.md "./build/mhcontact table cases/s1002-60e1-roll-table.json -o out/table-roll.csv" | diff - <(grep '^mhcontact table:' "$tmp/roll.err")
+./build/mhcontact table tests/data/tables/worn-table-roll.json -o out/table-roll-worn.csv 2> "$tmp/roll-worn.err"
+shown_output docs/tables.md "./build/mhcontact table tests/data/tables/worn-table-roll.json -o out/table-roll-worn.csv" | diff - <(grep '^mhcontact table:' "$tmp/roll-worn.err")
 
 # --- docs/cli.md, "Exit codes": a failing case gives 1, bad input 2, CLI syntax >= 100 --------
 set +e

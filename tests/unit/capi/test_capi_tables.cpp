@@ -97,8 +97,8 @@ TEST_CASE("C interface: a table with a roll axis, looked up at a roll as the C++
   {
     // t_Y −2 ... 2 mm, the roll −2 ... 2 mrad.
     std::string s = c;
-    s.replace(s.find("\"from\": -4"), 10, "\"from\": -2");
-    s.replace(s.find("\"to\": 4"), 7, "\"to\": 2");
+    s.replace(s.find("\"from\": -8"), 10, "\"from\": -2");
+    s.replace(s.find("\"to\": 8"), 7, "\"to\": 2");
     s.replace(s.find("\"from\": -3"), 10, "\"from\": -2");
     s.replace(s.find("\"to\": 3"), 7, "\"to\": 2");
     for (std::size_t at; (at = s.find("\"../profiles/")) != std::string::npos;) s.replace(at + 1, 3, dir + "../");
