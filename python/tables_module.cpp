@@ -19,6 +19,7 @@ namespace {
 
 struct Table {
   mhc_table* t = nullptr;
+  bool roll_axis = false;  ///< more than one roll node: lookup's dicts carry the roll derivatives
   ~Table() { mhc_table_free(t); }
 };
 
@@ -132,19 +133,23 @@ const Keys& keys() {
   return *k;
 }
 
+// dr: the roll derivatives, or null for a table without a roll axis (no d_droll key: they are 0).
 py::dict contact_dict(const Keys& K, const mhc_table_contact& c, const mhc_table_contact& dt, const mhc_table_contact& dq,
-                      const mhc_table_contact& dr) {
-  py::dict d, ddt, ddq, ddr;
+                      const mhc_table_contact* dr) {
+  py::dict d, ddt, ddq;
   d[K.track] = py::int_(c.track);
   for (int f = 0; f < kNFields; ++f) {
     d[K.field[f]] = py::float_(fields(c)[f]);
     ddt[K.field[f]] = py::float_(fields(dt)[f]);
     ddq[K.field[f]] = py::float_(fields(dq)[f]);
-    ddr[K.field[f]] = py::float_(fields(dr)[f]);
   }
   d[K.d_dtY] = ddt;
   d[K.d_dQ] = ddq;
-  d[K.d_droll] = ddr;
+  if (dr) {
+    py::dict ddr;
+    for (int f = 0; f < kNFields; ++f) ddr[K.field[f]] = py::float_(fields(*dr)[f]);
+    d[K.d_droll] = ddr;
+  }
   return d;
 }
 
@@ -215,6 +220,9 @@ void add_tables(py::module_& m, void (*raise)(mhc_error)) {
              auto t = std::make_unique<Table>();
              const mhc_error e = mhc_table_read(path.c_str(), &t->t);
              if (e != MHC_OK) raise(e);
+             int32_t n = 1;
+             mhc_table_roll_range(t->t, nullptr, nullptr, &n);
+             t->roll_axis = n > 1;
              return t;
            }),
            py::arg("path"))
@@ -245,17 +253,18 @@ void add_tables(py::module_& m, void (*raise)(mhc_error)) {
             d[K.Fy] = py::float_(r.Fy_N);
             d[K.dFy_dtY] = py::float_(r.dFy_dtY_N_per_m);
             d[K.dFy_dQ] = py::float_(r.dFy_dQ);
-            d[K.dFy_droll] = py::float_(r.dFy_droll_N_per_rad);
+            if (t.roll_axis) d[K.dFy_droll] = py::float_(r.dFy_droll_N_per_rad);
             const int n = r.n_contacts < MHC_MAX_CONTACTS ? r.n_contacts : MHC_MAX_CONTACTS;
             py::list cs(static_cast<std::size_t>(n));
             for (int k = 0; k < n; ++k)
-              cs[static_cast<std::size_t>(k)] = contact_dict(K, r.contact[k], r.d_dtY[k], r.d_dQ[k], r.d_droll[k]);
+              cs[static_cast<std::size_t>(k)] =
+                  contact_dict(K, r.contact[k], r.d_dtY[k], r.d_dQ[k], t.roll_axis ? &r.d_droll[k] : nullptr);
             d[K.contacts] = cs;
             return d;
           }, py::arg("tY_m"), py::arg("Q_N"), py::arg("roll_rad") = 0.0,
           "The answer at one point (the wheel's roll roll_rad against the rail, default upright): status, coarse, "
-          "off_roll, n_contacts, Fz_N, Fy_N, dFy_dtY_N_per_m, dFy_dQ, dFy_droll_N_per_rad and the contacts (each with "
-          "d_dtY, d_dQ and d_droll of its fields)")
+          "off_roll, n_contacts, Fz_N, Fy_N, dFy_dtY_N_per_m, dFy_dQ and the contacts (each with d_dtY and d_dQ of its "
+          "fields); for a table with a roll axis also dFy_droll_N_per_rad and each contact's d_droll")
       .def("lookup_into", [](const Table& t, double tY_m, double Q_N, TableResult& out, double roll_rad) {
             mhc_table_lookup_rolled(t.t, tY_m, Q_N, roll_rad, &out.r);
             return out.r.status;

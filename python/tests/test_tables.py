@@ -228,4 +228,5 @@ def test_table_roll_axis(tmp_path):
     assert f.roll_range == pytest.approx((0.0, 0.0, 1))
     b = f.lookup(0.4e-3, 60e3, roll_rad=0.7e-3)
     assert b["off_roll"] and b["status"] == "outside_validity" and b["n_contacts"] == 1
+    assert "d_droll" not in b["contacts"][0] and "dFy_droll_N_per_rad" not in b  # 0 without a roll axis
     assert f.lookup(0.4e-3, 60e3)["status"] == "ok"
