@@ -440,9 +440,10 @@ MHC_API const char* mhc_table_header(const mhc_table* t);
  *  set). Outside the ranges: status out_of_range, no contacts (not an error). */
 MHC_API mhc_error mhc_table_lookup(const mhc_table* t, double tY_m, double Q_N, mhc_table_result* out);
 /** The same at the wheel's roll roll_rad against the rail (method.md section 3.8; in a wheelset
- *  the left pair's is the wheelset's roll, the right pair's its negative). A table with a roll axis answers inside its roll
- *  range (out_of_range outside it); a table without one answers with its one layer, the status
- *  at best outside_validity away from its roll (off_roll = 1). */
+ *  the left pair's is the wheelset's roll, the right pair's its negative). A table with a roll
+ *  axis answers inside its roll range (out_of_range outside it, or for a roll that is not
+ *  finite); a table without one answers with its one layer, the status at best outside_validity
+ *  away from its roll (off_roll = 1). */
 MHC_API mhc_error mhc_table_lookup_rolled(const mhc_table* t, double tY_m, double Q_N, double roll_rad,
                                           mhc_table_result* out);
 MHC_API void mhc_table_free(mhc_table* t);

@@ -253,7 +253,7 @@ void ContactTableLookup::lookup(double tY, double Q, double roll, TableAnswer& o
   out.Fz = out.Fy = out.dFy_dtY = out.dFy_dQ = out.dFy_droll = 0;
   out.coarse = out.off_roll = false;
   const bool axis = d_.nR() > 1;
-  if (!(tY >= d_.tY.front() && tY <= d_.tY.back() && Q >= d_.Q.front() && Q <= d_.Q.back()) ||
+  if (!(tY >= d_.tY.front() && tY <= d_.tY.back() && Q >= d_.Q.front() && Q <= d_.Q.back()) || !std::isfinite(roll) ||
       (axis && !(roll >= d_.roll.front() && roll <= d_.roll.back()))) {
     out.status = CaseStatus::OutOfRange;
     return;

@@ -140,8 +140,8 @@ class ContactTableLookup {
  public:
   explicit ContactTableLookup(ContactTableData data);
   const ContactTableData& data() const { return d_; }
-  /// The answer at (tY [m], Q [N], roll [rad]); outside the node ranges: status out_of_range,
-  /// no contact. A table without a roll axis answers at any roll with its one layer, the status
+  /// The answer at (tY [m], Q [N], roll [rad]); outside the node ranges (or a roll not finite):
+  /// status out_of_range, no contact. A table without a roll axis answers at any roll with its one layer, the status
   /// at best outside_validity away from that layer's roll (TableAnswer::off_roll).
   void lookup(double tY, double Q, double roll, TableAnswer& out) const;
   /// The interpolant of one track k (0-based) at (tY, Q, roll) inside the node ranges, whether

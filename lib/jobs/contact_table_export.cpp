@@ -227,7 +227,7 @@ void export_linear(const ContactTableData& ex, double tY, double Q, double roll,
   out.coarse = out.off_roll = false;
   const std::size_t nR = ex.nR(), nk = static_cast<std::size_t>(ex.n_tracks);
   const bool axis = nR > 1;
-  if (!(tY >= ex.tY.front() && tY <= ex.tY.back() && Q >= ex.Q.front() && Q <= ex.Q.back()) ||
+  if (!(tY >= ex.tY.front() && tY <= ex.tY.back() && Q >= ex.Q.front() && Q <= ex.Q.back()) || !std::isfinite(roll) ||
       (axis && !(roll >= ex.roll.front() && roll <= ex.roll.back()))) {
     out.status = CaseStatus::OutOfRange;
     return;

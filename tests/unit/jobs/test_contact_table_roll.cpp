@@ -3,7 +3,7 @@
 // values and d/droll continuous across roll nodes), a table without a roll axis asked at another
 // roll, the file round trip of a three-axis table, and the interpolation error of a worn measured
 // pair's table over ±3 mrad against direct strip solves of the rolled wheel at points that were
-// not used to make or refine it.
+// not used to make or refine it, its shards, and a rolled wheelset from two such tables.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -20,6 +20,7 @@
 #include "jobs/contact_table_make.hpp"
 #include "jobs/contact_table_shards.hpp"
 #include "jobs/run.hpp"
+#include "wheelset_contact/wheelset_contact.hpp"
 
 namespace {
 
@@ -132,6 +133,9 @@ TEST_CASE("a table without a roll axis asked at another roll: its answer, at bes
   REQUIRE(b.n_contacts == 1);
   CHECK(b.c[0].v[kTabN] == a.c[0].v[kTabN]);  // the one layer's answer
   CHECK(b.dFy_droll == 0);
+  // A roll that is not a number: out_of_range, as a t_Y that is not.
+  look.lookup(1e-3, 20e3, std::nan(""), b);
+  CHECK(b.status == CaseStatus::OutOfRange);
 }
 
 TEST_CASE("table file with a roll axis: round trip, coarse cells by (t_Y, Q, roll) cell", "[tables]") {
@@ -174,7 +178,7 @@ TEST_CASE("table of a worn measured pair over ±3 mrad of roll: N within 1 % of 
   // 140 kN (40 kN), roll −3 ... 3 mrad (1 mrad): the maker measures and refines at cell centres;
   // this test checks at other points: t_Y at quarter points, Q at 0.3 of a cell, the roll at a
   // quarter of a roll cell, each against a direct strip solve of the wheel rolled by that roll.
-  CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/worn-table-roll.json", true);
+  const CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/worn-table-roll.json", true);
   const PairGeometry pg = build_pair_geometry(cf);
   std::ostringstream err;
   TableMakeOptions opt;
@@ -252,4 +256,54 @@ TEST_CASE("table shards with a roll axis: the merged table is byte for byte the 
   for (const auto& p : parts) std::remove(p.c_str());
   std::remove((dir + "-one.csv").c_str());
   std::remove((dir + "-merged.csv").c_str());
+}
+
+TEST_CASE("a rolled wheelset from two pair tables with a roll axis: each wheel looked up at its pair's t_Y and roll", "[tables]") {
+  // docs/tables.md "Roll": a table-driven wheelset looks each wheel's pair up at that pair's pose
+  // as the wheelset call places it: t_Y (σ y and the roll's shift) and the relative roll δ = σ φ.
+  // The worn measured pair on both sides (one roll table serves both) against the wheelset call by
+  // the strip method, loads given (60 and 95 kN), the roll given (−2.5 and +1.5 mrad): each
+  // wheel's Fy and Fz (pair frame) within 1 % of its load.
+  const CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/worn-table-roll.json", true);
+  const PairGeometry pg = build_pair_geometry(cf);
+  std::ostringstream err;
+  TableMakeOptions opt;
+  opt.threads = 2;
+  opt.quiet = true;
+  const ContactTableLookup look(make_contact_table(cf, pg, opt, err).data);
+  const WheelsetContact ws(pg.geo, pg.geo, cf.track, cf.material, cf.method_options(), {});
+  WheelsetWorkspace work;
+  WheelsetResult r;
+  TableAnswer a, up;
+  WheelsetPose pose;
+  pose.Q_left = 60e3;
+  pose.Q_right = 95e3;
+  pose.solve_roll = false;
+  int compared = 0;
+  double worst = 0, worst_upright = 0;
+  for (double roll_mrad : {-2.5, 1.5})
+    for (double y_mm = -5.3; y_mm < 6; y_mm += 1.9) {
+      pose.y = y_mm * 1e-3;
+      pose.roll = roll_mrad * 1e-3;
+      ws.step(pose, WheelsetStepOptions(), r, work);
+      for (const WheelResult* w : {&r.left, &r.right}) {
+        const double Q = w == &r.left ? pose.Q_left : pose.Q_right;
+        INFO("y = " << y_mm << " mm, roll " << roll_mrad << " mrad, " << (w == &r.left ? "left" : "right")
+                    << " wheel: t_Y = " << w->tY * 1e3 << " mm, δ = " << w->delta * 1e3 << " mrad");
+        REQUIRE(w->r.status == CaseStatus::Ok);
+        CHECK(w->delta == Approx(w->side * pose.roll).epsilon(1e-12));
+        look.lookup(w->tY, Q, w->delta, a);
+        REQUIRE(a.status == CaseStatus::Ok);
+        CHECK(std::fabs(a.Fy - w->r.Fy) / Q < 0.01);
+        CHECK(std::fabs(a.Fz - Q) / Q < 0.01);
+        worst = std::max(worst, std::fabs(a.Fy - w->r.Fy) / Q);
+        // The upright placement (t_Y = σ y, no roll) for comparison.
+        look.lookup(w->side * pose.y, Q, 0.0, up);
+        if (up.status == CaseStatus::Ok) worst_upright = std::max(worst_upright, std::fabs(up.Fy - w->r.Fy) / Q);
+        ++compared;
+      }
+    }
+  CHECK(compared == 24);
+  WARN("rolled wheelset from the roll table: Fy within " << 100 * worst << " % of Q; looked up upright at t_Y = σ y: "
+                                                         << 100 * worst_upright << " %");
 }
