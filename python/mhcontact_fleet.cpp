@@ -16,6 +16,8 @@
 #include "input/case_file.hpp"
 #include "input/manifest.hpp"
 #include "jobs/batch.hpp"
+#include "jobs/contact_table_make.hpp"
+#include "jobs/contact_table_shards.hpp"
 #include "jobs/run.hpp"
 #include "jobs/shards.hpp"
 
@@ -55,9 +57,57 @@ py::tuple call_job(const py::object& input_error, F&& f) {
   return py::make_tuple(rc, err.str());
 }
 
+// The options of `mhcontact table` from a dict (the command's long options with _ for -, e.g.
+// {"refine": 3, "tol_pmax": 0.03, "check": True}); an unknown key is a TypeError naming it.
+mh::TableMakeOptions table_options(const py::dict& d, unsigned threads) {
+  mh::TableMakeOptions o;
+  o.threads = threads;
+  o.quiet = true;
+  for (const auto& kv : d) {
+    const std::string k = py::str(kv.first);
+    const py::handle v = kv.second;
+    if (k == "refine") o.refine = v.cast<int>();
+    else if (k == "check") o.check = v.cast<bool>();
+    else if (k == "min_step_mm") o.min_step_mm = v.cast<double>();
+    else if (k == "min_Q_step_kN") o.min_Q_step_kN = v.cast<double>();
+    else if (k == "min_roll_step_mrad") o.min_roll_step_mrad = v.cast<double>();
+    else if (k == "tol_N") o.tol_N = v.cast<double>();
+    else if (k == "tol_pmax") o.tol_pmax = v.cast<double>();
+    else
+      throw py::type_error("table options: unknown key '" + k + "' (refine, check, min_step_mm, min_Q_step_kN, "
+                           "min_roll_step_mrad, tol_N, tol_pmax)");
+  }
+  if (o.refine < 0 || o.refine > 8) throw py::value_error("table options: refine must be 0 ... 8 (as --refine)");
+  return o;
+}
+
 }  // namespace
 
 void bind_fleet(py::module_& m, py::object input_error) {
+  m.def("_table_shard", [input_error](const std::string& path, unsigned k, unsigned n, const std::string& points_path,
+                                      unsigned threads, const py::dict& options) {
+        const mh::TableMakeOptions o = table_options(options, threads);
+        std::ostringstream out;
+        const py::tuple r = call_job(input_error, [&](std::ostream& err) {
+          const mh::CaseFile cf = mh::load_case_file(path, true);
+          return mh::table_shard_job(cf, o, std::to_string(k) + "/" + std::to_string(n), "-", out, err, points_path);
+        });
+        return py::make_tuple(r[0], r[1], py::bytes(out.str()));
+      }, py::arg("path"), py::arg("k"), py::arg("n"), py::arg("points_path"), py::arg("threads"), py::arg("options"),
+      "`mhcontact table PATH --shard K/N [--points POINTS] -o -`: (exit code, standard error, the shard file's bytes).");
+  m.def("_table_merge", [input_error](const std::string& path, const std::vector<std::string>& parts,
+                                      const std::string& next_path, const std::string& out_path, unsigned threads,
+                                      const py::dict& options) {
+        const mh::TableMakeOptions o = table_options(options, threads);
+        return call_job(input_error, [&](std::ostream& err) {
+          std::ostringstream out;
+          const mh::CaseFile cf = mh::load_case_file(path, true);
+          return mh::table_job(cf, o, out_path, out, err, parts, next_path);
+        });
+      }, py::arg("path"), py::arg("parts"), py::arg("next_path"), py::arg("out_path"), py::arg("threads"),
+      py::arg("options"),
+      "`mhcontact table PATH --merge PARTS --next NEXT -o OUT`: (exit code, standard error); 5: the points of the "
+      "next pass written to NEXT, no table.");
   m.def("_fleet_units", [input_error](const std::string& path) {
         const auto units = guarded(input_error, [&] {
           const nlohmann::json j = mh::read_json_file(path);

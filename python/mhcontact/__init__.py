@@ -20,9 +20,9 @@ from ._core import _pair_rcf as _core_pair_rcf
 from ._core import _pair_subsurface as _core_pair_subsurface
 from ._core import _pair_pressure_grid as _core_pair_pressure_grid
 
-from .fleet import fleet, read_tables
+from .fleet import fleet, make_table, read_tables
 
-__all__ = ["fleet", "read_tables", "Pair", "Profile", "Table", "TableResult", "MAX_CONTACTS", "Wheelset", "InputError",
+__all__ = ["fleet", "make_table", "read_tables", "Pair", "Profile", "Table", "TableResult", "MAX_CONTACTS", "Wheelset", "InputError",
            "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES", "CASE_COLUMNS", "TANGENTIAL_COLUMNS", "INTERFACE_VERSION", "__version__",
            "abi_version", "fft_backend", "hertz_subsurface"]
 

@@ -191,3 +191,83 @@ def fleet(path, client=None, out_dir=None, shards=None, threads=1, digits=10, sp
         _place(files, dirs[k - 1])
     rc, err = _core._merge(dirs, out_dir)
     return {"out_dir": out_dir, "exit_code": rc, "shards": shards, "tables": _Tables(out_dir)}
+
+
+def _table_task(path, k, n, points, threads, options):
+    """One shard of one pass of making a contact table, on a worker: (k, exit code, standard
+    error, the shard file's bytes). `points`: the bytes of the pass's points file, which the
+    merge wrote on the client (None: the first round's points, the worker makes them itself)."""
+    import tempfile
+    points_path = ""
+    if points is not None:
+        fd, points_path = tempfile.mkstemp(prefix="mhcontact-table-points-", suffix=".json")
+        with _os.fdopen(fd, "wb") as f:
+            f.write(points)
+    try:
+        rc, err, data = _core._table_shard(path, k, n, points_path, threads, options)
+    finally:
+        if points_path:
+            _os.remove(points_path)
+    return k, rc, err, data
+
+
+def make_table(path, client=None, out_path=None, shards=None, threads=1, options=None):
+    """Make the contact table of case file `path` (docs/tables.md) with its solves as Dask tasks
+    on `client` (None: one after the other in this process) and write it to `out_path`
+    (required): each pass (the first round's points, then each refinement's) is `shards` tasks
+    (default: four per worker thread), each solving its slice of the pass's points as
+    `mhcontact table --shard K/N [--points NEXT]` does, in the worker process; this process
+    merges them (`--merge ... --next`) until the table is made, byte for byte the one-process
+    table. `options`: the command's options as a dict (refine, check, min_step_mm,
+    min_Q_step_kN, min_roll_step_mrad, tol_N, tol_pmax). Workers read the case file and the
+    profiles at the paths the client names; only the shard files travel back.
+    Returns {"out_path", "exit_code" (the command's: 0, or 1 with coarse cells or nodes without
+    an answer), "passes", "shards", "header" (the table's JSON header as a dict)}. Bad input
+    raises mhcontact.InputError with the command's message; a task that fails raises
+    RuntimeError naming its shard and pass."""
+    import json
+    import shutil
+    if out_path is None:
+        raise ValueError("out_path: give the table file to write")
+    path, out_path = _os.path.abspath(path), _os.path.abspath(str(out_path))
+    options = dict(options or {})
+    shards = max(1, min(int(shards) if shards is not None else 4 * _worker_slots(client), 100000))
+    parts_dir = out_path + ".parts"
+    next_path = out_path + ".next.json"
+    _os.makedirs(parts_dir, exist_ok=True)
+    parts, points, passes = [], None, 0
+    try:
+        while True:
+            if client is None:
+                results = [_table_task(path, k, shards, points, threads, options) for k in range(1, shards + 1)]
+            else:
+                tag = _os.urandom(4).hex()
+                futures = [client.submit(_table_task, path, k, shards, points, threads, options, pure=False,
+                                         key="mhcontact-table-pass%d-shard-%d-of-%d-%s" % (passes, k, shards, tag))
+                           for k in range(1, shards + 1)]
+                results = client.gather(futures)
+            for k, rc, err, data in results:
+                if rc != 0:
+                    raise RuntimeError("table shard %d/%d of pass %d: exit %d: %s" % (k, shards, passes, rc, err.strip()))
+                part = _os.path.join(parts_dir, "pass%d-%d.json" % (passes, k))
+                with open(part, "wb") as f:
+                    f.write(data)
+                parts.append(part)
+            rc, err = _core._table_merge(path, parts, next_path, out_path, threads, options)
+            passes += 1
+            if rc != 5:
+                break
+            with open(next_path, "rb") as f:
+                asked = f.read()
+            if asked == points:  # the pass's parts did not hold its points: a loop, not progress
+                raise RuntimeError("table merge: pass %d's points asked again (%s)" % (passes, next_path))
+            points = asked
+    finally:
+        shutil.rmtree(parts_dir, ignore_errors=True)
+        if _os.path.exists(next_path):
+            _os.remove(next_path)
+    if rc not in (0, 1):
+        raise RuntimeError("table merge: exit %d: %s" % (rc, err.strip()))
+    with open(out_path) as f:
+        header = json.loads(f.readline()[2:])
+    return {"out_path": out_path, "exit_code": rc, "passes": passes, "shards": shards, "header": header}

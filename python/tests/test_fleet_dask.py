@@ -153,3 +153,30 @@ def test_the_documented_dask_settings_reach_the_workers():
     assert out.returncode == 0, out.stderr
     got = json.loads(out.stdout.strip().splitlines()[-1])
     assert got == keys, (got, keys)
+
+
+def test_table_on_dask_equals_the_command(client, tmp_path):
+    """mhcontact.make_table (docs/cluster.md "Dask: contact tables"): a table refined in Q, so made
+    in several passes, each pass's solves as Dask tasks on the two workers, merged here: the file
+    is byte for byte the command's; the same with options; a bad option named."""
+    import json
+    case = json.load(open(os.path.join(SRC, "tests", "data", "tables", "worn-table-q.json")))
+    for side in ("wheel", "rail"):
+        case[side]["profile"] = os.path.join(SRC, "tests", "data", "tables", case[side]["profile"])
+    path = str(tmp_path / "q.json")
+    json.dump(case, open(path, "w"))
+    single = str(tmp_path / "single.csv")
+    assert subprocess.run([BINARY, "table", path, "-o", single, "-q", "--threads", "1"]).returncode == 0
+    res = mhcontact.make_table(path, client, tmp_path / "dask.csv", shards=3)
+    assert res["exit_code"] == 0 and res["passes"] >= 2 and res["shards"] == 3
+    assert filecmp.cmp(single, res["out_path"], shallow=False)
+    assert res["header"]["Q_kN_nodes"] == json.loads(open(single).readline()[2:])["Q_kN_nodes"]
+    assert not os.path.exists(res["out_path"] + ".parts") and not os.path.exists(res["out_path"] + ".next.json")
+    # Options as the command's: no refinement.
+    flat = str(tmp_path / "flat.csv")
+    assert subprocess.run([BINARY, "table", path, "-o", flat, "-q", "--refine", "0"]).returncode == 1
+    res = mhcontact.make_table(path, client, tmp_path / "dask-flat.csv", shards=2, options={"refine": 0})
+    assert res["exit_code"] == 1 and res["passes"] == 1
+    assert filecmp.cmp(flat, res["out_path"], shallow=False)
+    with pytest.raises(TypeError, match="unknown key 'refines'"):
+        mhcontact.make_table(path, client, tmp_path / "x.csv", options={"refines": 0})
