@@ -10,19 +10,7 @@ bin=$1; src=$2
 here=$(cd "$(dirname "$0")" && pwd)
 # shellcheck source=tests/cluster/slurm_cluster.sh
 source "$here/slurm_cluster.sh"
-tmp=$(mktemp -d)
-cleanup() {
-  [ -n "${SLURM_CONF:-}" ] && scancel --quiet --full "--user=$(id -un)" 2>/dev/null || true
-  slurm_stop
-  [ -n "${KEEP_TMP:-}" ] || rm -rf "$tmp"
-}
-trap cleanup EXIT
-rc=0; slurm_start "$tmp/slurm" || rc=$?
-if [ $rc -eq 77 ]; then
-  echo "SKIP: Slurm is not installed (Debian packages slurm-wlm and munge: bash scripts/deps.sh installs them)"
-  exit 77
-fi
-[ $rc -eq 0 ] || { echo "slurm.sh: could not start the test cluster" >&2; exit 1; }
+slurm_test_begin slurm.sh
 
 fleet=$src/cases/fleet.json
 mkdir -p "$tmp/logs"

@@ -95,3 +95,25 @@ slurm_stop() {
   done
   slurm_pids=()
 }
+
+# For a test script: a scratch directory $tmp, the private cluster started in it, and on exit
+# its jobs cancelled, its daemons stopped and $tmp removed (kept with KEEP_TMP=1). Exits 77 (CTest:
+# skipped) when slurm-wlm and munge are not installed, 1 when the cluster does not start; $1
+# names the script in that message.
+slurm_test_begin() {
+  tmp=$(mktemp -d)
+  trap slurm_test_cleanup EXIT
+  local rc=0
+  slurm_start "$tmp/slurm" || rc=$?
+  if [ $rc -eq 77 ]; then
+    echo "SKIP: Slurm is not installed (Debian packages slurm-wlm and munge: bash scripts/deps.sh installs them)"
+    exit 77
+  fi
+  [ $rc -eq 0 ] || { echo "$1: could not start the test cluster" >&2; exit 1; }
+}
+
+slurm_test_cleanup() {
+  [ -n "${SLURM_CONF:-}" ] && scancel --quiet --full "--user=$(id -un)" 2>/dev/null || true
+  slurm_stop
+  [ -n "${KEEP_TMP:-}" ] || rm -rf "$tmp"
+}

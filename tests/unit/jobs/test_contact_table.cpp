@@ -19,6 +19,7 @@
 #include "input/contact_table.hpp"
 #include "jobs/contact_table_make.hpp"
 #include "jobs/run.hpp"
+#include "support/table_fixture.hpp"
 #include "wheelset_contact/wheelset_contact.hpp"
 
 namespace {
@@ -215,13 +216,10 @@ TEST_CASE("table of a worn measured pair: N within 1 % of Q and pmax within 3 % 
   // The done-when pair (worn_high_mileage on site_b_hr, docs/tables.md) at the default spacing
   // of docs/tables.md (t_Y 1 mm, Q 40 kN), checked at points off the cell centres the maker
   // measured and refined on: quarter points in t_Y, 0.3 of the cell in Q.
-  const CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/worn-table.json", true);
-  const PairGeometry pg = build_pair_geometry(cf);
-  std::ostringstream err;
-  TableMakeOptions opt;
-  opt.threads = 2;
-  opt.quiet = true;
-  const TableMade made = make_contact_table(cf, pg, opt, err);
+  const test::TestTable tab("worn-table.json");
+  const CaseFile& cf = tab.cf;
+  const PairGeometry& pg = tab.pg;
+  const TableMade& made = tab.made;
   CHECK(made.data.header["coarse_cells"].empty());
   const ContactTableLookup look(made.data);
   TableAnswer a;
@@ -339,14 +337,9 @@ TEST_CASE("a wheelset from two pair tables: lookups at t_Y = +y (left) and -y (r
   // within the table's tolerance of N (1 % of that wheel's Q). Broken on purpose (the right
   // wheel looked up at t_Y = +y): the right wheel's Fy missed at 4 of its 6 points, by up to
   // 3.1 % of Q, and this failed.
-  const CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/worn-table.json", true);
-  const PairGeometry pg = build_pair_geometry(cf);
-  std::ostringstream err;
-  TableMakeOptions opt;
-  opt.threads = 2;
-  opt.quiet = true;
-  const ContactTableLookup look(make_contact_table(cf, pg, opt, err).data);
-  const WheelsetContact ws(pg.geo, pg.geo, cf.track, cf.material, cf.method_options(), {});
+  const test::TestTable tab("worn-table.json");
+  const ContactTableLookup look(tab.made.data);
+  const WheelsetContact ws(tab.pg.geo, tab.pg.geo, tab.cf.track, tab.cf.material, tab.cf.method_options(), {});
   WheelsetWorkspace work;
   WheelsetResult r;
   TableAnswer a;

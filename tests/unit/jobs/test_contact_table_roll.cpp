@@ -20,6 +20,7 @@
 #include "jobs/contact_table_make.hpp"
 #include "jobs/contact_table_shards.hpp"
 #include "jobs/run.hpp"
+#include "support/table_fixture.hpp"
 #include "wheelset_contact/wheelset_contact.hpp"
 
 namespace {
@@ -178,13 +179,10 @@ TEST_CASE("table of a worn measured pair over ±3 mrad of roll: N within 1 % of 
   // 140 kN (40 kN), roll −3 ... 3 mrad (1 mrad): the maker measures and refines at cell centres;
   // this test checks at other points: t_Y at quarter points, Q at 0.3 of a cell, the roll at a
   // quarter of a roll cell, each against a direct strip solve of the wheel rolled by that roll.
-  const CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/worn-table-roll.json", true);
-  const PairGeometry pg = build_pair_geometry(cf);
-  std::ostringstream err;
-  TableMakeOptions opt;
-  opt.threads = 2;
-  opt.quiet = true;
-  const TableMade made = make_contact_table(cf, pg, opt, err);
+  const test::TestTable tab("worn-table-roll.json");
+  const CaseFile& cf = tab.cf;
+  const PairGeometry& pg = tab.pg;
+  const TableMade& made = tab.made;
   REQUIRE(made.data.nR() >= 7);
   CHECK(made.data.header["coarse_cells"].empty());
   const ContactTableLookup look(made.data);
@@ -264,14 +262,9 @@ TEST_CASE("a rolled wheelset from two pair tables with a roll axis: each wheel l
   // The worn measured pair on both sides (one roll table serves both) against the wheelset call by
   // the strip method, loads given (60 and 95 kN), the roll given (−2.5 and +1.5 mrad): each
   // wheel's Fy and Fz (pair frame) within 1 % of its load.
-  const CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/worn-table-roll.json", true);
-  const PairGeometry pg = build_pair_geometry(cf);
-  std::ostringstream err;
-  TableMakeOptions opt;
-  opt.threads = 2;
-  opt.quiet = true;
-  const ContactTableLookup look(make_contact_table(cf, pg, opt, err).data);
-  const WheelsetContact ws(pg.geo, pg.geo, cf.track, cf.material, cf.method_options(), {});
+  const test::TestTable tab("worn-table-roll.json");
+  const ContactTableLookup look(tab.made.data);
+  const WheelsetContact ws(tab.pg.geo, tab.pg.geo, tab.cf.track, tab.cf.material, tab.cf.method_options(), {});
   WheelsetWorkspace work;
   WheelsetResult r;
   TableAnswer a, up;
