@@ -448,6 +448,55 @@ MHC_API mhc_error mhc_table_lookup_rolled(const mhc_table* t, double tY_m, doubl
                                           mhc_table_result* out);
 MHC_API void mhc_table_free(mhc_table* t);
 
+/* ---- wheelset tables (docs/tables.md "A wheelset table") ----------------------------------------
+ * The tables of a wheelset's two pairs in one file (`mhcontact table-wheelset LEFT.csv RIGHT.csv`)
+ * with where each pair sits in the wheelset; the lookup places both wheels from the wheelset's
+ * lateral displacement y and roll as the wheelset call does (wheel s, sigma +1 left and -1 right:
+ * its roll against the rail delta = sigma roll, t_Y = sigma y + a (cos delta - 1) + (z0 + R0) sin
+ * delta), looks each pair up at its own load, and sums the normal forces on the wheelset in the
+ * track frame (x forward, y towards the left rail, z up; moments about the axle centre as the
+ * wheelset call's). Normal contact only: no creep forces. Lookups allocate nothing; a table may
+ * be shared by any number of threads. Interface version 3. */
+typedef struct mhc_wheelset_table mhc_wheelset_table;
+
+/** The answer at one wheelset pose. Caller-owned: set struct_size = sizeof(mhc_wheelset_table_result). */
+typedef struct mhc_wheelset_table_result {
+  size_t struct_size;
+  int32_t status;               /**< mhc_status: the worse of the two wheels' */
+  int32_t reserved;
+  double y_m;                   /**< the pose asked */
+  double roll_rad;
+  double Fy_N;                  /**< both wheels' normal forces on the wheelset, track y */
+  double Fz_N;                  /**< ... track z */
+  double Mx_Nm;                 /**< their moment about x about the axle centre */
+  double dFy_dy_N_per_m;        /**< dFy/dy through both placements (chain rule, table slopes) */
+  double dFy_droll_N_per_rad;   /**< dFy/droll: through t_Y and the tables' roll axes */
+  double wheel_Fy_N[2];         /**< per wheel (0 left, 1 right), track frame */
+  double wheel_Fz_N[2];
+  double wheel_Mx_Nm[2];
+  double wheel_dFy_dy_N_per_m[2];
+  double wheel_dFy_droll_N_per_rad[2];
+  double wheel_dFy_dQ[2];       /**< [-] dFy/dQ_left (wheel 0), dFy/dQ_right (wheel 1) */
+  mhc_table_result wheel[2];    /**< each pair's answer at its placed t_Y (tY_m) and roll (roll_rad), pair frame */
+} mhc_wheelset_table_result;
+
+/** Read a wheelset table file (MHC_ERR_INPUT with the file, line and rule when it is not one). */
+MHC_API mhc_error mhc_wheelset_table_read(const char* path, mhc_wheelset_table** out);
+/** The wheelset table's own JSON header (sources with checksums, placements, ranges); valid while
+ *  the table lives. NULL for a null table. */
+MHC_API const char* mhc_wheelset_table_header(const mhc_wheelset_table* t);
+/** Node ranges of side s's pair table (0 left, 1 right) [m], [N], [rad]; any pointer may be NULL.
+ *  The wheel's t_Y at the wheelset's y is sigma y (plus the roll's shift). */
+MHC_API mhc_error mhc_wheelset_table_pair_range(const mhc_wheelset_table* t, int32_t side, double* tY_min_m,
+                                                double* tY_max_m, double* Q_min_N, double* Q_max_N,
+                                                double* roll_min_rad, double* roll_max_rad);
+/** The answer at the wheelset's y_m, roll_rad (positive raising the left wheel) and the wheels'
+ *  vertical loads into *out (out->struct_size must be set). A wheel outside its table: status
+ *  out_of_range for the wheelset (that wheel's answer has no contacts; not an error). */
+MHC_API mhc_error mhc_wheelset_table_lookup(const mhc_wheelset_table* t, double y_m, double roll_rad,
+                                            double Q_left_N, double Q_right_N, mhc_wheelset_table_result* out);
+MHC_API void mhc_wheelset_table_free(mhc_wheelset_table* t);
+
 /* ---- the wheelset call (docs/c-api.md "The wheelset call") ------------------------------------
  * Both wheels of a rigid wheelset on their rails, one call per time step: the pose and the
  * velocities in, per wheel and per wheelset the forces in track coordinates, the statuses, the
@@ -469,9 +518,9 @@ MHC_API void mhc_table_free(mhc_table* t);
 /** The interface version of this header: 1 = up to the warnings accessors; 2 = the wheelset
  *  call, mhc_interface_version, mhc_solve_many_warnings, the creep forces (mhc_pair_set_tangential,
  *  mhc_result_tangential), the contact tables (mhc_table_*), the RCF accessors (mhc_result_rcf,
- *  mhc_hertz_subsurface) and the grids (mhc_workspace_keep_grids, mhc_result_grid). Negotiate at
- *  run time with mhc_interface_version(). */
-#define MHC_INTERFACE_VERSION 2
+ *  mhc_hertz_subsurface) and the grids (mhc_workspace_keep_grids, mhc_result_grid); 3 = the
+ *  wheelset tables (mhc_wheelset_table_*). Negotiate at run time with mhc_interface_version(). */
+#define MHC_INTERFACE_VERSION 3
 
 /** The newest interface version the library implements (its return) and, in *oldest when not
  *  NULL, the oldest it still serves. A caller built against MHC_INTERFACE_VERSION v may use the

@@ -86,6 +86,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   add_wheelset_command(app, ctx);
   add_table_command(app, ctx);
   add_table_export_command(app, ctx);
+  add_table_wheelset_command(app, ctx);
   add_hertz_command(app, ctx);
   add_diff_command(app, ctx);
 

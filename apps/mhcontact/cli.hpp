@@ -36,5 +36,6 @@ void add_merge_command(CLI::App& app, CliContext& ctx);              // merge
 void add_wheelset_command(CLI::App& app, CliContext& ctx);           // wheelset
 void add_table_command(CLI::App& app, CliContext& ctx);               // table
 void add_table_export_command(CLI::App& app, CliContext& ctx);        // table-export
+void add_table_wheelset_command(CLI::App& app, CliContext& ctx);      // table-wheelset
 
 }  // namespace mh

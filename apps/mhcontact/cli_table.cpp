@@ -10,6 +10,7 @@
 #include "jobs/contact_table_export.hpp"
 #include "jobs/contact_table_make.hpp"
 #include "jobs/contact_table_shards.hpp"
+#include "jobs/wheelset_table_make.hpp"
 
 namespace mh {
 
@@ -82,6 +83,21 @@ void add_table_export_command(CLI::App& app, CliContext& ctx) {
       ->check(CLI::Range(0.01, 10000.0))->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "No summary on standard error");
   cmd->callback([o, &ctx] { ctx.exit_code = table_export_job(o->table, o->ex, o->out, ctx.out, ctx.err, o->quiet); });
+}
+
+void add_table_wheelset_command(CLI::App& app, CliContext& ctx) {
+  struct Opts { std::string left, right, out; bool quiet = false; };
+  auto o = std::make_shared<Opts>();
+  CLI::App* cmd = app.add_subcommand(
+      "table-wheelset", "A wheelset table: the contact tables of the left and the right wheel's pair (each made by "
+                        "`mhcontact table`, with the wheelset's flange-back distance) in one file, read by "
+                        "mhc_wheelset_table_read / mhcontact.WheelsetTable, whose lookup places both wheels from the "
+                        "wheelset's y and roll (docs/tables.md \"A wheelset table\").");
+  cmd->add_option("left", o->left, "The left wheel's pair table")->required();
+  cmd->add_option("right", o->right, "The right wheel's pair table (may be the same file)")->required();
+  cmd->add_option("-o,--output", o->out, "Wheelset table to write (- for standard output)")->required();
+  cmd->add_flag("-q,--quiet", o->quiet, "No summary on standard error");
+  cmd->callback([o, &ctx] { ctx.exit_code = wheelset_table_job(o->left, o->right, o->out, ctx.out, ctx.err, o->quiet); });
 }
 
 }  // namespace mh

@@ -108,22 +108,33 @@ void pchip_slopes(const double* x, std::size_t n, const double* f, std::size_t s
 ContactTableData read_contact_table(const std::string& path, const char* schema) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "cannot open the table file", "check the path");
+  std::size_t ln = 0;
+  ContactTableData t = read_contact_table(in, path, ln, schema);
+  if (in.peek() != std::char_traits<char>::eof())
+    throw InputError(at_line(path, ln + 1), "", "a second header line: this file holds more than one table",
+                     "a wheelset table (two sections) is read by read_wheelset_table / mhc_wheelset_table_read");
+  return t;
+}
+
+ContactTableData read_contact_table(std::istream& in, const std::string& path, std::size_t& ln, const char* schema) {
   ContactTableData t;
   std::string line;
-  std::size_t ln = 0;
+  const std::size_t hl = ln + 1;  // the header's line
   if (!std::getline(in, line) || line.size() < 2 || line[0] != '#')
-    throw InputError(at_line(path, 1), "", "a contact table starts with its JSON header line `# {...}`",
+    throw InputError(at_line(path, hl), "", "a contact table starts with its JSON header line `# {...}`",
                      "write it with `mhcontact table CASE.json -o FILE`");
   ++ln;
   try {
     t.header = nlohmann::json::parse(line.substr(1));
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(at_line(path, 1), "", std::string("the JSON header does not parse: ") + e.what());
+    throw InputError(at_line(path, hl), "", std::string("the JSON header does not parse: ") + e.what());
   }
   if (!t.header.is_object() || t.header.value("schema", std::string()) != schema)
-    throw InputError(at_line(path, 1), t.header.is_object() ? t.header.value("schema", std::string("(none)")) : "",
+    throw InputError(at_line(path, hl), t.header.is_object() ? t.header.value("schema", std::string("(none)")) : "",
                      std::string("the header's schema must be ") + schema,
-                     "a table of another version: regenerate it with this mhcontact");
+                     t.header.is_object() && t.header.value("schema", std::string()) == "mhcontact.wheelset-table/1"
+                         ? "a wheelset table (two pairs' tables): give one pair's table, as `mhcontact table` wrote it"
+                         : "a table of another version: regenerate it with this mhcontact");
   try {
     for (double v : t.header.at("tY_mm_nodes").get<std::vector<double>>()) t.tY.push_back(v * 1e-3);
     for (double v : t.header.at("Q_kN_nodes").get<std::vector<double>>()) t.Q.push_back(v * 1e3);
@@ -131,19 +142,19 @@ ContactTableData read_contact_table(const std::string& path, const char* schema)
     for (double v : t.header.at("roll_mrad_nodes").get<std::vector<double>>()) t.roll.push_back(v * 1e-3);
     t.n_tracks = t.header.at("tracks").get<int>();
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(at_line(path, 1), "",
+    throw InputError(at_line(path, hl), "",
                      std::string("header: tY_mm_nodes, Q_kN_nodes, roll_mrad_nodes and tracks are required: ") + e.what());
   }
   const std::size_t nT = t.nT(), nQ = t.nQ(), nR = t.nR();
   if (nT < 2 || nQ < 2 || nR < 1 || t.n_tracks < 1 || t.n_tracks > 1000)
-    throw InputError(at_line(path, 1), "", "header: at least 2 t_Y nodes, 2 Q nodes, 1 roll node and 1 to 1000 tracks");
+    throw InputError(at_line(path, hl), "", "header: at least 2 t_Y nodes, 2 Q nodes, 1 roll node and 1 to 1000 tracks");
   for (std::size_t i = 1; i < nT; ++i)
-    if (!(t.tY[i] > t.tY[i - 1])) throw InputError(at_line(path, 1), "", "header: tY_mm_nodes must increase");
+    if (!(t.tY[i] > t.tY[i - 1])) throw InputError(at_line(path, hl), "", "header: tY_mm_nodes must increase");
   for (std::size_t j = 1; j < nQ; ++j)
-    if (!(t.Q[j] > t.Q[j - 1])) throw InputError(at_line(path, 1), "", "header: Q_kN_nodes must increase");
+    if (!(t.Q[j] > t.Q[j - 1])) throw InputError(at_line(path, hl), "", "header: Q_kN_nodes must increase");
   for (std::size_t m = 1; m < nR; ++m)
     if (!(t.roll[m] > t.roll[m - 1] + kTableRollTolerance))
-      throw InputError(at_line(path, 1), "", "header: roll_mrad_nodes must increase");
+      throw InputError(at_line(path, hl), "", "header: roll_mrad_nodes must increase");
   const std::size_t nk = static_cast<std::size_t>(t.n_tracks), nn = nR * nT * nQ;
   t.node_status.assign(nn, CaseStatus::Ok);
   t.present.assign(nn * nk, 0);
@@ -152,21 +163,22 @@ ContactTableData read_contact_table(const std::string& path, const char* schema)
   if (t.header.contains("coarse_cells"))
     for (const auto& c : t.header["coarse_cells"]) {
       if (!c.is_array() || c.size() != 3)
-        throw InputError(at_line(path, 1), c.dump(), "header: a coarse cell is [i, j, m] (t_Y, Q and roll cell)");
+        throw InputError(at_line(path, hl), c.dump(), "header: a coarse cell is [i, j, m] (t_Y, Q and roll cell)");
       const auto i = c.at(0).get<std::size_t>(), j = c.at(1).get<std::size_t>(), m = c.at(2).get<std::size_t>();
       if (i + 1 >= nT || j + 1 >= nQ || m >= t.nRc())
-        throw InputError(at_line(path, 1), c.dump(), "header: coarse_cells index outside the grid");
+        throw InputError(at_line(path, hl), c.dump(), "header: coarse_cells index outside the grid");
       t.cell_coarse[t.cell(m, i, j)] = 1;
     }
   // The column line.
   std::string expect = "tY_mm,Q_kN,roll_mrad,status,contact,present";
   for (const TableColumn& c : kTableColumns) expect += std::string(",") + c.name;
-  if (!std::getline(in, line)) throw InputError(at_line(path, 2), "", "the column line is missing");
+  if (!std::getline(in, line)) throw InputError(at_line(path, hl + 1), "", "the column line is missing");
   ++ln;
   if (!line.empty() && line.back() == '\r') line.pop_back();
-  if (line != expect) throw InputError(at_line(path, 2), line, "the columns must be " + expect);
+  if (line != expect) throw InputError(at_line(path, hl + 1), line, "the columns must be " + expect);
   std::size_t rows = 0;
-  while (std::getline(in, line)) {
+  // Rows up to the end of the file or the next section's header line.
+  while (in.peek() != '#' && std::getline(in, line)) {
     ++ln;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
@@ -197,7 +209,7 @@ ContactTableData read_contact_table(const std::string& path, const char* schema)
     ++rows;
   }
   if (rows != nn * nk)
-    throw InputError(path, std::to_string(rows) + " rows", "a table has one row per node and contact: " +
+    throw InputError(at_line(path, ln), std::to_string(rows) + " rows", "a table has one row per node and contact: " +
                      std::to_string(nn * nk), "the file is truncated: regenerate it");
   return t;
 }

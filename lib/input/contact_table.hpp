@@ -15,6 +15,7 @@
 // puts a zero slope, so a contact appearing between nodes grows from zero force without a step.
 #include <array>
 #include <cstdint>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,11 @@ struct ContactTableData {
 /// or with kContactTableExportSchema its export: the same layout). Throws InputError naming the
 /// file and line.
 ContactTableData read_contact_table(const std::string& path, const char* schema = kContactTableSchema);
+/// One table section of a stream: its header line, column line and rows up to the end or the
+/// next line starting with '#' (a wheelset table's next section). `ln` counts the lines read
+/// (for the messages: `path` line ln + 1 is the header).
+ContactTableData read_contact_table(std::istream& in, const std::string& path, std::size_t& ln,
+                                    const char* schema = kContactTableSchema);
 
 /// At most this many contacts in a lookup answer (the C interface's MHC_MAX_CONTACTS).
 constexpr int kTableMaxContacts = 6;

@@ -400,6 +400,16 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   h["model"] = to_string(cf.model);
   h["inputs"] = inputs_json(cf);
   h["profiles"] = profiles_json(pg);
+  // Where the pair sits in a wheelset (the wheelset call's placement, wheelset_contact.cpp
+  // place()): the taping line a from the wheelset centre, the axle centre z0 + R0 above the
+  // wheel profile's origin, the rail origin c from the track centre. A wheelset table
+  // (wheelset_table.hpp) places each wheel by them: t_Y = σ y + a (cos δ − 1) + (z0 + R0) sin δ.
+  {
+    const double a = cf.track.flange_back_distance / 2 - cf.track.flange_back_position;
+    h["wheelset_placement"] = {{"a_mm", a * 1e3},
+                               {"axle_height_mm", (pg.geo.wheel_z0 + pg.geo.nominal_radius) * 1e3},
+                               {"rail_offset_mm", (a - pg.geo.y_offset) * 1e3}};
+  }
   h["tY_mm_nodes"] = g.tY;
   h["Q_kN_nodes"] = g.Q;
   h["roll_mrad_nodes"] = g.roll;

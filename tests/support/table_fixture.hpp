@@ -12,10 +12,13 @@
 namespace mh::test {
 
 /// Made in place (the pair's geometry is not moved): `name` a file of tests/data/tables, e.g.
-/// `const TestTable t("worn-table.json");`.
+/// `const TestTable t("worn-table.json");`, or a path from the source tree's root with a '/'
+/// (`"cases/s1002-60e1-roll-table.json"`).
 struct TestTable {
   explicit TestTable(const std::string& name)
-      : cf(load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/tests/data/tables/" + name, true)),
+      : cf(load_case_file(std::string(MHCONTACT_SOURCE_DIR) +
+                              (name.find('/') == std::string::npos ? "/tests/data/tables/" : "/") + name,
+                          true)),
         pg(build_pair_geometry(cf)),
         made(make(cf, pg)) {}
   TestTable(const TestTable&) = delete;

@@ -16,6 +16,7 @@
 
 #include "cli.hpp"
 #include "input/contact_table.hpp"
+#include "input/wheelset_table.hpp"
 
 TEST_CASE("C interface: a contact table read and looked up as the C++ lookup", "[tables][capi]") {
   const std::string path = "/tmp/mhcontact_capi_table_" + std::to_string(::getpid()) + ".csv";
@@ -152,6 +153,54 @@ TEST_CASE("C interface: a table with a roll axis, looked up at a roll as the C++
   REQUIRE(mhc_table_lookup_rolled(t, 0.3e-3, 70e3, 1e-3, o) == MHC_OK);
   CHECK(o->n_contacts == 1);
   for (std::size_t b = offsetof(mhc_table_result, roll_rad); b < old.size(); ++b) REQUIRE(old[b] == 0xAB);
+
+  // The wheelset table of this pair on both sides (`mhcontact table-wheelset`): its lookup equals
+  // the C++ one, each wheel's answer that of its pair's table at its placed t_Y and roll.
+  const std::string wpath = path + ".wheelset.csv";
+  REQUIRE(mh::run_cli({"table-wheelset", path, path, "-o", wpath, "-q"}, out, err) == 0);
+  mhc_wheelset_table* w = nullptr;
+  REQUIRE(mhc_wheelset_table_read(wpath.c_str(), &w) == MHC_OK);
+  CHECK(std::string(mhc_wheelset_table_header(w)).find("\"schema\":\"mhcontact.wheelset-table/1\"") != std::string::npos);
+  const mh::WheelsetTableLookup wl(mh::read_wheelset_table(wpath));
+  mhc_wheelset_table_result wr;
+  wr.struct_size = sizeof wr;
+  mh::WheelsetTableAnswer wa;
+  for (double y : {-1.3e-3, 0.4e-3})
+    for (double roll : {-1.1e-3, 0.7e-3}) {
+      REQUIRE(mhc_wheelset_table_lookup(w, y, roll, 70e3, 85e3, &wr) == MHC_OK);
+      wl.lookup({y, roll, 70e3, 85e3}, wa);
+      CHECK(wr.status == MHC_STATUS_OK);
+      CHECK(wr.Fy_N == wa.Fy);
+      CHECK(wr.Mx_Nm == wa.Mx);
+      CHECK(wr.dFy_droll_N_per_rad == wa.dFy_droll);
+      CHECK(wr.wheel_dFy_dQ[1] == wa.wheel[1].dFy_dQ);
+      for (int s = 0; s < 2; ++s) {
+        CHECK(wr.wheel[s].tY_m == wa.wheel[static_cast<std::size_t>(s)].tY);
+        CHECK(wr.wheel[s].roll_rad == (s == 0 ? roll : -roll));
+        REQUIRE(mhc_table_lookup_rolled(t, wr.wheel[s].tY_m, s == 0 ? 70e3 : 85e3, wr.wheel[s].roll_rad, &r) == MHC_OK);
+        CHECK(wr.wheel[s].contact[0].p_max_Pa == r.contact[0].p_max_Pa);
+        CHECK(wr.wheel[s].d_droll[0].N_N == r.d_droll[0].N_N);
+        CHECK(wr.wheel_Fy_N[s] == (s == 0 ? -1 : 1) * r.Fy_N);
+      }
+    }
+  // Beyond the wheels' tables (t_Y −2 … 2 mm): out_of_range, not an error.
+  REQUIRE(mhc_wheelset_table_lookup(w, 2.5e-3, 0.0, 70e3, 85e3, &wr) == MHC_OK);
+  CHECK(wr.status == MHC_STATUS_OUT_OF_RANGE);
+  CHECK(wr.wheel[0].status == MHC_STATUS_OUT_OF_RANGE);
+  CHECK(wr.wheel[0].n_contacts == 0);
+  double lo = 0, hi = 0;
+  REQUIRE(mhc_wheelset_table_pair_range(w, 1, &lo, &hi, nullptr, nullptr, nullptr, nullptr) == MHC_OK);
+  CHECK(hi == Approx(2e-3));
+  CHECK(mhc_wheelset_table_pair_range(w, 2, &lo, &hi, nullptr, nullptr, nullptr, nullptr) == MHC_ERR_ARGUMENT);
+  wr.struct_size = sizeof wr - 8;
+  CHECK(mhc_wheelset_table_lookup(w, 0.0, 0.0, 70e3, 85e3, &wr) == MHC_ERR_ARGUMENT);
+  CHECK(std::string(mhc_last_message()).find("sizeof(mhc_wheelset_table_result)") != std::string::npos);
+  mhc_wheelset_table* bad = nullptr;
+  CHECK(mhc_wheelset_table_read(path.c_str(), &bad) == MHC_ERR_INPUT);
+  CHECK(bad == nullptr);
+  CHECK(std::string(mhc_last_message()).find("one pair's table") != std::string::npos);
+  mhc_wheelset_table_free(w);
+  std::remove(wpath.c_str());
   mhc_table_free(t);
   std::remove(path.c_str());
 }

@@ -3,7 +3,8 @@
 // values and d/droll continuous across roll nodes), a table without a roll axis asked at another
 // roll, the file round trip of a three-axis table, and the interpolation error of a worn measured
 // pair's table over ±3 mrad against direct strip solves of the rolled wheel at points that were
-// not used to make or refine it, its shards, and a rolled wheelset from two such tables.
+// not used to make or refine it, and its shards (a rolled wheelset from such tables:
+// test_wheelset_table.cpp).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -21,7 +22,6 @@
 #include "jobs/contact_table_shards.hpp"
 #include "jobs/run.hpp"
 #include "support/table_fixture.hpp"
-#include "wheelset_contact/wheelset_contact.hpp"
 
 namespace {
 
@@ -254,49 +254,4 @@ TEST_CASE("table shards with a roll axis: the merged table is byte for byte the 
   for (const auto& p : parts) std::remove(p.c_str());
   std::remove((dir + "-one.csv").c_str());
   std::remove((dir + "-merged.csv").c_str());
-}
-
-TEST_CASE("a rolled wheelset from two pair tables with a roll axis: each wheel looked up at its pair's t_Y and roll", "[tables]") {
-  // docs/tables.md "Roll": a table-driven wheelset looks each wheel's pair up at that pair's pose
-  // as the wheelset call places it: t_Y (σ y and the roll's shift) and the relative roll δ = σ φ.
-  // The worn measured pair on both sides (one roll table serves both) against the wheelset call by
-  // the strip method, loads given (60 and 95 kN), the roll given (−2.5 and +1.5 mrad): each
-  // wheel's Fy and Fz (pair frame) within 1 % of its load.
-  const test::TestTable tab("worn-table-roll.json");
-  const ContactTableLookup look(tab.made.data);
-  const WheelsetContact ws(tab.pg.geo, tab.pg.geo, tab.cf.track, tab.cf.material, tab.cf.method_options(), {});
-  WheelsetWorkspace work;
-  WheelsetResult r;
-  TableAnswer a, up;
-  WheelsetPose pose;
-  pose.Q_left = 60e3;
-  pose.Q_right = 95e3;
-  pose.solve_roll = false;
-  int compared = 0;
-  double worst = 0, worst_upright = 0;
-  for (double roll_mrad : {-2.5, 1.5})
-    for (double y_mm = -5.3; y_mm < 6; y_mm += 1.9) {
-      pose.y = y_mm * 1e-3;
-      pose.roll = roll_mrad * 1e-3;
-      ws.step(pose, WheelsetStepOptions(), r, work);
-      for (const WheelResult* w : {&r.left, &r.right}) {
-        const double Q = w == &r.left ? pose.Q_left : pose.Q_right;
-        INFO("y = " << y_mm << " mm, roll " << roll_mrad << " mrad, " << (w == &r.left ? "left" : "right")
-                    << " wheel: t_Y = " << w->tY * 1e3 << " mm, δ = " << w->delta * 1e3 << " mrad");
-        REQUIRE(w->r.status == CaseStatus::Ok);
-        CHECK(w->delta == Approx(w->side * pose.roll).epsilon(1e-12));
-        look.lookup(w->tY, Q, w->delta, a);
-        REQUIRE(a.status == CaseStatus::Ok);
-        CHECK(std::fabs(a.Fy - w->r.Fy) / Q < 0.01);
-        CHECK(std::fabs(a.Fz - Q) / Q < 0.01);
-        worst = std::max(worst, std::fabs(a.Fy - w->r.Fy) / Q);
-        // The upright placement (t_Y = σ y, no roll) for comparison.
-        look.lookup(w->side * pose.y, Q, 0.0, up);
-        if (up.status == CaseStatus::Ok) worst_upright = std::max(worst_upright, std::fabs(up.Fy - w->r.Fy) / Q);
-        ++compared;
-      }
-    }
-  CHECK(compared == 24);
-  WARN("rolled wheelset from the roll table: Fy within " << 100 * worst << " % of Q; looked up upright at t_Y = σ y: "
-                                                         << 100 * worst_upright << " %");
 }
