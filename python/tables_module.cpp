@@ -23,6 +23,21 @@ struct Table {
   ~Table() { mhc_table_free(t); }
 };
 
+struct WheelsetTable {
+  mhc_wheelset_table* t = nullptr;
+  ~WheelsetTable() { mhc_wheelset_table_free(t); }
+};
+
+// The answer of WheelsetTable.lookup_into, reused from call to call.
+struct WheelsetTableResult {
+  mhc_wheelset_table_result r;
+  WheelsetTableResult() {
+    std::memset(static_cast<void*>(&r), 0, sizeof r);
+    r.struct_size = sizeof r;
+    r.status = MHC_STATUS_OUT_OF_RANGE;
+  }
+};
+
 // The fields of mhc_table_contact after track and reserved, in their order.
 const char* kFields[] = {"N_N", "y_rail_m", "z_rail_m", "y_wheel_m", "gamma_rad", "r_roll_m", "p_max_Pa", "area_m2",
                          "a_m", "b_m", "a_el_m", "b_el_m", "C11", "C22", "C23"};
@@ -324,4 +339,88 @@ void add_tables(py::module_& m, void (*raise)(mhc_error)) {
           "returned: no allocation per call")
       .def_static("many_result", [](std::size_t n) { return many_result(n); }, py::arg("n"),
                   "The dict of output arrays of lookup_many for n points (not yet filled), to pass as out=");
+
+  py::class_<WheelsetTableResult>(m, "WheelsetTableResult",
+                                  "The answer of WheelsetTable.lookup_into, reused from call to call: the wheelset's "
+                                  "forces (track frame) and per wheel (tuples: left, right) its pair's t_Y, roll and forces.")
+      .def(py::init<>())
+      .def_property_readonly("status", [](const WheelsetTableResult& x) { return mhc_status_name(x.r.status); })
+      .def_property_readonly("status_code", [](const WheelsetTableResult& x) { return x.r.status; })
+      .def_property_readonly("Fy_N", [](const WheelsetTableResult& x) { return x.r.Fy_N; })
+      .def_property_readonly("Fz_N", [](const WheelsetTableResult& x) { return x.r.Fz_N; })
+      .def_property_readonly("Mx_Nm", [](const WheelsetTableResult& x) { return x.r.Mx_Nm; })
+      .def_property_readonly("dFy_dy_N_per_m", [](const WheelsetTableResult& x) { return x.r.dFy_dy_N_per_m; })
+      .def_property_readonly("dFy_droll_N_per_rad", [](const WheelsetTableResult& x) { return x.r.dFy_droll_N_per_rad; })
+      .def_property_readonly("wheel_tY_m", [](const WheelsetTableResult& x) {
+            return py::make_tuple(x.r.wheel[0].tY_m, x.r.wheel[1].tY_m);
+          })
+      .def_property_readonly("wheel_Fy_N", [](const WheelsetTableResult& x) { return py::make_tuple(x.r.wheel_Fy_N[0], x.r.wheel_Fy_N[1]); })
+      .def_property_readonly("wheel_Fz_N", [](const WheelsetTableResult& x) { return py::make_tuple(x.r.wheel_Fz_N[0], x.r.wheel_Fz_N[1]); })
+      .def_property_readonly("wheel_dFy_dQ", [](const WheelsetTableResult& x) { return py::make_tuple(x.r.wheel_dFy_dQ[0], x.r.wheel_dFy_dQ[1]); });
+
+  py::class_<WheelsetTable>(m, "WheelsetTable",
+                            "A wheelset table made by `mhcontact table-wheelset` (docs/tables.md \"A wheelset table\"): "
+                            "the lookup places both wheels from the wheelset's y and roll as the wheelset call does.")
+      .def(py::init([raise](const std::string& path) {
+             auto t = std::make_unique<WheelsetTable>();
+             const mhc_error e = mhc_wheelset_table_read(path.c_str(), &t->t);
+             if (e != MHC_OK) raise(e);
+             return t;
+           }),
+           py::arg("path"))
+      .def_property_readonly("header", [](const WheelsetTable& t) { return std::string(mhc_wheelset_table_header(t.t)); },
+                             "The wheelset table's JSON header (a string: json.loads it)")
+      .def("pair_range", [](const WheelsetTable& t, int side) {
+            double v[6];
+            if (side != 0 && side != 1) throw py::value_error("side: 0 (left) or 1 (right)");
+            mhc_wheelset_table_pair_range(t.t, side, &v[0], &v[1], &v[2], &v[3], &v[4], &v[5]);
+            return py::make_tuple(v[0], v[1], v[2], v[3], v[4], v[5]);
+          }, py::arg("side"), "(tY_min_m, tY_max_m, Q_min_N, Q_max_N, roll_min_rad, roll_max_rad) of side 0 (left) or 1 (right)")
+      .def("lookup", [](const WheelsetTable& t, double y_m, double roll_rad, double Q_left_N, double Q_right_N) {
+            mhc_wheelset_table_result r;
+            r.struct_size = sizeof r;
+            mhc_wheelset_table_lookup(t.t, y_m, roll_rad, Q_left_N, Q_right_N, &r);
+            const Keys& K = keys();
+            py::dict d;
+            d[K.status] = py::str(mhc_status_name(r.status));
+            d["Fy_N"] = py::float_(r.Fy_N);
+            d["Fz_N"] = py::float_(r.Fz_N);
+            d["Mx_Nm"] = py::float_(r.Mx_Nm);
+            d["dFy_dy_N_per_m"] = py::float_(r.dFy_dy_N_per_m);
+            d["dFy_droll_N_per_rad"] = py::float_(r.dFy_droll_N_per_rad);
+            for (int s = 0; s < 2; ++s) {
+              const mhc_table_result& w = r.wheel[s];
+              py::dict e;
+              e[K.status] = py::str(mhc_status_name(w.status));
+              e["tY_m"] = py::float_(w.tY_m);
+              e["roll_rad"] = py::float_(w.roll_rad);
+              e["Fy_N"] = py::float_(r.wheel_Fy_N[s]);
+              e["Fz_N"] = py::float_(r.wheel_Fz_N[s]);
+              e["Mx_Nm"] = py::float_(r.wheel_Mx_Nm[s]);
+              e["dFy_dy_N_per_m"] = py::float_(r.wheel_dFy_dy_N_per_m[s]);
+              e["dFy_droll_N_per_rad"] = py::float_(r.wheel_dFy_droll_N_per_rad[s]);
+              e["dFy_dQ"] = py::float_(r.wheel_dFy_dQ[s]);
+              e[K.coarse] = py::bool_(w.coarse != 0);
+              e[K.off_roll] = py::bool_(w.off_roll != 0);
+              e[K.n_contacts] = py::int_(w.n_contacts);
+              const int n = w.n_contacts < MHC_MAX_CONTACTS ? w.n_contacts : MHC_MAX_CONTACTS;
+              py::list cs(static_cast<std::size_t>(n));
+              for (int k = 0; k < n; ++k)
+                cs[static_cast<std::size_t>(k)] = contact_dict(K, w.contact[k], w.d_dtY[k], w.d_dQ[k], &w.d_droll[k]);
+              e[K.contacts] = cs;
+              d[s == 0 ? "left" : "right"] = e;
+            }
+            return d;
+          }, py::arg("y_m"), py::arg("roll_rad"), py::arg("Q_left_N"), py::arg("Q_right_N"),
+          "The answer at the wheelset's lateral displacement y_m (towards the left rail) and roll roll_rad (positive "
+          "raising the left wheel), the wheels' vertical loads given: status, Fy_N, Fz_N, Mx_Nm (both wheels' normal "
+          "forces on the wheelset, track frame, about the axle centre), dFy_dy_N_per_m, dFy_droll_N_per_rad, and "
+          "'left' / 'right': that wheel's pair answer (tY_m and roll_rad as placed, its forces in the track frame, "
+          "dFy_dQ, the contacts as Table.lookup's, pair frame)")
+      .def("lookup_into", [](const WheelsetTable& t, double y_m, double roll_rad, double Q_left_N, double Q_right_N,
+                             WheelsetTableResult& out) {
+            mhc_wheelset_table_lookup(t.t, y_m, roll_rad, Q_left_N, Q_right_N, &out.r);
+            return out.r.status;
+          }, py::arg("y_m"), py::arg("roll_rad"), py::arg("Q_left_N"), py::arg("Q_right_N"), py::arg("out"),
+          "The answer into `out` (a WheelsetTableResult, reused); returns its status code. No dict, no allocation");
 }

@@ -8,6 +8,8 @@
 //     (default 60 kN, A default 6 mm, OFFSET default 0), the wheel rolled by δ = B sin(2π·5·k/STEPS)
 //     in phase (B = ROLL_AMPLITUDE, default 0: upright; a table with a roll axis), through
 //     mhc_table_lookup_rolled: CPU time of the thread per lookup and per contact, median of 15 repeats;
+//     then the same pair on both wheels of a wheelset table (mhc_wheelset_table_lookup at y = t_Y,
+//     roll φ = δ, both loads Q), alternated with the pair lookups in the same repeats;
 //  3. every DIRECT_EVERY-th step (default 10; 1: every step) solved directly by the case's
 //     method at that step's roll: statuses (direct ok, table ok, direct ok and table not) and the errors of N
 //     (fraction of Q), pmax, area and Fy;
@@ -30,6 +32,7 @@
 #include "input/case_file.hpp"
 #include "jobs/contact_table_make.hpp"
 #include "jobs/run.hpp"
+#include "jobs/wheelset_table_make.hpp"
 
 static double cpu_now() {
   timespec ts;
@@ -98,6 +101,55 @@ int main(int argc, char** argv) {
               "%.2f contacts a step, %.3f us a contact\n",
               steps, offset * 1e3, A * 1e3, B * 1e3, Q * 1e-3, per[per.size() / 2] * 1e6, mean_contacts,
               per[per.size() / 2] * 1e6 / mean_contacts);
+
+  // 2b. The same pair on both wheels of a wheelset table (`mhcontact table-wheelset`): the wheelset
+  // at y = the history's t_Y and roll φ = the history's δ, both loads Q, through
+  // mhc_wheelset_table_lookup (two placements, two lookups, the track-frame sums); against the
+  // pair lookups above, alternated in the same repeats.
+  {
+    const std::string pair_path = path + ".pair.csv", ws_path = path + ".wheelset.csv";
+    {
+      std::ofstream o(pair_path);
+      mh::write_contact_table(made.data, o);
+    }
+    std::ostringstream wout, werr;
+    mh::wheelset_table_job(pair_path, pair_path, ws_path, wout, werr, true);
+    mhc_wheelset_table* wt = nullptr;
+    if (mhc_wheelset_table_read(ws_path.c_str(), &wt) != MHC_OK) {
+      std::fprintf(stderr, "%s\n", mhc_last_message());
+      return 1;
+    }
+    std::remove(pair_path.c_str());
+    std::remove(ws_path.c_str());
+    mhc_wheelset_table_result wr;
+    wr.struct_size = sizeof wr;
+    std::vector<double> pw, pp;
+    double wc = 0;
+    int wok = 0;
+    for (int rep = 0; rep < 15; ++rep) {
+      double t0 = cpu_now();
+      for (int k = 0; k < steps; ++k)
+        mhc_table_lookup_rolled(table, tY[static_cast<std::size_t>(k)], Q, roll[static_cast<std::size_t>(k)],
+                                &res[static_cast<std::size_t>(k)]);
+      pp.push_back((cpu_now() - t0) / steps);
+      t0 = cpu_now();
+      wc = 0, wok = 0;
+      for (int k = 0; k < steps; ++k) {
+        mhc_wheelset_table_lookup(wt, tY[static_cast<std::size_t>(k)], roll[static_cast<std::size_t>(k)], Q, Q, &wr);
+        wc += wr.wheel[0].n_contacts + wr.wheel[1].n_contacts;
+        wok += wr.status == MHC_STATUS_OK;
+      }
+      pw.push_back((cpu_now() - t0) / steps);
+    }
+    std::sort(pw.begin(), pw.end());
+    std::sort(pp.begin(), pp.end());
+    const double mw = pw[pw.size() / 2], mp = pp[pp.size() / 2];
+    std::printf("wheelset table (this pair on both wheels), y and roll as above: %.3f us a wheelset lookup (median of 15), "
+                "%.2f contacts a step, %.3f us a contact, %d of %d steps ok; x %.2f the pair lookup's time in the same "
+                "repeats (%.3f us)\n",
+                mw * 1e6, wc / steps, mw * 1e6 / std::max(wc / steps, 1e-9), wok, steps, mw / mp, mp * 1e6);
+    mhc_wheelset_table_free(wt);
+  }
 
   // 3. Direct solves.
   int n_direct = 0, direct_ok = 0, table_ok = 0, direct_ok_table_not = 0, both = 0;

@@ -15,16 +15,17 @@ tY_mm, Fz_kN, pmax_MPa, ...), with NaN where the table has an empty cell.
 import numpy as _np
 
 from ._core import (INTERFACE_VERSION, InputError, MAX_CONTACTS, METHOD_NAMES, STATUS_NAMES, UnsupportedError, Pair,
-                    Profile, Table, TableResult, Wheelset, __version__, abi_version, fft_backend, hertz_subsurface)
+                    Profile, Table, TableResult, Wheelset, WheelsetTable, WheelsetTableResult, __version__, abi_version,
+                    fft_backend, hertz_subsurface)
 from ._core import _pair_rcf as _core_pair_rcf
 from ._core import _pair_subsurface as _core_pair_subsurface
 from ._core import _pair_pressure_grid as _core_pair_pressure_grid
 
 from .fleet import fleet, make_table, read_tables
 
-__all__ = ["fleet", "make_table", "read_tables", "Pair", "Profile", "Table", "TableResult", "MAX_CONTACTS", "Wheelset", "InputError",
-           "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES", "CASE_COLUMNS", "TANGENTIAL_COLUMNS", "INTERFACE_VERSION", "__version__",
-           "abi_version", "fft_backend", "hertz_subsurface"]
+__all__ = ["fleet", "make_table", "read_tables", "Pair", "Profile", "Table", "TableResult", "MAX_CONTACTS", "Wheelset",
+           "WheelsetTable", "WheelsetTableResult", "InputError", "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES",
+           "CASE_COLUMNS", "TANGENTIAL_COLUMNS", "INTERFACE_VERSION", "__version__", "abi_version", "fft_backend", "hertz_subsurface"]
 
 #: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp), then the
 #: vertical contact stiffness dFz/d(dz) (not in cases.csv).

@@ -230,3 +230,45 @@ def test_table_roll_axis(tmp_path):
     assert b["off_roll"] and b["status"] == "outside_validity" and b["n_contacts"] == 1
     assert "d_droll" not in b["contacts"][0] and "dFy_droll_N_per_rad" not in b  # 0 without a roll axis
     assert f.lookup(0.4e-3, 60e3)["status"] == "ok"
+
+
+def test_wheelset_table(tmp_path):
+    """A wheelset table (docs/tables.md "A wheelset table"): both wheels placed from the wheelset's
+    y and roll by the placement in its header (computed here from the header's numbers), each
+    wheel's answer its pair table's at that point, the forces in the track frame, lookup_into as
+    lookup."""
+    case = json.load(open(os.path.join(SRC, "tests", "data", "tables", "worn-table-roll.json")))
+    for side in ("wheel", "rail"):
+        case[side]["profile"] = os.path.join(SRC, "tests", "data", "tables", case[side]["profile"])
+    case["sweep"] = {"tY_mm": [-2, -1, 0, 1, 2], "Q_kN": [40, 80], "roll_mrad": [-2, 0, 2]}
+    json.dump(case, open(tmp_path / "roll.json", "w"))
+    pair, ws = str(tmp_path / "pair.csv"), str(tmp_path / "wheelset.csv")
+    assert subprocess.run([BINARY, "table", str(tmp_path / "roll.json"), "-o", pair, "-q", "--threads", "2",
+                           "--refine", "0"]).returncode == 0
+    assert subprocess.run([BINARY, "table-wheelset", pair, pair, "-o", ws, "-q"]).returncode == 0
+    t, w = mhcontact.Table(pair), mhcontact.WheelsetTable(ws)
+    h = json.loads(w.header)
+    assert h["schema"] == "mhcontact.wheelset-table/1"
+    place = h["left"]["wheelset_placement"]
+    a, H = place["a_mm"] * 1e-3, place["axle_height_mm"] * 1e-3
+    assert w.pair_range(1)[:2] == pytest.approx((-2e-3, 2e-3))
+    out = mhcontact.WheelsetTableResult()
+    for y, roll in ((-0.7e-3, 1.3e-3), (0.4e-3, -0.9e-3)):
+        d = w.lookup(y, roll, 50e3, 70e3)
+        assert d["status"] == "ok"
+        for s, (name, Q) in enumerate((("left", 50e3), ("right", 70e3))):
+            sigma = 1 if s == 0 else -1
+            delta = sigma * roll
+            tY = sigma * y + a * (np.cos(delta) - 1) + H * np.sin(delta)
+            e = d[name]
+            assert e["tY_m"] == pytest.approx(tY, abs=1e-12) and e["roll_rad"] == delta
+            p = t.lookup(tY, Q, roll_rad=delta)
+            assert e["contacts"][0]["p_max_Pa"] == pytest.approx(p["contacts"][0]["p_max_Pa"], rel=1e-12)
+            assert e["Fy_N"] == pytest.approx(-sigma * p["Fy_N"], rel=1e-12)
+            assert e["Fz_N"] == pytest.approx(Q, rel=0.01)
+        assert d["Fy_N"] == pytest.approx(d["left"]["Fy_N"] + d["right"]["Fy_N"], rel=1e-12)
+        assert w.lookup_into(y, roll, 50e3, 70e3, out) == 0
+        assert out.Fy_N == d["Fy_N"] and out.Mx_Nm == d["Mx_Nm"] and out.wheel_tY_m[1] == d["right"]["tY_m"]
+    assert w.lookup(3e-3, 0.0, 50e3, 70e3)["status"] == "out_of_range"
+    with pytest.raises(mhcontact.InputError, match="one pair's table"):
+        mhcontact.WheelsetTable(pair)

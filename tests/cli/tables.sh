@@ -115,6 +115,21 @@ sed 's/"tY_mm": {[^}]*}/"tY_mm": [0, 1]/; s/"Q_kN": \[[^]]*\]/"Q_kN": [40, 80], 
 check "roll table summary" grep -q '^mhcontact table: 2 x 2 x 3 nodes, ' err.txt
 check "roll table nodes in the header" grep -q '"roll_mrad_nodes":\[-1.0,0.0,1.0\]' out/roll.csv
 check "roll table rows: roll outer" test "$(sed -n 3p out/roll.csv | cut -d, -f1-3)" = "0,40,-1"
+# A wheelset table of that pair on both wheels (docs/tables.md "A wheelset table"): three header
+# lines (its own, then each pair's), the pair's text twice; what is refused, exit 2.
+"$BIN" table-wheelset out/roll.csv out/roll.csv -o out/ws.csv 2>err.txt; rc=$?
+check "table-wheelset exit 0" test $rc -eq 0
+check "table-wheelset summary" grep -q '^mhcontact table-wheelset: left 2 x 2 x 3 nodes, roll -1 ... 1 mrad; right 2 x 2 x 3 nodes' err.txt
+check "wheelset table: three header lines" test "$(grep -c '^#' out/ws.csv)" -eq 3
+check "wheelset table: the pair's text twice" cmp <(tail -n +2 out/ws.csv) <(cat out/roll.csv out/roll.csv)
+sed '1s/,"wheelset_placement":{[^}]*}//' out/roll.csv > old_table.csv
+"$BIN" table-wheelset old_table.csv out/roll.csv -o out/ws2.csv 2>err.txt; rc=$?
+check "table-wheelset: a table without placement refused (exit 2)" test $rc -eq 2
+check "table-wheelset: its message" grep -q 'old_table.csv:1: the table.s header has no wheelset_placement' err.txt
+check "table-wheelset: nothing written" test ! -e out/ws2.csv
+"$BIN" table-export out/ws.csv -o out/x.csv 2>err.txt; rc=$?
+check "table-export of a wheelset table refused (exit 2)" test $rc -eq 2
+check "table-export of a wheelset table: the hint" grep -q 'a wheelset table (two pairs. tables): give one pair.s table' err.txt
 
 test $fail -eq 0 && echo "tables: OK"
 exit $fail
