@@ -9,7 +9,8 @@
 //     in phase (B = ROLL_AMPLITUDE, default 0: upright; a table with a roll axis), through
 //     mhc_table_lookup_rolled: CPU time of the thread per lookup and per contact, median of 15 repeats;
 //     then the same pair on both wheels of a wheelset table (mhc_wheelset_table_lookup at y = t_Y,
-//     roll φ = δ, both loads Q), alternated with the pair lookups in the same repeats;
+//     roll φ = δ, both loads Q), alternated with the pair lookups in the same repeats, and every
+//     DIRECT_EVERY-th step against the wheelset call solving both rolled wheels directly;
 //  3. every DIRECT_EVERY-th step (default 10; 1: every step) solved directly by the case's
 //     method at that step's roll: statuses (direct ok, table ok, direct ok and table not) and the errors of N
 //     (fraction of Q), pmax, area and Fy;
@@ -33,6 +34,7 @@
 #include "jobs/contact_table_make.hpp"
 #include "jobs/run.hpp"
 #include "jobs/wheelset_table_make.hpp"
+#include "wheelset_contact/wheelset_contact.hpp"
 
 static double cpu_now() {
   timespec ts;
@@ -148,6 +150,36 @@ int main(int argc, char** argv) {
                 "%.2f contacts a step, %.3f us a contact, %d of %d steps ok; x %.2f the pair lookup's time in the same "
                 "repeats (%.3f us)\n",
                 mw * 1e6, wc / steps, mw * 1e6 / std::max(wc / steps, 1e-9), wok, steps, mw / mp, mp * 1e6);
+    // Every DIRECT_EVERY-th step the wheelset call (the case's method, each wheel rolled) solves
+    // both wheels directly: statuses, and the table's forces against its, per wheel.
+    const mh::WheelsetContact wsc(pg.geo, pg.geo, cf.track, cf.material, cf.method_options(), {});
+    mh::WheelsetWorkspace wwork;
+    mh::WheelsetResult wres;
+    mh::WheelsetPose pose;
+    pose.Q_left = pose.Q_right = Q;
+    pose.solve_roll = false;
+    int nd = 0, dok = 0, tok = 0, dok_tnot = 0;
+    double eF = 0, eM = 0;
+    const double tw = cpu_now();
+    for (int k = 0; k < steps; k += every) {
+      const auto K = static_cast<std::size_t>(k);
+      pose.y = tY[K];
+      pose.roll = roll[K];
+      wsc.step(pose, mh::WheelsetStepOptions(), wres, wwork);
+      mhc_wheelset_table_lookup(wt, tY[K], roll[K], Q, Q, &wr);
+      ++nd;
+      const bool d_ok = wres.status == mh::CaseStatus::Ok, t_ok = wr.status == MHC_STATUS_OK;
+      dok += d_ok, tok += t_ok, dok_tnot += d_ok && !t_ok;
+      if (!d_ok || !t_ok) continue;
+      for (int s = 0; s < 2; ++s) {
+        const mh::WheelResult& w = s == 0 ? wres.left : wres.right;
+        eF = std::max({eF, std::fabs(wr.wheel_Fy_N[s] - w.on_wheelset.F[1]) / Q, std::fabs(wr.wheel_Fz_N[s] - w.on_wheelset.F[2]) / Q});
+        eM = std::max(eM, std::fabs(wr.wheel_Mx_Nm[s] - w.on_wheelset.M[0]) / (0.75 * Q));
+      }
+    }
+    std::printf("wheelset call (%s, both wheels rolled) at every %d-th step: %d (%.1f ms each); ok: direct %d, table %d, "
+                "direct ok and table not %d; where both ok: wheel Fy, Fz within %.3g %% of Q, Mx within %.3g %% of 0.75 m Q\n",
+                mh::to_string(cf.method), every, nd, (cpu_now() - tw) / nd * 1e3, dok, tok, dok_tnot, 100 * eF, 100 * eM);
     mhc_wheelset_table_free(wt);
   }
 
