@@ -329,21 +329,16 @@ void hermite_1d(double u, double h, double P0[2], double P1[2], double dP0[2], d
   dP1[0] = 3 * u2 - 4 * u + 1, dP1[1] = 3 * u2 - 2 * u;
 }
 
-std::size_t interval(const std::vector<double>& x, double v) {
-  return std::min<std::size_t>(x.size() - 2,
-                               static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), v) - x.begin()) - 1);
-}
-
 }  // namespace
 
 void ContactTableLookup::basis(double tY, double Q, double roll, Basis& B) const {
-  B.i = interval(d_.tY, tY);
-  B.j = interval(d_.Q, Q);
+  B.i = table_interval(d_.tY, tY);
+  B.j = table_interval(d_.Q, Q);
   const double hx = d_.tY[B.i + 1] - d_.tY[B.i], hy = d_.Q[B.j + 1] - d_.Q[B.j];
   hermite_1d((tY - d_.tY[B.i]) / hx, hx, B.H0, B.H1, B.dH0, B.dH1);
   hermite_1d((Q - d_.Q[B.j]) / hy, hy, B.G0, B.G1, B.dG0, B.dG1);
   if (d_.nR() > 1) {
-    B.m = interval(d_.roll, roll);
+    B.m = table_interval(d_.roll, roll);
     B.nc = 2;
     const double hz = d_.roll[B.m + 1] - d_.roll[B.m];
     hermite_1d((roll - d_.roll[B.m]) / hz, hz, B.R0, B.R1, B.dR0, B.dR1);

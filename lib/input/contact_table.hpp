@@ -13,6 +13,7 @@
 // slopes: continuous values and first derivatives in t_Y, Q and δ across cells. A contact absent at a node carries N = 0 there
 // (and zero size and pressure); a zero node between loaded ones is a local minimum, where PCHIP
 // puts a zero slope, so a contact appearing between nodes grows from zero force without a step.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <iosfwd>
@@ -170,6 +171,14 @@ class ContactTableLookup {
   /// Track k's Hermite surface at the basis's point: values and their derivatives.
   void hermite(const Basis& B, int k, TableTrackValues& t) const;
 };
+
+/// The cell of v among increasing nodes x (at least two; v inside [x.front(), x.back()]): i with
+/// x[i] ≤ v < x[i+1], the last cell at v = x.back(). The one cell search of the lookup and of the
+/// export's linear reading.
+inline std::size_t table_interval(const std::vector<double>& x, double v) {
+  return std::min<std::size_t>(x.size() - 2,
+                               static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), v) - x.begin()) - 1);
+}
 
 /// Severity order of statuses for a cell (the worst of its corners): ok < outside_validity <
 /// derailed < the statuses without an answer.

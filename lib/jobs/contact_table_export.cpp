@@ -232,10 +232,7 @@ void export_linear(const ContactTableData& ex, double tY, double Q, double roll,
     out.status = CaseStatus::OutOfRange;
     return;
   }
-  auto interval = [](const std::vector<double>& x, double v) {
-    return std::min<std::size_t>(x.size() - 2, static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), v) - x.begin()) - 1);
-  };
-  const std::size_t i = interval(ex.tY, tY), j = interval(ex.Q, Q), m = axis ? interval(ex.roll, roll) : 0;
+  const std::size_t i = table_interval(ex.tY, tY), j = table_interval(ex.Q, Q), m = axis ? table_interval(ex.roll, roll) : 0;
   const std::size_t nc = axis ? 2 : 1;
   CaseStatus st = CaseStatus::Ok;
   for (std::size_t c = 0; c < nc; ++c)

@@ -209,6 +209,9 @@ cmp out/table.csv out/table-passes.csv
 shown_output docs/tables.md "./build/mhcontact table cases/s1002-60e1-roll-table.json -o out/table-roll.csv" | diff - <(grep '^mhcontact table:' "$tmp/roll.err")
 ./build/mhcontact table tests/data/tables/worn-table-roll.json -o out/table-roll-worn.csv 2> "$tmp/roll-worn.err"
 shown_output docs/tables.md "./build/mhcontact table tests/data/tables/worn-table-roll.json -o out/table-roll-worn.csv" | diff - <(grep '^mhcontact table:' "$tmp/roll-worn.err")
+# --- docs/tables.md, "A wheelset table": the two roll tables above joined, its summary the page's
+./build/mhcontact table-wheelset out/table-roll-worn.csv out/table-roll.csv -o out/wheelset-table.csv 2> "$tmp/wheelset-table.err"
+shown_output docs/tables.md "./build/mhcontact table-wheelset out/table-roll-worn.csv out/table-roll.csv -o out/wheelset-table.csv" | diff - "$tmp/wheelset-table.err"
 
 # --- docs/cli.md, "Exit codes": a failing case gives 1, bad input 2, CLI syntax >= 100 --------
 set +e
