@@ -44,6 +44,10 @@ void add_table_command(CLI::App& app, CliContext& ctx) {
       ->check(CLI::Range(1e-6, 1.0))->capture_default_str();
   cmd->add_option("--tol-pmax", o->make.tol_pmax, "Tolerance of the peak pressure, fraction")
       ->check(CLI::Range(1e-6, 1.0))->capture_default_str();
+  cmd->add_option("--check-points", o->make.check_points,
+                  "Check points a cell: 1 its centre, or 3: also a quarter and three quarters along its main diagonal "
+                  "(a cell missing a tolerance at any is refined; docs/tables.md \"Checking a table at random points\")")
+      ->check(CLI::IsMember({1, 3}))->capture_default_str();
   cmd->add_flag("--no-check", o->no_check, "Make the nodes only: no direct solves at the cell centres, no refinement");
   cmd->add_flag("-q,--quiet", o->make.quiet, "No summary on standard error");
   auto* shard = cmd->add_option("--shard", o->shard, "Solve only the K-th of N slices of the first round's points "

@@ -97,7 +97,10 @@ nlohmann::json error_summary(const std::vector<TableCheckError>& checks, const T
     return j;
   };
   nlohmann::json j;
-  j["where"] = "the centre of every cell, against a direct solve by the table's method";
+  j["where"] = opt.check_points == 3
+                   ? "the centre of every cell and the points a quarter and three quarters along its main diagonal, "
+                     "against a direct solve by the table's method"
+                   : "the centre of every cell, against a direct solve by the table's method";
   j["N"] = stats(&TableCheckError::e_N, opt.tol_N, 1, "fraction of Q");
   j["pmax"] = stats(&TableCheckError::e_pmax, opt.tol_pmax, 1, "fraction");
   j["area"] = stats(&TableCheckError::e_area, opt.tol_area, 1, "fraction");
@@ -162,14 +165,19 @@ struct TableGrid {
         for (double q : Q) p.push_back({t, q, r});
     return p;
   }
-  /// The centres of the cells in ContactTableData::cell order.
-  std::vector<TablePoint> centres() const {
+  /// The check points of the cells in ContactTableData::cell order, `per` a cell: its centre
+  /// (per = 1), then the points a quarter and three quarters along its main diagonal (per = 3).
+  std::vector<TablePoint> centres(int per = 1) const {
     std::vector<TablePoint> c;
+    auto at = [](double a, double b, double f) { return a + f * (b - a); };
     for (std::size_t m = 0; m < nRc(); ++m)
       for (std::size_t i = 0; i + 1 < tY.size(); ++i)
         for (std::size_t j = 0; j + 1 < Q.size(); ++j)
-          c.push_back({rounded_mm(0.5 * (tY[i] + tY[i + 1])), 0.5 * (Q[j] + Q[j + 1]),
-                       roll.size() > 1 ? rounded_mm(0.5 * (r_lo(m) + r_hi(m))) : roll[0]});
+          for (double f : {0.5, 0.25, 0.75}) {
+            if (f != 0.5 && per < 3) break;
+            c.push_back({rounded_mm(at(tY[i], tY[i + 1], f)), at(Q[j], Q[j + 1], f),
+                         roll.size() > 1 ? rounded_mm(at(r_lo(m), r_hi(m), f)) : roll[0]});
+          }
     return c;
   }
 };
@@ -181,7 +189,7 @@ std::vector<TablePoint> table_first_points(const CaseFile& cf, const TableMakeOp
   table_initial_nodes(cf, g.tY, g.Q, g.roll);
   std::vector<TablePoint> pts = g.nodes();
   if (opt.check) {
-    const auto c = g.centres();
+    const auto c = g.centres(opt.check_points);
     pts.insert(pts.end(), c.begin(), c.end());
   }
   return pts;
@@ -228,8 +236,10 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   ContactTableData data;
   std::vector<TableCheckError> checks;
   std::vector<std::uint8_t> cell_fail;
-  // The table `data` against the direct solves at its cells' centres (solved already): `checks`,
-  // and the cells beyond a tolerance marked in `cell_fail`.
+  // The table `data` against the direct solves at its cells' check points (solved already,
+  // opt.check_points a cell): `checks`, and the cells beyond a tolerance at any of them marked in
+  // `cell_fail`.
+  const std::size_t per = opt.check_points == 3 ? 3 : 1;
   auto check_cells = [&](const std::vector<TablePoint>& centres) {
     const ContactTableLookup look(data);
     TableAnswer ans;
@@ -239,13 +249,13 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
       look.lookup(p.tY_mm * units::mm, p.Q_kN * 1e3, p.roll_mrad * 1e-3, ans);
       checks.push_back(compare(ans, solved.at(p), p));
       const TableCheckError& e = checks.back();
-      cell_fail[c] |= e.compared && (e.e_N > opt.tol_N || e.e_pmax > opt.tol_pmax || e.e_area > opt.tol_area);
+      cell_fail[c / per] |= e.compared && (e.e_N > opt.tol_N || e.e_pmax > opt.tol_pmax || e.e_area > opt.tol_area);
     }
   };
   for (int round = 0;; ++round) {
     const std::vector<TablePoint> pts = g.nodes();
     std::vector<TablePoint> centres;
-    if (opt.check) centres = g.centres();
+    if (opt.check) centres = g.centres(opt.check_points);
     // The nodes and the centres of their cells in one batch (one pass of shards).
     std::vector<TablePoint> batch = pts;
     batch.insert(batch.end(), centres.begin(), centres.end());
@@ -378,7 +388,7 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   // PCHIP slopes of their neighbours change): its error is checked again at the centres of its
   // own cells, so that the header's error and `checks` are those of the table written.
   if (opt.check && !dropped.empty()) {
-    const std::vector<TablePoint> centres = g.centres();
+    const std::vector<TablePoint> centres = g.centres(opt.check_points);
     if (!solve_missing(centres)) return made;
     check_cells(centres);
     data.cell_coarse = cell_fail;
@@ -386,8 +396,8 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
 
   // The checks were made before their cells were marked: a coarse cell's table answer is at best
   // outside_validity (the lookup of the table written), as the status counts of `error` say.
-  for (std::size_t c = 0; c < checks.size() && c < cell_fail.size(); ++c)
-    if (cell_fail[c] && checks[c].table == CaseStatus::Ok) checks[c].table = CaseStatus::OutsideValidity;
+  for (std::size_t c = 0; c < checks.size() && c / per < cell_fail.size(); ++c)
+    if (cell_fail[c / per] && checks[c].table == CaseStatus::Ok) checks[c].table = CaseStatus::OutsideValidity;
 
   // The header.
   nlohmann::json h;
@@ -418,6 +428,7 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   h["roll_mrad_range"] = {g.roll.front(), g.roll.back()};
   h["tracks"] = data.n_tracks;
   h["refine"] = opt.refine;
+  h["check_points"] = opt.check ? opt.check_points : 0;
   h["dropped_tY_mm"] = dropped;
   nlohmann::json coarse = nlohmann::json::array();
   for (std::size_t m = 0; m < g.nRc(); ++m)
@@ -501,7 +512,8 @@ int table_job(const CaseFile& cf, const TableMakeOptions& opt, const std::string
         << " contact tracks, " << m.solves << " solves";
     if (m.data.header.contains("error")) {
       const auto& e = m.data.header["error"];
-      err << "; interpolation error at " << e["N"]["checked"].get<std::size_t>() << " cell centres: N max "
+      err << "; interpolation error at " << e["N"]["checked"].get<std::size_t>()
+          << (opt.check_points == 3 ? " check points: N max " : " cell centres: N max ")
           << fmt3(100 * e["N"]["max"].get<double>()) << " % of Q, pmax max "
           << fmt3(100 * e["pmax"]["max"].get<double>()) << " %, area max "
           << fmt3(100 * e["area"]["max"].get<double>()) << " %, position max "

@@ -21,6 +21,11 @@ namespace mh {
 struct TableMakeOptions {
   unsigned threads = 0;       ///< worker threads; 0 = all cores (default). The table does not depend on it.
   bool check = true;          ///< solve every cell's centre directly and measure the error (default yes)
+  /// Check points a cell: 1 its centre (default), or 3: also the points a quarter and three
+  /// quarters along its main diagonal, a cell missing a tolerance at any of them refined (and
+  /// coarse if it still misses). The tricubic interpolant's error is largest away from the centre
+  /// in some cells (docs/tables.md "Checking a table at random points").
+  int check_points = 1;
   int refine = 3;             ///< rounds of halving the t_Y and Q intervals whose cells miss a tolerance (default 3; 0: none)
   double min_step_mm = 0.05;  ///< no t_Y interval is halved below this (default 0.05 mm)
   double min_Q_step_kN = 5;   ///< no Q interval is halved below this (default 5 kN)
@@ -47,7 +52,7 @@ struct TableCheckError {
 /// A made table and its check.
 struct TableMade {
   ContactTableData data;                 ///< with its header (the error summary included)
-  std::vector<TableCheckError> checks;   ///< one per cell of the final grid (check on)
+  std::vector<TableCheckError> checks;   ///< check_points per cell of the final grid, in cell order (check on)
   std::size_t solves = 0;                ///< direct solves made (nodes and check points)
   /// With `defer`: the points the making needs next that the presolved solves do not hold,
   /// sorted. While it is not empty the table is not made (`data` is empty): solve them (the

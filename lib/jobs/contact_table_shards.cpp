@@ -36,6 +36,8 @@ void check_same(const nlohmann::json& j, const std::string& path, const CaseFile
   if (field("profiles") != profiles) throw InputError(path + ": /profiles", "", "the profiles (checksums) differ: " + other);
   if (field("program") != program) throw InputError(path + ": /program", field("program").dump(), "another mhcontact: " + other);
   if (field("check") != opt.check) throw InputError(path + ": /check", field("check").dump(), "--no-check differs: " + other);
+  if (field("check_points") != opt.check_points)
+    throw InputError(path + ": /check_points", field("check_points").dump(), "--check-points differs: " + other);
 }
 
 nlohmann::json read_json_file(const std::string& path, const char* what, const char* hint) {
@@ -99,6 +101,7 @@ int table_shard_job(const CaseFile& cf, const TableMakeOptions& opt, const std::
   j["shard"] = {k, n};
   j["pass"] = pass;
   j["check"] = opt.check;
+  j["check_points"] = opt.check_points;
   j["inputs"] = inputs_json(cf);
   j["profiles"] = profiles_json(pg);
   j["points"] = all.size();
@@ -210,6 +213,7 @@ void write_table_points(const CaseFile& cf, const PairGeometry& pg, const TableM
   j["program"] = program_json();
   j["pass"] = pass;
   j["check"] = opt.check;
+  j["check_points"] = opt.check_points;
   j["inputs"] = inputs_json(cf);
   j["profiles"] = profiles_json(pg);
   j["points"] = points_json(points);

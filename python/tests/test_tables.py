@@ -3,6 +3,7 @@ and lookup_many against each other and against the table's nodes, and its errors
 import json
 import os
 import subprocess
+import sys
 import tempfile
 import time
 
@@ -272,3 +273,16 @@ def test_wheelset_table(tmp_path):
     assert w.lookup(3e-3, 0.0, 50e3, 70e3)["status"] == "out_of_range"
     with pytest.raises(mhcontact.InputError, match="one pair's table"):
         mhcontact.WheelsetTable(pair)
+    # scripts/check_table.py (docs/tables.md "Checking a table at random points"): the table
+    # against direct solves of its own case at random points; exit 0 (all within tolerance) or 1.
+    script = os.path.join(SRC, "scripts", "check_table.py")
+    run = subprocess.run([sys.executable, script, pair, str(tmp_path / "roll.json"), "--points", "12", "--seed", "3"],
+                         capture_output=True, text=True)
+    assert run.returncode in (0, 1), run.stderr
+    lines = run.stdout.splitlines()
+    assert lines[0].startswith(f"check_table.py: {pair}: 12 random points (seed 3) over t_Y -2 ... 2 mm, Q 40 ... 80 kN, "
+                               "roll -2 ... 2 mrad")
+    assert lines[1].startswith("ok: direct ") and lines[2].startswith("pmax: median ")
+    assert any(x.startswith("ok answers beyond a tolerance: ") for x in lines)
+    bad = subprocess.run([sys.executable, script, ws, str(tmp_path / "roll.json")], capture_output=True, text=True)
+    assert bad.returncode == 2 and "a wheelset table" in bad.stderr

@@ -212,6 +212,17 @@ shown_output docs/tables.md "./build/mhcontact table tests/data/tables/worn-tabl
 # --- docs/tables.md, "A wheelset table": the two roll tables above joined, its summary the page's
 ./build/mhcontact table-wheelset out/table-roll-worn.csv out/table-roll.csv -o out/wheelset-table.csv 2> "$tmp/wheelset-table.err"
 shown_output docs/tables.md "./build/mhcontact table-wheelset out/table-roll-worn.csv out/table-roll.csv -o out/wheelset-table.csv" | diff - "$tmp/wheelset-table.err"
+# --- docs/tables.md, "Checking a table at random points": the S1002 roll table above against
+# direct solves (exit 1: some ok answers beyond tolerance), where python3 has numpy and the
+# module is built (CI's Debian python3 has both; the figures of the page come from a run there)
+if [ -d "$(dirname "$bin")/python/mhcontact" ] && python3 -c 'import numpy' 2>/dev/null; then
+  ln -s "$(dirname "$bin")/python" build/python
+  PYTHONPATH=build/python python3 scripts/check_table.py out/table-roll.csv cases/s1002-60e1-roll-table.json --points 300 --seed 2 > "$tmp/check.out" || test $? -eq 1
+  grep -q '^ok: direct [0-9]*, table [0-9]*, both [0-9]*' "$tmp/check.out"
+  grep -q '^ok answers beyond a tolerance: [0-9]* of [0-9]*$' "$tmp/check.out"
+else
+  echo "readme_examples: python3 without numpy or the module: scripts/check_table.py not run"
+fi
 
 # --- docs/cli.md, "Exit codes": a failing case gives 1, bad input 2, CLI syntax >= 100 --------
 set +e
