@@ -85,19 +85,25 @@ void fill(const mh::TableAnswer& a, double tY_m, double Q_N, double roll_rad, bo
   }
 }
 
-}  // namespace
-
-extern "C" {
-
-mhc_error mhc_table_read(const char* path, mhc_table** out) {
+// A handle H made from the file `path` by `read` into *out (null on an error, the message kept).
+template <class H, class Read>
+mhc_error read_handle(const char* path, H** out, Read&& read) {
   mh::capi::last_message().clear();
   if (mhc_error e = need(path, "path")) return e;
   if (mhc_error e = need(out, "out")) return e;
   *out = nullptr;
   return guarded([&] {
-    *out = new mhc_table(mh::read_contact_table(path));
+    *out = new H(read(path));
     return MHC_OK;
   });
+}
+
+}  // namespace
+
+extern "C" {
+
+mhc_error mhc_table_read(const char* path, mhc_table** out) {
+  return read_handle(path, out, [](const char* p) { return mh::read_contact_table(p); });
 }
 
 mhc_error mhc_table_range(const mhc_table* t, double* tY_min_m, double* tY_max_m, double* Q_min_N, double* Q_max_N) {
@@ -146,14 +152,7 @@ mhc_error mhc_table_lookup_rolled(const mhc_table* t, double tY_m, double Q_N, d
 void mhc_table_free(mhc_table* t) { delete t; }
 
 mhc_error mhc_wheelset_table_read(const char* path, mhc_wheelset_table** out) {
-  mh::capi::last_message().clear();
-  if (mhc_error e = need(path, "path")) return e;
-  if (mhc_error e = need(out, "out")) return e;
-  *out = nullptr;
-  return guarded([&] {
-    *out = new mhc_wheelset_table(mh::read_wheelset_table(path));
-    return MHC_OK;
-  });
+  return read_handle(path, out, [](const char* p) { return mh::read_wheelset_table(p); });
 }
 
 const char* mhc_wheelset_table_header(const mhc_wheelset_table* t) { return t ? t->header.c_str() : nullptr; }

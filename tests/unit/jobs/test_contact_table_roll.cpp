@@ -257,7 +257,7 @@ TEST_CASE("table shards with a roll axis: the merged table is byte for byte the 
   std::remove((dir + "-merged.csv").c_str());
 }
 
-TEST_CASE("three check points a cell: the centre and the diagonal's quarter points; cells missing at a quarter point are coarse",
+TEST_CASE("three check points a cell: the centre and the diagonal's quarter points, cells missing at a quarter point coarse",
           "[tables]") {
   // S1002 on 60E1 1:40 with a roll axis (cases/s1002-60e1-roll-table.json), unrefined: with one
   // check point a cell, 12 of 48 cells miss a tolerance at their centre; the quarter points
