@@ -132,7 +132,7 @@ ContactTableData read_contact_table(std::istream& in, const std::string& path, s
   if (!t.header.is_object() || t.header.value("schema", std::string()) != schema)
     throw InputError(at_line(path, hl), t.header.is_object() ? t.header.value("schema", std::string("(none)")) : "",
                      std::string("the header's schema must be ") + schema,
-                     t.header.is_object() && t.header.value("schema", std::string()) == "mhcontact.wheelset-table/1"
+                     t.header.is_object() && t.header.value("schema", std::string()) == kWheelsetTableSchema
                          ? "a wheelset table (two pairs' tables): give one pair's table, as `mhcontact table` wrote it"
                          : "a table of another version: regenerate it with this mhcontact");
   try {

@@ -30,6 +30,8 @@ namespace mh {
 constexpr const char* kContactTableSchema = "mhcontact.table/2";
 /// The schema tag of a table's export on a regular grid (`mhcontact table-export`, docs/tables.md).
 constexpr const char* kContactTableExportSchema = "mhcontact.table-export/2";
+/// The schema tag of a wheelset table (two pairs' tables in one file, input/wheelset_table.hpp).
+constexpr const char* kWheelsetTableSchema = "mhcontact.wheelset-table/1";
 
 /// The per-contact quantities of a table, in the order of their CSV columns.
 enum TableQuantity : int {

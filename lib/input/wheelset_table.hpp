@@ -25,8 +25,6 @@
 
 namespace mh {
 
-constexpr const char* kWheelsetTableSchema = "mhcontact.wheelset-table/1";
-
 /// Where a pair sits in its wheelset (the `wheelset_placement` of its table's header) [m].
 struct WheelsetPlacement {
   double a = 0.75;           ///< taping line from the wheelset centre
