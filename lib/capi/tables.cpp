@@ -85,6 +85,17 @@ void fill(const mh::TableAnswer& a, double tY_m, double Q_N, double roll_rad, bo
   }
 }
 
+// A table's node ranges into the pointers that are not null.
+void node_ranges(const mh::ContactTableData& d, double* tY_min, double* tY_max, double* Q_min, double* Q_max,
+                 double* roll_min, double* roll_max) {
+  if (tY_min) *tY_min = d.tY.front();
+  if (tY_max) *tY_max = d.tY.back();
+  if (Q_min) *Q_min = d.Q.front();
+  if (Q_max) *Q_max = d.Q.back();
+  if (roll_min) *roll_min = d.roll.front();
+  if (roll_max) *roll_max = d.roll.back();
+}
+
 // A handle H made from the file `path` by `read` into *out (null on an error, the message kept).
 template <class H, class Read>
 mhc_error read_handle(const char* path, H** out, Read&& read) {
@@ -109,11 +120,7 @@ mhc_error mhc_table_read(const char* path, mhc_table** out) {
 mhc_error mhc_table_range(const mhc_table* t, double* tY_min_m, double* tY_max_m, double* Q_min_N, double* Q_max_N) {
   mh::capi::last_message().clear();
   if (mhc_error e = need(t, "table")) return e;
-  const auto& d = t->look.data();
-  if (tY_min_m) *tY_min_m = d.tY.front();
-  if (tY_max_m) *tY_max_m = d.tY.back();
-  if (Q_min_N) *Q_min_N = d.Q.front();
-  if (Q_max_N) *Q_max_N = d.Q.back();
+  node_ranges(t->look.data(), tY_min_m, tY_max_m, Q_min_N, Q_max_N, nullptr, nullptr);
   return MHC_OK;
 }
 
@@ -163,13 +170,7 @@ mhc_error mhc_wheelset_table_pair_range(const mhc_wheelset_table* t, int32_t sid
   if (mhc_error e = need(t, "table")) return e;
   if (side != 0 && side != 1)
     return mh::capi::fail(MHC_ERR_ARGUMENT, "side = " + std::to_string(side) + ": must be 0 (left) or 1 (right)");
-  const auto& d = t->look.pair(side).data();
-  if (tY_min_m) *tY_min_m = d.tY.front();
-  if (tY_max_m) *tY_max_m = d.tY.back();
-  if (Q_min_N) *Q_min_N = d.Q.front();
-  if (Q_max_N) *Q_max_N = d.Q.back();
-  if (roll_min_rad) *roll_min_rad = d.roll.front();
-  if (roll_max_rad) *roll_max_rad = d.roll.back();
+  node_ranges(t->look.pair(side).data(), tY_min_m, tY_max_m, Q_min_N, Q_max_N, roll_min_rad, roll_max_rad);
   return MHC_OK;
 }
 

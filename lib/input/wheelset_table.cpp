@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/errors.hpp"
+#include "geometry/rolled_gap.hpp"
 
 namespace mh {
 
@@ -73,8 +74,7 @@ void WheelsetTableLookup::place(int s, double y, double roll, double& tY, double
   const WheelsetPlacement& P = place_[static_cast<std::size_t>(s)];
   const double sigma = s == 0 ? 1.0 : -1.0;
   delta = sigma * roll;
-  // The axle centre stays where the unrolled wheelset has it (wheelset_contact.cpp pair_pose).
-  tY = sigma * y + (delta == 0 ? 0.0 : P.a * (std::cos(delta) - 1) + P.H * std::sin(delta));
+  tY = rolled_wheel_tY(sigma * y, delta, P.a, P.H);
 }
 
 void WheelsetTableLookup::lookup(const WheelsetTablePose& p, WheelsetTableAnswer& out) const {

@@ -59,7 +59,9 @@ struct WheelsetTableWheel {
   double tY = 0;     ///< [m] its pair's t_Y as placed
   double delta = 0;  ///< [rad] its roll against the rail, σ φ
   TableAnswer pair;  ///< the pair table's answer at (tY, Q_s, delta), pair frame
-  double Fy = 0, Fz = 0, Mx = 0;  ///< [N], [N m] on the wheelset, track frame (about the axle centre)
+  /// [N], [N m] on the wheelset, track frame (about the axle centre). Mx sums the contacts held in
+  /// pair.c (the first kTableMaxContacts; more are rare) beside a Fz of them all.
+  double Fy = 0, Fz = 0, Mx = 0;
   /// ∂F_y/∂y [N/m], ∂F_y/∂φ [N/rad], ∂F_y/∂Q_s [-] by the chain rule through the placement.
   double dFy_dy = 0, dFy_droll = 0, dFy_dQ = 0;
 };

@@ -21,9 +21,7 @@ std::string file_text(const std::string& path) {
   if (!in) throw InputError(path, "", "cannot open the table file", "check the path");
   std::ostringstream s;
   s << in.rdbuf();
-  std::string t = s.str();
-  if (!t.empty() && t.back() != '\n') t += '\n';
-  return t;
+  return s.str();
 }
 
 }  // namespace
@@ -33,10 +31,11 @@ int wheelset_table_job(const std::string& left_path, const std::string& right_pa
   const std::string paths[2] = {left_path, right_path};
   const char* side[2] = {"left", "right"};
   ContactTableData t[2];
-  WheelsetPlacement p[2];
+  std::string text[2];  // each file's text, copied into the wheelset table and hashed as read
   for (int s = 0; s < 2; ++s) {
     t[s] = read_contact_table(paths[s]);
-    p[s] = table_placement(t[s].header, at_line(paths[s], 1));
+    table_placement(t[s].header, at_line(paths[s], 1));
+    text[s] = file_text(paths[s]);
   }
   // One wheelset: its flange-back distance, and one method and model for both wheels.
   const auto& in0 = t[0].header.at("inputs");
@@ -64,7 +63,7 @@ int wheelset_table_job(const std::string& left_path, const std::string& right_pa
     const auto& d = t[s];
     nlohmann::json j;
     j["source"] = paths[s];
-    j["sha256"] = sha256_file(paths[s]);
+    j["sha256"] = sha256_hex(text[s]);
     j["sigma"] = s == 0 ? 1 : -1;
     j["wheelset_placement"] = d.header.at("wheelset_placement");
     j["profiles"] = d.header.value("profiles", nlohmann::json::object());
@@ -78,7 +77,7 @@ int wheelset_table_job(const std::string& left_path, const std::string& right_pa
   h["units"] = {{"y", "m"}, {"roll", "rad"}, {"a_mm", "mm"}, {"axle_height_mm", "mm"}, {"rail_offset_mm", "mm"}};
   auto write = [&](std::ostream& o) {
     o << "# " << h.dump() << '\n';
-    for (int s = 0; s < 2; ++s) o << file_text(paths[s]);
+    for (int s = 0; s < 2; ++s) o << text[s] << (text[s].empty() || text[s].back() != '\n' ? "\n" : "");
   };
   if (out_path == "-") {
     write(out);

@@ -11,6 +11,7 @@
 #include "core/roots.hpp"
 #include "core/numfmt.hpp"
 #include "geometry/rolled_candidates.hpp"
+#include "geometry/rolled_gap.hpp"
 
 namespace mh {
 
@@ -171,9 +172,7 @@ void WheelsetContact::pair_pose(int side, double y, double roll, double* tY, dou
   const Side& S = side > 0 ? left_ : right_;
   const double d = roll_in_geometry() ? S.sigma * roll : 0.0;
   *delta = d;
-  // The axle centre, at (−a, z0 + R0) from the wheel profile's origin, stays where the unrolled
-  // wheelset has it: the origin moves by (a (cos δ − 1) + (z0 + R0) sin δ) along the pair's y.
-  *tY = S.sigma * y + (d == 0 ? 0.0 : S.a * (std::cos(d) - 1) + (S.geo.wheel_z0 + S.geo.nominal_radius) * std::sin(d));
+  *tY = rolled_wheel_tY(S.sigma * y, d, S.a, S.geo.wheel_z0 + S.geo.nominal_radius);
 }
 
 double WheelsetContact::first_contact_height(int side, double y, double roll, WheelsetWorkspace& ws) const {
