@@ -73,11 +73,15 @@ mh::TableMakeOptions table_options(const py::dict& d, unsigned threads) {
     else if (k == "min_roll_step_mrad") o.min_roll_step_mrad = v.cast<double>();
     else if (k == "tol_N") o.tol_N = v.cast<double>();
     else if (k == "tol_pmax") o.tol_pmax = v.cast<double>();
+    else if (k == "check_points") o.check_points = v.cast<int>();
+    else if (k == "validate") o.validate = v.cast<int>();
     else
-      throw py::type_error("table options: unknown key '" + k + "' (refine, check, min_step_mm, min_Q_step_kN, "
-                           "min_roll_step_mrad, tol_N, tol_pmax)");
+      throw py::type_error("table options: unknown key '" + k + "' (refine, check, check_points, validate, min_step_mm, "
+                           "min_Q_step_kN, min_roll_step_mrad, tol_N, tol_pmax)");
   }
   if (o.refine < 0 || o.refine > 8) throw py::value_error("table options: refine must be 0 ... 8 (as --refine)");
+  if (o.check_points != 1 && o.check_points != 3) throw py::value_error("table options: check_points must be 1 or 3 (as --check-points)");
+  if (o.validate < 0 || o.validate > 100000) throw py::value_error("table options: validate must be 0 ... 100000 (as --validate)");
   return o;
 }
 

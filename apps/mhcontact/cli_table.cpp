@@ -48,7 +48,12 @@ void add_table_command(CLI::App& app, CliContext& ctx) {
                   "Check points a cell: 1 its centre, or 3: also a quarter and three quarters along its main diagonal "
                   "(a cell missing a tolerance at any is refined; docs/tables.md \"Checking a table at random points\")")
       ->check(CLI::IsMember({1, 3}))->capture_default_str();
-  cmd->add_flag("--no-check", o->no_check, "Make the nodes only: no direct solves at the cell centres, no refinement");
+  cmd->add_option("--validate", o->make.validate,
+                  "Random points solved directly and compared with the table made, never used to refine it: their "
+                  "errors and statuses go into the header's `validation` (docs/tables.md \"Validation at random points\"); 0: none")
+      ->check(CLI::Range(0, 100000))->capture_default_str();
+  cmd->add_flag("--no-check", o->no_check, "Make the nodes only: no direct solves at the cell centres or validation "
+                                           "points, no refinement");
   cmd->add_flag("-q,--quiet", o->make.quiet, "No summary on standard error");
   auto* shard = cmd->add_option("--shard", o->shard, "Solve only the K-th of N slices of the first round's points "
                                                      "(nodes and cell centres) and write them to the output (JSON)");

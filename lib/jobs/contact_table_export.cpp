@@ -181,7 +181,7 @@ ContactTableData export_contact_table(const ContactTableData& table, const std::
   const nlohmann::json& th = table.header;
   nlohmann::json src = {{"file", source}, {"sha256", sha256}, {"schema", th.value("schema", std::string())}};
   for (const char* key : {"method", "model", "profiles", "inputs", "tY_mm_nodes", "Q_kN_nodes", "roll_mrad_nodes",
-                          "dropped_tY_mm", "coarse_cells", "error"})
+                          "dropped_tY_mm", "coarse_cells", "error", "validation"})
     if (th.contains(key)) src[key] = th[key];
   h["source"] = src;
   h["interpolation"] = "per track, every column bilinear in (tY_mm, Q_kN) on the grid cell (trilinear in (tY_mm, Q_kN, "

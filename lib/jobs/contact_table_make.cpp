@@ -82,7 +82,9 @@ std::string fmt3(double v) {
 
 double rounded_mm(double mm) { return std::round(mm * 1e9) / 1e9; }
 
-nlohmann::json error_summary(const std::vector<TableCheckError>& checks, const TableMakeOptions& opt) {
+// Per quantity over `checks` (those compared): the count, how many beyond the tolerance, the
+// median, 95th percentile and largest error.
+void quantity_stats(nlohmann::json& j, const std::vector<TableCheckError>& checks, const TableMakeOptions& opt) {
   auto stats = [&](double TableCheckError::*f, double tol, double scale, const char* unit) {
     std::vector<double> v;
     for (const auto& e : checks)
@@ -90,22 +92,26 @@ nlohmann::json error_summary(const std::vector<TableCheckError>& checks, const T
     std::sort(v.begin(), v.end());
     std::size_t beyond = 0;
     for (double x : v) beyond += x > tol;
-    nlohmann::json j = {{"unit", unit}, {"tolerance", tol}, {"checked", v.size()}, {"beyond", beyond}};
-    j["max"] = v.empty() ? 0.0 : v.back();
-    j["p95"] = v.empty() ? 0.0 : v[std::min(v.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(v.size())))];
-    j["median"] = v.empty() ? 0.0 : v[v.size() / 2];
-    return j;
+    nlohmann::json q = {{"unit", unit}, {"tolerance", tol}, {"checked", v.size()}, {"beyond", beyond}};
+    q["max"] = v.empty() ? 0.0 : v.back();
+    q["p95"] = v.empty() ? 0.0 : v[std::min(v.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(v.size())))];
+    q["median"] = v.empty() ? 0.0 : v[v.size() / 2];
+    return q;
   };
-  nlohmann::json j;
-  j["where"] = opt.check_points == 3
-                   ? "the centre of every cell and the points a quarter and three quarters along its main diagonal, "
-                     "against a direct solve by the table's method"
-                   : "the centre of every cell, against a direct solve by the table's method";
   j["N"] = stats(&TableCheckError::e_N, opt.tol_N, 1, "fraction of Q");
   j["pmax"] = stats(&TableCheckError::e_pmax, opt.tol_pmax, 1, "fraction");
   j["area"] = stats(&TableCheckError::e_area, opt.tol_area, 1, "fraction");
   j["position"] = stats(&TableCheckError::e_position, opt.tol_position_mm, 1e3, "mm");
   j["Fy"] = stats(&TableCheckError::e_Fy, opt.tol_N, 1, "fraction of Q");
+}
+
+nlohmann::json error_summary(const std::vector<TableCheckError>& checks, const TableMakeOptions& opt) {
+  nlohmann::json j;
+  j["where"] = opt.check_points == 3
+                   ? "the centre of every cell and the points a quarter and three quarters along its main diagonal, "
+                     "against a direct solve by the table's method"
+                   : "the centre of every cell, against a direct solve by the table's method";
+  quantity_stats(j, checks, opt);
   std::size_t ok_direct = 0, ok_both = 0, unanswered = 0;
   for (const auto& e : checks) {
     if (e.direct == CaseStatus::Ok) {
@@ -115,6 +121,56 @@ nlohmann::json error_summary(const std::vector<TableCheckError>& checks, const T
     unanswered += !e.compared;
   }
   j["status"] = {{"direct_ok", ok_direct}, {"direct_ok_table_ok", ok_both}, {"not_compared", unanswered}};
+  return j;
+}
+
+// The worst of a point's errors in units of its tolerances (N, peak pressure, area).
+double tolerance_ratio(const TableCheckError& e, const TableMakeOptions& opt) {
+  return std::max({e.e_N / opt.tol_N, e.e_pmax / opt.tol_pmax, e.e_area / opt.tol_area});
+}
+
+// The header's `validation`: the table written against the direct solves at the validation
+// points. The errors are those of the points where both answers are `ok` (what an `ok` lookup
+// claims); `beyond` counts those beyond a tolerance of N, peak pressure or area, `worst` lists
+// the five worst of them, `table_ok_direct_not_points` the first five where the table answers ok
+// and the direct solve does not.
+nlohmann::json validation_summary(const std::vector<TableCheckError>& v, const TableMakeOptions& opt) {
+  nlohmann::json j;
+  j["where"] = "points drawn uniformly over the table's ranges, never used to refine it or to mark its cells, where "
+               "both the table and a direct solve by its method answer ok";
+  j["points"] = v.size();
+  j["seed"] = kTableValidationSeed;
+  std::vector<TableCheckError> both;
+  std::size_t direct_ok = 0, table_ok = 0, table_only = 0, direct_only = 0;
+  nlohmann::json ok_not_direct = nlohmann::json::array();  // the first five: where the table claims more
+  for (const auto& e : v) {
+    const bool d = e.direct == CaseStatus::Ok, t = e.table == CaseStatus::Ok;
+    direct_ok += d;
+    table_ok += t;
+    table_only += t && !d;
+    direct_only += d && !t;
+    if (d && t && e.compared) both.push_back(e);
+    if (t && !d && ok_not_direct.size() < 5)
+      ok_not_direct.push_back({{"tY_mm", e.tY * 1e3}, {"Q_kN", e.Q * 1e-3}, {"roll_mrad", e.roll * 1e3},
+                               {"direct", to_string(e.direct)}});
+  }
+  j["status"] = {{"direct_ok", direct_ok}, {"table_ok", table_ok}, {"both_ok", both.size()},
+                 {"table_ok_direct_not", table_only}, {"direct_ok_table_not", direct_only}};
+  quantity_stats(j, both, opt);
+  std::sort(both.begin(), both.end(), [&](const TableCheckError& a, const TableCheckError& b) {
+    return tolerance_ratio(a, opt) > tolerance_ratio(b, opt);
+  });
+  std::size_t beyond = 0;
+  for (const auto& e : both) beyond += tolerance_ratio(e, opt) > 1;
+  j["beyond"] = beyond;
+  nlohmann::json worst = nlohmann::json::array();
+  for (std::size_t k = 0; k < std::min<std::size_t>(5, both.size()); ++k) {
+    const TableCheckError& e = both[k];
+    worst.push_back({{"tY_mm", e.tY * 1e3}, {"Q_kN", e.Q * 1e-3}, {"roll_mrad", e.roll * 1e3}, {"N", e.e_N},
+                     {"pmax", e.e_pmax}, {"area", e.e_area}});
+  }
+  j["worst"] = worst;
+  j["table_ok_direct_not_points"] = ok_not_direct;
   return j;
 }
 
@@ -184,6 +240,27 @@ struct TableGrid {
 
 }  // namespace
 
+std::vector<TablePoint> table_validation_points(const std::vector<double>& tY_mm, const std::vector<double>& Q_kN,
+                                                const std::vector<double>& roll_mrad, int n) {
+  // splitmix64 (Steele, Lea and Flood, OOPSLA 2014): the same points on every platform and
+  // standard library, a uniform double in [0, 1) from its top 53 bits.
+  std::uint64_t state = kTableValidationSeed;
+  auto uniform = [&state] {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) * 0x1.0p-53;
+  };
+  auto at = [](const std::vector<double>& x, double u) { return x.front() + u * (x.back() - x.front()); };
+  std::vector<TablePoint> p;
+  for (int k = 0; k < n; ++k) {
+    const double t = uniform(), q = uniform(), r = uniform();
+    p.push_back({rounded_mm(at(tY_mm, t)), rounded_mm(at(Q_kN, q)), roll_mrad.size() > 1 ? rounded_mm(at(roll_mrad, r)) : roll_mrad[0]});
+  }
+  return p;
+}
+
 std::vector<TablePoint> table_first_points(const CaseFile& cf, const TableMakeOptions& opt) {
   TableGrid g;
   table_initial_nodes(cf, g.tY, g.Q, g.roll);
@@ -191,6 +268,8 @@ std::vector<TablePoint> table_first_points(const CaseFile& cf, const TableMakeOp
   if (opt.check) {
     const auto c = g.centres(opt.check_points);
     pts.insert(pts.end(), c.begin(), c.end());
+    const auto v = table_validation_points(g.tY, g.Q, g.roll, opt.validate);
+    pts.insert(pts.end(), v.begin(), v.end());
   }
   return pts;
 }
@@ -200,6 +279,9 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   TableGrid g;
   table_initial_nodes(cf, g.tY, g.Q, g.roll);
   const bool roll_axis = g.roll.size() > 1;
+  // Solved with the first round's points (one pass of shards), compared once the table is made.
+  const std::vector<TablePoint> validation =
+      opt.check ? table_validation_points(g.tY, g.Q, g.roll, opt.validate) : std::vector<TablePoint>{};
 
   const unsigned nt = std::max(1u, opt.threads ? opt.threads : std::thread::hardware_concurrency());
   Pool pool(nt);
@@ -259,6 +341,7 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
     // The nodes and the centres of their cells in one batch (one pass of shards).
     std::vector<TablePoint> batch = pts;
     batch.insert(batch.end(), centres.begin(), centres.end());
+    if (round == 0) batch.insert(batch.end(), validation.begin(), validation.end());
     if (!solve_missing(batch)) return made;
     data = build();
     checks.clear();
@@ -394,6 +477,18 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
     data.cell_coarse = cell_fail;
   }
 
+  // The validation points against the table written (its coarse cells marked: a lookup there is
+  // at best outside_validity, as a caller's is).
+  std::vector<TableCheckError> validated;
+  {
+    const ContactTableLookup look(data);
+    TableAnswer ans;
+    for (const TablePoint& p : validation) {
+      look.lookup(p.tY_mm * units::mm, p.Q_kN * 1e3, p.roll_mrad * 1e-3, ans);
+      validated.push_back(compare(ans, solved.at(p), p));
+    }
+  }
+
   // The checks were made before their cells were marked: a coarse cell's table answer is at best
   // outside_validity (the lookup of the table written), as the status counts of `error` say.
   for (std::size_t c = 0; c < checks.size() && c / per < cell_fail.size(); ++c)
@@ -444,9 +539,11 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
   }
   h["units"] = units_j;
   if (opt.check) h["error"] = error_summary(checks, opt);
+  if (!validation.empty()) h["validation"] = validation_summary(validated, opt);
   data.header = h;
   made.data = std::move(data);
   made.checks = std::move(checks);
+  made.validation = std::move(validated);
   return made;
 }
 
@@ -520,6 +617,16 @@ int table_job(const CaseFile& cf, const TableMakeOptions& opt, const std::string
           << fmt3(e["position"]["max"].get<double>()) << " mm";
     }
     err << "; " << coarse << " coarse cells, " << failed << " t_Y nodes without an answer (dropped)\n";
+    if (m.data.header.contains("validation")) {
+      const auto& v = m.data.header["validation"];
+      const auto& st = v["status"];
+      err << "mhcontact table: validation at " << v["points"].get<std::size_t>() << " random points: ok table "
+          << st["table_ok"].get<std::size_t>() << ", direct " << st["direct_ok"].get<std::size_t>() << ", both "
+          << st["both_ok"].get<std::size_t>() << ", table and not direct " << st["table_ok_direct_not"].get<std::size_t>()
+          << "; where both ok: N max " << fmt3(100 * v["N"]["max"].get<double>()) << " % of Q, pmax max "
+          << fmt3(100 * v["pmax"]["max"].get<double>()) << " %, area max " << fmt3(100 * v["area"]["max"].get<double>())
+          << " %; " << v["beyond"].get<std::size_t>() << " ok answers beyond a tolerance\n";
+    }
   }
   return coarse || failed ? kExitCasesFailed : kExitOk;
 }

@@ -4,6 +4,7 @@
 // contacts matched to those of its neighbours by position into tracks, the interpolant checked
 // against direct solves at every cell's centre, intervals halved where a cell misses its
 // tolerance, and the table written as CSV with a JSON header (input/contact_table.hpp reads it).
+#include <cstdint>
 #include <iosfwd>
 #include <map>
 #include <string>
@@ -26,6 +27,11 @@ struct TableMakeOptions {
   /// coarse if it still misses). The tricubic interpolant's error is largest away from the centre
   /// in some cells (docs/tables.md "Checking a table at random points").
   int check_points = 1;
+  /// Points drawn uniformly over the table's t_Y, Q (and roll) ranges (seed kTableValidationSeed),
+  /// solved directly and compared with the table made, after it is made: never used to refine or
+  /// to mark cells, so their errors measure the table where its check points do not (header
+  /// `validation`, docs/tables.md "Validation at random points"). 0: none. Only with `check`.
+  int validate = 100;
   int refine = 3;             ///< rounds of halving the t_Y and Q intervals whose cells miss a tolerance (default 3; 0: none)
   double min_step_mm = 0.05;  ///< no t_Y interval is halved below this (default 0.05 mm)
   double min_Q_step_kN = 5;   ///< no Q interval is halved below this (default 5 kN)
@@ -49,10 +55,15 @@ struct TableCheckError {
   CaseStatus direct = CaseStatus::Ok, table = CaseStatus::Ok;
 };
 
+/// The seed of the validation points (TableMakeOptions::validate): fixed, so that a table is the
+/// same bytes wherever and in however many shards it is made.
+constexpr std::uint64_t kTableValidationSeed = 1;
+
 /// A made table and its check.
 struct TableMade {
   ContactTableData data;                 ///< with its header (the error summary included)
   std::vector<TableCheckError> checks;   ///< check_points per cell of the final grid, in cell order (check on)
+  std::vector<TableCheckError> validation;  ///< at the validation points, in their order (check on, validate > 0)
   std::size_t solves = 0;                ///< direct solves made (nodes and check points)
   /// With `defer`: the points the making needs next that the presolved solves do not hold,
   /// sorted. While it is not empty the table is not made (`data` is empty): solve them (the
@@ -68,8 +79,15 @@ void table_initial_nodes(const CaseFile& cf, std::vector<double>& tY_mm, std::ve
                          std::vector<double>& roll_mrad);
 
 /// The points the first round of making solves: the initial nodes, then with `opt.check` the
-/// centres of their cells. The shards of `mhcontact table --shard K/N` split them.
+/// centres of their cells and the validation points. The shards of `mhcontact table --shard K/N`
+/// split them.
 std::vector<TablePoint> table_first_points(const CaseFile& cf, const TableMakeOptions& opt);
+
+/// The validation points of a table whose initial nodes span tY_mm, Q_kN and roll_mrad
+/// (TableMakeOptions::validate of them, uniform over the ranges, seed kTableValidationSeed; the
+/// roll the one node's without a roll axis), in mm, kN and mrad.
+std::vector<TablePoint> table_validation_points(const std::vector<double>& tY_mm, const std::vector<double>& Q_kN,
+                                                const std::vector<double>& roll_mrad, int n);
 
 /// Make the table of `cf` (its pair `pg`, method, material; its sweep gives the initial nodes).
 /// `presolved` (the shards' solves, contact_table_shards.hpp) are taken instead of solving those

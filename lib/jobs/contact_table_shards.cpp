@@ -38,6 +38,8 @@ void check_same(const nlohmann::json& j, const std::string& path, const CaseFile
   if (field("check") != opt.check) throw InputError(path + ": /check", field("check").dump(), "--no-check differs: " + other);
   if (field("check_points") != opt.check_points)
     throw InputError(path + ": /check_points", field("check_points").dump(), "--check-points differs: " + other);
+  if (field("validate") != opt.validate)
+    throw InputError(path + ": /validate", field("validate").dump(), "--validate differs: " + other);
 }
 
 nlohmann::json read_json_file(const std::string& path, const char* what, const char* hint) {
@@ -102,6 +104,7 @@ int table_shard_job(const CaseFile& cf, const TableMakeOptions& opt, const std::
   j["pass"] = pass;
   j["check"] = opt.check;
   j["check_points"] = opt.check_points;
+  j["validate"] = opt.validate;
   j["inputs"] = inputs_json(cf);
   j["profiles"] = profiles_json(pg);
   j["points"] = all.size();
@@ -214,6 +217,7 @@ void write_table_points(const CaseFile& cf, const PairGeometry& pg, const TableM
   j["pass"] = pass;
   j["check"] = opt.check;
   j["check_points"] = opt.check_points;
+  j["validate"] = opt.validate;
   j["inputs"] = inputs_json(cf);
   j["profiles"] = profiles_json(pg);
   j["points"] = points_json(points);

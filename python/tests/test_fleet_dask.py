@@ -178,5 +178,15 @@ def test_table_on_dask_equals_the_command(client, tmp_path):
     res = mhcontact.make_table(path, client, tmp_path / "dask-flat.csv", shards=2, options={"refine": 0})
     assert res["exit_code"] == 1 and res["passes"] == 1
     assert filecmp.cmp(flat, res["out_path"], shallow=False)
+    # The validation points as the command's --validate (20 of them; 0: none in the header).
+    val = str(tmp_path / "val.csv")
+    assert subprocess.run([BINARY, "table", path, "-o", val, "-q", "--refine", "0", "--validate", "20"]).returncode == 1
+    res = mhcontact.make_table(path, client, tmp_path / "dask-val.csv", shards=2, options={"refine": 0, "validate": 20})
+    assert filecmp.cmp(val, res["out_path"], shallow=False)
+    assert res["header"]["validation"]["points"] == 20
+    res = mhcontact.make_table(path, client, tmp_path / "dask-noval.csv", shards=2, options={"refine": 0, "validate": 0})
+    assert "validation" not in res["header"]
     with pytest.raises(TypeError, match="unknown key 'refines'"):
         mhcontact.make_table(path, client, tmp_path / "x.csv", options={"refines": 0})
+    with pytest.raises(ValueError, match="validate must be"):
+        mhcontact.make_table(path, client, tmp_path / "x.csv", options={"validate": -1})

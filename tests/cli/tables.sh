@@ -17,6 +17,10 @@ rc=$?
 # Exit 1: coarse cells at flange onset and t_Y nodes without an answer, dropped (docs/tables.md).
 check "example exit 1" test $rc -eq 1
 check "summary line" grep -q '^mhcontact table: 28 x 5 nodes, 11 contact tracks, .* 21 coarse cells, 2 t_Y nodes without an answer (dropped)$' stderr.txt
+# The validation points (docs/tables.md "How it is made", step 6): the summary's last line and
+# the header's `validation`.
+check "validation line" grep -q '^mhcontact table: validation at 100 random points: ok table [0-9]*, direct [0-9]*, both [0-9]*, table and not direct [0-9]*; where both ok: .*ok answers beyond a tolerance$' stderr.txt
+check "validation in the header" grep -q '"validation":{.*"points":100,' out/table.csv
 check "header schema" grep -q '^# {.*"schema":"mhcontact.table/2"' out/table.csv
 check "column line" test "$(sed -n 2p out/table.csv)" = "tY_mm,Q_kN,roll_mrad,status,contact,present,N_kN,y_rail_mm,z_rail_mm,y_wheel_mm,gamma_deg,r_roll_mm,pmax_MPa,area_mm2,a_mm,b_mm,a_el_mm,b_el_mm,C11,C22,C23"
 check "rows: 28 x 5 nodes x 11 tracks" test "$(tail -n +3 out/table.csv | wc -l)" -eq 1540
@@ -90,6 +94,16 @@ check "--points without --shard refused" test $rc -ge 100
 "$BIN" table q.json --merge out/q1.json -o out/x.csv 2>err.txt; rc=$?
 check "missing shard refused (exit 2)" test $rc -eq 2
 check "missing shard message" grep -q 'shard 2/2 is missing' err.txt
+# --validate 0 leaves the validation points out; shards made with another --validate are refused
+# (the first round's points differ).
+"$BIN" table q.json -o out/q0.csv -q --refine 0 --validate 0
+check "--validate 0: no validation" bash -c '! grep -q "\"validation\"" out/q0.csv'
+"$BIN" table q.json --shard 1/1 --validate 7 -o out/q7.json -q
+"$BIN" table q.json --merge out/q7.json -o out/x.csv 2>err.txt; rc=$?
+check "shard of another --validate refused (exit 2)" test $rc -eq 2
+check "shard of another --validate: message" grep -q '/validate.*--validate differs' err.txt
+"$BIN" table q.json -o out/x.csv --validate -3 2>err.txt; rc=$?
+check "--validate -3 refused" test $rc -ne 0 -a $rc -ne 1
 
 # Must-fail inputs: exit 2, the message names the file and the rule.
 cp "$SRC/cases/manchester.json" mh.json
