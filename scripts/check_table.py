@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """A contact table against direct solves at random points (docs/tables.md "Checking a table at
-random points"): the maker checks one point per cell (its centre); this draws points uniformly
-over the table's t_Y, Q and roll ranges, looks each up in the table (mhcontact.Table) and solves
-it directly by the case's own pair and method (mhcontact.Pair.from_case_file, the wheel rolled by
+random points"): the maker checks one point per cell (its centre) and validates the table at 100
+random points of a fixed seed (the header's `validation`); this draws as many points as asked, of
+any seed, uniformly over the table's t_Y, Q and roll ranges, looks each up in the table
+(mhcontact.Table) and solves it directly by the case's own pair and method (mhcontact.Pair.from_case_file, the wheel rolled by
 the point's roll), and reports the statuses and the errors of the peak pressure, the total area
 and Fy where both answers are `ok`, against the tolerances in the table's header.
 

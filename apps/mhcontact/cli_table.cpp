@@ -50,7 +50,7 @@ void add_table_command(CLI::App& app, CliContext& ctx) {
       ->check(CLI::IsMember({1, 3}))->capture_default_str();
   cmd->add_option("--validate", o->make.validate,
                   "Random points solved directly and compared with the table made, never used to refine it: their "
-                  "errors and statuses go into the header's `validation` (docs/tables.md \"Validation at random points\"); 0: none")
+                  "errors and statuses go into the header's `validation` (docs/tables.md \"How it is made\", step 6); 0: none")
       ->check(CLI::Range(0, 100000))->capture_default_str();
   cmd->add_flag("--no-check", o->no_check, "Make the nodes only: no direct solves at the cell centres or validation "
                                            "points, no refinement");

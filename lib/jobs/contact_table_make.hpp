@@ -3,7 +3,8 @@
 // solved at every node of its t_Y × Q (× roll) sweep on the jobs' thread pool, each node's
 // contacts matched to those of its neighbours by position into tracks, the interpolant checked
 // against direct solves at every cell's centre, intervals halved where a cell misses its
-// tolerance, and the table written as CSV with a JSON header (input/contact_table.hpp reads it).
+// tolerance, the table made validated at random points it was not made on, and written as CSV
+// with a JSON header (input/contact_table.hpp reads it).
 #include <cstdint>
 #include <iosfwd>
 #include <map>
@@ -30,7 +31,7 @@ struct TableMakeOptions {
   /// Points drawn uniformly over the table's t_Y, Q (and roll) ranges (seed kTableValidationSeed),
   /// solved directly and compared with the table made, after it is made: never used to refine or
   /// to mark cells, so their errors measure the table where its check points do not (header
-  /// `validation`, docs/tables.md "Validation at random points"). 0: none. Only with `check`.
+  /// `validation`, docs/tables.md "How it is made", step 6). 0: none. Only with `check`.
   int validate = 100;
   int refine = 3;             ///< rounds of halving the t_Y and Q intervals whose cells miss a tolerance (default 3; 0: none)
   double min_step_mm = 0.05;  ///< no t_Y interval is halved below this (default 0.05 mm)

@@ -1,4 +1,4 @@
-// A table's validation at random points (docs/tables.md "Validation at random points"): points
+// A table's validation at random points (docs/tables.md "How it is made", step 6): points
 // that are neither nodes nor check points of the table made, and figures in its header that are
 // those of direct solves there, recomputed here from the written file and the run's own solve.
 #include <catch2/catch.hpp>
