@@ -26,7 +26,8 @@ void add_table_command(CLI::App& app, CliContext& ctx) {
       "table", "Contact table for time-stepping callers: the case's grid method (strips, half-space, auto) at every "
                "node of its t_Y x Q (x roll) sweep, contacts matched across nodes, the interpolation error measured at "
                "the cell centres and t_Y, Q or the roll refined where it misses (writes FILE, CSV with a JSON header). "
-               "Exit 0 if every cell meets its tolerance and every node has an answer, 1 if not.");
+               "Exit 0 if every cell meets its tolerance, every node has an answer and no validation point finds an ok "
+               "answer beyond tolerance (or ok where the method is not), 1 if not.");
   cmd->add_option("case", o->case_file, "Case file (JSON) with a method other than multi-hertzian and a sweep: its nodes")
       ->required();
   cmd->add_option("-o,--output", o->out, "Table file to write (- for standard output)")->required();

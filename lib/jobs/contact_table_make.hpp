@@ -104,7 +104,8 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
 void write_contact_table(const ContactTableData& t, std::ostream& out);
 
 /// `mhcontact table CASE.json -o FILE`: make, write atomically, print the error summary. Returns
-/// 0, or 1 when some cells stay beyond tolerance (coarse) or some nodes have no answer. With
+/// 0, or 1 when some cells stay beyond tolerance (coarse), some nodes have no answer, or a
+/// validation point finds the table `ok` beyond a tolerance or where the direct solve is not `ok`. With
 /// `shard_files` (`--merge`), the solves are the shards' (contact_table_shards.hpp: the first
 /// round's and those of refinement passes) and the rest is solved here: the table is byte for byte
 /// the one-process table. With `next_path` too (`--merge ... --next FILE`), the rest is not solved

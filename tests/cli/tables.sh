@@ -94,6 +94,16 @@ check "--points without --shard refused" test $rc -ge 100
 "$BIN" table q.json --merge out/q1.json -o out/x.csv 2>err.txt; rc=$?
 check "missing shard refused (exit 2)" test $rc -eq 2
 check "missing shard message" grep -q 'shard 2/2 is missing' err.txt
+# A validation point where the table answers ok beyond a tolerance is a known miss: exit 1 (the
+# worn pair's table, exit 0 with the default 100 points, finds 2 at 1,000; 1 Dec 2026).
+cp "$SRC/tests/data/tables/worn-table.json" worn.json
+sed -i "s|\.\./profiles|$SRC/tests/data/profiles|g" worn.json
+"$BIN" table worn.json -o out/worn.csv -q --threads 2; rc=$?
+check "worn table, 100 validation points: exit 0" test $rc -eq 0
+"$BIN" table worn.json -o out/worn1000.csv --threads 2 --validate 1000 2>err.txt; rc=$?
+check "worn table, 1,000 validation points: exit 1" test $rc -eq 1
+check "worn table, 1,000 validation points: the misses counted" grep -q '^mhcontact table: validation at 1000 random points: .*; [1-9][0-9]* ok answers beyond a tolerance$' err.txt
+check "worn table, 1,000 validation points: no coarse cell" grep -q ' 0 coarse cells, 0 t_Y nodes without an answer' err.txt
 # --validate 0 leaves the validation points out; shards made with another --validate are refused
 # (the first round's points differ).
 "$BIN" table q.json -o out/q0.csv -q --refine 0 --validate 0
