@@ -102,6 +102,20 @@ int wheelset_table_job(const std::string& left_path, const std::string& right_pa
           << " mm (upright)\n";
     else
       err << "mhcontact table-wheelset: warning: no lateral displacement y has both wheels inside their tables' t_Y ranges\n";
+    // Each pair table's own validation at random points (docs/tables.md "How it is made", step 6).
+    err << "mhcontact table-wheelset: validation: ";
+    for (int s = 0; s < 2; ++s) {
+      err << side[s] << " ";
+      if (t[s].header.contains("validation")) {
+        const auto& v = t[s].header["validation"];
+        err << "both ok at " << v["status"]["both_ok"].get<std::size_t>() << " of " << v["points"].get<std::size_t>()
+            << " points, " << v["beyond"].get<std::size_t>() << " beyond a tolerance, table ok and direct not "
+            << v["status"]["table_ok_direct_not"].get<std::size_t>();
+      } else {
+        err << "none (made with --validate 0 or --no-check)";
+      }
+      err << (s == 0 ? "; " : "\n");
+    }
   }
   return kExitOk;
 }

@@ -144,6 +144,10 @@ check "roll table rows: roll outer" test "$(sed -n 3p out/roll.csv | cut -d, -f1
 "$BIN" table-wheelset out/roll.csv out/roll.csv -o out/ws.csv 2>err.txt; rc=$?
 check "table-wheelset exit 0" test $rc -eq 0
 check "table-wheelset summary" grep -q '^mhcontact table-wheelset: left 2 x 2 x 3 nodes, roll -1 ... 1 mrad; right 2 x 2 x 3 nodes' err.txt
+check "table-wheelset: each pair's validation" grep -q '^mhcontact table-wheelset: validation: left both ok at [0-9]* of 100 points, [0-9]* beyond a tolerance, table ok and direct not [0-9]*; right both ok at ' err.txt
+"$BIN" table roll.json -o out/roll0.csv --refine 0 --validate 0 -q
+"$BIN" table-wheelset out/roll.csv out/roll0.csv -o out/ws0.csv 2>err.txt
+check "table-wheelset: a table without validation said" grep -q 'right none (made with --validate 0 or --no-check)$' err.txt
 check "wheelset table: three header lines" test "$(grep -c '^#' out/ws.csv)" -eq 3
 check "wheelset table: the pair's text twice" cmp <(tail -n +2 out/ws.csv) <(cat out/roll.csv out/roll.csv)
 sed '1s/,"wheelset_placement":{[^}]*}//' out/roll.csv > old_table.csv
