@@ -148,23 +148,32 @@ const Keys& keys() {
   return *k;
 }
 
+// d[k] = x through the dict's own C API (PyDict_SetItem): pybind11's item proxy goes through the
+// generic PyObject_SetItem, about a third of a dict's building time here.
+void set_item(PyObject* d, const py::str& k, PyObject* v) {
+  if (!v) throw py::error_already_set();
+  const int rc = PyDict_SetItem(d, k.ptr(), v);
+  Py_DECREF(v);
+  if (rc != 0) throw py::error_already_set();
+}
+void set_float(PyObject* d, const py::str& k, double x) { set_item(d, k, PyFloat_FromDouble(x)); }
+
+// The fields of one slot (a contact, or its derivatives) as a dict.
+py::dict fields_dict(const Keys& K, const mhc_table_contact& c) {
+  py::dict d;
+  for (int f = 0; f < kNFields; ++f) set_float(d.ptr(), K.field[f], fields(c)[f]);
+  return d;
+}
+
 // dr: the roll derivatives, or null for a table without a roll axis (no d_droll key: they are 0).
 py::dict contact_dict(const Keys& K, const mhc_table_contact& c, const mhc_table_contact& dt, const mhc_table_contact& dq,
                       const mhc_table_contact* dr) {
-  py::dict d, ddt, ddq;
-  d[K.track] = py::int_(c.track);
-  for (int f = 0; f < kNFields; ++f) {
-    d[K.field[f]] = py::float_(fields(c)[f]);
-    ddt[K.field[f]] = py::float_(fields(dt)[f]);
-    ddq[K.field[f]] = py::float_(fields(dq)[f]);
-  }
-  d[K.d_dtY] = ddt;
-  d[K.d_dQ] = ddq;
-  if (dr) {
-    py::dict ddr;
-    for (int f = 0; f < kNFields; ++f) ddr[K.field[f]] = py::float_(fields(*dr)[f]);
-    d[K.d_droll] = ddr;
-  }
+  py::dict d;
+  set_item(d.ptr(), K.track, PyLong_FromLong(c.track));
+  for (int f = 0; f < kNFields; ++f) set_float(d.ptr(), K.field[f], fields(c)[f]);
+  set_item(d.ptr(), K.d_dtY, fields_dict(K, dt).release().ptr());
+  set_item(d.ptr(), K.d_dQ, fields_dict(K, dq).release().ptr());
+  if (dr) set_item(d.ptr(), K.d_droll, fields_dict(K, *dr).release().ptr());
   return d;
 }
 
@@ -260,21 +269,22 @@ void add_tables(py::module_& m, void (*raise)(mhc_error)) {
             mhc_table_lookup_rolled(t.t, tY_m, Q_N, roll_rad, &r);
             const Keys& K = keys();
             py::dict d;
-            d[K.status] = py::str(mhc_status_name(r.status));
-            d[K.coarse] = py::bool_(r.coarse != 0);
-            d[K.off_roll] = py::bool_(r.off_roll != 0);
-            d[K.n_contacts] = py::int_(r.n_contacts);
-            d[K.Fz] = py::float_(r.Fz_N);
-            d[K.Fy] = py::float_(r.Fy_N);
-            d[K.dFy_dtY] = py::float_(r.dFy_dtY_N_per_m);
-            d[K.dFy_dQ] = py::float_(r.dFy_dQ);
-            if (t.roll_axis) d[K.dFy_droll] = py::float_(r.dFy_droll_N_per_rad);
+            PyObject* D = d.ptr();
+            set_item(D, K.status, PyUnicode_FromString(mhc_status_name(r.status)));
+            set_item(D, K.coarse, PyBool_FromLong(r.coarse != 0));
+            set_item(D, K.off_roll, PyBool_FromLong(r.off_roll != 0));
+            set_item(D, K.n_contacts, PyLong_FromLong(r.n_contacts));
+            set_float(D, K.Fz, r.Fz_N);
+            set_float(D, K.Fy, r.Fy_N);
+            set_float(D, K.dFy_dtY, r.dFy_dtY_N_per_m);
+            set_float(D, K.dFy_dQ, r.dFy_dQ);
+            if (t.roll_axis) set_float(D, K.dFy_droll, r.dFy_droll_N_per_rad);
             const int n = r.n_contacts < MHC_MAX_CONTACTS ? r.n_contacts : MHC_MAX_CONTACTS;
             py::list cs(static_cast<std::size_t>(n));
             for (int k = 0; k < n; ++k)
-              cs[static_cast<std::size_t>(k)] =
-                  contact_dict(K, r.contact[k], r.d_dtY[k], r.d_dQ[k], t.roll_axis ? &r.d_droll[k] : nullptr);
-            d[K.contacts] = cs;
+              PyList_SET_ITEM(cs.ptr(), k, contact_dict(K, r.contact[k], r.d_dtY[k], r.d_dQ[k],
+                                                        t.roll_axis ? &r.d_droll[k] : nullptr).release().ptr());
+            set_item(D, K.contacts, cs.release().ptr());
             return d;
           }, py::arg("tY_m"), py::arg("Q_N"), py::arg("roll_rad") = 0.0,
           "The answer at one point (the wheel's roll roll_rad against the rail, default upright): status, coarse, "
