@@ -133,7 +133,7 @@ void many_fill(const mhc_table* t, std::size_t n, const double* ty, const double
 // freed (as statics they would be destroyed after the interpreter).
 struct Keys {
   py::str field[kNFields], track, d_dtY, d_dQ, d_droll, status, coarse, off_roll, n_contacts, Fz, Fy, dFy_dtY, dFy_dQ,
-      dFy_droll, contacts;
+      dFy_droll, contacts, Mx, dFy_dy, tY, roll, left, right;
   Keys() {
     for (int f = 0; f < kNFields; ++f) field[f] = py::str(kFields[f]);
     track = py::str("track"), d_dtY = py::str("d_dtY"), d_dQ = py::str("d_dQ"), d_droll = py::str("d_droll");
@@ -141,6 +141,8 @@ struct Keys {
     n_contacts = py::str("n_contacts"), Fz = py::str("Fz_N"), Fy = py::str("Fy_N");
     dFy_dtY = py::str("dFy_dtY_N_per_m"), dFy_dQ = py::str("dFy_dQ"), dFy_droll = py::str("dFy_droll_N_per_rad");
     contacts = py::str("contacts");
+    Mx = py::str("Mx_Nm"), dFy_dy = py::str("dFy_dy_N_per_m"), tY = py::str("tY_m"), roll = py::str("roll_rad");
+    left = py::str("left"), right = py::str("right");
   }
 };
 const Keys& keys() {
@@ -392,33 +394,35 @@ void add_tables(py::module_& m, void (*raise)(mhc_error)) {
             mhc_wheelset_table_lookup(t.t, y_m, roll_rad, Q_left_N, Q_right_N, &r);
             const Keys& K = keys();
             py::dict d;
-            d[K.status] = py::str(mhc_status_name(r.status));
-            d["Fy_N"] = py::float_(r.Fy_N);
-            d["Fz_N"] = py::float_(r.Fz_N);
-            d["Mx_Nm"] = py::float_(r.Mx_Nm);
-            d["dFy_dy_N_per_m"] = py::float_(r.dFy_dy_N_per_m);
-            d["dFy_droll_N_per_rad"] = py::float_(r.dFy_droll_N_per_rad);
+            PyObject* D = d.ptr();
+            set_item(D, K.status, PyUnicode_FromString(mhc_status_name(r.status)));
+            set_float(D, K.Fy, r.Fy_N);
+            set_float(D, K.Fz, r.Fz_N);
+            set_float(D, K.Mx, r.Mx_Nm);
+            set_float(D, K.dFy_dy, r.dFy_dy_N_per_m);
+            set_float(D, K.dFy_droll, r.dFy_droll_N_per_rad);
             for (int s = 0; s < 2; ++s) {
               const mhc_table_result& w = r.wheel[s];
               py::dict e;
-              e[K.status] = py::str(mhc_status_name(w.status));
-              e["tY_m"] = py::float_(w.tY_m);
-              e["roll_rad"] = py::float_(w.roll_rad);
-              e["Fy_N"] = py::float_(r.wheel_Fy_N[s]);
-              e["Fz_N"] = py::float_(r.wheel_Fz_N[s]);
-              e["Mx_Nm"] = py::float_(r.wheel_Mx_Nm[s]);
-              e["dFy_dy_N_per_m"] = py::float_(r.wheel_dFy_dy_N_per_m[s]);
-              e["dFy_droll_N_per_rad"] = py::float_(r.wheel_dFy_droll_N_per_rad[s]);
-              e["dFy_dQ"] = py::float_(r.wheel_dFy_dQ[s]);
-              e[K.coarse] = py::bool_(w.coarse != 0);
-              e[K.off_roll] = py::bool_(w.off_roll != 0);
-              e[K.n_contacts] = py::int_(w.n_contacts);
+              PyObject* E = e.ptr();
+              set_item(E, K.status, PyUnicode_FromString(mhc_status_name(w.status)));
+              set_float(E, K.tY, w.tY_m);
+              set_float(E, K.roll, w.roll_rad);
+              set_float(E, K.Fy, r.wheel_Fy_N[s]);
+              set_float(E, K.Fz, r.wheel_Fz_N[s]);
+              set_float(E, K.Mx, r.wheel_Mx_Nm[s]);
+              set_float(E, K.dFy_dy, r.wheel_dFy_dy_N_per_m[s]);
+              set_float(E, K.dFy_droll, r.wheel_dFy_droll_N_per_rad[s]);
+              set_float(E, K.dFy_dQ, r.wheel_dFy_dQ[s]);
+              set_item(E, K.coarse, PyBool_FromLong(w.coarse != 0));
+              set_item(E, K.off_roll, PyBool_FromLong(w.off_roll != 0));
+              set_item(E, K.n_contacts, PyLong_FromLong(w.n_contacts));
               const int n = w.n_contacts < MHC_MAX_CONTACTS ? w.n_contacts : MHC_MAX_CONTACTS;
               py::list cs(static_cast<std::size_t>(n));
               for (int k = 0; k < n; ++k)
-                cs[static_cast<std::size_t>(k)] = contact_dict(K, w.contact[k], w.d_dtY[k], w.d_dQ[k], &w.d_droll[k]);
-              e[K.contacts] = cs;
-              d[s == 0 ? "left" : "right"] = e;
+                PyList_SET_ITEM(cs.ptr(), k, contact_dict(K, w.contact[k], w.d_dtY[k], w.d_dQ[k], &w.d_droll[k]).release().ptr());
+              set_item(E, K.contacts, cs.release().ptr());
+              set_item(D, s == 0 ? K.left : K.right, e.release().ptr());
             }
             return d;
           }, py::arg("y_m"), py::arg("roll_rad"), py::arg("Q_left_N"), py::arg("Q_right_N"),

@@ -270,6 +270,15 @@ def test_wheelset_table(tmp_path):
         assert d["Fy_N"] == pytest.approx(d["left"]["Fy_N"] + d["right"]["Fy_N"], rel=1e-12)
         assert w.lookup_into(y, roll, 50e3, 70e3, out) == 0
         assert out.Fy_N == d["Fy_N"] and out.Mx_Nm == d["Mx_Nm"] and out.wheel_tY_m[1] == d["right"]["tY_m"]
+        # Every number of the dict is the C result's (lookup_into reads the same struct).
+        assert out.status == d["status"] and out.Fz_N == d["Fz_N"]
+        assert out.dFy_dy_N_per_m == d["dFy_dy_N_per_m"] and out.dFy_droll_N_per_rad == d["dFy_droll_N_per_rad"]
+        for s, name in enumerate(("left", "right")):
+            e = d[name]
+            assert (out.wheel_tY_m[s], out.wheel_Fy_N[s], out.wheel_Fz_N[s], out.wheel_dFy_dQ[s]) == \
+                (e["tY_m"], e["Fy_N"], e["Fz_N"], e["dFy_dQ"])
+            assert e["n_contacts"] == len(e["contacts"]) and e["coarse"] is False and e["off_roll"] is False
+            assert e["Mx_Nm"] != 0 and e["dFy_dy_N_per_m"] != 0 and set(e["contacts"][0]) >= {"track", "d_dtY", "d_dQ", "d_droll"}
     assert w.lookup(3e-3, 0.0, 50e3, 70e3)["status"] == "out_of_range"
     with pytest.raises(mhcontact.InputError, match="one pair's table"):
         mhcontact.WheelsetTable(pair)
