@@ -16,6 +16,7 @@
 #include "core/numfmt.hpp"
 #include "core/units.hpp"
 #include "core/parallel.hpp"
+#include "jobs/contact_table_check.hpp"
 #include "jobs/contact_table_shards.hpp"
 #include "jobs/contact_table_solves.hpp"
 #include "jobs/contact_table_tracks.hpp"
@@ -26,152 +27,14 @@
 namespace mh {
 namespace {
 
-/// The interpolant against a direct solve at one point.
-TableCheckError compare(const TableAnswer& T, const NodeSolve& D, const TablePoint& p) {
-  TableCheckError e;
-  e.tY = p.tY_mm * units::mm;
-  e.Q = p.Q_kN * 1e3;
-  e.roll = p.roll_mrad * 1e-3;
-  const double Q = e.Q;
-  e.direct = D.status;
-  e.table = T.status;
-  if (is_failure(D.status) || is_failure(T.status)) return e;
-  e.compared = true;
-  const int nt = std::min(T.n_contacts, kTableMaxContacts);
-  std::vector<bool> used(static_cast<std::size_t>(nt), false);
-  double pmax = 0, area = 0;
-  for (int k = 0; k < nt; ++k) {
-    pmax = std::max(pmax, T.c[static_cast<std::size_t>(k)].v[kTabPmax]);
-    area += T.c[static_cast<std::size_t>(k)].v[kTabArea];
-  }
-  // Each direct contact against the nearest unused table contact in rail y (larger N first).
-  std::vector<std::size_t> order(D.contacts.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return D.contacts[a].v[kTabN] > D.contacts[b].v[kTabN]; });
-  for (std::size_t di : order) {
-    const NodeContact& c = D.contacts[di];
-    int best = -1;
-    double bd = INFINITY;
-    for (int k = 0; k < nt; ++k) {
-      const double dy = std::fabs(T.c[static_cast<std::size_t>(k)].v[kTabYRail] - c.v[kTabYRail]);
-      if (!used[static_cast<std::size_t>(k)] && dy < bd) bd = dy, best = k;
-    }
-    // A table contact further than its own width plus 2 mm is another contact.
-    if (best >= 0 && bd > c.y_hi - c.y_lo + 2e-3) best = -1;
-    const double Nt = best >= 0 ? T.c[static_cast<std::size_t>(best)].v[kTabN] : 0.0;
-    e.e_N = std::max(e.e_N, std::fabs(Nt - c.v[kTabN]) / Q);
-    if (best >= 0) {
-      used[static_cast<std::size_t>(best)] = true;
-      if (c.v[kTabN] >= 0.05 * Q) e.e_position = std::max(e.e_position, bd);
-    }
-  }
-  for (int k = 0; k < nt; ++k)
-    if (!used[static_cast<std::size_t>(k)]) e.e_N = std::max(e.e_N, T.c[static_cast<std::size_t>(k)].v[kTabN] / Q);
-  e.e_pmax = D.pmax > 0 ? std::fabs(pmax - D.pmax) / D.pmax : 0;
-  e.e_area = D.area > 0 ? std::fabs(area - D.area) / D.area : 0;
-  e.e_Fy = std::fabs(T.Fy - D.Fy) / Q;
-  return e;
+TableTolerances tolerances(const TableMakeOptions& opt) {
+  return {opt.tol_N, opt.tol_pmax, opt.tol_area, opt.tol_position_mm};
 }
 
 std::string fmt3(double v) {
   std::ostringstream o;
   o << std::setprecision(3) << v;
   return o.str();
-}
-
-double rounded_mm(double mm) { return std::round(mm * 1e9) / 1e9; }
-
-// Per quantity over `checks` (those compared): the count, how many beyond the tolerance, the
-// median, 95th percentile and largest error.
-void quantity_stats(nlohmann::json& j, const std::vector<TableCheckError>& checks, const TableMakeOptions& opt) {
-  auto stats = [&](double TableCheckError::*f, double tol, double scale, const char* unit) {
-    std::vector<double> v;
-    for (const auto& e : checks)
-      if (e.compared) v.push_back(e.*f * scale);
-    std::sort(v.begin(), v.end());
-    std::size_t beyond = 0;
-    for (double x : v) beyond += x > tol;
-    nlohmann::json q = {{"unit", unit}, {"tolerance", tol}, {"checked", v.size()}, {"beyond", beyond}};
-    q["max"] = v.empty() ? 0.0 : v.back();
-    q["p95"] = v.empty() ? 0.0 : v[std::min(v.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(v.size())))];
-    q["median"] = v.empty() ? 0.0 : v[v.size() / 2];
-    return q;
-  };
-  j["N"] = stats(&TableCheckError::e_N, opt.tol_N, 1, "fraction of Q");
-  j["pmax"] = stats(&TableCheckError::e_pmax, opt.tol_pmax, 1, "fraction");
-  j["area"] = stats(&TableCheckError::e_area, opt.tol_area, 1, "fraction");
-  j["position"] = stats(&TableCheckError::e_position, opt.tol_position_mm, 1e3, "mm");
-  j["Fy"] = stats(&TableCheckError::e_Fy, opt.tol_N, 1, "fraction of Q");
-}
-
-nlohmann::json error_summary(const std::vector<TableCheckError>& checks, const TableMakeOptions& opt) {
-  nlohmann::json j;
-  j["where"] = opt.check_points == 3
-                   ? "the centre of every cell and the points a quarter and three quarters along its main diagonal, "
-                     "against a direct solve by the table's method"
-                   : "the centre of every cell, against a direct solve by the table's method";
-  quantity_stats(j, checks, opt);
-  std::size_t ok_direct = 0, ok_both = 0, unanswered = 0;
-  for (const auto& e : checks) {
-    if (e.direct == CaseStatus::Ok) {
-      ++ok_direct;
-      ok_both += e.table == CaseStatus::Ok;
-    }
-    unanswered += !e.compared;
-  }
-  j["status"] = {{"direct_ok", ok_direct}, {"direct_ok_table_ok", ok_both}, {"not_compared", unanswered}};
-  return j;
-}
-
-// The worst of a point's errors in units of its tolerances (N, peak pressure, area).
-double tolerance_ratio(const TableCheckError& e, const TableMakeOptions& opt) {
-  return std::max({e.e_N / opt.tol_N, e.e_pmax / opt.tol_pmax, e.e_area / opt.tol_area});
-}
-
-// The header's `validation`: the table written against the direct solves at the validation
-// points. The errors are those of the points where both answers are `ok` (what an `ok` lookup
-// claims); `beyond` counts those beyond a tolerance of N, peak pressure or area, `worst` lists
-// the five worst of them, `table_ok_direct_not_points` the first five where the table answers ok
-// and the direct solve does not.
-nlohmann::json validation_summary(const std::vector<TableCheckError>& v, const TableMakeOptions& opt) {
-  nlohmann::json j;
-  j["where"] = "points drawn uniformly over the table's ranges, never used to refine it or to mark its cells, where "
-               "both the table and a direct solve by its method answer ok";
-  j["points"] = v.size();
-  j["seed"] = kTableValidationSeed;
-  std::vector<TableCheckError> both;
-  std::size_t direct_ok = 0, table_ok = 0, table_only = 0, direct_only = 0;
-  nlohmann::json ok_not_direct = nlohmann::json::array();  // the first five: where the table claims more
-  for (const auto& e : v) {
-    const bool d = e.direct == CaseStatus::Ok, t = e.table == CaseStatus::Ok;
-    direct_ok += d;
-    table_ok += t;
-    table_only += t && !d;
-    direct_only += d && !t;
-    if (d && t && e.compared) both.push_back(e);
-    if (t && !d && ok_not_direct.size() < 5)
-      ok_not_direct.push_back({{"tY_mm", e.tY * 1e3}, {"Q_kN", e.Q * 1e-3}, {"roll_mrad", e.roll * 1e3},
-                               {"direct", to_string(e.direct)}});
-  }
-  j["status"] = {{"direct_ok", direct_ok}, {"table_ok", table_ok}, {"both_ok", both.size()},
-                 {"table_ok_direct_not", table_only}, {"direct_ok_table_not", direct_only}};
-  quantity_stats(j, both, opt);
-  std::sort(both.begin(), both.end(), [&](const TableCheckError& a, const TableCheckError& b) {
-    return tolerance_ratio(a, opt) > tolerance_ratio(b, opt);
-  });
-  std::size_t beyond = 0;
-  for (const auto& e : both) beyond += tolerance_ratio(e, opt) > 1;
-  j["beyond"] = beyond;
-  nlohmann::json worst = nlohmann::json::array();
-  for (std::size_t k = 0; k < std::min<std::size_t>(5, both.size()); ++k) {
-    const TableCheckError& e = both[k];
-    worst.push_back({{"tY_mm", e.tY * 1e3}, {"Q_kN", e.Q * 1e-3}, {"roll_mrad", e.roll * 1e3}, {"N", e.e_N},
-                     {"pmax", e.e_pmax}, {"area", e.e_area}});
-  }
-  j["worst"] = worst;
-  j["table_ok_direct_not_points"] = ok_not_direct;
-  return j;
 }
 
 }  // namespace
@@ -231,35 +94,14 @@ struct TableGrid {
         for (std::size_t j = 0; j + 1 < Q.size(); ++j)
           for (double f : {0.5, 0.25, 0.75}) {
             if (f != 0.5 && per < 3) break;
-            c.push_back({rounded_mm(at(tY[i], tY[i + 1], f)), at(Q[j], Q[j + 1], f),
-                         roll.size() > 1 ? rounded_mm(at(r_lo(m), r_hi(m), f)) : roll[0]});
+            c.push_back({table_point_rounded(at(tY[i], tY[i + 1], f)), at(Q[j], Q[j + 1], f),
+                         roll.size() > 1 ? table_point_rounded(at(r_lo(m), r_hi(m), f)) : roll[0]});
           }
     return c;
   }
 };
 
 }  // namespace
-
-std::vector<TablePoint> table_validation_points(const std::vector<double>& tY_mm, const std::vector<double>& Q_kN,
-                                                const std::vector<double>& roll_mrad, int n) {
-  // splitmix64 (Steele, Lea and Flood, OOPSLA 2014): the same points on every platform and
-  // standard library, a uniform double in [0, 1) from its top 53 bits.
-  std::uint64_t state = kTableValidationSeed;
-  auto uniform = [&state] {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return static_cast<double>(z >> 11) * 0x1.0p-53;
-  };
-  auto at = [](const std::vector<double>& x, double u) { return x.front() + u * (x.back() - x.front()); };
-  std::vector<TablePoint> p;
-  for (int k = 0; k < n; ++k) {
-    const double t = uniform(), q = uniform(), r = uniform();
-    p.push_back({rounded_mm(at(tY_mm, t)), rounded_mm(at(Q_kN, q)), roll_mrad.size() > 1 ? rounded_mm(at(roll_mrad, r)) : roll_mrad[0]});
-  }
-  return p;
-}
 
 std::vector<TablePoint> table_first_points(const CaseFile& cf, const TableMakeOptions& opt) {
   TableGrid g;
@@ -329,7 +171,7 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
     for (std::size_t c = 0; c < centres.size(); ++c) {
       const TablePoint& p = centres[c];
       look.lookup(p.tY_mm * units::mm, p.Q_kN * 1e3, p.roll_mrad * 1e-3, ans);
-      checks.push_back(compare(ans, solved.at(p), p));
+      checks.push_back(table_check_error(ans, solved.at(p), p));
       const TableCheckError& e = checks.back();
       cell_fail[c / per] |= e.compared && (e.e_N > opt.tol_N || e.e_pmax > opt.tol_pmax || e.e_area > opt.tol_area);
     }
@@ -365,11 +207,11 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
     for (std::size_t c = 0; c < cell_fail.size(); ++c)
       if (cell_fail[c]) {
         const std::size_t m = c / (nTc * nQc), i = (c / nQc) % nTc, j = c % nQc;
-        const double tm = rounded_mm(0.5 * (g.tY[i] + g.tY[i + 1])), qm = 0.5 * (g.Q[j] + g.Q[j + 1]);
+        const double tm = table_point_rounded(0.5 * (g.tY[i] + g.tY[i + 1])), qm = 0.5 * (g.Q[j] + g.Q[j + 1]);
         const double r0 = g.r_lo(m), r1 = g.r_hi(m);
         edges.insert(edges.end(), {{tm, g.Q[j], r0}, {tm, g.Q[j + 1], r1}, {g.tY[i], qm, r0}, {g.tY[i + 1], qm, r1}});
         if (roll_axis) {
-          const double rm = rounded_mm(0.5 * (r0 + r1));
+          const double rm = table_point_rounded(0.5 * (r0 + r1));
           edges.insert(edges.end(), {{g.tY[i], g.Q[j], rm}, {g.tY[i + 1], g.Q[j + 1], rm}});
         }
       }
@@ -377,9 +219,8 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
     // An edge midpoint's error in units of its tolerances (> 1: missed; 0 where not compared).
     auto score = [&](const TablePoint& p) {
       look.lookup(p.tY_mm * units::mm, p.Q_kN * 1e3, p.roll_mrad * 1e-3, ans);
-      const TableCheckError e = compare(ans, solved.at(p), p);
-      if (!e.compared) return 0.0;
-      return std::max({e.e_N / opt.tol_N, e.e_pmax / opt.tol_pmax, e.e_area / opt.tol_area});
+      const TableCheckError e = table_check_error(ans, solved.at(p), p);
+      return e.compared ? table_tolerance_ratio(e, tolerances(opt)) : 0.0;
     };
     std::vector<std::uint8_t> split_t(nTc, 0), split_q(nQc, 0), split_r(g.roll.size() - 1, 0);
     for (std::size_t c = 0, k = 0; c < cell_fail.size(); ++c)
@@ -415,7 +256,7 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
         next.push_back(x[i]);
         if (mark[i] && x[i + 1] - x[i] >= 2 * min_step - 1e-12) {
           const double mid = 0.5 * (x[i] + x[i + 1]);
-          next.push_back(round_mm ? rounded_mm(mid) : mid);
+          next.push_back(round_mm ? table_point_rounded(mid) : mid);
         }
       }
       next.push_back(x.back());
@@ -485,7 +326,7 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
     TableAnswer ans;
     for (const TablePoint& p : validation) {
       look.lookup(p.tY_mm * units::mm, p.Q_kN * 1e3, p.roll_mrad * 1e-3, ans);
-      validated.push_back(compare(ans, solved.at(p), p));
+      validated.push_back(table_check_error(ans, solved.at(p), p));
     }
   }
 
@@ -538,8 +379,8 @@ TableMade make_contact_table(const CaseFile& cf, const PairGeometry& pg, const T
     units_j[n] = n[0] == 'C' ? "1" : n.substr(u + 1);
   }
   h["units"] = units_j;
-  if (opt.check) h["error"] = error_summary(checks, opt);
-  if (!validation.empty()) h["validation"] = validation_summary(validated, opt);
+  if (opt.check) h["error"] = table_error_summary(checks, tolerances(opt), opt.check_points);
+  if (!validation.empty()) h["validation"] = table_validation_summary(validated, tolerances(opt));
   data.header = h;
   made.data = std::move(data);
   made.checks = std::move(checks);

@@ -15,6 +15,7 @@
 #include "geometry/contact_geometry.hpp"
 #include "input/case_file.hpp"
 #include "input/contact_table.hpp"
+#include "jobs/contact_table_check.hpp"
 #include "jobs/contact_table_solves.hpp"
 
 namespace mh {
@@ -44,22 +45,6 @@ struct TableMakeOptions {
   bool quiet = false;
 };
 
-/// The error of the interpolant at one check point against the direct solve there.
-struct TableCheckError {
-  double tY = 0, Q = 0, roll = 0;   ///< [m], [N], [rad]
-  bool compared = false;  ///< both answered (else the statuses say why)
-  double e_N = 0;         ///< max |ΔN| over the contacts, / Q
-  double e_pmax = 0;      ///< |Δ pmax| / pmax
-  double e_area = 0;      ///< |Δ area| / area
-  double e_position = 0;  ///< [m] max |Δ y_rail| over the contacts carrying ≥ 5 % of Q
-  double e_Fy = 0;        ///< |Δ Fy| / Q
-  CaseStatus direct = CaseStatus::Ok, table = CaseStatus::Ok;
-};
-
-/// The seed of the validation points (TableMakeOptions::validate): fixed, so that a table is the
-/// same bytes wherever and in however many shards it is made.
-constexpr std::uint64_t kTableValidationSeed = 1;
-
 /// A made table and its check.
 struct TableMade {
   ContactTableData data;                 ///< with its header (the error summary included)
@@ -83,12 +68,6 @@ void table_initial_nodes(const CaseFile& cf, std::vector<double>& tY_mm, std::ve
 /// centres of their cells and the validation points. The shards of `mhcontact table --shard K/N`
 /// split them.
 std::vector<TablePoint> table_first_points(const CaseFile& cf, const TableMakeOptions& opt);
-
-/// The validation points of a table whose initial nodes span tY_mm, Q_kN and roll_mrad
-/// (TableMakeOptions::validate of them, uniform over the ranges, seed kTableValidationSeed; the
-/// roll the one node's without a roll axis), in mm, kN and mrad.
-std::vector<TablePoint> table_validation_points(const std::vector<double>& tY_mm, const std::vector<double>& Q_kN,
-                                                const std::vector<double>& roll_mrad, int n);
 
 /// Make the table of `cf` (its pair `pg`, method, material; its sweep gives the initial nodes).
 /// `presolved` (the shards' solves, contact_table_shards.hpp) are taken instead of solving those

@@ -4,6 +4,7 @@
 // jobs' thread pool, and their JSON form for the shards of `mhcontact table --shard K/N`
 // (contact_table_shards.hpp). Internal to the jobs layer.
 #include <array>
+#include <cmath>
 #include <map>
 #include <vector>
 
@@ -40,6 +41,11 @@ struct TablePoint {
   }
   bool operator==(const TablePoint& o) const { return tY_mm == o.tY_mm && Q_kN == o.Q_kN && roll_mrad == o.roll_mrad; }
 };
+
+/// A point coordinate (mm, kN or mrad) rounded to 1e-9 of its unit, where the maker rounds a point
+/// it makes (t_Y and roll midpoints, check and validation points): a short number, the same key
+/// however it was computed.
+inline double table_point_rounded(double v) { return std::round(v * 1e9) / 1e9; }
 
 /// The solves of a table by point: the nodes' and the check points'.
 using TableSolves = std::map<TablePoint, NodeSolve>;
