@@ -15,6 +15,8 @@ pressure and traction: the whole chain against an independent program.
 Cases (the row of CONTACT's A-2.2 deck):
   tread_yaw     case 2: t_Y 0.5 mm, yaw 1.2 mrad, contact angle 3.3 deg, nearly full slip
   gauge_spin    case 12: t_Y 5.5 mm, yaw 13.2 mrad, the gauge corner at 19.3 deg, large spin
+  gauge_noyaw   case 12 with the yaw and the roll set to zero: the wheel's pose of mhcontact's
+                two-dimensional geometry (no contact point lead), so that the patches compare
 
 Outputs per case: CASE_pressure.csv (x, s [mm] element centres in CONTACT's contact frame, pn [MPa],
 px, ps [MPa] on the rail, every element in contact), CASE_stresses.csv (x, y, z [mm], the six
@@ -32,17 +34,21 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from contact_subsurface_refs import run  # noqa: E402  (one home for CONTACT's files)
 
 DEPTHS = [0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0]
-CASES = [("tread_yaw", 2), ("gauge_spin", 12)]
+CASES = [("tread_yaw", 2, False), ("gauge_spin", 12, False), ("gauge_noyaw", 12, True)]
 
 
-def deck(examples, case):
+def deck(examples, case, upright):
     """CONTACT's A-2.2 right-wheel deck: its first case's settings with case `case`'s pose and
-    velocities, the .mat file (A = 1) and the subsurface points."""
+    velocities (`upright`: its roll and yaw set to 0), the .mat file (A = 1) and the subsurface
+    points."""
     lines = open(os.path.join(examples, "mbench_a22_right.inp")).read().splitlines()
     start = [i for i, l in enumerate(lines) if l.strip().endswith("MODULE")]
     first = lines[start[0]:start[1]]
     this = lines[start[case - 1]:start[case]]
     pose = [l for l in this if "S, Y, FZ" in l][0]
+    if upright:  # S, Y, FZ, ROLL, YAW, PITCH: roll and yaw 0
+        f = pose.split()
+        pose = "  " + "  ".join(f[:3] + ["0.0", "0.0"] + f[5:])
     vel = [l for l in this if "VS,VY,VZ" in l][0]
     out = []
     for l in first:
@@ -82,8 +88,8 @@ def main(binary, examples, out):
         shutil.copy(os.path.join(examples, f), work)
     rows = ["case,a22_case,tY_mm,yaw_mrad,cksi,ceta,cphi_per_mm,deltcp_rad,FN_N,FX_N,FS_N,MN_Nmm,dx_mm,ds_mm,n_contact,n_points,"
             "length_mm,width_mm,pmax_MPa\n"]
-    for name, case in CASES:
-        d, pose = deck(examples, case)
+    for name, case, upright in CASES:
+        d, pose = deck(examples, case, upright)
         (hdr, elems), subs = run(binary, work, name, d)
         ck, f, delta = totals(os.path.join(work, name + ".out"))
         mx = int(hdr["MX"])
