@@ -92,6 +92,7 @@ def main():
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(2, 2, figsize=(11, 8.4))
     (ax1, ax2), (ax3, ax4) = axes
+    ymax = 0.0  # the map's height: its contacts and limits, with room above
     for d in a.dirs:
         name, r = rows(d)
         label = os.path.basename(os.path.normpath(d)) + (" (patches)" if name == "patches.csv" else "")
@@ -113,18 +114,24 @@ def main():
                              label=f"{label} {key} {c}")
                     ax4.plot([p[0] for p in s3], [float(p[1]["wear_ug_per_m"]) for p in s3], "o-", ms=3,
                              label=f"{label} {key} {c}")
-        # The map's limit curves (docs/methods.md "RCF indicators") at the sweep's extreme first-yield
-        # and shakedown limits, capped by the surface limit 1/f.
+        # The map's limits (docs/methods.md "RCF indicators"): first yield as a curve at the sweep's
+        # largest frictionless value, capped by the surface limit 1/f; the elastic shakedown limit,
+        # which falls with f, as each contact's own (its f and aspect ratio).
         if "FI_surf_el" in r[0]:
             lims = [(float(x["elastic_limit_p0_over_k"]), float(x["shakedown_limit_p0_over_k"]),
                      float(x["traction_coefficient"])) for x in r if x["FI_surf_el"] != ""]
             # a limit below 1/f is the frictionless value (the others are capped by the surface)
-            free = lambda i: [l[i] for l in lims if l[2] == 0 or l[i] < 1 / l[2] - 1e-9]
+            free = [l[0] for l in lims if l[2] == 0 or l[0] < 1 / l[2] - 1e-9]
             fs = [i / 100 for i in range(1, 61)]
-            for i, style, what in ((0, "k:", "first yield"), (1, "k--", "elastic shakedown")):
-                if free(i):
-                    lim = max(free(i))
-                    ax2.plot(fs, [min(lim, 1 / f) for f in fs], style, lw=1, label=f"{label}: {what}")
+            if free:
+                ax2.plot(fs, [min(max(free), 1 / f) for f in fs], "k:", lw=1, label=f"{label}: first yield")
+            if lims:
+                top = 1.15 * max([float(x["p0_el_over_k"]) for x in r if x["FI_surf_el"] != ""] + [l[1] for l in lims])
+                ymax = max(ymax, top)
+                ax2.plot([f for f in fs if 1 / f <= ymax], [1 / f for f in fs if 1 / f <= ymax], "k-", lw=0.6,
+                         label="surface limit 1/f")
+                ax2.plot([l[2] for l in lims], [l[1] for l in lims], "k_", ms=8,
+                         label=f"{label}: elastic shakedown limit of each contact")
         dist = distribution(d, a.tY_mean, a.tY_sd)
         cs = cases(d)
         if dist and cs and "D_burstow_per_axle" in cs[0]:
@@ -140,6 +147,8 @@ def main():
     ax1.set_title("surface fatigue index (> 0: surface RCF)")
     ax2.set_xlabel("traction coefficient f"); ax2.set_ylabel("p0_el / k")
     ax2.set_title("shakedown map: the sweep's contacts")
+    if ymax > 0:
+        ax2.set_ylim(0, ymax)
     ax3.set_xlabel("t_Y [mm]"); ax3.set_ylabel("damage per axle (Burstow)")
     ax3.set_title("rail RCF damage from Tγ")
     ax4.set_xlabel("t_Y [mm]"); ax4.set_ylabel("wear [µg/m] (USFD)")

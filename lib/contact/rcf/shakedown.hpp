@@ -120,10 +120,43 @@ inline double frictionless_elastic_limit(double e, double nu = 0.3) {
 }
 inline double frictionless_shakedown_limit(double e) { return 4.0 + (4.7 - 4.0) * e; }
 
+/// [-] The elastic shakedown limit of p0/k of the line contact with full-slip traction f,
+/// below the surface: Melan's static theorem as Johnson applies it (1985, §9.3; steady rolling,
+/// plane strain, the residual stress ρ_x(z) the only one a line contact permits, the in-plane
+/// yield condition ((σ_x + ρ_x − σ_z)/2)² + τ_xz² ≤ k²): at each depth the least k over ρ_x of the
+/// largest ((σ_x − σ_z)/2 + ρ_x/2)² + τ_xz² along x, the limit 1/(its largest over z). On
+/// McEwen's field (1949) this derivation gives 4.000 at f = 0 (τ_xz = ±0.25 p0 at z = 0.5 a, the
+/// value Johnson quotes) and falls with f: 3.564 at 0.1, 3.202 at 0.2, 3.044 at 0.25, 2.900 at
+/// 0.3; it meets the surface limit 1/f at f ≈ 0.368. Tabulated every 0.025 in f from that
+/// derivation (x over ±10 a at 0.00125 a, z golden-searched; tests/unit/contact/test_rcf.cpp
+/// derives the table again from its own closed form and holds it within 2e-4), linear between.
+/// Above 0.375 the surface limit governs (its last value is kept, min(·, 1/f) takes over).
+inline double line_shakedown_limit(double f) {
+  static constexpr double kTable[] = {4.00000, 3.88320, 3.77182, 3.66558, 3.56421, 3.46745, 3.37504, 3.28676,
+                                      3.20236, 3.12165, 3.04440, 2.97044, 2.89958, 2.83164, 2.76647, 2.70391};
+  constexpr double df = 0.025;
+  constexpr int n = static_cast<int>(sizeof(kTable) / sizeof(kTable[0]));
+  if (!(f > 0)) return kTable[0];
+  const double u = f / df;
+  if (u >= n - 1) return kTable[n - 1];
+  const int i = static_cast<int>(u);
+  return kTable[i] + (kTable[i + 1] - kTable[i]) * (u - i);
+}
+
+/// [-] The elastic shakedown limit of p0/k at aspect ratio e and traction f, before the surface
+/// cap: the frictionless limit (4.0 line, 4.7 circle, linear in e) times the line contact's
+/// derived fall with traction, line_shakedown_limit(f)/4 **[project assumption for e > 0:
+/// Ponter, Hearle & Johnson's point-contact limits with traction were not available to this
+/// project; exact for the line contact]**.
+inline double shakedown_limit(double e, double f) {
+  return frictionless_shakedown_limit(e) * line_shakedown_limit(f) / line_shakedown_limit(0);
+}
+
 /// The point of a contact carrying N [N] whose ELASTIC Hertz patch at that load has semi-axes
 /// a_el, b_el [m] (its aspect ratio sets the limits), with traction coefficient f, shear
-/// yield k [Pa] and Poisson's ratio ν (of the first-yield limit). Each limit is the frictionless
-/// (subsurface) value capped by the surface limit p0/k = 1/f (f p0 = k). Regime: below the first
+/// yield k [Pa] and Poisson's ratio ν (of the first-yield limit). Each limit is capped by the
+/// surface limit p0/k = 1/f (f p0 = k): first yield its frictionless (subsurface) value, the
+/// elastic shakedown limit shakedown_limit(e, f). Regime: below the first
 /// yield limit, elastic; below the shakedown limit, elastic shakedown; above it, ratchetting
 /// when the surface limit is exceeded (f p0/k > 1, FI_surf > 0), else plastic shakedown
 /// (subsurface cyclic plasticity). NaN inputs give NaN values.
@@ -136,7 +169,7 @@ inline RcfPoint rcf_point(double f, double k, double N, double a_el, double b_el
   const double surface = f > 0 ? 1.0 / f : INFINITY;
   r.p0_el_over_k = r.p0_el / k;
   r.elastic_limit = std::min(frictionless_elastic_limit(e, nu), surface);
-  r.shakedown_limit = std::min(frictionless_shakedown_limit(e), surface);
+  r.shakedown_limit = std::min(shakedown_limit(e, f), surface);
   r.fi_surf_el = f - 2.0 * pi * a_el * b_el * k / (3.0 * N);
   if (r.p0_el_over_k <= r.elastic_limit) r.regime = ShakedownRegime::Elastic;
   else if (r.p0_el_over_k <= r.shakedown_limit) r.regime = ShakedownRegime::ElasticShakedown;

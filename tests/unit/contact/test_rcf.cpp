@@ -3,19 +3,24 @@
 // N = 100 kN: a = 7.162 mm, b = 5.387 mm):
 //   p0 = 3N/(2π a b) = 1.5 × 100e3 / (π × 7.162e-3 × 5.387e-3) = 1237.54 MPa, e = b/a = 0.75216
 //   first yield (ν = 0.3) 3.106727 + (2.793446 − 3.106727) e = 2.871088, elastic shakedown
-//   4.0 + 0.7 e = 4.52651 (frictionless); 3.106727 and 2.793446 are √3 over the largest von Mises
+//   (4.0 + 0.7 e) L(f)/4 = 4.52651 L(f)/4, L(f) the line contact's derived limit (L(0.1) = 3.56421,
+//   L(0.2) = 3.20236, L(0.3) = 2.89958: the table the Melan test below derives again);
+//   3.106727 and 2.793446 are √3 over the largest von Mises
 //   stress of the closed forms (McEwen's line contact, Johnson eq. 3.45 on the circle's axis),
 //   maximised on a grid of 1e-5 in z/a by a script independent of the library
 //   (/usr/bin/python3, numpy; the values 0.5575162 at 0.7043 b and 0.6200410 at 0.4809 a)
 //   f = 0.3, k = 300 MPa: p0/k = 4.12514 > 1/f = 3.3333; FI_surf = 0.3 − 300/1237.54 = +0.057584 → ratchetting
-//   f = 0.2, k = 300 MPa: 2.871088 < 4.12514 ≤ min(4.52651, 5); FI_surf = −0.042416 → elastic shakedown
-//   f = 0.1, k = 250 MPa: p0/k = 4.95017 > 4.52651; FI_surf = 0.1 − 250/1237.54 = −0.102013 → plastic shakedown
+//   f = 0.2, k = 300 MPa: p0/k = 4.12514 > 3.623883 (min(·, 5)); FI_surf = −0.042416 → plastic shakedown
+//   f = 0.1, k = 330 MPa: 2.871088 < p0/k = 3.750129 ≤ 4.033362; FI_surf = −0.166658 → elastic shakedown
+//   f = 0.1, k = 250 MPa: p0/k = 4.95017 > 4.033362; FI_surf = 0.1 − 250/1237.54 = −0.102013 → plastic shakedown
 //   f = 0.3, k = 500 MPa: p0/k = 2.47508 < 2.871088; FI_surf = −0.104027 → elastic
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <vector>
 
 #include "contact/rcf/shakedown.hpp"
+#include "support/hertz_subsurface_reference.hpp"
 
 using namespace mh;
 
@@ -24,7 +29,8 @@ TEST_CASE("RCF: shakedown map point and surface fatigue index by hand", "[rcf]")
   struct Row { double f, k, p0k, fi; ShakedownRegime reg; };
   const Row rows[] = {
       {0.3, 300e6, 4.12514, 0.057584, ShakedownRegime::Ratchetting},
-      {0.2, 300e6, 4.12514, -0.042416, ShakedownRegime::ElasticShakedown},
+      {0.2, 300e6, 4.12514, -0.042416, ShakedownRegime::PlasticShakedown},
+      {0.1, 330e6, 3.750129, -0.166658, ShakedownRegime::ElasticShakedown},
       {0.1, 250e6, 4.95017, -0.102013, ShakedownRegime::PlasticShakedown},
       {0.3, 500e6, 2.47508, -0.104027, ShakedownRegime::Elastic},
   };
@@ -42,7 +48,9 @@ TEST_CASE("RCF: shakedown map point and surface fatigue index by hand", "[rcf]")
   CHECK(std::fabs(frictionless_elastic_limit(1.0) - 2.793446) < 1e-5);
   CHECK(std::fabs(frictionless_elastic_limit(0.0, 0.28) - 3.061844) < 1e-5);
   CHECK(std::fabs(frictionless_elastic_limit(1.0, 0.28) - 2.752373) < 1e-5);
-  CHECK(std::fabs(p.shakedown_limit - 4.52651) < 1e-5);
+  CHECK(std::fabs(p.shakedown_limit - 3.623883) < 1e-5);
+  CHECK(std::fabs(rcf_point(0.1, 300e6, N, a, b).shakedown_limit - 4.033362) < 1e-5);
+  CHECK(std::fabs(rcf_point(0.0, 300e6, N, a, b).shakedown_limit - 4.52651) < 1e-5);
   // The surface limit caps both at high traction: f = 0.5 gives 1/f = 2.
   const RcfPoint q = rcf_point(0.5, 300e6, N, a, b);
   CHECK(q.shakedown_limit == 2.0);
@@ -57,4 +65,68 @@ TEST_CASE("RCF: k from the user, else from the material's yield (NaN until Mater
   o.k = 300e6;
   CHECK(rcf_shear_yield(m, o) == 300e6);
   CHECK(std::isnan(rcf_point(0.3, NAN, 100e3, 1e-3, 1e-3).fi_surf_el));
+}
+
+// The line contact's elastic shakedown limit with traction, derived again from Melan's static
+// theorem as Johnson (1985, §9.3) applies it to steady rolling in plane strain: the only
+// residual stress a line contact permits is ρ_x(z) (ρ_y too, which the in-plane condition does not
+// see), so at depth z the least shear yield for which some ρ_x keeps
+// ((σ_x + ρ_x − σ_z)/2)² + τ_xz² ≤ k² at every x is min over r of max over x of
+// ((σ_x − σ_z)/2 + r)² + τ_xz² (convex in r: golden section), and the limit is p0 over the largest
+// of it over z (below the surface, z ≥ 0.2 a; the surface limit 1/f is the map's own cap). On the
+// tests' own McEwen field (tests/support/hertz_subsurface_reference.hpp), a coarser grid than the
+// table's (x over ±5 a every 0.00625 a, z every 0.02 a, then golden-searched).
+TEST_CASE("RCF: the line contact's shakedown limit with traction derived by Melan's theorem", "[rcf]") {
+  auto golden = [](auto F, double a, double b, bool maximise) {
+    const double g = 0.5 * (std::sqrt(5.0) - 1);
+    auto better = [&](double u, double v) { return maximise ? u >= v : u <= v; };
+    double c = b - g * (b - a), d = a + g * (b - a), fc = F(c), fd = F(d);
+    while (b - a > 1e-9) {
+      if (better(fc, fd)) b = d, d = c, fd = fc, c = b - g * (b - a), fc = F(c);
+      else a = c, c = d, fc = fd, d = a + g * (b - a), fd = F(d);
+    }
+    return std::make_pair(0.5 * (a + b), maximise ? std::max(fc, fd) : std::min(fc, fd));
+  };
+  auto need = [&](double z, double f) {  // [p0²] the least k² at depth z
+    constexpr int nx = 1601;
+    std::vector<double> sd(nx), t(nx);
+    for (int i = 0; i < nx; ++i) {
+      const auto st = mh::testing::mcewen(-5 + 10.0 * i / (nx - 1), z, f, 0.3);
+      sd[i] = 0.5 * (st.xx - st.zz), t[i] = st.xz;
+    }
+    auto worst = [&](double r) {
+      double m = 0;
+      for (int i = 0; i < nx; ++i) m = std::max(m, (sd[i] + r) * (sd[i] + r) + t[i] * t[i]);
+      return m;
+    };
+    return golden(worst, -2, 2, false).second;
+  };
+  auto limit = [&](double f, double* z_at) {
+    double best = 0, zb = 0;
+    for (double z = 0.2; z <= 1.0; z += 0.02) {
+      const double v = need(z, f);
+      if (v > best) best = v, zb = z;
+    }
+    const auto [z, v] = golden([&](double zz) { return need(zz, f); }, zb - 0.02, zb + 0.02, true);
+    *z_at = z;
+    return 1 / std::sqrt(v);
+  };
+  double z0 = 0;
+  // Johnson's frictionless value: τ_xz = ±0.25 p0 at z = 0.5 a gives p0/k = 4.0.
+  CHECK(std::fabs(limit(0, &z0) - 4.0) < 2e-4);
+  CHECK(std::fabs(z0 - 0.5) < 1e-3);
+  for (int i = 0; i <= 15; ++i) {
+    const double f = 0.025 * i;
+    double z = 0;
+    const double L = limit(f, &z);
+    CAPTURE(f, z, L);
+    CHECK(std::fabs(line_shakedown_limit(f) - L) < 2e-4);
+    if (i > 0) CHECK(std::fabs(line_shakedown_limit(f - 0.0125) - limit(f - 0.0125, &z)) < 1e-3);  // between nodes
+  }
+  // Where the surface takes over (1/f below the subsurface limit): between 0.35 and 0.375.
+  CHECK(line_shakedown_limit(0.35) < 1 / 0.35);
+  CHECK(line_shakedown_limit(0.375) > 1 / 0.375);
+  // The map: the line contact's limit itself at e = 0, the frictionless one scaled at e = 1.
+  CHECK(shakedown_limit(0, 0.2) == line_shakedown_limit(0.2));
+  CHECK(std::fabs(shakedown_limit(1, 0.2) - 4.7 * 3.20236 / 4) < 1e-5);
 }
