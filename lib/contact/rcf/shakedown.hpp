@@ -5,7 +5,8 @@
 // contact's normal load (Johnson 1985 §9.3; Ekberg et al. 2002 eq. 2), never with a plastic
 // patch's pressure or area: the callers pass the elastic Hertz semi-axes at the load N (the
 // ellipse law's a_el, b_el; for a grid patch, docs/outputs.md "RCF columns"). SI throughout.
-// Header-only, no state.
+// The line contact's first yield with traction is searched in shakedown.cpp (a table per ν
+// and thread); the rest is header-only.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -143,6 +144,26 @@ inline double line_shakedown_limit(double f) {
   return kTable[i] + (kTable[i + 1] - kTable[i]) * (u - i);
 }
 
+/// [-] The first-yield limit of p0/k (von Mises, k = σ_y/√3) of the line contact with full-slip
+/// traction f at Poisson's ratio ν: √3 over the largest von Mises stress of McEwen's field
+/// (subsurface.hpp, mcewen_stress) below and on the surface (shakedown.cpp). At ν = 0.3: 3.107 at
+/// f = 0 (0.5575 p0 at 0.70 a), 2.936 at 0.2, 2.843 at 0.25 (still below the surface, 0.49 a),
+/// 2.598 at 0.3 and 1.777 at 0.5 (on the surface; it moves there at f ≈ 0.27). Tabulated every
+/// 0.0125 in f up to 1 per ν on first use (per thread, about 8 ms), linear between (measured
+/// against a scan of the field, tests/unit/contact/test_rcf.cpp: within 3e-4, and 1.7e-3 (0.06 %)
+/// where the peak changes branch between two nodes);
+/// above f = 1 searched at each call.
+double line_first_yield_limit(double f, double nu);
+
+/// [-] The first-yield limit of p0/k at aspect ratio e, traction f and ν, before the surface cap:
+/// the frictionless limit (frictionless_elastic_limit: line and circle from their closed forms,
+/// linear in e) times the line contact's fall with traction, line_first_yield_limit(f, ν) over its
+/// value at f = 0 **[project assumption for e > 0: the circle's first yield with traction
+/// (Hamilton's closed forms, 1983) not implemented; exact for the line contact]**.
+inline double first_yield_limit(double e, double f, double nu) {
+  return frictionless_elastic_limit(e, nu) * line_first_yield_limit(f, nu) / line_first_yield_limit(0, nu);
+}
+
 /// [-] The elastic shakedown limit of p0/k at aspect ratio e and traction f, before the surface
 /// cap: the frictionless limit (4.0 line, 4.7 circle, linear in e) times the line contact's
 /// derived fall with traction, line_shakedown_limit(f)/4 **[project assumption for e > 0:
@@ -155,8 +176,8 @@ inline double shakedown_limit(double e, double f) {
 /// The point of a contact carrying N [N] whose ELASTIC Hertz patch at that load has semi-axes
 /// a_el, b_el [m] (its aspect ratio sets the limits), with traction coefficient f, shear
 /// yield k [Pa] and Poisson's ratio ν (of the first-yield limit). Each limit is capped by the
-/// surface limit p0/k = 1/f (f p0 = k): first yield its frictionless (subsurface) value, the
-/// elastic shakedown limit shakedown_limit(e, f). Regime: below the first
+/// surface limit p0/k = 1/f (f p0 = k): first yield first_yield_limit(e, f, ν), the elastic
+/// shakedown limit shakedown_limit(e, f). Regime: below the first
 /// yield limit, elastic; below the shakedown limit, elastic shakedown; above it, ratchetting
 /// when the surface limit is exceeded (f p0/k > 1, FI_surf > 0), else plastic shakedown
 /// (subsurface cyclic plasticity). NaN inputs give NaN values.
@@ -168,7 +189,7 @@ inline RcfPoint rcf_point(double f, double k, double N, double a_el, double b_el
   const double e = std::min(a_el, b_el) / std::max(a_el, b_el);
   const double surface = f > 0 ? 1.0 / f : INFINITY;
   r.p0_el_over_k = r.p0_el / k;
-  r.elastic_limit = std::min(frictionless_elastic_limit(e, nu), surface);
+  r.elastic_limit = std::min(first_yield_limit(e, f, nu), surface);
   r.shakedown_limit = std::min(shakedown_limit(e, f), surface);
   r.fi_surf_el = f - 2.0 * pi * a_el * b_el * k / (3.0 * N);
   if (r.p0_el_over_k <= r.elastic_limit) r.regime = ShakedownRegime::Elastic;

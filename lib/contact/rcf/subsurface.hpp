@@ -34,6 +34,27 @@ Stress cerruti_y(double x, double y, double z, double nu);
 
 /// [Pa] von Mises equivalent stress √(3 J2).
 double von_mises(const Stress& s);
+
+/// The stresses below a line contact (plane strain) with full-slip traction, in closed form
+/// (McEwen, Phil. Mag. 40 (1949) 454–459; Johnson 1985 §7.1–7.2), in units of p0 at (x, z) in units
+/// of the half-width a: pressure p0 √(1 − x²/a²) and traction q = f p along +x on the body,
+/// σ_yy = ν(σ_xx + σ_zz), with m² = ½[√((a² − x² + z²)² + 4x²z²) + (a² − x² + z²)],
+/// n² = ½[√(…) − (a² − x² + z²)], m ≥ 0 and n of the sign of x. The signs satisfy equilibrium,
+/// compatibility and the surface conditions of this file's convention; test_subsurface.cpp holds
+/// them against the quadrature below and the classic values (max (σ1 − σ3)/2 = 0.300 p0 at
+/// 0.786 a; max |σ_xz| = 0.250 p0 at x = ±0.87 a, z = 0.50 a). The shakedown map's line-contact
+/// limits with traction are derived on it (shakedown.hpp).
+inline Stress mcewen_stress(double x, double z, double f, double nu) {
+  const double A = 1 - x * x + z * z, S = std::sqrt(A * A + 4 * x * x * z * z);
+  const double m = std::sqrt(0.5 * (S + A)), n = std::copysign(std::sqrt(std::fmax(0.0, 0.5 * (S - A))), x);
+  const double D = m * m + n * n;
+  Stress s;
+  s.xx = -(m * (1 + (z * z + n * n) / D) - 2 * z) + f * (n * (2 - (z * z - m * m) / D) - 2 * x);
+  s.zz = -m * (1 - (z * z + n * n) / D) - f * n * (m * m - z * z) / D;
+  s.xz = -n * (m * m - z * z) / D - f * (m * (1 + (z * z + n * n) / D) - 2 * z);
+  s.yy = nu * (s.xx + s.zz);
+  return s;
+}
 /// [Pa] the largest principal shear stress (σ1 − σ3)/2 (Tresca).
 double max_shear(const Stress& s);
 
