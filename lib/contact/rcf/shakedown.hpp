@@ -130,7 +130,7 @@ inline double frictionless_shakedown_limit(double e) { return 4.0 + (4.7 - 4.0) 
 /// value Johnson quotes) and falls with f: 3.564 at 0.1, 3.202 at 0.2, 3.044 at 0.25, 2.900 at
 /// 0.3; it meets the surface limit 1/f at f ≈ 0.368. Tabulated every 0.025 in f from that
 /// derivation (x over ±10 a at 0.00125 a, z golden-searched; tests/unit/contact/test_rcf.cpp
-/// derives the table again from its own closed form and holds it within 2e-4), linear between.
+/// derives the table again on a coarser grid and holds it within 2e-4), linear between.
 /// Above 0.375 the surface limit governs (its last value is kept, min(·, 1/f) takes over).
 inline double line_shakedown_limit(double f) {
   static constexpr double kTable[] = {4.00000, 3.88320, 3.77182, 3.66558, 3.56421, 3.46745, 3.37504, 3.28676,
@@ -155,13 +155,35 @@ inline double line_shakedown_limit(double f) {
 /// above f = 1 searched at each call.
 double line_first_yield_limit(double f, double nu);
 
+/// [-] The circular contact's first-yield limit with full-slip traction f over its frictionless
+/// value: √3 over the largest von Mises stress of the library's field below a circle with traction
+/// (subsurface.hpp, subsurface_peaks with z from 0.002 a and 40 depths; 1 Dec 2026, ν = 0.3), every
+/// 0.025 in f up to 0.6, linear between. The peak stays below the surface up to f ≈ 0.33 (0.48 a
+/// at f = 0, 0.42 a at 0.325), then lies at the trailing edge of the surface. ν moves the ratio by
+/// less than 0.2 % up to f = 0.3 (ν 0.25–0.3) and by about 1 % where the peak changes branch (the
+/// table is ν = 0.3's for every ν). Above f = 0.6 the line contact's fall continues it.
+/// tests/unit/contact/test_rcf.cpp computes two points again.
+inline double circle_first_yield_ratio(double f, double nu) {
+  static constexpr double kE[] = {2.79345, 2.79221, 2.78850, 2.78233, 2.77375, 2.76279, 2.74950, 2.73397, 2.71625,
+                                  2.69642, 2.67460, 2.65087, 2.62529, 2.59801, 2.52063, 2.39151, 2.27463, 2.16836,
+                                  2.07134, 1.98242, 1.89434, 1.81275, 1.73769, 1.66842, 1.60431};
+  constexpr double df = 0.025;
+  constexpr int n = static_cast<int>(sizeof(kE) / sizeof(kE[0]));
+  if (!(f > 0)) return 1;
+  const double u = f / df;
+  if (u >= n - 1) return kE[n - 1] / kE[0] * line_first_yield_limit(f, nu) / line_first_yield_limit(df * (n - 1), nu);
+  const int i = static_cast<int>(u);
+  return (kE[i] + (kE[i + 1] - kE[i]) * (u - i)) / kE[0];
+}
+
 /// [-] The first-yield limit of p0/k at aspect ratio e, traction f and ν, before the surface cap:
-/// the frictionless limit (frictionless_elastic_limit: line and circle from their closed forms,
-/// linear in e) times the line contact's fall with traction, line_first_yield_limit(f, ν) over its
-/// value at f = 0 **[project assumption for e > 0: the circle's first yield with traction
-/// (Hamilton's closed forms, 1983) not implemented; exact for the line contact]**.
+/// linear in e between the line contact (frictionless closed form × its fall with traction,
+/// line_first_yield_limit) and the circle (frictionless closed form × circle_first_yield_ratio)
+/// **[project interpolation in e, as frictionless_elastic_limit]**.
 inline double first_yield_limit(double e, double f, double nu) {
-  return frictionless_elastic_limit(e, nu) * line_first_yield_limit(f, nu) / line_first_yield_limit(0, nu);
+  const double line = frictionless_elastic_limit(0, nu) * line_first_yield_limit(f, nu) / line_first_yield_limit(0, nu);
+  const double circle = frictionless_elastic_limit(1, nu) * circle_first_yield_ratio(f, nu);
+  return line + (circle - line) * e;
 }
 
 /// [-] The elastic shakedown limit of p0/k at aspect ratio e and traction f, before the surface

@@ -2,9 +2,11 @@
 // hand from the formulas, on the worked example of method.md §5 (E = 210 GPa, ν = 0.3,
 // N = 100 kN: a = 7.162 mm, b = 5.387 mm):
 //   p0 = 3N/(2π a b) = 1.5 × 100e3 / (π × 7.162e-3 × 5.387e-3) = 1237.54 MPa, e = b/a = 0.75216
-//   first yield (ν = 0.3) (3.106727 + (2.793446 − 3.106727) e) E(f)/E(0) = 2.871088 E(f)/3.106727, E(f)
-//   the line contact's first yield with traction (E(0.1) = 3.063147, E(0.2) = 2.935715,
-//   E(0.3) = 2.598206: the library's search, which the McEwen scan below holds), elastic shakedown
+//   first yield (ν = 0.3) L(f) + (C(f) − L(f)) e, L(f) = 3.106727 E(f)/E(0) the line contact's with
+//   traction (E(0.1) = 3.063147, E(0.2) = 2.935715, E(0.3) = 2.598206: the library's search, which
+//   the McEwen scan below holds) and C(f) = 2.793446 × the circle's ratio (2.77375, 2.71625, 2.62529
+//   over 2.79345 at f = 0.1, 0.2, 0.3: 2.773746, 2.716246, 2.625286): 2.845470, 2.770638, 2.618575;
+//   frictionless 2.871088; elastic shakedown
 //   (4.0 + 0.7 e) L(f)/4 = 4.52651 L(f)/4, L(f) the line contact's derived limit (L(0.1) = 3.56421,
 //   L(0.2) = 3.20236, L(0.3) = 2.89958: the table the Melan test below derives again);
 //   3.106727 and 2.793446 are √3 over the largest von Mises
@@ -13,11 +15,10 @@
 //   (/usr/bin/python3, numpy; the values 0.5575162 at 0.7043 b and 0.6200410 at 0.4809 a)
 //   f = 0.3, k = 300 MPa: p0/k = 4.12514 > 1/f = 3.3333; FI_surf = 0.3 − 300/1237.54 = +0.057584 → ratchetting
 //   f = 0.2, k = 300 MPa: p0/k = 4.12514 > 3.623883 (min(·, 5)); FI_surf = −0.042416 → plastic shakedown
-//   f = 0.1, k = 330 MPa: 2.830813 < p0/k = 3.750129 ≤ 4.033362; FI_surf = −0.166658 → elastic shakedown
+//   f = 0.1, k = 330 MPa: 2.845470 < p0/k = 3.750129 ≤ 4.033362; FI_surf = −0.166658 → elastic shakedown
 //   f = 0.1, k = 250 MPa: p0/k = 4.95017 > 4.033362; FI_surf = 0.1 − 250/1237.54 = −0.102013 → plastic shakedown
-//   f = 0.3, k = 500 MPa: 2.401137 < p0/k = 2.47508 ≤ 3.281248; FI_surf = −0.104027 → elastic shakedown
-//   f = 0.3, k = 550 MPa: p0/k = 2.250077 < 2.401137; FI_surf = −0.144429 → elastic
-//   (with the frictionless first yield 2.871088 of the map before 1 Dec 2026, k = 500 MPa was elastic)
+//   f = 0.3, k = 450 MPa: 2.618575 < p0/k = 2.750094 ≤ 3.281248; FI_surf = −0.063624 → elastic shakedown
+//   f = 0.3, k = 500 MPa: p0/k = 2.47508 < 2.618575; FI_surf = −0.104027 → elastic
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -37,8 +38,8 @@ TEST_CASE("RCF: shakedown map point and surface fatigue index by hand", "[rcf]")
       {0.2, 300e6, 4.12514, -0.042416, ShakedownRegime::PlasticShakedown},
       {0.1, 330e6, 3.750129, -0.166658, ShakedownRegime::ElasticShakedown},
       {0.1, 250e6, 4.95017, -0.102013, ShakedownRegime::PlasticShakedown},
-      {0.3, 500e6, 2.47508, -0.104027, ShakedownRegime::ElasticShakedown},
-      {0.3, 550e6, 2.250077, -0.144429, ShakedownRegime::Elastic},
+      {0.3, 450e6, 2.750094, -0.063624, ShakedownRegime::ElasticShakedown},
+      {0.3, 500e6, 2.47508, -0.104027, ShakedownRegime::Elastic},
   };
   for (const Row& w : rows) {
     CAPTURE(w.f, w.k);
@@ -48,7 +49,8 @@ TEST_CASE("RCF: shakedown map point and surface fatigue index by hand", "[rcf]")
     CHECK(p.regime == w.reg);
   }
   const RcfPoint p = rcf_point(0.2, 300e6, N, a, b);
-  CHECK(std::fabs(p.elastic_limit - 2.713047) < 1e-5);
+  CHECK(std::fabs(p.elastic_limit - 2.770638) < 1e-5);
+  CHECK(std::fabs(rcf_point(0.3, 300e6, N, a, b).elastic_limit - 2.618575) < 1e-5);
   CHECK(std::fabs(rcf_point(0.0, 300e6, N, a, b).elastic_limit - 2.871088) < 1e-5);
   // The two ends at ν = 0.3, and ν's effect (0.28: 3.061844 and 2.752373, the same script).
   CHECK(std::fabs(frictionless_elastic_limit(0.0) - 3.106727) < 1e-5);
@@ -80,9 +82,10 @@ TEST_CASE("RCF: k from the user, else from the material's yield (NaN until Mater
 // see), so at depth z the least shear yield for which some ρ_x keeps
 // ((σ_x + ρ_x − σ_z)/2)² + τ_xz² ≤ k² at every x is min over r of max over x of
 // ((σ_x − σ_z)/2 + r)² + τ_xz² (convex in r: golden section), and the limit is p0 over the largest
-// of it over z (below the surface, z ≥ 0.2 a; the surface limit 1/f is the map's own cap). On the
-// tests' own McEwen field (tests/support/hertz_subsurface_reference.hpp), a coarser grid than the
-// table's (x over ±5 a every 0.00625 a, z every 0.02 a, then golden-searched).
+// of it over z (below the surface, z ≥ 0.2 a; the surface limit 1/f is the map's own cap). On
+// McEwen's field (subsurface.hpp; test_subsurface.cpp holds it against the quadrature and the
+// classic values), a coarser grid than the table's (x over ±5 a every 0.00625 a, z every 0.02 a,
+// then golden-searched).
 TEST_CASE("RCF: the line contact's shakedown limit with traction derived by Melan's theorem", "[rcf]") {
   auto golden = [](auto F, double a, double b, bool maximise) {
     const double g = 0.5 * (std::sqrt(5.0) - 1);
@@ -171,4 +174,23 @@ TEST_CASE("RCF: the line contact's first yield with traction against a scan of M
   };
   CHECK(line_first_yield_limit(0.25, 0.3) < surface(0.25) - 1e-3);
   CHECK(std::fabs(line_first_yield_limit(0.275, 0.3) - surface(0.275)) < 1e-6);
+}
+
+// The circle's first yield with traction (circle_first_yield_ratio's table) made again at two
+// tractions by the library's field below a circle (subsurface_peaks, as the table's comment
+// says): below the surface at f = 0.2, at the surface's trailing edge at f = 0.45 (about 0.3 s each).
+TEST_CASE("RCF: the circle's first yield with traction against the library's field", "[rcf][subsurface]") {
+  for (const double f : {0.2, 0.45}) {
+    HertzLoad L;
+    L.a = L.b = 1e-3, L.p0 = 1e9, L.nu = 0.3, L.fx = f;
+    SubsurfaceOptions o;
+    o.z_min = 0.002, o.nz = 40;
+    const SubsurfacePeaks P = subsurface_peaks(L, o);
+    const double E = std::sqrt(3.0) / (P.vm_max / L.p0);
+    CAPTURE(f, E, P.vm_z / L.a, P.surface);
+    CHECK(P.surface == (f > 0.33));
+    CHECK(std::fabs(circle_first_yield_ratio(f, 0.3) * 2.79345 - E) < 1e-4);
+  }
+  // The frictionless end is the closed form on the axis.
+  CHECK(std::fabs(2.79345 - std::sqrt(3.0) / frictionless_vm_peak(false, 0.3)) < 1e-5);
 }
