@@ -436,7 +436,7 @@ bool plane_polyline(const NodeLevel& T, double ya, double yb, double dy, double 
 }  // namespace
 
 KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, double s_first, double h, int n, double B,
-                         double dz, double spacing) {
+                         double dz, double spacing, double* centre_bound) {
   KinkBound out;
   const double c = std::cos(P.gamma), sn = std::sin(P.gamma);
   // The span of the samples, [s_first − h, s_last + h]. The face is met by the normals below some
@@ -476,17 +476,21 @@ KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, double s_
   double worst = 0;
   for (int i = 0; i < n; ++i) {
     const double S = 0.5 * U[i] + 0.5 * (A[i + 1] + U[i + 1]) + (A[i + 2] - 0.5 * U[i + 2]) + 0.5 * (A[i + 3] - U[i + 3]);
-    worst = std::max(worst, std::fabs(S - twoBh));
+    const double d = std::fabs(S - twoBh);
+    if (centre_bound) centre_bound[i] = d;
+    worst = std::max(worst, d);
   }
   // The rounding: a kink's plane coordinate is within δ = 8 ε (its coordinates' magnitudes) of
   // the exact one, and so is a centre's, which moves its weights by at most 2 δ / (h/2) plus
   // ε t (t < n + 3, its place in bins); each bin sum and a centre's eight terms add at most
   // (kinks + 8) ε Σ |J| (|J u| ≤ |J|). Doubled.
   const double delta = 8 * DBL_EPSILON * (bins.coord + std::fabs(s_first) + 2 * h);
-  worst += 2 * bins.A_abs *
-           (4 * delta / h + DBL_EPSILON * (n + 3) + DBL_EPSILON * (bins.kinks + 8));
-  out.dtheta = worst * (1 + 1e-9) + 4 * (eta + kGapError) / h;
+  const double rounding = 2 * bins.A_abs * (4 * delta / h + DBL_EPSILON * (n + 3) + DBL_EPSILON * (bins.kinks + 8));
+  const double deviation = 4 * (eta + kGapError) / h;
+  out.dtheta = (worst + rounding) * (1 + 1e-9) + deviation;
   out.found = std::isfinite(out.dtheta);
+  if (centre_bound && out.found)
+    for (int i = 0; i < n; ++i) centre_bound[i] = (centre_bound[i] + rounding) * (1 + 1e-9) + deviation;
   return out;
 }
 

@@ -160,8 +160,10 @@ constexpr double kGapError = 1e-12;
 /// `spacing` [m]: the polylines are those through every 2^l-th node with the largest l whose
 /// spacing is at most this (default h/2): a coarser one sums fewer kinks, its deviation from the
 /// curve larger.
+/// `centre_bound` (optional, n values): when found, each centre's own bound of Δθ_i (the same
+/// terms with its own |S_i − 2Bh|), so that the samples need only visit the centres it does not pass.
 KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, double s_first, double h, int n, double B,
-                         double dz, double spacing);
+                         double dz, double spacing, double* centre_bound = nullptr);
 inline KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, double s_first, double h, int n, double B,
                                 double dz) {
   return gap_kink_bound(gap, P, s_first, h, n, B, dz, 0.5 * h);

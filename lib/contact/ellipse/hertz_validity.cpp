@@ -87,28 +87,62 @@ GapKink gap_kink(const WheelRailGap& gap, const CandidateGeom& g, double B, doub
   const PatchPlane P = plane_at(gap, g.y_r);
   const double h = b / 40;
   constexpr int n = 160;  // s = −b … b in steps of h/2
+  auto ratio = [&](double dtheta) { return E_pair * dtheta / (2 * M_PI * p0); };
+  const double limit = opt.max_gap_mean_error * (1 - 1e-9);
   // First the bound (geometry/gap.hpp, gap_kink_bound): the centres s = −b … b.
   // First on the polylines spaced at most h (half the kinks to sum), then at most h/2 (closer
-  // to the curves: the patches near the limit, flange roots).
+  // to the curves: the patches near the limit, flange roots). Each centre keeps the lesser of
+  // its two bounds; the samples then visit only the centres whose bound exceeds the limit (a
+  // centre within it has its Δθ_i within it too, so the verdict and, when the test fails, the
+  // largest Δθ_i are those of all the samples).
+  std::array<double, n + 1> cb, cb2;
+  bool have = false;
   if (use_bound)
     for (const double spacing : {h, 0.5 * h}) {
-      const KinkBound kb = gap_kink_bound(gap, P, -b, h, n + 1, B, dz, spacing);
-      const double ratio = E_pair * kb.dtheta / (2 * M_PI * p0);
-      if (kb.found && ratio <= opt.max_gap_mean_error * (1 - 1e-9)) {
-        k.dtheta = kb.dtheta;
-        k.kink_ratio = ratio;
+      const KinkBound kb = gap_kink_bound(gap, P, -b, h, n + 1, B, dz, spacing, have ? cb2.data() : cb.data());
+      if (!kb.found) continue;
+      if (have)
+        for (int i = 0; i <= n; ++i) cb[static_cast<std::size_t>(i)] = std::min(cb[static_cast<std::size_t>(i)], cb2[static_cast<std::size_t>(i)]);
+      have = true;
+      const double worst = *std::max_element(cb.begin(), cb.end());
+      if (ratio(worst) <= limit) {
+        k.dtheta = worst;
+        k.kink_ratio = ratio(worst);
         k.bounded = true;
         return k;
       }
     }
+  // The samples: G_j at s = −b − h + (h/2) j, centre i (s_i = −b + (i/2) h) from G_i, G_i+2, G_i+4;
+  // every centre without a bound, else those whose bound exceeds the limit, in runs of
+  // consecutive samples (each run's Newton solves start from its previous sample's hits).
   std::array<double, n + 5> G;
-  normal_gaps(gap, P, 0, -b - h, 0.5 * h, n + 5, dz, G.data());  // s = −b − h + (h/2) i
+  std::array<bool, n + 5> need{};
+  for (int i = 0; i <= n; ++i)
+    if (!have || ratio(cb[static_cast<std::size_t>(i)]) > limit)
+      need[static_cast<std::size_t>(i)] = need[static_cast<std::size_t>(i + 2)] = need[static_cast<std::size_t>(i + 4)] = true;
+  for (int j = 0; j < n + 5;) {
+    if (!need[static_cast<std::size_t>(j)]) { ++j; continue; }
+    int e = j;
+    while (e < n + 5 && need[static_cast<std::size_t>(e)]) ++e;
+    normal_gaps(gap, P, 0, -b - h + 0.5 * h * j, 0.5 * h, e - j, dz, G.data() + j);
+    j = e;
+  }
+  double bound_rest = 0;  // the largest bound of the centres not sampled
   for (int i = 2; i <= n + 2; ++i) {  // s_i = −b + (i − 2) h/2, neighbours two samples away
+    if (have && !(ratio(cb[static_cast<std::size_t>(i - 2)]) > limit)) {
+      bound_rest = std::max(bound_rest, cb[static_cast<std::size_t>(i - 2)]);
+      continue;
+    }
     const double D = G[static_cast<std::size_t>(i + 2)] - 2 * G[static_cast<std::size_t>(i)] + G[static_cast<std::size_t>(i - 2)];
     k.dtheta = std::max(k.dtheta, std::fabs(D - 2 * B * h * h) / h);
   }
-  k.kink_ratio = E_pair * k.dtheta / (2 * M_PI * p0);
+  k.kink_ratio = ratio(k.dtheta);
   k.valid = k.kink_ratio <= opt.max_gap_mean_error;  // NaN fails
+  if (k.valid && bound_rest > k.dtheta) {  // valid: the figures a bound of all the centres
+    k.dtheta = bound_rest;
+    k.kink_ratio = ratio(bound_rest);
+    k.bounded = true;
+  }
   return k;
 }
 

@@ -96,8 +96,10 @@ HertzValidity hertz_validity(const ContactGeometry& G, const CandidateGeom& g, d
 /// exact sums over their kinks, plus the largest deviation of the curves from them). When
 /// E* Δθ / (2π p0) from that bound is within the limit the test passes with the bound as its
 /// figures (`bounded`); otherwise (a corner, a patch too small for the deviation, a normal on the
-/// rail's gauge face) the samples decide. Either way the same verdict, and a failed test's
-/// kink_ratio is always the sampled one.
+/// rail's gauge face) the samples decide, taken only around the centres whose own bound (the
+/// lesser of the two polylines') exceeds the limit (all of them when there is no bound). Either
+/// way the same verdict, and a failed test's kink_ratio is always the sampled one (the largest
+/// Δθ_i is at a centre the bound did not pass).
 struct GapKink {
   double dtheta = 0;      ///< [rad] the largest slope jump of the gap across the patch (`bounded`: a bound of it)
   double kink_ratio = 0;  ///< [-] E* Δθ / (2π p0) (`bounded`: a bound of it)

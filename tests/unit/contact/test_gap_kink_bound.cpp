@@ -66,7 +66,9 @@ void compare(const mh::ContactGeometry& G, const mh::Material& mat, double tY, d
       CHECK(fast.kink_ratio >= full.kink_ratio);
       t.worst_excess = std::max(t.worst_excess, full.kink_ratio - fast.kink_ratio);
     } else {
-      CHECK(fast.kink_ratio == full.kink_ratio);  // the samples decide, with their figure
+      // The samples decide, with their figure: those of the centres the bound does not pass, in
+      // runs whose first Newton solves start cold (the figure's last bits may differ).
+      CHECK(fast.kink_ratio == Approx(full.kink_ratio).epsilon(1e-9));
     }
     if (!full.valid) ++t.failed;
   }
