@@ -35,6 +35,9 @@ Stress cerruti_y(double x, double y, double z, double nu);
 /// [Pa] von Mises equivalent stress √(3 J2).
 double von_mises(const Stress& s);
 
+/// [Pa] the largest principal shear stress (σ1 − σ3)/2 (Tresca).
+double max_shear(const Stress& s);
+
 /// The stresses below a line contact (plane strain) with full-slip traction, in closed form
 /// (McEwen, Phil. Mag. 40 (1949) 454–459; Johnson 1985 §7.1–7.2), in units of p0 at (x, z) in units
 /// of the half-width a: pressure p0 √(1 − x²/a²) and traction q = f p along +x on the body,
@@ -55,8 +58,6 @@ inline Stress mcewen_stress(double x, double z, double f, double nu) {
   s.yy = nu * (s.xx + s.zz);
   return s;
 }
-/// [Pa] the largest principal shear stress (σ1 − σ3)/2 (Tresca).
-double max_shear(const Stress& s);
 
 /// The Hertzian load: semi-axes a (along x, rolling) and b (along y) [m], peak pressure p0 [Pa],
 /// full-slip traction coefficients f_x, f_y (q = f p, acting on the body), Poisson's ratio ν.
