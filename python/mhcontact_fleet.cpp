@@ -138,7 +138,7 @@ void bind_fleet(py::module_& m, py::object input_error) {
       "(unit, count, cases, method): a manifest's pairs (\"pair\") or a case file's cases (\"case\"), the "
       "run's cases in all, and its method (as the case file names it): what fleet() cuts into shards.");
   m.def("_run_shard", [input_error](const std::string& path, const std::string& out_dir, unsigned k, unsigned n,
-                                    unsigned threads, int digits, bool by_cases) {
+                                    unsigned threads, int digits, bool by_cases, const std::string& sizes) {
         return call_job(input_error, [&](std::ostream& err) {
           mh::RunOptions ro;
           ro.out_dir = out_dir;
@@ -148,14 +148,16 @@ void bind_fleet(py::module_& m, py::object input_error) {
           ro.digits = digits;
           ro.quiet = true;
           ro.shard_by_cases = by_cases;
+          ro.shard_sizes = mh::parse_shard_sizes(sizes);
           std::ostringstream out;
           const nlohmann::json j = mh::read_json_file(path);
           if (mh::is_manifest(j)) return mh::batch_job(mh::parse_manifest(j, path), ro, out, err);
           return mh::run_job(mh::parse_case_json(j, path, true), ro, out, err);
         });
       }, py::arg("path"), py::arg("out_dir"), py::arg("k"), py::arg("n"), py::arg("threads"), py::arg("digits"),
-      py::arg("by_cases") = false,
-      "`mhcontact run PATH -o OUT_DIR --shard K/N --threads T --digits D -q` (by_cases: --shard-by cases): "
+      py::arg("by_cases") = false, py::arg("sizes") = "equal",
+      "`mhcontact run PATH -o OUT_DIR --shard K/N --threads T --digits D -q` (by_cases: --shard-by cases; "
+      "sizes: --shard-sizes): "
       "(exit code, standard error).");
   m.def("_merge", [input_error](const std::vector<std::string>& dirs, const std::string& out_dir) {
         return call_job(input_error, [&](std::ostream& err) { return mh::merge_job(dirs, out_dir, err, true); });

@@ -9,7 +9,8 @@ again; the merged files compared with the local run's byte for byte. Wall times.
 
 THREADS=T sets fleet()'s threads (each shard's threads; default 1); SPLIT=pairs cuts the fleet
 into one shard per pair (as before --shard-by cases), SPLIT=cases SHARDS=S into S slices of the
-cases; default fleet()'s own plan (plan_shards). Besides the wall times it
+cases; default fleet()'s own plan (plan_shards); SIZES=equal|tapered the slices' sizes (default
+fleet()'s: tapered with two shards or more a worker thread). Besides the wall times it
 prints the CPU time (user + sys) of the local runs and of the route (the workers' processes and
 this one, the client's merge included), which other jobs on a shared machine stretch less, and
 Dask's own CPU time over the same wall time with nothing to compute (a sleeping task per worker).
@@ -82,17 +83,20 @@ def main():
             shards = int(os.environ["SHARDS"]) if os.environ.get("SHARDS") else None
             with get_task_stream(client) as stream:
                 res = mhcontact.fleet(case, client, os.path.join(tmp, "dask"), threads=int(os.environ.get("THREADS", "1")),
-                                      shards=shards, split=os.environ.get("SPLIT") or None)
+                                      shards=shards, split=os.environ.get("SPLIT") or None, sizes=os.environ.get("SIZES") or None)
             t_dask = time.time() - t0
             # Each worker's shards: how long it computed and when it ended, against the route's start
             # (the spread of the ends is the time one worker waited for the other's last shard).
-            busy, end = {}, {}
+            busy, end, shard_s = {}, {}, {}
             for task in stream.data:
                 for part in task["startstops"]:
                     if part["action"] == "compute":
                         w = task["worker"]
                         busy[w] = busy.get(w, 0) + part["stop"] - part["start"]
                         end[w] = max(end.get(w, 0), part["stop"] - t0)
+                        m = re.match(r"mhcontact-shard-(\d+)-of-", str(task["key"]))
+                        if m:
+                            shard_s[int(m.group(1))] = part["stop"] - part["start"]
             workers = "; ".join(f"worker {i + 1}: {busy[w]:.2f} s computing, ended at {end[w]:.2f} s"
                                 for i, w in enumerate(sorted(busy)))
             cpu_client = own_cpu() - c0
@@ -118,12 +122,13 @@ def main():
                               ("admin.tick.interval", "admin.system-monitor.interval", "worker.memory.monitor-interval"))
         print(f"{method}, {cases} cases, {ncores} cores: local {t_local1:.2f} s and {t_local2:.2f} s "
               f"({1e6 * mean_local / cases:.1f} us a case); Dask {t_dask:.2f} s ({1e6 * t_dask / cases:.1f} us a case, "
-              f"{res['shards']} shards, split {os.environ.get('SPLIT') or 'planned'}): {100 * (t_dask / mean_local - 1):+.1f} % over the mean local; the same bytes; "
+              f"{res['shards']} shards, split {os.environ.get('SPLIT') or 'planned'}, sizes {res['sizes']}): {100 * (t_dask / mean_local - 1):+.1f} % over the mean local; the same bytes; "
               f"CPU s: local {cpu_local[0]:.2f} and {cpu_local[1]:.2f}, Dask workers {cpu_workers:.2f} + client {cpu_client:.2f} "
               f"({100 * ((cpu_workers + cpu_client) / (sum(cpu_local) / 2) - 1):+.1f} %); "
               f"Dask idle over {t_idle:.1f} s: {cpu_idle:.2f} s CPU ({100 * cpu_idle / (sum(cpu_local) / 2):.1f} % of the local CPU); "
               f"workers' profiler {profiler}; {intervals}")
         print(f"shards by worker: {workers}")
+        print("each shard's compute time, s: " + ", ".join(f"{k} {shard_s[k]:.2f}" for k in sorted(shard_s)))
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

@@ -37,7 +37,7 @@ void add_geometry_command(CLI::App& app, CliContext& ctx) {
 }
 
 void add_run_command(CLI::App& app, CliContext& ctx) {
-  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false, strips = false, fail_on_warning = false, resume = false; std::string shard, shard_by = "pairs", fail_on, digits = "10", pressure_cases; };
+  struct Opts { std::string case_file, out_dir, format = "both"; unsigned threads = 0; int pressure_grid = 0; bool quiet = false, force = false, strips = false, fail_on_warning = false, resume = false; std::string shard, shard_by = "pairs", shard_sizes = "equal", fail_on, digits = "10", pressure_cases; };
   auto o = std::make_shared<Opts>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Solve every case of the case file's sweep (or of a batch manifest over many profile pairs) (writes DIR/cases.csv, DIR/ellipses.csv, DIR/geometry.csv, "
@@ -70,6 +70,10 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
                   "Batch manifest with --shard: slice the pairs, or the list of every pair's cases (a pair's cases "
                   "spread over shards; docs/batch-and-shards.md)")
       ->check(CLI::IsMember({"pairs", "cases"}))->capture_default_str();
+  cmd->add_option("--shard-sizes", o->shard_sizes,
+                  "With --shard: equal slices, or tapered (slice K's share proportional to N-K+1, the last the "
+                  "smallest) for shards handed out as workers free up; every shard of a run alike (docs/batch-and-shards.md)")
+      ->check(CLI::IsMember({"equal", "tapered"}))->capture_default_str();
   cmd->add_flag("--resume", o->resume,
                 "Batch manifest: run pair by pair into DIR.parts/ and merge into DIR; after an interruption the same "
                 "command skips the pairs already complete (docs/cluster.md)");
@@ -78,6 +82,7 @@ void add_run_command(CLI::App& app, CliContext& ctx) {
     RunOptions ro;
     if (!o->shard.empty()) parse_shard(o->shard, &ro.shard_index, &ro.shard_count);
     ro.shard_by_cases = o->shard_by == "cases";
+    ro.shard_sizes = parse_shard_sizes(o->shard_sizes);
     const nlohmann::json j = read_json_file(o->case_file);
     ro.out_dir = o->out_dir;
     ro.csv = o->format != "json";

@@ -54,8 +54,8 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
   // pair's cases can be spread over shards. [pair_first, pair_end): the pairs the slice touches.
   const bool by_cases = opt.shard_by_cases && opt.shard_count > 1;
   const std::uint64_t units = by_cases ? n_pairs * n : n_pairs;
-  const std::uint64_t first = units * (opt.shard_index - 1) / opt.shard_count;
-  const std::uint64_t end = units * opt.shard_index / opt.shard_count;
+  const ShardSlice slice = shard_slice(units, opt.shard_index, opt.shard_count, opt.shard_sizes);
+  const std::uint64_t first = slice.first, end = slice.end;
   const std::uint64_t pair_first = by_cases ? (n ? first / n : 0) : first;
   const std::uint64_t pair_end = by_cases ? (first == end || !n ? pair_first : (end + n - 1) / n) : end;
   // The pair's cases [lo, hi) in this shard.
@@ -240,6 +240,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
                          {"cases_per_pair", n}, {"summary", summary},
                          {"csv", opt.csv}, {"json", opt.json}, {"pressure", np > 0}, {"digits", opt.digits},
                          {"inputs", {{"manifest", m.path}, {"common", m.common}, {"pairs", n_pairs}}}};
+    if (opt.shard_sizes != ShardSizes::Equal) sh["sizes"] = to_string(opt.shard_sizes);
     if (fj) sh["results_json"] = json_layout;
     OutputFile f(rd.path("shard.json"));
     f.stream() << sh.dump(2) << "\n";

@@ -73,6 +73,7 @@ int resumable_batch_job(const Manifest& m, const RunOptions& opt, std::ostream& 
   part.progress = false;
   part.shard_count = n;
   part.shard_by_cases = false;  // a part is a pair
+  part.shard_sizes = ShardSizes::Equal;
   std::uint64_t done = 0;
   const std::uint64_t total = per_pair * todo.size();
   for (unsigned k : todo) {

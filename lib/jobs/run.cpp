@@ -211,8 +211,8 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   if (opt.shard_count < 1 || opt.shard_index < 1 || opt.shard_index > opt.shard_count)
     throw InputError("--shard", std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count), "must be K/N with 1 <= K <= N");
   check_pressure_cases(opt, cf.case_count());
-  check_pressure_grid(np, opt.pressure_cases.count_in(cf.case_count() * (opt.shard_index - 1) / opt.shard_count,
-                                                      cf.case_count() * opt.shard_index / opt.shard_count),
+  const ShardSlice slice = shard_slice(cf.case_count(), opt.shard_index, opt.shard_count, opt.shard_sizes);
+  check_pressure_grid(np, opt.pressure_cases.count_in(slice.first, slice.end),
                       plastic, opt.force, cf.tangential.enabled());
   if (!to_stdout) {
     rd = std::make_unique<RunDirectory>(opt.out_dir);
@@ -251,8 +251,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
   }
 
   const std::uint64_t n_all = cf.case_count();
-  const std::uint64_t first = n_all * (opt.shard_index - 1) / opt.shard_count;
-  const std::uint64_t end = n_all * opt.shard_index / opt.shard_count;
+  const std::uint64_t first = slice.first, end = slice.end;
   // The load-independent part of the ellipses, once per (t_Y, ellipse), before the cases
   // (geometry.csv; results.json "geometry").
   if (writes_ellipses(M)) {
@@ -300,6 +299,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
                          {"summary", [&] { nlohmann::json su = counts.summary_json(n_all); su.update(pair_summary_json(pg)); return su; }()},
                          {"csv", want_csv}, {"json", want_json}, {"pressure", np > 0}, {"digits", opt.digits},
                          {"inputs", inputs_json(cf)}, {"profiles", profiles_json(pg)}};
+    if (opt.shard_sizes != ShardSizes::Equal) sh["sizes"] = to_string(opt.shard_sizes);
     if (fj) sh["results_json"] = json_layout;
     OutputFile f(rd->path("shard.json"));
     f.stream() << sh.dump(2) << "\n";

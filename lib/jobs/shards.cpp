@@ -40,6 +40,25 @@ void parse_shard(const std::string& text, unsigned* index, unsigned* count) {
   }
 }
 
+const char* to_string(ShardSizes s) { return s == ShardSizes::Tapered ? "tapered" : "equal"; }
+
+ShardSizes parse_shard_sizes(const std::string& text) {
+  if (text == "equal") return ShardSizes::Equal;
+  if (text == "tapered") return ShardSizes::Tapered;
+  throw InputError("--shard-sizes", text, "must be equal or tapered");
+}
+
+ShardSlice shard_slice(std::uint64_t units, unsigned K, unsigned N, ShardSizes sizes) {
+  // ⌊u w(j) / w(N)⌋ exactly, w(j) = j (equal) or C(j) (tapered): u < 2^64 and w(N) < 2^34
+  // (N ≤ 100000), so the product fits 128 bits.
+  __extension__ typedef unsigned __int128 u128;
+  auto w = [N, sizes](unsigned j) {
+    return sizes == ShardSizes::Equal ? static_cast<u128>(j) : static_cast<u128>(j) * (2 * static_cast<u128>(N) - j + 1) / 2;
+  };
+  auto at = [&](unsigned j) { return static_cast<std::uint64_t>(static_cast<u128>(units) * w(j) / w(N)); };
+  return {at(K - 1), at(K)};
+}
+
 namespace {
 
 // Open a shard's CSV file and check its header against `header` (set from the first shard);
@@ -186,7 +205,8 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
                            (twice.empty() ? std::string() : "shard " + twice + " given twice"),
                        missing.empty() ? "give each shard's directory once"
                                        : "run the missing shard(s) with the same inputs (mhcontact run CASE -o DIR --shard K/" +
-                                             std::to_string(N) + ") and give all " + std::to_string(N) + " directories");
+                                             std::to_string(N) + (shards[0].meta.value("sizes", "equal") == "equal" ? std::string() : " --shard-sizes " + shards[0].meta.value("sizes", "equal")) +
+                                             ") and give all " + std::to_string(N) + " directories");
   }
   std::uint64_t expect = 0;
   for (unsigned k = 0; k < N; ++k) {
@@ -199,6 +219,10 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     if (m["csv"] != shards[0].meta["csv"] || m["json"] != shards[0].meta["json"] || m["pressure"] != shards[0].meta["pressure"] ||
         m.value("digits", -1) != shards[0].meta.value("digits", -1))
       throw InputError(where, "", "shards written with different output options");
+    if (m.value("sizes", "equal") != shards[0].meta.value("sizes", "equal"))
+      throw InputError(where, "sizes " + m.value("sizes", "equal"),
+                       "shards cut with different --shard-sizes (" + shards[0].dir + ": " + shards[0].meta.value("sizes", "equal") + ")",
+                       "run every shard of a run with the same --shard-sizes");
     if (m["first"].get<std::uint64_t>() != expect) throw InputError(where, m["first"].dump(), "the shards' ranges do not tile the case (or pair) list");
     expect = m["end"].get<std::uint64_t>();
   }

@@ -13,6 +13,7 @@
 
 #include "geometry/contact_geometry.hpp"
 #include "input/case_file.hpp"
+#include "jobs/shards.hpp"
 #include "output/json_stream.hpp"
 #include "output/output_file.hpp"
 
@@ -61,6 +62,11 @@ struct RunOptions {
   /// few pairs on more workers, or pairs of unequal cost). A case file's shards always slice its
   /// cases. Default no (slices of pairs).
   bool shard_by_cases = false;
+  /// How --shard K/N cuts the list (--shard-sizes; jobs/shards.hpp, shard_slice): equal slices,
+  /// or tapered, slice K's share proportional to N − K + 1, for shards handed out in order as
+  /// workers free up (Dask; docs/cluster.md). Every shard of a run must be cut the same way.
+  /// Default equal.
+  ShardSizes shard_sizes = ShardSizes::Equal;
   /// Strip method: also write DIR/strips.csv (one row per loaded strip). Default no.
   bool strips = false;
   /// Write pressure.csv even when its estimated size is above kPressureLimitBytes (--force).

@@ -23,13 +23,13 @@ import numpy as _np
 from . import _core
 
 
-def _shard_task(path, shard_dir, k, n, threads, digits, token=None, by_cases=False):
+def _shard_task(path, shard_dir, k, n, threads, digits, token=None, by_cases=False, sizes="equal"):
     """One shard on a worker: run it, return (k, exit code, standard error, {file: bytes}), or
     with files None when the worker shares the client's file system (it finds the client's
     `token` file beside shard_dir, so what it wrote is already where the client looks: nothing
     is sent back). by_cases: a manifest's shard is a slice of every pair's cases (--shard-by
-    cases), not of its pairs."""
-    rc, err = _core._run_shard(path, shard_dir, k, n, threads, digits, by_cases)
+    cases), not of its pairs. sizes: "equal" or "tapered" (--shard-sizes)."""
+    rc, err = _core._run_shard(path, shard_dir, k, n, threads, digits, by_cases, sizes)
     if token is not None:
         try:
             with open(token[0], "rb") as f:
@@ -140,7 +140,7 @@ def plan_shards(unit, units, cases, method, slots):
     return max(1, min(cases, per_slot * slots)), True
 
 
-def fleet(path, client=None, out_dir=None, shards=None, threads=1, digits=10, split=None):
+def fleet(path, client=None, out_dir=None, shards=None, threads=1, digits=10, split=None, sizes=None):
     """Run a case file or batch manifest `path` as shards on the Dask `client` (None: one after
     the other in this process) and merge them into `out_dir` (required). `shards`: how many
     (default: one per pair of a manifest; a case file: four per worker, at most its case count);
@@ -150,6 +150,10 @@ def fleet(path, client=None, out_dir=None, shards=None, threads=1, digits=10, sp
     joined back by the merge), "pairs" gives each shard whole pairs; default: "cases" with the
     shard count of plan_shards() (docs/cluster.md), "pairs" with one shard per pair when
     `shards` is given without `split`.
+    `sizes`: "equal" slices, or "tapered" (`--shard-sizes tapered`: shard K's share proportional to
+    N - K + 1; Dask hands the shards out in order as workers free up, so the last to start are the
+    smallest and the workers end together whatever the cases cost); default "tapered" on a
+    client with at least two shards a worker thread, else "equal".
     Returns {"out_dir", "exit_code" (merge's: 0 every case ok, 1 some not), "shards",
     "tables" (read_tables(out_dir), each table read when first used)}. Bad input raises mhcontact.InputError with the command's
     message; a failed task raises its exception."""
@@ -169,6 +173,10 @@ def fleet(path, client=None, out_dir=None, shards=None, threads=1, digits=10, sp
     elif shards is None:
         shards = plan_shards(unit, count, cases, method, _worker_slots(client))[0]
     shards = max(1, min(int(shards), max(1, cases if by_cases else count), 100000))
+    if sizes is None:
+        sizes = "tapered" if client is not None and shards >= 2 * _worker_slots(client) else "equal"
+    if sizes not in ("equal", "tapered"):
+        raise ValueError("sizes: \"equal\" or \"tapered\", not %r" % (sizes,))
     if shards == 1:  # no slices: one run straight into out_dir
         if client is None:
             k, rc, err, files = _shard_task(path, out_dir, 1, 1, threads, digits)
@@ -177,20 +185,20 @@ def fleet(path, client=None, out_dir=None, shards=None, threads=1, digits=10, sp
                 k, rc, err, files = client.submit(_shard_task, path, out_dir, 1, 1, threads, digits, token.value,
                                                   pure=False).result()
         _place(files, out_dir)
-        return {"out_dir": out_dir, "exit_code": rc, "shards": 1, "tables": _Tables(out_dir)}
+        return {"out_dir": out_dir, "exit_code": rc, "shards": 1, "sizes": "equal", "tables": _Tables(out_dir)}
     dirs = [_os.path.join(out_dir + ".shards", "shard%d" % k) for k in range(1, shards + 1)]
     if client is None:
-        results = [_shard_task(path, dirs[k - 1], k, shards, threads, digits, None, by_cases) for k in range(1, shards + 1)]
+        results = [_shard_task(path, dirs[k - 1], k, shards, threads, digits, None, by_cases, sizes) for k in range(1, shards + 1)]
     else:
         with _Token(out_dir + ".shards") as token:
-            futures = [client.submit(_shard_task, path, dirs[k - 1], k, shards, threads, digits, token.value, by_cases, pure=False,
+            futures = [client.submit(_shard_task, path, dirs[k - 1], k, shards, threads, digits, token.value, by_cases, sizes, pure=False,
                                      key="mhcontact-shard-%d-of-%d-%s" % (k, shards, _os.urandom(4).hex()))
                        for k in range(1, shards + 1)]
             results = client.gather(futures)
     for k, rc, err, files in results:
         _place(files, dirs[k - 1])
     rc, err = _core._merge(dirs, out_dir)
-    return {"out_dir": out_dir, "exit_code": rc, "shards": shards, "tables": _Tables(out_dir)}
+    return {"out_dir": out_dir, "exit_code": rc, "shards": shards, "sizes": sizes, "tables": _Tables(out_dir)}
 
 
 def _table_task(path, k, n, points, threads, options):

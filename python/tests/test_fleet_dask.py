@@ -66,12 +66,21 @@ def test_fleet_pairs_cut_across_shards(client, tmp_path):
     # and one shard per whole pair as before (split="pairs"): both the command's bytes.
     command_run(FLEET, str(tmp_path / "single"))
     res = mhcontact.fleet(FLEET, client, tmp_path / "cut", shards=3, split="cases")
-    assert res["shards"] == 3
+    assert res["shards"] == 3 and res["sizes"] == "equal"  # fewer than two shards a worker slot
     assert '"unit": "pair_case"' in open(os.path.join(res["out_dir"] + ".shards", "shard2", "shard.json")).read()
     same_files(str(tmp_path / "single"), res["out_dir"])
     res = mhcontact.fleet(FLEET, client, tmp_path / "pairs", split="pairs")
     assert res["shards"] == 4
     same_files(str(tmp_path / "single"), res["out_dir"])
+    # 8 slices on 2 slots: tapered by default (--shard-sizes tapered), the first 2/9 of the
+    # cases (88), the last 1/36 (11); the same bytes.
+    res = mhcontact.fleet(FLEET, client, tmp_path / "tapered", shards=8, split="cases")
+    assert res["sizes"] == "tapered"
+    shard = lambda k: open(os.path.join(res["out_dir"] + ".shards", "shard%d" % k, "cases.csv")).read().count("\n") - 1
+    assert (shard(1), shard(8)) == (88, 11)
+    same_files(str(tmp_path / "single"), res["out_dir"])
+    with pytest.raises(ValueError, match="sizes"):
+        mhcontact.fleet(FLEET, client, tmp_path / "bad", shards=8, split="cases", sizes="geometric")
 
 
 def test_plan_shards():

@@ -3,7 +3,8 @@
 # cases, so one pair's cases are spread over shards, and merge joins them back byte for byte into
 # the one-process run's tables, results.json and pairs/<k>/ (a pair split in 3, an invalid pair
 # split in 2, more shards than cases). A missing shard is named by merge; the shard re-run alone
-# completes the run. A continuation record without its pair's start is refused.
+# completes the run. A continuation record without its pair's start is refused. Tapered slices
+# (--shard-sizes tapered) merge to the same bytes; shards cut both ways are refused.
 set -euo pipefail
 bin=$1; src=$(cd "$2" && pwd)
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -40,6 +41,20 @@ sed -i '0,/"pair": 0,/s//"pair": 2,/' "$tmp/s3x/results.json"
 set +e; "$bin" merge "$tmp"/s1 "$tmp"/s2 "$tmp"/s3x "$tmp"/s{4,5,6,7,8,9,10} -o "$tmp/m3" 2>"$tmp/err"; rc=$?; set -e
 test $rc -eq 2 && grep -q "s3x/results.json: .*continues pair 2, which the shard before does not end with" "$tmp/err" || { cat "$tmp/err"; exit 1; }
 test ! -e "$tmp/m3/cases.csv"
+
+# Tapered slices: 10 shards of 72, 64, 58, 50, 44, 36, 28, 22, 14 and 8 cases (test_shard_slice.cpp).
+for k in $(seq 1 10); do "$bin" run "$tmp/fleet.json" -o "$tmp/p$k" --shard $k/10 --shard-by cases --shard-sizes tapered -q || test $? -eq 1; done
+test "$(($(wc -l < "$tmp/p1/cases.csv") - 1))" -eq 72 && test "$(($(wc -l < "$tmp/p10/cases.csv") - 1))" -eq 8
+grep -q '"sizes": "tapered"' "$tmp/p10/shard.json"
+"$bin" merge "$tmp"/p{1,2,3,4,5,6,7,8,9,10} -o "$tmp/pmerged" -q || test $? -eq 1
+same_run "$tmp/full" "$tmp/pmerged"
+# a missing tapered shard: the command that remakes it says --shard-sizes tapered
+set +e; "$bin" merge "$tmp"/p{1,2,3,4,5,6,7,8,9} -o "$tmp/pm2" 2>"$tmp/err"; rc=$?; set -e
+test $rc -eq 2 && grep -q -- "--shard K/10 --shard-sizes tapered" "$tmp/err" || { cat "$tmp/err"; exit 1; }
+# an equal shard among tapered ones: refused by name
+set +e; "$bin" merge "$tmp"/p{1,2,3,4,5,6,7,8,9} "$tmp/s10" -o "$tmp/pm3" 2>"$tmp/err"; rc=$?; set -e
+test $rc -eq 2 && grep -q "s10/shard.json: value sizes equal: shards cut with different --shard-sizes" "$tmp/err" || { cat "$tmp/err"; exit 1; }
+test ! -e "$tmp/pm3/cases.csv"
 
 # Invalid pairs (a missing profile file: pairs 0 and 1), every pair's cases split between 2 shards; and more
 # shards than cases (cases 0.. of a 2-case sweep over 2 pairs in 6 shards, some empty).
