@@ -88,8 +88,11 @@ struct RcfPoint {
 /// t = z/a; von Mises |σ_r − σ_z|) and the line contact on its plane of symmetry (Johnson §7.1,
 /// McEwen 1949: σ_x = −p0[(1 + 2t²)/√(1 + t²) − 2t], σ_z = −p0/√(1 + t²), σ_y = ν(σ_x + σ_z),
 /// plane strain). Maximised in t by golden-section search (the functions are unimodal). At ν = 0.3:
-/// 0.6200 at 0.481 a (circle) and 0.5575 at 0.704 b (line).
+/// 0.6200 at 0.481 a (circle) and 0.5575 at 0.704 b (line). The last ν's two values are kept per
+/// thread (the RCF columns ask for them at every contact, always at the material's ν).
 inline double frictionless_vm_peak(bool line, double nu) {
+  thread_local double memo_nu[2] = {NAN, NAN}, memo[2] = {NAN, NAN};
+  if (memo_nu[line] == nu) return memo[line];
   auto vm = [&](double t) {
     if (line) {
       const double r = std::sqrt(1 + t * t);
@@ -105,7 +108,8 @@ inline double frictionless_vm_peak(bool line, double nu) {
     if (fc >= fd) b = d, d = c, fd = fc, c = b - g * (b - a), fc = vm(c);
     else a = c, c = d, fc = fd, d = a + g * (b - a), fd = vm(d);
   }
-  return std::max(fc, fd);
+  memo_nu[line] = nu;
+  return memo[line] = std::max(fc, fd);
 }
 
 /// Frictionless limits of p0/k for the aspect ratio e = min(a,b)/max(a,b), linear in e between
