@@ -123,6 +123,30 @@ def _worker_slots(client):
     return max(1, sum(w.get("nthreads", 1) for w in client.scheduler_info()["workers"].values()))
 
 
+def _run_in_order(client, submit, n):
+    """submit(k) for k = 1 ... n on `client`, at most as many running as the cluster has worker
+    threads, the next submitted as one ends; returns the tasks' results in k's order. So the
+    shards start in their order (tapered slices: the smallest last) whatever the scheduler's own
+    queueing: Dask 2022.12 sends each one-thread worker a second task ahead of time
+    (distributed.scheduler.worker-saturation 1.1), which let a large late shard wait behind
+    another on a busy worker while the other went idle (docs/cluster.md#cost). A task's exception
+    is raised here."""
+    from dask.distributed import as_completed
+    results = [None] * n
+    k = 0
+    running = as_completed()
+    while k < min(n, _worker_slots(client)):
+        k += 1
+        running.add(submit(k))
+    for future in running:
+        r = future.result()
+        results[r[0] - 1] = r
+        if k < n:
+            k += 1
+            running.add(submit(k))
+    return results
+
+
 def plan_shards(unit, units, cases, method, slots):
     """(shards, by_cases): how fleet() cuts a run for `slots` tasks at once. Every shard is a
     slice of the cases (a manifest's: of every pair's cases, pair after pair), so shards of one
@@ -191,10 +215,9 @@ def fleet(path, client=None, out_dir=None, shards=None, threads=1, digits=10, sp
         results = [_shard_task(path, dirs[k - 1], k, shards, threads, digits, None, by_cases, sizes) for k in range(1, shards + 1)]
     else:
         with _Token(out_dir + ".shards") as token:
-            futures = [client.submit(_shard_task, path, dirs[k - 1], k, shards, threads, digits, token.value, by_cases, sizes, pure=False,
-                                     key="mhcontact-shard-%d-of-%d-%s" % (k, shards, _os.urandom(4).hex()))
-                       for k in range(1, shards + 1)]
-            results = client.gather(futures)
+            results = _run_in_order(client, lambda k: client.submit(
+                _shard_task, path, dirs[k - 1], k, shards, threads, digits, token.value, by_cases, sizes, pure=False,
+                key="mhcontact-shard-%d-of-%d-%s" % (k, shards, _os.urandom(4).hex())), shards)
     for k, rc, err, files in results:
         _place(files, dirs[k - 1])
     rc, err = _core._merge(dirs, out_dir)

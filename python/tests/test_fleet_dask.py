@@ -83,6 +83,25 @@ def test_fleet_pairs_cut_across_shards(client, tmp_path):
         mhcontact.fleet(FLEET, client, tmp_path / "bad", shards=8, split="cases", sizes="geometric")
 
 
+def _timed(k, seconds):
+    import time
+    start = time.time()
+    time.sleep(seconds)
+    return k, start, time.time()
+
+
+def test_shards_start_in_their_order(client):
+    # Shard 1 long, the rest short, on 2 one-thread workers: each shard starts only when a worker
+    # is free, in k's order (a worker sent shard 3 ahead of time would hold it behind shard 1
+    # while the other ran 4, 5, ...).
+    from mhcontact.fleet import _run_in_order
+    res = _run_in_order(client, lambda k: client.submit(_timed, k, 1.5 if k == 1 else 0.1, pure=False), 8)
+    assert [r[0] for r in res] == list(range(1, 9))
+    starts = [r[1] for r in res]
+    assert starts == sorted(starts), starts
+    assert res[2][1] < res[0][2]  # shard 3 ran beside shard 1, not after it
+
+
 def test_plan_shards():
     # A manifest: by cases; multi-Hertzian one shard a slot, grid methods eight; never more
     # shards than cases. A case file: four a slot, as before.

@@ -17,6 +17,11 @@ for k in 1 2 3; do SLURM_ARRAY_TASK_ID=$k bash "$src/scripts/slurm_array.sh" "$s
 grep -q '"unit": "pair_case"' "$tmp/fleet.shards/shard2/shard.json"
 "$bin" merge "$tmp"/fleet.shards/shard* -o "$tmp/fleet" -q
 for f in cases.csv ellipses.csv geometry.csv pairs.csv results.json; do cmp "$tmp/fleetfull/$f" "$tmp/fleet/$f"; done
+# The same in 4 tapered tasks (--shard-sizes tapered after N: 158, 119, 79 and 40 cases).
+for k in 1 2 3 4; do SLURM_ARRAY_TASK_ID=$k bash "$src/scripts/slurm_array.sh" "$src/cases/fleet.json" "$tmp/fleett" 4 --shard-by cases --shard-sizes tapered; done
+test "$(($(wc -l < "$tmp/fleett.shards/shard4/cases.csv") - 1))" -eq 40
+"$bin" merge "$tmp"/fleett.shards/shard* -o "$tmp/fleett" -q
+for f in cases.csv ellipses.csv geometry.csv pairs.csv results.json; do cmp "$tmp/fleetfull/$f" "$tmp/fleett/$f"; done
 echo "sharded_scripts: OK"
 # The README's GNU parallel form, when GNU parallel is installed (it is not a dependency).
 if command -v parallel >/dev/null && parallel --version 2>/dev/null | grep -q "GNU parallel"; then
