@@ -125,7 +125,8 @@ def _worker_slots(client):
 
 def _run_in_order(client, submit, n):
     """submit(k) for k = 1 ... n on `client`, at most as many running as the cluster has worker
-    threads, the next submitted as one ends; returns the tasks' results in k's order. So the
+    threads, the next submitted as one ends; returns the tasks' results (each a tuple whose first
+    element is its k) in k's order. So the
     shards start in their order (tapered slices: the smallest last) whatever the scheduler's own
     queueing: Dask 2022.12 sends each one-thread worker a second task ahead of time
     (distributed.scheduler.worker-saturation 1.1), which let a large late shard wait behind
