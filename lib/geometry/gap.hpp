@@ -168,5 +168,17 @@ inline KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, do
                                 double dz) {
   return gap_kink_bound(gap, P, s_first, h, n, B, dz, 0.5 * h);
 }
+/// A coarser bound of the same Δθ_i (all centres at once), cheaper than gap_kink_bound: instead
+/// of summing every kink of the polylines into every centre, the range over the span of each
+/// polyline's kinks per length in the plane, c_k = J_k / δ_k (δ_k the kink's share of plane
+/// length), whose second differences over h are then within h (range) of h κ̄ (trapezoid error
+/// included). The kinks per length in y are tabulated per node (the plane enters through the range
+/// of D only), so a call is a min/max scan of the span's nodes. It passes the patches whose gap
+/// curvature varies by less than the limit across the span (tread contacts: 236 of 297 Manchester
+/// patches), not those near a corner or a change of radius, which gap_kink_bound or the samples
+/// then decide. `found` false as gap_kink_bound's, or for a rolled wheel (its curve has no node
+/// table).
+KinkBound gap_curvature_bound(const WheelRailGap& gap, const PatchPlane& P, double s_first, double h, int n, double B,
+                              double dz);
 
 }  // namespace mh

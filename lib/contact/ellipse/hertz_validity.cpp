@@ -95,6 +95,16 @@ GapKink gap_kink(const WheelRailGap& gap, const CandidateGeom& g, double B, doub
   // its two bounds; the samples then visit only the centres whose bound exceeds the limit (a
   // centre within it has its Δθ_i within it too, so the verdict and, when the test fails, the
   // largest Δθ_i are those of all the samples).
+  // Cheapest first: the bound from the range of the gap's curvature over the whole span.
+  if (use_bound) {
+    const KinkBound qb = gap_curvature_bound(gap, P, -b, h, n + 1, B, dz);
+    if (qb.found && ratio(qb.dtheta) <= limit) {
+      k.dtheta = qb.dtheta;
+      k.kink_ratio = ratio(qb.dtheta);
+      k.bounded = true;
+      return k;
+    }
+  }
   std::array<double, n + 1> cb, cb2;
   bool have = false;
   if (use_bound)

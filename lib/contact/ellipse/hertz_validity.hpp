@@ -90,8 +90,10 @@ HertzValidity hertz_validity(const ContactGeometry& G, const CandidateGeom& g, d
 /// (t_Y −6 … 10 mm); worn measured flanges 0.38 … 10^4 (docs/methods.md, auto).
 ///
 /// The samples cost about 330 profile evaluations per ellipse (two Newton solves each). Most
-/// patches are shown valid without them, by a bound of Δθ from the profiles' nodes (geometry/
-/// gap.hpp, gap_kink_bound: the polylines through the nodes spaced at most h, then at most h/2
+/// patches are shown valid without them: first by the range of the gap's curvature over the span
+/// (geometry/gap.hpp, gap_curvature_bound: the tread patches, a few dozen blocks of nodes), then
+/// by a bound of Δθ from the profiles' nodes (gap_kink_bound: the polylines through the nodes
+/// spaced at most h, then at most h/2
 /// when that does not pass the patch, whose second differences are
 /// exact sums over their kinks, plus the largest deviation of the curves from them). When
 /// E* Δθ / (2π p0) from that bound is within the limit the test passes with the bound as its
