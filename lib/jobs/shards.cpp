@@ -175,6 +175,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
   }
   std::sort(shards.begin(), shards.end(), [](const Shard& a, const Shard& b) { return a.meta["index"] < b.meta["index"]; });
   const auto N = shards[0].meta["count"].get<unsigned>();
+  const std::string sizes0 = shards[0].meta.value("sizes", "equal");  // shard.json writes it only when tapered
   for (const auto& sh : shards)
     if (sh.meta["count"].get<unsigned>() != N)
       throw InputError(sh.dir + "/shard.json", "count " + sh.meta["count"].dump(),
@@ -205,7 +206,7 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
                            (twice.empty() ? std::string() : "shard " + twice + " given twice"),
                        missing.empty() ? "give each shard's directory once"
                                        : "run the missing shard(s) with the same inputs (mhcontact run CASE -o DIR --shard K/" +
-                                             std::to_string(N) + (shards[0].meta.value("sizes", "equal") == "equal" ? std::string() : " --shard-sizes " + shards[0].meta.value("sizes", "equal")) +
+                                             std::to_string(N) + (sizes0 == "equal" ? std::string() : " --shard-sizes " + sizes0) +
                                              ") and give all " + std::to_string(N) + " directories");
   }
   std::uint64_t expect = 0;
@@ -219,9 +220,9 @@ int merge_job(const std::vector<std::string>& dirs, const std::string& out_dir, 
     if (m["csv"] != shards[0].meta["csv"] || m["json"] != shards[0].meta["json"] || m["pressure"] != shards[0].meta["pressure"] ||
         m.value("digits", -1) != shards[0].meta.value("digits", -1))
       throw InputError(where, "", "shards written with different output options");
-    if (m.value("sizes", "equal") != shards[0].meta.value("sizes", "equal"))
+    if (m.value("sizes", "equal") != sizes0)
       throw InputError(where, "sizes " + m.value("sizes", "equal"),
-                       "shards cut with different --shard-sizes (" + shards[0].dir + ": " + shards[0].meta.value("sizes", "equal") + ")",
+                       "shards cut with different --shard-sizes (" + shards[0].dir + ": " + sizes0 + ")",
                        "run every shard of a run with the same --shard-sizes");
     if (m["first"].get<std::uint64_t>() != expect) throw InputError(where, m["first"].dump(), "the shards' ranges do not tile the case (or pair) list");
     expect = m["end"].get<std::uint64_t>();

@@ -15,6 +15,14 @@ wait
 test -s "$tmp/s2/shard.json"
 "$bin" merge "$tmp/s3" "$tmp/s1" "$tmp/s2" -o "$tmp/merged" -q
 check_equal "$tmp/full" "$tmp/merged"
+# --shard-sizes tapered on a case file: shard K's share of the 99 cases ∝ N − K + 1 (33, 26, 20,
+# 13, 7), recorded in shard.json, merged to the one run's bytes.
+for k in 1 2 3 4 5; do "$bin" run "$src/cases/manchester.json" -o "$tmp/t$k" --shard $k/5 --shard-sizes tapered -q; done
+counts=$(for k in 1 2 3 4 5; do echo $(($(wc -l < "$tmp/t$k/cases.csv") - 1)); done | tr '\n' ' ')
+test "$counts" = "33 26 20 13 7 " || { echo "tapered shards: $counts" >&2; exit 1; }
+grep -q '"sizes": *"tapered"' "$tmp/t1/shard.json"
+"$bin" merge "$tmp"/t5 "$tmp"/t3 "$tmp"/t1 "$tmp"/t2 "$tmp"/t4 -o "$tmp/tmerged" -q
+check_equal "$tmp/full" "$tmp/tmerged"
 # 4 shards cut the loads of one t_Y between shards 2 and 3 (cases 49 .. 50 share t_Y = 2 mm):
 # both shards write its geometry rows, the merge keeps them once, where one run writes them.
 for k in 1 2 3 4; do "$bin" run "$src/cases/manchester.json" -o "$tmp/q$k" --shard $k/4 -q; done
