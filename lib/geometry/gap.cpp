@@ -426,18 +426,27 @@ const NodeTable& node_table(const ProfileCurve& C, std::uint64_t build_id, int w
   return T;
 }
 
+// The nodes k0 < k1 of level T whose intervals cover [ya, yb] with one more on each side; false
+// when that reaches beyond the nodes (or the level has fewer than 3).
+bool node_range(const NodeLevel& T, double ya, double yb, std::size_t& k0, std::size_t& k1) {
+  const std::size_t n = T.y.size();
+  if (n < 3) return false;
+  const double hg = T.y[1] - T.y[0];
+  const double ka = std::floor((std::min(ya, yb) - T.y[0]) / hg) - 1, kb = std::ceil((std::max(ya, yb) - T.y[0]) / hg) + 1;
+  if (!(ka >= 0) || !(kb <= static_cast<double>(n - 1))) return false;
+  k0 = static_cast<std::size_t>(ka);
+  k1 = static_cast<std::size_t>(kb);
+  return true;
+}
+
 // The nodes whose intervals cover [ya, yb] (the curve's own y) with one more on each side,
 // placed in the rail frame at y + dy, z + dzv, seen from plane P (c, sn); `sign` +1 the wheel,
 // −1 the rail (G = h_w − h_r): their kinks into `bins`. False when the range reaches beyond the
 // nodes or D < kMinSlopeFactor.
 bool plane_polyline(const NodeLevel& T, double ya, double yb, double dy, double dzv, const PatchPlane& P, double c,
                     double sn, double sign, PlanePolyline& out, KinkBins& bins) {
-  const std::size_t n = T.y.size();
-  if (n < 3) return false;
-  const double hg = T.y[1] - T.y[0];
-  const double ka = std::floor((std::min(ya, yb) - T.y[0]) / hg) - 1, kb = std::ceil((std::max(ya, yb) - T.y[0]) / hg) + 1;
-  if (!(ka >= 0) || !(kb <= static_cast<double>(n - 1))) return false;
-  const std::size_t k0 = static_cast<std::size_t>(ka), k1 = static_cast<std::size_t>(kb);
+  std::size_t k0, k1;
+  if (!node_range(T, ya, yb, k0, k1)) return false;
   const double asn = std::fabs(sn);
   const double ys = dy - P.y_ref, zs = dzv - P.z_ref;
   const double g0 = bins.g0, ih = bins.inv_half_h;
@@ -483,12 +492,9 @@ struct PolylineRange {
   double cmin = 0, cmax = 0, ds_max = 0, E = 0, D_min = 0;
 };
 bool polyline_range(const NodeLevel& T, double ya, double yb, double c, double sn, PolylineRange& out) {
-  const std::size_t n = T.y.size();
-  if (n < 3) return false;
+  std::size_t i0, i1;
+  if (!node_range(T, ya, yb, i0, i1)) return false;
   const double hg = T.y[1] - T.y[0];
-  const double ka = std::floor((std::min(ya, yb) - T.y[0]) / hg) - 1, kb = std::ceil((std::max(ya, yb) - T.y[0]) / hg) + 1;
-  if (!(ka >= 0) || !(kb <= static_cast<double>(n - 1))) return false;
-  const std::size_t i0 = static_cast<std::size_t>(ka), i1 = static_cast<std::size_t>(kb);
   // Intervals i0 … i1 − 1, kinks at nodes i0 + 1 … i1 − 1: min/max scans, whole blocks where
   // they fit.
   constexpr std::size_t K = NodeLevel::kBlock;
@@ -518,32 +524,60 @@ bool polyline_range(const NodeLevel& T, double ya, double yb, double c, double s
   return true;
 }
 
+// The span of the samples, [s_first − h, s_last + h], and where its end normals meet the curves:
+// the rail's y and the wheel's own y at both ends (gap_kink_bound, gap_curvature_bound). False
+// (no bound) for a rolled wheel (no node tables), no centres, or a normal on the rail's gauge
+// face (the face is met by the normals below some s: qz + (qy − y_f) cos γ / sin γ grows with s
+// at rate 1/sin γ, so none on the span if none at its start).
+struct SpanEnds {
+  double c = 1, sn = 0, sa = 0;
+  NormalHits a, b;
+  double yr_a = 0, yr_b = 0, yw_a = 0, yw_b = 0;
+};
+bool span_ends(const WheelRailGap& gap, const PatchPlane& P, double s_first, double h, int n, double dz, SpanEnds& e) {
+  if (gap.build_id() == 0 || n < 1) return false;
+  e.c = std::cos(P.gamma);
+  e.sn = std::sin(P.gamma);
+  e.sa = s_first - h;
+  const double sb = s_first + 0.5 * h * (n - 1) + h;
+  e.a = normal_hits(gap, P, e.c, e.sn, 0, e.sa, dz);
+  e.b = normal_hits(gap, P, e.c, e.sn, 0, sb, dz);
+  if (e.a.on_face || e.b.on_face) return false;
+  e.yr_a = e.a.qy - e.a.h_r * e.sn;
+  e.yr_b = e.b.qy - e.b.h_r * e.sn;
+  e.yw_a = gap.y_wheel(e.a.qy - e.a.h_w * e.sn);
+  e.yw_b = gap.y_wheel(e.b.qy - e.b.h_w * e.sn);
+  return true;
+}
+
+// The polyline through every 2^l-th node with the largest l whose spacing is at most `spacing`.
+const NodeLevel& level_at_most(const NodeTable& T, double spacing) {
+  const NodeLevel& f = T.level[0];
+  if (f.y.size() < 2) return f;
+  int l = 0;
+  while (l + 1 < NodeTable::kLevels && (f.y[1] - f.y[0]) * static_cast<double>(std::size_t{1} << (l + 1)) <= spacing) ++l;
+  return T.level[l];
+}
+
 }  // namespace
 
 KinkBound gap_curvature_bound(const WheelRailGap& gap, const PatchPlane& P, double s_first, double h, int n, double B,
                               double dz) {
   KinkBound out;
-  if (gap.build_id() == 0 || n < 1) return out;
-  const double c = std::cos(P.gamma), sn = std::sin(P.gamma);
-  const double sa = s_first - h, sb = s_first + 0.5 * h * (n - 1) + h;
-  const NormalHits a = normal_hits(gap, P, c, sn, 0, sa, dz), b = normal_hits(gap, P, c, sn, 0, sb, dz);
-  if (a.on_face || b.on_face) return out;
-  const NodeTable& Tr0 = node_table(gap.rail_curve(), gap.build_id(), 0);
-  const NodeTable& Tw0 = node_table(gap.wheel_curve(), gap.build_id(), 1);
+  SpanEnds e;
+  if (!span_ends(gap, P, s_first, h, n, dz, e)) return out;
   // The polylines through every 2^l-th node, spaced at most 0.75 h: finer ones see the nodes'
   // height noise in their kinks per length (∝ 1/Δ²), coarser ones a larger trapezoid error
   // (∝ Δ²). Of the 297 Manchester patches of test_gap_kink_bound.cpp the bound passes 222 at
   // 0.5 h, 236 at 0.75 h, 222 at h.
-  auto level = [&](const NodeTable& T) -> const NodeLevel& {
-    const NodeLevel& f = T.level[0];
-    if (f.y.size() < 2) return f;
-    int l = 0;
-    while (l + 1 < NodeTable::kLevels && (f.y[1] - f.y[0]) * static_cast<double>(std::size_t{1} << (l + 1)) <= 0.75 * h) ++l;
-    return T.level[l];
-  };
+  const double spacing = 0.75 * h;
   PolylineRange rr, wr;
-  if (!polyline_range(level(Tr0), a.qy - a.h_r * sn, b.qy - b.h_r * sn, c, sn, rr)) return out;
-  if (!polyline_range(level(Tw0), gap.y_wheel(a.qy - a.h_w * sn), gap.y_wheel(b.qy - b.h_w * sn), c, sn, wr)) return out;
+  if (!polyline_range(level_at_most(node_table(gap.rail_curve(), gap.build_id(), 0), spacing), e.yr_a, e.yr_b, e.c,
+                      e.sn, rr))
+    return out;
+  if (!polyline_range(level_at_most(node_table(gap.wheel_curve(), gap.build_id(), 1), spacing), e.yw_a, e.yw_b, e.c,
+                      e.sn, wr))
+    return out;
   // G_L = wheel − rail polylines: S_i = Σ_w J w_i − Σ_r J w_i (w_i = (1 − |s_k − s_i|/h)₊), and
   // with J = c δ and any κ̄ per curve, Σ c δ w_i = Σ (c − κ̄) δ w_i + κ̄ W_i, W_i = Σ δ w_i the
   // trapezoid rule of ∫ w_i ds = h on the polyline's nodes (w_i vanishes at the range's ends),
@@ -567,34 +601,19 @@ KinkBound gap_curvature_bound(const WheelRailGap& gap, const PatchPlane& P, doub
 KinkBound gap_kink_bound(const WheelRailGap& gap, const PatchPlane& P, double s_first, double h, int n, double B,
                          double dz, double spacing, double* centre_bound) {
   KinkBound out;
-  const double c = std::cos(P.gamma), sn = std::sin(P.gamma);
-  // The span of the samples, [s_first − h, s_last + h]. The face is met by the normals below some
-  // s (qz + (qy − y_f) cos γ / sin γ grows with s at rate 1/sin γ): none on the span if none at
-  // its start.
-  const double sa = s_first - h, sb = s_first + 0.5 * h * (n - 1) + h;
-  if (gap.build_id() == 0 || n < 1) return out;
-  const NormalHits a = normal_hits(gap, P, c, sn, 0, sa, dz), b = normal_hits(gap, P, c, sn, 0, sb, dz);
-  if (a.on_face || b.on_face) return out;
+  SpanEnds e;
+  if (!span_ends(gap, P, s_first, h, n, dz, e)) return out;
+  const double c = e.c, sn = e.sn;
   // Bins j = 0 … n + 2 of width h/2 from g_0 = s_first − h (KinkBins): centre i is g_{i+2}.
   thread_local KinkBins bins;
-  bins.reset(sa, h, n + 3);
+  bins.reset(e.sa, h, n + 3);
   PlanePolyline rail, wheel;
-  const NodeTable& Tr0 = node_table(gap.rail_curve(), gap.build_id(), 0);
-  const NodeTable& Tw0 = node_table(gap.wheel_curve(), gap.build_id(), 1);
   // The polylines through every 2^l-th node, spaced at most `spacing`: the coarser, the fewer
   // kinks to sum and the larger their distance from the curve (about κ Δ²/8 at spacing Δ).
-  auto level = [&](const NodeTable& T) -> const NodeLevel& {
-    const NodeLevel& f = T.level[0];
-    if (f.y.size() < 2) return f;
-    int l = 0;
-    while (l + 1 < NodeTable::kLevels && (f.y[1] - f.y[0]) * static_cast<double>(std::size_t{1} << (l + 1)) <= spacing) ++l;
-    return T.level[l];
-  };
-  const NodeLevel& Tr = level(Tr0);
-  const NodeLevel& Tw = level(Tw0);
-  if (!plane_polyline(Tr, a.qy - a.h_r * sn, b.qy - b.h_r * sn, 0, 0, P, c, sn, -1, rail, bins)) return out;
-  if (!plane_polyline(Tw, gap.y_wheel(a.qy - a.h_w * sn), gap.y_wheel(b.qy - b.h_w * sn), a.qy - gap.y_wheel(a.qy),
-                      -gap.wheel_lift() - dz, P, c, sn, 1, wheel, bins))
+  const NodeLevel& Tr = level_at_most(node_table(gap.rail_curve(), gap.build_id(), 0), spacing);
+  const NodeLevel& Tw = level_at_most(node_table(gap.wheel_curve(), gap.build_id(), 1), spacing);
+  if (!plane_polyline(Tr, e.yr_a, e.yr_b, 0, 0, P, c, sn, -1, rail, bins)) return out;
+  if (!plane_polyline(Tw, e.yw_a, e.yw_b, e.a.qy - gap.y_wheel(e.a.qy), -gap.wheel_lift() - dz, P, c, sn, 1, wheel, bins))
     return out;
   const double eta = wheel.E / wheel.D_min + rail.E / rail.D_min;
   // Σ_k J_k (1 − |s_k − s_i|/h)₊ for centre i from bins i … i + 3 (offsets −2 … 1 from the

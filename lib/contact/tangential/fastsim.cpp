@@ -123,6 +123,18 @@ TangentialResult march(const Creepages& cr, double a, double b, double N, double
       rbrow[l] = brow[l] > 0 ? 1.0 / brow[l] : 0.0;
       rA[l] = 0;
     }
+    // The lanes' cells of column k into the grid.
+    auto keep_cells = [&](int k) {
+      for (int l = 0; l < kLanes && j0 + l < ny; ++l) {
+        const size_t i = static_cast<size_t>(j0 + l) * nx + k;
+        grid->x[i] = x[l];
+        grid->y[i] = y[l];
+        grid->px[i] = px[l];
+        grid->py[i] = py[l];
+        grid->pn[i] = pnr[l] * f[k];
+        grid->slip[i] = slip[l];
+      }
+    };
 #if defined(__SSE2__)
     // The same arithmetic, two lanes to a register (IEEE operations lane by lane: the same bits);
     // the projection computed on every lane and selected where it slips (no branch; where it
@@ -187,17 +199,7 @@ TangentialResult march(const Creepages& cr, double a, double b, double N, double
             _mm_storeu_pd(py + 2 * p, vpy[p]);
           }
         }
-        if (grid) {
-          for (int l = 0; l < kLanes && j0 + l < ny; ++l) {
-            const size_t i = static_cast<size_t>(j0 + l) * nx + k;
-            grid->x[i] = x[l];
-            grid->y[i] = y[l];
-            grid->px[i] = px[l];
-            grid->py[i] = py[l];
-            grid->pn[i] = pnr[l] * f[k];
-            grid->slip[i] = slip[l];
-          }
-        }
+        if (grid) keep_cells(k);
       }
       for (int p = 0; p < kPairs; ++p) {
         _mm_storeu_pd(rFx + 2 * p, vrFx[p]); _mm_storeu_pd(rFy + 2 * p, vrFy[p]); _mm_storeu_pd(rM + 2 * p, vrM[p]);
@@ -241,17 +243,7 @@ TangentialResult march(const Creepages& cr, double a, double b, double N, double
         rFy[l] += py[l];
         rM[l] += xn * py[l] - y[l] * px[l];
       }
-      if (grid) {
-        for (int l = 0; l < kLanes && j0 + l < ny; ++l) {
-          const size_t i = static_cast<size_t>(j0 + l) * nx + k;
-          grid->x[i] = x[l];
-          grid->y[i] = y[l];
-          grid->px[i] = px[l];
-          grid->py[i] = py[l];
-          grid->pn[i] = pnr[l] * fk;
-          grid->slip[i] = slip[l];
-        }
-      }
+      if (grid) keep_cells(k);
     }
 #endif
     for (int l = 0; l < kLanes && j0 + l < ny; ++l) {
