@@ -273,11 +273,11 @@ def make_table(path, client=None, out_path=None, shards=None, threads=1, options
             if client is None:
                 results = [_table_task(path, k, shards, points, threads, options) for k in range(1, shards + 1)]
             else:
+                # In order, no more at once than the worker threads (as fleet(): _run_in_order).
                 tag = _os.urandom(4).hex()
-                futures = [client.submit(_table_task, path, k, shards, points, threads, options, pure=False,
-                                         key="mhcontact-table-pass%d-shard-%d-of-%d-%s" % (passes, k, shards, tag))
-                           for k in range(1, shards + 1)]
-                results = client.gather(futures)
+                results = _run_in_order(client, lambda k: client.submit(
+                    _table_task, path, k, shards, points, threads, options, pure=False,
+                    key="mhcontact-table-pass%d-shard-%d-of-%d-%s" % (passes, k, shards, tag)), shards)
             for k, rc, err, data in results:
                 if rc != 0:
                     raise RuntimeError("table shard %d/%d of pass %d: exit %d: %s" % (k, shards, passes, rc, err.strip()))
