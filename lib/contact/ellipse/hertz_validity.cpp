@@ -89,13 +89,9 @@ GapKink gap_kink(const WheelRailGap& gap, const CandidateGeom& g, double B, doub
   constexpr int n = 160;  // s = −b … b in steps of h/2
   auto ratio = [&](double dtheta) { return E_pair * dtheta / (2 * M_PI * p0); };
   const double limit = opt.max_gap_mean_error * (1 - 1e-9);
-  // First the bound (geometry/gap.hpp, gap_kink_bound): the centres s = −b … b.
-  // First on the polylines spaced at most h (half the kinks to sum), then at most h/2 (closer
-  // to the curves: the patches near the limit, flange roots). Each centre keeps the lesser of
-  // its two bounds; the samples then visit only the centres whose bound exceeds the limit (a
-  // centre within it has its Δθ_i within it too, so the verdict and, when the test fails, the
-  // largest Δθ_i are those of all the samples).
-  // Cheapest first: the bound from the range of the gap's curvature over the whole span.
+  // Bounds before the samples (geometry/gap.hpp), for the centres s = −b … b. Cheapest first:
+  // gap_curvature_bound, one bound for every centre from the range of the gap's curvature over
+  // the whole span (most tread patches pass it).
   if (use_bound) {
     const KinkBound qb = gap_curvature_bound(gap, P, -b, h, n + 1, B, dz);
     if (qb.found && ratio(qb.dtheta) <= limit) {
@@ -105,6 +101,11 @@ GapKink gap_kink(const WheelRailGap& gap, const CandidateGeom& g, double B, doub
       return k;
     }
   }
+  // Then gap_kink_bound, a bound per centre: first on the polylines spaced at most h (half the
+  // kinks to sum), then at most h/2 (closer to the curves: the patches near the limit, flange
+  // roots). Each centre keeps the lesser of its two bounds; the samples then visit only the
+  // centres whose bound exceeds the limit (a centre within it has its Δθ_i within it too, so the
+  // verdict and, when the test fails, the largest Δθ_i are those of all the samples).
   std::array<double, n + 1> cb, cb2;
   bool have = false;
   if (use_bound)
