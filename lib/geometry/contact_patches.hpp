@@ -18,6 +18,11 @@ struct PatchRegion {
   double x_half = 0;        ///< [m] half-length along x of the interpenetration at dz_grid
 };
 
+/// [deg] The largest tilt of a grid patch's plane against the rail that the project's tests show
+/// the planar approach good for (CONTACT's conformal runs within 10 % up to 14.7°; the judge's
+/// evidence table, contact/judge/evidence.cpp, and find_patch_regions below).
+constexpr double kPlanarTiltBoundDeg = 15.0;
+
 /// Patches of the interpenetration at vertical approach dz_grid [m] (their extent), with planes
 /// from the interpenetration at dz_ref ≤ dz_grid (the approach of the solution, or its estimate):
 /// the mean of the rail point (y, z_r) and of the rail inclination over the interpenetration,
@@ -27,7 +32,12 @@ struct PatchRegion {
 /// is below d_comb [m] form one patch, the distance measured between their interpenetrations at
 /// dz_ref where both have one (the regions of the solution's approach, as CONTACT combines those
 /// of its current position): two regions that only the grid's wider interpenetration joins, d_comb
-/// or more apart at dz_ref, are two patches, split where the gap between them is largest. In
+/// or more apart at dz_ref, are two patches, split where the gap between them is largest. So is
+/// a part of an interval reaching d_comb or more beyond its outer interpenetration at dz_ref, with
+/// a minimum of the gap of its own at a contact angle more than kPlanarTiltBoundDeg from the
+/// rail's at that interpenetration's deepest point; and an interval without interpenetration at
+/// dz_ref whose deepest point lies d_comb or more from a neighbour's interpenetration at such an
+/// angle (the flange root and the tread near flange onset: one plane cannot carry both). In
 /// increasing rail y.
 std::vector<PatchRegion> find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, double d_comb);
 
