@@ -31,7 +31,9 @@ def main():
         lo, hi = (int(x) for x in a.steps.split(":"))
         rows = [r for r in rows if lo <= int(r["step"]) <= hi]
     step = [int(r["step"]) for r in rows]
-    tracks = [k for k in rows[0] if k.startswith("N") and k.endswith("_kN")]
+    # The tracks that carry force in the steps shown (a table of many tracks would crowd the
+    # legend with idle ones).
+    tracks = [k for k in rows[0] if k.startswith("N") and k.endswith("_kN") and any(float(r[k]) != 0 for r in rows)]
     fig, ax = plt.subplots(3, 1, figsize=(8, 7.5), sharex=True)
     ax[0].plot(step, [float(r["tY_mm"]) for r in rows], "k-", lw=1)
     ax[0].set_ylabel("t_Y [mm]")

@@ -14,17 +14,17 @@ PY=/usr/bin/python3; command -v "$PY" >/dev/null || PY=python3
 mkdir -p out
 "$BIN" table "$SRC/cases/s1002-60e1-table.json" -o out/table.csv --threads 2 2>stderr.txt
 rc=$?
-# Exit 1: coarse cells at flange onset and t_Y nodes without an answer, dropped (docs/tables.md).
+# Exit 1: coarse cells at flange onset and a validation point beyond a tolerance (docs/tables.md).
 check "example exit 1" test $rc -eq 1
-check "summary line" grep -q '^mhcontact table: 28 x 5 nodes, 11 contact tracks, .* 21 coarse cells, 2 t_Y nodes without an answer (dropped)$' stderr.txt
+check "summary line" grep -q '^mhcontact table: 30 x 5 nodes, 14 contact tracks, .* 25 coarse cells, 0 t_Y nodes without an answer (dropped)$' stderr.txt
 # The validation points (docs/tables.md "How it is made", step 6): the summary's last line and
 # the header's `validation`.
 check "validation line" grep -q '^mhcontact table: validation at 100 random points: ok table [0-9]*, direct [0-9]*, both [0-9]*, table and not direct [0-9]*; where both ok: .*ok answers beyond a tolerance$' stderr.txt
 check "validation in the header" grep -q '"validation":{.*"points":100,' out/table.csv
 check "header schema" grep -q '^# {.*"schema":"mhcontact.table/2"' out/table.csv
 check "column line" test "$(sed -n 2p out/table.csv)" = "tY_mm,Q_kN,roll_mrad,status,contact,present,N_kN,y_rail_mm,z_rail_mm,y_wheel_mm,gamma_deg,r_roll_mm,pmax_MPa,area_mm2,a_mm,b_mm,a_el_mm,b_el_mm,C11,C22,C23"
-check "rows: 28 x 5 nodes x 11 tracks" test "$(tail -n +3 out/table.csv | wc -l)" -eq 1540
-check "dropped nodes in the header" grep -q '"dropped_tY_mm":\[6.5,6.625\]' out/table.csv
+check "rows: 30 x 5 nodes x 14 tracks" test "$(tail -n +3 out/table.csv | wc -l)" -eq 2100
+check "no dropped nodes in the header" grep -q '"dropped_tY_mm":\[\]' out/table.csv
 check "profiles with checksums" grep -q '"sha256"' out/table.csv
 # The same table whatever the thread count.
 "$BIN" table "$SRC/cases/s1002-60e1-table.json" -o out/table1.csv --threads 1 -q
@@ -35,7 +35,7 @@ awk '/^```python/ { b = 1; next } /^```/ { b = 0 } b' "$SRC/docs/tables.md" > re
 check "reader extracted" grep -q "def read_table" reader.py
 "$PY" reader.py > reader.txt 2>&1
 check "reader runs" test $? -eq 0
-check "reader header line" grep -q '^strips 28 x 5 nodes, 11 tracks; N within ' reader.txt
+check "reader header line" grep -q '^strips 30 x 5 nodes, 14 tracks; N within ' reader.txt
 # Its rows at t_Y = 6 mm, Q = 60 kN against `mhcontact run` of that node (patches.csv).
 "$PY" - "$SRC/cases/s1002-60e1-table.json" <<'PY'
 import json, sys
@@ -67,11 +67,11 @@ fi
 # checksum in its header, the measured error; a step that does not divide the range refused.
 "$BIN" table-export out/table.csv -o out/export.csv --tY-step-mm 0.25 --Q-step-kN 10 2>stderr.txt
 check "export exit 0" test $? -eq 0
-check "export summary" grep -q '^mhcontact table-export: 57 x 13 points, 11 contact tracks; linear error at the table.s ok nodes, ' stderr.txt
+check "export summary" grep -q '^mhcontact table-export: 57 x 13 points, 14 contact tracks; linear error at the table.s ok nodes, ' stderr.txt
 check "export schema" grep -q '^# {.*"schema":"mhcontact.table-export/2"' out/export.csv
 check "export names the table's checksum" grep -q "\"sha256\":\"$(sha256sum out/table.csv | cut -c1-64)\"" out/export.csv
 check "export columns: the table's" test "$(sed -n 2p out/export.csv)" = "$(sed -n 2p out/table.csv)"
-check "rows: 57 x 13 points x 11 tracks" test "$(tail -n +3 out/export.csv | wc -l)" -eq 8151
+check "rows: 57 x 13 points x 14 tracks" test "$(tail -n +3 out/export.csv | wc -l)" -eq 10374
 "$BIN" table-export out/table.csv -o out/x.csv --tY-step-mm 0.3 2>err.txt; rc=$?
 check "export step refused (exit 2)" test $rc -eq 2
 check "export step message" grep -q -- '--tY-step-mm: value 0.3.*must divide the table.s range -4 ... 10 mm' err.txt

@@ -365,18 +365,22 @@ TEST_CASE("a wheelset from two pair tables: lookups at t_Y = +y (left) and -y (r
 }
 
 TEST_CASE("table with dropped t_Y nodes: its error is that of the table written, one check per final cell", "[tables]") {
-  // The shipped example's pair (S1002 on 60E1 at 1:20, strips) over t_Y 5 ... 7 mm, two rounds of
-  // refinement: t_Y nodes at the flange onset where a load has no answer are dropped
+  // The shipped example's pair (S1002 on 60E1 at 1:20, strips) over t_Y 5.7 ... 7.7 mm and Q 20
+  // ... 180 kN, two rounds of refinement: t_Y nodes at the flange onset where a load has no answer
+  // (at 180 kN: 6.7 mm, where the contact jumps from the flange root onto the flange) are dropped
   // (docs/tables.md "Nodes without an answer"), which makes another interpolant (new cells span
   // them, their neighbours' slopes change). The error the header reports must be the written
   // table's against direct solves at its own cells' centres, made here by solve_contact. Broken
-  // once (the checks of the grid before the drop kept, as before 29 Nov 2026): 21 checks against
-  // 18 cells (in the shipped example the cells spanning the dropped nodes, pmax off by up to 32 %,
-  // went unreported).
+  // once (the checks of the grid before the drop kept, as before 29 Nov 2026): 32 checks against
+  // 24 cells (1 Dec 2026; in the shipped example then the cells spanning the dropped nodes, pmax
+  // off by up to 32 %, went unreported).
   CaseFile cf = load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/s1002-60e1-table.json", true);
   cf.sweep_tY_mm = SweepAxis();
-  cf.sweep_tY_mm.list = {5, 6, 7};
+  cf.sweep_tY_mm.list = {5.7, 6.7, 7.7};
   cf.sweep_tY_mm.n = 3;
+  cf.sweep_Q_kN = SweepAxis();
+  cf.sweep_Q_kN.list = {20, 60, 100, 140, 180};
+  cf.sweep_Q_kN.n = 5;
   const PairGeometry pg = build_pair_geometry(cf);
   std::ostringstream err;
   const TableMakeOptions opt = quiet_options(2);
