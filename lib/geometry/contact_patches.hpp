@@ -34,11 +34,11 @@ constexpr double kPlanarTiltBoundDeg = 15.0;
 /// of its current position): two regions that only the grid's wider interpenetration joins, d_comb
 /// or more apart at dz_ref, are two patches, split where the gap between them is largest. So is
 /// a part of an interval reaching d_comb or more beyond its outer interpenetration at dz_ref, with
-/// a minimum of the gap of its own at a contact angle more than kPlanarTiltBoundDeg from the
-/// rail's at that interpenetration's deepest point; and an interval without interpenetration at
-/// dz_ref whose deepest point lies d_comb or more from a neighbour's interpenetration at such an
-/// angle (the flange root and the tread near flange onset: one plane cannot carry both). In
-/// increasing rail y.
+/// a minimum of the gap of its own at a contact angle flatter by more than kPlanarTiltBoundDeg
+/// than the rail's at that interpenetration's deepest point; and an interval without
+/// interpenetration at dz_ref whose deepest point lies d_comb or more from a neighbour's
+/// interpenetration at such an angle (the tread beside the flange root near flange onset: the
+/// flange's plane cannot carry both). In increasing rail y.
 std::vector<PatchRegion> find_patch_regions(const WheelRailGap& gap, double dz_ref, double dz_grid, double d_comb);
 
 /// The working storage of find_patch_regions (cleared on use, capacity kept).

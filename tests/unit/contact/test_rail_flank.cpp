@@ -360,4 +360,13 @@ TEST_CASE("flange onset: the tread's own minimum apart from the flange root, the
     }
   }
   CHECK(compared >= 6);
+  // A steeper minimum beside a flatter patch stays with it: the gauge corner's scarcely touching
+  // minimum beside the tread's patch at 2.5° (kept apart too, it became a patch 2 elements across
+  // and these rows `under_resolved`).
+  for (const auto& [tY_mm, Q_kN] : std::array<std::pair<double, double>, 3>{{{5.72, 180}, {5.8, 140}, {5.86, 100}}}) {
+    const mh::CaseResult r = mh::solve_contact(pg.geo, cf.material, tY_mm * 1e-3, Q_kN * 1e3, opt);
+    INFO("t_Y = " << tY_mm << " mm, Q = " << Q_kN << " kN: " << mh::to_string(r.status) << " " << r.message);
+    CHECK(r.status == mh::CaseStatus::Ok);
+    CHECK(r.patches.size() == 1);
+  }
 }
