@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#if defined(__SSE2__)
+// MHC_FASTSIM_SCALAR: the plain C++ march on any host (tests/fastsim_paths compares the two).
+#if defined(__SSE2__) && !defined(MHC_FASTSIM_SCALAR)
+#define MHC_FASTSIM_SSE2 1
 #include <emmintrin.h>
 #endif
 
@@ -135,7 +137,7 @@ TangentialResult march(const Creepages& cr, double a, double b, double N, double
         grid->slip[i] = slip[l];
       }
     };
-#if defined(__SSE2__)
+#if defined(MHC_FASTSIM_SSE2)
     // The same arithmetic, two lanes to a register (IEEE operations lane by lane: the same bits);
     // the projection computed on every lane and selected where it slips (no branch; where it
     // sticks the quotient is not used, pt2 may be 0).
