@@ -129,8 +129,8 @@ void patch_fields(Sink& k, const PatchResult& P, bool plastic, const RcfOptions&
 // has creep forces but this point's contact kept no traction; nothing without creep forces.
 void append_traction_cells(std::string& s, const GridPoint& g, bool tangential) {
   if (g.traction) {
-    s += ','; num(s, g.px / units::MPa);
-    s += ','; num(s, g.py / units::MPa);
+    cnum(s, g.px / units::MPa);
+    cnum(s, g.py / units::MPa);
     s += ','; s += g.slip ? '1' : '0';
   } else if (tangential) {
     s += ",,,";
@@ -148,10 +148,10 @@ void format_pressure(std::uint64_t idx, const CaseResult& r, bool plastic, int N
   for_each_ellipse_grid_point(r, plastic, N, tangential, [&](const GridPoint& g) {
     append_number(s, static_cast<long long>(idx));
     s += ','; append_number(s, static_cast<long long>(g.contact));
-    s += ','; num(s, g.x * units::per_mm);
-    s += ','; num(s, g.s * units::per_mm);
-    s += ','; num(s, g.p / units::MPa);
-    if (plastic) { s += ','; num(s, g.p_elastic / units::MPa); }
+    cnum(s, g.x * units::per_mm);
+    cnum(s, g.s * units::per_mm);
+    cnum(s, g.p / units::MPa);
+    if (plastic) { cnum(s, g.p_elastic / units::MPa); }
     append_traction_cells(s, g, tangential);
     s += '\n';
   });
@@ -203,21 +203,22 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     s += ','; s += status;
     s += ','; s += to_string(r.method);
     // A failed row (no solution: out_of_range, no_contact, invalid_pair) leaves every result
-    // field empty in CSV and null in JSON (docs/outputs.md); n_contacts stays 0.
-    auto rnum = [&](std::string& o, double v) { if (!failed) num(o, v); };
+    // field empty in CSV and null in JSON (docs/outputs.md); n_contacts stays 0. rnum and pnum
+    // write the cell with its leading separator.
+    auto rnum = [&](std::string& o, double v) { if (!failed) cnum(o, v); else o += ','; };
     // A grid method's not_converged row has no peak pressure or area (NaN: grid_checks.hpp,
     // withhold_unconverged_pressures): empty as well, never "nan".
-    auto pnum = [&](std::string& o, double v) { if (!failed && std::isfinite(v)) num(o, v); };
-    s += ','; rnum(s, r.dz * units::per_mm);
-    s += ','; rnum(s, r.approach * units::per_mm);
+    auto pnum = [&](std::string& o, double v) { if (!failed && std::isfinite(v)) cnum(o, v); else o += ','; };
+    rnum(s, r.dz * units::per_mm);
+    rnum(s, r.approach * units::per_mm);
     s += ','; if (!failed) append_number(s, static_cast<long long>(r.iterations));
-    s += ','; rnum(s, r.residual);
+    rnum(s, r.residual);
     s += ','; append_number(s, static_cast<long long>(r.n_contacts));
-    s += ','; rnum(s, r.Fz / units::kN);
-    s += ','; rnum(s, r.Fy / units::kN);
-    s += ','; pnum(s, y_over_q(r));
-    s += ','; pnum(s, r.pmax / units::MPa);
-    s += ','; pnum(s, r.area * units::per_mm2);
+    rnum(s, r.Fz / units::kN);
+    rnum(s, r.Fy / units::kN);
+    pnum(s, y_over_q(r));
+    pnum(s, r.pmax / units::MPa);
+    pnum(s, r.area * units::per_mm2);
     s += ','; if (!failed) num_repeated(s, gamma_main);
     s += ','; if (!failed) num_repeated(s, r_roll_main);
     s += ','; if (!failed) s += any_plastic ? '1' : '0';
@@ -227,7 +228,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     // The smoothing's uncertainty band (profiles.md §7): empty where not computed.
     for (double v : {r.pmax_half_L / units::MPa, r.pmax_double_L / units::MPa, r.area_half_L * units::per_mm2,
                      r.area_double_L * units::per_mm2}) {
-      s += ','; pnum(s, v);
+      pnum(s, v);
     }
     if (rcf.enabled()) {
       CsvSink k{s};
@@ -245,17 +246,17 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       e += ','; num_repeated(e, cp.tY_mm);
       e += ','; num_repeated(e, cp.Q_kN);
       e += ','; append_number(e, static_cast<long long>(L.ellipse));
-      for (const Col& c : kEllipseCols) { e += ','; num(e, c.get(L)); }
+      for (const Col& c : kEllipseCols) { cnum(e, c.get(L)); }
       if (plastic) {
         e += ','; e += L.s.plastic ? "1" : "0";
-        e += ','; num(e, h_y_mm(L));
-        for (std::size_t k = 1; k < std::size(kPlasticCols); ++k) { e += ','; num(e, kPlasticCols[k].get(L)); }
+        cnum(e, h_y_mm(L));
+        for (std::size_t k = 1; k < std::size(kPlasticCols); ++k) { cnum(e, kPlasticCols[k].get(L)); }
       }
       e += ','; e += L.validity.valid ? "1" : "0";
-      for (std::size_t k = 1; k < std::size(kTailCols); ++k) { e += ','; num(e, kTailCols[k].get(L)); }
+      for (std::size_t k = 1; k < std::size(kTailCols); ++k) { cnum(e, kTailCols[k].get(L)); }
       if (plastic)
-        for (const Col& c : kPlasticTailCols) { e += ','; num(e, c.get(L)); }
-      if (!plastic) { e += ','; num(e, kAreaCol.get(L)); }
+        for (const Col& c : kPlasticTailCols) { cnum(e, c.get(L)); }
+      if (!plastic) { cnum(e, kAreaCol.get(L)); }
       if (rcf.enabled()) {
         CsvSink k{e};
         rcf_fields(k, rcf, L.s.N, L.s.a_el, L.s.b_el, L.t, nullptr, ellipse_cells(r, L));  // the elastic Hertz ellipse of N
@@ -351,8 +352,8 @@ void format_patches(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
   s.clear();
   for (const PatchResult& P : r.patches) {
     append_number(s, static_cast<long long>(idx));
-    s += ','; num(s, cp.tY_mm);
-    s += ','; num(s, cp.Q_kN);
+    cnum(s, cp.tY_mm);
+    cnum(s, cp.Q_kN);
     CsvSink k{s};
     patch_fields(k, P, plastic, rcf, tangential);
     s += '\n';
@@ -364,10 +365,10 @@ void format_patch_pressure(std::uint64_t idx, const CaseResult& r, std::string& 
   for_each_patch_grid_point(r, tangential, [&](const GridPoint& g) {
     append_number(s, static_cast<long long>(idx));
     s += ','; append_number(s, static_cast<long long>(g.contact));
-    s += ','; num(s, g.x * units::per_mm);
-    s += ','; num(s, g.s * units::per_mm);
-    s += ','; num(s, g.y_rail * units::per_mm);
-    s += ','; num(s, g.p / units::MPa);
+    cnum(s, g.x * units::per_mm);
+    cnum(s, g.s * units::per_mm);
+    cnum(s, g.y_rail * units::per_mm);
+    cnum(s, g.p / units::MPa);
     append_traction_cells(s, g, tangential);
     s += '\n';
   });
@@ -378,14 +379,14 @@ void format_strips(std::uint64_t idx, const CasePoint& cp, const CaseResult& r, 
   for (const PatchResult& P : r.patches)
     for (const StripOut& st : P.strips) {
       append_number(s, static_cast<long long>(idx));
-      s += ','; num(s, cp.tY_mm);
-      s += ','; num(s, cp.Q_kN);
+      cnum(s, cp.tY_mm);
+      cnum(s, cp.Q_kN);
       s += ','; append_number(s, static_cast<long long>(P.patch));
-      s += ','; num(s, st.s * units::per_mm);
-      s += ','; num(s, st.y_r * units::per_mm);
-      s += ','; num(s, st.c * units::per_mm);
-      s += ','; num(s, st.a * units::per_mm);
-      s += ','; num(s, st.q / units::MPa);
+      cnum(s, st.s * units::per_mm);
+      cnum(s, st.y_r * units::per_mm);
+      cnum(s, st.c * units::per_mm);
+      cnum(s, st.a * units::per_mm);
+      cnum(s, st.q / units::MPa);
       s += ','; s += st.plastic ? '1' : '0';
       s += '\n';
     }

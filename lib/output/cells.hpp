@@ -175,6 +175,14 @@ inline void num(std::string& s, double v) {
   // (pointer, length): the iterator-range append goes through basic_string::_M_replace.
   s.append(buf, static_cast<std::size_t>(general_digits(buf, v, d) - buf));
 }
+/// ',' then num(s, v), one append (a table's separators are most of its calls into the string).
+inline void cnum(std::string& s, double v) {
+  const int d = digits();
+  if (d <= 0) { s += ','; append_number(s, v); return; }
+  char buf[65];
+  buf[0] = ',';
+  s.append(buf, static_cast<std::size_t>(general_digits(buf + 1, v, d) - buf));
+}
 /// num() for values that repeat over consecutive rows (a sweep's t_Y and Q, an ellipse's geometry,
 /// the same for every load at one t_Y): a small per-thread cache of the formatted text, keyed by
 /// the bits of v and the digits, so the bytes are exactly num()'s.

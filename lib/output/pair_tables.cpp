@@ -118,8 +118,8 @@ void write_profiles_csv(const PairGeometry& pg, const std::string& path) {
     const Profile* p = prof[k];
     for (std::size_t i = 0; i < p->size(); ++i) {
       s += to_string(p->kind);
-      s += ','; num(s, p->y[i] * units::per_mm);
-      s += ','; num(s, p->z[i] * units::per_mm);
+      cnum(s, p->y[i] * units::per_mm);
+      cnum(s, p->z[i] * units::per_mm);
       s += ',';
       if (gap_curve[k] && gap_curve[k]->contains(p->y[i])) num(s, gap_curve[k]->z(p->y[i]) * units::per_mm);
       s += '\n';
@@ -136,14 +136,14 @@ void write_caf_csv(const ContactGeometry& G, const std::string& path) {
   for (std::size_t k = 0; k < G.tY.size(); ++k) {
     const CandidateGeom& c = G.main_at(k);
     num(s, grid_mm(G.tY[k]));
-    s += ','; num(s, c.y_r * units::per_mm);
-    s += ','; num(s, c.y_w * units::per_mm);
-    s += ','; num(s, c.gamma / units::deg);
-    s += ','; num(s, radius_mm(c.k_rxx));
-    s += ','; num(s, radius_mm(c.k_wxx));
-    s += ','; num(s, c.R_wyy() * units::per_mm);
-    s += ','; num(s, c.r_roll * units::per_mm);
-    s += ','; num(s, -G.z_contact[k] * units::per_mm);
+    cnum(s, c.y_r * units::per_mm);
+    cnum(s, c.y_w * units::per_mm);
+    cnum(s, c.gamma / units::deg);
+    cnum(s, radius_mm(c.k_rxx));
+    cnum(s, radius_mm(c.k_wxx));
+    cnum(s, c.R_wyy() * units::per_mm);
+    cnum(s, c.r_roll * units::per_mm);
+    cnum(s, -G.z_contact[k] * units::per_mm);
     s += ','; append_number(s, static_cast<long long>(G.main_strip[k]));
     s += ','; append_number(s, static_cast<long long>(G.main_ellipse[k] + 1));
     s += '\n';
