@@ -414,6 +414,10 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   std::uint64_t fail_case = UINT64_MAX;
   std::string fail_what;
   std::vector<Formatted> scratch(nt);
+  // Each worker's result and grid memory, reused case after case (solve_contact's workspace form:
+  // the same bytes; no allocation per case once their vectors have grown).
+  std::vector<CaseResult> results(nt);
+  std::vector<GridWorkspace> grid_ws(nt);
   Pool pool(nt);
   // --threads 1: everything on this thread, no writer thread; otherwise a writer overlaps.
   std::unique_ptr<Writer> writer = nt > 1 ? std::make_unique<Writer>(out) : nullptr;
@@ -433,6 +437,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
     const std::size_t slices = (m + slice - 1) / slice;
     const std::function<void(unsigned)> work = [&](unsigned t) {
       Formatted& f = scratch[t];
+      CaseResult& r = results[t];
       for (std::size_t k; (k = next_slice.fetch_add(1)) < slices;) {
       Block& B = S.blocks[k];
       B.clear();
@@ -442,7 +447,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
         try {
           if (g_case_hook) g_case_hook(c0 + i);
           const bool grid_case = np && opt.pressure_cases.contains(c0 + i);
-          CaseResult r = solve_contact(G, cf.material, cp.tY, cp.Q, grid_case ? mo_grid : mo);
+          solve_contact(G, cf.material, cp.tY, cp.Q, grid_case ? mo_grid : mo, r, &grid_ws[t]);
           // The band compares like with like: solved again by the method that solved the row
           // (for `auto`, the L/2 surface must not hand a strip row back to the ellipses), and not
           // for a row `auto` kept multi-Hertzian (its tables are on the window fit, not on the
