@@ -77,39 +77,19 @@ WheelRailGap::WheelRailGap(const ContactGeometry& G, double tY, double y_near, d
   // The same sample points as the whole-profile search, only those near y_near.
   const double h = (y1_ - y0_) / n;
   const int c = static_cast<int>(std::lround((std::clamp(y_near, y0_, y1_) - y0_) / h));
-  find_minimum(std::max(0, c - kLocalSamples), std::min(n, c + kLocalSamples), n, c);
+  find_minimum(std::max(0, c - kLocalSamples), std::min(n, c + kLocalSamples), n);
 }
 
-void WheelRailGap::find_minimum(int i0, int i1, int n, int c) {
+void WheelRailGap::find_minimum(int i0, int i1, int n) {
   // Minimum of the raw gap: sampled on y0 + i h, i = i0 … i1, then refined by a parabola through
   // the best sample.
   const double h = (y1_ - y0_) / n;
   auto raw = [&](double y) { return W_->z(y - shift_) - R_->z(y); };
   int best = i0;
   double gb = std::numeric_limits<double>::infinity();
-  if (c < 0) {
-    for (int i = i0; i <= i1; ++i) {
-      const double v = raw(y0_ + h * i);
-      if (v < gb) { gb = v; best = i; }
-    }
-  } else {
-    // Downhill from sample c, within i0 … i1: the samples' minimum where g is unimodal there (a
-    // handful of evaluations for the 41 samples), else the local minimum next to y_near.
-    best = c;
-    gb = raw(y0_ + h * c);
-    int dir = 0;
-    for (int d : {1, -1}) {
-      const int i = c + d;
-      if (i < i0 || i > i1) continue;
-      const double v = raw(y0_ + h * i);
-      if (v < gb) { gb = v; best = i; dir = d; break; }
-    }
-    for (int i = best + dir; dir != 0 && i >= i0 && i <= i1; i += dir) {
-      const double v = raw(y0_ + h * i);
-      if (!(v < gb)) break;
-      gb = v;
-      best = i;
-    }
+  for (int i = i0; i <= i1; ++i) {
+    const double v = raw(y0_ + h * i);
+    if (v < gb) { gb = v; best = i; }
   }
   y_contact_ = y0_ + h * best;
   if (best > 0 && best < n) {

@@ -21,14 +21,11 @@ class WheelRailGap {
   WheelRailGap(const ContactGeometry& G, double tY);
   /// The same with the first contact known to lie near rail y `y_near` [m], a solved case's
   /// candidate of least gap (NaN: not known, the whole profile is searched as above): the minimum
-  /// of the gap on the same samples is walked to downhill from y_near's sample, at most
-  /// kLocalSamples either side, instead of scanning the whole profile (about 10,000 samples; 4–8
-  /// evaluations where 41 scanned the window). Near the geometry's main contact that is the
-  /// global minimum, or a local one next to it where a joint of a profile's pieces steps the gap
-  /// (0.17 µm above it at most on the Manchester pair, t_Y every 0.01 mm; test_rolled_gap.cpp);
-  /// near another candidate a local one. A local minimum lifts the wheel by the difference of the
-  /// two minima, a constant: second differences of the gap, what gap_kink measures, move by that
-  /// times the gap's curvature h², far below its limit.
+  /// of the gap is refined on the same samples, only those within kLocalSamples of y_near,
+  /// instead of across the whole profile (about 10,000 samples). Near the geometry's main contact
+  /// that is the global minimum; elsewhere a local one, which lifts the wheel by the difference of
+  /// the two minima (a constant: second differences of the gap, what gap_kink measures, move by
+  /// that times the gap's curvature h², far below its limit).
   WheelRailGap(const ContactGeometry& G, double tY, double y_near);
   /// The same with the wheel rolled by δ = `roll` [rad] against the rail (method.md §3.8, eq.
   /// 3.8.1; positive raising the field side): the wheel profile rotated about its origin
@@ -77,8 +74,7 @@ class WheelRailGap {
  private:
   /// Samples each side of y_near in the second constructor: ±0.2 mm at kSampleStep.
   static constexpr int kLocalSamples = 20;
-  /// The least sample of i0 … i1 (c < 0), or the one reached downhill from sample c; refined.
-  void find_minimum(int i0, int i1, int n, int c = -1);
+  void find_minimum(int i0, int i1, int n);
   /// Rolled: the upright wheel point (y_w, returned; *z_w its height) that the roll carries to
   /// rail y's wheel point.
   double rolled_source(double y, double* z_w) const;

@@ -539,27 +539,6 @@ double ProfileCurve::node_z_span() const {
   return *hi - *lo;
 }
 
-double ProfileCurve::z(double y, double* dz) const {
-  const std::size_t m = z_.size();
-  double s = grid_pos(y);
-  if (s <= 0) { if (dz) *dz = dz_[0]; return z_[0] + dz_[0] * (y - y0_); }
-  if (s >= static_cast<double>(m - 1)) {
-    if (dz) *dz = dz_[m - 1];
-    return z_[m - 1] + dz_[m - 1] * (y - y_max());
-  }
-  const std::size_t i = static_cast<std::size_t>(s);
-  const double t = s - static_cast<double>(i);
-  const double z0 = z_[i], z1 = z_[i + 1], d0 = dz_[i] * h_, d1 = dz_[i + 1] * h_;
-  // Cubic Hermite.
-  const double t2 = t * t, t3 = t2 * t;
-  const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
-  if (dz) {
-    const double g00 = 6 * t2 - 6 * t, g10 = 3 * t2 - 4 * t + 1, g01 = -6 * t2 + 6 * t, g11 = 3 * t2 - 2 * t;
-    *dz = (g00 * z0 + g10 * d0 + g01 * z1 + g11 * d1) / h_;
-  }
-  return h00 * z0 + h10 * d0 + h01 * z1 + h11 * d1;
-}
-
 double ProfileCurve::kappa(double y) const {
   const std::size_t m = k_.size();
   double s = grid_pos(y);

@@ -192,21 +192,19 @@ TEST_CASE("rolled gap: curves kept and rebuilt in place are those built afresh, 
   }
 }
 
-// The gap near a solved case's candidate (WheelRailGap(G, t, y_near), the judge's gap), its first
-// contact found downhill from y_near's sample within ±0.2 mm, against the whole-profile search
-// (every sample of the gap's range scanned). From the main candidate's y_r (what the judge gives)
-// wherever the whole search's minimum lies within the ±0.2 mm: the same wheel lift within
-// 0.2 µm. Not always the same bits: the walk stops at the first sample whose downhill neighbour is
-// not lower, and a joint of a profile's pieces can make a local minimum a little above the deepest
-// (the Manchester pair at t_Y −5.75 mm: a 12 nm step of the gap at y −2.61 mm, 0.025 mm from its
-// minimum). The judge's corner test sees the lift as a constant added to every gap, against
-// approaches of 10–100 µm (gap.hpp). Near every candidate: a lift no smaller than the whole
-// search's (1 nm: the refinements between samples differ) and a point within the ±0.2 mm.
-// On the Manchester pair, S1002/60E1 1:40 and the worn measured pair (smoothed for contact),
-// t_Y −6 … 10 mm every 0.05 mm. Measured 2 Dec 2026: from the main candidates, lifts within
-// 0.137 µm of the whole search's (743 of 804 the same bits).
-// Break seen to fail: the walk stopped at y_near's own sample (no step downhill).
-TEST_CASE("gap near a candidate: downhill to the whole search's first contact", "[geometry][gap]") {
+// The gap near a solved case's candidate (WheelRailGap(G, t, y_near), the judge's gap): the
+// samples within ±0.2 mm of y_near, against the whole-profile search (every sample of the gap's
+// range). From the main candidate's y_r (what the judge gives), wherever the whole search's
+// minimum lies within the ±0.2 mm: the same first contact and lift, bit for bit. A walk downhill
+// from y_near's sample would not do: the joints of a profile's pieces step the gap by a few nm
+// and leave local minima up to 6 samples from the deepest (the Manchester pair at t_Y 5.58 mm:
+// 45 nm above it, 0.064 mm away; a judge's gap_kink 0.103 for 0.102 in one row of the
+// 1,000,000-case sweep). Near every candidate: a lift no smaller than the whole search's (1 nm:
+// the refinements between samples differ) and a point within the ±0.2 mm. On the Manchester
+// pair, S1002/60E1 1:40 and the worn measured pair (smoothed for contact), t_Y −6 … 10 mm every
+// 0.05 mm.
+// Break seen to fail: the window searched by a walk downhill from y_near's sample (61 rows).
+TEST_CASE("gap near a candidate: the whole search's first contact, bit for bit", "[geometry][gap]") {
   mh::GeometryOptions o;
   mh::Profile rail = mh::testing::read_test_profile("avg_HR.BAN", mh::ProfileKind::Rail);
   mh::rotate_towards_track_centre(rail, std::atan(1.0 / 40));
@@ -215,8 +213,7 @@ TEST_CASE("gap near a candidate: downhill to the whole search's first contact", 
   const mh::ContactGeometry std_pair = mh::build_geometry(
       mh::make_standard_profile("S1002"), mh::make_standard_profile("60E1", mh::Inclination::In40), mh::TrackSetup{}, o);
   const mh::ContactGeometry& manchester = mh::testing::manchester_geometry();
-  int same = 0, mains = 0;
-  double worst = 0;
+  int mains = 0;
   for (const mh::ContactGeometry* G : {&manchester, &std_pair, &worn}) {
     const char* name = G == &worn ? "worn" : G == &manchester ? "Manchester" : "S1002/60E1";
     std::vector<mh::CandidateGeom> cand(G->n_ellipses());
@@ -233,14 +230,11 @@ TEST_CASE("gap near a candidate: downhill to the whole search's first contact", 
         CHECK(near.wheel_lift() >= full.wheel_lift() - 1e-9);
         CHECK(std::fabs(near.y_first_contact() - c.y_r) <= 0.22 * mm);
         if (i != main || std::fabs(c.y_r - full.y_first_contact()) > 0.19 * mm) continue;
-        CHECK(near.wheel_lift() - full.wheel_lift() <= 0.2 * um);
-        worst = std::max(worst, near.wheel_lift() - full.wheel_lift());
-        same += near.wheel_lift() == full.wheel_lift();
+        CHECK(near.wheel_lift() == full.wheel_lift());
+        CHECK(near.y_first_contact() == full.y_first_contact());
         ++mains;
       }
     }
   }
-  WARN("gap near the main candidate: lifts within " << worst / um << " um of the whole search's, the same bits in "
-                                                     << same << " of " << mains);
   CHECK(mains > 500);
 }
