@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "output/cells.hpp"
+#include "output/json_record.hpp"
 
 namespace mh {
 
@@ -30,14 +31,15 @@ struct HeaderSink {
   void text(const char* n, const char*) { s += ','; s += n; }
 };
 struct JsonSink {
-  nlohmann::ordered_json& j;
-  static nlohmann::ordered_json value(double v) {
-    return std::isfinite(v) ? nlohmann::ordered_json(cells::rounded(v)) : nlohmann::ordered_json(nullptr);
+  JsonRecord& j;
+  void number(const char* n, double v) { j.key(n); j.table_number(v); }
+  void optional(const char* n, double v) { j.key(n); j.table_number(v); }
+  void integer(const char* n, long long i) { j.key(n); j.integer(i); }
+  void text(const char* n, const char* t) {
+    j.key(n);
+    if (t) j.string(t);
+    else j.null();
   }
-  void number(const char* n, double v) { j[n] = value(v); }
-  void optional(const char* n, double v) { j[n] = value(v); }
-  void integer(const char* n, long long i) { j[n] = i; }
-  void text(const char* n, const char* t) { j[n] = t ? nlohmann::ordered_json(t) : nlohmann::ordered_json(nullptr); }
 };
 
 

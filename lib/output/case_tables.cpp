@@ -270,35 +270,46 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     }
   }
   if (want_json) {
-    // The record, built as JSON (ordered keys, as in the CSV) and dumped compact on one line.
-    auto jv = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(rounded(v)) : nlohmann::ordered_json(nullptr); };
-    auto rv = [&](double v) { return failed ? nlohmann::ordered_json(nullptr) : jv(v); };
-    nlohmann::ordered_json j;
-    j["case"] = idx;
-    j["tY_mm"] = jv(cp.tY_mm);
-    j["Q_kN"] = jv(cp.Q_kN);
-    j["status"] = status;
-    j["method"] = to_string(r.method);
-    j["dz_virtual_mm"] = rv(r.dz * units::per_mm);
-    j["approach_mm"] = rv(r.approach * units::per_mm);
-    j["iterations"] = failed ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.iterations);
-    j["residual"] = rv(r.residual);
-    j["n_contacts"] = r.n_contacts;
-    j["Fz_kN"] = rv(r.Fz / units::kN);
-    j["Fy_kN"] = rv(r.Fy / units::kN);
-    j["Y_over_Q"] = rv(y_over_q(r));
-    j["pmax_MPa"] = rv(r.pmax / units::MPa);
-    j["area_mm2"] = rv(r.area * units::per_mm2);
-    j["gamma_main_deg"] = rv(gamma_main);
-    j["r_roll_main_mm"] = rv(r_roll_main);
-    j["plastic"] = failed ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(any_plastic);
-    j["n_warnings"] = r.warnings.size();
-    j["warnings"] = warning_texts(r.warnings);
-    j["message"] = r.message;
-    j["pmax_half_L_MPa"] = rv(r.pmax_half_L / units::MPa);
-    j["pmax_double_L_MPa"] = rv(r.pmax_double_L / units::MPa);
-    j["area_half_L_mm2"] = rv(r.area_half_L * units::per_mm2);
-    j["area_double_L_mm2"] = rv(r.area_double_L * units::per_mm2);
+    // The record as JSON (ordered keys, as in the CSV), compact on one line: written as
+    // nlohmann's dump() of these values would write it (json_record.hpp).
+    std::string& js = f.json;
+    js.clear();
+    JsonRecord j{js};
+    auto jv = [&](const char* k, double v) { j.key(k); j.table_number(v); };
+    auto rv = [&](const char* k, double v) { j.key(k); if (failed) j.null(); else j.table_number(v); };
+    j.begin_object();
+    j.key("case"); j.unsigned_integer(idx);
+    jv("tY_mm", cp.tY_mm);
+    jv("Q_kN", cp.Q_kN);
+    j.key("status"); j.string(status);
+    j.key("method"); j.string(to_string(r.method));
+    rv("dz_virtual_mm", r.dz * units::per_mm);
+    rv("approach_mm", r.approach * units::per_mm);
+    j.key("iterations"); if (failed) j.null(); else j.integer(r.iterations);
+    rv("residual", r.residual);
+    j.key("n_contacts"); j.integer(r.n_contacts);
+    rv("Fz_kN", r.Fz / units::kN);
+    rv("Fy_kN", r.Fy / units::kN);
+    rv("Y_over_Q", y_over_q(r));
+    rv("pmax_MPa", r.pmax / units::MPa);
+    rv("area_mm2", r.area * units::per_mm2);
+    rv("gamma_main_deg", gamma_main);
+    rv("r_roll_main_mm", r_roll_main);
+    j.key("plastic"); if (failed) j.null(); else j.boolean(any_plastic);
+    j.key("n_warnings"); j.unsigned_integer(r.warnings.size());
+    j.key("warnings");
+    j.begin_array();
+    for (const Warning& w : r.warnings) {
+      warn.clear();
+      append_warning_text(warn, w);
+      j.string(warn);
+    }
+    j.end_array();
+    j.key("message"); j.string(r.message);
+    rv("pmax_half_L_MPa", r.pmax_half_L / units::MPa);
+    rv("pmax_double_L_MPa", r.pmax_double_L / units::MPa);
+    rv("area_half_L_mm2", r.area_half_L * units::per_mm2);
+    rv("area_double_L_mm2", r.area_double_L * units::per_mm2);
     if (rcf.enabled()) {
       JsonSink k{j};
       rcf_case_fields(k, rcf, r, failed);
@@ -307,43 +318,45 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
       JsonSink k{j};
       tangential_case_fields(k, r, failed);
     }
-    nlohmann::ordered_json el = nlohmann::ordered_json::array();
+    j.key("ellipses");
+    j.begin_array();
     for (const LoadedEllipse& L : r.loaded) {
-      nlohmann::ordered_json e;
-      e["ellipse"] = L.ellipse;
-      for (const Col& c : kEllipseCols) e[c.name] = jv(c.get(L));
+      j.begin_object();
+      j.key("ellipse"); j.integer(L.ellipse);
+      for (const Col& c : kEllipseCols) jv(c.name, c.get(L));
       if (plastic) {
-        e["plastic"] = L.s.plastic;
-        e["h_y_mm"] = jv(h_y_mm(L));
-        for (std::size_t k = 1; k < std::size(kPlasticCols); ++k) e[kPlasticCols[k].name] = jv(kPlasticCols[k].get(L));
+        j.key("plastic"); j.boolean(L.s.plastic);
+        jv("h_y_mm", h_y_mm(L));
+        for (std::size_t k = 1; k < std::size(kPlasticCols); ++k) jv(kPlasticCols[k].name, kPlasticCols[k].get(L));
       }
-      e["hertz_valid"] = L.validity.valid;
-      for (std::size_t k = 1; k < std::size(kTailCols); ++k) e[kTailCols[k].name] = jv(kTailCols[k].get(L));
+      j.key("hertz_valid"); j.boolean(L.validity.valid);
+      for (std::size_t k = 1; k < std::size(kTailCols); ++k) jv(kTailCols[k].name, kTailCols[k].get(L));
       if (plastic)
-        for (const Col& c : kPlasticTailCols) e[c.name] = jv(c.get(L));
-      if (!plastic) e[kAreaCol.name] = jv(kAreaCol.get(L));
+        for (const Col& c : kPlasticTailCols) jv(c.name, c.get(L));
+      if (!plastic) jv(kAreaCol.name, kAreaCol.get(L));
       if (rcf.enabled()) {
-        JsonSink k{e};
+        JsonSink k{j};
         rcf_fields(k, rcf, L.s.N, L.s.a_el, L.s.b_el, L.t, nullptr, ellipse_cells(r, L));  // the elastic Hertz ellipse of N
       }
       if (tangential) {
-        JsonSink k{e};
+        JsonSink k{j};
         tangential_fields(k, L.t);
         damage_fields(k, L.damage);
       }
-      el.push_back(std::move(e));
+      j.end_object();
     }
-    j["ellipses"] = std::move(el);
+    j.end_array();
     // The grid methods' patches (the rows of patches.csv; empty for the multi-Hertzian method).
-    nlohmann::ordered_json pa = nlohmann::ordered_json::array();
+    j.key("patches");
+    j.begin_array();
     for (const PatchResult& P : r.patches) {
-      nlohmann::ordered_json e;
-      JsonSink k{e};
+      j.begin_object();
+      JsonSink k{j};
       patch_fields(k, P, plastic, rcf, tangential);
-      pa.push_back(std::move(e));
+      j.end_object();
     }
-    j["patches"] = std::move(pa);
-    f.json = j.dump();
+    j.end_array();
+    j.end_object();
   }
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // A JSON document written as it is produced: an object whose members are nlohmann values, and
 // whose last member is an array of records streamed one by one (the cases of a sweep of millions
-// need not be held in memory). Every value is written by nlohmann::json, never spliced as text.
+// need not be held in memory). The members are written by nlohmann::json, the records by it or
+// by a typed writer that writes its bytes (json_record.hpp); nothing is spliced as free text.
 #include <cstdint>
 #include <ostream>
 #include <string>
