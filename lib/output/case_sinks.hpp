@@ -18,7 +18,7 @@ namespace mh {
 // integer(name, i) and text(name, t) (t null: empty in CSV, null in JSON).
 struct CsvSink {
   std::string& s;
-  void number(const char*, double v) { s += ','; cells::num(s, v); }
+  void number(const char*, double v) { cells::cnum(s, v); }
   void optional(const char*, double v) { s += ','; if (std::isfinite(v)) cells::num(s, v); }
   void integer(const char*, long long i) { s += ','; append_number(s, i); }
   void text(const char*, const char* t) { s += ','; if (t) s += t; }

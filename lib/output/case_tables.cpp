@@ -278,7 +278,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     auto jv = [&](const char* k, double v) { j.key(k); j.table_number(v); };
     auto rv = [&](const char* k, double v) { j.key(k); if (failed) j.null(); else j.table_number(v); };
     j.begin_object();
-    j.key("case"); j.unsigned_integer(idx);
+    j.key("case"); j.integer(static_cast<long long>(idx));
     jv("tY_mm", cp.tY_mm);
     jv("Q_kN", cp.Q_kN);
     j.key("status"); j.string(status);
@@ -296,7 +296,7 @@ void format_case(std::uint64_t idx, const CasePoint& cp, const CaseResult& r,
     rv("gamma_main_deg", gamma_main);
     rv("r_roll_main_mm", r_roll_main);
     j.key("plastic"); if (failed) j.null(); else j.boolean(any_plastic);
-    j.key("n_warnings"); j.unsigned_integer(r.warnings.size());
+    j.key("n_warnings"); j.integer(static_cast<long long>(r.warnings.size()));
     j.key("warnings");
     j.begin_array();
     for (const Warning& w : r.warnings) {

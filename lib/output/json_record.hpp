@@ -7,7 +7,6 @@
 // the ordered_json tree and dumping it cost about ten times as much per case (docs/performance.md).
 // Internal to lib/output. tests/unit/output/test_json_record.cpp compares it with dump().
 #include <cmath>
-#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -57,15 +56,9 @@ class JsonRecord {
   }
   /// A value of the tables: rounded to the tables' digits first (cells::rounded), null when not finite.
   void table_number(double v) { number(std::isfinite(v) ? cells::rounded(v) : v); }
+  /// An integer (the case numbers and counts too: below 2^63, the same digits as dump() of an
+  /// unsigned).
   void integer(long long i) { value_start(); append_number(s_, i); }
-  void unsigned_integer(std::uint64_t u) {
-    value_start();
-    char buf[24];
-    char* e = buf + sizeof buf;
-    char* p = e;
-    do { *--p = static_cast<char>('0' + u % 10); u /= 10; } while (u);
-    s_.append(p, static_cast<std::size_t>(e - p));
-  }
   void boolean(bool b) { value_start(); s_ += b ? "true" : "false"; }
   void null() { value_start(); s_ += "null"; }
   void string(std::string_view t) { value_start(); string_body(t); }

@@ -77,11 +77,12 @@ TEST_CASE("JsonRecord writes what nlohmann's dump() writes", "[output][json]") {
       j.integer(i);
       CHECK(s == ojson(i).dump());
     }
+    // Case numbers and counts are unsigned in the tree dump() wrote; written as integers.
     for (std::uint64_t u : {std::uint64_t{0}, std::uint64_t{9}, std::uint64_t{10}, std::uint64_t{1000000},
-                            std::numeric_limits<std::uint64_t>::max()}) {
+                            std::uint64_t{std::numeric_limits<long long>::max()}}) {
       std::string s;
       mh::JsonRecord j{s};
-      j.unsigned_integer(u);
+      j.integer(static_cast<long long>(u));
       CHECK(s == ojson(u).dump());
     }
     std::string s;
@@ -107,7 +108,7 @@ TEST_CASE("JsonRecord writes what nlohmann's dump() writes", "[output][json]") {
     std::string s;
     mh::JsonRecord j{s};
     j.begin_object();
-    j.key("case"); j.unsigned_integer(42); ref["case"] = std::uint64_t{42};
+    j.key("case"); j.integer(42); ref["case"] = std::uint64_t{42};
     j.key("tY_mm"); j.number(-6.0); ref["tY_mm"] = -6.0;
     j.key("status"); j.string("ok"); ref["status"] = "ok";
     j.key("iterations"); j.null(); ref["iterations"] = nullptr;
@@ -127,6 +128,8 @@ TEST_CASE("JsonRecord writes what nlohmann's dump() writes", "[output][json]") {
       ref["ellipses"].push_back(o);
     }
     j.end_array();
+    const std::string long_key(100, 'k');  // longer than key()'s buffer
+    j.key(long_key.c_str()); j.number(1.5); ref[long_key] = 1.5;
     j.key("patches"); j.begin_array(); j.end_array(); ref["patches"] = ojson::array();
     j.end_object();
     CHECK(s == ref.dump());
