@@ -38,6 +38,21 @@ for mode in fresh rerun; do
   echo "  all runs [s], one thread: $(cut -d' ' -f1 "$tmp/t1" | sort -g | tr '\n' ' ')"
   echo "  all runs [s], all cores:  $(cut -d' ' -f1 "$tmp/tn" | sort -g | tr '\n' ' ')"
 done
+# What the machine's cores give, the ceiling of the speed-up above: as many one-thread runs at
+# once as there are cores (each into its own new directory), against one alone, alternated,
+# 3 rounds; their throughput relative to one run alone (the cores' count on an ideal machine).
+nc=$(nproc); : > "$tmp/alone"; : > "$tmp/many"
+for r in 1 2 3; do
+  once 1 fresh "$tmp/alone"
+  for k in $(seq 1 "$nc"); do rm -rf "$tmp/out$k"; done; sync; sleep 0.2
+  s=$(date +%s.%N)
+  for k in $(seq 1 "$nc"); do ./build/mhcontact run "$tmp/big.json" -o "$tmp/out$k" --format csv --threads 1 -q & done
+  wait
+  echo "$(date +%s.%N) - $s" | bc -l >> "$tmp/many"
+  for k in $(seq 1 "$nc"); do rm -rf "$tmp/out$k"; done
+done
+ta=$(cut -d' ' -f1 "$tmp/alone" | sort -g | sed -n 2p); tm=$(sort -g "$tmp/many" | sed -n 2p)
+awk -v a="$ta" -v m="$tm" -v c="$nc" 'BEGIN{printf "%d independent one-thread runs at once: %.2f s wall against %.2f s for one alone (medians of 3): throughput %.2f times one run (the ceiling of the speed-up)\n", c, m, a, c * a / m}'
 # REF_BUILD=DIR (a build directory of another commit, e.g. bench_judge.sh's build-ref): the same
 # sweep by its mhcontact, alternated with this build's, one thread, 3 runs each, CPU time medians
 # and their ratio (the machine is shared: CPU time, not wall time, compares two builds).
