@@ -570,8 +570,10 @@ typedef struct mhc_wheelset_pose {
   double lateral_velocity_m_per_s;
   double yaw_rate_rad_per_s;
   double pitch_rate_rad_per_s;   /**< NaN: V / r0 of each wheel */
-  int32_t derivatives;           /**< 1: fill the dF_* fields (central differences, 4 or 6 more
-                                      solves per wheel); 0: NaN */
+  int32_t derivatives;           /**< 1: fill the dF_* fields (in y and roll central differences;
+                                      in the vertical input analytic where the method gives it,
+                                      mhc_wheelset_wheel.dF_dvertical_analytic, else central
+                                      differences: 2 to 6 more solves per wheel); 0: NaN */
   int32_t reserved;
 } mhc_wheelset_pose;
 
@@ -601,7 +603,9 @@ typedef struct mhc_wheelset_wheel {
   int32_t n_warnings;
   int32_t n_contacts;     /**< loaded contacts (at most MHC_MAX_CONTACTS filled) */
   int32_t plastic;        /**< 1 when a contact is plastic */
-  int32_t reserved;
+  int32_t dF_dvertical_analytic; /**< 1: dF_dvertical analytic (multi-Hertzian ellipses: dN/dh0 and
+                                      FASTSIM's load slope); 0: central differences, or not asked
+                                      (a reserved 0 in libraries before 2 Dec 2026) */
   double tY_m;            /**< the pair's t_Y */
   double h_m;             /**< axle height at which this wheel first touches (NaN off the table) */
   double dz_m;            /**< its vertical virtual penetration (eq. 11) */

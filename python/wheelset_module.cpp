@@ -145,6 +145,7 @@ void bind_wheelset(py::module_& m, void (*check)(mhc_error)) {
              py::array_t<int8_t> status(n), left_status(n), right_status(n);
              py::array_t<uint32_t> ws_warn(n), left_warn(n), right_warn(n);
              py::array_t<int32_t> left_nc(n), right_nc(n);
+             py::array_t<bool> analytic(n);  // dF_dvertical analytic on both wheels
              mhc_error e = MHC_OK;
              {
                py::gil_scoped_release nogil;  // the steps run without the GIL
@@ -184,6 +185,7 @@ void bind_wheelset(py::module_& m, void (*check)(mhc_error)) {
                    right_warn.mutable_data()[k] = r.wheel[1].warnings;
                    left_nc.mutable_data()[k] = r.wheel[0].n_contacts;
                    right_nc.mutable_data()[k] = r.wheel[1].n_contacts;
+                   analytic.mutable_data()[k] = r.wheel[0].dF_dvertical_analytic && r.wheel[1].dF_dvertical_analytic;
                  }
                }
              }
@@ -196,6 +198,7 @@ void bind_wheelset(py::module_& m, void (*check)(mhc_error)) {
              d["right_warnings"] = right_warn;
              d["left_n_contacts"] = left_nc;
              d["right_n_contacts"] = right_nc;
+             d["dF_dvertical_analytic"] = analytic;
              return d;
            });
 }

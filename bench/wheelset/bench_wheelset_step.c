@@ -3,7 +3,7 @@
  * figure of docs/performance.md "The wheelset call" (printed, never asserted: the machines are
  * shared). Plain C: what a host program sees.
  * Usage: mhcontact_bench_wheelset_step [STEPS [ONLY]] (default 10000 steps, every figure)
- * ONLY = wet | many | fine | dry | upright runs that one figure (for callgrind's instruction counts:
+ * ONLY = wet | many | fine | dry | upright | deriv runs that one figure (for callgrind's instruction counts:
  * valgrind --tool=callgrind build/mhcontact_bench_wheelset_step 200 wet).
  * S1002 on 60E1 at 1:40, mu = 0.3, V = 30 m/s, Q = 50 kN per wheel; the wheelset runs a
  * sinusoid y = 6 sin(2 pi i / STEPS) mm with yaw 2 mrad sin(...), one reused workspace. The time
@@ -11,7 +11,8 @@
  * per step, with the wheelset call's defaults (FASTSIM 16 x 16, the vertical equilibrium to
  * 1e-5 Q). Then the same steps by mhc_wheelset_step_many on one thread (the Python binding's
  * path), with FASTSIM on a 32 x 32 grid (the single pair's default), without friction, and with
- * the wheels upright (roll_in_geometry 0: the roll to first order in the heights). */
+ * the wheels upright (roll_in_geometry 0: the roll to first order in the heights), and with the
+ * derivatives (deriv: the default wheelset, derivatives 1). */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdio.h>
@@ -124,6 +125,11 @@ int main(int argc, char** argv) {
     printf("  mhc_wheelset_step, the wheels upright (roll_in_geometry 0):     %.2f us\n", run(upright, poses, res, n, 0));
   if (!*only || !strcmp(only, "many"))
     printf("  steps ok: %zu of %zu (the others outside_validity: flange contact near a jump)\n", ok, n);
+  if (!*only || !strcmp(only, "deriv")) {
+    for (i = 0; i < n; ++i) poses[i].derivatives = 1;
+    printf("  mhc_wheelset_step with the derivatives (dF/dy, dF/dQ):            %.2f us\n", run(wet, poses, res, n, 0));
+    for (i = 0; i < n; ++i) poses[i].derivatives = 0;
+  }
   mhc_wheelset_free(wet);
   mhc_wheelset_free(dry);
   mhc_wheelset_free(fine);

@@ -72,7 +72,7 @@ void fill_wheel(const mh::WheelResult& w, bool plastic, mhc_result& scratch, mhc
   o.n_warnings = scratch.n_warnings;
   o.n_contacts = static_cast<int32_t>(w.contacts.size());
   o.plastic = scratch.plastic;
-  o.reserved = 0;
+  o.dF_dvertical_analytic = w.dF_dvertical_analytic ? 1 : 0;
   o.tY_m = w.tY;
   o.h_m = w.h;
   o.dz_m = w.r.dz;

@@ -167,9 +167,13 @@ struct WheelResult {
   Wrench on_wheelset;  ///< the wheel's contacts summed
   /// Partial derivatives of on_wheelset.F [N/m, N/rad, N/m or N/N] in y, φ and the vertical input,
   /// the other inputs held (the roll too when it is solved): Position: Z; Loads: that wheel's own
-  /// load Q_s, and dF_droll NaN (the roll is an output). Central differences with the steps of
-  /// WheelsetStepOptions (fd_*); NaN unless asked.
+  /// load Q_s, and dF_droll NaN (the roll is an output). In y and φ central differences with the
+  /// steps of WheelsetStepOptions (fd_*); in the vertical input analytic where the method gives it
+  /// (multi-Hertzian ellipses: dN/dh0 and FASTSIM's load slope; dF_dvertical_analytic), central
+  /// differences otherwise. NaN unless asked.
   std::array<double, 3> dF_dy{NAN, NAN, NAN}, dF_droll{NAN, NAN, NAN}, dF_dvertical{NAN, NAN, NAN};
+  /// dF_dvertical analytic (true) or by central differences (false, also when not asked).
+  bool dF_dvertical_analytic = false;
 };
 
 struct WheelsetResult {
@@ -187,7 +191,11 @@ struct WheelsetResult {
 
 /// Options of a step, with their documented defaults.
 struct WheelsetStepOptions {
-  bool derivatives = false;  ///< compute the dF_d* (4 or 6 more solves of each wheel)
+  bool derivatives = false;  ///< compute the dF_d* (2 or 4 more solves of each wheel, 2 more where the vertical one is not analytic)
+  /// dF_dvertical analytic where the method gives it (multi-Hertzian ellipses, elastic where
+  /// there is friction; WheelResult::dF_dvertical_analytic says which); false: central
+  /// differences always (default true).
+  bool analytic_vertical = true;
   double fd_y = 1e-5;        ///< [m] central-difference step in y (default 0.01 mm: the tables' step)
   double fd_roll = 1e-5;     ///< [rad] in φ (default 0.01 mrad: 7.5 µm at the taping line)
   double fd_Z = 1e-6;        ///< [m] in Z (default 1 µm)

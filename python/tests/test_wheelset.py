@@ -71,7 +71,10 @@ def test_position_roll_solved_and_derivatives(wheelset):
     up = wheelset.step(3e-3, Z_m=Z + h, roll_rad=out["roll_rad"][0], V_m_per_s=30.0)
     dn = wheelset.step(3e-3, Z_m=Z - h, roll_rad=out["roll_rad"][0], V_m_per_s=30.0)
     fd = (up["F_N"][0, 2] - dn["F_N"][0, 2]) / (2 * h)
-    assert out["dF_dvertical"][0, 2] == pytest.approx(fd, rel=0.02)
+    # Analytic in Z (dN/dh0 and FASTSIM's load slope): within the differences' truncation,
+    # measured 1.5e-4 here (2 Dec 2026).
+    assert out["dF_dvertical_analytic"][0]
+    assert out["dF_dvertical"][0, 2] == pytest.approx(fd, rel=2.5e-4)
 
 
 def test_errors(wheelset):

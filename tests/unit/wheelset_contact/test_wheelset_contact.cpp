@@ -340,3 +340,97 @@ TEST_CASE("wheelset: bad input names the field, the value and the rule", "[wheel
   p.V = 0;
   CHECK_THROWS_WITH(W.step(p, {}, r, ws), Catch::Contains("pose.V = 0 m/s"));
 }
+
+TEST_CASE("wheelset: the analytic vertical derivative against central differences of the same step",
+          "[wheelset_contact][wheelset_derivatives]") {
+  // dF/dZ (position) and dF/dQ (loads) by the approach's analytic slope (vertical_slope: dN/dh0 of
+  // each ellipse and FASTSIM's load slope) against the central differences of the same solves
+  // (analytic_vertical false: ±1 µm in Z, ±1e-4 Q), on the tread, the flange root and the flange
+  // (S1002 on 60E1 1:40 rolled: y 0, 3, 6, 7.5, 8.5 mm, 60 kN), with and without friction.
+  // Measured (2 Dec 2026): at most 1.6e-4 of the largest component apart, the differences'
+  // truncation (N ∝ h0^1.5 over ±1 µm of a 20–60 µm approach); held at 2.5e-4. In the loads mode
+  // dFz/dQ is 1 where the wheel's load is balanced with its creep forces' share.
+  // Breaks seen to fail: the creep forces' load slope left out (dFx = dFs = 0); their share left
+  // out of dQ; dF/dZ without its sign.
+  double worst = 0;
+  for (const bool friction : {false, true})
+    for (const bool position : {false, true})
+      for (const double y : {0.0, 3.0, 6.0, 7.5, 8.5}) {
+        const auto& W = ws_fixture(friction);
+        mh::WheelsetWorkspace ws;
+        mh::WheelsetPose p = loads(y * mm, 60e3);
+        p.yaw = 1e-3;
+        p.lateral_velocity = 0.01;
+        mh::WheelsetResult r0;
+        W.step(p, {}, r0, ws);
+        if (position) {
+          p.vertical = mh::WheelsetVertical::Position;
+          p.Z = r0.Z;
+          p.solve_roll = false;
+          p.roll = r0.roll;
+        }
+        mh::WheelsetStepOptions o;
+        o.derivatives = true;
+        mh::WheelsetResult ra, rd;
+        W.step(p, o, ra, ws);
+        o.analytic_vertical = false;
+        W.step(p, o, rd, ws);
+        for (const auto& [a, d] : {std::pair{&ra.left, &rd.left}, std::pair{&ra.right, &rd.right}}) {
+          INFO("friction " << friction << ", position " << position << ", y " << y << " mm, side " << a->side);
+          REQUIRE(a->dF_dvertical_analytic);
+          REQUIRE_FALSE(d->dF_dvertical_analytic);
+          const double scale = std::max({std::fabs(d->dF_dvertical[0]), std::fabs(d->dF_dvertical[1]), std::fabs(d->dF_dvertical[2])});
+          for (int k = 0; k < 3; ++k) {
+            INFO("component " << k);
+            CHECK(a->dF_dvertical[k] == Approx(d->dF_dvertical[k]).margin(2.5e-4 * scale));
+            worst = std::max(worst, std::fabs(a->dF_dvertical[k] - d->dF_dvertical[k]) / scale);
+          }
+          if (!position) CHECK(a->dF_dvertical[2] == Approx(1).epsilon(1e-12));
+        }
+        for (int k = 0; k < 3; ++k) CHECK(ra.dF_dvertical[k] == ra.left.dF_dvertical[k] + ra.right.dF_dvertical[k]);
+      }
+  WARN("analytic against central differences, largest difference / largest component: " << worst);
+}
+
+TEST_CASE("wheelset: the vertical derivative of plastic ellipses: analytic without friction, differences with it",
+          "[wheelset_contact][wheelset_derivatives]") {
+  // The yield law (σ_y 350 MPa: every loaded ellipse plastic at 100 kN on S1002/60E1 1:40): dN/dh0
+  // is the law's own, so the analytic derivative holds without friction (measured within 1.7e-5
+  // of the differences, 2 Dec 2026; held at 2.5e-4 as above); with friction FASTSIM's load slope
+  // assumes Hertz's growth of the patch, which a plastic patch does not follow: differences then
+  // (applied to them it was 14 % off in dFx/dQ, loads mode, y = 0; this test fails so).
+  for (const bool friction : {false, true}) {
+    mh::WheelsetSetup s = s1002_60e1(friction);
+    s.material.yield = 350e6;
+    REQUIRE(mh::derive_plastic_law(s.material));
+    const mh::WheelsetContact W(s);
+    for (const bool position : {false, true})
+      for (const double y : {0.0, 6.0}) {
+        mh::WheelsetWorkspace ws;
+        mh::WheelsetPose p = loads(y * mm, 100e3);
+        mh::WheelsetResult r0;
+        W.step(p, {}, r0, ws);
+        if (position) {
+          p.vertical = mh::WheelsetVertical::Position;
+          p.Z = r0.Z;
+          p.solve_roll = false;
+          p.roll = r0.roll;
+        }
+        mh::WheelsetStepOptions o;
+        o.derivatives = true;
+        mh::WheelsetResult ra, rd;
+        W.step(p, o, ra, ws);
+        o.analytic_vertical = false;
+        W.step(p, o, rd, ws);
+        for (const auto& [a, d] : {std::pair{&ra.left, &rd.left}, std::pair{&ra.right, &rd.right}}) {
+          INFO("friction " << friction << ", position " << position << ", y " << y << " mm, side " << a->side);
+          bool plastic = false;
+          for (const auto& L : a->r.loaded) plastic = plastic || (L.s.N > 0 && L.s.plastic);
+          REQUIRE(plastic);
+          CHECK(a->dF_dvertical_analytic == !friction);
+          const double scale = std::max({std::fabs(d->dF_dvertical[0]), std::fabs(d->dF_dvertical[1]), std::fabs(d->dF_dvertical[2])});
+          for (int k = 0; k < 3; ++k) CHECK(a->dF_dvertical[k] == Approx(d->dF_dvertical[k]).margin(2.5e-4 * scale));
+        }
+      }
+  }
+}
