@@ -341,6 +341,32 @@ TEST_CASE("wheelset: bad input names the field, the value and the rule", "[wheel
   CHECK_THROWS_WITH(W.step(p, {}, r, ws), Catch::Contains("pose.V = 0 m/s"));
 }
 
+namespace {
+
+/// The step of the loads pose p (with the position its answer gives when `position`: Z and the
+/// roll held) with the derivatives, analytic in the vertical input where the method gives it and
+/// by central differences throughout.
+std::pair<mh::WheelsetResult, mh::WheelsetResult> analytic_and_differences(const mh::WheelsetContact& W,
+                                                                           mh::WheelsetPose p, bool position) {
+  mh::WheelsetWorkspace ws;
+  mh::WheelsetResult r0, ra, rd;
+  W.step(p, {}, r0, ws);
+  if (position) {
+    p.vertical = mh::WheelsetVertical::Position;
+    p.Z = r0.Z;
+    p.solve_roll = false;
+    p.roll = r0.roll;
+  }
+  mh::WheelsetStepOptions o;
+  o.derivatives = true;
+  W.step(p, o, ra, ws);
+  o.analytic_vertical = false;
+  W.step(p, o, rd, ws);
+  return {ra, rd};
+}
+
+}  // namespace
+
 TEST_CASE("wheelset: the analytic vertical derivative against central differences of the same step",
           "[wheelset_contact][wheelset_derivatives]") {
   // dF/dZ (position) and dF/dQ (loads) by the approach's analytic slope (vertical_slope: dN/dh0 of
@@ -356,25 +382,10 @@ TEST_CASE("wheelset: the analytic vertical derivative against central difference
   for (const bool friction : {false, true})
     for (const bool position : {false, true})
       for (const double y : {0.0, 3.0, 6.0, 7.5, 8.5}) {
-        const auto& W = ws_fixture(friction);
-        mh::WheelsetWorkspace ws;
         mh::WheelsetPose p = loads(y * mm, 60e3);
         p.yaw = 1e-3;
         p.lateral_velocity = 0.01;
-        mh::WheelsetResult r0;
-        W.step(p, {}, r0, ws);
-        if (position) {
-          p.vertical = mh::WheelsetVertical::Position;
-          p.Z = r0.Z;
-          p.solve_roll = false;
-          p.roll = r0.roll;
-        }
-        mh::WheelsetStepOptions o;
-        o.derivatives = true;
-        mh::WheelsetResult ra, rd;
-        W.step(p, o, ra, ws);
-        o.analytic_vertical = false;
-        W.step(p, o, rd, ws);
+        const auto [ra, rd] = analytic_and_differences(ws_fixture(friction), p, position);
         for (const auto& [a, d] : {std::pair{&ra.left, &rd.left}, std::pair{&ra.right, &rd.right}}) {
           INFO("friction " << friction << ", position " << position << ", y " << y << " mm, side " << a->side);
           REQUIRE(a->dF_dvertical_analytic);
@@ -406,22 +417,7 @@ TEST_CASE("wheelset: the vertical derivative of plastic ellipses: analytic witho
     const mh::WheelsetContact W(s);
     for (const bool position : {false, true})
       for (const double y : {0.0, 6.0}) {
-        mh::WheelsetWorkspace ws;
-        mh::WheelsetPose p = loads(y * mm, 100e3);
-        mh::WheelsetResult r0;
-        W.step(p, {}, r0, ws);
-        if (position) {
-          p.vertical = mh::WheelsetVertical::Position;
-          p.Z = r0.Z;
-          p.solve_roll = false;
-          p.roll = r0.roll;
-        }
-        mh::WheelsetStepOptions o;
-        o.derivatives = true;
-        mh::WheelsetResult ra, rd;
-        W.step(p, o, ra, ws);
-        o.analytic_vertical = false;
-        W.step(p, o, rd, ws);
+        const auto [ra, rd] = analytic_and_differences(W, loads(y * mm, 100e3), position);
         for (const auto& [a, d] : {std::pair{&ra.left, &rd.left}, std::pair{&ra.right, &rd.right}}) {
           INFO("friction " << friction << ", position " << position << ", y " << y << " mm, side " << a->side);
           bool plastic = false;
