@@ -486,7 +486,6 @@ void format_geometry(double tY_mm, const std::vector<CandidateEllipse>& cands, b
                      std::string& csv, std::vector<std::string>* json) {
   csv.clear();
   if (json) json->clear();
-  auto jv = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(rounded(v)) : nlohmann::ordered_json(nullptr); };
   for (const CandidateEllipse& E : cands) {
     if (want_csv) {
       num(csv, tY_mm);  // as num_repeated() writes it in ellipses.csv: the two tables join on this text
@@ -498,11 +497,20 @@ void format_geometry(double tY_mm, const std::vector<CandidateEllipse>& cands, b
       csv += '\n';
     }
     if (want_json && json) {
-      nlohmann::ordered_json j;
-      j["tY_mm"] = jv(tY_mm);
-      j["ellipse"] = E.ellipse;
-      for (const GeoCol& c : kGeometryCols) j[c.name] = (!c.hertz || E.hertzian) ? jv(c.get(E)) : nlohmann::ordered_json(nullptr);
-      json->push_back(j.dump());
+      std::string rec;
+      JsonRecord j{rec};
+      j.begin_object();
+      j.key("tY_mm");
+      j.table_number(tY_mm);
+      j.key("ellipse");
+      j.integer(E.ellipse);
+      for (const GeoCol& c : kGeometryCols) {
+        j.key(c.name);
+        if (!c.hertz || E.hertzian) j.table_number(c.get(E));
+        else j.null();
+      }
+      j.end_object();
+      json->push_back(std::move(rec));
     }
   }
 }

@@ -80,38 +80,35 @@ inline char* layout_general(char* o, bool neg, const char* dig, int nd, int X, i
   *o++ = static_cast<char>('0' + ax % 10);
   return o;
 }
-}  // namespace detail
 
-/// `v` with `d` (1..17) significant digits, byte for byte as std::to_chars(general, d), i.e.
-/// printf("%.*g"), into `out` (64 chars at least); returns the end. Fast exact path for d ≤ 15
-/// and normal v: with v = m·2^e, the digits are q = v·10^(d−1−X) rounded half-even, computed
-/// exactly in 128-bit integers (a shift when the scale is a power of 10 ≥ 1, else one division);
-/// what does not fit 128 bits goes to std::to_chars. tests/unit/output/test_cells.cpp compares
-/// both on millions of values.
-inline char* general_digits(char* out, double v, int d) {
-  if (d > 15 || !std::isnormal(v)) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
+/// The d (1..15) significant digits of normal v, rounded half-even as std::to_chars(general, d)
+/// rounds them: with v = m·2^e, q = |v|·10^(d−1−X) rounded, computed exactly in 128-bit integers
+/// (a shift when the scale is a power of 10 ≥ 1, else one division). The digits are written
+/// right-aligned in buf[0..16) (buf: 32 chars, zero; 16 readable bytes from the first digit for
+/// the layouts); returns the first digit, nd the digits without trailing zeros and X the decimal
+/// exponent of the first; nullptr where the 128 bits do not hold it (then std::to_chars).
+inline const char* round_digits(double v, int d, char (&buf16)[32], int& nd, int& X) {
   __extension__ typedef unsigned __int128 u128;  // GCC and Clang
   static constexpr std::uint64_t p10[20] = {1ull, 10ull, 100ull, 1000ull, 10000ull, 100000ull, 1000000ull,
       10000000ull, 100000000ull, 1000000000ull, 10000000000ull, 100000000000ull, 1000000000000ull,
       10000000000000ull, 100000000000000ull, 1000000000000000ull, 10000000000000000ull,
       100000000000000000ull, 1000000000000000000ull, 10000000000000000000ull};
-  const bool neg = v < 0;
   std::uint64_t bits;
   std::memcpy(&bits, &v, sizeof bits);
   const std::uint64_t m = (bits & ((1ull << 52) - 1)) | (1ull << 52);
   const int e = static_cast<int>((bits >> 52) & 0x7ff) - 1075;  // |v| = m·2^e exactly (v normal)
   // floor(log10 2^(e+52)) = floor((e+52)·log10 2), maybe 1 below log10|v|.
   const int e2m1 = e + 52;
-  int X = e2m1 >= 0 ? (e2m1 * 78913) >> 18 : -((-e2m1 * 78913 + (1 << 18) - 1) >> 18);
+  X = e2m1 >= 0 ? (e2m1 * 78913) >> 18 : -((-e2m1 * 78913 + (1 << 18) - 1) >> 18);
   // q = |v|·10^k rounded half-even, k = d − 1 − X; num/den = |v|·10^k exactly with
   // num = m·10^max(k,0)·2^max(e,0), den = 10^max(−k,0)·2^max(−e,0).
   const int k = d - 1 - X;
   const int k10 = k > 0 ? k : 0, d10 = k < 0 ? -k : 0;
   const int s2 = e < 0 ? -e : 0, n2 = e > 0 ? e : 0;
-  if (k10 > 19 || d10 > 19 || n2 > 10) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
+  if (k10 > 19 || d10 > 19 || n2 > 10) return nullptr;
   u128 num = static_cast<u128>(m) * p10[k10];  // < 2^53·2^64
   if (n2) {
-    if (num >> (126 - n2)) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
+    if (num >> (126 - n2)) return nullptr;
     num <<= n2;
   }
   // The floor qf and where the remainder lies against half a unit: cmp < 0 below, 0 exactly
@@ -120,7 +117,7 @@ inline char* general_digits(char* out, double v, int d) {
   int cmp;
   bool sticky;
   if (d10 == 0) {  // den = 2^s2: a shift
-    if (s2 >= 127) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
+    if (s2 >= 127) return nullptr;
     if (s2 == 0) { qf = num; cmp = -1; sticky = false; }
     else {
       qf = num >> s2;
@@ -129,7 +126,7 @@ inline char* general_digits(char* out, double v, int d) {
       sticky = r != 0;
     }
   } else {
-    if (s2 > 60) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
+    if (s2 > 60) return nullptr;
     const u128 den = static_cast<u128>(p10[d10]) << s2;  // < 2^64·2^60
     qf = num / den;
     const u128 r2 = (num - qf * den) << 1;
@@ -146,7 +143,7 @@ inline char* general_digits(char* out, double v, int d) {
     const std::uint64_t q1 = qf64 / 10, last = qf64 % 10;
     q = q1 + ((last > 5 || (last == 5 && (sticky || (q1 & 1)))) ? 1 : 0);
   } else {
-    if (qf < p10[d - 1]) return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;  // never: X is never too high
+    if (qf < p10[d - 1]) return nullptr;  // never: X is never too high
     q = static_cast<std::uint64_t>(qf) + ((cmp > 0 || (cmp == 0 && (qf & 1))) ? 1 : 0);
   }
   if (q == p10[d]) {  // the rounding carried (9.99 -> 10.0): 10^(d−1) at exponent X+1, as %g
@@ -155,15 +152,105 @@ inline char* general_digits(char* out, double v, int d) {
   }
   // The d digits of q (< 10^15) right-aligned in 16, written two at a time: q = hi·10^8 + lo
   // (hi < 100 for d ≤ 10, the tables' default); 16 more readable bytes for layout_general.
-  char buf16[32] = {};
   const std::uint32_t hi = static_cast<std::uint32_t>(q / 100000000u), lo = static_cast<std::uint32_t>(q % 100000000u);
-  if (d <= 10) std::memcpy(buf16 + 6, detail::kDigitPairs + 2 * hi, 2);
-  else detail::write8(buf16, hi);
-  detail::write8(buf16 + 8, lo);
+  if (d <= 10) std::memcpy(buf16 + 6, kDigitPairs + 2 * hi, 2);
+  else write8(buf16, hi);
+  write8(buf16 + 8, lo);
   const char* dig = buf16 + 16 - d;
-  int nd = d;
-  while (nd > 1 && dig[nd - 1] == '0') --nd;  // %g drops trailing zeros
-  return detail::layout_general(out, neg, dig, nd, X, d);
+  nd = d;
+  while (nd > 1 && dig[nd - 1] == '0') --nd;  // trailing zeros dropped (%g and the shortest form)
+  return dig;
+}
+
+/// nlohmann::json's layout of a number (detail::format_buffer of its dump(): fixed notation for
+/// decimal point positions −4 < n ≤ 15, "x.0" for an integer, else d.ddd, 'e', sign and at least
+/// two exponent digits) for the significant digits dig[0..nd) with decimal exponent X (n = X + 1).
+inline char* layout_json(char* o, bool neg, const char* dig, int nd, int X) {
+  if (neg) *o++ = '-';
+  const int n = X + 1;
+  if (nd <= n && n <= 15) {  // digits, zeros, ".0"
+    std::memcpy(o, dig, static_cast<std::size_t>(nd));
+    std::memset(o + nd, '0', static_cast<std::size_t>(n - nd));
+    o += n;
+    *o++ = '.';
+    *o++ = '0';
+    return o;
+  }
+  if (0 < n && n <= 15) {  // dig.its
+    std::memcpy(o, dig, static_cast<std::size_t>(n));
+    o[n] = '.';
+    std::memcpy(o + n + 1, dig + n, static_cast<std::size_t>(nd - n));
+    return o + nd + 1;
+  }
+  if (-4 < n && n <= 0) {  // 0.[000]digits
+    *o++ = '0';
+    *o++ = '.';
+    std::memset(o, '0', static_cast<std::size_t>(-n));
+    o += -n;
+    std::memcpy(o, dig, static_cast<std::size_t>(nd));
+    return o + nd;
+  }
+  *o++ = dig[0];  // d[.igits]e±XX
+  if (nd > 1) {
+    *o++ = '.';
+    std::memcpy(o, dig + 1, static_cast<std::size_t>(nd - 1));
+    o += nd - 1;
+  }
+  *o++ = 'e';
+  int e = n - 1;
+  *o++ = e < 0 ? '-' : '+';
+  if (e < 0) e = -e;
+  if (e >= 100) *o++ = static_cast<char>('0' + e / 100);
+  *o++ = static_cast<char>('0' + e / 10 % 10);
+  *o++ = static_cast<char>('0' + e % 10);
+  return o;
+}
+}  // namespace detail
+
+/// `v` with `d` (1..17) significant digits, byte for byte as std::to_chars(general, d), i.e.
+/// printf("%.*g"), into `out` (64 chars at least); returns the end. The exact fast path
+/// (detail::round_digits) for d ≤ 15 and normal v, std::to_chars otherwise.
+/// tests/unit/output/test_cells.cpp compares both on millions of values.
+inline char* general_digits(char* out, double v, int d) {
+  if (d <= 15 && std::isnormal(v)) {
+    char buf16[32] = {};
+    int nd = 0, X = 0;
+    if (const char* dig = detail::round_digits(v, d, buf16, nd, X)) return detail::layout_general(out, v < 0, dig, nd, X, d);
+  }
+  return std::to_chars(out, out + 64, v, std::chars_format::general, d).ptr;
+}
+
+/// `v` rounded to `d` (1..15) significant digits in JSON, as nlohmann's dump() lays a number out,
+/// with those digits (trailing zeros dropped): the shortest text of the rounded value, since no
+/// other decimal of at most 15 digits reads back to the same normal double. The digits by
+/// detail::round_digits, or where its 128 bits do not hold them (below about 1e-10, from 2^63)
+/// by std::to_chars' scientific form, the same rounding. Into `out` (64 chars); the end, or
+/// nullptr for d > 15 and v zero, subnormal or not finite (the caller then dumps the rounded
+/// double). nlohmann's own shortest form (Grisu2) writes the same text but for about 1 number in
+/// 100 to 1,000, where it writes 16–17 digits of the same double (10.561527420000001 for
+/// 10.56152742): results.json, docs/outputs.md.
+inline char* json_digits(char* out, double v, int d) {
+  if (d < 1 || d > 15 || !std::isnormal(v)) return nullptr;
+  char buf16[32] = {};
+  int nd = 0, X = 0;
+  const char* dig = detail::round_digits(v, d, buf16, nd, X);
+  if (!dig) {  // d.ddd…e±XX: its digits and exponent
+    char sci[48];
+    const char* end = std::to_chars(sci, sci + sizeof sci, std::fabs(v), std::chars_format::scientific, d - 1).ptr;
+    const char* p = sci;
+    int k = 0;
+    buf16[k++] = *p++;
+    if (*p == '.')
+      for (++p; p < end && *p != 'e'; ++p) buf16[k++] = *p;
+    if (p == end || *p != 'e') return nullptr;
+    ++p;
+    if (*p == '+') ++p;
+    if (std::from_chars(p, end, X).ec != std::errc()) return nullptr;
+    nd = k;
+    while (nd > 1 && buf16[nd - 1] == '0') --nd;
+    dig = buf16;
+  }
+  return detail::layout_json(out, v < 0, dig, nd, X);
 }
 
 // Numbers: `digits()` significant digits (%g style: no trailing zeros, exponent when needed);

@@ -1,7 +1,8 @@
 #pragma once
 // One JSON record written straight into a string, byte for byte as nlohmann::ordered_json's
 // compact dump() of the same values would write it (results.json's per-case records): the keys in
-// the order written, doubles by nlohmann's own shortest form (detail::to_chars: "0.0", "1e-05"),
+// the order written, doubles by nlohmann's own shortest form (detail::to_chars: "0.0", "1e-05";
+// the tables' rounded values by their digits in that layout, table_number),
 // integers in decimal, text escaped as dump() escapes it (nlohmann itself for any string that is
 // not printable ASCII). A typed writer, so the record is valid JSON by construction; building
 // the ordered_json tree and dumping it cost about ten times as much per case (docs/performance.md).
@@ -51,11 +52,24 @@ class JsonRecord {
   void number(double v) {
     value_start();
     if (!std::isfinite(v)) { s_ += "null"; return; }
-    char buf[64];
-    s_.append(buf, static_cast<std::size_t>(::nlohmann::detail::to_chars(buf, buf + sizeof buf, v) - buf));
+    append_double(v);
   }
-  /// A value of the tables: rounded to the tables' digits first (cells::rounded), null when not finite.
-  void table_number(double v) { number(std::isfinite(v) ? cells::rounded(v) : v); }
+  /// A value of the tables, null when not finite: rounded to the tables' digits, its text those
+  /// digits in dump()'s layout (cells::json_digits: the rounded value's shortest form, which
+  /// dump() writes too but for about 1 number in 1,000); the rounded double dumped where that
+  /// fast path does not apply (not normal, --digits max or above 15).
+  void table_number(double v) {
+    value_start();
+    if (!std::isfinite(v)) { s_ += "null"; return; }
+    const int d = cells::digits();
+    char buf[64];
+    if (d > 0)
+      if (const char* e = cells::json_digits(buf, v, d)) {
+        s_.append(buf, static_cast<std::size_t>(e - buf));
+        return;
+      }
+    append_double(cells::rounded(v));
+  }
   /// An integer (the case numbers and counts too: below 2^63, the same digits as dump() of an
   /// unsigned).
   void integer(long long i) { value_start(); append_number(s_, i); }
@@ -68,6 +82,10 @@ class JsonRecord {
   bool first_ = true;      // no member or element yet in the open object or array
   bool after_key_ = false;  // the value of a key comes next (no comma)
 
+  void append_double(double v) {
+    char buf[64];
+    s_.append(buf, static_cast<std::size_t>(::nlohmann::detail::to_chars(buf, buf + sizeof buf, v) - buf));
+  }
   void value_start() {
     if (after_key_) { after_key_ = false; return; }
     if (!first_) s_ += ',';
