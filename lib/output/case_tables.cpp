@@ -7,7 +7,6 @@
 #include <cmath>
 #include <iterator>
 
-#include <nlohmann/json.hpp>
 
 #include "contact/judge/judge.hpp"
 #include "contact/pressure_grid.hpp"

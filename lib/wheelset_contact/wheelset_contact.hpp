@@ -304,6 +304,10 @@ class WheelsetContact {
   /// Both wheels and the totals (no derivatives); the roll of Position as given or solved.
   void solve_both(const WheelsetPose& pose, const WheelsetStepOptions& opt, WheelsetResult& out,
                   WheelsetWorkspace& ws) const;
+  /// out's derivatives after solve_both (NaN and the analytic flags false unless opt.derivatives;
+  /// wheelset_derivatives.cpp).
+  void add_derivatives(const WheelsetPose& pose, const WheelsetStepOptions& opt, WheelsetResult& out,
+                       WheelsetWorkspace& ws) const;
 };
 
 }  // namespace mh
