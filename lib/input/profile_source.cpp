@@ -94,6 +94,14 @@ Profile load_profile(const ProfileSource& src, ProfileKind kind, Inclination inc
     // The generator applies the inclination itself (it knows where a 1:20 flank turns vertical).
     return make_standard_profile(src.standard, kind == ProfileKind::Rail ? incl : Inclination::None, src.step);
   }
+  // A standard's name given as a file name ("60E1"): no such file, and the fix is the object.
+  std::error_code ec;
+  if (!src.case_file.empty() && !std::filesystem::exists(src.file, ec))
+    for (const std::string& name : standard_profile_names())
+      if (name == src.given)
+        throw InputError(src.case_file + ": " + src.json_path, "\"" + src.given + "\"",
+                         "no such profile file (" + src.file + "); \"" + name + "\" is the name of a standard profile",
+                         "write {\"standard\": \"" + name + "\"} to generate it from its definition: docs/case-file.md");
   ProfileReadOptions o = src.read;
   o.kind = kind;
   try {

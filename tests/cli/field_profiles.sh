@@ -66,6 +66,10 @@ run mpt2 "{\"standard\": \"S1002\"}" "{\"file\": \"$F/multi_profile.mpt\", \"sec
 grep -q '"section": *2' "$T/mpt2/results.json" || fail "results.json: the section is not in the resolved inputs"
 run mpt0 "{\"standard\": \"S1002\"}" "{\"file\": \"$F/multi_profile.mpt\", \"section\": 0}, \"inclination\": \"as-is\""
 [ $rc -eq 2 ] && grep -q "/rail/profile/section" "$T/mpt0.err" || fail "section 0: exit $rc $(cat "$T/mpt0.err")"
+# A standard's name given as a file name: exit 2, the object that generates it named.
+run bare "{\"standard\": \"S1002\"}" '"60E1", "inclination": "1:40"'
+[ $rc -eq 2 ] && grep -qF '/rail/profile: value "60E1": no such profile file' "$T/bare.err" \
+  && grep -qF 'write {"standard": "60E1"}' "$T/bare.err" || fail "bare standard name: exit $rc $(cat "$T/bare.err")"
 "$MH" profile info --section 2 "$F/multi_profile.mpt" > "$T/info2" || fail "profile info --section 2"
 grep -q "^points: 979$" "$T/info2" && grep -q "read profile 2 'Head measured' (section 2 as asked" "$T/info2" || fail "info --section 2: $(cat "$T/info2")"
 set +e; "$MH" profile info "$F/multi_profile.mpt" >/dev/null 2>"$T/info.err"; rc=$?; set -e
