@@ -91,11 +91,12 @@ def _timed(k, seconds):
 
 
 def test_shards_start_in_their_order(client):
-    # Shard 1 long, the rest short, on 2 one-thread workers: shards 1 and 2 start together (in
-    # either order), every later one only when a worker is free, in k's order (a worker sent
-    # shard 3 ahead of time would hold it behind shard 1 while the other ran 4, 5, ...).
+    # Shard 1 long (6 s: room for a loaded machine's scheduling), the rest short, on 2 one-thread
+    # workers: shards 1 and 2 start together (in either order), every later one only when a
+    # worker is free, in k's order (a worker sent shard 3 ahead of time would hold it behind
+    # shard 1 while the other ran 4, 5, ...).
     from mhcontact.fleet import _run_in_order
-    res = _run_in_order(client, lambda k: client.submit(_timed, k, 3.0 if k == 1 else 0.1, pure=False), 8)
+    res = _run_in_order(client, lambda k: client.submit(_timed, k, 6.0 if k == 1 else 0.1, pure=False), 8)
     assert [r[0] for r in res] == list(range(1, 9))
     later = [r[1] for r in res[2:]]
     assert later == sorted(later) and later[0] >= max(res[0][1], res[1][1]), [r[1] for r in res]
