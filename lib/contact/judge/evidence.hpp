@@ -26,8 +26,8 @@ struct EvidenceDomain {
   const char* methods;   ///< "multi-hertzian" or "half-space, strips" (as written in docs)
   PlasticLaw law;
   const char* law_name;  ///< as written in docs/trust.md
-  Quantity q;            ///< Quantity::P0ElOverSigmaY, P0ElOverPLim or PlaneTilt
-  double bound;          ///< the largest value the tests establish (inclusive), in q's written unit (plane_tilt_deg: degrees)
+  Quantity q;            ///< Quantity::P0ElOverSigmaY, P0ElOverPLim, PlaneTilt or EdgeTilt
+  double bound;          ///< the largest value the tests establish (inclusive), in q's written unit (plane_tilt_deg, edge_tilt_deg: degrees)
   const char* test;      ///< the test file that establishes it (path in the repository)
   const char* evidence;  ///< what the test shows, in one sentence
 };
@@ -44,7 +44,10 @@ const EvidenceDomain* evidence_domain(Method m, const Material& mat);
 /// runs (a curved reference surface) put the peak lower, by up to 16 % in the cases measured
 /// (docs/trust.md "Evidence domains"). The judge (judge.cpp) compares each grid patch's tilt at
 /// its peak (PatchResult::y_peak) with it.
-const EvidenceDomain& planar_evidence_domain();
+/// q = Quantity::EdgeTilt: the row of the planar approach's extent, the same tilt at the patch's
+/// first and last loaded row (PatchResult::s_lo, s_hi): how far from its plane the rail under a
+/// patch turns anywhere in it, in the cases that establish the row.
+const EvidenceDomain& planar_evidence_domain(Quantity q = Quantity::PlaneTilt);
 
 /// Adds a `beyond_evidence` warning to `r` for each loaded ellipse (multi-Hertzian: its state's
 /// p0_el) or grid patch (1.5 N / (π a_el b_el), the elastic ellipse of its load,

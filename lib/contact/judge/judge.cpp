@@ -25,24 +25,36 @@ EllipseInteraction interacting_ellipses(const CaseResult& r, double d_comb) {
   return e;
 }
 
+PlanarTilt planar_tilt(const PatchResult& P, const ContactGeometry& G) {
+  PlanarTilt t;
+  const ProfileCurve* rail = G.rail_gap_curve ? G.rail_gap_curve.get() : G.rail_curve.get();
+  if (!rail || !std::isfinite(P.y_peak)) return t;
+  auto at = [&](double y) {  // the angle between two lines: folded into [0, 90°]
+    double dz = 0;
+    rail->z(y, &dz);
+    const double d = std::fmod(std::fabs(std::atan(dz) - P.gamma), M_PI);
+    return d > 0.5 * M_PI ? M_PI - d : d;
+  };
+  t.peak = at(P.y_peak);
+  const double c = std::cos(P.gamma);  // rail y ≈ y_r + s cos γ
+  t.edge = std::max(at(P.y_r + P.s_lo * c), at(P.y_r + P.s_hi * c));
+  return t;
+}
+
 namespace {
 
-// A grid patch whose plane is tilted against the rail where its pressure peaks by more than the
-// planar approach's evidence covers (evidence.hpp): beyond_evidence with the tilt's magnitude
-// (either side of the plane, as the bound).
+// A grid patch whose plane is tilted against the rail beyond what the planar approach's evidence
+// covers (evidence.hpp), at its peak or at an edge: beyond_evidence with the tilts' magnitudes
+// (either side of the plane, as the bounds).
 void add_plane_tilt_warnings(CaseResult& r, const ContactGeometry& G) {
-  const ProfileCurve* rail = G.rail_gap_curve ? G.rail_gap_curve.get() : G.rail_curve.get();
-  if (!rail) return;
-  const EvidenceDomain& d = planar_evidence_domain();
-  const double bound = d.bound * units::deg;
+  const double bound = planar_evidence_domain(Quantity::PlaneTilt).bound * units::deg;
+  const double edge_bound = planar_evidence_domain(Quantity::EdgeTilt).bound * units::deg;
   for (const PatchResult& P : r.patches) {
-    if (!std::isfinite(P.y_peak)) continue;
-    double dz = 0;
-    rail->z(P.y_peak, &dz);
-    const double tilt = std::fabs(std::atan(dz) - P.gamma);
-    if (tilt > bound)
-      r.warnings.push_back(Warning(WarningClass::BeyondEvidence, ContactKind::Patch, P.patch)
-                               .add(Quantity::PlaneTilt, tilt, '>', bound));
+    const PlanarTilt t = planar_tilt(P, G);
+    Warning w(WarningClass::BeyondEvidence, ContactKind::Patch, P.patch);
+    if (t.peak > bound) w.add(Quantity::PlaneTilt, t.peak, '>', bound);
+    if (t.edge > edge_bound) w.add(Quantity::EdgeTilt, t.edge, '>', edge_bound);
+    if (w.n > 0) r.warnings.push_back(w);
   }
 }
 

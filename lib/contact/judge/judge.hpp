@@ -38,6 +38,16 @@ struct VehicleStateLimits {
   double derail_margin = 2e-3;
 };
 
+/// [rad] How far the rail under a grid patch turns away from the patch's plane (its γ), either
+/// side: at the row carrying the peak pressure (PatchResult::y_peak; a capped plateau's middle
+/// row) and the larger of the first and last loaded rows (s_lo, s_hi), on the rail's contact
+/// surface. The planar approach's evidence rows bound both (evidence.hpp). NaN without a peak.
+struct PlanarTilt {
+  double peak = NAN;
+  double edge = NAN;
+};
+PlanarTilt planar_tilt(const PatchResult& P, const ContactGeometry& G);
+
 /// The vehicle-state warnings of a solved case (any method): `nadal_limit` when Y/Q > lim.nadal,
 /// `derailed` when the wheel rides on its flange tip (VehicleStateLimits::derail_margin). Rows
 /// without an answer (is_failure) get none. judge_case() calls it; so does `auto` for the

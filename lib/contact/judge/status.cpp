@@ -137,6 +137,7 @@ const QuantityInfo& info(Quantity q) {
       {"cg_error", "1", 1, Fmt::Raw, Fmt::Raw},
       {"iterations", "count", 1, Fmt::Count, Fmt::Count},
       {"plane_tilt_deg", "rad", 1 / units::deg, Fmt::Round3, Fmt::Round3},
+      {"edge_tilt_deg", "rad", 1 / units::deg, Fmt::Round3, Fmt::Round3},
   };
   return k[static_cast<std::size_t>(q)];
 }

@@ -118,6 +118,7 @@ enum class Quantity : std::uint8_t {
   CgError,              ///< [1] the CG's convergence measure ε (NormalCGOptions::tol) "cg_error"
   Iterations,           ///< [count] iterations made                      "iterations"
   PlaneTilt,            ///< [rad] |rail slope angle at a grid patch's peak − its plane's γ| (evidence.hpp) "plane_tilt_deg"
+  EdgeTilt,             ///< [rad] the same at the patch's first or last loaded row, the larger (evidence.hpp) "edge_tilt_deg"
 };
 /// The written name ("edge_gap_mm") and the SI unit of value and limit ("1", "m", "Pa", "rad", "count").
 const char* name(Quantity q);
