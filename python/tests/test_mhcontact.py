@@ -392,6 +392,35 @@ def test_one_judge_through_every_entry_point():
                     assert r[1] == "strips" and "gap_kink=" in r[2], r
 
 
+def test_planar_extent_judged_alike_by_the_command_and_python():
+    """A 10 mm circle in a 10.02 mm groove, strips: the patch wraps 37.5 and 52 deg round the rail
+    at 5 and 20 kN, beyond the planar approach's extent (edge_tilt_deg > 35: outside_validity),
+    24 deg at 1 kN (ok). The command and Python say the same (docs/trust.md "Evidence domains")."""
+    import json
+    data = os.path.join(SRC, "tests", "data", "profiles")
+    case = {"wheel": {"profile": os.path.join(data, "circ_r10.prw"), "nominal_radius_mm": 300},
+            "rail": {"profile": os.path.join(data, "groove_r1002.prr"), "inclination": "as-is"},
+            "track": {"positioning": "explicit", "lateral_offset_mm": 0},
+            "material": {"E_GPa": 210, "nu": 0.3}, "method": "strips",
+            "sweep": {"tY_mm": [0], "Q_kN": [1, 5, 20]}}
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "groove.json")
+        with open(path, "w") as f:
+            json.dump(case, f)
+        subprocess.run([BINARY, "run", path, "-o", os.path.join(d, "out"), "-q", "--format", "csv"], check=True)
+        with open(os.path.join(d, "out", "cases.csv")) as f:
+            rows = [(r["status"], r["warnings"]) for r in csv.DictReader(f)]
+        p = mhcontact.Pair.from_case_file(path)
+    py = []
+    for Q in (1e3, 5e3, 20e3):
+        o = p.solve(0.0, Q_N=Q)
+        py.append((o["status"], ";".join(w["text"] for w in o["warnings"])))
+    assert py == rows, (py, rows)
+    assert rows[0] == ("ok", "")
+    for status, warnings in rows[1:]:
+        assert status == "outside_validity" and "edge_tilt_deg=" in warnings, (status, warnings)
+
+
 def test_rail_inclination_spelt_and_required_as_in_the_case_file():
     # Issue 38: the inclination was a number defaulting to 0 (as-is) while the case file requires
     # an explicit "as-is" or "1:N". The same words, the same choice required.
