@@ -109,11 +109,23 @@ WheelsetCase parse_wheelset_json(const json& j, const std::string& path) {
   const Ctx c{path, {}};
   WheelsetCase w;
   w.path = path;
+  // A contact case file (mhcontact run) given here: say where its placement goes, not only that
+  // its keys are unknown.
+  if (j.is_object())
+    for (const char* k : {"track", "material", "sweep", "method", "model", "friction", "kinematics", "geometry"})
+      if (j.contains(k))
+        c.fail(std::string("/") + k, nullptr, "a key of a contact case file (mhcontact run), not of a wheelset case file",
+               "a wheelset case places the rails by rail.gauge_mm, rail.gauge_height_mm or rail.placement \"absolute\", "
+               "and the wheels by wheelset.flange_back_distance_mm, wheelset.flange_back_position_mm, "
+               "wheelset.nominal_radius_mm; it needs no material or sweep: docs/wheelset.md \"Case file\"");
   c.only_keys(j, "", {"comment", "wheel", "wheels", "rail", "wheelset", "y_mm", "amplitudes_mm"});
   if (j.contains("wheel") == j.contains("wheels"))
     c.fail("", nullptr, "give either \"wheel\" (one wheelset) or \"wheels\" (a fleet)");
   if (j.contains("wheel")) {
     const json& v = j.at("wheel");
+    if (v.is_object() && v.contains("nominal_radius_mm"))
+      c.fail("/wheel/nominal_radius_mm", &v.at("nominal_radius_mm"), "the wheels' radius is a key of \"wheelset\" here",
+             "write it as wheelset.nominal_radius_mm, one number or {\"left\": …, \"right\": …}: docs/wheelset.md \"Case file\"");
     c.only_keys(v, "/wheel", {"profile", "left", "right"});
     if (v.contains("profile")) {
       if (v.contains("left") || v.contains("right")) c.fail("/wheel", &v, "give \"profile\" (mirrored) or \"left\" and \"right\"");

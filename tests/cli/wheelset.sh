@@ -93,6 +93,9 @@ must_fail "/rail/inclination: missing" '{"wheel": {"profile": {"standard": "S100
 must_fail "/wheelset/roll: value \"free\"" '{"wheel": {"profile": {"standard": "S1002"}}, "rail": {"profile": {"standard": "60E1"}, "inclination": "1:40"}, "wheelset": {"roll": "free"}}'
 must_fail "/rail/origin_mm: missing" '{"wheel": {"profile": {"standard": "S1002"}}, "rail": {"profile": {"standard": "60E1"}, "inclination": "1:40", "placement": "absolute"}}'
 must_fail "give either \"wheel\"" '{"rail": {"profile": {"standard": "60E1"}, "inclination": "1:40"}}'
+# A contact case file's keys: where they go here, not only "unknown key".
+must_fail "/track: a key of a contact case file (mhcontact run), not of a wheelset case file (a wheelset case places the rails by rail.gauge_mm" '{"wheel": {"profile": {"standard": "S1002"}}, "rail": {"profile": {"standard": "60E1"}, "inclination": "1:40"}, "track": {"gauge_mm": 1435}}'
+must_fail "/wheel/nominal_radius_mm: value 460: the wheels' radius is a key of \"wheelset\" here (write it as wheelset.nominal_radius_mm" '{"wheel": {"profile": {"standard": "S1002"}, "nominal_radius_mm": 460}, "rail": {"profile": {"standard": "60E1"}, "inclination": "1:40"}}'
 
 # --- plots (when matplotlib is present) ------------------------------------------------------
 py=/usr/bin/python3; [ -x "$py" ] || py=python3
