@@ -1,6 +1,8 @@
 // Profile sources of the case file; see profile_source.hpp.
 #include "input/profile_source.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "core/errors.hpp"
@@ -94,11 +96,17 @@ Profile load_profile(const ProfileSource& src, ProfileKind kind, Inclination inc
     // The generator applies the inclination itself (it knows where a 1:20 flank turns vertical).
     return make_standard_profile(src.standard, kind == ProfileKind::Rail ? incl : Inclination::None, src.step);
   }
-  // A standard's name given as a file name ("60E1"): no such file, and the fix is the object.
+  // A standard's name given as a file name ("60E1", or "60e1" as typed): no such file, and the
+  // fix is the object with the name spelt as the generator knows it.
   std::error_code ec;
+  const auto same_letters = [](const std::string& a, const std::string& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+             return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
+  };
   if (!src.case_file.empty() && !std::filesystem::exists(src.file, ec))
     for (const std::string& name : standard_profile_names())
-      if (name == src.given)
+      if (same_letters(name, src.given))
         throw InputError(src.case_file + ": " + src.json_path, "\"" + src.given + "\"",
                          "no such profile file (" + src.file + "); \"" + name + "\" is the name of a standard profile",
                          "write {\"standard\": \"" + name + "\"} to generate it from its definition: docs/case-file.md");

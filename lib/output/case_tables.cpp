@@ -7,7 +7,6 @@
 #include <cmath>
 #include <iterator>
 
-
 #include "contact/judge/judge.hpp"
 #include "contact/pressure_grid.hpp"
 #include "core/units.hpp"

@@ -70,6 +70,9 @@ run mpt0 "{\"standard\": \"S1002\"}" "{\"file\": \"$F/multi_profile.mpt\", \"sec
 run bare "{\"standard\": \"S1002\"}" '"60E1", "inclination": "1:40"'
 [ $rc -eq 2 ] && grep -qF '/rail/profile: value "60E1": no such profile file' "$T/bare.err" \
   && grep -qF 'write {"standard": "60E1"}' "$T/bare.err" || fail "bare standard name: exit $rc $(cat "$T/bare.err")"
+run bare_lc "{\"standard\": \"S1002\"}" '"60e1", "inclination": "1:40"'
+[ $rc -eq 2 ] && grep -qF '/rail/profile: value "60e1": no such profile file' "$T/bare_lc.err" \
+  && grep -qF 'write {"standard": "60E1"}' "$T/bare_lc.err" || fail "bare standard name as typed: exit $rc $(cat "$T/bare_lc.err")"
 "$MH" profile info --section 2 "$F/multi_profile.mpt" > "$T/info2" || fail "profile info --section 2"
 grep -q "^points: 979$" "$T/info2" && grep -q "read profile 2 'Head measured' (section 2 as asked" "$T/info2" || fail "info --section 2: $(cat "$T/info2")"
 set +e; "$MH" profile info "$F/multi_profile.mpt" >/dev/null 2>"$T/info.err"; rc=$?; set -e
