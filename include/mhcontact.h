@@ -367,6 +367,36 @@ MHC_API mhc_error mhc_solve_many_warnings(const mhc_pair* pair, int32_t prescrib
  *  thread's next call of this function. */
 MHC_API const char* mhc_warning_text(const mhc_workspace* ws, int32_t i);
 
+/* ---- the smoothing's uncertainty band (interface version 4) ------------------------------------ */
+
+/** The smoothing's uncertainty band of the last case solved with a workspace (docs/profiles.md
+ *  "Smoothing for contact", "Uncertainty band"; the columns pmax_half_L_MPa, pmax_double_L_MPa,
+ *  area_half_L_mm2, area_double_L_mm2 of cases.csv): the case solved again, by the method that
+ *  solved it, with every contact smoothing length of the pair halved and doubled. NaN where not
+ *  computed: no profile of the pair smoothed for contact (exact profiles), the band turned off
+ *  (mhc_pair_set_smoothing_band), a multi-Hertzian row (its curvatures are the window fit's, not
+ *  the smoothed surface's), an approach-prescribed solve, a case without an answer. A row whose
+ *  peak pressure moves by more than 10 % or whose area by more than 15 % carries the
+ *  informational warning smoothing_sensitive (mhc_result_warning). */
+typedef struct mhc_smoothing_band {
+  size_t struct_size;        /**< set by the caller: sizeof(mhc_smoothing_band) */
+  double p_max_half_L_Pa;    /**< largest pressure with every smoothing length halved */
+  double p_max_double_L_Pa;  /**< ... doubled */
+  double area_half_L_m2;     /**< contact area, lengths halved */
+  double area_double_L_m2;   /**< ... doubled */
+} mhc_smoothing_band;
+
+/** The band of the last case solved with `ws` into *out (out->struct_size must be set). */
+MHC_API mhc_error mhc_result_smoothing_band(const mhc_workspace* ws, mhc_smoothing_band* out);
+
+/** Whether the pair's load-prescribed solves compute the band: on = 1 (the default of a pair whose
+ *  method is not multi-Hertzian and which has a profile smoothed for contact, as the case file's
+ *  geometry.smoothing_band), 0 off. Each case costs three solves with it: a caller that solves at
+ *  every time step and does not read it turns it off. Building it costs two more geometry tables
+ *  (about as long as the pair's own). Nothing happens for a pair without a smoothed profile or with
+ *  the multi-Hertzian method. Not while another thread solves with the pair. */
+MHC_API mhc_error mhc_pair_set_smoothing_band(mhc_pair* pair, int32_t on);
+
 /* ---- contact tables (docs/tables.md) ------------------------------------------------------------
  * A table made by `mhcontact table` (a grid method at every node of a t_Y x Q grid, and of the
  * wheel's roll when its case gives roll nodes; contacts matched across nodes into tracks) read
@@ -519,8 +549,10 @@ MHC_API void mhc_wheelset_table_free(mhc_wheelset_table* t);
  *  call, mhc_interface_version, mhc_solve_many_warnings, the creep forces (mhc_pair_set_tangential,
  *  mhc_result_tangential), the contact tables (mhc_table_*), the RCF accessors (mhc_result_rcf,
  *  mhc_hertz_subsurface) and the grids (mhc_workspace_keep_grids, mhc_result_grid); 3 = the
- *  wheelset tables (mhc_wheelset_table_*). Negotiate at run time with mhc_interface_version(). */
-#define MHC_INTERFACE_VERSION 3
+ *  wheelset tables (mhc_wheelset_table_*); 4 = the smoothing's uncertainty band
+ *  (mhc_result_smoothing_band, mhc_pair_set_smoothing_band). Negotiate at run time with
+ *  mhc_interface_version(). */
+#define MHC_INTERFACE_VERSION 4
 
 /** The newest interface version the library implements (its return) and, in *oldest when not
  *  NULL, the oldest it still serves. A caller built against MHC_INTERFACE_VERSION v may use the

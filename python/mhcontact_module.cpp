@@ -231,6 +231,22 @@ void fill_tangential_columns(const mhc_workspace* ws, const mhc_result& r, std::
   if (t.solved) y_over_q[i] = r.Fz_N > 0 ? t.Y_N / r.Fz_N : NAN;
 }
 
+/// The smoothing's uncertainty band of the case just solved with ws (mhc_result_smoothing_band),
+/// in the units of cases.csv's band columns (NaN where not computed).
+const char* kBandCols[] = {"pmax_half_L_MPa", "pmax_double_L_MPa", "area_half_L_mm2", "area_double_L_mm2"};
+constexpr int kNBand = sizeof kBandCols / sizeof kBandCols[0];
+struct SmoothingBand {
+  double v[kNBand];
+};
+SmoothingBand smoothing_band(const mhc_workspace* ws) {
+  mhc_smoothing_band b;
+  b.struct_size = sizeof b;
+  SmoothingBand out{{NAN, NAN, NAN, NAN}};
+  if (mhc_result_smoothing_band(ws, &b) == MHC_OK)
+    out = {{b.p_max_half_L_Pa / 1e6, b.p_max_double_L_Pa / 1e6, b.area_half_L_m2 * 1e6, b.area_double_L_m2 * 1e6}};
+  return out;
+}
+
 /// The float columns of solve_many, in the order of cases.csv, then the stiffness.
 const char* kFloatCols[] = {"tY_mm",    "Q_kN",     "dz_virtual_mm", "approach_mm",    "iterations",
                             "residual", "Fz_kN",    "Fy_kN",         "Y_over_Q",       "pmax_MPa",       "area_mm2",
@@ -331,8 +347,17 @@ PYBIND11_MODULE(_core, m) {
              mhc_pair_options o;
              mhc_pair_options_init(&o);
              bool have_inclination = false;
+             int band = -1;  // smoothing_band: -1 the default (on), else 0 / 1
              for (auto item : kw) {
                const std::string k = py::str(item.first);
+               if (k == "smoothing_band") {
+                 if (!py::isinstance<py::bool_>(item.second))
+                   throw py::type_error("Pair option smoothing_band = " + std::string(py::repr(item.second)) +
+                                        ": expected a bool, got " +
+                                        std::string(py::str(py::type::of(item.second).attr("__name__"))));
+                 band = item.second.cast<bool>() ? 1 : 0;
+                 continue;
+               }
                if (k == "rail_inclination") {
                  o.rail_inclination = rail_inclination_of(item.second);
                  have_inclination = true;
@@ -382,7 +407,8 @@ PYBIND11_MODULE(_core, m) {
              auto p = std::make_unique<Pair>();
              {
                py::gil_scoped_release nogil;
-               const mhc_error e = mhc_pair_create(wheel.p, rail.p, &o, &p->p);
+               mhc_error e = mhc_pair_create(wheel.p, rail.p, &o, &p->p);
+               if (e == MHC_OK && band >= 0) e = mhc_pair_set_smoothing_band(p->p, band);
                if (e != MHC_OK) {
                  py::gil_scoped_acquire gil;
                  raise(e);
@@ -395,7 +421,9 @@ PYBIND11_MODULE(_core, m) {
            "rail_inclination (required: \"as-is\" or \"1:N\", as a case file), E_wheel_Pa, nu_wheel, E_rail_Pa, nu_rail, p_lim_Pa, yield_wheel_Pa,\n"
            "yield_rail_Pa, method (a name), tY_min_m, tY_max_m, tY_step_m, grid_dx_m, grid_ds_m,\n"
            "positioning (\"gauge\" or \"explicit\"), lateral_offset_m (explicit: the rail y of the wheel's\n"
-           "taping line at t_Y = 0). Values outside the case file's plausible ranges raise ValueError.\n"
+           "taping line at t_Y = 0), smoothing_band (bool, default True: the smoothing's uncertainty band\n"
+           "of a grid method on a measured profile, as a case file's geometry.smoothing_band).\n"
+           "Values outside the case file's plausible ranges raise ValueError.\n"
            "yield_wheel_Pa (and yield_rail_Pa when the rail's differs), as a case file's\n"
            "material.yield_MPa: the plastic model with the yield law of docs/method.md 5.1 (grid\n"
            "methods: p_lim = 2.1 sigma_y); p_lim_Pa, when given, takes precedence (the capped law).")
@@ -415,6 +443,16 @@ PYBIND11_MODULE(_core, m) {
             for (int32_t i = 0; i < mhc_pair_n_warnings(p.p); ++i) l.append(mhc_pair_warning(p.p, i));
             return l;
           }, "The pair's warnings, as the command prints them (mhc_pair_warning): profiles, rail cant, placement.")
+      .def("set_smoothing_band", [](Pair& p, bool on) {
+            py::gil_scoped_release nogil;
+            const mhc_error e = mhc_pair_set_smoothing_band(p.p, on ? 1 : 0);
+            if (e != MHC_OK) {
+              py::gil_scoped_acquire gil;
+              raise(e);
+            }
+          }, py::arg("on"),
+          "set_smoothing_band(on): whether later solves compute the smoothing's uncertainty band\n"
+          "(pmax_half_L_MPa ...; mhc_pair_set_smoothing_band). Not while another thread solves with the pair.")
       .def("set_tangential", [](Pair& p, const py::dict& options) {
             mhc_tangential_options o;
             mhc_tangential_options_init(&o);
@@ -459,6 +497,8 @@ PYBIND11_MODULE(_core, m) {
             py::dict d = result_dict(r);
             d["warnings"] = warnings_list(w);
             add_tangential(ws, r, d);
+            const SmoothingBand b = smoothing_band(ws);
+            for (int c = 0; c < kNBand; ++c) d[kBandCols[c]] = b.v[c];
             mhc_workspace_free(ws);
             return d;
           })
@@ -491,6 +531,12 @@ PYBIND11_MODULE(_core, m) {
               tcols.emplace_back(n);
               tf.push_back(tcols.back().mutable_data());
             }
+            std::vector<py::array_t<double>> bcols;
+            std::vector<double*> bf;
+            for (int c = 0; c < kNBand; ++c) {
+              bcols.emplace_back(n);
+              bf.push_back(bcols.back().mutable_data());
+            }
             double* yq = f[8];  // Y_over_Q
             mhc_error e;
             {
@@ -504,6 +550,8 @@ PYBIND11_MODULE(_core, m) {
                   warns[i] = case_warnings(&ws);
                   if (tangential) fill_tangential_columns(&ws, r, i, tf.data(), yq);
                 }
+                const SmoothingBand b = c == MHC_OK ? smoothing_band(&ws) : SmoothingBand{{NAN, NAN, NAN, NAN}};
+                for (int k = 0; k < kNBand; ++k) bf[static_cast<std::size_t>(k)][i] = b.v[k];
                 return c;
               });
             }
@@ -511,6 +559,7 @@ PYBIND11_MODULE(_core, m) {
             py::dict d;
             for (int c = 0; c < kNFloat; ++c) d[kFloatCols[c]] = fcols[static_cast<std::size_t>(c)];
             for (int c = 0; tangential && c < kNTangential; ++c) d[kTangentialCols[c]] = tcols[static_cast<std::size_t>(c)];
+            for (int c = 0; c < kNBand; ++c) d[kBandCols[c]] = bcols[static_cast<std::size_t>(c)];
             d["status_code"] = status;
             d["method_code"] = method;
             d["n_contacts"] = n_contacts;

@@ -34,6 +34,7 @@ struct mhc_pair {
   mh::MethodOptions options;
   bool plastic = false;  ///< the plastic model (material.p_lim finite: given, or from the yield stress)
   mh::TrackSetup track;  ///< the track and wheelset data it was placed with (the wheelset call reads them)
+  mh::GeometryOptions geometry;  ///< the geometry options it was built with (the band's tables: mhc_pair_set_smoothing_band)
   /// The pair's warnings in the command's words, "<profile>: <warning>" (mhc_pair_warning).
   std::vector<std::string> warnings;
 };

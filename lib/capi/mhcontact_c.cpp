@@ -105,6 +105,9 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
   } else {
     if (const std::string bad = check_load(value); !bad.empty()) return fail(MHC_ERR_ARGUMENT, bad);
     solve_contact(pair.pg.geo, pair.material, tY, value, *opt, ws.r, &ws.grid);
+    // The smoothing's uncertainty band, as the command's sweep: before the result is filled (its
+    // warning counts).
+    add_smoothing_band(ws.r, pair.pg.band_half.get(), pair.pg.band_double.get(), pair.material, tY, value, *opt);
     fill_result(ws.r, tY, value, pair.plastic, out);
   }
   ws.grids_kept = ws.keep_grids;
@@ -141,15 +144,18 @@ ProfileKind to_kind(int32_t kind) {
   throw std::invalid_argument("kind = " + std::to_string(kind) + ": must be MHC_WHEEL (1) or MHC_RAIL (2)");
 }
 
-/// Profiles, cant check and geometry, as jobs/run.cpp's build_pair_geometry.
+/// Profiles, cant check and geometry, as jobs/run.cpp's build_pair_geometry; `band`: the
+/// smoothing's uncertainty band's tables too, where a profile is smoothed for contact.
 void place_pair(mhc_pair& pair, Profile wheel, Profile rail, const Inclination& incl, const TrackSetup& track,
-                const GeometryOptions& geo) {
+                const GeometryOptions& geo, bool band) {
   pair.pg.wheel = std::move(wheel);
   pair.pg.rail = std::move(rail);
   pair.pg.cant = check_rail_cant(pair.pg.rail, incl);
   for (const auto& w : pair.pg.cant.warnings) pair.pg.rail.warnings.push_back(w);
   pair.pg.geo = build_geometry(pair.pg.wheel, pair.pg.rail, track, geo);
+  set_band_geometries(pair.pg, track, geo, band);
   pair.track = track;
+  pair.geometry = geo;
   // The warnings the command prints for this pair (jobs/run.cpp build_pair_geometry, warn_profiles).
   for (const auto& w : pair.pg.geo.warnings) pair.pg.wheel.warnings.push_back(w);
   for (const Profile* p : {&pair.pg.wheel, &pair.pg.rail})
@@ -393,7 +399,7 @@ mhc_error mhc_pair_create(const mhc_profile* wheel, const mhc_profile* rail, con
     // rail is generated with it, a read one rotated.
     Profile r = rail->standard.empty() ? rail->profile : make_standard_profile(rail->standard, incl);
     if (rail->standard.empty()) rotate_towards_track_centre(r, inclination_angle(incl));
-    place_pair(*pair, wheel->profile, std::move(r), incl, track, geo);
+    place_pair(*pair, wheel->profile, std::move(r), incl, track, geo, mo.method != Method::MultiHertzian);
     *out = pair.release();
     return MHC_OK;
   });
@@ -408,7 +414,7 @@ mhc_error mhc_pair_from_case_file(const char* path, mhc_pair** out) {
     const CaseFile cf = load_case_file(path, false);
     auto pair = std::make_unique<mhc_pair>();
     place_pair(*pair, load_profile(cf.wheel, ProfileKind::Wheel), load_profile(cf.rail, ProfileKind::Rail, cf.inclination),
-               cf.inclination, cf.track, cf.geometry);
+               cf.inclination, cf.track, cf.geometry, cf.geometry.smoothing_band && cf.method != Method::MultiHertzian);
     pair->material = cf.material;
     pair->options = cf.method_options();
     pair->plastic = cf.model == Model::Plastic;
@@ -498,6 +504,32 @@ mhc_error mhc_solve_many_warnings(const mhc_pair* pair, int32_t prescribe, size_
     }
     return e;
   });
+}
+
+mhc_error mhc_pair_set_smoothing_band(mhc_pair* pair, int32_t on) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(pair, "pair")) return e;
+  if (on != 0 && on != 1) return fail(MHC_ERR_ARGUMENT, "on = " + std::to_string(on) + ": must be 0 (off) or 1 (on)");
+  return guarded([&] {
+    set_band_geometries(pair->pg, pair->track, pair->geometry, on == 1 && pair->options.method != Method::MultiHertzian);
+    return MHC_OK;
+  });
+}
+
+mhc_error mhc_result_smoothing_band(const mhc_workspace* ws, mhc_smoothing_band* out) {
+  mh::capi::last_message().clear();
+  if (mhc_error e = need(ws, "workspace")) return e;
+  if (mhc_error e = need(out, "out")) return e;
+  if (out->struct_size < sizeof(mhc_smoothing_band))
+    return fail(MHC_ERR_ARGUMENT, "out->struct_size = " + std::to_string(out->struct_size) +
+                                      ": set it to sizeof(mhc_smoothing_band) (" +
+                                      std::to_string(sizeof(mhc_smoothing_band)) + ")");
+  const CaseResult& r = ws->r;
+  out->p_max_half_L_Pa = r.pmax_half_L;
+  out->p_max_double_L_Pa = r.pmax_double_L;
+  out->area_half_L_m2 = r.area_half_L;
+  out->area_double_L_m2 = r.area_double_L;
+  return MHC_OK;
 }
 
 mhc_error mhc_solve_many(const mhc_pair* pair, int32_t prescribe, size_t n, const double* tY_m, const double* roll_rad,

@@ -460,4 +460,17 @@ bool solve_contact_unjudged(const ContactGeometry& G, const Material& mat, doubl
   return false;
 }
 
+void add_smoothing_band(CaseResult& r, const ContactGeometry* half, const ContactGeometry* twice, const Material& mat,
+                        double tY, double Q, const MethodOptions& opt) {
+  if (!half || !twice || is_failure(r.status) || r.method == Method::MultiHertzian) return;
+  // Like with like: the method that solved the row (for `auto`, the L/2 surface must not hand a
+  // strip row back to the ellipses).
+  MethodOptions mo = opt;
+  mo.method = r.method;
+  mo.half_space.keep_pressure = false;
+  mo.strips.keep_strips = false;
+  mo.tangential.keep_traction = false;
+  judge_smoothing_band(r, solve_contact(*half, mat, tY, Q, mo), solve_contact(*twice, mat, tY, Q, mo));
+}
+
 }  // namespace mh

@@ -50,4 +50,15 @@ void solve_contact(const ContactGeometry& G, const Material& mat, double tY, dou
 bool solve_contact_unjudged(const ContactGeometry& G, const Material& mat, double tY, double Q,
                             const MethodOptions& opt, CaseResult& out, GridWorkspace* ws);
 
+/// The smoothing's uncertainty band of a solved case (profiles.md §7 "Uncertainty band"): r
+/// solved again on the pair's geometry at L/2 (`half`) and 2L (`twice`) by the method that
+/// solved it, keeping nothing but the case summary, and judged by judge_smoothing_band() (the
+/// band's values and `smoothing_sensitive`). Nothing without both geometries, for a row without
+/// an answer, or for a multi-Hertzian row (an `auto` row kept on the ellipses included: its
+/// tables are on the window fit, not the smoothed surface). `opt` as for the case itself (its
+/// roll and creep forces); what it keeps for output is dropped. The command's sweeps, batches
+/// and the C interface call this one function.
+void add_smoothing_band(CaseResult& r, const ContactGeometry* half, const ContactGeometry* twice, const Material& mat,
+                        double tY, double Q, const MethodOptions& opt);
+
 }  // namespace mh

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include "core/errors.hpp"
@@ -187,6 +188,14 @@ ContactGeometry build_band_geometry(const Profile& wheel, const Profile& rail, c
   GeometryOptions o = opt;
   o.auto_smoothing.length_scale = opt.auto_smoothing.length_scale * scale;
   return build_geometry(wheel, rail, track, o);
+}
+
+void set_band_geometries(PairGeometry& pg, const TrackSetup& track, const GeometryOptions& opt, bool on) {
+  pg.band_half.reset();
+  pg.band_double.reset();
+  if (!on || !smoothed_for_contact(pg.geo)) return;
+  pg.band_half = std::make_shared<const ContactGeometry>(build_band_geometry(pg.wheel, pg.rail, track, opt, 0.5));
+  pg.band_double = std::make_shared<const ContactGeometry>(build_band_geometry(pg.wheel, pg.rail, track, opt, 2.0));
 }
 
 ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const TrackSetup& track,

@@ -306,4 +306,10 @@ bool smoothed_for_contact(const ContactGeometry& G);
 ContactGeometry build_band_geometry(const Profile& wheel, const Profile& rail, const TrackSetup& track,
                                     const GeometryOptions& opt, double scale);
 
+/// pg.band_half and pg.band_double (L/2, 2L) when a profile of pg is smoothed for contact, both
+/// null otherwise (or when `on` is false): the one place the command, batches and the C
+/// interface make them. The caller decides whether its method wants them (not the
+/// multi-Hertzian method: its tables are on the window fit, not the smoothed surface).
+void set_band_geometries(PairGeometry& pg, const TrackSetup& track, const GeometryOptions& opt, bool on);
+
 }  // namespace mh

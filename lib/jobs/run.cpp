@@ -94,10 +94,7 @@ PairGeometry build_pair_geometry(const CaseFile& cf) {
   for (const auto& w : pg.cant.warnings) pg.rail.warnings.push_back(w);
   pg.geo = build_geometry(pg.wheel, pg.rail, cf.track, cf.geometry);
   // The smoothing's uncertainty band (profiles.md §7): the pair at L/2 and 2L, once per pair.
-  if (cf.geometry.smoothing_band && cf.method != Method::MultiHertzian && smoothed_for_contact(pg.geo)) {
-    pg.band_half = std::make_shared<const ContactGeometry>(build_band_geometry(pg.wheel, pg.rail, cf.track, cf.geometry, 0.5));
-    pg.band_double = std::make_shared<const ContactGeometry>(build_band_geometry(pg.wheel, pg.rail, cf.track, cf.geometry, 2.0));
-  }
+  set_band_geometries(pg, cf.track, cf.geometry, cf.geometry.smoothing_band && cf.method != Method::MultiHertzian);
   for (const auto& w : pg.geo.warnings) pg.wheel.warnings.push_back(w);  // placement (a wheel without a flange)
   return pg;
 }

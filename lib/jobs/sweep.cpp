@@ -372,8 +372,8 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   mo.half_space.keep_pressure = np > 0 || grid_stresses;
   mo.strips.keep_strips = out.strips != nullptr || grid_stresses;
   const bool grid_method = mo.method != Method::MultiHertzian;
-  // The band's solves keep nothing but the case summary (pmax, area).
-  MethodOptions mo_band = cf.method_options();
+  // The band's solves (add_smoothing_band) keep nothing but the case summary (pmax, area).
+  const MethodOptions mo_band = cf.method_options();
   const bool with_band = band.half && band.twice;
   RcfOptions rcf = cf.rcf;  // the RCF columns, k resolved (contact/rcf/shakedown.hpp)
   if (rcf.enabled()) rcf.k = rcf_shear_yield(cf.material, cf.rcf);
@@ -448,16 +448,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
           if (g_case_hook) g_case_hook(c0 + i);
           const bool grid_case = np && opt.pressure_cases.contains(c0 + i);
           solve_contact(G, cf.material, cp.tY, cp.Q, grid_case ? mo_grid : mo, r, &grid_ws[t]);
-          // The band compares like with like: solved again by the method that solved the row
-          // (for `auto`, the L/2 surface must not hand a strip row back to the ellipses), and not
-          // for a row `auto` kept multi-Hertzian (its tables are on the window fit, not on the
-          // smoothed surface; docs/outputs.md).
-          if (with_band && !is_failure(r.status) && r.method != Method::MultiHertzian) {
-            MethodOptions mo_row = mo_band;
-            mo_row.method = r.method;
-            judge_smoothing_band(r, solve_contact(*band.half, cf.material, cp.tY, cp.Q, mo_row),
-                                 solve_contact(*band.twice, cf.material, cp.tY, cp.Q, mo_row));
-          }
+          if (with_band) add_smoothing_band(r, band.half, band.twice, cf.material, cp.tY, cp.Q, mo_band);
           damage_step(r, rcf.burstow, rcf.usfd);  // the damage and wear of the Tγ columns, once per case
           S.status[i] = r.status;
           if (collect_damage)

@@ -27,11 +27,13 @@ __all__ = ["fleet", "make_table", "read_tables", "Pair", "Profile", "Table", "Ta
            "WheelsetTable", "WheelsetTableResult", "InputError", "UnsupportedError", "STATUS_NAMES", "METHOD_NAMES",
            "CASE_COLUMNS", "TANGENTIAL_COLUMNS", "INTERFACE_VERSION", "__version__", "abi_version", "fft_backend", "hertz_subsurface"]
 
-#: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp), then the
-#: vertical contact stiffness dFz/d(dz) (not in cases.csv).
+#: The columns of solve_many, in the order of cases.csv (lib/output/case_tables.cpp; its
+#: `warnings` and `message` text aside), then the vertical contact stiffness dFz/d(dz) (not in
+#: cases.csv).
 CASE_COLUMNS = ("case", "tY_mm", "Q_kN", "status", "method", "dz_virtual_mm", "approach_mm", "iterations",
                 "residual", "n_contacts", "Fz_kN", "Fy_kN", "Y_over_Q", "pmax_MPa", "area_mm2", "gamma_main_deg",
-                "r_roll_main_mm", "plastic", "n_warnings", "dFz_ddz_kN_per_mm")
+                "r_roll_main_mm", "plastic", "n_warnings", "pmax_half_L_MPa", "pmax_double_L_MPa",
+                "area_half_L_mm2", "area_double_L_mm2", "dFz_ddz_kN_per_mm")
 
 #: With friction (a case file's `friction`, or Pair.set_tangential), solve_many adds the
 #: tangential columns of cases.csv after these (docs/tangential.md; docs/python.md "Creep forces").
@@ -65,7 +67,9 @@ def _numbers(name, v, unit):
 # yield_rail_Pa, method, tY_min_m, ...), or Pair.from_case_file(path). A yield stress alone gives
 # the plastic model with the yield law, as material.yield_MPa in a case file (docs/method.md §5.1).
 # positioning "explicit" with lateral_offset_m places the wheel yourself (a refused gauge placement
-# names the offset that reproduces it). Options are checked as a case file's values are (plausible
+# names the offset that reproduces it). smoothing_band False (or pair.set_smoothing_band(False))
+# leaves out the smoothing's uncertainty band that a grid method computes on a measured profile
+# (pmax_half_L_MPa ..., as the case file's geometry.smoothing_band). Options are checked as a case file's values are (plausible
 # ranges: ValueError naming the option, the value, the rule and the unit; a wrong type: TypeError
 # naming the option and the type expected). pair.warnings lists the pair's warnings (profiles, rail
 # cant, placement) in the command's words. Immutable; share it between threads. Its solve methods

@@ -392,25 +392,31 @@ def test_one_judge_through_every_entry_point():
                     assert r[1] == "strips" and "gap_kink=" in r[2], r
 
 
+def _command_rows_and_pair(case):
+    """The case (a dict) run by the command: its cases.csv rows, and the Pair of the same case file."""
+    import json
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "case.json")
+        with open(path, "w") as f:
+            json.dump(case, f)
+        subprocess.run([BINARY, "run", path, "-o", os.path.join(d, "out"), "-q", "--format", "csv"], check=True)
+        with open(os.path.join(d, "out", "cases.csv")) as f:
+            rows = list(csv.DictReader(f))
+        return rows, mhcontact.Pair.from_case_file(path)
+
+
 def test_planar_extent_judged_alike_by_the_command_and_python():
     """A 10 mm circle in a 10.02 mm groove, strips: the patch wraps 37.5 and 52 deg round the rail
     at 5 and 20 kN, beyond the planar approach's extent (edge_tilt_deg > 35: outside_validity),
     24 deg at 1 kN (ok). The command and Python say the same (docs/trust.md "Evidence domains")."""
-    import json
     data = os.path.join(SRC, "tests", "data", "profiles")
     case = {"wheel": {"profile": os.path.join(data, "circ_r10.prw"), "nominal_radius_mm": 300},
             "rail": {"profile": os.path.join(data, "groove_r1002.prr"), "inclination": "as-is"},
             "track": {"positioning": "explicit", "lateral_offset_mm": 0},
             "material": {"E_GPa": 210, "nu": 0.3}, "method": "strips",
             "sweep": {"tY_mm": [0], "Q_kN": [1, 5, 20]}}
-    with tempfile.TemporaryDirectory() as d:
-        path = os.path.join(d, "groove.json")
-        with open(path, "w") as f:
-            json.dump(case, f)
-        subprocess.run([BINARY, "run", path, "-o", os.path.join(d, "out"), "-q", "--format", "csv"], check=True)
-        with open(os.path.join(d, "out", "cases.csv")) as f:
-            rows = [(r["status"], r["warnings"]) for r in csv.DictReader(f)]
-        p = mhcontact.Pair.from_case_file(path)
+    rows, p = _command_rows_and_pair(case)
+    rows = [(r["status"], r["warnings"]) for r in rows]
     py = []
     for Q in (1e3, 5e3, 20e3):
         o = p.solve(0.0, Q_N=Q)
@@ -419,6 +425,48 @@ def test_planar_extent_judged_alike_by_the_command_and_python():
     assert rows[0] == ("ok", "")
     for status, warnings in rows[1:]:
         assert status == "outside_validity" and "edge_tilt_deg=" in warnings, (status, warnings)
+
+
+def test_smoothing_band_reported_alike_by_the_command_and_python():
+    """A measured MiniProf rail (avg_low2.ban, smoothed for contact) under S1002, strips and auto:
+    the smoothing's uncertainty band (pmax_half_L_MPa ...) and its smoothing_sensitive warning
+    were the command's only; solve and solve_many give the same numbers and warning texts as
+    cases.csv (docs/profiles.md "Uncertainty band"), the multi-Hertzian rows of auto none, and
+    smoothing_band False none."""
+    band = ("pmax_half_L_MPa", "pmax_double_L_MPa", "area_half_L_mm2", "area_double_L_mm2")
+    data = os.path.join(SRC, "tests", "data", "profiles")
+    tY, Q = [0, 2, 2.5, 10], [20, 60]
+    for method in ("strips", "auto"):
+        case = {"wheel": {"profile": {"standard": "S1002"}, "nominal_radius_mm": 460},
+                "rail": {"profile": os.path.join(data, "avg_low2.ban"), "inclination": "as-is"},
+                "material": {"E_GPa": 210, "nu": 0.28}, "method": method,
+                "sweep": {"tY_mm": tY, "Q_kN": Q}}
+        rows, p = _command_rows_and_pair(case)
+        many = p.solve_many([t * 1e-3 for t in tY for _ in Q], Q_N=[q * 1e3 for _ in tY for q in Q])
+        assert len(rows) == len(tY) * len(Q)
+        for i, r in enumerate(rows):
+            one = p.solve(float(r["tY_mm"]) * 1e-3, Q_N=float(r["Q_kN"]) * 1e3)
+            for o, k in [(one, None), (many, i)]:
+                for c in band:
+                    got = o[c] if k is None else o[c][k]
+                    if r[c] == "":
+                        assert math.isnan(got), (method, r["tY_mm"], r["Q_kN"], c, got)
+                    else:
+                        assert got == pytest.approx(float(r[c]), rel=1e-9), (method, r["tY_mm"], r["Q_kN"], c)
+                texts = [w["text"] for w in (o["warnings"] if k is None else o["warnings"][k])]
+                assert ";".join(texts) == r["warnings"], (method, r["tY_mm"], r["Q_kN"], texts, r["warnings"])
+        if method == "strips":  # the band on every row, smoothing_sensitive on some (measured 2 Dec 2026)
+            assert all(r["pmax_half_L_MPa"] != "" for r in rows)
+            assert any("smoothing_sensitive" in r["warnings"] for r in rows)
+        else:  # auto: the rows kept multi-Hertzian carry none
+            kept = [r for r in rows if r["method"] == "multi-hertzian"]
+            assert kept and all(r["pmax_half_L_MPa"] == "" for r in kept)
+        p.set_smoothing_band(False)
+        off = p.solve(2e-3, Q_N=20e3)
+        assert math.isnan(off["pmax_half_L_MPa"]) and not [w for w in off["warnings"] if w["class"] == "smoothing_sensitive"]
+    with pytest.raises(TypeError, match="smoothing_band = 1: expected a bool"):
+        mhcontact.Pair(mhcontact.Profile.standard("S1002"), mhcontact.Profile.standard("60E1"),
+                       {"rail_inclination": "1:40", "smoothing_band": 1})
 
 
 def test_rail_inclination_spelt_and_required_as_in_the_case_file():

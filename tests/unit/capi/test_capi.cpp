@@ -586,3 +586,100 @@ TEST_CASE("C interface: options of a header without the yield stress are read, o
   mhc_profile_free(w);
   mhc_profile_free(r);
 }
+
+TEST_CASE("C interface: the smoothing's uncertainty band of a measured profile, as the command reports it",
+          "[capi][band]") {
+  // S1002 on the measured MiniProf rail avg_low2.ban (smoothed for contact), strips: the band
+  // and its smoothing_sensitive warning were the command's only (docs/c-api.md "The smoothing's
+  // uncertainty band"); python/tests test_smoothing_band_reported_alike_by_the_command_and_python
+  // compares the numbers with cases.csv.
+  mhc_profile *w = nullptr, *r = nullptr;
+  REQUIRE(mhc_profile_standard("S1002", &w) == MHC_OK);
+  REQUIRE(mhc_profile_read((kSrc + "/tests/data/profiles/avg_low2.ban").c_str(), MHC_RAIL, &r) == MHC_OK);
+  mhc_pair_options o;
+  mhc_pair_options_init(&o);
+  o.method = MHC_METHOD_STRIPS;
+  mhc_pair* p = nullptr;
+  REQUIRE(mhc_pair_create(w, r, &o, &p) == MHC_OK);
+  o.method = MHC_METHOD_MULTI_HERTZIAN;
+  mhc_pair* mh = nullptr;
+  REQUIRE(mhc_pair_create(w, r, &o, &mh) == MHC_OK);
+  Workspace ws(p), wm(mh);
+  mhc_smoothing_band b;
+  b.struct_size = sizeof b;
+  auto warning_of = [](const mhc_workspace* x, const std::string& cls) {
+    for (int32_t i = 0; i < mhc_result_n_warnings(x); ++i) {
+      mhc_warning wn;
+      wn.struct_size = sizeof wn;
+      REQUIRE(mhc_result_warning(x, i, &wn) == MHC_OK);
+      if (cls == wn.class_name) return i;
+    }
+    return -1;
+  };
+  // t_Y 2 mm, 20 kN: the strips' peak moves by 31 % at L/2 (measured 2 Dec 2026: 968 against
+  // 738 MPa), beyond the 10 % of smoothing_sensitive.
+  mhc_result a = fresh();
+  REQUIRE(mhc_solve_load(p, ws.ws, 2e-3, 0.0, 20e3, &a) == MHC_OK);
+  CHECK(a.status == MHC_STATUS_OK);
+  REQUIRE(mhc_result_smoothing_band(ws.ws, &b) == MHC_OK);
+  for (double v : {b.p_max_half_L_Pa, b.p_max_double_L_Pa, b.area_half_L_m2, b.area_double_L_m2})
+    CHECK((std::isfinite(v) && v > 0));
+  const int32_t k = warning_of(ws.ws, "smoothing_sensitive");
+  REQUIRE(k >= 0);
+  CHECK(a.n_warnings == mhc_result_n_warnings(ws.ws));
+  CHECK_THAT(mhc_warning_text(ws.ws, k), Catch::StartsWith("smoothing_sensitive:pmax_band="));
+  mhc_warning wn;
+  wn.struct_size = sizeof wn;
+  REQUIRE(mhc_result_warning(ws.ws, k, &wn) == MHC_OK);
+  CHECK(wn.outside_validity == 0);  // informational: the status stays ok
+  const double dp = std::max(std::fabs(b.p_max_half_L_Pa - a.p_max_Pa), std::fabs(b.p_max_double_L_Pa - a.p_max_Pa)) / a.p_max_Pa;
+  CHECK(wn.measure[0].value_si == Approx(dp).epsilon(1e-12));
+  CHECK(dp > 0.1);
+  // The multi-Hertzian pair: no band (its curvatures are the window fit's).
+  mhc_result m = fresh();
+  REQUIRE(mhc_solve_load(mh, wm.ws, 2e-3, 0.0, 20e3, &m) == MHC_OK);
+  REQUIRE(mhc_result_smoothing_band(wm.ws, &b) == MHC_OK);
+  CHECK(std::isnan(b.p_max_half_L_Pa));
+  CHECK(warning_of(wm.ws, "smoothing_sensitive") < 0);
+  // Off: the same answer, no band, no warning; on again: the same band.
+  REQUIRE(mhc_pair_set_smoothing_band(p, 0) == MHC_OK);
+  mhc_result c = fresh();
+  REQUIRE(mhc_solve_load(p, ws.ws, 2e-3, 0.0, 20e3, &c) == MHC_OK);
+  CHECK(c.p_max_Pa == a.p_max_Pa);
+  CHECK(c.n_warnings == a.n_warnings - 1);
+  REQUIRE(mhc_result_smoothing_band(ws.ws, &b) == MHC_OK);
+  CHECK(std::isnan(b.p_max_half_L_Pa));
+  CHECK(std::isnan(b.area_double_L_m2));
+  REQUIRE(mhc_pair_set_smoothing_band(p, 1) == MHC_OK);
+  REQUIRE(mhc_solve_load(p, ws.ws, 2e-3, 0.0, 20e3, &c) == MHC_OK);
+  REQUIRE(mhc_result_smoothing_band(ws.ws, &b) == MHC_OK);
+  CHECK(std::fabs(std::max(std::fabs(b.p_max_half_L_Pa - c.p_max_Pa), std::fabs(b.p_max_double_L_Pa - c.p_max_Pa)) /
+                      c.p_max_Pa -
+                  dp) < 1e-12);
+  // Arguments.
+  CHECK(mhc_pair_set_smoothing_band(p, 2) == MHC_ERR_ARGUMENT);
+  CHECK_THAT(mhc_last_message(), Catch::Contains("on = 2: must be 0 (off) or 1 (on)"));
+  b.struct_size = 0;
+  CHECK(mhc_result_smoothing_band(ws.ws, &b) == MHC_ERR_ARGUMENT);
+  CHECK_THAT(mhc_last_message(), Catch::Contains("sizeof(mhc_smoothing_band)"));
+  mhc_pair_free(p);
+  mhc_pair_free(mh);
+  mhc_profile_free(w);
+  mhc_profile_free(r);
+}
+
+TEST_CASE("C interface: no band where nothing is smoothed (exact profiles)", "[capi][band]") {
+  mhc_pair_options o;
+  mhc_pair_options_init(&o);
+  o.method = MHC_METHOD_STRIPS;
+  mhc_pair* p = manchester_created(o);
+  Workspace ws(p);
+  mhc_result a = fresh();
+  REQUIRE(mhc_solve_load(p, ws.ws, 0.0, 0.0, 50e3, &a) == MHC_OK);
+  mhc_smoothing_band b;
+  b.struct_size = sizeof b;
+  REQUIRE(mhc_result_smoothing_band(ws.ws, &b) == MHC_OK);
+  CHECK(std::isnan(b.p_max_half_L_Pa));
+  CHECK(std::isnan(b.p_max_double_L_Pa));
+  mhc_pair_free(p);
+}
