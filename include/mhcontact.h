@@ -372,10 +372,10 @@ MHC_API const char* mhc_warning_text(const mhc_workspace* ws, int32_t i);
 /** The smoothing's uncertainty band of the last case solved with a workspace (docs/profiles.md
  *  "Smoothing for contact", "Uncertainty band"; the columns pmax_half_L_MPa, pmax_double_L_MPa,
  *  area_half_L_mm2, area_double_L_mm2 of cases.csv): the case solved again, by the method that
- *  solved it, with every contact smoothing length of the pair halved and doubled. NaN where not
- *  computed: no profile of the pair smoothed for contact (exact profiles), the band turned off
- *  (mhc_pair_set_smoothing_band), a multi-Hertzian row (its curvatures are the window fit's, not
- *  the smoothed surface's), an approach-prescribed solve, a case without an answer. A row whose
+ *  solved it, with every contact smoothing length of the pair halved and doubled (for a
+ *  multi-Hertzian row the wide window fit of its curvature tables). NaN where not computed: no
+ *  profile of the pair smoothed for contact (exact profiles), the band turned off
+ *  (mhc_pair_set_smoothing_band), an approach-prescribed solve, a case without an answer. A row whose
  *  peak pressure moves by more than 10 % or whose area by more than 15 % carries the
  *  informational warning smoothing_sensitive (mhc_result_warning). */
 typedef struct mhc_smoothing_band {
@@ -389,12 +389,12 @@ typedef struct mhc_smoothing_band {
 /** The band of the last case solved with `ws` into *out (out->struct_size must be set). */
 MHC_API mhc_error mhc_result_smoothing_band(const mhc_workspace* ws, mhc_smoothing_band* out);
 
-/** Whether the pair's load-prescribed solves compute the band: on = 1 (the default of a pair whose
- *  method is not multi-Hertzian and which has a profile smoothed for contact, as the case file's
- *  geometry.smoothing_band), 0 off. Each case costs three solves with it: a caller that solves at
- *  every time step and does not read it turns it off. Building it costs two more geometry tables
- *  (about as long as the pair's own). Nothing happens for a pair without a smoothed profile or with
- *  the multi-Hertzian method. Not while another thread solves with the pair. */
+/** Whether the pair's load-prescribed solves compute the band: on = 1 (the default of a pair with
+ *  a profile smoothed for contact, as the case file's geometry.smoothing_band), 0 off. Each case
+ *  costs three solves with it: a caller that solves at every time step and does not read it turns
+ *  it off. Building it costs two more geometry tables (four for MHC_METHOD_AUTO, whose ellipse and
+ *  grid rows each have theirs), each about as long as the pair's own. Nothing happens for a pair
+ *  without a smoothed profile. Not while another thread solves with the pair. */
 MHC_API mhc_error mhc_pair_set_smoothing_band(mhc_pair* pair, int32_t on);
 
 /* ---- contact tables (docs/tables.md) ------------------------------------------------------------

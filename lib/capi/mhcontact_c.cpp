@@ -107,7 +107,7 @@ mhc_error solve_case(const mhc_pair& pair, mhc_workspace& ws, bool approach, dou
     solve_contact(pair.pg.geo, pair.material, tY, value, *opt, ws.r, &ws.grid);
     // The smoothing's uncertainty band, as the command's sweep: before the result is filled (its
     // warning counts).
-    add_smoothing_band(ws.r, pair.pg.band_half.get(), pair.pg.band_double.get(), pair.material, tY, value, *opt);
+    add_smoothing_band(ws.r, pair.pg.band, pair.material, tY, value, *opt);
     fill_result(ws.r, tY, value, pair.plastic, out);
   }
   ws.grids_kept = ws.keep_grids;
@@ -138,6 +138,12 @@ using mh::capi::need;
 
 namespace {
 
+/// The band's tables a method's rows need (jobs/run.cpp build_pair_geometry makes the same).
+void set_pair_band(PairGeometry& pg, const TrackSetup& track, const GeometryOptions& geo, bool on, Method method) {
+  set_band_geometries(pg, track, geo, on && method != Method::MultiHertzian,
+                      on && (method == Method::MultiHertzian || method == Method::Auto));
+}
+
 ProfileKind to_kind(int32_t kind) {
   if (kind == MHC_WHEEL) return ProfileKind::Wheel;
   if (kind == MHC_RAIL) return ProfileKind::Rail;
@@ -145,15 +151,16 @@ ProfileKind to_kind(int32_t kind) {
 }
 
 /// Profiles, cant check and geometry, as jobs/run.cpp's build_pair_geometry; `band`: the
-/// smoothing's uncertainty band's tables too, where a profile is smoothed for contact.
+/// smoothing's uncertainty band's tables too for `method`'s rows, where a profile is smoothed for
+/// contact.
 void place_pair(mhc_pair& pair, Profile wheel, Profile rail, const Inclination& incl, const TrackSetup& track,
-                const GeometryOptions& geo, bool band) {
+                const GeometryOptions& geo, bool band, Method method) {
   pair.pg.wheel = std::move(wheel);
   pair.pg.rail = std::move(rail);
   pair.pg.cant = check_rail_cant(pair.pg.rail, incl);
   for (const auto& w : pair.pg.cant.warnings) pair.pg.rail.warnings.push_back(w);
   pair.pg.geo = build_geometry(pair.pg.wheel, pair.pg.rail, track, geo);
-  set_band_geometries(pair.pg, track, geo, band);
+  set_pair_band(pair.pg, track, geo, band, method);
   pair.track = track;
   pair.geometry = geo;
   // The warnings the command prints for this pair (jobs/run.cpp build_pair_geometry, warn_profiles).
@@ -399,7 +406,7 @@ mhc_error mhc_pair_create(const mhc_profile* wheel, const mhc_profile* rail, con
     // rail is generated with it, a read one rotated.
     Profile r = rail->standard.empty() ? rail->profile : make_standard_profile(rail->standard, incl);
     if (rail->standard.empty()) rotate_towards_track_centre(r, inclination_angle(incl));
-    place_pair(*pair, wheel->profile, std::move(r), incl, track, geo, mo.method != Method::MultiHertzian);
+    place_pair(*pair, wheel->profile, std::move(r), incl, track, geo, true, mo.method);
     *out = pair.release();
     return MHC_OK;
   });
@@ -414,7 +421,7 @@ mhc_error mhc_pair_from_case_file(const char* path, mhc_pair** out) {
     const CaseFile cf = load_case_file(path, false);
     auto pair = std::make_unique<mhc_pair>();
     place_pair(*pair, load_profile(cf.wheel, ProfileKind::Wheel), load_profile(cf.rail, ProfileKind::Rail, cf.inclination),
-               cf.inclination, cf.track, cf.geometry, cf.geometry.smoothing_band && cf.method != Method::MultiHertzian);
+               cf.inclination, cf.track, cf.geometry, cf.geometry.smoothing_band, cf.method);
     pair->material = cf.material;
     pair->options = cf.method_options();
     pair->plastic = cf.model == Model::Plastic;
@@ -511,7 +518,7 @@ mhc_error mhc_pair_set_smoothing_band(mhc_pair* pair, int32_t on) {
   if (mhc_error e = need(pair, "pair")) return e;
   if (on != 0 && on != 1) return fail(MHC_ERR_ARGUMENT, "on = " + std::to_string(on) + ": must be 0 (off) or 1 (on)");
   return guarded([&] {
-    set_band_geometries(pair->pg, pair->track, pair->geometry, on == 1 && pair->options.method != Method::MultiHertzian);
+    set_pair_band(pair->pg, pair->track, pair->geometry, on == 1, pair->options.method);
     return MHC_OK;
   });
 }

@@ -460,11 +460,14 @@ bool solve_contact_unjudged(const ContactGeometry& G, const Material& mat, doubl
   return false;
 }
 
-void add_smoothing_band(CaseResult& r, const ContactGeometry* half, const ContactGeometry* twice, const Material& mat,
-                        double tY, double Q, const MethodOptions& opt) {
-  if (!half || !twice || is_failure(r.status) || r.method == Method::MultiHertzian) return;
+void add_smoothing_band(CaseResult& r, const BandGeometries& band, const Material& mat, double tY, double Q,
+                        const MethodOptions& opt) {
+  const bool ellipse = r.method == Method::MultiHertzian;
+  const ContactGeometry* half = (ellipse ? band.window_half : band.half).get();
+  const ContactGeometry* twice = (ellipse ? band.window_twice : band.twice).get();
+  if (!half || !twice || is_failure(r.status)) return;
   // Like with like: the method that solved the row (for `auto`, the L/2 surface must not hand a
-  // strip row back to the ellipses).
+  // strip row back to the ellipses, nor the ellipses' L/2 tables an ellipse row to the strips).
   MethodOptions mo = opt;
   mo.method = r.method;
   mo.half_space.keep_pressure = false;

@@ -51,14 +51,14 @@ bool solve_contact_unjudged(const ContactGeometry& G, const Material& mat, doubl
                             const MethodOptions& opt, CaseResult& out, GridWorkspace* ws);
 
 /// The smoothing's uncertainty band of a solved case (profiles.md §7 "Uncertainty band"): r
-/// solved again on the pair's geometry at L/2 (`half`) and 2L (`twice`) by the method that
-/// solved it, keeping nothing but the case summary, and judged by judge_smoothing_band() (the
-/// band's values and `smoothing_sensitive`). Nothing without both geometries, for a row without
-/// an answer, or for a multi-Hertzian row (an `auto` row kept on the ellipses included: its
-/// tables are on the window fit, not the smoothed surface). `opt` as for the case itself (its
+/// solved again on the pair's geometries at L/2 and 2L by the method that solved it (a grid row
+/// on band.half / twice, a multi-Hertzian row, `auto`'s kept ellipses included, on
+/// band.window_half / window_twice), keeping nothing but the case summary, and judged by
+/// judge_smoothing_band() (the band's values and `smoothing_sensitive`). Nothing where the row's
+/// geometries are not there, or for a row without an answer. `opt` as for the case itself (its
 /// roll and creep forces); what it keeps for output is dropped. The command's sweeps, batches
 /// and the C interface call this one function.
-void add_smoothing_band(CaseResult& r, const ContactGeometry* half, const ContactGeometry* twice, const Material& mat,
-                        double tY, double Q, const MethodOptions& opt);
+void add_smoothing_band(CaseResult& r, const BandGeometries& band, const Material& mat, double tY, double Q,
+                        const MethodOptions& opt);
 
 }  // namespace mh

@@ -184,18 +184,25 @@ bool smoothed_for_contact(const ContactGeometry& G) {
 }
 
 ContactGeometry build_band_geometry(const Profile& wheel, const Profile& rail, const TrackSetup& track,
-                                    const GeometryOptions& opt, double scale) {
+                                    const GeometryOptions& opt, double scale, bool window) {
   GeometryOptions o = opt;
   o.auto_smoothing.length_scale = opt.auto_smoothing.length_scale * scale;
+  // The multi-Hertzian tables' smoothing of a measured profile is the wide window fit (where it
+  // is in use at all: wider than the narrow one).
+  if (window && opt.curve.measured_window_half_width > opt.curve.window_half_width)
+    o.curve.measured_window_half_width = opt.curve.measured_window_half_width * scale;
   return build_geometry(wheel, rail, track, o);
 }
 
-void set_band_geometries(PairGeometry& pg, const TrackSetup& track, const GeometryOptions& opt, bool on) {
-  pg.band_half.reset();
-  pg.band_double.reset();
-  if (!on || !smoothed_for_contact(pg.geo)) return;
-  pg.band_half = std::make_shared<const ContactGeometry>(build_band_geometry(pg.wheel, pg.rail, track, opt, 0.5));
-  pg.band_double = std::make_shared<const ContactGeometry>(build_band_geometry(pg.wheel, pg.rail, track, opt, 2.0));
+void set_band_geometries(PairGeometry& pg, const TrackSetup& track, const GeometryOptions& opt, bool grid_rows,
+                         bool ellipse_rows) {
+  pg.band = BandGeometries{};
+  if (!smoothed_for_contact(pg.geo)) return;
+  auto make = [&](double scale, bool window) {
+    return std::make_shared<const ContactGeometry>(build_band_geometry(pg.wheel, pg.rail, track, opt, scale, window));
+  };
+  if (grid_rows) pg.band.half = make(0.5, false), pg.band.twice = make(2.0, false);
+  if (ellipse_rows) pg.band.window_half = make(0.5, true), pg.band.window_twice = make(2.0, true);
 }
 
 ContactGeometry build_geometry(const Profile& wheel, const Profile& rail, const TrackSetup& track,

@@ -285,6 +285,17 @@ void build_rolled_minima(ContactGeometry& G, double roll_max);
 /// S1002 on 60E1 in flange contact (11.3 mrad at t_Y 10 mm in CONTACT's cases).
 constexpr double kRolledMinimaRollMax = 25e-3;
 
+/// The pair's geometries of the smoothing's uncertainty band (profiles.md §7 "Uncertainty band"),
+/// null where not made: every contact smoothing length × 0.5 (`half`) and × 2 (`twice`). For the
+/// grid methods' rows the spline of the contact surface; for the multi-Hertzian rows the spline
+/// and the wide window fit of their curvature tables together (`window_half`, `window_twice`).
+/// The grid rows' band keeps the window: their answer is the surface's, and the window moves only
+/// where their placement starts (by up to 1.2 % of the band's values, measured on avg_low2).
+struct BandGeometries {
+  std::shared_ptr<const ContactGeometry> half, twice, window_half, window_twice;
+  bool any() const { return half || window_half; }
+};
+
 /// A profile pair as used (rail with its inclination) and its contact geometry.
 struct PairGeometry {
   Profile wheel, rail;
@@ -292,24 +303,25 @@ struct PairGeometry {
   /// The rail's cant as estimated from its head, against the case's inclination (its warnings
   /// are also in rail.warnings).
   RailCantCheck cant;
-  /// The pair's geometry with every contact smoothing length × 0.5 and × 2 (the uncertainty
-  /// band, GeometryOptions::smoothing_band); both null when not computed.
-  std::shared_ptr<const ContactGeometry> band_half, band_double;
+  /// The uncertainty band's geometries (GeometryOptions::smoothing_band; set_band_geometries).
+  BandGeometries band;
 };
 
 /// Whether G's contact gap is made on a smoothed profile (wheel or rail; profiles.md §7).
 bool smoothed_for_contact(const ContactGeometry& G);
 
 /// The geometry of the pair with every contact smoothing length multiplied by `scale`
-/// (NoiseSmoothingOptions::length_scale; a length given is scaled too): the uncertainty band's
-/// geometry at L/2 (0.5) and 2L (2).
+/// (NoiseSmoothingOptions::length_scale; a length given is scaled too), and with `window` the
+/// wide fit window of measured profiles too (CurveOptions::measured_window_half_width): the
+/// uncertainty band's geometry at L/2 (0.5) and 2L (2).
 ContactGeometry build_band_geometry(const Profile& wheel, const Profile& rail, const TrackSetup& track,
-                                    const GeometryOptions& opt, double scale);
+                                    const GeometryOptions& opt, double scale, bool window = false);
 
-/// pg.band_half and pg.band_double (L/2, 2L) when a profile of pg is smoothed for contact, both
-/// null otherwise (or when `on` is false): the one place the command, batches and the C
-/// interface make them. The caller decides whether its method wants them (not the
-/// multi-Hertzian method: its tables are on the window fit, not the smoothed surface).
-void set_band_geometries(PairGeometry& pg, const TrackSetup& track, const GeometryOptions& opt, bool on);
+/// pg.band when a profile of pg is smoothed for contact (null otherwise): the spline's for
+/// `grid_rows`, the spline's and window's for `ellipse_rows` (a method's rows: strips and
+/// half-space grid, multi-Hertzian ellipse, `auto` both). The one place the command, batches
+/// and the C interface make them.
+void set_band_geometries(PairGeometry& pg, const TrackSetup& track, const GeometryOptions& opt, bool grid_rows,
+                         bool ellipse_rows);
 
 }  // namespace mh

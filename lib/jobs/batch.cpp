@@ -187,7 +187,7 @@ int batch_job(const Manifest& m, const RunOptions& opt, std::ostream& out, std::
                   fp ? &fp->stream() : nullptr, nullptr, pw.get(), prefix, "results.json", {}};
       for (OutputFile* f : {fc.get(), fe.get(), fpa.get(), fp.get(), fj.get()})
         if (f) sinks.files.push_back(f);
-      solve_cases(cf, pg->geo, lo, hi, quiet_opt, sinks, &counts, err, {pg->band_half.get(), pg->band_double.get()});
+      solve_cases(cf, pg->geo, lo, hi, quiet_opt, sinks, &counts, err, &pg->band);
     } else {
       if (head) ++invalid;
       by_status[kInvalidPair] += hi - lo;

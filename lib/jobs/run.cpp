@@ -41,7 +41,7 @@ nlohmann::json pair_summary_json(const PairGeometry& pg) {
     j["contact_smoothing_local_min_mm"] = {{"wheel", std::round(pg.geo.wheel_gap_curve->smoothing_local_min() * 1e6) / 1e3},
                                            {"rail", std::round(pg.geo.rail_gap_curve->smoothing_local_min() * 1e6) / 1e3}};
   // Whether the cases carry the smoothing's uncertainty band (profiles.md §7).
-  j["smoothing_band"] = pg.band_half != nullptr;
+  j["smoothing_band"] = pg.band.any();
   j["rail_cant_deg"] = pg.cant.used.found ? nlohmann::json(pg.cant.used.angle / units::deg) : nlohmann::json(nullptr);
   j["pair_warnings"] = pg.cant.warnings;
   return j;
@@ -94,7 +94,9 @@ PairGeometry build_pair_geometry(const CaseFile& cf) {
   for (const auto& w : pg.cant.warnings) pg.rail.warnings.push_back(w);
   pg.geo = build_geometry(pg.wheel, pg.rail, cf.track, cf.geometry);
   // The smoothing's uncertainty band (profiles.md §7): the pair at L/2 and 2L, once per pair.
-  set_band_geometries(pg, cf.track, cf.geometry, cf.geometry.smoothing_band && cf.method != Method::MultiHertzian);
+  const bool band = cf.geometry.smoothing_band;
+  set_band_geometries(pg, cf.track, cf.geometry, band && cf.method != Method::MultiHertzian,
+                      band && (cf.method == Method::MultiHertzian || cf.method == Method::Auto));
   for (const auto& w : pg.geo.warnings) pg.wheel.warnings.push_back(w);  // placement (a wheel without a flange)
   return pg;
 }
@@ -271,7 +273,7 @@ int run_job(const CaseFile& cf, const RunOptions& opt, std::ostream& out, std::o
               to_stdout ? "standard output" : "results.json", {}};
   for (OutputFile* f : {fc.get(), fe.get(), fpa.get(), fp.get(), fs.get(), fj.get()})
     if (f) sinks.files.push_back(f);
-  solve_cases(cf, G, first, end, opt, sinks, &counts, err, {pg.band_half.get(), pg.band_double.get()});
+  solve_cases(cf, G, first, end, opt, sinks, &counts, err, &pg.band);
   const auto& by_status = counts.by_status;
   const std::uint64_t failed = counts.failed;
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

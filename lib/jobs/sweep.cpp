@@ -362,7 +362,7 @@ void write_geometry(const CaseFile& cf, const ContactGeometry& G, std::uint64_t 
 // thread writes the previous chunk (double buffers); the bytes are the same for any thread count.
 void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t first, std::uint64_t end,
                  const RunOptions& opt, const Sinks& out, SweepCounts* counts, std::ostream& err,
-                 const BandGeometry& band) {
+                 const BandGeometries* band) {
   const bool plastic = cf.model == Model::Plastic;
   const bool want_csv = out.cases != nullptr, want_json = out.json != nullptr;
   const int np = out.pressure ? opt.pressure_grid : 0;
@@ -374,7 +374,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
   const bool grid_method = mo.method != Method::MultiHertzian;
   // The band's solves (add_smoothing_band) keep nothing but the case summary (pmax, area).
   const MethodOptions mo_band = cf.method_options();
-  const bool with_band = band.half && band.twice;
+  const bool with_band = band && band->any();
   RcfOptions rcf = cf.rcf;  // the RCF columns, k resolved (contact/rcf/shakedown.hpp)
   if (rcf.enabled()) rcf.k = rcf_shear_yield(cf.material, cf.rcf);
   rcf.nu = cf.material.nur();  // the subsurface stresses are the rail's
@@ -448,7 +448,7 @@ void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t fir
           if (g_case_hook) g_case_hook(c0 + i);
           const bool grid_case = np && opt.pressure_cases.contains(c0 + i);
           solve_contact(G, cf.material, cp.tY, cp.Q, grid_case ? mo_grid : mo, r, &grid_ws[t]);
-          if (with_band) add_smoothing_band(r, band.half, band.twice, cf.material, cp.tY, cp.Q, mo_band);
+          if (with_band) add_smoothing_band(r, *band, cf.material, cp.tY, cp.Q, mo_band);
           damage_step(r, rcf.burstow, rcf.usfd);  // the damage and wear of the Tγ columns, once per case
           S.status[i] = r.status;
           if (collect_damage)

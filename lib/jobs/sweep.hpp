@@ -162,19 +162,12 @@ std::string warnings_failure(const RunOptions& opt, const SweepCounts& counts, s
 void write_geometry(const CaseFile& cf, const ContactGeometry& G, std::uint64_t first, std::uint64_t end,
                     std::ostream* csv, const std::string& prefix, JsonObjectStream* json);
 
-/// The geometries of the smoothing's uncertainty band (PairGeometry::band_half, band_double;
-/// profiles.md §7 "Uncertainty band"): both or neither.
-struct BandGeometry {
-  const ContactGeometry* half = nullptr;    ///< every contact smoothing length × 0.5
-  const ContactGeometry* twice = nullptr;   ///< × 2
-};
-
 /// Solve cases [first, end) of `cf` on `G` in parallel chunks and write them in order. With
-/// `band` given, each case with an answer is solved again on band.half and band.twice, without
-/// its pressure or strips kept, and judged by judge_smoothing_band() (the band columns).
+/// `band` given (PairGeometry::band), each case with an answer gets the smoothing's uncertainty
+/// band (add_smoothing_band: the band columns).
 void solve_cases(const CaseFile& cf, const ContactGeometry& G, std::uint64_t first, std::uint64_t end,
                  const RunOptions& opt, const Sinks& out, SweepCounts* counts, std::ostream& err,
-                 const BandGeometry& band = {});
+                 const BandGeometries* band = nullptr);
 
 /// Tests only: a function called in the worker before each case is solved (it may throw, to
 /// check that an exception inside a worker ends the run as an internal error). Empty: none.

@@ -635,12 +635,14 @@ TEST_CASE("C interface: the smoothing's uncertainty band of a measured profile, 
   const double dp = std::max(std::fabs(b.p_max_half_L_Pa - a.p_max_Pa), std::fabs(b.p_max_double_L_Pa - a.p_max_Pa)) / a.p_max_Pa;
   CHECK(wn.measure[0].value_si == Approx(dp).epsilon(1e-12));
   CHECK(dp > 0.1);
-  // The multi-Hertzian pair: no band (its curvatures are the window fit's).
+  // The multi-Hertzian pair: the band of its window fit (3 mm halved and doubled); the same
+  // ellipse 658 MPa between 631 and 1037 MPa (measured 2 Dec 2026).
   mhc_result m = fresh();
   REQUIRE(mhc_solve_load(mh, wm.ws, 2e-3, 0.0, 20e3, &m) == MHC_OK);
   REQUIRE(mhc_result_smoothing_band(wm.ws, &b) == MHC_OK);
-  CHECK(std::isnan(b.p_max_half_L_Pa));
-  CHECK(warning_of(wm.ws, "smoothing_sensitive") < 0);
+  CHECK(b.p_max_half_L_Pa > 1.3 * m.p_max_Pa);
+  CHECK(b.p_max_double_L_Pa < m.p_max_Pa);
+  CHECK(warning_of(wm.ws, "smoothing_sensitive") >= 0);
   // Off: the same answer, no band, no warning; on again: the same band.
   REQUIRE(mhc_pair_set_smoothing_band(p, 0) == MHC_OK);
   mhc_result c = fresh();
