@@ -138,12 +138,6 @@ using mh::capi::need;
 
 namespace {
 
-/// The band's tables a method's rows need (jobs/run.cpp build_pair_geometry makes the same).
-void set_pair_band(PairGeometry& pg, const TrackSetup& track, const GeometryOptions& geo, bool on, Method method) {
-  set_band_geometries(pg, track, geo, on && method != Method::MultiHertzian,
-                      on && (method == Method::MultiHertzian || method == Method::Auto));
-}
-
 ProfileKind to_kind(int32_t kind) {
   if (kind == MHC_WHEEL) return ProfileKind::Wheel;
   if (kind == MHC_RAIL) return ProfileKind::Rail;

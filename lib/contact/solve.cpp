@@ -460,6 +460,11 @@ bool solve_contact_unjudged(const ContactGeometry& G, const Material& mat, doubl
   return false;
 }
 
+void set_pair_band(PairGeometry& pg, const TrackSetup& track, const GeometryOptions& geo, bool on, Method method) {
+  set_band_geometries(pg, track, geo, on && method != Method::MultiHertzian,
+                      on && (method == Method::MultiHertzian || method == Method::Auto));
+}
+
 void add_smoothing_band(CaseResult& r, const BandGeometries& band, const Material& mat, double tY, double Q,
                         const MethodOptions& opt) {
   const bool ellipse = r.method == Method::MultiHertzian;

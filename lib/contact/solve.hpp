@@ -61,4 +61,9 @@ bool solve_contact_unjudged(const ContactGeometry& G, const Material& mat, doubl
 void add_smoothing_band(CaseResult& r, const BandGeometries& band, const Material& mat, double tY, double Q,
                         const MethodOptions& opt);
 
+/// pg.band for `method`'s rows (set_band_geometries): the spline's tables for the grid methods,
+/// the window's for the multi-Hertzian one, both for `auto`; none when `on` is false. The
+/// command's pairs (jobs/run.cpp) and the C interface's make them here.
+void set_pair_band(PairGeometry& pg, const TrackSetup& track, const GeometryOptions& geo, bool on, Method method);
+
 }  // namespace mh

@@ -5,6 +5,7 @@
 #include <memory>
 #include <ostream>
 
+#include "contact/solve.hpp"
 #include "core/errors.hpp"
 #include "core/units.hpp"
 #include "input/manifest.hpp"
@@ -94,9 +95,7 @@ PairGeometry build_pair_geometry(const CaseFile& cf) {
   for (const auto& w : pg.cant.warnings) pg.rail.warnings.push_back(w);
   pg.geo = build_geometry(pg.wheel, pg.rail, cf.track, cf.geometry);
   // The smoothing's uncertainty band (profiles.md §7): the pair at L/2 and 2L, once per pair.
-  const bool band = cf.geometry.smoothing_band;
-  set_band_geometries(pg, cf.track, cf.geometry, band && cf.method != Method::MultiHertzian,
-                      band && (cf.method == Method::MultiHertzian || cf.method == Method::Auto));
+  set_pair_band(pg, cf.track, cf.geometry, cf.geometry.smoothing_band, cf.method);
   for (const auto& w : pg.geo.warnings) pg.wheel.warnings.push_back(w);  // placement (a wheel without a flange)
   return pg;
 }
