@@ -108,7 +108,7 @@ TEST_CASE("run: the band columns on a measured pair, every other column as witho
   CHECK(std::fabs(pd / p - 1) < 0.05);
 }
 
-TEST_CASE("run: no band where nothing is smoothed; the multi-Hertzian method's from its window fit", "[band][run]") {
+TEST_CASE("run: no band where nothing is smoothed, and the multi-Hertzian method's from its window fit", "[band][run]") {
   Dir d;
   nlohmann::json res;
   mh::CaseFile exact = mh::load_case_file(std::string(MHCONTACT_SOURCE_DIR) + "/cases/manchester-strips.json", true);
